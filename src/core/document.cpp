@@ -1,0 +1,84 @@
+#include "core/document.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace corbel {
+
+DocObject* Document::find(ObjectId id) {
+  for (auto& o : objects)
+    if (o.id == id) return &o;
+  return nullptr;
+}
+
+const DocObject* Document::find(ObjectId id) const {
+  return const_cast<Document*>(this)->find(id);
+}
+
+const DocObject* Document::findByName(const std::string& n) const {
+  for (const auto& o : objects)
+    if (o.name == n) return &o;
+  return nullptr;
+}
+
+ObjectId Document::nextId() const {
+  ObjectId next = 1;
+  for (const auto& o : objects) next = std::max(next, o.id + 1);
+  return next;
+}
+
+std::string Document::uniqueName(const std::string& base) const {
+  if (!findByName(base)) return base;
+  for (int i = 2;; ++i) {
+    std::string candidate = base + " " + std::to_string(i);
+    if (!findByName(candidate)) return candidate;
+  }
+}
+
+ObjectId Document::add(const std::string& base, Spec spec) {
+  DocObject o;
+  o.id = nextId();
+  o.name = uniqueName(base);
+  o.spec = std::move(spec);
+  objects.push_back(std::move(o));
+  return objects.back().id;
+}
+
+bool Document::remove(ObjectId id) {
+  auto it = std::find_if(objects.begin(), objects.end(), [&](const DocObject& o) { return o.id == id; });
+  if (it == objects.end()) return false;
+  objects.erase(it);
+  return true;
+}
+
+std::optional<std::string> checkBoxSpec(const BoxSpec& s) {
+  std::ostringstream err;
+  for (int k = 0; k < 3; ++k) {
+    if (!std::isfinite(s.origin[k]) || std::abs(s.origin[k]) > limits::kMaxCoordinate) {
+      err << "origin: coordinates must be finite and within " << limits::kMaxCoordinate << " m";
+      return err.str();
+    }
+    if (!std::isfinite(s.size[k]) || s.size[k] < limits::kMinSize || s.size[k] > limits::kMaxCoordinate) {
+      err << "size: each extent must be between " << limits::kMinSize << " and " << limits::kMaxCoordinate
+          << " m (got " << s.size[k] << ")";
+      return err.str();
+    }
+  }
+  if (!std::isfinite(s.rotation_deg) || std::abs(s.rotation_deg) > 3600)
+    return "rotation: must be a finite angle in degrees";
+  if (s.repeat_x < 1 || s.repeat_y < 1) return "repeat.count: counts must be at least 1";
+  if (static_cast<long>(s.repeat_x) * s.repeat_y > limits::kMaxRepeat) {
+    err << "repeat.count: " << s.repeat_x << " x " << s.repeat_y << " boxes exceeds the limit of "
+        << limits::kMaxRepeat;
+    return err.str();
+  }
+  if (!std::isfinite(s.spacing_x) || !std::isfinite(s.spacing_y) ||
+      std::abs(s.spacing_x) * s.repeat_x > limits::kMaxCoordinate ||
+      std::abs(s.spacing_y) * s.repeat_y > limits::kMaxCoordinate)
+    return "repeat.spacing: must be finite and keep the copies within the coordinate limit";
+  if (s.material.size() > limits::kMaxNameLength) return "material: name too long";
+  return std::nullopt;
+}
+
+}  // namespace corbel

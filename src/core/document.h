@@ -1,0 +1,67 @@
+#pragma once
+// Document: the user's inputs, one entry per object. Kernels turn specs into geometry; the
+// Scene is derived from the Document and can always be rebuilt (see scene_sync.h).
+#include "core/geometry.h"
+#include "core/scene_properties.h"
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace corbel {
+
+// A simple mass model: a box standing on z = origin.z, centred on (origin.x, origin.y),
+// rotated about Z, optionally repeated on a grid in its own frame (a row of houses).
+struct BoxSpec {
+  Vec3 origin{0.0, 0.0, 0.0};
+  Vec3 size{10.0, 6.0, 4.0};
+  double rotation_deg = 0.0;
+  std::string material = "plaster";
+  int repeat_x = 1;
+  int repeat_y = 1;
+  double spacing_x = 0.0;  // distance between neighbouring copies' centres along local x
+  double spacing_y = 0.0;
+  bool operator==(const BoxSpec&) const = default;
+};
+
+// One spec type per kernel; extrude, statics, growth and kifs add theirs.
+using Spec = std::variant<BoxSpec>;
+
+struct DocObject {
+  ObjectId id = 0;
+  std::string name;
+  bool visible = true;
+  Spec spec;
+  bool operator==(const DocObject&) const = default;
+};
+
+struct Document {
+  std::string name = "untitled";
+  std::vector<DocObject> objects;
+
+  DocObject* find(ObjectId id);
+  const DocObject* find(ObjectId id) const;
+  const DocObject* findByName(const std::string& name) const;
+  ObjectId nextId() const;  // one past the largest id in use
+  // Adds an object with a fresh id and a unique name derived from `base`.
+  ObjectId add(const std::string& base, Spec spec);
+  bool remove(ObjectId id);
+  std::string uniqueName(const std::string& base) const;
+  bool operator==(const Document&) const = default;
+};
+
+// Limits on what a Document may hold, checked by the loader and the editor.
+namespace limits {
+inline constexpr std::size_t kMaxObjects = 100000;
+inline constexpr long kMaxRepeat = 10000;       // boxes per repeated spec
+inline constexpr double kMaxCoordinate = 1e7;   // meters from the origin
+inline constexpr double kMinSize = 1e-4;        // meters
+inline constexpr std::size_t kMaxNameLength = 256;
+}  // namespace limits
+
+// Checks a spec's values (the loader and the editor share it). Returns an error text with
+// the offending field, relative to the spec, or nullopt.
+std::optional<std::string> checkBoxSpec(const BoxSpec& spec);
+
+}  // namespace corbel

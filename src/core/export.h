@@ -1,0 +1,23 @@
+#pragma once
+// Export of the Scene: OBJ (+ .mtl), PLY, OFF and binary glTF 2.0, chosen by extension.
+// OBJ, PLY and OFF keep corbel's frame (meters, Z up); glTF is Y up as its spec requires.
+#include "core/scene.h"
+
+#include <functional>
+#include <string>
+
+namespace corbel {
+
+struct ExportOptions {
+  // Which objects to write (all when empty).
+  std::function<bool(ObjectId)> include;
+};
+
+enum class ExportFormat { Obj, Ply, Off, Glb };
+// From the file extension; throws corbel::Error for an unknown one.
+ExportFormat exportFormatFor(const std::string& path);
+
+// Writes atomically (a temporary sibling renamed over the target). Throws corbel::Error.
+void exportScene(const Scene& scene, const std::string& path, const ExportOptions& options = {});
+
+}  // namespace corbel

@@ -1,0 +1,96 @@
+#include "core/geometry.h"
+
+#include <array>
+#include <cmath>
+
+namespace corbel {
+
+Vec3 newellNormal(const std::vector<Vec3>& polygon) {
+  Vec3 n(0.0);
+  const size_t count = polygon.size();
+  for (size_t i = 0; i < count; ++i) {
+    const Vec3& a = polygon[i];
+    const Vec3& b = polygon[(i + 1) % count];
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  return n;
+}
+
+namespace {
+
+// Project onto the plane most aligned with the normal; returns 2D coordinates whose
+// orientation is counter-clockwise when seen against the normal.
+std::vector<Vec2> projectToPlane(const std::vector<Vec3>& polygon, const Vec3& normal) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(normal[k]) > std::abs(normal[axis])) axis = k;
+  const int u = (axis + 1) % 3;
+  const int v = (axis + 2) % 3;
+  const double flip = normal[axis] < 0 ? -1.0 : 1.0;
+  std::vector<Vec2> out;
+  out.reserve(polygon.size());
+  for (const Vec3& p : polygon) out.emplace_back(p[u], flip * p[v]);
+  return out;
+}
+
+double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+bool insideTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  return cross(a, b, p) >= 0 && cross(b, c, p) >= 0 && cross(c, a, p) >= 0;
+}
+
+}  // namespace
+
+std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& polygon) {
+  std::vector<std::array<int, 3>> tris;
+  const int n = static_cast<int>(polygon.size());
+  if (n < 3) return tris;
+  tris.reserve(n - 2);
+  if (n == 3) {
+    tris.push_back({0, 1, 2});
+    return tris;
+  }
+  const std::vector<Vec2> pts = projectToPlane(polygon, newellNormal(polygon));
+  std::vector<int> ring(n);
+  for (int i = 0; i < n; ++i) ring[i] = i;
+  while (ring.size() > 3) {
+    const int m = static_cast<int>(ring.size());
+    int best = -1;
+    for (int i = 0; i < m; ++i) {
+      const int ia = ring[(i + m - 1) % m], ib = ring[i], ic = ring[(i + 1) % m];
+      const double turn = cross(pts[ia], pts[ib], pts[ic]);
+      if (turn <= 0) continue;  // reflex or flat corner: not an ear
+      bool empty = true;
+      for (int j = 0; j < m && empty; ++j) {
+        const int q = ring[j];
+        if (q == ia || q == ib || q == ic) continue;
+        if (insideTriangle(pts[q], pts[ia], pts[ib], pts[ic])) empty = false;
+      }
+      if (empty) {
+        best = i;
+        break;
+      }
+    }
+    if (best < 0) {
+      // No clean ear (degenerate input): clip the convex-most corner so we still terminate.
+      double most = -std::numeric_limits<double>::infinity();
+      for (int i = 0; i < m; ++i) {
+        const double turn = cross(pts[ring[(i + m - 1) % m]], pts[ring[i]], pts[ring[(i + 1) % m]]);
+        if (turn > most) {
+          most = turn;
+          best = i;
+        }
+      }
+    }
+    tris.push_back({ring[(best + m - 1) % m], ring[best], ring[(best + 1) % m]});
+    ring.erase(ring.begin() + best);
+  }
+  tris.push_back({ring[0], ring[1], ring[2]});
+  return tris;
+}
+
+}  // namespace corbel

@@ -1,0 +1,139 @@
+// Binary glTF 2.0 export through tinygltf: one node and mesh per object (named as the
+// object), one primitive per material, flat normals. glTF is Y up: (x, y, z) → (x, z, −y).
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/export.h"
+#include "core/materials.h"
+
+#include <tiny_gltf.h>
+
+#include <cstdio>
+#include <cstring>
+#include <map>
+
+namespace corbel {
+
+namespace {
+
+struct PrimitiveData {
+  std::vector<float> positions, normals;
+  std::vector<std::uint32_t> indices;
+};
+
+int addView(tinygltf::Model& model, const void* data, std::size_t bytes, int target) {
+  auto& buffer = model.buffers[0].data;
+  while (buffer.size() % 4) buffer.push_back(0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.size();
+  view.byteLength = bytes;
+  view.target = target;
+  const auto* p = static_cast<const unsigned char*>(data);
+  buffer.insert(buffer.end(), p, p + bytes);
+  model.bufferViews.push_back(view);
+  return static_cast<int>(model.bufferViews.size()) - 1;
+}
+
+int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bool withBounds) {
+  tinygltf::Accessor a;
+  a.bufferView = addView(model, values.data(), values.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+  a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  a.count = values.size() / 3;
+  a.type = TINYGLTF_TYPE_VEC3;
+  if (withBounds) {
+    std::vector<double> lo(3, 1e300), hi(3, -1e300);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      lo[i % 3] = std::min<double>(lo[i % 3], values[i]);
+      hi[i % 3] = std::max<double>(hi[i % 3], values[i]);
+    }
+    a.minValues = lo;
+    a.maxValues = hi;
+  }
+  model.accessors.push_back(a);
+  return static_cast<int>(model.accessors.size()) - 1;
+}
+
+}  // namespace
+
+void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& options) {
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "corbel";
+  model.buffers.emplace_back();
+  model.scenes.emplace_back();
+  model.defaultScene = 0;
+  std::map<std::string, int> materialIndex;
+  const PolyMesh& mesh = scene.mesh();
+
+  for (const auto& [id, info] : scene.objects()) {
+    if (options.include && !options.include(id)) continue;
+    std::map<std::string, PrimitiveData> byMaterial;
+    std::vector<Vec3> poly;
+    for (auto f : scene.faces(id)) {
+      const std::string& m = scene.faceMaterial(f);
+      const std::string label = m.empty() ? std::string(kindName(scene.faceKind(f))) : m;
+      if (!materialIndex.count(label)) {
+        tinygltf::Material mat;
+        mat.name = label;
+        const Rgb c = materialColor(m, scene.faceKind(f));
+        mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
+        mat.pbrMetallicRoughness.metallicFactor = 0.0;
+        mat.pbrMetallicRoughness.roughnessFactor = 0.9;
+        model.materials.push_back(mat);
+        materialIndex[label] = static_cast<int>(model.materials.size()) - 1;
+      }
+      PrimitiveData& prim = byMaterial[label];
+      poly.clear();
+      for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
+      Vec3 n = newellNormal(poly);
+      const double len = n.norm();
+      if (len > 0) n /= len;
+      const auto base = static_cast<std::uint32_t>(prim.positions.size() / 3);
+      for (const Vec3& p : poly) {
+        prim.positions.insert(prim.positions.end(),
+                              {static_cast<float>(p[0]), static_cast<float>(p[2]), static_cast<float>(-p[1])});
+        prim.normals.insert(prim.normals.end(),
+                            {static_cast<float>(n[0]), static_cast<float>(n[2]), static_cast<float>(-n[1])});
+      }
+      for (const auto& t : triangulatePolygon(poly))
+        prim.indices.insert(prim.indices.end(), {base + t[0], base + t[1], base + t[2]});
+    }
+    tinygltf::Mesh gm;
+    gm.name = info.name;
+    for (auto& [label, prim] : byMaterial) {
+      tinygltf::Primitive p;
+      p.mode = TINYGLTF_MODE_TRIANGLES;
+      p.material = materialIndex[label];
+      p.attributes["POSITION"] = addVec3Accessor(model, prim.positions, true);
+      p.attributes["NORMAL"] = addVec3Accessor(model, prim.normals, false);
+      tinygltf::Accessor idx;
+      idx.bufferView = addView(model, prim.indices.data(), prim.indices.size() * sizeof(std::uint32_t),
+                               TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+      idx.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+      idx.count = prim.indices.size();
+      idx.type = TINYGLTF_TYPE_SCALAR;
+      model.accessors.push_back(idx);
+      p.indices = static_cast<int>(model.accessors.size()) - 1;
+      gm.primitives.push_back(p);
+    }
+    if (gm.primitives.empty()) continue;
+    model.meshes.push_back(gm);
+    tinygltf::Node node;
+    node.name = info.name;
+    node.mesh = static_cast<int>(model.meshes.size()) - 1;
+    node.extras = tinygltf::Value(tinygltf::Value::Object{{"corbel_object_id", tinygltf::Value(static_cast<int>(id))},
+                                                          {"corbel_kind", tinygltf::Value(std::string(kindName(info.kind)))}});
+    model.nodes.push_back(node);
+    model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
+  }
+
+  tinygltf::TinyGLTF writer;
+  const std::string temp = makeTempSibling(path);
+  if (!writer.WriteGltfSceneToFile(&model, temp, true, true, false, true)) {
+    std::remove(temp.c_str());
+    throw Error("cannot write '" + path + "' (glTF writer failed)");
+  }
+  commitTempFile(temp, path);
+}
+
+}  // namespace corbel

@@ -1,0 +1,177 @@
+#include "core/json_reader.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace corbel {
+
+std::string JsonReader::typeName(const nlohmann::json& v) {
+  switch (v.type()) {
+    case nlohmann::json::value_t::null: return "null";
+    case nlohmann::json::value_t::object: return "an object";
+    case nlohmann::json::value_t::array: return "an array";
+    case nlohmann::json::value_t::string: return "a string";
+    case nlohmann::json::value_t::boolean: return "a boolean";
+    case nlohmann::json::value_t::number_integer:
+    case nlohmann::json::value_t::number_unsigned:
+    case nlohmann::json::value_t::number_float: return "a number";
+    default: return "an unsupported value";
+  }
+}
+
+void JsonReader::expectObject() const {
+  if (!v_.is_object()) fail("expected an object, found " + typeName(v_));
+}
+
+JsonReader JsonReader::at(const std::string& key) const {
+  expectObject();
+  auto it = v_.find(key);
+  if (it == v_.end()) throw InputError(path_.empty() ? key : path_ + "." + key, "missing");
+  return JsonReader(*it, path_.empty() ? key : path_ + "." + key);
+}
+
+std::optional<JsonReader> JsonReader::find(const std::string& key) const {
+  expectObject();
+  auto it = v_.find(key);
+  if (it == v_.end()) return std::nullopt;
+  return JsonReader(*it, path_.empty() ? key : path_ + "." + key);
+}
+
+std::vector<std::string> JsonReader::unknownKeys(const std::set<std::string>& known) const {
+  std::vector<std::string> out;
+  if (!v_.is_object()) return out;
+  for (auto it = v_.begin(); it != v_.end(); ++it)
+    if (!known.count(it.key())) out.push_back(path_.empty() ? it.key() : path_ + "." + it.key());
+  return out;
+}
+
+std::vector<JsonReader> JsonReader::array(std::size_t maxCount) const {
+  if (!v_.is_array()) fail("expected an array, found " + typeName(v_));
+  if (v_.size() > maxCount)
+    fail("has " + std::to_string(v_.size()) + " entries, more than the limit of " + std::to_string(maxCount));
+  std::vector<JsonReader> out;
+  out.reserve(v_.size());
+  for (std::size_t i = 0; i < v_.size(); ++i) out.emplace_back(v_[i], path_ + "[" + std::to_string(i) + "]");
+  return out;
+}
+
+double JsonReader::number() const {
+  if (!v_.is_number()) fail("expected a number, found " + typeName(v_));
+  const double d = v_.get<double>();
+  if (!std::isfinite(d)) fail("number is not finite");
+  return d;
+}
+
+double JsonReader::number(double lo, double hi) const {
+  const double d = number();
+  if (d < lo || d > hi) {
+    std::ostringstream s;
+    s << d << " is outside [" << lo << ", " << hi << "]";
+    fail(s.str());
+  }
+  return d;
+}
+
+long JsonReader::integer(long lo, long hi) const {
+  if (!v_.is_number()) fail("expected an integer, found " + typeName(v_));
+  long value = 0;
+  if (v_.is_number_unsigned()) {
+    const auto u = v_.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(hi)) fail(std::to_string(u) + " is larger than " + std::to_string(hi));
+    value = static_cast<long>(u);
+  } else if (v_.is_number_integer()) {
+    value = static_cast<long>(v_.get<std::int64_t>());
+  } else {
+    const double d = v_.get<double>();
+    if (!std::isfinite(d) || d != std::floor(d)) fail("expected an integer, found a fractional number");
+    if (d < static_cast<double>(lo) || d > static_cast<double>(hi)) {
+      std::ostringstream s;
+      s << d << " is outside [" << lo << ", " << hi << "]";
+      fail(s.str());
+    }
+    value = static_cast<long>(d);
+  }
+  if (value < lo || value > hi)
+    fail(std::to_string(value) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return value;
+}
+
+bool JsonReader::boolean() const {
+  if (!v_.is_boolean()) fail("expected true or false, found " + typeName(v_));
+  return v_.get<bool>();
+}
+
+std::string JsonReader::string(std::size_t maxLength) const {
+  if (!v_.is_string()) fail("expected a string, found " + typeName(v_));
+  const auto& s = v_.get_ref<const std::string&>();
+  if (s.size() > maxLength) fail("text longer than " + std::to_string(maxLength) + " bytes");
+  return s;
+}
+
+Vec3 JsonReader::vec3() const {
+  if (!v_.is_array() || v_.size() != 3 || !v_[0].is_number() || !v_[1].is_number() || !v_[2].is_number())
+    fail("expected [x, y, z] numbers");
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) p[k] = JsonReader(v_[k], path_ + "[" + std::to_string(k) + "]").number();
+  return p;
+}
+
+Vec2 JsonReader::vec2() const {
+  if (!v_.is_array() || v_.size() != 2 || !v_[0].is_number() || !v_[1].is_number())
+    fail("expected [x, y] numbers");
+  Vec2 p;
+  for (int k = 0; k < 2; ++k) p[k] = JsonReader(v_[k], path_ + "[" + std::to_string(k) + "]").number();
+  return p;
+}
+
+std::pair<long, long> JsonReader::integerPair(long lo, long hi) const {
+  if (!v_.is_array() || v_.size() != 2) fail("expected [a, b] integers");
+  return {JsonReader(v_[0], path_ + "[0]").integer(lo, hi), JsonReader(v_[1], path_ + "[1]").integer(lo, hi)};
+}
+
+nlohmann::json parseJsonText(const std::string& text, int maxDepth) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError("", "file is empty");
+  // Nesting pre-scan outside strings.
+  int depth = 0;
+  bool inString = false;
+  std::size_t line = 1, column = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    ++column;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+    }
+    if (inString) {
+      if (c == '\\') {
+        ++i;
+        ++column;
+      } else if (c == '"') {
+        inString = false;
+      }
+      continue;
+    }
+    if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > maxDepth) {
+        std::ostringstream s;
+        s << "line " << line << ", column " << column << ": nesting deeper than " << maxDepth << " levels";
+        throw InputError("", s.str());
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    std::string what = e.what();
+    // Drop nlohmann's "[json.exception.parse_error.101] " prefix; keep line/column and reason.
+    const auto close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+    throw InputError("", "not valid JSON: " + what);
+  }
+}
+
+}  // namespace corbel

@@ -1,0 +1,29 @@
+#pragma once
+// Project files (*.corbel): versioned JSON holding a Document. See docs/project-format.md.
+#include "core/document.h"
+
+#include <string>
+#include <vector>
+
+namespace corbel {
+
+inline constexpr int kProjectVersion = 1;        // the version this build writes and reads
+inline constexpr std::size_t kMaxProjectBytes = 64u << 20;
+
+struct LoadedProject {
+  Document document;
+  std::vector<std::string> warnings;  // e.g. unknown keys that were ignored
+};
+
+// Parses project text. Throws InputError naming the JSON path of the first fault.
+LoadedProject parseProject(const std::string& text);
+// Reads and parses a file; errors are prefixed with the file name.
+LoadedProject loadProject(const std::string& path);
+
+// Serialises deterministically (fixed key order, shortest round-trip numbers): save → load →
+// save gives identical bytes.
+std::string serializeProject(const Document& doc);
+// Atomic save (temporary file, fsync, rename).
+void saveProject(const Document& doc, const std::string& path);
+
+}  // namespace corbel

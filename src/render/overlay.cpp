@@ -1,0 +1,41 @@
+#include "render/overlay.h"
+
+#include <cmath>
+
+namespace corbel::render {
+
+void Overlay::clear() {
+  lines_.clear();
+  triangles_.clear();
+}
+
+void Overlay::line(const Vec3& a, const Vec3& b, const Rgba& c) {
+  for (const Vec3* p : {&a, &b})
+    lines_.insert(lines_.end(), {float((*p)[0]), float((*p)[1]), float((*p)[2]), c[0], c[1], c[2], c[3]});
+}
+
+void Overlay::arrow(const Vec3& from, const Vec3& to, const Rgba& c, double headFraction) {
+  const Vec3 d = to - from;
+  const double len = d.norm();
+  if (!(len > 0)) return;
+  const Vec3 axis = d / len;
+  const double head = len * headFraction;
+  const Vec3 base = to - axis * head;
+  line(from, base, c);
+  // Two vectors perpendicular to the axis.
+  const Vec3 helper = std::abs(axis[2]) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0);
+  const Vec3 u = OpenMesh::cross(axis, helper).normalized();
+  const Vec3 v = OpenMesh::cross(axis, u);
+  const double r = head * 0.35;
+  const Vec3 ring[4] = {base + u * r, base + v * r, base - u * r, base - v * r};
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& a = ring[i];
+    const Vec3& b = ring[(i + 1) % 4];
+    const Vec3 n = OpenMesh::cross(b - a, to - a).normalized();
+    for (const Vec3* p : {&a, &b, &to})
+      triangles_.insert(triangles_.end(), {float((*p)[0]), float((*p)[1]), float((*p)[2]), float(n[0]), float(n[1]),
+                                           float(n[2]), c[0], c[1], c[2]});
+  }
+}
+
+}  // namespace corbel::render

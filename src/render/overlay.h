@@ -1,0 +1,30 @@
+#pragma once
+// Overlay geometry drawn over the scene: lines and arrows (force vectors, anchors, guides).
+#include "core/geometry.h"
+
+#include <array>
+#include <vector>
+
+namespace corbel::render {
+
+using Rgba = std::array<float, 4>;
+
+class Overlay {
+ public:
+  void clear();
+  void line(const Vec3& a, const Vec3& b, const Rgba& color);
+  // A shaft and a four-sided cone head (head length = headFraction of the arrow).
+  void arrow(const Vec3& from, const Vec3& to, const Rgba& color, double headFraction = 0.2);
+
+  // Interleaved [x y z r g b a] vertices.
+  const std::vector<float>& lineVertices() const { return lines_; }
+  // Interleaved [x y z nx ny nz r g b] triangle vertices (arrow heads).
+  const std::vector<float>& triangleVertices() const { return triangles_; }
+  bool empty() const { return lines_.empty() && triangles_.empty(); }
+
+ private:
+  std::vector<float> lines_;
+  std::vector<float> triangles_;
+};
+
+}  // namespace corbel::render

@@ -1,0 +1,353 @@
+#include "render/renderer.h"
+
+#include "core/error.h"
+#include "core/materials.h"
+#include "render/gl.h"
+#include "render/shader_sources.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace corbel::render {
+
+std::string shaderSource(const std::string& name) {
+  for (const auto& s : embeddedShaders())
+    if (name == s.name) return s.text;
+  throw Error("no shader named '" + name + "' was embedded");
+}
+
+namespace {
+
+GLuint compile(GLenum type, const std::string& name) {
+  const std::string text = shaderSource(name);
+  GLuint s = glCreateShader(type);
+  const char* src = text.c_str();
+  glShaderSource(s, 1, &src, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    glGetShaderInfoLog(s, sizeof log, nullptr, log);
+    glDeleteShader(s);
+    throw Error("shader " + name + " failed to compile: " + log);
+  }
+  return s;
+}
+
+GLuint link(const std::string& vert, const std::string& frag) {
+  GLuint vs = compile(GL_VERTEX_SHADER, vert), fs = compile(GL_FRAGMENT_SHADER, frag);
+  GLuint p = glCreateProgram();
+  glAttachShader(p, vs);
+  glAttachShader(p, fs);
+  glLinkProgram(p);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    glGetProgramInfoLog(p, sizeof log, nullptr, log);
+    glDeleteProgram(p);
+    throw Error("program " + vert + " + " + frag + " failed to link: " + log);
+  }
+  return p;
+}
+
+// A VAO + VBO pair holding interleaved float attributes.
+struct Buffer {
+  GLuint vao = 0, vbo = 0;
+  GLsizei count = 0;
+  void create(const std::vector<int>& sizes) {
+    glGenVertexArrays(1, &vao);
+    glGenBuffers(1, &vbo);
+    glBindVertexArray(vao);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    int stride = 0;
+    for (int s : sizes) stride += s;
+    std::size_t offset = 0;
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+      glEnableVertexAttribArray(static_cast<GLuint>(i));
+      glVertexAttribPointer(static_cast<GLuint>(i), sizes[i], GL_FLOAT, GL_FALSE, stride * sizeof(float),
+                            reinterpret_cast<const void*>(offset * sizeof(float)));
+      offset += sizes[i];
+    }
+    stride_ = stride;
+    glBindVertexArray(0);
+  }
+  void upload(const std::vector<float>& data) {
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_DYNAMIC_DRAW);
+    count = static_cast<GLsizei>(data.size() / stride_);
+  }
+  void destroy() {
+    glDeleteBuffers(1, &vbo);
+    glDeleteVertexArrays(1, &vao);
+  }
+  int stride_ = 1;
+};
+
+void setMat(GLuint program, const char* name, const glm::mat4& m) {
+  glUniformMatrix4fv(glGetUniformLocation(program, name), 1, GL_FALSE, glm::value_ptr(m));
+}
+void setVec3(GLuint program, const char* name, float x, float y, float z) {
+  glUniform3f(glGetUniformLocation(program, name), x, y, z);
+}
+
+double niceStep(double span) {
+  const double raw = span / 20.0;
+  const double p = std::pow(10.0, std::floor(std::log10(std::max(raw, 1e-6))));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (raw <= m * p) return m * p;
+  return 10.0 * p;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  GLuint meshProgram = 0, lineProgram = 0, backgroundProgram = 0;
+  Buffer faces, highlightFaces, edges, grid, overlayLines, overlayTriangles;
+  GLuint emptyVao = 0;
+  std::uint64_t sceneRevision = ~0ull;
+  std::vector<ObjectId> visibleIds;
+  std::optional<ObjectId> highlight;
+  Vec3 gridCenter{0.0};
+  double gridRadius = 50.0;
+  std::size_t triangles = 0;
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
+  impl_->meshProgram = link("mesh.vert.glsl", "mesh.frag.glsl");
+  impl_->lineProgram = link("line.vert.glsl", "line.frag.glsl");
+  impl_->backgroundProgram = link("background.vert.glsl", "background.frag.glsl");
+  impl_->faces.create({3, 3, 3});
+  impl_->highlightFaces.create({3, 3, 3});
+  impl_->edges.create({3, 4});
+  impl_->grid.create({3, 4});
+  impl_->overlayLines.create({3, 4});
+  impl_->overlayTriangles.create({3, 3, 3});
+  glGenVertexArrays(1, &impl_->emptyVao);
+}
+
+Renderer::~Renderer() {
+  for (Buffer* b : {&impl_->faces, &impl_->highlightFaces, &impl_->edges, &impl_->grid, &impl_->overlayLines,
+                    &impl_->overlayTriangles})
+    b->destroy();
+  glDeleteVertexArrays(1, &impl_->emptyVao);
+  glDeleteProgram(impl_->meshProgram);
+  glDeleteProgram(impl_->lineProgram);
+  glDeleteProgram(impl_->backgroundProgram);
+}
+
+std::size_t Renderer::triangleCount() const { return impl_->triangles; }
+
+void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
+  std::vector<ObjectId> ids;
+  for (const auto& [id, info] : scene.objects())
+    if (!settings.visible || settings.visible(id)) ids.push_back(id);
+  if (scene.revision() == impl_->sceneRevision && ids == impl_->visibleIds && settings.highlight == impl_->highlight)
+    return;
+  impl_->sceneRevision = scene.revision();
+  impl_->visibleIds = ids;
+  impl_->highlight = settings.highlight;
+
+  const PolyMesh& mesh = scene.mesh();
+  std::vector<char> show(static_cast<std::size_t>(ids.empty() ? 1 : ids.back() + 1), 0);
+  for (ObjectId id : ids) show[id] = 1;
+  auto visible = [&](ObjectId id) { return id < show.size() && show[id]; };
+
+  std::vector<float> faceData, highlightData, edgeData;
+  std::vector<Vec3> poly;
+  BBox box;
+  impl_->triangles = 0;
+  for (auto f : mesh.faces()) {
+    const ObjectId id = scene.faceObject(f);
+    if (!visible(id)) continue;
+    poly.clear();
+    for (auto v : mesh.fv_range(f)) {
+      poly.push_back(mesh.point(v));
+      box.add(mesh.point(v));
+    }
+    Vec3 n = newellNormal(poly);
+    if (n.norm() > 0) n.normalize();
+    const Rgb c = materialColor(scene.faceMaterial(f), scene.faceKind(f));
+    std::vector<float>& out = (settings.highlight && *settings.highlight == id) ? highlightData : faceData;
+    for (const auto& t : triangulatePolygon(poly)) {
+      for (int k : t)
+        out.insert(out.end(), {float(poly[k][0]), float(poly[k][1]), float(poly[k][2]), float(n[0]), float(n[1]),
+                               float(n[2]), c[0], c[1], c[2]});
+      ++impl_->triangles;
+    }
+  }
+  for (auto e : mesh.edges()) {
+    auto h = mesh.halfedge_handle(e, 0);
+    auto f0 = mesh.face_handle(h), f1 = mesh.opposite_face_handle(h);
+    const bool on = (f0.is_valid() && visible(scene.faceObject(f0))) || (f1.is_valid() && visible(scene.faceObject(f1)));
+    if (!on) continue;
+    for (auto v : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)}) {
+      const auto& p = mesh.point(v);
+      edgeData.insert(edgeData.end(), {float(p[0]), float(p[1]), float(p[2]), 0.12f, 0.12f, 0.14f, 0.85f});
+    }
+  }
+  impl_->faces.upload(faceData);
+  impl_->highlightFaces.upload(highlightData);
+  impl_->edges.upload(edgeData);
+
+  // Ground grid: a 1-2-5 step with about 20 cells across the scene, major lines every 5.
+  const Vec3 center = box.empty() ? Vec3(0.0) : box.center();
+  const double span = box.empty() ? 40.0 : std::max({box.size()[0], box.size()[1], 4.0}) * 2.5;
+  const double step = niceStep(span);
+  const int half = static_cast<int>(std::ceil(0.5 * span / step));
+  const double cx = std::round(center[0] / step) * step, cy = std::round(center[1] / step) * step;
+  std::vector<float> gridData;
+  for (int i = -half; i <= half; ++i) {
+    const float a = (i % 5 == 0) ? 0.45f : 0.22f;
+    const float x = float(cx + i * step), y = float(cy + i * step);
+    const float x0 = float(cx - half * step), x1 = float(cx + half * step);
+    const float y0 = float(cy - half * step), y1 = float(cy + half * step);
+    gridData.insert(gridData.end(), {x, y0, 0.f, 0.3f, 0.32f, 0.35f, a, x, y1, 0.f, 0.3f, 0.32f, 0.35f, a});
+    gridData.insert(gridData.end(), {x0, y, 0.f, 0.3f, 0.32f, 0.35f, a, x1, y, 0.f, 0.3f, 0.32f, 0.35f, a});
+  }
+  impl_->grid.upload(gridData);
+  impl_->gridCenter = Vec3(cx, cy, 0.0);
+  impl_->gridRadius = half * step;
+}
+
+void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int height, const RenderSettings& settings) {
+  Impl& r = *impl_;
+  glViewport(x, y, width, height);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, y, width, height);
+  glClearColor(0.f, 0.f, 0.f, 0.f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+
+  if (settings.background) {
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(r.backgroundProgram);
+    setVec3(r.backgroundProgram, "uTop", 0.62f, 0.72f, 0.84f);
+    setVec3(r.backgroundProgram, "uBottom", 0.93f, 0.93f, 0.91f);
+    glBindVertexArray(r.emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  const glm::mat4 viewProj = glm::mat4(camera.projection(double(width) / std::max(height, 1)) * camera.view());
+  const Vec3 eye = camera.eye();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+
+  glUseProgram(r.meshProgram);
+  setMat(r.meshProgram, "uViewProj", viewProj);
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.45f, -0.35f, 0.82f));
+  setVec3(r.meshProgram, "uSunDir", sun.x, sun.y, sun.z);
+  setVec3(r.meshProgram, "uEye", float(eye[0]), float(eye[1]), float(eye[2]));
+  setVec3(r.meshProgram, "uTintColor", 1.0f, 0.62f, 0.15f);
+  if (!settings.wireframe) {
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.0f);
+    glBindVertexArray(r.faces.vao);
+    glDrawArrays(GL_TRIANGLES, 0, r.faces.count);
+    glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.35f);
+    glBindVertexArray(r.highlightFaces.vao);
+    glDrawArrays(GL_TRIANGLES, 0, r.highlightFaces.count);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+  r.overlayTriangles.upload(overlay_.triangleVertices());
+  r.overlayLines.upload(overlay_.lineVertices());
+  glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.0f);
+  glBindVertexArray(r.overlayTriangles.vao);
+  glDrawArrays(GL_TRIANGLES, 0, r.overlayTriangles.count);
+
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glUseProgram(r.lineProgram);
+  setMat(r.lineProgram, "uViewProj", viewProj);
+  if (settings.grid) {
+    setVec3(r.lineProgram, "uFadeCenter", float(r.gridCenter[0]), float(r.gridCenter[1]), 0.f);
+    glUniform1f(glGetUniformLocation(r.lineProgram, "uFadeRadius"), float(r.gridRadius * 1.05));
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(r.grid.vao);
+    glDrawArrays(GL_LINES, 0, r.grid.count);
+    glDepthMask(GL_TRUE);
+  }
+  glUniform1f(glGetUniformLocation(r.lineProgram, "uFadeRadius"), 0.0f);
+  if (settings.edges || settings.wireframe) {
+    glBindVertexArray(r.edges.vao);
+    glDrawArrays(GL_LINES, 0, r.edges.count);
+  }
+  glBindVertexArray(r.overlayLines.vao);
+  glDrawArrays(GL_LINES, 0, r.overlayLines.count);
+
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+OffscreenTarget::OffscreenTarget(int width, int height, int samples)
+    : width_(width), height_(height), samples_(samples) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384");
+  GLint maxSamples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  samples_ = std::min(samples_, static_cast<int>(maxSamples));
+  glGenFramebuffers(1, &msFbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, msFbo_);
+  glGenRenderbuffers(1, &msColor_);
+  glBindRenderbuffer(GL_RENDERBUFFER, msColor_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor_);
+  glGenRenderbuffers(1, &msDepth_);
+  glBindRenderbuffer(GL_RENDERBUFFER, msDepth_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth_);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("offscreen framebuffer is incomplete");
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glGenRenderbuffers(1, &color_);
+  glBindRenderbuffer(GL_RENDERBUFFER, color_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("resolve framebuffer is incomplete");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+OffscreenTarget::~OffscreenTarget() {
+  glDeleteFramebuffers(1, &msFbo_);
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteRenderbuffers(1, &msColor_);
+  glDeleteRenderbuffers(1, &msDepth_);
+  glDeleteRenderbuffers(1, &color_);
+}
+
+void OffscreenTarget::bind() { glBindFramebuffer(GL_FRAMEBUFFER, msFbo_); }
+
+Image OffscreenTarget::read() {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  Image img(width_, height_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  img.flipVertically();
+  return img;
+}
+
+std::string glDescription() {
+  auto str = [](GLenum e) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(e));
+    return std::string(s ? s : "?");
+  };
+  return str(GL_VERSION) + ", " + str(GL_RENDERER);
+}
+
+}  // namespace corbel::render

@@ -1,0 +1,68 @@
+#pragma once
+// The scene renderer: OpenGL 3.3 core, independent of the window system. It draws into
+// whatever framebuffer is bound (the editor's window, or an OffscreenTarget headless).
+#include "core/scene.h"
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/overlay.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace corbel::render {
+
+struct RenderSettings {
+  bool edges = true;        // polygon edge overlay
+  bool grid = true;         // ground grid at z = 0
+  bool wireframe = false;   // edges only, no filled faces
+  bool background = true;   // sky gradient (off: clear to transparent black)
+  // Objects to draw; all when empty.
+  std::function<bool(ObjectId)> visible;
+  std::optional<ObjectId> highlight;
+};
+
+class Renderer {
+ public:
+  // Needs a current GL 3.3 core context. Throws corbel::Error if a shader fails to build.
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Rebuilds GPU buffers when the scene's revision or the visibility changed.
+  void setScene(const Scene& scene, const RenderSettings& settings);
+  Overlay& overlay() { return overlay_; }
+  // Draws into the currently bound framebuffer, viewport (x, y, width, height).
+  void draw(const OrbitCamera& camera, int x, int y, int width, int height, const RenderSettings& settings);
+
+  std::size_t triangleCount() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  Overlay overlay_;
+};
+
+// A framebuffer object with multisampled color and depth, resolved on read-back.
+class OffscreenTarget {
+ public:
+  OffscreenTarget(int width, int height, int samples = 4);
+  ~OffscreenTarget();
+  OffscreenTarget(const OffscreenTarget&) = delete;
+  OffscreenTarget& operator=(const OffscreenTarget&) = delete;
+  void bind();
+  Image read();  // resolves and returns RGBA, top row first
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  int width_, height_, samples_;
+  unsigned msFbo_ = 0, msColor_ = 0, msDepth_ = 0, fbo_ = 0, color_ = 0;
+};
+
+// GL strings, for logs and bug reports ("4.5 (Core Profile) Mesa 22.3.6, llvmpipe").
+std::string glDescription();
+
+}  // namespace corbel::render
