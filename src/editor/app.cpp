@@ -1,0 +1,797 @@
+#include "editor/app.h"
+
+#include "core/error.h"
+#include "core/export.h"
+#include "core/materials.h"
+#include "core/project_io.h"
+#include "render/gl.h"
+#include "render/image.h"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace corbel::editor {
+
+namespace {
+
+constexpr float kLeftPanelWidth = 320.0f;
+constexpr float kStatusBarHeight = 118.0f;
+
+std::string stateDirOr(const std::string& dir) { return dir.empty() ? defaultStateDir() : dir; }
+
+}  // namespace
+
+App::App(GLFWwindow* window, EditorOptions options)
+    : window_(window),
+      options_(std::move(options)),
+      recovery_(stateDirOr(options_.stateDir)),
+      recent_(stateDirOr(options_.stateDir) + "/recent.json") {
+  renderer_ = std::make_unique<render::Renderer>();
+  log("OpenGL " + render::glDescription());
+  registerActions();
+  lastAutosave_ = std::chrono::steady_clock::now();
+  Document doc;
+  history_.reset(doc);
+  if (!options_.project.empty()) {
+    try {
+      LoadedProject p = loadProject(options_.project);
+      for (const auto& w : p.warnings) log("warning: " + w);
+      history_.reset(std::move(p.document));
+      path_ = options_.project;
+      recent_.add(path_);
+      log("Opened " + path_);
+    } catch (const std::exception& e) {
+      errorMessage_ = e.what();
+      showError_ = true;
+      log(e.what(), true);
+    }
+  }
+  syncScene();
+  frameAll();
+  checkRecovery();
+}
+
+App::~App() = default;
+
+void App::log(const std::string& line, bool error) {
+  log_.push_back({line, error});
+  while (log_.size() > 200) log_.pop_front();
+}
+
+// ---------------------------------------------------------------- document and files
+
+void App::commit(Document doc, const std::string& label, const std::string& mergeKey) {
+  history_.commit(std::move(doc), label, mergeKey);
+}
+
+void App::syncScene() {
+  if (history_.stateId() == syncedState_) return;
+  sync_.update(history_.current(), scene_);
+  syncedState_ = history_.stateId();
+  if (selected_ && !history_.current().find(*selected_)) selected_.reset();
+}
+
+void App::frameAll() {
+  BBox box;
+  for (const DocObject& o : history_.current().objects)
+    if (o.visible) box.add(scene_.bounds(o.id));
+  camera_.frame(box, vpW_ / std::max(vpH_, 1.0f));
+}
+
+void App::guardUnsaved(std::function<void()> then) {
+  if (!history_.dirty()) {
+    then();
+    return;
+  }
+  afterUnsavedPrompt_ = std::move(then);
+  showUnsavedPrompt_ = true;
+}
+
+void App::newDocument() {
+  guardUnsaved([this] {
+    history_.reset(Document{});
+    path_.clear();
+    selected_.reset();
+    recovery_.discard();
+    syncScene();
+    frameAll();
+    log("New document");
+  });
+}
+
+void App::openFile(const std::string& path) {
+  guardUnsaved([this, path] {
+    auto result = std::make_shared<LoadedProject>();
+    startJob(
+        "Opening " + std::filesystem::path(path).filename().string(),
+        [result, path](Progress& progress) {
+          progress.report(0.1, "reading");
+          *result = loadProject(path);
+          progress.report(1.0, "done");
+        },
+        [this, result, path] {
+          for (const auto& w : result->warnings) log("warning: " + w);
+          history_.reset(std::move(result->document));
+          path_ = path;
+          selected_.reset();
+          recent_.add(path);
+          recovery_.discard();
+          syncScene();
+          frameAll();
+          log("Opened " + path);
+        });
+  });
+}
+
+bool App::saveTo(const std::string& path) {
+  try {
+    Document doc = history_.current();
+    if (doc.name == "untitled" || doc.name.empty()) doc.name = std::filesystem::path(path).stem().string();
+    saveProject(doc, path);
+    path_ = path;
+    history_.markSaved();
+    recent_.add(path);
+    recovery_.discard();
+    log("Saved " + path);
+    return true;
+  } catch (const std::exception& e) {
+    errorMessage_ = std::string("Could not save: ") + e.what();
+    showError_ = true;
+    log(errorMessage_, true);
+    return false;
+  }
+}
+
+void App::save() {
+  if (path_.empty()) saveAs();
+  else saveTo(path_);
+}
+
+void App::saveAs() {
+  fileDialog_.open(FileDialog::Mode::Save, "Save project as", {".corbel"}, path_,
+                   [this](const std::string& p) { saveTo(p); });
+}
+
+void App::exportScene() {
+  std::string start = path_.empty() ? std::string("scene.glb")
+                                    : std::filesystem::path(path_).replace_extension(".glb").string();
+  fileDialog_.open(FileDialog::Mode::Save, "Export scene", {".glb", ".obj", ".ply", ".off"}, start,
+                   [this](const std::string& p) {
+                     auto snapshot = std::make_shared<Scene>(scene_);
+                     std::vector<ObjectId> visible;
+                     for (const DocObject& o : history_.current().objects)
+                       if (o.visible) visible.push_back(o.id);
+                     startJob(
+                         "Exporting " + std::filesystem::path(p).filename().string(),
+                         [snapshot, visible, p](Progress& progress) {
+                           progress.report(0.2, "writing");
+                           ExportOptions opt;
+                           opt.include = [visible](ObjectId id) {
+                             return std::find(visible.begin(), visible.end(), id) != visible.end();
+                           };
+                           corbel::exportScene(*snapshot, p, opt);
+                           progress.report(1.0, "done");
+                         },
+                         [this, p] { log("Exported " + p); });
+                   });
+}
+
+void App::autosaveIfDue() {
+  if (!history_.dirty() || history_.stateId() == autosavedState_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (std::chrono::duration<double>(now - lastAutosave_).count() < options_.autosaveSeconds) return;
+  lastAutosave_ = now;
+  try {
+    recovery_.write(history_.current(), path_);
+    autosavedState_ = history_.stateId();
+    log("Autosaved to " + recovery_.documentPath());
+  } catch (const std::exception& e) {
+    log(std::string("Autosave failed: ") + e.what(), true);
+  }
+}
+
+void App::checkRecovery() {
+  std::string problem;
+  auto found = recovery_.find(&problem);
+  if (!problem.empty()) log("A recovery file exists but cannot be read: " + problem, true);
+  if (!found) return;
+  switch (options_.recover) {
+    case EditorOptions::Recover::No: recovery_.discard(); break;
+    case EditorOptions::Recover::Yes:
+      history_.reset(Document{});
+      commit(found->document, "Recover unsaved work");
+      path_ = found->originalPath;
+      syncScene();
+      frameAll();
+      log("Recovered unsaved work from " + found->savedAt);
+      break;
+    case EditorOptions::Recover::Ask: recoveryOffer_ = std::move(found); break;
+  }
+}
+
+// ---------------------------------------------------------------- jobs
+
+void App::startJob(std::string title, BackgroundJob::Work work, std::function<void()> onDone) {
+  if (job_) {
+    log("Busy with " + job_->title() + "; try again when it finishes.", true);
+    return;
+  }
+  log(title + "…");
+  job_ = std::make_unique<BackgroundJob>(std::move(title), std::move(work));
+  jobDone_ = std::move(onDone);
+}
+
+void App::pollJob() {
+  if (!job_ || !job_->finished()) return;
+  job_->wait();
+  std::unique_ptr<BackgroundJob> job = std::move(job_);
+  auto done = std::move(jobDone_);
+  try {
+    job->rethrow();
+    if (job->progress().cancelled()) log(job->title() + ": cancelled");
+    else if (done) done();
+  } catch (const Cancelled&) {
+    log(job->title() + ": cancelled");
+  } catch (const std::exception& e) {
+    errorMessage_ = job->title() + " failed:\n" + e.what();
+    showError_ = true;
+    log(errorMessage_, true);
+  }
+}
+
+// ---------------------------------------------------------------- actions
+
+void App::registerActions() {
+  auto doc = [this] { return history_.current(); };
+  auto add = [this](Action a) { actions_.add(std::move(a)); };
+  add({"file.new", "File", "New", "Start an empty project.", {GLFW_KEY_N, true}, false, [this] { newDocument(); }});
+  add({"file.open", "File", "Open…", "Open a project file (.corbel).", {GLFW_KEY_O, true}, false, [this] {
+         guardUnsaved([this] {
+           fileDialog_.open(FileDialog::Mode::Open, "Open project", {".corbel"}, path_,
+                            [this](const std::string& p) {
+                              // The unsaved-changes question was already answered.
+                              history_.markSaved();
+                              openFile(p);
+                            });
+         });
+       }});
+  add({"file.save", "File", "Save", "Save the project (atomic: the old file stays intact until the new one is complete).",
+       {GLFW_KEY_S, true}, false, [this] { save(); }});
+  add({"file.save_as", "File", "Save As…", "Save the project under a new name.", {GLFW_KEY_S, true, true}, false,
+       [this] { saveAs(); }});
+  add({"file.export", "File", "Export…", "Export the visible objects to glTF (.glb), OBJ, PLY or OFF.",
+       {GLFW_KEY_E, true}, false, [this] { exportScene(); }, {}, {}, true});
+  add({"file.quit", "File", "Quit", "Close corbel (asks before discarding changes).", {GLFW_KEY_Q, true}, false,
+       [this] { guardUnsaved([this] { quitRequested_ = true; }); }, {}, {}, true});
+
+  add({"edit.undo", "Edit", "Undo", "Undo the last change to the document.", {GLFW_KEY_Z, true}, false,
+       [this] {
+         if (history_.undo()) log("Undo");
+       },
+       [this] { return history_.canUndo(); }});
+  add({"edit.redo", "Edit", "Redo", "Redo the change undone last.", {GLFW_KEY_Z, true, true}, false,
+       [this] {
+         if (history_.redo()) log("Redo");
+       },
+       [this] { return history_.canRedo(); }});
+
+  add({"object.add_box", "Object", "Add Box", "Add a mass-model box next to the existing objects.", {GLFW_KEY_B, true},
+       true, [this, doc] {
+         Document d = doc();
+         BoxSpec b;
+         BBox box = scene_.bounds();
+         if (!box.empty()) b.origin = Vec3(box.hi[0] + 4.0 + b.size[0] / 2, box.center()[1], 0.0);
+         const ObjectId id = d.add("Box", b);
+         commit(std::move(d), "Add box");
+         selected_ = id;
+       }});
+  add({"object.duplicate", "Object", "Duplicate", "Copy the selected object beside itself.", {GLFW_KEY_D, true}, true,
+       [this, doc] {
+         Document d = doc();
+         const DocObject* o = d.find(*selected_);
+         DocObject copy = *o;
+         std::visit([](BoxSpec& b) { b.origin[0] += b.size[0] + 2.0; }, copy.spec);
+         const ObjectId id = d.add(o->name, copy.spec);
+         commit(std::move(d), "Duplicate " + copy.name);
+         selected_ = id;
+       },
+       [this] { return selected_.has_value(); }});
+  add({"object.delete", "Object", "Delete", "Delete the selected object.", {GLFW_KEY_DELETE}, true,
+       [this, doc] {
+         Document d = doc();
+         const std::string name = d.find(*selected_)->name;
+         d.remove(*selected_);
+         selected_.reset();
+         commit(std::move(d), "Delete " + name);
+       },
+       [this] { return selected_.has_value(); }});
+
+  auto preset = [this](render::CameraPreset p) {
+    return [this, p] {
+      render::applyPreset(camera_, p);
+      frameAll();
+    };
+  };
+  add({"view.frame", "View", "Frame All", "Fit the visible objects in the view.", {GLFW_KEY_HOME}, false,
+       [this] { frameAll(); }});
+  add({"view.perspective", "View", "Perspective", "Look from above at an angle.", {GLFW_KEY_KP_5}, false,
+       preset(render::CameraPreset::Perspective), {}, {}, true});
+  add({"view.front", "View", "Front", "Look along +Y.", {GLFW_KEY_KP_1}, false, preset(render::CameraPreset::Front)});
+  add({"view.right", "View", "Right", "Look along −X.", {GLFW_KEY_KP_3}, false, preset(render::CameraPreset::Right)});
+  add({"view.top", "View", "Top", "Look straight down.", {GLFW_KEY_KP_7}, false, preset(render::CameraPreset::Top)});
+  add({"view.wireframe", "View", "Wireframe", "Draw edges only.", {GLFW_KEY_W, false, false, true}, false,
+       [this] { settings_.wireframe = !settings_.wireframe; }, {}, [this] { return settings_.wireframe; }, true});
+  add({"view.edges", "View", "Edges", "Outline every face.", {}, false, [this] { settings_.edges = !settings_.edges; },
+       {}, [this] { return settings_.edges; }});
+  add({"view.grid", "View", "Ground Grid", "Show the ground grid at z = 0.", {}, false,
+       [this] { settings_.grid = !settings_.grid; }, {}, [this] { return settings_.grid; }});
+
+  add({"tools.validate", "Tools", "Validate All Objects",
+       "Check every object's shell (closed, 2-manifold, Euler characteristic), in the background.", {}, false, [this] {
+         auto snapshot = std::make_shared<Scene>(scene_);
+         auto lines = std::make_shared<std::vector<std::string>>();
+         startJob(
+             "Validating objects",
+             [snapshot, lines](Progress& progress) {
+               std::size_t i = 0;
+               const std::size_t n = snapshot->objects().size();
+               for (const auto& [id, info] : snapshot->objects()) {
+                 if (progress.cancelled()) throw Cancelled();
+                 const ValidityReport r = snapshot->validate(id);
+                 std::string line = info.name + ": " + (r.closedManifold() ? "closed 2-manifold" : "PROBLEMS") +
+                                    ", " + std::to_string(r.faces) + " faces, Euler " + std::to_string(r.euler);
+                 for (const auto& p : r.problems()) line += "; " + p;
+                 lines->push_back(line);
+                 progress.report(double(++i) / n, info.name);
+               }
+             },
+             [this, lines] {
+               for (const auto& l : *lines) log(l, l.find("PROBLEMS") != std::string::npos);
+             });
+       }});
+  add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
+       [this] { showHelp_ = true; }});
+}
+
+void App::handleShortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput || fileDialog_.isOpen()) return;
+  for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
+    if (!ImGui::IsKeyPressed(key, false)) continue;
+    const Action* a = actions_.match(key, io.KeyCtrl, io.KeyShift, io.KeyAlt);
+    if (a && actions_.isEnabled(*a) && a->run) {
+      a->run();
+      break;
+    }
+  }
+}
+
+// ---------------------------------------------------------------- frame
+
+void App::drawMenuBar() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  std::vector<std::string> menus;
+  for (const Action& a : actions_.all())
+    if (!a.menu.empty() && std::find(menus.begin(), menus.end(), a.menu) == menus.end()) menus.push_back(a.menu);
+  for (const std::string& menu : menus) {
+    if (!ImGui::BeginMenu(menu.c_str())) continue;
+    for (const Action& a : actions_.all()) {
+      if (a.menu != menu) continue;
+      if (a.separatorBefore) ImGui::Separator();
+      std::string label = a.label;
+      if (a.id == "edit.undo" && history_.canUndo()) label += " " + history_.undoLabel();
+      if (a.id == "edit.redo" && history_.canRedo()) label += " " + history_.redoLabel();
+      const std::string shortcut = a.shortcut.text();
+      if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), a.checked && a.checked(),
+                          actions_.isEnabled(a)) &&
+          a.run)
+        a.run();
+      if (ImGui::IsItemHovered() && !a.help.empty()) ImGui::SetTooltip("%s", a.help.c_str());
+      if (a.id == "file.open") {
+        if (ImGui::BeginMenu("Open Recent", !recent_.paths().empty())) {
+          for (const std::string& p : recent_.paths())
+            if (ImGui::MenuItem(p.c_str())) {
+              const std::string chosen = p;
+              openFile(chosen);
+              break;
+            }
+          ImGui::EndMenu();
+        }
+      }
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
+void App::drawObjectProperties(const DocObject& object) {
+  Document d = history_.current();
+  DocObject* o = d.find(object.id);
+  const std::string key = "obj" + std::to_string(object.id) + ".";
+  bool changed = false;
+  std::string label, field;
+  auto edited = [&](const char* what, const char* fieldName) {
+    changed = true;
+    label = std::string("Edit ") + what + " of " + object.name;
+    field = fieldName;
+  };
+
+  char name[limits::kMaxNameLength + 1];
+  std::snprintf(name, sizeof name, "%s", o->name.c_str());
+  if (ImGui::InputText("Name", name, sizeof name, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    std::string n = name;
+    if (n.empty()) log("An object needs a name.", true);
+    else if (n != o->name && d.findByName(n)) log("Another object is already called \"" + n + "\".", true);
+    else if (n != o->name) {
+      o->name = n;
+      edited("name", "name");
+    }
+  }
+  std::visit(
+      [&](BoxSpec& b) {
+        ImGui::Separator();
+  ImGui::TextDisabled("Box");
+        float origin[3] = {float(b.origin[0]), float(b.origin[1]), float(b.origin[2])};
+        if (ImGui::DragFloat3("Origin (m)", origin, 0.1f, -1e5f, 1e5f, "%.2f")) {
+          b.origin = Vec3(origin[0], origin[1], origin[2]);
+          edited("origin", "origin");
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+        float size[3] = {float(b.size[0]), float(b.size[1]), float(b.size[2])};
+        if (ImGui::DragFloat3("Size (m)", size, 0.05f, 0.1f, 1e4f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+          b.size = Vec3(size[0], size[1], size[2]);
+          edited("size", "size");
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+        float rot = float(b.rotation_deg);
+        if (ImGui::DragFloat("Rotation (°)", &rot, 0.5f, -360.f, 360.f, "%.1f")) {
+          b.rotation_deg = rot;
+          edited("rotation", "rotation");
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+        if (ImGui::BeginCombo("Material", b.material.c_str())) {
+          for (const auto& m : builtinMaterials()) {
+            const Rgb c = m.color;
+            ImGui::ColorButton(("##c" + std::string(m.name)).c_str(), ImVec4(c[0], c[1], c[2], 1),
+                               ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+            ImGui::SameLine();
+            if (ImGui::Selectable(std::string(m.name).c_str(), b.material == m.name)) {
+              b.material = m.name;
+              edited("material", "material");
+            }
+          }
+          ImGui::EndCombo();
+        }
+        int rep[2] = {b.repeat_x, b.repeat_y};
+        if (ImGui::DragInt2("Repeat", rep, 0.1f, 1, 100, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+          b.repeat_x = std::max(1, rep[0]);
+          b.repeat_y = std::max(1, rep[1]);
+          edited("repeat", "repeat");
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+        float spacing[2] = {float(b.spacing_x), float(b.spacing_y)};
+        if (ImGui::DragFloat2("Spacing (m)", spacing, 0.1f, -1e3f, 1e3f, "%.2f")) {
+          b.spacing_x = spacing[0];
+          b.spacing_y = spacing[1];
+          edited("spacing", "spacing");
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+        if (changed) {
+          if (auto problem = checkBoxSpec(b)) {
+            log(object.name + ": " + *problem, true);
+            changed = false;
+          }
+        }
+      },
+      o->spec);
+  if (changed) commit(std::move(d), label, key + field);
+
+  ImGui::Separator();
+  ImGui::TextDisabled("Shell");
+  const ValidityReport r = scene_.validate(object.id);
+  ImGui::Text("%zu faces, %zu vertices, %zu edges", r.faces, r.vertices, r.edges);
+  ImGui::Text("Euler characteristic %ld, %zu component%s", r.euler, r.components, r.components == 1 ? "" : "s");
+  ImGui::Text("Area %.2f m², volume %.2f m³", r.area, r.volume);
+  if (r.closedManifold()) ImGui::TextColored(ImVec4(0.4f, 0.85f, 0.4f, 1), "closed, 2-manifold, consistent");
+  for (const auto& p : r.problems()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", p.c_str());
+}
+
+void App::drawLeftPanel() {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const float top = ImGui::GetFrameHeight();
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + top));
+  ImGui::SetNextWindowSize(ImVec2(kLeftPanelWidth, vp->Size.y - top - kStatusBarHeight));
+  ImGui::Begin("Panel", nullptr,
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::PushItemWidth(-110.0f);  // leave room for the labels
+  const Document& current = history_.current();
+  ImGui::Separator();
+  ImGui::TextDisabled("Objects");
+  if (current.objects.empty()) ImGui::TextDisabled("No objects. Object > Add Box (Ctrl+B).");
+  for (const DocObject& o : current.objects) {
+    ImGui::PushID(static_cast<int>(o.id));
+    bool visible = o.visible;
+    if (ImGui::Checkbox("##visible", &visible)) {
+      Document d = current;
+      d.find(o.id)->visible = visible;
+      commit(std::move(d), std::string(visible ? "Show " : "Hide ") + o.name);
+      ImGui::PopID();
+      break;  // `current` changed
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Visible");
+    ImGui::SameLine();
+    if (ImGui::Selectable(o.name.c_str(), selected_ && *selected_ == o.id)) selected_ = o.id;
+    ImGui::PopID();
+  }
+  if (selected_) {
+    if (const DocObject* o = history_.current().find(*selected_)) drawObjectProperties(*o);
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void App::drawStatusBar() {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + vp->Size.y - kStatusBarHeight));
+  ImGui::SetNextWindowSize(ImVec2(vp->Size.x, kStatusBarHeight));
+  ImGui::Begin("Status", nullptr,
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  if (job_) {
+    ImGui::ProgressBar(static_cast<float>(job_->progress().fraction()), ImVec2(260, 0),
+                       (job_->title() + " " + job_->progress().stage()).c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) job_->progress().cancel();
+    ImGui::SameLine();
+  }
+  ImGui::Text("%s%s  |  %zu objects, %zu triangles  |  %.0f fps", path_.empty() ? "(unsaved project)" : path_.c_str(),
+              history_.dirty() ? " *" : "", history_.current().objects.size(), renderer_->triangleCount(),
+              ImGui::GetIO().Framerate);
+  ImGui::Separator();
+  ImGui::BeginChild("log");
+  for (const LogLine& l : log_) {
+    if (l.error) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", l.text.c_str());
+    else ImGui::TextUnformatted(l.text.c_str());
+  }
+  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY() - 4) ImGui::SetScrollHereY(1.0f);
+  ImGui::EndChild();
+  ImGui::End();
+}
+
+void App::drawHelp() {
+  if (!showHelp_) return;
+  ImGui::SetNextWindowSize(ImVec2(560, 440), ImGuiCond_Appearing);
+  if (ImGui::Begin("Keyboard shortcuts", &showHelp_)) {
+    if (ImGui::BeginTable("actions", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders)) {
+      ImGui::TableSetupColumn("Command");
+      ImGui::TableSetupColumn("Shortcut");
+      ImGui::TableSetupColumn("What it does");
+      ImGui::TableHeadersRow();
+      for (const Action& a : actions_.all()) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%s > %s", a.menu.c_str(), a.label.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(a.shortcut.text().c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", a.help.c_str());
+      }
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted("Viewport");
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted("mouse");
+      ImGui::TableNextColumn();
+      ImGui::TextWrapped("Left drag: orbit. Right or middle drag (or Shift+left): pan. Wheel: zoom.");
+      ImGui::EndTable();
+    }
+  }
+  ImGui::End();
+}
+
+void App::drawModals() {
+  if (showUnsavedPrompt_) {
+    ImGui::OpenPopup("Unsaved changes");
+    showUnsavedPrompt_ = false;
+  }
+  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("The project has unsaved changes. Save them first?");
+    if (ImGui::Button("Save")) {
+      ImGui::CloseCurrentPopup();
+      if (!path_.empty() && saveTo(path_)) {
+        if (afterUnsavedPrompt_) afterUnsavedPrompt_();
+      } else if (path_.empty()) {
+        auto then = afterUnsavedPrompt_;
+        fileDialog_.open(FileDialog::Mode::Save, "Save project as", {".corbel"}, "", [this, then](const std::string& p) {
+          if (saveTo(p) && then) then();
+        });
+      }
+      afterUnsavedPrompt_ = nullptr;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+      ImGui::CloseCurrentPopup();
+      history_.markSaved();  // the user chose to drop them
+      recovery_.discard();
+      if (afterUnsavedPrompt_) afterUnsavedPrompt_();
+      afterUnsavedPrompt_ = nullptr;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      ImGui::CloseCurrentPopup();
+      afterUnsavedPrompt_ = nullptr;
+    }
+    ImGui::EndPopup();
+  }
+
+  if (recoveryOffer_) {
+    ImGui::OpenPopup("Recover unsaved work?");
+  }
+  if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("corbel found work that was not saved (autosaved %s%s%s).", recoveryOffer_->savedAt.c_str(),
+                recoveryOffer_->originalPath.empty() ? "" : ", from ", recoveryOffer_->originalPath.c_str());
+    ImGui::Text("%zu objects. Recover it? (Your current document is kept until you choose.)",
+                recoveryOffer_->document.objects.size());
+    if (ImGui::Button("Recover")) {
+      history_.reset(history_.current());
+      commit(recoveryOffer_->document, "Recover unsaved work");
+      path_ = recoveryOffer_->originalPath;
+      syncScene();
+      frameAll();
+      log("Recovered unsaved work");
+      recoveryOffer_.reset();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+      recovery_.discard();
+      recoveryOffer_.reset();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+
+  if (showError_) {
+    ImGui::OpenPopup("Error");
+    showError_ = false;
+  }
+  if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::PushTextWrapPos(560);
+    ImGui::TextUnformatted(errorMessage_.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("OK")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  fileDialog_.draw();
+}
+
+void App::handleViewportInput() {
+  const ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 m = io.MousePos;
+  const bool inside = m.x >= vpX_ && m.x < vpX_ + vpW_ && m.y >= vpY_ && m.y < vpY_ + vpH_;
+  if (io.WantCaptureMouse || !inside) return;
+  const ImVec2 d = io.MouseDelta;
+  const bool panning = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
+                       (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
+  if (panning) camera_.pan(d.x, d.y, static_cast<int>(vpH_));
+  else if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) camera_.orbit(d.x, d.y);
+  if (io.MouseWheel != 0) camera_.zoom(io.MouseWheel);
+}
+
+void App::takeScreenshot(const std::string& path) {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  render::Image img(w, h);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  img.flipVertically();
+  for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+  render::writePng(img, path);
+}
+
+std::string App::windowTitle() const {
+  std::string name = path_.empty() ? "untitled" : std::filesystem::path(path_).filename().string();
+  return (history_.dirty() ? "* " : "") + name + " — corbel";
+}
+
+int App::run() {
+  std::string lastTitle;
+  while (true) {
+    if (glfwWindowShouldClose(window_)) {
+      glfwSetWindowShouldClose(window_, GLFW_FALSE);
+      guardUnsaved([this] { quitRequested_ = true; });
+    }
+    if (quitRequested_) break;
+    // Sleep until input arrives unless something is moving or scripted.
+    if (job_ || options_.quitAfterFrames > 0 || frame_ < 3) glfwPollEvents();
+    else glfwWaitEventsTimeout(0.1);
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+
+    if (scriptedIndex_ < options_.actions.size() && frame_ >= 2) {
+      const std::string& id = options_.actions[scriptedIndex_++];
+      if (!actions_.trigger(id)) log("script: action '" + id + "' is unknown or disabled", true);
+    }
+    handleShortcuts();
+    pollJob();
+    syncScene();
+
+    drawMenuBar();
+    drawLeftPanel();
+    drawStatusBar();
+    drawHelp();
+    drawModals();
+    syncScene();  // edits made by the panels this frame
+
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    vpX_ = vp->Pos.x + kLeftPanelWidth;
+    vpY_ = vp->Pos.y + ImGui::GetFrameHeight();
+    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth);
+    vpH_ = std::max(1.0f, vp->Size.y - ImGui::GetFrameHeight() - kStatusBarHeight);
+    if (firstFrame_) {
+      frameAll();
+      firstFrame_ = false;
+    }
+    handleViewportInput();
+    ImGui::Render();
+
+    int fbw = 0, fbh = 0;
+    glfwGetFramebufferSize(window_, &fbw, &fbh);
+    const float sx = fbw / std::max(vp->Size.x, 1.0f), sy = fbh / std::max(vp->Size.y, 1.0f);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fbw, fbh);
+    glClearColor(0.11f, 0.11f, 0.12f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const Document& doc = history_.current();
+    settings_.visible = [&doc](ObjectId id) {
+      const DocObject* o = doc.find(id);
+      return o && o->visible;
+    };
+    settings_.highlight = selected_;
+    renderer_->setScene(scene_, settings_);
+    renderer_->draw(camera_, int(vpX_ * sx), int((vp->Size.y - vpY_ - vpH_) * sy), int(vpW_ * sx), int(vpH_ * sy),
+                    settings_);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    ++frame_;
+    if (options_.quitAfterFrames > 0 && frame_ >= options_.quitAfterFrames) {
+      if (!options_.screenshot.empty()) {
+        try {
+          takeScreenshot(options_.screenshot);
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "corbel: %s\n", e.what());
+          return 1;
+        }
+      }
+      autosaveIfDue();
+      break;
+    }
+    glfwSwapBuffers(window_);
+    autosaveIfDue();
+    const std::string title = windowTitle();
+    if (title != lastTitle) {
+      glfwSetWindowTitle(window_, title.c_str());
+      lastTitle = title;
+    }
+  }
+  if (job_) {
+    job_->progress().cancel();
+    job_->wait();
+  }
+  // A clean exit with nothing unsaved needs no recovery file.
+  if (!history_.dirty()) recovery_.discard();
+  return 0;
+}
+
+}  // namespace corbel::editor

@@ -1,0 +1,117 @@
+#pragma once
+// The editor application: one Document with undo history, the Scene derived from it, the
+// renderer, and the ImGui shell (menu bar, left panel, status/log bar, 3D viewport).
+#include "core/app_state.h"
+#include "core/history.h"
+#include "core/progress.h"
+#include "core/scene.h"
+#include "core/scene_sync.h"
+#include "editor/actions.h"
+#include "editor/file_dialog.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace corbel::editor {
+
+struct EditorOptions {
+  std::string project;              // opened at start ("" = a new document)
+  std::string screenshot;           // write the window to this PNG, then quit
+  int quitAfterFrames = -1;         // quit after this many frames (> 0)
+  std::vector<std::string> actions; // action ids run one per frame at start (scripted use)
+  double autosaveSeconds = 60.0;
+  enum class Recover { Ask, Yes, No } recover = Recover::Ask;
+  std::string stateDir;             // recovery and recent files ("" = defaultStateDir())
+};
+
+class App {
+ public:
+  App(GLFWwindow* window, EditorOptions options);
+  ~App();
+  int run();
+
+ private:
+  // Document and files.
+  void commit(Document doc, const std::string& label, const std::string& mergeKey = {});
+  void newDocument();
+  void openFile(const std::string& path);
+  bool saveTo(const std::string& path);
+  void save();
+  void saveAs();
+  void exportScene();
+  void guardUnsaved(std::function<void()> then);  // asks before discarding changes
+  void autosaveIfDue();
+  void checkRecovery();
+
+  // Frame.
+  void registerActions();
+  void handleShortcuts();
+  void handleViewportInput();
+  void drawMenuBar();
+  void drawLeftPanel();
+  void drawObjectProperties(const DocObject& object);
+  void drawStatusBar();
+  void drawModals();
+  void drawHelp();
+  void pollJob();
+  void startJob(std::string title, BackgroundJob::Work work, std::function<void()> onDone);
+  void log(const std::string& line, bool error = false);
+  void syncScene();
+  void frameAll();
+  void takeScreenshot(const std::string& path);
+  std::string windowTitle() const;
+
+  GLFWwindow* window_;
+  EditorOptions options_;
+  History history_;
+  Scene scene_;
+  SceneSync sync_;
+  std::unique_ptr<render::Renderer> renderer_;
+  render::OrbitCamera camera_;
+  render::RenderSettings settings_;
+  ActionRegistry actions_;
+  FileDialog fileDialog_;
+  Recovery recovery_;
+  RecentFiles recent_;
+
+  std::string path_;  // current file ("" = never saved)
+  std::optional<ObjectId> selected_;
+  std::uint64_t syncedState_ = 0;
+  std::uint64_t autosavedState_ = 0;
+  std::chrono::steady_clock::time_point lastAutosave_;
+
+  struct LogLine {
+    std::string text;
+    bool error;
+  };
+  std::deque<LogLine> log_;
+
+  std::unique_ptr<BackgroundJob> job_;
+  std::function<void()> jobDone_;
+
+  // Modals.
+  std::function<void()> afterUnsavedPrompt_;
+  bool showUnsavedPrompt_ = false;
+  std::string errorMessage_;
+  bool showError_ = false;
+  std::optional<RecoveredWork> recoveryOffer_;
+  bool showHelp_ = false;
+  bool quitRequested_ = false;
+
+  // Viewport rectangle in window pixels (top-left origin).
+  float vpX_ = 0, vpY_ = 0, vpW_ = 1, vpH_ = 1;
+  int frame_ = 0;
+  std::size_t scriptedIndex_ = 0;
+  bool firstFrame_ = true;
+};
+
+}  // namespace corbel::editor
