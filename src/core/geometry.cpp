@@ -1,5 +1,6 @@
 #include "core/geometry.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -39,8 +40,9 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
   return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
 }
 
-bool insideTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
-  return cross(a, b, p) >= 0 && cross(b, c, p) >= 0 && cross(c, a, p) >= 0;
+// Points on the triangle's border (within eps) count as inside: they block the ear.
+bool insideTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c, double eps) {
+  return cross(a, b, p) >= -eps && cross(b, c, p) >= -eps && cross(c, a, p) >= -eps;
 }
 
 }  // namespace
@@ -55,6 +57,19 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
     return tris;
   }
   const std::vector<Vec2> pts = projectToPlane(polygon, newellNormal(polygon));
+  // Colinear corners of a polygon in a tilted plane come out a rounding error away from
+  // flat; turns within eps count as flat (never ears), so no zero-area triangle is clipped.
+  double extent = 0.0, reach = 0.0;
+  {
+    Vec2 lo = pts[0], hi = pts[0];
+    for (const Vec2& p : pts) {
+      lo.minimize(p);
+      hi.maximize(p);
+      reach = std::max({reach, std::abs(p[0]), std::abs(p[1])});
+    }
+    extent = (hi - lo).norm();
+  }
+  const double eps = 1e-12 * extent * std::max(extent, reach);
   std::vector<int> ring(n);
   for (int i = 0; i < n; ++i) ring[i] = i;
   while (ring.size() > 3) {
@@ -63,12 +78,12 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
     for (int i = 0; i < m; ++i) {
       const int ia = ring[(i + m - 1) % m], ib = ring[i], ic = ring[(i + 1) % m];
       const double turn = cross(pts[ia], pts[ib], pts[ic]);
-      if (turn <= 0) continue;  // reflex or flat corner: not an ear
+      if (turn <= eps) continue;  // reflex or flat corner: not an ear
       bool empty = true;
       for (int j = 0; j < m && empty; ++j) {
         const int q = ring[j];
         if (q == ia || q == ib || q == ic) continue;
-        if (insideTriangle(pts[q], pts[ia], pts[ib], pts[ic])) empty = false;
+        if (insideTriangle(pts[q], pts[ia], pts[ib], pts[ic], eps)) empty = false;
       }
       if (empty) {
         best = i;

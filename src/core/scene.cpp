@@ -2,6 +2,7 @@
 
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <atomic>
 #include <cmath>
 #include <numeric>
 
@@ -41,7 +42,13 @@ std::vector<std::string> ValidityReport::problems() const {
   return out;
 }
 
+void Scene::touch() {
+  static std::atomic<std::uint64_t> counter{0};
+  revision_ = ++counter;
+}
+
 Scene::Scene() {
+  touch();
   // Kernels never print: OpenMesh reports refused faces on omerr, we count them instead.
   omerr().disable();
   bindProperties();
@@ -53,9 +60,9 @@ Scene::Scene(const Scene& other)
       tags_(other.tags_),
       materials_(other.materials_),
       tagIndex_(other.tagIndex_),
-      materialIndex_(other.materialIndex_),
-      revision_(other.revision_) {
+      materialIndex_(other.materialIndex_) {
   bindProperties();
+  touch();
 }
 
 Scene& Scene::operator=(const Scene& other) {
@@ -66,7 +73,7 @@ Scene& Scene::operator=(const Scene& other) {
     materials_ = other.materials_;
     tagIndex_ = other.tagIndex_;
     materialIndex_ = other.materialIndex_;
-    revision_ = other.revision_ + 1;
+    touch();
     bindProperties();
   }
   return *this;
@@ -113,7 +120,7 @@ void Scene::removeObject(ObjectId id) {
   }
   if (any) collectGarbage();
   objects_.erase(id);
-  ++revision_;
+  touch();
 }
 
 void Scene::replaceObject(ObjectId id, Kind kind, const std::string& name, const MeshData& data) {
@@ -163,21 +170,21 @@ void Scene::replaceObject(ObjectId id, Kind kind, const std::string& name, const
   }
   if (isolated) collectGarbage();
   objects_[id] = std::move(info);
-  ++revision_;
+  touch();
 }
 
 void Scene::setObjectName(ObjectId id, const std::string& name) {
   auto it = objects_.find(id);
   if (it != objects_.end()) {
     it->second.name = name;
-    ++revision_;
+    touch();
   }
 }
 
 void Scene::clear() {
   mesh_.clean();
   objects_.clear();
-  ++revision_;
+  touch();
 }
 
 BBox Scene::bounds(ObjectId id) const {

@@ -87,7 +87,8 @@ class Scene {
   const std::vector<std::string>& materialNames() const { return materials_; }
   const std::vector<std::string>& tagNames() const { return tags_; }
 
-  // Increases on every change; lets the renderer and exporters cache derived buffers.
+  // A number no other state of any Scene had: it changes on every change (copies included),
+  // so the renderer and exporters can cache derived buffers by it.
   std::uint64_t revision() const { return revision_; }
 
  private:
@@ -95,6 +96,7 @@ class Scene {
   int internTag(const std::string& name);
   int internMaterial(const std::string& name);
   void collectGarbage();
+  void touch();
 
   PolyMesh mesh_;
   OpenMesh::FPropHandleT<std::int32_t> object_;
@@ -106,7 +108,7 @@ class Scene {
   std::vector<std::string> materials_{""};
   std::unordered_map<std::string, int> tagIndex_{{"", 0}};
   std::unordered_map<std::string, int> materialIndex_{{"", 0}};
-  std::uint64_t revision_ = 0;
+  std::uint64_t revision_ = 0;  // set by touch()
 };
 
 }  // namespace corbel

@@ -39,10 +39,24 @@ void OrbitCamera::frame(const BBox& box, double aspect) {
     return;
   }
   target = box.center();
-  const double radius = std::max(0.5 * box.diagonal(), 0.5);
-  const double halfFov = 0.5 * fov_deg * kDeg;
-  const double horizontalHalf = std::atan(std::tan(halfFov) * std::min(aspect, 1.0));
-  distance = radius / std::sin(std::min(halfFov, horizontalHalf)) * 1.05;
+  // The smallest distance at which all eight corners fall inside the frustum for the current
+  // view direction: for a corner at (r, u, f) in the camera's right/up/forward frame relative
+  // to the target, |r| ≤ (d − f)·tan(half horizontal fov) and likewise for u.
+  const double a = azimuth_deg * kDeg, e = elevation_deg * kDeg;
+  const Vec3 back(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));  // target → eye
+  Vec3 right = OpenMesh::cross(Vec3(0, 0, 1), back);
+  if (right.norm() < 1e-9) right = Vec3(-std::sin(a), std::cos(a), 0.0);
+  right.normalize();
+  const Vec3 up = OpenMesh::cross(back, right);
+  const double tanV = std::tan(0.5 * fov_deg * kDeg), tanH = tanV * std::max(aspect, 1e-3);
+  double d = 0.5;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 c((k & 1) ? box.hi[0] : box.lo[0], (k & 2) ? box.hi[1] : box.lo[1], (k & 4) ? box.hi[2] : box.lo[2]);
+    const Vec3 q = c - target;
+    const double f = OpenMesh::dot(q, back);  // towards the eye
+    d = std::max({d, f + std::abs(OpenMesh::dot(q, right)) / tanH, f + std::abs(OpenMesh::dot(q, up)) / tanV});
+  }
+  distance = d * 1.08;
 }
 
 void OrbitCamera::orbit(double dx, double dy) {

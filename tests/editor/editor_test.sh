@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The editor under Xvfb, as a user would meet it:
+#  1. it opens the example and its screenshot shows the model (compared with an empty project);
+#  2. an edit made by a scripted action is autosaved to the recovery file while unsaved, and a
+#     new session recovers it.
+set -euo pipefail
+editor=$1 cli=$2 check=$3 example=$4 work=$5
+rm -rf "$work" && mkdir -p "$work"
+export CORBEL_STATE_DIR=$work/state
+command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
+run() { xvfb-run -a -s "-screen 0 1440x900x24" "$editor" --size 1440x900 "$@"; }
+
+echo "== screenshot of the example and of an empty project"
+run --recover no --screenshot "$work/model.png" --quit-after-frames 8 "$example"
+run --recover no --screenshot "$work/empty.png" --quit-after-frames 8
+"$check" "$work/model.png" "$work/empty.png" 0.05
+
+echo "== autosave of unsaved work, then recovery"
+objects_before=$("$cli" check "$example" | tail -1)
+run --recover no --actions object.add_box --autosave-seconds 0 --quit-after-frames 8 "$example"
+test -f "$work/state/recovery.corbel" || { echo "no recovery file was written"; exit 1; }
+objects_after=$("$cli" check "$work/state/recovery.corbel" | tail -1)
+echo "example: $objects_before; recovery: $objects_after"
+before=$(sed -E 's/.*"objects":([0-9]+).*/\1/' <<<"$objects_before")
+after=$(sed -E 's/.*"objects":([0-9]+).*/\1/' <<<"$objects_after")
+[[ $after -eq $((before + 1)) ]] || { echo "recovery file should hold the added box"; exit 1; }
+cmp -s "$example" "$work/state/recovery.corbel" && { echo "recovery must not be the untouched example"; exit 1; }
+run --recover yes --screenshot "$work/recovered.png" --quit-after-frames 8
+"$check" "$work/recovered.png" "$work/empty.png" 0.05
+echo "editor test passed"

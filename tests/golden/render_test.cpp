@@ -1,0 +1,186 @@
+// Renderer properties, each checked against an independent computation: projected areas from
+// the camera matrices and the shoelace formula, the documented lighting model, visibility.
+#include "core/massing.h"
+#include "core/materials.h"
+#include "golden_support.h"
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace corbel::test {
+namespace {
+
+constexpr int kSize = 400;
+
+Scene oneBox(const BoxSpec& spec, ObjectId id = 1) {
+  Scene s;
+  s.replaceObject(id, Kind::Mass, "box", buildBoxes(spec));
+  return s;
+}
+
+render::OrbitCamera topCamera() {
+  render::OrbitCamera c;
+  render::applyPreset(c, render::CameraPreset::Top);
+  c.target = Vec3(0, 0, 0);
+  c.distance = 40.0;
+  return c;
+}
+
+// Pixel position of a world point (top row = 0), through the camera's own matrices.
+glm::dvec2 project(const render::OrbitCamera& c, const Vec3& p, int w, int h) {
+  const glm::dvec4 clip = c.projection(double(w) / h) * c.view() * glm::dvec4(p[0], p[1], p[2], 1.0);
+  const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+  return {(ndc.x * 0.5 + 0.5) * w, (1.0 - (ndc.y * 0.5 + 0.5)) * h};
+}
+
+// The lighting model documented in shaders/mesh.frag.glsl, for a face with normal n.
+std::array<int, 3> litColor(const Rgb& albedo, const Vec3& n) {
+  const Vec3 sun = Vec3(0.45, -0.35, 0.82).normalized();
+  const double s = std::max(0.0, OpenMesh::dot(n, sun));
+  const double sky = 0.5 + 0.5 * n[2];
+  const double sunColor[3] = {1.0, 0.97, 0.9}, low[3] = {0.28, 0.26, 0.24}, high[3] = {0.42, 0.46, 0.52};
+  std::array<int, 3> out;
+  for (int k = 0; k < 3; ++k) {
+    const double light = sunColor[k] * s * 0.75 + low[k] + (high[k] - low[k]) * sky;
+    out[k] = static_cast<int>(std::lround(std::pow(std::clamp(albedo[k] * light, 0.0, 1.0), 1.0 / 2.2) * 255.0));
+  }
+  return out;
+}
+
+std::size_t countColor(const render::Image& img, const std::array<int, 3>& c, int tol) {
+  std::size_t n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const auto* p = img.at(x, y);
+      if (std::abs(p[0] - c[0]) <= tol && std::abs(p[1] - c[1]) <= tol && std::abs(p[2] - c[2]) <= tol) ++n;
+    }
+  return n;
+}
+
+render::RenderSettings plain() {
+  render::RenderSettings s;
+  s.grid = false;
+  s.edges = false;
+  return s;
+}
+
+TEST(Renderer, TopViewCoversTheProjectedRoofArea) {
+  BoxSpec spec;
+  spec.size = Vec3(10, 6, 4);
+  spec.rotation_deg = 30;
+  spec.material = "plaster";
+  const Scene scene = oneBox(spec);
+  const auto camera = topCamera();
+  const render::Image img = render::renderImage(sharedRenderer(), scene, camera, kSize, kSize, plain());
+
+  // Roof corners projected by the camera matrices; area by the shoelace formula.
+  const MeshData mesh = buildBoxes(spec);
+  std::vector<glm::dvec2> roof;
+  for (int i = 0; i < 6; ++i)
+    if (mesh.tags[mesh.faceTag[i]] == "roof")
+      for (int v : mesh.faces[i]) roof.push_back(project(camera, mesh.points[v], kSize, kSize));
+  ASSERT_EQ(roof.size(), 4u);
+  double area = 0;
+  for (std::size_t i = 0; i < roof.size(); ++i) {
+    const auto& a = roof[i];
+    const auto& b = roof[(i + 1) % roof.size()];
+    area += a.x * b.y - a.y * b.x;
+  }
+  area = std::abs(area) / 2;
+  const auto roofColor = litColor(materialColor("plaster", Kind::Mass), Vec3(0, 0, 1));
+  const double covered = double(countColor(img, roofColor, 3));
+  EXPECT_GT(area, 1000.0);
+  EXPECT_NEAR(covered / area, 1.0, 0.02) << "covered " << covered << " px, projected " << area << " px";
+}
+
+TEST(Renderer, FaceShadingFollowsTheDocumentedLightingModel) {
+  BoxSpec spec;
+  spec.size = Vec3(8, 8, 3);
+  spec.material = "brick";
+  const Scene scene = oneBox(spec);
+  const auto camera = topCamera();
+  const render::Image img = render::renderImage(sharedRenderer(), scene, camera, kSize, kSize, plain());
+  const auto expected = litColor(materialColor("brick", Kind::Mass), Vec3(0, 0, 1));
+  const auto* centre = img.at(kSize / 2, kSize / 2);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(centre[k], expected[k], 2) << "channel " << k;
+}
+
+TEST(Renderer, EmptySceneShowsOnlyTheSkyGradient) {
+  const Scene scene;
+  render::RenderSettings s = plain();
+  const render::Image img = render::renderImage(sharedRenderer(), scene, topCamera(), 64, 64, s);
+  // Top row is close to the gradient's top colour, bottom row to its bottom colour, and every
+  // column of a row is the same.
+  const auto* top = img.at(0, 0);
+  const auto* bottom = img.at(0, 63);
+  EXPECT_NEAR(top[0], 0.62 * 255, 3);
+  EXPECT_NEAR(top[2], 0.84 * 255, 3);
+  EXPECT_NEAR(bottom[0], 0.93 * 255, 3);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 1; x < 64; ++x)
+      for (int k = 0; k < 3; ++k) ASSERT_EQ(img.at(x, y)[k], img.at(0, y)[k]);
+}
+
+TEST(Renderer, HiddenObjectsAreNotDrawn) {
+  BoxSpec spec;
+  spec.size = Vec3(8, 8, 3);
+  const Scene scene = oneBox(spec);
+  render::RenderSettings s = plain();
+  const render::Image empty = render::renderImage(sharedRenderer(), Scene(), topCamera(), 64, 64, s);
+  s.visible = [](ObjectId) { return false; };
+  const render::Image hidden = render::renderImage(sharedRenderer(), scene, topCamera(), 64, 64, s);
+  EXPECT_EQ(hidden.rgba, empty.rgba);
+  s.visible = [](ObjectId) { return true; };
+  const render::Image shown = render::renderImage(sharedRenderer(), scene, topCamera(), 64, 64, s);
+  EXPECT_NE(shown.rgba, empty.rgba);
+}
+
+TEST(Renderer, OverlayArrowIsDrawnWhereItProjects) {
+  const Scene scene;
+  auto& renderer = sharedRenderer();
+  const auto camera = topCamera();
+  renderer.overlay().clear();
+  renderer.overlay().arrow(Vec3(-8, 0, 0), Vec3(8, 0, 0), {1.0f, 0.0f, 0.0f, 1.0f}, 0.25);
+  const render::Image img = render::renderImage(renderer, scene, camera, kSize, kSize, plain());
+  renderer.overlay().clear();
+  // The shaft's midpoint and a point inside the head are red.
+  const glm::dvec2 mid = project(camera, Vec3(0, 0, 0), kSize, kSize);
+  const glm::dvec2 head = project(camera, Vec3(6.5, 0, 0), kSize, kSize);
+  auto reddish = [&](glm::dvec2 p) {
+    bool any = false;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const auto* q = img.at(int(p.x) + dx, int(p.y) + dy);
+        // A 1-pixel shaft is blended by multisampling: red must dominate clearly.
+        any = any || (int(q[0]) - std::max(int(q[1]), int(q[2])) > 60);
+      }
+    return any;
+  };
+  EXPECT_TRUE(reddish(mid));
+  EXPECT_TRUE(reddish(head));
+}
+
+TEST(Camera, TargetProjectsToTheImageCentreAndFramingContainsTheBox) {
+  render::OrbitCamera c;
+  BBox box;
+  box.add(Vec3(-5, -3, 0));
+  box.add(Vec3(5, 3, 4));
+  c.frame(box, 4.0 / 3.0);
+  const glm::dvec2 centre = project(c, c.target, 800, 600);
+  EXPECT_NEAR(centre.x, 400, 1e-6);
+  EXPECT_NEAR(centre.y, 300, 1e-6);
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner((k & 1) ? box.hi[0] : box.lo[0], (k & 2) ? box.hi[1] : box.lo[1], (k & 4) ? box.hi[2] : box.lo[2]);
+    const glm::dvec2 p = project(c, corner, 800, 600);
+    EXPECT_GE(p.x, 0);
+    EXPECT_LE(p.x, 800);
+    EXPECT_GE(p.y, 0);
+    EXPECT_LE(p.y, 600);
+  }
+  EXPECT_NEAR((c.eye() - c.target).norm(), c.distance, 1e-9);
+}
+
+}  // namespace
+}  // namespace corbel::test
