@@ -77,14 +77,15 @@ long JsonReader::integer(long lo, long hi) const {
   long value = 0;
   if (v_.is_number_unsigned()) {
     const auto u = v_.get<std::uint64_t>();
-    if (u > static_cast<std::uint64_t>(hi)) fail(std::to_string(u) + " is larger than " + std::to_string(hi));
+    if (hi < 0 || u > static_cast<std::uint64_t>(hi)) fail(std::to_string(u) + " is larger than " + std::to_string(hi));
     value = static_cast<long>(u);
   } else if (v_.is_number_integer()) {
     value = static_cast<long>(v_.get<std::int64_t>());
   } else {
     const double d = v_.get<double>();
     if (!std::isfinite(d) || d != std::floor(d)) fail("expected an integer, found a fractional number");
-    if (d < static_cast<double>(lo) || d > static_cast<double>(hi)) {
+    // 2^63 compares equal to (double)LONG_MAX but does not fit a long.
+    if (d < static_cast<double>(lo) || d > static_cast<double>(hi) || d >= 0x1p63) {
       std::ostringstream s;
       s << d << " is outside [" << lo << ", " << hi << "]";
       fail(s.str());
@@ -129,6 +130,88 @@ std::pair<long, long> JsonReader::integerPair(long lo, long hi) const {
   return {JsonReader(v_[0], path_ + "[0]").integer(lo, hi), JsonReader(v_[1], path_ + "[1]").integer(lo, hi)};
 }
 
+namespace {
+
+// Builds the DOM like nlohmann's own parser and remembers where it is, so that a number too
+// large for a double (1e999: valid JSON, but nlohmann refuses it) is reported at its path.
+class PathTrackingBuilder {
+ public:
+  using json = nlohmann::json;
+  explicit PathTrackingBuilder(json& root) : root_(root) {}
+
+  bool null() { return put(nullptr); }
+  bool boolean(bool v) { return put(v); }
+  bool number_integer(json::number_integer_t v) { return put(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return put(v); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return put(v); }
+  bool string(json::string_t& v) { return put(std::move(v)); }
+  bool binary(json::binary_t& v) { return put(json::binary(std::move(v))); }
+  bool start_object(std::size_t) { return push(json::object()); }
+  bool key(json::string_t& k) {
+    keys_.back() = k;
+    return true;
+  }
+  bool end_object() { return pop(); }
+  bool start_array(std::size_t) { return push(json::array()); }
+  bool end_array() { return pop(); }
+  bool parse_error(std::size_t, const std::string& token, const nlohmann::json::exception& e) {
+    if (e.id == 406) throw InputError(path(), "number is not finite (" + token + " is out of range)");
+    std::string what = e.what();
+    // Drop nlohmann's "[json.exception.parse_error.101] " prefix; keep line/column and reason.
+    const auto close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+    throw InputError("", "not valid JSON: " + what);
+  }
+
+ private:
+  template <class V>
+  bool put(V&& v) {
+    slot() = json(std::forward<V>(v));
+    return true;
+  }
+  json& slot() {
+    if (stack_.empty()) return root_;
+    json& top = *stack_.back();
+    if (top.is_array()) {
+      top.push_back(nullptr);
+      return top.back();
+    }
+    return top[keys_.back()];
+  }
+  bool push(json container) {
+    json& s = slot();
+    s = std::move(container);
+    stack_.push_back(&s);
+    keys_.emplace_back();
+    return true;
+  }
+  bool pop() {
+    stack_.pop_back();
+    keys_.pop_back();
+    return true;
+  }
+  // Path of the value being read: in the innermost array the next index, in outer arrays
+  // the index of the element that holds the rest.
+  std::string path() const {
+    std::string out;
+    for (std::size_t i = 0; i < stack_.size(); ++i) {
+      if (stack_[i]->is_array()) {
+        const std::size_t n = stack_[i]->size();
+        out += "[" + std::to_string(i + 1 == stack_.size() ? n : n - 1) + "]";
+      } else {
+        out += (out.empty() ? "" : ".") + keys_[i];
+      }
+    }
+    return out;
+  }
+
+  json& root_;
+  std::vector<json*> stack_;
+  std::vector<std::string> keys_;
+};
+
+}  // namespace
+
 nlohmann::json parseJsonText(const std::string& text, int maxDepth) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError("", "file is empty");
   // Nesting pre-scan outside strings.
@@ -163,15 +246,10 @@ nlohmann::json parseJsonText(const std::string& text, int maxDepth) {
       --depth;
     }
   }
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    std::string what = e.what();
-    // Drop nlohmann's "[json.exception.parse_error.101] " prefix; keep line/column and reason.
-    const auto close = what.find("] ");
-    if (close != std::string::npos) what = what.substr(close + 2);
-    throw InputError("", "not valid JSON: " + what);
-  }
+  nlohmann::json root;
+  PathTrackingBuilder builder(root);
+  nlohmann::json::sax_parse(text, &builder);  // faults throw from builder.parse_error
+  return root;
 }
 
 }  // namespace corbel

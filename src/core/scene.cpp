@@ -111,6 +111,7 @@ std::vector<PolyMesh::FaceHandle> Scene::faces(ObjectId id) const {
 void Scene::collectGarbage() { mesh_.garbage_collection(); }
 
 void Scene::removeObject(ObjectId id) {
+  if (!objects_.count(id)) return;  // nothing to scan for
   bool any = false;
   for (auto f : mesh_.faces()) {
     if (faceObject(f) == id) {
