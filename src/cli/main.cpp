@@ -157,7 +157,11 @@ int cmdExport(const Args& a) {
   if (a.positional.size() != 1) throw UsageError("export: expected one PROJECT");
   auto out = a.options.find("--out");
   if (out == a.options.end()) throw UsageError("export: --out FILE is required");
-  exportFormatFor(out->second);  // fail on a bad extension before any work
+  try {
+    exportFormatFor(out->second);  // fail on a bad extension before any work
+  } catch (const Error& e) {
+    throw UsageError(e.what());  // a bad --out is a command-line fault (exit 2)
+  }
   Loaded l = load(a.positional[0]);
   const std::optional<ObjectId> only = objectByName(l.doc, a);
   ExportOptions options;

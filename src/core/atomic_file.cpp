@@ -71,7 +71,15 @@ void writeFileAtomic(const std::string& path, std::string_view data, const Atomi
       done += static_cast<std::size_t>(w);
     }
     written += n;
-    if (options.afterChunk) options.afterChunk(written);
+    if (options.afterChunk) {
+      try {
+        options.afterChunk(written);
+      } catch (...) {
+        ::close(fd);
+        ::unlink(temp.c_str());
+        throw;
+      }
+    }
   }
   if (::fsync(fd) != 0) failWith(sysError("cannot flush", temp));
   // Keep the permissions of the file we replace.

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -110,7 +111,9 @@ void writeWithOpenMesh(const Scene& scene, const std::string& path, ExportFormat
     auto nf = out.add_face(loop);
     if (!nf.is_valid()) continue;  // cannot happen: the scene is already a valid half-edge mesh
     const Rgb c = faceColor(scene, f);
-    out.set_color(nf, PolyMesh::Color(c[0], c[1], c[2]));
+    // PolyMesh::Color is 8-bit (0..255); the writer turns it into floats for ColorFloat.
+    auto byte = [](float x) { return static_cast<unsigned char>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f)); };
+    out.set_color(nf, PolyMesh::Color(byte(c[0]), byte(c[1]), byte(c[2])));
     if (format == ExportFormat::Ply) {
       out.property(objectProp, nf) = static_cast<int>(id);
       out.property(kindProp, nf) = static_cast<unsigned char>(scene.faceKind(f));

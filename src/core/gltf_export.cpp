@@ -127,6 +127,10 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
     model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
   }
 
+  // Nothing exported: glTF forbids an empty buffer (byteLength >= 1), so write none; and a
+  // named scene, since tinygltf writes a scene without nodes or name as null.
+  if (model.buffers[0].data.empty()) model.buffers.clear();
+  model.scenes[0].name = "corbel";
   tinygltf::TinyGLTF writer;
   const std::string temp = makeTempSibling(path);
   if (!writer.WriteGltfSceneToFile(&model, temp, true, true, false, true)) {

@@ -1,5 +1,7 @@
 #include "core/json_reader.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -23,25 +25,40 @@ void JsonReader::expectObject() const {
   if (!v_.is_object()) fail("expected an object, found " + typeName(v_));
 }
 
+namespace {
+
+// "a.b" for plain keys; a key with other characters (spaces, quotes, control characters, an
+// empty key) is written as a JSON string in brackets: a["two words"], a["\u0000"].
+std::string childPath(const std::string& path, const std::string& key) {
+  const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '_' || c == '-';
+  });
+  if (!plain)
+    return path + "[" + nlohmann::json(key).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "]";
+  return path.empty() ? key : path + "." + key;
+}
+
+}  // namespace
+
 JsonReader JsonReader::at(const std::string& key) const {
   expectObject();
   auto it = v_.find(key);
-  if (it == v_.end()) throw InputError(path_.empty() ? key : path_ + "." + key, "missing");
-  return JsonReader(*it, path_.empty() ? key : path_ + "." + key);
+  if (it == v_.end()) throw InputError(childPath(path_, key), "missing");
+  return JsonReader(*it, childPath(path_, key));
 }
 
 std::optional<JsonReader> JsonReader::find(const std::string& key) const {
   expectObject();
   auto it = v_.find(key);
   if (it == v_.end()) return std::nullopt;
-  return JsonReader(*it, path_.empty() ? key : path_ + "." + key);
+  return JsonReader(*it, childPath(path_, key));
 }
 
 std::vector<std::string> JsonReader::unknownKeys(const std::set<std::string>& known) const {
   std::vector<std::string> out;
   if (!v_.is_object()) return out;
   for (auto it = v_.begin(); it != v_.end(); ++it)
-    if (!known.count(it.key())) out.push_back(path_.empty() ? it.key() : path_ + "." + it.key());
+    if (!known.count(it.key())) out.push_back(childPath(path_, it.key()));
   return out;
 }
 
@@ -199,7 +216,7 @@ class PathTrackingBuilder {
         const std::size_t n = stack_[i]->size();
         out += "[" + std::to_string(i + 1 == stack_.size() ? n : n - 1) + "]";
       } else {
-        out += (out.empty() ? "" : ".") + keys_[i];
+        out = childPath(out, keys_[i]);
       }
     }
     return out;

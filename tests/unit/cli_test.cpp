@@ -1,0 +1,272 @@
+// corbel-cli: exit codes and messages for bad project files and bad command lines, and the
+// output of check, export and render on the example.
+#include "core/project_io.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <set>
+#include <sstream>
+
+namespace {
+
+using corbel::test::readText;
+using corbel::test::TempDir;
+using corbel::test::writeText;
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+// Runs corbel-cli with `args` (already quoted where needed), capturing stdout and stderr.
+CliRun cli(const TempDir& dir, const std::string& args) {
+  const std::string outPath = dir.file(".stdout"), errPath = dir.file(".stderr");
+  const std::string command = quote(CORBEL_CLI) + " " + args + " >" + quote(outPath) + " 2>" + quote(errPath);
+  const int status = std::system(command.c_str());
+  CliRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = readText(outPath);
+  r.err = readText(errPath);
+  std::remove(outPath.c_str());
+  std::remove(errPath.c_str());
+  return r;
+}
+
+const std::string kVillage = corbel::test::sourcePath("assets/examples/village.corbel");
+
+std::string withBox(const std::string& box) {
+  return R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A", "box": {)" + box + "}}]}";
+}
+
+struct BadFile {
+  std::string name, text, expected;  // expected: a part of stderr after the file's path
+};
+
+std::vector<BadFile> badFiles() {
+  const std::string village = readText(kVillage);
+  return {
+      {"truncated.corbel", village.substr(0, village.size() / 2), "not valid JSON: "},
+      {"notjson.corbel", "corbel project, version one\n", "not valid JSON: "},
+      {"empty.corbel", "", "file is empty"},
+      {"array.corbel", "[1, 2]", "a project file must hold a JSON object"},
+      {"wrongtype.corbel", withBox(R"("size": "10")"), "objects[0].box.size: expected [x, y, z] numbers"},
+      {"nan.corbel", withBox(R"("size": [NaN, 1, 1])"), "not valid JSON: "},
+      {"overflow.corbel", withBox(R"("size": [1, 1e999, 1])"), "objects[0].box.size[1]: number is not finite"},
+      {"hugecount.corbel", withBox(R"("size": [1, 1, 1], "repeat": {"count": [1000000, 1000000]})"),
+       "objects[0].box.repeat.count[0]: 1000000 is larger than 10000"},
+      {"future.corbel", R"({"format": "corbel", "version": 99})",
+       "version: this file was written by a newer corbel (format version 99)"},
+      {"negative.corbel", withBox(R"("size": [1, -1, 1])"), "objects[0].box.size: each extent must be between"},
+  };
+}
+
+TEST(Cli, BadProjectFilesExitOneWithPathAndReason) {
+  TempDir dir;
+  for (const BadFile& bad : badFiles()) {
+    SCOPED_TRACE(bad.name);
+    const std::string path = dir.file(bad.name);
+    writeText(path, bad.text);
+    const CliRun r = cli(dir, "check " + quote(path));
+    EXPECT_EQ(r.code, 1) << r.err;
+    // "corbel-cli: error: <path>: <where>: <reason>"
+    EXPECT_NE(r.err.find("corbel-cli: error: " + path + ": " + bad.expected), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
+  }
+}
+
+TEST(Cli, BadProjectFilesFailEveryCommand) {
+  TempDir dir;
+  const std::string path = dir.file("wrongtype.corbel");
+  writeText(path, withBox(R"("size": "10")"));
+  for (const std::string& args : {"export " + quote(path) + " --out " + quote(dir.file("x.glb")),
+                                  "render " + quote(path) + " --out " + quote(dir.file("x.png")) + " --size 32x24"}) {
+    const CliRun r = cli(dir, args);
+    EXPECT_EQ(r.code, 1) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(path + ": objects[0].box.size: expected [x, y, z] numbers"), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.glb")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+}
+
+TEST(Cli, MissingFileAndFolder) {
+  TempDir dir;
+  const CliRun missing = cli(dir, "check " + quote(dir.file("nothing.corbel")));
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_NE(missing.err.find(dir.file("nothing.corbel")), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("no such file"), std::string::npos) << missing.err;
+  const CliRun folder = cli(dir, "check " + quote(dir.path()));
+  EXPECT_EQ(folder.code, 1);
+  EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << folder.err;
+}
+
+TEST(Cli, BadCommandLinesExitTwo) {
+  TempDir dir;
+  const std::string v = quote(kVillage);
+  const std::vector<std::string> bad = {
+      "",
+      "frobnicate " + v,
+      "check",
+      "check " + v + " " + v,
+      "check " + v + " --out x",
+      "export " + v,
+      "export " + v + " --out",
+      "export " + v + " --out " + quote(dir.file("model.stl")),
+      "export --out " + quote(dir.file("a.obj")),
+      "render " + v,
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --size 0x10",
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --size 10",
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --size 10.5x10",
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --size axb",
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --camera 10",
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --camera 10,20,-5",
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --bogus",
+  };
+  for (const std::string& args : bad) {
+    const CliRun r = cli(dir, args);
+    EXPECT_EQ(r.code, 2) << "args: " << args << "\nstderr: " << r.err;
+    if (!args.empty()) {
+      EXPECT_EQ(r.err.rfind("corbel-cli: ", 0), 0u) << args << "\n" << r.err;
+    }
+  }
+  // Nothing was written by any of them.
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(Cli, HelpAndVersion) {
+  TempDir dir;
+  const CliRun help = cli(dir, "--help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("usage:"), std::string::npos);
+  const CliRun none = cli(dir, "");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.out.find("usage:"), std::string::npos);
+  const CliRun version = cli(dir, "--version");
+  EXPECT_EQ(version.code, 0);
+  EXPECT_NE(version.out.find("project format " + std::to_string(corbel::kProjectVersion)), std::string::npos)
+      << version.out;
+}
+
+TEST(Cli, CheckPrintsOneJsonLinePerObject) {
+  TempDir dir;
+  const CliRun r = cli(dir, "check " + quote(kVillage));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const corbel::Document doc = corbel::loadProject(kVillage).document;
+  std::istringstream lines(r.out);
+  std::vector<nlohmann::json> rows;
+  for (std::string line; std::getline(lines, line);) rows.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(rows.size(), doc.objects.size() + 1);
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    const nlohmann::json& row = rows[i];
+    const auto& spec = std::get<corbel::BoxSpec>(doc.objects[i].spec);
+    SCOPED_TRACE(doc.objects[i].name);
+    EXPECT_EQ(row["object"], doc.objects[i].name);
+    EXPECT_EQ(row["watertight"], true);
+    EXPECT_EQ(row["manifold"], true);
+    EXPECT_EQ(row["consistent"], true);
+    EXPECT_TRUE(row["problems"].empty());
+    // Each copy is a box: 6 faces, Euler characteristic 2 per component, volume w * d * h.
+    const int copies = spec.repeat_x * spec.repeat_y;
+    EXPECT_EQ(row["faces"], 6 * copies);
+    EXPECT_EQ(row["components"], copies);
+    EXPECT_EQ(row["euler"], 2 * copies);
+    const double volume = copies * spec.size[0] * spec.size[1] * spec.size[2];
+    EXPECT_NEAR(row["volume"].get<double>(), volume, 1e-9 * volume);
+  }
+  EXPECT_EQ(rows.back(), (nlohmann::json{{"objects", doc.objects.size()}, {"failed", 0}}));
+}
+
+TEST(Cli, UnknownKeysAreWarningsNotErrors) {
+  TempDir dir;
+  const std::string path = dir.file("extra.corbel");
+  writeText(path, R"({"format": "corbel", "version": 1, "weather": "fine",
+                      "objects": [{"id": 1, "name": "A", "box": {"size": [1, 1, 1], "roof": "flat"}}]})");
+  const CliRun r = cli(dir, "check " + quote(path));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + path + ": weather: unknown key ignored"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("warning: " + path + ": objects[0].box.roof: unknown key ignored"), std::string::npos) << r.err;
+}
+
+tinygltf::Model loadGlb(const std::string& path) {
+  tinygltf::Model model;
+  std::string err, warn;
+  tinygltf::TinyGLTF loader;
+  EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, path)) << err;
+  return model;
+}
+
+std::set<std::string> nodeNames(const tinygltf::Model& m) {
+  std::set<std::string> out;
+  for (const auto& n : m.nodes) out.insert(n.name);
+  return out;
+}
+
+TEST(Cli, ExportGlbLoads) {
+  TempDir dir;
+  const std::string out = dir.file("village.glb");
+  const CliRun r = cli(dir, "export " + quote(kVillage) + " --out " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, out + "\n");
+  const tinygltf::Model m = loadGlb(out);
+  EXPECT_EQ(nodeNames(m), (std::set<std::string>{"Hall", "Tower", "Terrace", "Barn", "Green"}));
+  std::set<std::string> materials;
+  for (const auto& mat : m.materials) materials.insert(mat.name);
+  EXPECT_EQ(materials, (std::set<std::string>{"stone", "brick", "plaster", "timber", "grass"}));
+
+  const CliRun one =
+      cli(dir, "export " + quote(kVillage) + " --out " + quote(dir.file("tower.glb")) + " --object Tower");
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_EQ(nodeNames(loadGlb(dir.file("tower.glb"))), std::set<std::string>{"Tower"});
+
+  const CliRun unknown =
+      cli(dir, "export " + quote(kVillage) + " --out " + quote(dir.file("x.glb")) + " --object Castle");
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.err.find("no object named \"Castle\""), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("\"Tower\""), std::string::npos) << unknown.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.glb")));
+}
+
+TEST(Cli, ExportSkipsHiddenObjects) {
+  TempDir dir;
+  corbel::Document doc = corbel::loadProject(kVillage).document;
+  ASSERT_NE(doc.findByName("Barn"), nullptr);
+  for (auto& o : doc.objects)
+    if (o.name == "Barn" || o.name == "Green") o.visible = false;
+  const std::string path = dir.file("hidden.corbel");
+  corbel::saveProject(doc, path);
+  const CliRun r = cli(dir, "export " + quote(path) + " --out " + quote(dir.file("v.glb")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nodeNames(loadGlb(dir.file("v.glb"))), (std::set<std::string>{"Hall", "Tower", "Terrace"}));
+}
+
+TEST(Cli, ExportWritesEveryFormat) {
+  TempDir dir;
+  for (const char* name : {"v.obj", "v.ply", "v.off"}) {
+    const CliRun r = cli(dir, "export " + quote(kVillage) + " --out " + quote(dir.file(name)));
+    EXPECT_EQ(r.code, 0) << name << ": " << r.err;
+    EXPECT_GT(std::filesystem::file_size(dir.file(name)), 0u) << name;
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir.file("v.mtl")));
+}
+
+TEST(Cli, RenderWritesAPng) {
+  TempDir dir;
+  const std::string out = dir.file("village.png");
+  const CliRun r = cli(dir, "render " + quote(kVillage) + " --out " + quote(out) + " --size 64x48");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string png = readText(out);
+  ASSERT_GE(png.size(), 8u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
+}  // namespace

@@ -1,0 +1,414 @@
+// export.h: every format read back by an independent reader (OpenMesh IO, tinygltf) and
+// compared with the scene's counts, analytic areas, names, materials and bounds.
+#include "core/export.h"
+
+#include "core/error.h"
+#include "core/materials.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+
+#include <cstring>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace {
+
+using corbel::Kind;
+using corbel::MeshData;
+using corbel::ObjectId;
+using corbel::Scene;
+using corbel::Vec2;
+using corbel::Vec3;
+using corbel::test::handBox;
+using corbel::test::readText;
+using corbel::test::TempDir;
+
+// A prism over a counter-clockwise 2D outline from z0 to z1: caps of n corners, n quads.
+MeshData prism(const std::vector<Vec2>& outline, double z0, double z1, const std::string& material) {
+  MeshData m;
+  const int mat = m.addMaterial(material);
+  const int n = static_cast<int>(outline.size());
+  for (const Vec2& p : outline) m.addPoint(Vec3(p[0], p[1], z0));
+  for (const Vec2& p : outline) m.addPoint(Vec3(p[0], p[1], z1));
+  std::vector<int> bottom, top;
+  for (int i = n - 1; i >= 0; --i) bottom.push_back(i);
+  for (int i = 0; i < n; ++i) top.push_back(n + i);
+  m.addFace(bottom, 0, mat);
+  m.addFace(top, 0, mat);
+  for (int i = 0; i < n; ++i) m.addFace({i, (i + 1) % n, n + (i + 1) % n, n + i}, 0, mat);
+  return m;
+}
+
+double shoelace(const std::vector<Vec2>& p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    a += p[i][0] * p[(i + 1) % p.size()][1] - p[(i + 1) % p.size()][0] * p[i][1];
+  return 0.5 * a;
+}
+
+double perimeter(const std::vector<Vec2>& p) {
+  double s = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) s += (p[(i + 1) % p.size()] - p[i]).norm();
+  return s;
+}
+
+const std::vector<Vec2> kPentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
+const std::vector<Vec2> kLShape = {{0, 0}, {6, 0}, {6, 2}, {2, 2}, {2, 5}, {0, 5}};
+
+struct Expected {
+  std::string name;
+  std::size_t faces, vertices, triangles;
+  double area;
+};
+
+// Four objects: a box, a pentagonal prism, an L-shaped (concave) prism and a box without a
+// material (written under its kind's name).
+Scene testScene(std::vector<Expected>* expected = nullptr) {
+  Scene s;
+  s.replaceObject(1, Kind::Mass, "Hall", handBox(Vec3(0, 0, 0), Vec3(18, 10, 7), "stone"));
+  s.replaceObject(2, Kind::Shell, "Tower Top", prism(kPentagon, 7, 9.5, "brick"));
+  s.replaceObject(3, Kind::Feature, "Porch", prism(kLShape, 0, 3, "glass"));
+  s.replaceObject(4, Kind::Site, "Ground", handBox(Vec3(-30, -20, -0.5), Vec3(30, 20, 0), ""));
+  if (expected) {
+    *expected = {
+        {"Hall", 6, 8, 12, 2 * (18 * 10 + 10 * 7 + 7 * 18.0)},
+        {"Tower Top", 7, 10, 2 * 3 + 5 * 2, 2 * shoelace(kPentagon) + perimeter(kPentagon) * 2.5},
+        {"Porch", 8, 12, 2 * 4 + 6 * 2, 2 * shoelace(kLShape) + perimeter(kLShape) * 3},
+        {"Ground", 6, 8, 12, 2 * (60 * 40 + 40 * 0.5 + 0.5 * 60)},
+    };
+  }
+  return s;
+}
+
+double meshArea(const corbel::PolyMesh& mesh) {
+  double area = 0;
+  for (auto f : mesh.faces()) {
+    std::vector<Vec3> poly;
+    for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
+    area += 0.5 * corbel::newellNormal(poly).norm();
+  }
+  return area;
+}
+
+struct Totals {
+  std::size_t faces = 0, vertices = 0, triangles = 0;
+  double area = 0;
+};
+
+Totals totals(const std::vector<Expected>& e, const std::set<std::string>& only = {}) {
+  Totals t;
+  for (const auto& x : e) {
+    if (!only.empty() && !only.count(x.name)) continue;
+    t.faces += x.faces;
+    t.vertices += x.vertices;
+    t.triangles += x.triangles;
+    t.area += x.area;
+  }
+  return t;
+}
+
+void expectReadBack(const std::string& path, const Totals& t) {
+  corbel::PolyMesh back;
+  ASSERT_TRUE(OpenMesh::IO::read_mesh(back, path)) << path;
+  EXPECT_EQ(back.n_faces(), t.faces) << path;
+  EXPECT_EQ(back.n_vertices(), t.vertices) << path;
+  EXPECT_NEAR(meshArea(back), t.area, 1e-9 * t.area) << path;
+}
+
+TEST(Export, FormatFromExtension) {
+  EXPECT_EQ(corbel::exportFormatFor("a/b.obj"), corbel::ExportFormat::Obj);
+  EXPECT_EQ(corbel::exportFormatFor("B.OBJ"), corbel::ExportFormat::Obj);
+  EXPECT_EQ(corbel::exportFormatFor("x.Ply"), corbel::ExportFormat::Ply);
+  EXPECT_EQ(corbel::exportFormatFor("x.off"), corbel::ExportFormat::Off);
+  EXPECT_EQ(corbel::exportFormatFor("x.glb"), corbel::ExportFormat::Glb);
+  for (const char* bad : {"x.stl", "x", "x.gltf", "obj", "x.obj.bak"}) {
+    try {
+      corbel::exportFormatFor(bad);
+      ADD_FAILURE() << bad;
+    } catch (const corbel::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("unknown extension"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(Export, UnknownExtensionWritesNothing) {
+  TempDir dir;
+  const Scene s = testScene();
+  EXPECT_THROW(corbel::exportScene(s, dir.file("model.stl")), corbel::Error);
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(Export, ObjReadsBackWithTheSameCountsAndArea) {
+  TempDir dir;
+  std::vector<Expected> expected;
+  const Scene s = testScene(&expected);
+  corbel::exportScene(s, dir.file("village.obj"));
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"village.mtl", "village.obj"}));
+  expectReadBack(dir.file("village.obj"), totals(expected));
+}
+
+TEST(Export, ObjNamesObjectsAndMtlListsMaterials) {
+  TempDir dir;
+  const Scene s = testScene();
+  corbel::exportScene(s, dir.file("village.obj"));
+  const std::string obj = readText(dir.file("village.obj"));
+  std::istringstream lines(obj);
+  std::vector<std::string> objects;
+  std::set<std::string> used;
+  std::string line;
+  bool mtllib = false;
+  while (std::getline(lines, line)) {
+    if (line.rfind("o ", 0) == 0) objects.push_back(line.substr(2));
+    if (line.rfind("usemtl ", 0) == 0) used.insert(line.substr(7));
+    if (line == "mtllib village.mtl") mtllib = true;
+  }
+  EXPECT_TRUE(mtllib);
+  EXPECT_EQ(objects, (std::vector<std::string>{"Hall", "Tower Top", "Porch", "Ground"}));
+  EXPECT_EQ(used, (std::set<std::string>{"stone", "brick", "glass", "site"}));
+
+  // The .mtl: one newmtl per used material, Kd = the palette's color.
+  std::istringstream mtl(readText(dir.file("village.mtl")));
+  std::map<std::string, corbel::Rgb> kd;
+  std::string current;
+  while (std::getline(mtl, line)) {
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    if (key == "newmtl") {
+      words >> current;
+      EXPECT_FALSE(kd.count(current)) << "listed twice: " << current;
+      kd[current] = {-1, -1, -1};
+    } else if (key == "Kd") {
+      words >> kd[current][0] >> kd[current][1] >> kd[current][2];
+    }
+  }
+  std::set<std::string> listed;
+  for (const auto& [name, c] : kd) listed.insert(name);
+  EXPECT_EQ(listed, used);
+  const std::map<std::string, corbel::Rgb> palette = {{"stone", corbel::materialColor("stone", Kind::Mass)},
+                                                      {"brick", corbel::materialColor("brick", Kind::Shell)},
+                                                      {"glass", corbel::materialColor("glass", Kind::Feature)},
+                                                      {"site", corbel::kindColor(Kind::Site)}};
+  for (const auto& [name, c] : palette) {
+    ASSERT_TRUE(kd.count(name)) << name;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(kd[name][k], c[k], 1e-5) << name;
+  }
+}
+
+TEST(Export, PlyAndOffReadBackWithMatchingCounts) {
+  TempDir dir;
+  std::vector<Expected> expected;
+  const Scene s = testScene(&expected);
+  for (const char* name : {"village.ply", "village.off"}) {
+    corbel::exportScene(s, dir.file(name));
+    expectReadBack(dir.file(name), totals(expected));
+  }
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"village.off", "village.ply"}));
+}
+
+TEST(Export, PlyAndOffKeepFaceColors) {
+  TempDir dir;
+  const Scene s = testScene();
+  // Multiset of colors, quantised to 8 bits, must match the palette colors of the faces.
+  auto key = [](float r, float g, float b) {
+    auto q = [](float x) { return static_cast<int>(std::lround(x * 255.0f)); };
+    return std::tuple<int, int, int>(q(r), q(g), q(b));
+  };
+  std::multiset<std::tuple<int, int, int>> want;
+  for (auto f : s.mesh().faces()) {
+    const corbel::Rgb c = corbel::materialColor(s.faceMaterial(f), s.faceKind(f));
+    want.insert(key(c[0], c[1], c[2]));
+  }
+  const std::set<std::tuple<int, int, int>> distinct(want.begin(), want.end());
+  ASSERT_EQ(distinct.size(), 4u);
+  for (const char* name : {"colors.ply", "colors.off"}) {
+    SCOPED_TRACE(name);
+    corbel::exportScene(s, dir.file(name));
+    corbel::PolyMesh back;
+    back.request_face_colors();
+    OpenMesh::IO::Options opt = OpenMesh::IO::Options::FaceColor;
+    ASSERT_TRUE(OpenMesh::IO::read_mesh(back, dir.file(name), opt));
+    ASSERT_TRUE(opt.check(OpenMesh::IO::Options::FaceColor));
+    std::multiset<std::tuple<int, int, int>> got;
+    for (auto f : back.faces()) {
+      const auto c = back.color(f);
+      got.insert(key(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f));
+    }
+    EXPECT_EQ(got, want);
+  }
+}
+
+struct Glb {
+  tinygltf::Model model;
+  std::string err, warn;
+  bool ok = false;
+};
+
+Glb loadGlb(const std::string& path) {
+  Glb g;
+  tinygltf::TinyGLTF loader;
+  g.ok = loader.LoadBinaryFromFile(&g.model, &g.err, &g.warn, path);
+  return g;
+}
+
+// Reads accessor `index` of the model as a flat float or uint32 array.
+template <class T>
+std::vector<T> accessorData(const tinygltf::Model& m, int index, int components) {
+  const tinygltf::Accessor& a = m.accessors.at(index);
+  const tinygltf::BufferView& view = m.bufferViews.at(a.bufferView);
+  const auto& buffer = m.buffers.at(view.buffer).data;
+  std::vector<T> out(a.count * components);
+  std::memcpy(out.data(), buffer.data() + view.byteOffset + a.byteOffset, out.size() * sizeof(T));
+  return out;
+}
+
+TEST(Export, GlbLoadsWithNamesMaterialsTrianglesAndBounds) {
+  TempDir dir;
+  std::vector<Expected> expected;
+  const Scene s = testScene(&expected);
+  corbel::exportScene(s, dir.file("village.glb"));
+  const Glb g = loadGlb(dir.file("village.glb"));
+  ASSERT_TRUE(g.ok) << g.err;
+  EXPECT_TRUE(g.warn.empty()) << g.warn;
+  const tinygltf::Model& m = g.model;
+  EXPECT_EQ(m.asset.version, "2.0");
+  ASSERT_EQ(m.nodes.size(), 4u);
+  ASSERT_EQ(m.scenes.size(), 1u);
+  EXPECT_EQ(m.scenes[0].nodes.size(), 4u);
+
+  std::set<std::string> materialNames;
+  for (const auto& mat : m.materials) EXPECT_TRUE(materialNames.insert(mat.name).second) << "duplicate " << mat.name;
+  EXPECT_EQ(materialNames, (std::set<std::string>{"stone", "brick", "glass", "site"}));
+  for (const auto& mat : m.materials) {
+    const corbel::Rgb c =
+        mat.name == "site" ? corbel::kindColor(Kind::Site) : corbel::materialColor(mat.name, Kind::Mass);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(mat.pbrMetallicRoughness.baseColorFactor[k], c[k], 1e-6) << mat.name;
+  }
+
+  std::size_t triangles = 0;
+  double area = 0;
+  std::map<std::string, const Expected*> byName;
+  for (const auto& e : expected) byName[e.name] = &e;
+  for (const tinygltf::Node& node : m.nodes) {
+    SCOPED_TRACE(node.name);
+    ASSERT_TRUE(byName.count(node.name));
+    const ObjectId id = static_cast<ObjectId>(node.extras.Get("corbel_object_id").Get<int>());
+    EXPECT_EQ(s.objects().at(id).name, node.name);
+    ASSERT_GE(node.mesh, 0);
+    const tinygltf::Mesh& mesh = m.meshes.at(node.mesh);
+    EXPECT_EQ(mesh.name, node.name);
+    std::size_t nodeTriangles = 0;
+    std::vector<double> lo(3, 1e300), hi(3, -1e300);
+    for (const tinygltf::Primitive& p : mesh.primitives) {
+      EXPECT_EQ(p.mode, TINYGLTF_MODE_TRIANGLES);
+      const auto& posAccessor = m.accessors.at(p.attributes.at("POSITION"));
+      ASSERT_EQ(posAccessor.minValues.size(), 3u);
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], posAccessor.minValues[k]);
+        hi[k] = std::max(hi[k], posAccessor.maxValues[k]);
+      }
+      const auto pos = accessorData<float>(m, p.attributes.at("POSITION"), 3);
+      const auto nrm = accessorData<float>(m, p.attributes.at("NORMAL"), 3);
+      const auto idx = accessorData<std::uint32_t>(m, p.indices, 1);
+      ASSERT_EQ(idx.size() % 3, 0u);
+      nodeTriangles += idx.size() / 3;
+      for (std::size_t t = 0; t < idx.size(); t += 3) {
+        Vec3 v[3];
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_LT(idx[t + c], pos.size() / 3);
+          v[c] = Vec3(pos[3 * idx[t + c]], pos[3 * idx[t + c] + 1], pos[3 * idx[t + c] + 2]);
+        }
+        const Vec3 cr = OpenMesh::cross(v[1] - v[0], v[2] - v[0]);
+        area += 0.5 * cr.norm();
+        // Each triangle faces the way its flat normal says.
+        const Vec3 n(nrm[3 * idx[t]], nrm[3 * idx[t] + 1], nrm[3 * idx[t] + 2]);
+        EXPECT_GT(OpenMesh::dot(cr, n), 0.0);
+      }
+    }
+    EXPECT_EQ(nodeTriangles, byName[node.name]->triangles);
+    triangles += nodeTriangles;
+    // Y up: (x, y, z) -> (x, z, -y), so min = (lo.x, lo.z, -hi.y) and max = (hi.x, hi.z, -lo.y).
+    const corbel::BBox b = s.bounds(id);
+    const double wantLo[3] = {static_cast<float>(b.lo[0]), static_cast<float>(b.lo[2]), static_cast<float>(-b.hi[1])};
+    const double wantHi[3] = {static_cast<float>(b.hi[0]), static_cast<float>(b.hi[2]), static_cast<float>(-b.lo[1])};
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(lo[k], wantLo[k]) << "min " << k;
+      EXPECT_EQ(hi[k], wantHi[k]) << "max " << k;
+    }
+  }
+  EXPECT_EQ(triangles, totals(expected).triangles);
+  EXPECT_NEAR(area, totals(expected).area, 1e-5 * totals(expected).area);
+}
+
+TEST(Export, IncludeFilterWritesOnlyThoseObjects) {
+  TempDir dir;
+  std::vector<Expected> expected;
+  const Scene s = testScene(&expected);
+  corbel::ExportOptions only;
+  only.include = [](ObjectId id) { return id == 2 || id == 3; };
+  const Totals want = totals(expected, {"Tower Top", "Porch"});
+  for (const char* name : {"part.obj", "part.ply", "part.off"}) {
+    corbel::exportScene(s, dir.file(name), only);
+    expectReadBack(dir.file(name), want);
+  }
+  std::istringstream obj(readText(dir.file("part.obj")));
+  std::vector<std::string> objects;
+  for (std::string line; std::getline(obj, line);)
+    if (line.rfind("o ", 0) == 0) objects.push_back(line.substr(2));
+  EXPECT_EQ(objects, (std::vector<std::string>{"Tower Top", "Porch"}));
+  const std::string mtl = readText(dir.file("part.mtl"));
+  EXPECT_EQ(mtl.find("stone"), std::string::npos);
+  EXPECT_NE(mtl.find("newmtl brick"), std::string::npos);
+
+  corbel::exportScene(s, dir.file("part.glb"), only);
+  const Glb g = loadGlb(dir.file("part.glb"));
+  ASSERT_TRUE(g.ok) << g.err;
+  std::set<std::string> nodes;
+  for (const auto& n : g.model.nodes) nodes.insert(n.name);
+  EXPECT_EQ(nodes, (std::set<std::string>{"Tower Top", "Porch"}));
+  std::set<std::string> materials;
+  for (const auto& mat : g.model.materials) materials.insert(mat.name);
+  EXPECT_EQ(materials, (std::set<std::string>{"brick", "glass"}));
+}
+
+TEST(Export, ReplacesAnExistingFileAtomically) {
+  TempDir dir;
+  std::vector<Expected> expected;
+  const Scene s = testScene(&expected);
+  corbel::test::writeText(dir.file("out.off"), "stale");
+  corbel::exportScene(s, dir.file("out.off"));
+  expectReadBack(dir.file("out.off"), totals(expected));
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.off"});
+  EXPECT_THROW(corbel::exportScene(s, dir.file("missing/out.glb")), corbel::Error);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.off"});
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Export, EmptySelectionWritesValidEmptyFiles) {
+  TempDir dir;
+  const Scene s = testScene();
+  corbel::ExportOptions none;
+  none.include = [](ObjectId) { return false; };
+  for (const char* name : {"empty.obj", "empty.ply", "empty.off"}) {
+    corbel::exportScene(s, dir.file(name), none);
+    corbel::PolyMesh back;
+    OpenMesh::IO::read_mesh(back, dir.file(name));
+    EXPECT_EQ(back.n_faces(), 0u) << name;
+  }
+  EXPECT_EQ(readText(dir.file("empty.obj")).find("\no "), std::string::npos);
+  corbel::exportScene(s, dir.file("empty.glb"), none);
+  const Glb g = loadGlb(dir.file("empty.glb"));
+  ASSERT_TRUE(g.ok) << g.err;
+  EXPECT_TRUE(g.model.nodes.empty());
+  EXPECT_TRUE(g.model.meshes.empty());
+}
+
+}  // namespace

@@ -1,0 +1,480 @@
+// project_io.h: round trips of random and example documents, and the exact path and reason of
+// every kind of bad project file.
+#include "core/project_io.h"
+
+#include "core/error.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+#include <set>
+
+namespace {
+
+using corbel::BoxSpec;
+using corbel::DocObject;
+using corbel::Document;
+using corbel::InputError;
+using corbel::Vec3;
+using corbel::test::readText;
+using corbel::test::TempDir;
+using corbel::test::writeText;
+namespace limits = corbel::limits;
+
+// ---------------------------------------------------------------------------------------------
+// Random documents within the limits.
+
+class RandomDocs {
+ public:
+  explicit RandomDocs(unsigned seed) : rng_(seed) {}
+
+  Document document() {
+    Document d;
+    d.name = text(0, 40);
+    const int count = pick(0, 9);
+    std::set<std::string> names;
+    std::set<corbel::ObjectId> ids;
+    for (int i = 0; i < count; ++i) {
+      DocObject o;
+      do o.id = static_cast<corbel::ObjectId>(pick(0, 2) ? pick(1, 50) : pick(1, 0x7fffffff));
+      while (!ids.insert(o.id).second);
+      do o.name = text(1, 30);
+      while (!names.insert(o.name).second);
+      o.visible = pick(0, 1) == 1;
+      o.spec = box();
+      d.objects.push_back(std::move(o));
+    }
+    return d;
+  }
+
+  BoxSpec box() {
+    BoxSpec b;
+    for (int k = 0; k < 3; ++k) b.origin[k] = number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+    for (int k = 0; k < 3; ++k) b.size[k] = number(limits::kMinSize, limits::kMaxCoordinate);
+    b.rotation_deg = number(-3600, 3600);
+    b.material = pick(0, 3) ? std::string(materials_[pick(0, 4)]) : text(0, 20);
+    b.repeat_x = pick(1, 100);
+    b.repeat_y = pick(1, 100);
+    // |spacing| * count must stay within the coordinate limit (with room for rounding).
+    const double sx = 0.999999 * limits::kMaxCoordinate / b.repeat_x,
+                 sy = 0.999999 * limits::kMaxCoordinate / b.repeat_y;
+    b.spacing_x = number(-sx, sx);
+    b.spacing_y = number(-sy, sy);
+    EXPECT_EQ(corbel::checkBoxSpec(b), std::nullopt);
+    return b;
+  }
+
+ private:
+  int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+
+  // A double within [lo, hi] drawn from several shapes: whole numbers, short decimals, full
+  // 17-digit doubles, tiny and huge magnitudes, and the bounds themselves.
+  double number(double lo, double hi) {
+    double v = 0;
+    switch (pick(0, 6)) {
+      case 0:
+        v = std::round(std::uniform_real_distribution<double>(lo, hi)(rng_));
+        break;
+      case 1:
+        v = std::round(std::uniform_real_distribution<double>(-1000, 1000)(rng_)) / 10.0;
+        break;
+      case 2:
+        v = std::uniform_real_distribution<double>(lo, hi)(rng_);
+        break;
+      case 3:
+        v = std::ldexp(std::uniform_real_distribution<double>(0.5, 1)(rng_), pick(-14, 23));
+        break;
+      case 4:
+        v = pick(0, 1) ? lo : hi;
+        break;
+      case 5:
+        v = std::nextafter(pick(0, 1) ? lo : hi, 0.0);
+        break;
+      default:
+        v = std::uniform_real_distribution<double>(-3, 3)(rng_);
+        break;
+    }
+    if (!(v >= lo && v <= hi)) v = std::clamp(v, lo, hi);
+    return v;
+  }
+
+  // Valid UTF-8 text with quotes, backslashes, control characters and non-ASCII letters.
+  std::string text(int minLength, int maxLength) {
+    static const char* pieces[] = {"a", "B", "z",  " ", "\"", "\\", "/", "\n", "\t", "\x01", "\x1f", "é",
+                                   "ß", "Ω", "漢", "🏠", "{",  "}",  "[", "]",  ":",  ",",    "0",    "-"};
+    std::string s;
+    const int n = pick(minLength, maxLength);
+    for (int i = 0; i < n; ++i) s.append(std::string_view(pieces[pick(0, static_cast<int>(std::size(pieces)) - 1)]));
+    // At most 40 pieces of at most 4 bytes: always within kMaxNameLength.
+    if (static_cast<int>(s.size()) < minLength) s.push_back('x');
+    return s;
+  }
+
+  std::mt19937 rng_;
+  static constexpr const char* materials_[] = {"plaster", "stone", "brick", "glass", ""};
+};
+
+TEST(ProjectIo, RandomDocumentsRoundTrip) {
+  RandomDocs gen(20240611);
+  for (int i = 0; i < 300; ++i) {
+    const Document d = gen.document();
+    const std::string text = corbel::serializeProject(d);
+    corbel::LoadedProject back;
+    ASSERT_NO_THROW(back = corbel::parseProject(text)) << text;
+    EXPECT_TRUE(back.warnings.empty());
+    ASSERT_EQ(back.document, d) << text;
+    // Bit-exact doubles (== would accept -0 for 0).
+    for (std::size_t k = 0; k < d.objects.size(); ++k) {
+      const auto& a = std::get<BoxSpec>(d.objects[k].spec);
+      const auto& b = std::get<BoxSpec>(back.document.objects[k].spec);
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(std::signbit(a.origin[c]), std::signbit(b.origin[c]));
+        EXPECT_EQ(std::signbit(a.size[c]), std::signbit(b.size[c]));
+      }
+    }
+    EXPECT_EQ(corbel::serializeProject(back.document), text);
+  }
+}
+
+TEST(ProjectIo, NegativeZeroAndExtremeDoublesRoundTrip) {
+  Document d;
+  BoxSpec b;
+  b.origin = Vec3(-0.0, 0.1 + 0.2, -limits::kMaxCoordinate);
+  b.size = Vec3(limits::kMinSize, std::nextafter(limits::kMaxCoordinate, 0.0), 1.0 / 3.0);
+  b.rotation_deg = -0.0;
+  b.spacing_x = 5e-324;  // smallest subnormal
+  d.add("Extreme", b);
+  const Document back = corbel::parseProject(corbel::serializeProject(d)).document;
+  const auto& r = std::get<BoxSpec>(back.objects[0].spec);
+  EXPECT_EQ(back, d);
+  EXPECT_TRUE(std::signbit(r.origin[0]));
+  EXPECT_TRUE(std::signbit(r.rotation_deg));
+  EXPECT_EQ(r.origin[1], 0.1 + 0.2);
+  EXPECT_EQ(r.size[2], 1.0 / 3.0);
+  EXPECT_EQ(r.spacing_x, 5e-324);
+}
+
+TEST(ProjectIo, ExamplesSaveLoadSaveIsByteIdentical) {
+  const auto examples = corbel::test::exampleProjects();
+  ASSERT_FALSE(examples.empty());
+  TempDir dir;
+  for (const std::string& path : examples) {
+    SCOPED_TRACE(path);
+    const corbel::LoadedProject loaded = corbel::loadProject(path);
+    EXPECT_TRUE(loaded.warnings.empty());
+    EXPECT_FALSE(loaded.document.objects.empty());
+    corbel::saveProject(loaded.document, dir.file("a.corbel"));
+    const corbel::LoadedProject again = corbel::loadProject(dir.file("a.corbel"));
+    EXPECT_EQ(again.document, loaded.document);
+    corbel::saveProject(again.document, dir.file("b.corbel"));
+    const std::string a = readText(dir.file("a.corbel")), b = readText(dir.file("b.corbel"));
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(a, corbel::serializeProject(loaded.document));
+  }
+}
+
+TEST(ProjectIo, VillageExampleContents) {
+  // Spot checks against the example file's text.
+  const Document d = corbel::loadProject(corbel::test::sourcePath("assets/examples/village.corbel")).document;
+  EXPECT_EQ(d.name, "Village");
+  ASSERT_EQ(d.objects.size(), 5u);
+  EXPECT_EQ(d.objects[2].name, "Terrace");
+  const auto& terrace = std::get<BoxSpec>(d.objects[2].spec);
+  EXPECT_EQ(terrace.origin, Vec3(-2, -16, 0));
+  EXPECT_EQ(terrace.size, Vec3(6, 8, 5));
+  EXPECT_EQ(terrace.rotation_deg, 8.0);
+  EXPECT_EQ(terrace.repeat_x, 4);
+  EXPECT_EQ(terrace.spacing_x, 7.0);
+  EXPECT_EQ(std::get<BoxSpec>(d.objects[4].spec).origin[2], -0.3);
+}
+
+TEST(ProjectIo, OptionalFieldsTakeDefaults) {
+  const auto p = corbel::parseProject(R"({"format": "corbel", "version": 1,
+      "objects": [{"id": 3, "name": "Plain", "box": {"size": [1, 2, 3]}}]})");
+  EXPECT_EQ(p.document.name, "untitled");
+  ASSERT_EQ(p.document.objects.size(), 1u);
+  const DocObject& o = p.document.objects[0];
+  EXPECT_EQ(o.id, 3u);
+  EXPECT_TRUE(o.visible);
+  BoxSpec expected;
+  expected.size = Vec3(1, 2, 3);
+  EXPECT_EQ(std::get<BoxSpec>(o.spec), expected);
+  EXPECT_TRUE(corbel::parseProject(R"({"format": "corbel", "version": 1})").document.objects.empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors: exact path and reason.
+
+struct Fault {
+  std::string where, reason;
+};
+
+Fault parseFault(const std::string& text) {
+  try {
+    corbel::parseProject(text);
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), e.where.empty() ? e.reason : e.where + ": " + e.reason);
+    return {e.where, e.reason};
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "not an InputError: " << e.what();
+    return {"<other>", e.what()};
+  }
+  ADD_FAILURE() << "accepted: " << text;
+  return {"<accepted>", ""};
+}
+
+// A project with one object whose box is `box` (a JSON object body) and other fields `extra`.
+std::string withBox(const std::string& box, const std::string& extra = "") {
+  return R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A", )" + extra + R"("box": {)" + box +
+         "}}]}";
+}
+
+#define EXPECT_FAULT(text, expectedWhere, expectedReason) \
+  do {                                                    \
+    const Fault f_ = parseFault(text);                    \
+    EXPECT_EQ(f_.where, expectedWhere) << (text);         \
+    EXPECT_EQ(f_.reason, expectedReason) << (text);       \
+  } while (0)
+
+#define EXPECT_FAULT_CONTAINS(text, expectedWhere, part)                                             \
+  do {                                                                                               \
+    const Fault f_ = parseFault(text);                                                               \
+    EXPECT_EQ(f_.where, expectedWhere) << (text);                                                    \
+    EXPECT_NE(f_.reason.find(part), std::string::npos) << "reason: " << f_.reason << "\n" << (text); \
+  } while (0)
+
+TEST(ProjectIoErrors, FileAsAWhole) {
+  EXPECT_FAULT("", "", "file is empty");
+  EXPECT_FAULT("   \n\t\r\n ", "", "file is empty");
+  EXPECT_FAULT_CONTAINS("this is not a project", "", "not valid JSON: ");
+  EXPECT_FAULT_CONTAINS("<?xml version=\"1.0\"?>", "", "line 1, column 1");
+  EXPECT_FAULT("[]", "", "a project file must hold a JSON object");
+  EXPECT_FAULT("\"corbel\"", "", "a project file must hold a JSON object");
+  EXPECT_FAULT("42", "", "a project file must hold a JSON object");
+  EXPECT_FAULT("null", "", "a project file must hold a JSON object");
+}
+
+TEST(ProjectIoErrors, EveryTruncationOfTheExampleFailsCleanly) {
+  const std::string text = readText(corbel::test::sourcePath("assets/examples/village.corbel"));
+  const corbel::LoadedProject full = corbel::parseProject(text);
+  const std::size_t lastBrace = text.rfind('}');
+  ASSERT_NE(lastBrace, std::string::npos);
+  for (std::size_t n = 0; n < text.size(); ++n) {
+    const std::string prefix = text.substr(0, n);
+    if (n <= lastBrace) {
+      // Cut before the closing brace: never a complete JSON value.
+      try {
+        corbel::parseProject(prefix);
+        ADD_FAILURE() << "prefix of " << n << " bytes accepted";
+      } catch (const InputError& e) {
+        EXPECT_FALSE(e.reason.empty()) << n;
+        EXPECT_EQ(e.where, "") << n;
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << "prefix of " << n << " bytes: not an InputError: " << e.what();
+      }
+    } else {
+      // Only trailing whitespace is missing.
+      EXPECT_EQ(corbel::parseProject(prefix).document, full.document) << n;
+    }
+  }
+}
+
+TEST(ProjectIoErrors, HeaderFields) {
+  EXPECT_FAULT(R"({"version": 1})", "format", "missing");
+  EXPECT_FAULT(R"({"format": "corbel"})", "version", "missing");
+  EXPECT_FAULT(R"({"format": "blender", "version": 1})", "format", R"(expected "corbel", found "blender")");
+  EXPECT_FAULT(R"({"format": 1, "version": 1})", "format", "expected a string, found a number");
+  EXPECT_FAULT(R"({"format": "corbel", "version": "1"})", "version", "expected an integer, found a string");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1.5})", "version", "expected an integer, found a fractional number");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 0})", "version", "format version must be at least 1");
+  EXPECT_FAULT(R"({"format": "corbel", "version": -1})", "version", "-1 is outside [0, 1073741824]");
+  const Fault future = parseFault(R"({"format": "corbel", "version": 99, "objects": "whatever"})");
+  EXPECT_EQ(future.where, "version");
+  EXPECT_NE(future.reason.find("newer corbel"), std::string::npos) << future.reason;
+  EXPECT_NE(future.reason.find("99"), std::string::npos) << future.reason;
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "name": 7})", "name", "expected a string, found a number");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": {}})", "objects", "expected an array, found an object");
+}
+
+TEST(ProjectIoErrors, WrongTypes) {
+  EXPECT_FAULT(withBox(R"("size": "10")"), "objects[0].box.size", "expected [x, y, z] numbers");
+  EXPECT_FAULT(withBox(R"("size": [1, "2", 3])"), "objects[0].box.size", "expected [x, y, z] numbers");
+  EXPECT_FAULT(withBox(R"("size": [1, 2])"), "objects[0].box.size", "expected [x, y, z] numbers");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3], "origin": {"x": 1})"), "objects[0].box.origin",
+               "expected [x, y, z] numbers");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3], "rotation": [0])"), "objects[0].box.rotation",
+               "expected a number, found an array");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3], "material": 3)"), "objects[0].box.material",
+               "expected a string, found a number");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3], "repeat": [2, 2])"), "objects[0].box.repeat",
+               "expected an object, found an array");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3], "repeat": {"count": "3"})"), "objects[0].box.repeat.count",
+               "expected [a, b] integers");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3], "repeat": {"count": [2, 1.5]})"), "objects[0].box.repeat.count[1]",
+               "expected an integer, found a fractional number");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3], "repeat": {"spacing": [1, null]})"), "objects[0].box.repeat.spacing",
+               "expected [x, y] numbers");
+  EXPECT_FAULT(withBox(R"("size": [1, 2, 3])", R"("visible": "yes", )"), "objects[0].visible",
+               "expected true or false, found a string");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": "1", "name": "A", "box": {}}]})",
+               "objects[0].id", "expected an integer, found a string");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": ["A"], "box": {}}]})",
+               "objects[0].name", "expected a string, found an array");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A", "box": [1]}]})",
+               "objects[0].box", "expected an object, found an array");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [7]})", "objects[0]",
+               "expected an object, found a number");
+}
+
+TEST(ProjectIoErrors, MissingFields) {
+  EXPECT_FAULT(withBox(R"("origin": [0, 0, 0])"), "objects[0].box.size", "missing");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"name": "A", "box": {}}]})", "objects[0].id",
+               "missing");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "box": {}}]})", "objects[0].name",
+               "missing");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A"}]})", "objects[0]",
+               R"(no spec: expected one of "box")");
+}
+
+TEST(ProjectIoErrors, NonFiniteNumbers) {
+  // NaN and Infinity are not JSON.
+  EXPECT_FAULT_CONTAINS(withBox(R"("size": [NaN, 1, 1])"), "", "not valid JSON: ");
+  EXPECT_FAULT_CONTAINS(withBox(R"("size": [1, Infinity, 1])"), "", "not valid JSON: ");
+  // 1e999 is JSON, but no double holds it.
+  EXPECT_FAULT_CONTAINS(withBox(R"("size": [1e999, 1, 1])"), "objects[0].box.size[0]", "not finite");
+  EXPECT_FAULT_CONTAINS(withBox(R"("size": [1, 1, 1], "rotation": -1e999)"), "objects[0].box.rotation", "not finite");
+  EXPECT_FAULT_CONTAINS(withBox(R"("size": [1, 1, 1], "repeat": {"spacing": [0, 2e308]})"),
+                        "objects[0].box.repeat.spacing[1]", "not finite");
+}
+
+TEST(ProjectIoErrors, Limits) {
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 1], "repeat": {"count": [1000000, 1000000]})"),
+               "objects[0].box.repeat.count[0]", "1000000 is larger than 10000");
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 1], "repeat": {"count": [200, 100]})"), "objects[0].box.repeat.count",
+               "200 x 100 boxes exceeds the limit of 10000");
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 1], "repeat": {"count": [0, 1]})"), "objects[0].box.repeat.count[0]",
+               "0 is outside [1, 10000]");
+  EXPECT_FAULT(withBox(R"("size": [1, -2, 1])"), "objects[0].box.size",
+               "each extent must be between 0.0001 and 1e+07 m (got -2)");
+  EXPECT_FAULT(withBox(R"("size": [0, 1, 1])"), "objects[0].box.size",
+               "each extent must be between 0.0001 and 1e+07 m (got 0)");
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 2e7])"), "objects[0].box.size",
+               "each extent must be between 0.0001 and 1e+07 m (got 2e+07)");
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 1], "origin": [0, 1e8, 0])"), "objects[0].box.origin",
+               "coordinates must be finite and within 1e+07 m");
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 1], "rotation": 4000)"), "objects[0].box.rotation",
+               "must be a finite angle in degrees");
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 1], "repeat": {"count": [100, 1], "spacing": [2e5, 0]})"),
+               "objects[0].box.repeat.spacing", "must be finite and keep the copies within the coordinate limit");
+  const std::string longName(limits::kMaxNameLength + 1, 'n');
+  EXPECT_FAULT(withBox(R"("size": [1, 1, 1], "material": ")" + longName + "\""), "objects[0].box.material",
+               "text longer than 256 bytes");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "name": ")" + longName + "\"}", "name",
+               "text longer than 256 bytes");
+  EXPECT_FAULT(
+      R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": ")" + longName + R"(", "box": {}}]})",
+      "objects[0].name", "text longer than 256 bytes");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 0, "name": "A", "box": {}}]})", "objects[0].id",
+               "0 is outside [1, 2147483647]");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 2147483648, "name": "A", "box": {}}]})",
+               "objects[0].id", "2147483648 is larger than 2147483647");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "", "box": {}}]})",
+               "objects[0].name", "name must not be empty");
+  // More objects than kMaxObjects.
+  std::string many = R"({"format": "corbel", "version": 1, "objects": [)";
+  for (std::size_t i = 0; i <= limits::kMaxObjects; ++i) many += i ? ",{}" : "{}";
+  many += "]}";
+  EXPECT_FAULT(many, "objects", "has 100001 entries, more than the limit of 100000");
+}
+
+TEST(ProjectIoErrors, DuplicatesAndNesting) {
+  const std::string head = R"({"format": "corbel", "version": 1, "objects": [)";
+  const std::string box = R"("box": {"size": [1, 1, 1]})";
+  EXPECT_FAULT(head + R"({"id": 1, "name": "A", )" + box + R"(}, {"id": 1, "name": "B", )" + box + "}]}",
+               "objects[1].id", "id 1 is used twice");
+  EXPECT_FAULT(head + R"({"id": 1, "name": "A", )" + box + R"(}, {"id": 2, "name": "A", )" + box + "}]}",
+               "objects[1].name", R"(name "A" is used twice)");
+  const std::string deep(100000, '[');
+  EXPECT_FAULT_CONTAINS(deep, "", "nesting deeper than 64 levels");
+  EXPECT_FAULT_CONTAINS(R"({"format": "corbel", "version": 1, "x": )" + std::string(100000, '{'), "",
+                        "nesting deeper than 64 levels");
+}
+
+TEST(ProjectIo, UnknownKeysAreWarningsWithPaths) {
+  const auto p = corbel::parseProject(R"({"format": "corbel", "version": 1, "author": "me",
+      "objects": [{"id": 1, "name": "A", "colour": "red",
+                   "box": {"size": [1, 1, 1], "height": 3, "repeat": {"count": [1, 1], "offset": 2}}}]})");
+  EXPECT_EQ(p.document.objects.size(), 1u);
+  const std::set<std::string> warnings(p.warnings.begin(), p.warnings.end());
+  EXPECT_EQ(warnings, (std::set<std::string>{"author: unknown key ignored", "objects[0].colour: unknown key ignored",
+                                             "objects[0].box.height: unknown key ignored",
+                                             "objects[0].box.repeat.offset: unknown key ignored"}));
+}
+
+TEST(ProjectIo, LoadProjectReportsFileProblems) {
+  TempDir dir;
+  try {
+    corbel::loadProject(dir.file("missing.corbel"));
+    FAIL() << "missing file loaded";
+  } catch (const corbel::Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(dir.file("missing.corbel")), std::string::npos) << what;
+    EXPECT_NE(what.find("no such file"), std::string::npos) << what;
+  }
+  try {
+    corbel::loadProject(dir.path());
+    FAIL() << "folder loaded";
+  } catch (const corbel::Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(dir.path()), std::string::npos) << what;
+    EXPECT_NE(what.find("is a folder"), std::string::npos) << what;
+  }
+  // Larger than kMaxProjectBytes: refused by its size, before reading (a sparse file).
+  const std::string big = dir.file("big.corbel");
+  writeText(big, "{");
+  std::filesystem::resize_file(big, corbel::kMaxProjectBytes + 1);
+  try {
+    corbel::loadProject(big);
+    FAIL() << "oversized file loaded";
+  } catch (const corbel::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than the limit"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ProjectIo, LoadProjectPrefixesFaultsWithTheFileName) {
+  TempDir dir;
+  const std::string path = dir.file("bad.corbel");
+  writeText(path, withBox(R"("size": "10")"));
+  try {
+    corbel::loadProject(path);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where, path + ": objects[0].box.size");
+    EXPECT_EQ(e.reason, "expected [x, y, z] numbers");
+  }
+  writeText(path, "");
+  try {
+    corbel::loadProject(path);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where, path);
+    EXPECT_EQ(e.reason, "file is empty");
+  }
+}
+
+TEST(ProjectIo, SaveProjectWritesTheSerialisation) {
+  TempDir dir;
+  Document d;
+  d.name = "Saved";
+  d.add("One", BoxSpec{});
+  corbel::saveProject(d, dir.file("p.corbel"));
+  EXPECT_EQ(readText(dir.file("p.corbel")), corbel::serializeProject(d));
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"p.corbel"});  // no temporary left behind
+  EXPECT_THROW(corbel::saveProject(d, dir.file("no/such/folder/p.corbel")), corbel::Error);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"p.corbel"});
+}
+
+}  // namespace
