@@ -1,0 +1,824 @@
+// The sweep-plane algorithm of Kelly & Wonka, Sec. 4.2–4.5 and 4.8.
+//
+// Active plan: loops of corners and edges. Edge e lies at height z on the line
+// n_e·x = c_e + k_e·z (n_e its inward normal, k_e = tan θ_e), i.e. on its direction plane.
+// A corner is where its two edges' lines meet, so its position is always recomputed from the
+// lines (no drift). Every face of the output is traced by one edge between two events.
+#include "extrude/sweep.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <queue>
+#include <sstream>
+
+namespace corbel::extrude {
+
+namespace {
+
+// CORBEL_SWEEP_TRACE=1 prints every event to stderr (for debugging kernels, never in tests).
+bool traceOn() {
+  static const bool on = [] {
+    const char* v = std::getenv("CORBEL_SWEEP_TRACE");
+    return v && *v == '1';
+  }();
+  return on;
+}
+#define SWEEP_TRACE(...)                  \
+  do {                                    \
+    if (traceOn()) {                      \
+      std::fprintf(stderr, __VA_ARGS__);  \
+      std::fputc('\n', stderr);           \
+    }                                     \
+  } while (0)
+
+double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
+Vec2 leftOf(const Vec2& d) { return Vec2(-d[1], d[0]); }
+
+struct Edge {
+  Vec2 d;         // unit direction
+  Vec2 n;         // inward unit normal (left of d)
+  double k = 0;   // tan θ
+  double c = 0;   // n·x = c + k z
+  int face = -1;
+  int src = -1;   // index into the flat input edge list
+  int step = 0;   // current angle step of the input edge
+  int start = -1, end = -1;
+  bool alive = true;
+};
+
+struct Corner {
+  int prev = -1, next = -1;  // the edge ending here and the edge starting here
+  int vertex = -1;           // output vertex where the corner was created
+  // Fallback motion for parallel neighbours: position p0 + v (z − z0).
+  Vec2 p0;
+  double z0 = 0;
+  Vec2 v;
+  bool parallel = false;
+  bool alive = true;
+};
+
+struct FaceBuild {
+  std::vector<std::pair<int, int>> segments;  // directed boundary pieces (vertex ids)
+  int src = -1;
+  int segment = -1;
+  double angle = 0;
+  Vec3 normal;
+  bool base = false;
+};
+
+struct Candidate {
+  double z;
+  Vec2 p;
+  int corner;  // the corner whose motion predicted it (a cheap staleness test)
+  bool operator>(const Candidate& o) const { return z > o.z; }
+};
+
+class Sweeper {
+ public:
+  Sweeper(const SweepInput& in, const Tolerances& tol, Progress* progress)
+      : in_(in), tol_(tol), progress_(progress) {}
+
+  SweepOutput run();
+
+ private:
+  // Geometry.
+  Vec2 cornerAt(int c, double z) const;
+  void setCornerMotion(int c, const Vec2& at, double z);
+  void setEdgePlane(Edge& e, const Vec2& d, const Vec2& pointOnLine, double z, double angle);
+  int addVertex(const Vec2& p, double z);
+  int addFace(int src, int segment, double angle, const Edge& e);
+
+  // Topology.
+  int newCorner(int prev, int next, int vertex, const Vec2& at, double z);
+  void arc(int corner, int topVertex);
+  void killCorner(int c, int topVertex);
+  void resolveCorner(int c, double z, int depth = 0);
+  void zipSpike(int c, double z, int depth);
+  void mergeColinear(int c, double z, int depth);
+
+  // Events.
+  void predict(int corner);
+  void predictAgainst(int edge);
+  bool handleIntersection(const Candidate& cand);
+  void handleDirectionChanges(double h);
+  void capRemaining(double z);
+  void buildFaces(SweepOutput& out);
+
+  const SweepInput& in_;
+  const Tolerances& tol_;
+  Progress* progress_;
+  std::vector<const SweepEdge*> inputs_;
+  std::vector<Edge> edges_;
+  std::vector<Corner> corners_;
+  std::vector<FaceBuild> faces_;
+  std::vector<Vec3> points_;
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue_;
+  std::vector<double> directionHeights_;
+  std::vector<std::string> warnings_;
+  double z_ = 0;
+  std::size_t events_ = 0;
+  std::vector<int> recent_;  // vertices made at height recentZ_
+  double recentZ_ = std::numeric_limits<double>::quiet_NaN();
+};
+
+// ------------------------------------------------------------------ geometry
+
+void Sweeper::setEdgePlane(Edge& e, const Vec2& d, const Vec2& p, double z, double angle) {
+  e.d = d;
+  e.n = leftOf(d);
+  e.k = std::tan(angle);
+  e.c = OpenMesh::dot(e.n, p) - e.k * z;
+}
+
+Vec2 Sweeper::cornerAt(int ci, double z) const {
+  const Corner& c = corners_[ci];
+  if (c.parallel) return c.p0 + c.v * (z - c.z0);
+  const Edge& a = edges_[c.prev];
+  const Edge& b = edges_[c.next];
+  const double det = cross2(a.n, b.n);
+  const double ra = a.c + a.k * z, rb = b.c + b.k * z;
+  return Vec2((ra * b.n[1] - rb * a.n[1]) / det, (a.n[0] * rb - b.n[0] * ra) / det);
+}
+
+void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
+  Corner& c = corners_[ci];
+  const Edge& a = edges_[c.prev];
+  const Edge& b = edges_[c.next];
+  const double det = cross2(a.n, b.n);
+  c.p0 = at;
+  c.z0 = z;
+  if (std::abs(det) > tol_.parallelSine) {
+    c.parallel = false;
+    c.v = Vec2((a.k * b.n[1] - b.k * a.n[1]) / det, (a.n[0] * b.k - b.n[0] * a.k) / det);
+    return;
+  }
+  // Parallel neighbours: colinear edges of one plane move the corner with them; an
+  // antiparallel spike is zipped before it moves (resolveCorner).
+  c.parallel = true;
+  c.v = OpenMesh::dot(a.d, b.d) > 0 ? a.n * a.k : Vec2(0.0, 0.0);
+}
+
+// Points made at one event height that coincide are one vertex: several corners and zips of
+// one event (or of events clustered at one height) meet there, and the shell must share it.
+int Sweeper::addVertex(const Vec2& p, double z) {
+  if (recentZ_ != z) {
+    if (std::abs(recentZ_ - z) > tol_.height) recent_.clear();
+    recentZ_ = z;
+  }
+  for (int v : recent_)
+    if (std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster) return v;
+  points_.emplace_back(p[0], p[1], z);
+  const int v = static_cast<int>(points_.size()) - 1;
+  recent_.push_back(v);
+  return v;
+}
+
+int Sweeper::addFace(int src, int segment, double angle, const Edge& e) {
+  FaceBuild f;
+  f.src = src;
+  f.segment = segment;
+  f.angle = angle;
+  // Outward normal of the direction plane n·x − k z = c is −(n, −k), normalised.
+  f.normal = Vec3(-e.n[0], -e.n[1], e.k);
+  f.normal.normalize();
+  faces_.push_back(std::move(f));
+  return static_cast<int>(faces_.size()) - 1;
+}
+
+// ------------------------------------------------------------------ topology
+
+int Sweeper::newCorner(int prev, int next, int vertex, const Vec2& at, double z) {
+  SWEEP_TRACE("  new corner %zu: edges %d -> %d at v%d (%g, %g, %g)", corners_.size(), prev, next, vertex, at[0], at[1], z);
+  Corner c;
+  c.prev = prev;
+  c.next = next;
+  c.vertex = vertex;
+  corners_.push_back(c);
+  const int ci = static_cast<int>(corners_.size()) - 1;
+  edges_[prev].end = ci;
+  edges_[next].start = ci;
+  setCornerMotion(ci, at, z);
+  return ci;
+}
+
+// The corner's path from where it was created to topVertex is an arc shared by the faces of
+// its two edges: the edge ending here sees it going up, the edge starting here going down.
+void Sweeper::arc(int ci, int top) {
+  const Corner& c = corners_[ci];
+  if (c.vertex == top) return;
+  faces_[edges_[c.prev].face].segments.emplace_back(c.vertex, top);
+  faces_[edges_[c.next].face].segments.emplace_back(top, c.vertex);
+}
+
+void Sweeper::killCorner(int ci, int top) {
+  arc(ci, top);
+  corners_[ci].alive = false;
+}
+
+void Sweeper::resolveCorner(int ci, double z, int depth) {
+  if (!corners_[ci].alive) return;
+  if (depth > 64) {
+    warnings_.push_back("unresolved degenerate corner cascade at height " + std::to_string(z));
+    return;
+  }
+  const Corner& c = corners_[ci];
+  const Edge& a = edges_[c.prev];
+  const Edge& b = edges_[c.next];
+  if (std::abs(cross2(a.d, b.d)) > tol_.parallelSine) return;  // an ordinary corner
+  if (OpenMesh::dot(a.d, b.d) < 0) {
+    zipSpike(ci, z, depth);
+  } else if (std::abs(a.k - b.k) > 1e-12 * (1.0 + std::abs(a.k) + std::abs(b.k))) {
+    mergeColinear(ci, z, depth);
+  }
+}
+
+// Two antiparallel edges meeting at a corner lie on one line: above this height they would
+// cross. They meet along their overlap (a ridge); the longer one goes on (Sec. 4.4, the
+// degenerate chains of two parallel edges).
+void Sweeper::zipSpike(int ci, double z, int depth) {
+  Corner& c = corners_[ci];
+  const int A = c.prev, B = c.next;
+  const int a0 = edges_[A].start, b1 = edges_[B].end;
+  const Vec2 l = cornerAt(ci, z);
+  const int vl = c.vertex;
+  c.alive = false;
+  SWEEP_TRACE("zip corner %d (edges %d, %d) at (%g, %g, %g)", ci, A, B, l[0], l[1], z);
+  if (a0 == b1) {
+    // A loop of two edges: it closes along the ridge.
+    const Vec2 pa = cornerAt(a0, z);
+    const int va = addVertex(pa, z);
+    killCorner(a0, va);
+    faces_[edges_[A].face].segments.emplace_back(vl, va);
+    faces_[edges_[B].face].segments.emplace_back(va, vl);
+    edges_[A].alive = edges_[B].alive = false;
+    return;
+  }
+  const Vec2 pa = cornerAt(a0, z), pb = cornerAt(b1, z);
+  const double la = OpenMesh::dot(edges_[A].d, l - pa);
+  const double lb = OpenMesh::dot(edges_[B].d, pb - l);
+  const int aPrev = corners_[a0].prev, bNext = corners_[b1].next;
+  if (std::abs(la - lb) <= tol_.cluster) {
+    const int v = addVertex((pa + pb) * 0.5, z);
+    killCorner(a0, v);
+    killCorner(b1, v);
+    faces_[edges_[A].face].segments.emplace_back(vl, v);
+    faces_[edges_[B].face].segments.emplace_back(v, vl);
+    edges_[A].alive = edges_[B].alive = false;
+    if (aPrev == bNext) {
+      // A loop of three edges closing at once: the third edge's face ends at v too.
+      edges_[aPrev].alive = false;
+      return;
+    }
+    const int n = newCorner(aPrev, bNext, v, (pa + pb) * 0.5, z);
+    resolveCorner(n, z, depth + 1);
+    if (corners_[n].alive) predict(n);
+  } else if (la < lb) {
+    const int va = addVertex(pa, z);
+    killCorner(a0, va);
+    faces_[edges_[A].face].segments.emplace_back(vl, va);
+    faces_[edges_[B].face].segments.emplace_back(va, vl);
+    edges_[A].alive = false;
+    const int n = newCorner(aPrev, B, va, pa, z);
+    resolveCorner(n, z, depth + 1);
+    if (corners_[n].alive) predict(n);
+  } else {
+    const int vb = addVertex(pb, z);
+    killCorner(b1, vb);
+    faces_[edges_[A].face].segments.emplace_back(vl, vb);
+    faces_[edges_[B].face].segments.emplace_back(vb, vl);
+    edges_[B].alive = false;
+    const int n = newCorner(A, bNext, vb, pb, z);
+    resolveCorner(n, z, depth + 1);
+    if (corners_[n].alive) predict(n);
+  }
+}
+
+// Colinear neighbours with different angles: the ambiguous case of Sec. 4.8. The edge of
+// higher priority takes over the other's extent; the other's face ends here.
+void Sweeper::mergeColinear(int ci, double z, int depth) {
+  Corner& c = corners_[ci];
+  const int A = c.prev, B = c.next;
+  const int vl = c.vertex;
+  const bool keepA = inputs_[edges_[A].src]->priority >= inputs_[edges_[B].src]->priority;
+  c.alive = false;
+  SWEEP_TRACE("merge colinear corner %d (edges %d, %d) keeping %d", ci, A, B, keepA ? A : B);
+  if (keepA) {
+    const int b1 = edges_[B].end;
+    const Vec2 pb = cornerAt(b1, z);
+    const int vb = addVertex(pb, z);
+    killCorner(b1, vb);
+    faces_[edges_[B].face].segments.emplace_back(vb, vl);  // B's face ends along its top
+    faces_[edges_[A].face].segments.emplace_back(vl, vb);  // A's face starts above it
+    const int bNext = corners_[b1].next;
+    edges_[B].alive = false;
+    const int n = newCorner(A, bNext, vb, pb, z);
+    resolveCorner(n, z, depth + 1);
+    if (corners_[n].alive) predict(n);
+  } else {
+    const int a0 = edges_[A].start;
+    const Vec2 pa = cornerAt(a0, z);
+    const int va = addVertex(pa, z);
+    killCorner(a0, va);
+    faces_[edges_[A].face].segments.emplace_back(vl, va);
+    faces_[edges_[B].face].segments.emplace_back(va, vl);
+    const int aPrev = corners_[a0].prev;
+    edges_[A].alive = false;
+    const int n = newCorner(aPrev, B, va, pa, z);
+    resolveCorner(n, z, depth + 1);
+    if (corners_[n].alive) predict(n);
+  }
+}
+
+// ------------------------------------------------------------------ events
+
+// Where the corner's path meets each other edge's direction plane above the sweep.
+void Sweeper::predict(int ci) {
+  const Corner& c = corners_[ci];
+  if (!c.alive) return;
+  // The corner's path: x(z) = q + v z.
+  Vec2 v, q;
+  if (c.parallel) {
+    v = c.v;
+    q = c.p0 - c.v * c.z0;
+  } else {
+    const Edge& a = edges_[c.prev];
+    const Edge& b = edges_[c.next];
+    const double det = cross2(a.n, b.n);
+    v = Vec2((a.k * b.n[1] - b.k * a.n[1]) / det, (a.n[0] * b.k - b.n[0] * a.k) / det);
+    q = Vec2((a.c * b.n[1] - b.c * a.n[1]) / det, (a.n[0] * b.c - b.n[0] * a.c) / det);
+  }
+  for (int ei = 0; ei < static_cast<int>(edges_.size()); ++ei) {
+    const Edge& e = edges_[ei];
+    if (!e.alive || ei == c.prev || ei == c.next) continue;
+    const double denom = OpenMesh::dot(e.n, v) - e.k;
+    if (std::abs(denom) < 1e-14) continue;
+    const double z = (e.c - OpenMesh::dot(e.n, q)) / denom;
+    // A corner takes part in nothing more at the height it was made: everything at its
+    // point and height was handled by the event that made it.
+    if (!(z > c.z0 + tol_.height) || !std::isfinite(z)) continue;
+    queue_.push({z, q + v * z, ci});
+  }
+}
+
+void Sweeper::predictAgainst(int ei) {
+  // Every live corner against one (new) plane.
+  const Edge& e = edges_[ei];
+  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
+    const Corner& c = corners_[ci];
+    if (!c.alive || c.prev == ei || c.next == ei) continue;
+    const Vec2 p0 = cornerAt(ci, z_), p1 = cornerAt(ci, z_ + 1.0);
+    const Vec2 v = p1 - p0, q = p0 - v * z_;
+    const double denom = OpenMesh::dot(e.n, v) - e.k;
+    if (std::abs(denom) < 1e-14) continue;
+    const double z = (e.c - OpenMesh::dot(e.n, q)) / denom;
+    if (!(z > std::max(c.z0, z_) + tol_.height) || !std::isfinite(z)) continue;
+    queue_.push({z, q + v * z, ci});
+  }
+}
+
+// A generalized intersection event (Sec. 4.4): all edges whose planes meet at the point,
+// grouped into chains of consecutive edges; interior edges of a chain vanish, chains of one
+// edge are split at the point, and chains are relinked pairwise around the point.
+bool Sweeper::handleIntersection(const Candidate& cand) {
+  const double z = cand.z;
+  if (!corners_[cand.corner].alive) return false;
+  if ((cornerAt(cand.corner, z) - cand.p).norm() > tol_.cluster) return false;
+
+  // Corners that arrive at the point.
+  std::vector<int> K;
+  Vec2 l(0.0, 0.0);
+  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
+    if (!corners_[ci].alive) continue;
+    const Vec2 p = cornerAt(ci, z);
+    if ((p - cand.p).norm() <= tol_.cluster) {
+      K.push_back(ci);
+      l += p;
+    }
+  }
+  if (K.empty()) return false;
+  l /= static_cast<double>(K.size());
+  std::vector<char> inK(corners_.size(), 0);
+  for (int ci : K) inK[ci] = 1;
+
+  // Edges through the point: those of arriving corners, and edges the point splits.
+  std::vector<int> involved;
+  std::vector<char> isInvolved(edges_.size(), 0);
+  auto involve = [&](int ei) {
+    if (!isInvolved[ei]) {
+      isInvolved[ei] = 1;
+      involved.push_back(ei);
+    }
+  };
+  for (int ci : K) {
+    involve(corners_[ci].prev);
+    involve(corners_[ci].next);
+  }
+  std::vector<int> splits;
+  for (int ei = 0; ei < static_cast<int>(edges_.size()); ++ei) {
+    const Edge& e = edges_[ei];
+    if (!e.alive || isInvolved[ei]) continue;
+    if (std::abs(OpenMesh::dot(e.n, l) - (e.c + e.k * z)) > tol_.cluster) continue;
+    const Vec2 s = cornerAt(e.start, z), t = cornerAt(e.end, z);
+    const double along = OpenMesh::dot(e.d, l - s), length = OpenMesh::dot(e.d, t - s);
+    if (along < -tol_.edgeMargin || along > length + tol_.edgeMargin) continue;
+    involve(ei);
+    splits.push_back(ei);
+  }
+  if (involved.size() < 3) {
+    // Fewer than three planes meet only where a whole loop has shrunk to the point (a
+    // two-edge sliver whose corners arrive together).
+    bool closed = true;
+    for (int ei : involved) closed = closed && inK[edges_[ei].start] && inK[edges_[ei].end];
+    if (!closed) return false;
+  }
+
+  ++events_;
+  const int vl = addVertex(l, z);
+  SWEEP_TRACE("event %zu at (%g, %g, %g): %zu corners, %zu edges, %zu splits -> v%d", events_, l[0], l[1], z, K.size(),
+              involved.size(), splits.size(), vl);
+  for (int ci : K) killCorner(ci, vl);
+
+  // Chains: follow arriving corners from each edge whose start did not arrive.
+  struct Chain {
+    int in, out;  // the edge arriving at l and the edge leaving it
+  };
+  std::vector<Chain> chains;
+  std::vector<char> used(edges_.size(), 0);
+  for (int ei : involved) {
+    if (used[ei]) continue;
+    const Edge& e = edges_[ei];
+    if (inK[e.start]) continue;  // not the head of a chain
+    if (!inK[e.end]) continue;   // an edge the point splits (below)
+    used[ei] = 1;
+    int last = ei;
+    for (int cur = ei;;) {
+      const int nxt = corners_[edges_[cur].end].next;
+      used[nxt] = 1;
+      if (nxt != ei && inK[edges_[nxt].end]) {
+        edges_[nxt].alive = false;  // interior edge: shrank to nothing at l
+        cur = nxt;
+        continue;
+      }
+      last = nxt;
+      break;
+    }
+    chains.push_back({ei, last});
+  }
+  // Closed chains: whole loops that collapse into the point.
+  for (int ei : involved) {
+    if (used[ei] || splits.end() != std::find(splits.begin(), splits.end(), ei)) continue;
+    int cur = ei;
+    do {
+      used[cur] = 1;
+      edges_[cur].alive = false;
+      cur = corners_[edges_[cur].end].next;
+    } while (cur != ei && !used[cur]);
+  }
+  // Chains of one edge: split it at l.
+  for (int ei : splits) {
+    Edge piece = edges_[ei];
+    piece.start = -1;
+    edges_.push_back(piece);
+    const int ej = static_cast<int>(edges_.size()) - 1;
+    corners_[edges_[ej].end].prev = ej;
+    edges_[ei].end = -1;
+    chains.push_back({ei, ej});
+  }
+  if (chains.empty()) return true;
+
+  // Relink: each arriving edge pairs with the leaving edge next to it clockwise around l, so
+  // no region between them contains another edge.
+  struct Ray {
+    double angle;
+    int chain;
+    bool incoming;
+  };
+  std::vector<Ray> rays;
+  for (int i = 0; i < static_cast<int>(chains.size()); ++i) {
+    const Vec2 back = -edges_[chains[i].in].d, fwd = edges_[chains[i].out].d;
+    rays.push_back({std::atan2(back[1], back[0]), i, true});
+    rays.push_back({std::atan2(fwd[1], fwd[0]), i, false});
+  }
+  std::vector<int> newCorners;
+  if (chains.size() == 1) {
+    newCorners.push_back(newCorner(chains[0].in, chains[0].out, vl, l, z));
+  } else {
+    std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) {
+      return a.angle != b.angle ? a.angle < b.angle : a.incoming < b.incoming;
+    });
+    const int m = static_cast<int>(rays.size());
+    std::vector<char> taken(chains.size(), 0);
+    for (int i = 0; i < m; ++i) {
+      if (!rays[i].incoming) continue;
+      for (int s = 1; s < m; ++s) {
+        const Ray& r = rays[(i - s + m) % m];
+        if (r.incoming || taken[r.chain]) continue;
+        taken[r.chain] = 1;
+        newCorners.push_back(newCorner(chains[rays[i].chain].in, chains[r.chain].out, vl, l, z));
+        break;
+      }
+    }
+  }
+  for (int ci : newCorners) resolveCorner(ci, z);
+  for (int ci : newCorners)
+    if (corners_[ci].alive) predict(ci);
+  return true;
+}
+
+// Edge direction events (Sec. 4.5.1): every edge whose profile turns at height h continues
+// on a new direction plane and starts a new face.
+void Sweeper::handleDirectionChanges(double h) {
+  std::vector<int> changing;
+  for (int ei = 0; ei < static_cast<int>(edges_.size()); ++ei) {
+    const Edge& e = edges_[ei];
+    if (!e.alive) continue;
+    const auto& steps = inputs_[e.src]->steps;
+    if (e.step + 1 < static_cast<int>(steps.size()) && std::abs(steps[e.step + 1].z - h) <= tol_.height)
+      changing.push_back(ei);
+  }
+  if (changing.empty()) return;
+  std::map<int, int> replaced;  // old edge → new edge
+  std::map<int, int> cornerVertex;
+  std::map<int, Vec2> cornerPos;
+  for (int ei : changing) {
+    for (int ci : {edges_[ei].start, edges_[ei].end}) {
+      if (cornerVertex.count(ci)) continue;
+      const Vec2 p = cornerAt(ci, h);
+      cornerPos[ci] = p;
+      cornerVertex[ci] = addVertex(p, h);
+    }
+  }
+  for (int ei : changing) {
+    Edge next = edges_[ei];
+    const auto& st = inputs_[next.src]->steps[next.step + 1];
+    const Vec2 on = cornerPos[edges_[ei].start];
+    setEdgePlane(next, edges_[ei].d, on, h, st.angle);
+    next.step = edges_[ei].step + 1;
+    next.face = addFace(next.src, st.segment, st.angle, next);
+    edges_.push_back(next);
+    const int nj = static_cast<int>(edges_.size()) - 1;
+    replaced[ei] = nj;
+  }
+  // Old faces end along their top, new faces start along their bottom.
+  for (int ei : changing) {
+    const int vs = cornerVertex[edges_[ei].start], vt = cornerVertex[edges_[ei].end];
+    faces_[edges_[ei].face].segments.emplace_back(vt, vs);
+    faces_[edges_[replaced[ei]].face].segments.emplace_back(vs, vt);
+  }
+  // Corners of changing edges move along new paths from here.
+  std::vector<int> fresh;
+  for (const auto& [ci, v] : cornerVertex) {
+    const Corner old = corners_[ci];
+    killCorner(ci, v);
+    const int prev = replaced.count(old.prev) ? replaced[old.prev] : old.prev;
+    const int next = replaced.count(old.next) ? replaced[old.next] : old.next;
+    fresh.push_back(newCorner(prev, next, v, cornerPos[ci], h));
+  }
+  for (int ei : changing) edges_[ei].alive = false;
+  for (int ci : fresh) resolveCorner(ci, h);
+  for (int ci : fresh)
+    if (corners_[ci].alive) predict(ci);
+  for (const auto& [old, nj] : replaced)
+    if (edges_[nj].alive) predictAgainst(nj);
+}
+
+// Loops still open when no event is left (a missed event in a degenerate configuration):
+// close each with a flat cap so the shell stays closed, and say so.
+void Sweeper::capRemaining(double z) {
+  std::vector<char> seen(corners_.size(), 0);
+  int capped = 0;
+  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
+    if (!corners_[ci].alive || seen[ci]) continue;
+    std::vector<int> loop;
+    int cur = ci;
+    while (!seen[cur]) {
+      seen[cur] = 1;
+      loop.push_back(cur);
+      cur = edges_[corners_[cur].next].end;
+      if (cur < 0) break;
+    }
+    FaceBuild cap;
+    cap.normal = Vec3(0, 0, 1);
+    cap.segment = -2;
+    std::vector<int> verts;
+    for (int c : loop) verts.push_back(addVertex(cornerAt(c, z), z));
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const int c = loop[i];
+      killCorner(c, verts[i]);
+      const int e = corners_[c].next;
+      const int vs = verts[i], vt = verts[(i + 1) % loop.size()];
+      faces_[edges_[e].face].segments.emplace_back(vt, vs);
+      cap.segments.emplace_back(vs, vt);
+      edges_[e].alive = false;
+    }
+    faces_.push_back(std::move(cap));
+    ++capped;
+  }
+  if (capped) {
+    std::ostringstream s;
+    s << "the roof did not close: " << capped << " loop(s) were capped flat at height " << z
+      << " (a degenerate configuration, Sec. 4.4 Fig. 15)";
+    warnings_.push_back(s.str());
+  }
+}
+
+SweepOutput Sweeper::run() {
+  z_ = in_.baseZ;
+  // Input edges, their first faces, and the base.
+  FaceBuild base;
+  base.base = true;
+  base.normal = Vec3(0, 0, -1);
+  for (const auto& loop : in_.loops) {
+    const int first = static_cast<int>(edges_.size());
+    const int n = static_cast<int>(loop.size());
+    std::vector<int> verts;
+    for (int i = 0; i < n; ++i) verts.push_back(addVertex(loop[i].start, z_));
+    for (int i = 0; i < n; ++i) {
+      inputs_.push_back(&loop[i]);
+      Edge e;
+      e.src = static_cast<int>(inputs_.size()) - 1;
+      Vec2 d = loop[(i + 1) % n].start - loop[i].start;
+      d.normalize();
+      setEdgePlane(e, d, loop[i].start, z_, loop[i].steps[0].angle);
+      e.face = addFace(e.src, loop[i].steps[0].segment, loop[i].steps[0].angle, e);
+      edges_.push_back(e);
+      faces_[e.face].segments.emplace_back(verts[i], verts[(i + 1) % n]);
+      base.segments.emplace_back(verts[(i + 1) % n], verts[i]);
+      for (std::size_t s = 1; s < loop[i].steps.size(); ++s) directionHeights_.push_back(loop[i].steps[s].z);
+    }
+    for (int i = 0; i < n; ++i) {
+      const int prev = first + (i + n - 1) % n, next = first + i;
+      newCorner(prev, next, verts[i], loop[i].start, z_);
+    }
+  }
+  if (in_.emitBase) faces_.push_back(base);
+  std::sort(directionHeights_.begin(), directionHeights_.end());
+  directionHeights_.erase(std::unique(directionHeights_.begin(), directionHeights_.end(),
+                                      [&](double a, double b) { return std::abs(a - b) <= tol_.height; }),
+                          directionHeights_.end());
+  const int initialCorners = static_cast<int>(corners_.size());
+  for (int ci = 0; ci < initialCorners; ++ci) resolveCorner(ci, z_);
+  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci)
+    if (corners_[ci].alive) predict(ci);
+
+  std::size_t nextDirection = 0;
+  const std::size_t cap = 200000 + 400 * edges_.size() * edges_.size();
+  std::size_t popped = 0;
+  while (true) {
+    const double nextEventZ = queue_.empty() ? std::numeric_limits<double>::infinity() : queue_.top().z;
+    if (nextDirection < directionHeights_.size() && directionHeights_[nextDirection] < nextEventZ - tol_.height) {
+      z_ = std::max(z_, directionHeights_[nextDirection]);
+      handleDirectionChanges(directionHeights_[nextDirection++]);
+      continue;
+    }
+    if (queue_.empty()) break;
+    if (++popped > cap) {
+      warnings_.push_back("event limit reached; the result is incomplete");
+      break;
+    }
+    if (progress_ && (popped & 1023) == 0 && progress_->cancelled()) throw Cancelled();
+    const Candidate cand = queue_.top();
+    queue_.pop();
+    if (cand.z < z_ - tol_.height) continue;  // predicted before an earlier change
+    if (handleIntersection(cand)) z_ = std::max(z_, cand.z);
+  }
+  capRemaining(z_);
+
+  SweepOutput out;
+  buildFaces(out);
+  out.warnings = warnings_;
+  out.events = events_;
+  return out;
+}
+
+// ------------------------------------------------------------------ faces
+
+void Sweeper::buildFaces(SweepOutput& out) {
+  out.points = points_;
+  for (const Vec3& p : points_) out.maxHeight = std::max(out.maxHeight, p[2]);
+  for (const FaceBuild& f : faces_) {
+    // Drop zero-length pieces and pieces cancelled by their reverse (a face folded onto itself).
+    std::map<std::pair<int, int>, int> count;
+    for (auto [u, v] : f.segments) {
+      if (u == v || (points_[u] - points_[v]).norm() <= tol_.cluster * 1e-3) continue;
+      auto rev = count.find({v, u});
+      if (rev != count.end() && rev->second > 0) {
+        --rev->second;
+        continue;
+      }
+      ++count[{u, v}];
+    }
+    std::multimap<int, int> from;
+    std::vector<std::pair<int, int>> segs;
+    for (const auto& [uv, n] : count)
+      for (int i = 0; i < n; ++i) segs.push_back(uv);
+    if (segs.size() < 3) continue;
+    for (int i = 0; i < static_cast<int>(segs.size()); ++i) from.emplace(segs[i].first, i);
+
+    // 2D frame of the face plane, counter-clockwise seen from outside.
+    Vec3 u = std::abs(f.normal[2]) < 0.9 ? OpenMesh::cross(Vec3(0, 0, 1), f.normal) : Vec3(1, 0, 0);
+    u.normalize();
+    const Vec3 w = OpenMesh::cross(f.normal, u);
+    auto flat = [&](int v) { return Vec2(OpenMesh::dot(points_[v], u), OpenMesh::dot(points_[v], w)); };
+
+    std::vector<char> usedSeg(segs.size(), 0);
+    std::vector<std::vector<int>> loops;
+    for (int s0 = 0; s0 < static_cast<int>(segs.size()); ++s0) {
+      if (usedSeg[s0]) continue;
+      std::vector<int> loop;
+      int s = s0;
+      while (s >= 0 && !usedSeg[s]) {
+        usedSeg[s] = 1;
+        loop.push_back(segs[s].first);
+        const int at = segs[s].second;
+        const Vec2 back = flat(segs[s].first) - flat(at);
+        // Among the pieces leaving `at`, the first one clockwise from the way back.
+        int best = -1;
+        double bestTurn = 1e9;
+        auto range = from.equal_range(at);
+        for (auto it = range.first; it != range.second; ++it) {
+          if (usedSeg[it->second]) continue;
+          const Vec2 out = flat(segs[it->second].second) - flat(at);
+          double turn = std::atan2(cross2(out, back), OpenMesh::dot(out, back));  // clockwise angle back → out
+          if (turn <= 0) turn += 2 * std::numbers::pi;
+          if (turn < bestTurn) {
+            bestTurn = turn;
+            best = it->second;
+          }
+        }
+        s = best;
+      }
+      if (loop.size() >= 3) loops.push_back(std::move(loop));
+    }
+    // Outer loops are counter-clockwise in the face frame; holes go to the outer loop that
+    // contains them.
+    auto signedArea = [&](const std::vector<int>& loop) {
+      double a = 0;
+      for (std::size_t i = 0; i < loop.size(); ++i) a += cross2(flat(loop[i]), flat(loop[(i + 1) % loop.size()]));
+      return 0.5 * a;
+    };
+    std::vector<int> outers, holes;
+    for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+      const double a = signedArea(loops[i]);
+      if (std::abs(a) <= tol_.cluster * tol_.cluster) continue;
+      (a > 0 ? outers : holes).push_back(i);
+    }
+    std::vector<ShellFace> made;
+    for (int o : outers) {
+      ShellFace sf;
+      sf.loops.push_back(loops[o]);
+      sf.normal = f.normal;
+      sf.base = f.base;
+      if (f.src >= 0) {
+        sf.sourceLoop = inputs_[f.src]->sourceLoop;
+        sf.sourceEdge = inputs_[f.src]->sourceEdge;
+      }
+      sf.segment = f.segment;
+      sf.angle = f.angle;
+      made.push_back(std::move(sf));
+    }
+    auto inside = [&](const Vec2& p, const std::vector<int>& loop) {
+      bool in = false;
+      for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+        const Vec2 a = flat(loop[i]), b = flat(loop[j]);
+        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
+      }
+      return in;
+    };
+    for (int h : holes) {
+      // A hole's test point: the midpoint of its first edge nudged to its inside is robust
+      // against holes touching their outer loop at a vertex.
+      const auto& hl = loops[h];
+      Vec2 probe = (flat(hl[0]) + flat(hl[1])) * 0.5;
+      int owner = -1;
+      double ownerArea = 1e300;
+      for (std::size_t k = 0; k < made.size(); ++k) {
+        if (!inside(probe, made[k].loops[0])) continue;
+        const double a = signedArea(made[k].loops[0]);
+        if (a < ownerArea) {
+          ownerArea = a;
+          owner = static_cast<int>(k);
+        }
+      }
+      if (owner >= 0) made[owner].loops.push_back(hl);
+      else if (!made.empty()) {
+        out.warnings.push_back("a face boundary piece could not be placed (hole outside its face)");
+      }
+    }
+    for (auto& m : made) out.faces.push_back(std::move(m));
+  }
+}
+
+}  // namespace
+
+SweepOutput sweep(const SweepInput& input, const Tolerances& tol, Progress* progress) {
+  Sweeper s(input, tol, progress);
+  return s.run();
+}
+
+}  // namespace corbel::extrude

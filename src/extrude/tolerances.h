@@ -1,0 +1,27 @@
+#pragma once
+// Every tolerance of the procedural-extrusion kernel, in one place. They scale with the
+// model: `scale` is the diagonal of the plan's bounding box (meters), so a 10 m house and a
+// 1 km estate get the same relative behaviour. See docs/extrude.md for how they were chosen.
+#include <algorithm>
+
+namespace corbel::extrude {
+
+struct Tolerances {
+  // δ1 (Sec. 4.4): events whose heights differ by less than this are handled together.
+  double height;
+  // δ2: events whose positions on the sweep plane are closer than this are one event.
+  double cluster;
+  // δ3: an edge takes part in an event at l if l lies within this of its segment.
+  double edgeMargin;
+  // Two edge directions are parallel when the sine of their angle is below this.
+  double parallelSine;
+  // Input points closer than this are one point (zero-length edges are refused).
+  double minEdge;
+
+  static Tolerances forScale(double scale) {
+    const double s = std::max(scale, 1e-3);
+    return {1e-9 * s, 1e-7 * s, 1e-7 * s, 1e-10, 1e-7 * s};
+  }
+};
+
+}  // namespace corbel::extrude

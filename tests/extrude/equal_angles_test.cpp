@@ -1,0 +1,137 @@
+// Equal angles = the straight skeleton (Sec. 4, Aichholzer et al.): with every edge at one
+// pitch φ, heights, face count and volume must equal CGAL's interior straight skeleton lifted
+// by tan φ, and the roof's area must be the footprint's area / cos φ.
+#include "core/scene.h"
+#include "skeleton_oracle.h"
+#include "support.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace corbel::extrude::test {
+namespace {
+
+struct Case {
+  std::string name;
+  std::vector<std::vector<Vec2>> loops;
+};
+
+void expectMatchesSkeleton(const Case& c, double pitch) {
+  SCOPED_TRACE(c.name + " at " + std::to_string(pitch / kDeg) + "°");
+  const auto spec = uniformSpec(c.loops, hipProfile(pitch));
+  const ExtrusionResult r = extrude(spec);
+  for (const auto& w : r.shell.warnings) ADD_FAILURE() << "warning: " << w;
+  const ShellMeasures m = measure(r.shell);
+  const SkeletonRoof o = cgalRoof(c.loops, pitch);
+  double footprint = 0;
+  std::size_t edges = 0;
+  for (const auto& l : c.loops) {
+    footprint += shoelace(l);
+    edges += l.size();
+  }
+  const double rel = 1e-9;
+  EXPECT_NEAR(m.maxHeight, o.maxHeight, rel * o.maxHeight);
+  EXPECT_NEAR(m.volume, o.volume, rel * o.volume);
+  EXPECT_NEAR(m.roofArea, footprint / std::cos(pitch), rel * m.roofArea);
+  EXPECT_NEAR(m.roofArea, o.roofArea, rel * o.roofArea);
+  EXPECT_EQ(m.faces - 1, o.faces) << "one face per input edge plus the base";
+  EXPECT_EQ(o.faces, edges);
+  // The shell in the Scene is closed and 2-manifold, Euler characteristic 2 − 2·holes.
+  Scene scene;
+  scene.replaceObject(1, Kind::Shell, c.name, toMeshData(r.shell, spec, ""));
+  const ValidityReport v = scene.validate(1);
+  for (const auto& p : v.problems()) ADD_FAILURE() << p;
+  EXPECT_EQ(v.euler, 2 - 2 * static_cast<long>(c.loops.size() - 1));
+  EXPECT_NEAR(v.volume, o.volume, rel * o.volume);
+}
+
+std::vector<Case> namedCases() {
+  std::vector<Case> cases;
+  cases.push_back({"rectangle", {rectangle(10, 6)}});
+  cases.push_back({"square", {rectangle(8, 8)}});
+  cases.push_back({"L", {{Vec2(0, 0), Vec2(12, 0), Vec2(12, 5), Vec2(5, 5), Vec2(5, 14), Vec2(0, 14)}}});
+  cases.push_back({"T", {{Vec2(0, 8), Vec2(6, 8), Vec2(6, 0), Vec2(11, 0), Vec2(11, 8), Vec2(17, 8), Vec2(17, 13),
+                          Vec2(0, 13)}}});
+  cases.push_back({"U", {{Vec2(0, 0), Vec2(15, 0), Vec2(15, 12), Vec2(10, 12), Vec2(10, 5), Vec2(5, 5), Vec2(5, 12),
+                          Vec2(0, 12)}}});
+  cases.push_back({"courtyard", {rectangle(20, 16), reversed(rectangle(8, 6, 6, 5))}});
+  cases.push_back({"plus", {{Vec2(4, 0), Vec2(8, 0), Vec2(8, 4), Vec2(12, 4), Vec2(12, 8), Vec2(8, 8), Vec2(8, 12),
+                             Vec2(4, 12), Vec2(4, 8), Vec2(0, 8), Vec2(0, 4), Vec2(4, 4)}}});
+  for (int n : {3, 5, 6, 7, 8, 12, 16, 24}) cases.push_back({"regular" + std::to_string(n), {regularPolygon(n, 7.0, 0.1)}});
+  return cases;
+}
+
+TEST(EqualAngles, TenBySixRectangleIsExact) {
+  const auto spec = uniformSpec({rectangle(10, 6)}, hipProfile(45 * kDeg));
+  const ShellMeasures m = measure(extrude(spec).shell);
+  EXPECT_NEAR(m.maxHeight, 3.0, 1e-12);
+  EXPECT_NEAR(m.volume, 72.0, 1e-12 * 72);  // b²(3a − b)/12 for a = 10, b = 6
+  EXPECT_NEAR(m.roofArea, 60.0 * std::sqrt(2.0), 1e-12 * 85);
+}
+
+TEST(EqualAngles, NamedShapesMatchCgalStraightSkeleton) {
+  for (const Case& c : namedCases())
+    for (double pitch : {30 * kDeg, 45 * kDeg, 60 * kDeg}) expectMatchesSkeleton(c, pitch);
+}
+
+// Star-shaped random polygons: sorted random angles, random radii — simple by construction.
+std::vector<Vec2> randomStar(std::mt19937& rng, int n) {
+  std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi), radius(3, 12);
+  std::vector<double> a(n);
+  // The origin must see every edge (no angular gap of π or more), so the polygon is simple
+  // and counter-clockwise.
+  for (bool ok = false; !ok;) {
+    for (double& x : a) x = angle(rng);
+    std::sort(a.begin(), a.end());
+    ok = a.front() + 2 * std::numbers::pi - a.back() < std::numbers::pi * 0.95;
+    for (int i = 0; i + 1 < n; ++i) ok = ok && a[i + 1] - a[i] < std::numbers::pi * 0.95;
+  }
+  std::vector<Vec2> p;
+  for (double x : a) {
+    const double r = radius(rng);
+    p.emplace_back(r * std::cos(x), r * std::sin(x));
+  }
+  return p;
+}
+
+// Random orthogonal polygons: a flat base and a random skyline of k steps (heights drawn
+// from a few values, so many events coincide as in real plans).
+std::vector<Vec2> randomSkyline(std::mt19937& rng, int steps) {
+  std::uniform_int_distribution<int> width(1, 4), height(1, 5);
+  std::vector<double> xs{0};
+  for (int i = 0; i < steps; ++i) xs.push_back(xs.back() + 2.0 * width(rng));
+  std::vector<double> hs;
+  for (int i = 0; i < steps; ++i) {
+    double h;
+    do h = 2.0 * height(rng);
+    while (!hs.empty() && h == hs.back());
+    hs.push_back(h);
+  }
+  std::vector<Vec2> p{Vec2(xs.front(), 0), Vec2(xs.back(), 0)};
+  for (int i = steps - 1; i >= 0; --i) {
+    p.emplace_back(xs[i + 1], hs[i]);
+    p.emplace_back(xs[i], hs[i]);
+  }
+  return p;
+}
+
+TEST(EqualAngles, RandomOrthogonalSkylinesMatchCgal) {
+  std::mt19937 rng(7);
+  for (int i = 0; i < 150; ++i) {
+    expectMatchesSkeleton({"skyline" + std::to_string(i), {randomSkyline(rng, 1 + i % 9)}}, (25 + i % 40) * kDeg);
+    if (HasFailure()) break;
+  }
+}
+
+TEST(EqualAngles, RandomStarPolygonsMatchCgal) {
+  std::mt19937 rng(20261122);
+  for (int i = 0; i < 200; ++i) {
+    const int n = 4 + i % 40;
+    expectMatchesSkeleton({"star" + std::to_string(i), {randomStar(rng, n)}}, (20 + i % 50) * kDeg);
+    if (HasFailure()) break;
+  }
+}
+
+}  // namespace
+}  // namespace corbel::extrude::test

@@ -1,0 +1,53 @@
+#pragma once
+// Helpers shared by the extrusion tests: building specs from plain polygons.
+#include "extrude/extrude.h"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace corbel::extrude::test {
+
+inline constexpr double kDeg = std::numbers::pi / 180.0;
+
+// One profile for every edge.
+inline ExtrusionSpec uniformSpec(const std::vector<std::vector<Vec2>>& loops, const Profile& profile) {
+  ExtrusionSpec s;
+  s.profiles.push_back(profile);
+  for (const auto& l : loops) {
+    PlanLoop pl;
+    pl.points = l;
+    pl.profile.assign(l.size(), 0);
+    s.loops.push_back(pl);
+  }
+  return s;
+}
+
+inline std::vector<Vec2> rectangle(double w, double h, double x0 = 0, double y0 = 0) {
+  return {Vec2(x0, y0), Vec2(x0 + w, y0), Vec2(x0 + w, y0 + h), Vec2(x0, y0 + h)};
+}
+
+inline std::vector<Vec2> regularPolygon(int n, double r, double phase = 0) {
+  std::vector<Vec2> p;
+  for (int i = 0; i < n; ++i) {
+    const double a = phase + 2 * std::numbers::pi * i / n;
+    p.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  return p;
+}
+
+inline double shoelace(const std::vector<Vec2>& p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2 &u = p[i], &v = p[(i + 1) % p.size()];
+    a += u[0] * v[1] - u[1] * v[0];
+  }
+  return a / 2;
+}
+
+inline std::vector<Vec2> reversed(std::vector<Vec2> p) {
+  std::reverse(p.begin(), p.end());
+  return p;
+}
+
+}  // namespace corbel::extrude::test
