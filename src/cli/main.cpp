@@ -1,13 +1,19 @@
 // corbel-cli: headless entry points (render, export, check). Thin: parse, call, report.
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
 #include "core/project_io.h"
 #include "core/scene_sync.h"
+#include "extrude/batch.h"
+#include "extrude/footprints.h"
+#include "extrude/kernel.h"
 #include "render/headless_context.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <numbers>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -29,6 +35,12 @@ usage:
                     [--no-grid] [--no-edges] [--wireframe]
   corbel-cli export PROJECT --out FILE.{obj,ply,off,glb} [--object NAME]
   corbel-cli check PROJECT        validate the file and every object's shell (JSON lines)
+  corbel-cli extrude INPUT [--pitch DEG] [--wall-height M] [--out FILE.{obj,ply,off,glb}] [--stats]
+                    [--jobs N] [--library PROJECT]
+                    INPUT: a project (its extrusion objects) or GeoJSON footprints (meters).
+                    --pitch gives every edge one roof slope (default 45 for GeoJSON) over walls
+                    --wall-height high (default 0). --stats prints one JSON line per building.
+                    GeoJSON features may name a profile of the --library project ("profile").
   corbel-cli --version | --help
 
 Exit codes: 0 success, 1 bad input or failed check, 2 bad command line.
@@ -89,7 +101,14 @@ Loaded load(const std::string& path) {
   for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << path << ": " << w << "\n";
   l.doc = std::move(p.document);
   SceneSync sync;
+  extrude::registerKernel(sync);
   sync.update(l.doc, l.scene);
+  for (const auto& [id, st] : sync.status()) {
+    const DocObject* o = l.doc.find(id);
+    const std::string name = o ? o->name : std::to_string(id);
+    for (const auto& w : st.warnings) std::cerr << "corbel-cli: warning: " << name << ": " << w << "\n";
+    if (!st.error.empty()) throw Error(path + ": object \"" + name + "\": " + st.error);
+  }
   return l;
 }
 
@@ -175,6 +194,137 @@ int cmdExport(const Args& a) {
   return 0;
 }
 
+int cmdExtrude(const Args& a) {
+  if (a.positional.size() != 1) throw UsageError("extrude: expected one INPUT (project or GeoJSON)");
+  const std::string input = a.positional[0];
+  auto number = [&](const char* opt, double def, double lo, double hi) {
+    auto it = a.options.find(opt);
+    if (it == a.options.end()) return def;
+    const auto v = parseNumbers(it->second, ',', opt);
+    if (v.size() != 1 || v[0] < lo || v[0] > hi)
+      throw UsageError(std::string(opt) + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return v[0];
+  };
+  const bool pitchGiven = a.options.count("--pitch") > 0;
+  const double pitch = number("--pitch", 45.0, 0.5, 89.5) * std::numbers::pi / 180.0;
+  const double wall = number("--wall-height", 0.0, 0.0, 1000.0);
+  const unsigned jobs = static_cast<unsigned>(number("--jobs", 0, 0, 1024));
+  std::string out;
+  if (auto it = a.options.find("--out"); it != a.options.end()) {
+    out = it->second;
+    try {
+      exportFormatFor(out);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+  }
+  const Profile uniform = extrude::wallAndRoofProfile(wall, pitch);
+  std::vector<Profile> library;
+  if (auto it = a.options.find("--library"); it != a.options.end()) {
+    for (const auto& o : loadProject(it->second).document.objects)
+      if (const auto* e = std::get_if<ExtrusionSpec>(&o.spec))
+        for (const Profile& p : e->profiles) library.push_back(p);
+  }
+
+  const std::string text = readFile(input, std::size_t(1) << 31);
+  std::vector<extrude::BatchItem> items;
+  const bool isProject = text.find("\"format\"") != std::string::npos && text.find("\"corbel\"") != std::string::npos;
+  if (isProject) {
+    const Document doc = loadProject(input).document;
+    for (const DocObject& o : doc.objects) {
+      const auto* e = std::get_if<ExtrusionSpec>(&o.spec);
+      if (!e) continue;
+      extrude::BatchItem item{o.name, *e, ""};
+      if (pitchGiven || a.options.count("--wall-height")) {
+        item.spec.profiles = {uniform};
+        for (auto& l : item.spec.loops) l.profile.assign(l.points.size(), 0);
+      }
+      items.push_back(std::move(item));
+    }
+  } else {
+    std::vector<extrude::Footprint> fps;
+    try {
+      fps = extrude::readGeoJson(text);
+    } catch (const InputError& e) {
+      throw InputError(e.where.empty() ? input : input + ": " + e.where, e.reason);
+    }
+    for (auto& fp : fps) {
+      extrude::BatchItem item;
+      item.id = fp.id;
+      item.problem = fp.problem;
+      item.spec.profiles = {uniform};
+      if (fp.properties.contains("profile") && fp.properties["profile"].is_string()) {
+        const std::string name = fp.properties["profile"].get<std::string>();
+        auto found = std::find_if(library.begin(), library.end(), [&](const Profile& p) { return p.name == name; });
+        if (found == library.end()) item.problem = "properties.profile: no profile named \"" + name + "\" in the --library";
+        else item.spec.profiles = {*found};
+      }
+      for (auto& l : fp.loops) item.spec.loops.push_back({l, std::vector<int>(l.size(), 0)});
+      items.push_back(std::move(item));
+    }
+  }
+  if (items.empty()) throw Error(input + ": no buildings to extrude");
+
+  extrude::BatchOptions options;
+  options.jobs = jobs;
+  options.keepMeshes = !out.empty();
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto results = extrude::extrudeBatch(items, options);
+  const double batchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  std::size_t failed = 0, withWarnings = 0;
+  const bool stats = a.options.count("--stats") > 0;
+  for (const auto& r : results) {
+    if (!r.ok) ++failed;
+    if (!r.warnings.empty()) ++withWarnings;
+    if (stats) {
+      nlohmann::ordered_json j;
+      j["id"] = r.id;
+      if (r.ok) {
+        j["faces"] = r.measures.faces;
+        j["mesh_faces"] = r.meshFaces;
+        j["vertices"] = r.meshVertices;
+        j["roof_area"] = r.measures.roofArea;
+        j["wall_area"] = r.measures.wallArea;
+        j["volume"] = r.measures.volume;
+        j["max_height"] = r.measures.maxHeight;
+      } else {
+        j["error"] = r.error;
+      }
+      j["watertight"] = r.watertight;
+      j["manifold"] = r.manifold;
+      j["warnings"] = r.warnings;
+      j["ms"] = r.ms;
+      std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    } else if (!r.ok) {
+      std::cerr << "corbel-cli: " << r.id << ": " << r.error << "\n";
+    }
+  }
+  double exportMs = 0;
+  if (!out.empty()) {
+    const auto e0 = std::chrono::steady_clock::now();
+    Scene scene;
+    ObjectId id = 1;
+    for (const auto& r : results)
+      if (r.ok) scene.replaceObject(id++, Kind::Shell, r.id, r.mesh);
+    exportScene(scene, out);
+    exportMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count();
+  }
+  nlohmann::ordered_json summary;
+  summary["summary"] = true;
+  summary["buildings"] = results.size();
+  summary["ok"] = results.size() - failed;
+  summary["failed"] = failed;
+  summary["with_warnings"] = withWarnings;
+  summary["extrude_ms"] = batchMs;
+  if (!out.empty()) {
+    summary["export_ms"] = exportMs;
+    summary["out"] = out;
+  }
+  (stats ? std::cout : std::cerr) << summary.dump() << "\n";
+  return failed ? 1 : 0;
+}
+
 int cmdCheck(const Args& a) {
   if (a.positional.size() != 1) throw UsageError("check: expected one PROJECT");
   Loaded l = load(a.positional[0]);
@@ -219,6 +369,9 @@ int main(int argc, char** argv) {
                                               {"--no-grid", false}, {"--no-edges", false}, {"--wireframe", false}}));
     if (cmd == "export") return cmdExport(parseArgs(argc, argv, {{"--out", true}, {"--object", true}}));
     if (cmd == "check") return cmdCheck(parseArgs(argc, argv, {}));
+    if (cmd == "extrude")
+      return cmdExtrude(parseArgs(argc, argv, {{"--pitch", true}, {"--wall-height", true}, {"--out", true},
+                                               {"--stats", false}, {"--jobs", true}, {"--library", true}}));
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";

@@ -1,6 +1,7 @@
 #pragma once
 // Document: the user's inputs, one entry per object. Kernels turn specs into geometry; the
 // Scene is derived from the Document and can always be rebuilt (see scene_sync.h).
+#include "core/extrusion_spec.h"
 #include "core/geometry.h"
 #include "core/scene_properties.h"
 
@@ -26,7 +27,7 @@ struct BoxSpec {
 };
 
 // One spec type per kernel; extrude, statics, growth and kifs add theirs.
-using Spec = std::variant<BoxSpec>;
+using Spec = std::variant<BoxSpec, ExtrusionSpec>;
 
 struct DocObject {
   ObjectId id = 0;
@@ -58,6 +59,10 @@ inline constexpr long kMaxRepeat = 10000;       // boxes per repeated spec
 inline constexpr double kMaxCoordinate = 1e7;   // meters from the origin
 inline constexpr double kMinSize = 1e-4;        // meters
 inline constexpr std::size_t kMaxNameLength = 256;
+inline constexpr std::size_t kMaxLoops = 10000;        // plan loops per extrusion
+inline constexpr std::size_t kMaxLoopPoints = 100000;  // plan corners per extrusion
+inline constexpr std::size_t kMaxProfiles = 1000;
+inline constexpr std::size_t kMaxProfilePoints = 1000;
 }  // namespace limits
 
 // Checks a spec's values (the loader and the editor share it). Returns an error text with

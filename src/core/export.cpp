@@ -49,9 +49,12 @@ void writeObj(const Scene& scene, const std::string& path, const ExportOptions& 
   std::map<std::string, Rgb> usedMaterials;
   std::vector<int> index(mesh.n_vertices(), 0);
   int next = 1;
+  const auto byObject = scene.facesByObject();
   for (const auto& [id, info] : scene.objects()) {
     if (!included(options, id)) continue;
-    const auto faces = scene.faces(id);
+    static const std::vector<PolyMesh::FaceHandle> none;
+    const auto found = byObject.find(id);
+    const auto& faces = found == byObject.end() ? none : found->second;
     obj << "o " << info.name << "\n";
     for (auto f : faces)
       for (auto v : mesh.fv_range(f))

@@ -65,11 +65,14 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
   std::map<std::string, int> materialIndex;
   const PolyMesh& mesh = scene.mesh();
 
+  const auto byObject = scene.facesByObject();
   for (const auto& [id, info] : scene.objects()) {
     if (options.include && !options.include(id)) continue;
     std::map<std::string, PrimitiveData> byMaterial;
     std::vector<Vec3> poly;
-    for (auto f : scene.faces(id)) {
+    const auto found = byObject.find(id);
+    if (found == byObject.end()) continue;
+    for (auto f : found->second) {
       const std::string& m = scene.faceMaterial(f);
       const std::string label = m.empty() ? std::string(kindName(scene.faceKind(f))) : m;
       if (!materialIndex.count(label)) {

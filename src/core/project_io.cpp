@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/json_reader.h"
 
+#include <map>
 #include <set>
 
 namespace corbel {
@@ -59,6 +60,113 @@ BoxSpec boxFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   return b;
 }
 
+ojson vec2(const Vec2& v) { return ojson::array({v[0], v[1]}); }
+
+ojson extrusionToJson(const ExtrusionSpec& e) {
+  ojson j;
+  j["material"] = e.material;
+  j["base"] = e.baseZ;
+  j["priority"] = e.priority == Priority::MaximiseVolume ? "maximise_volume" : "minimise_volume";
+  ojson loops = ojson::array();
+  bool uniform = true;
+  for (const PlanLoop& l : e.loops)
+    for (int p : l.profile) uniform = uniform && p == e.loops.front().profile.front();
+  ojson edgeProfiles = ojson::array();
+  for (const PlanLoop& l : e.loops) {
+    ojson pts = ojson::array();
+    for (const Vec2& p : l.points) pts.push_back(vec2(p));
+    loops.push_back(std::move(pts));
+    ojson names = ojson::array();
+    for (int p : l.profile) names.push_back(e.profiles[p].name);
+    edgeProfiles.push_back(std::move(names));
+  }
+  ojson plan;
+  plan["loops"] = std::move(loops);
+  if (uniform && !e.loops.empty() && !e.loops.front().profile.empty())
+    plan["profile"] = e.profiles[e.loops.front().profile.front()].name;
+  else
+    plan["edge_profiles"] = std::move(edgeProfiles);
+  j["plan"] = std::move(plan);
+  ojson profiles = ojson::array();
+  for (const Profile& p : e.profiles) {
+    ojson pj;
+    pj["name"] = p.name;
+    ojson pts = ojson::array();
+    for (const Vec2& q : p.points) pts.push_back(vec2(q));
+    pj["points"] = std::move(pts);
+    pj["tags"] = p.tags;
+    profiles.push_back(std::move(pj));
+  }
+  j["profiles"] = std::move(profiles);
+  return j;
+}
+
+ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"material", "base", "priority", "plan", "profiles"}))
+    warnings.push_back(k + ": unknown key ignored");
+  ExtrusionSpec e;
+  if (auto v = r.find("material")) e.material = v->string(limits::kMaxNameLength);
+  if (auto v = r.find("base")) e.baseZ = v->number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+  if (auto v = r.find("priority")) {
+    const std::string p = v->string(64);
+    if (p == "maximise_volume") e.priority = Priority::MaximiseVolume;
+    else if (p == "minimise_volume") e.priority = Priority::MinimiseVolume;
+    else v->fail("expected \"maximise_volume\" or \"minimise_volume\", found \"" + p + "\"");
+  }
+  std::map<std::string, int> byName;
+  for (const JsonReader& pr : r.at("profiles").array(limits::kMaxProfiles)) {
+    pr.expectObject();
+    for (auto& k : pr.unknownKeys({"name", "points", "tags"})) warnings.push_back(k + ": unknown key ignored");
+    Profile p;
+    const JsonReader nameReader = pr.at("name");
+    p.name = nameReader.string(limits::kMaxNameLength);
+    if (p.name.empty()) nameReader.fail("a profile needs a name");
+    if (!byName.emplace(p.name, static_cast<int>(e.profiles.size())).second)
+      nameReader.fail("profile name \"" + p.name + "\" is used twice");
+    for (const JsonReader& q : pr.at("points").array(limits::kMaxProfilePoints)) p.points.push_back(q.vec2());
+    if (auto t = pr.find("tags"))
+      for (const JsonReader& tag : t->array(limits::kMaxProfilePoints)) p.tags.push_back(tag.string(limits::kMaxNameLength));
+    e.profiles.push_back(std::move(p));
+  }
+  const JsonReader plan = r.at("plan");
+  plan.expectObject();
+  for (auto& k : plan.unknownKeys({"loops", "profile", "edge_profiles"})) warnings.push_back(k + ": unknown key ignored");
+  auto profileIndex = [&](const JsonReader& nameReader) {
+    const std::string n = nameReader.string(limits::kMaxNameLength);
+    auto it = byName.find(n);
+    if (it == byName.end()) nameReader.fail("no profile named \"" + n + "\" in this object's profiles");
+    return it->second;
+  };
+  int uniform = -1;
+  if (auto p = plan.find("profile")) uniform = profileIndex(*p);
+  else if (e.profiles.size() == 1) uniform = 0;
+  std::size_t totalPoints = 0;
+  for (const JsonReader& lr : plan.at("loops").array(limits::kMaxLoops)) {
+    PlanLoop loop;
+    for (const JsonReader& q : lr.array(limits::kMaxLoopPoints)) loop.points.push_back(q.vec2());
+    totalPoints += loop.points.size();
+    if (totalPoints > limits::kMaxLoopPoints) lr.fail("the plan has more than " + std::to_string(limits::kMaxLoopPoints) + " corners");
+    loop.profile.assign(loop.points.size(), uniform);
+    e.loops.push_back(std::move(loop));
+  }
+  if (auto ep = plan.find("edge_profiles")) {
+    const auto lists = ep->array(limits::kMaxLoops);
+    if (lists.size() != e.loops.size())
+      ep->fail("expected one list per loop (" + std::to_string(e.loops.size()) + "), found " + std::to_string(lists.size()));
+    for (std::size_t li = 0; li < lists.size(); ++li) {
+      const auto names = lists[li].array(limits::kMaxLoopPoints);
+      if (names.size() != e.loops[li].points.size())
+        lists[li].fail("expected one profile per edge (" + std::to_string(e.loops[li].points.size()) + "), found " +
+                       std::to_string(names.size()));
+      for (std::size_t i = 0; i < names.size(); ++i) e.loops[li].profile[i] = profileIndex(names[i]);
+    }
+  } else if (uniform < 0) {
+    plan.fail("name the edges' profile: \"profile\" for all edges or \"edge_profiles\" per edge");
+  }
+  return e;
+}
+
 }  // namespace
 
 LoadedProject parseProject(const std::string& text) {
@@ -93,13 +201,14 @@ LoadedProject parseProject(const std::string& text) {
       if (obj.name.empty()) nameReader.fail("name must not be empty");
       if (!names.insert(obj.name).second) nameReader.fail("name \"" + obj.name + "\" is used twice");
       if (auto v = o.find("visible")) obj.visible = v->boolean();
-      static const std::set<std::string> specKeys = {"box"};
+      static const std::set<std::string> specKeys = {"box", "extrusion"};
       int specCount = 0;
       for (const auto& key : specKeys) specCount += o.find(key) ? 1 : 0;
-      if (specCount == 0) o.fail("no spec: expected one of \"box\"");
+      if (specCount == 0) o.fail("no spec: expected one of \"box\", \"extrusion\"");
       if (specCount > 1) o.fail("more than one spec: an object has exactly one");
-      obj.spec = boxFromJson(o.at("box"), out.warnings);
-      for (auto& k : o.unknownKeys({"id", "name", "visible", "box"}))
+      if (auto b = o.find("box")) obj.spec = boxFromJson(*b, out.warnings);
+      else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
+      for (auto& k : o.unknownKeys({"id", "name", "visible", "box", "extrusion"}))
         out.warnings.push_back(k + ": unknown key ignored");
       doc.objects.push_back(std::move(obj));
     }
@@ -127,7 +236,8 @@ std::string serializeProject(const Document& doc) {
     j["id"] = o.id;
     j["name"] = o.name;
     j["visible"] = o.visible;
-    std::visit([&](const BoxSpec& b) { j["box"] = boxToJson(b); }, o.spec);
+    if (const auto* b = std::get_if<BoxSpec>(&o.spec)) j["box"] = boxToJson(*b);
+    else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     objects.push_back(std::move(j));
   }
   root["objects"] = std::move(objects);

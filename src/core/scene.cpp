@@ -108,6 +108,12 @@ std::vector<PolyMesh::FaceHandle> Scene::faces(ObjectId id) const {
   return out;
 }
 
+std::map<ObjectId, std::vector<PolyMesh::FaceHandle>> Scene::facesByObject() const {
+  std::map<ObjectId, std::vector<PolyMesh::FaceHandle>> out;
+  for (auto f : mesh_.faces()) out[faceObject(f)].push_back(f);
+  return out;
+}
+
 void Scene::collectGarbage() { mesh_.garbage_collection(); }
 
 void Scene::removeObject(ObjectId id) {
@@ -124,6 +130,103 @@ void Scene::removeObject(ObjectId id) {
   touch();
 }
 
+namespace {
+
+// Which faces of a soup can go into a half-edge mesh. OpenMesh refuses some non-manifold
+// faces but asserts (aborts) on others, so the soup is checked here first: every directed
+// edge used once, every undirected edge by at most two faces, and the faces around each
+// vertex forming one fan. Returns the accepted faces in an order that grows each connected
+// piece across shared edges (so OpenMesh never has to relink boundary gaps blindly).
+std::vector<int> manifoldFaceOrder(const MeshData& data, std::size_t& rejected) {
+  const int nf = static_cast<int>(data.faces.size());
+  const int nv = static_cast<int>(data.points.size());
+  std::vector<char> ok(nf, 1);
+  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+  std::unordered_map<std::uint64_t, int> directed;   // (u, v) → face
+  std::unordered_map<std::uint64_t, int> undirected; // (min, max) → use count
+  for (int f = 0; f < nf; ++f) {
+    const auto& loop = data.faces[f];
+    bool good = loop.size() >= 3;
+    for (std::size_t i = 0; good && i < loop.size(); ++i) {
+      const int u = loop[i], v = loop[(i + 1) % loop.size()];
+      if (u < 0 || v < 0 || u >= nv || v >= nv || u == v) good = false;
+      for (std::size_t j = i + 1; good && j < loop.size(); ++j) good = loop[j] != u;  // a vertex once per face
+    }
+    for (std::size_t i = 0; good && i < loop.size(); ++i) {
+      const int u = loop[i], v = loop[(i + 1) % loop.size()];
+      if (directed.count(key(u, v))) good = false;
+      const auto un = undirected.find(key(std::min(u, v), std::max(u, v)));
+      if (un != undirected.end() && un->second >= 2) good = false;
+    }
+    if (!good) {
+      ok[f] = 0;
+      continue;
+    }
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const int u = loop[i], v = loop[(i + 1) % loop.size()];
+      directed[key(u, v)] = f;
+      ++undirected[key(std::min(u, v), std::max(u, v))];
+    }
+  }
+  // One fan per vertex: wedges (corners of faces at the vertex) joined across shared edges.
+  std::vector<std::vector<std::pair<int, int>>> wedges(nv);  // vertex → (face, corner index)
+  for (int f = 0; f < nf; ++f)
+    if (ok[f])
+      for (int i = 0; i < static_cast<int>(data.faces[f].size()); ++i) wedges[data.faces[f][i]].push_back({f, i});
+  for (int v = 0; v < nv; ++v) {
+    auto& w = wedges[v];
+    if (w.size() < 2) continue;
+    std::vector<int> parent(w.size());
+    for (std::size_t i = 0; i < w.size(); ++i) parent[i] = static_cast<int>(i);
+    auto find = [&](int x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    std::unordered_map<int, int> byNeighbour;  // other end of an edge at v → wedge
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      const auto& loop = data.faces[w[i].first];
+      const int n = static_cast<int>(loop.size());
+      for (int other : {loop[(w[i].second + 1) % n], loop[(w[i].second + n - 1) % n]}) {
+        auto [it, fresh] = byNeighbour.try_emplace(other, static_cast<int>(i));
+        if (!fresh) parent[find(static_cast<int>(i))] = find(it->second);
+      }
+    }
+    std::unordered_map<int, int> size;
+    for (std::size_t i = 0; i < w.size(); ++i) ++size[find(static_cast<int>(i))];
+    int best = -1;
+    for (const auto& [root, count] : size)
+      if (best < 0 || count > size[best] || (count == size[best] && root < best)) best = root;
+    for (std::size_t i = 0; i < w.size(); ++i)
+      if (find(static_cast<int>(i)) != best) ok[w[i].first] = 0;
+  }
+  // Growth order across shared edges.
+  std::vector<int> order;
+  std::vector<char> queued(nf, 0);
+  for (int seed = 0; seed < nf; ++seed) {
+    if (!ok[seed] || queued[seed]) continue;
+    queued[seed] = 1;
+    std::size_t head = order.size();
+    order.push_back(seed);
+    while (head < order.size()) {
+      const int f = order[head++];
+      const auto& loop = data.faces[f];
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const int u = loop[i], v = loop[(i + 1) % loop.size()];
+        const auto it = directed.find(key(v, u));
+        if (it != directed.end() && ok[it->second] && !queued[it->second]) {
+          queued[it->second] = 1;
+          order.push_back(it->second);
+        }
+      }
+    }
+  }
+  rejected = 0;
+  for (int f = 0; f < nf; ++f) rejected += ok[f] ? 0 : 1;
+  return order;
+}
+
+}  // namespace
+
 void Scene::replaceObject(ObjectId id, Kind kind, const std::string& name, const MeshData& data) {
   removeObject(id);
   std::vector<PolyMesh::VertexHandle> vh;
@@ -137,27 +240,20 @@ void Scene::replaceObject(ObjectId id, Kind kind, const std::string& name, const
   ObjectInfo info;
   info.kind = kind;
   info.name = name;
+  const std::vector<int> order = manifoldFaceOrder(data, info.rejected_faces);
   std::vector<PolyMesh::VertexHandle> loop;
-  for (size_t f = 0; f < data.faces.size(); ++f) {
+  for (int f : order) {
     loop.clear();
-    bool valid = data.faces[f].size() >= 3;
-    for (int i : data.faces[f]) {
-      if (i < 0 || static_cast<size_t>(i) >= vh.size()) {
-        valid = false;
-        break;
-      }
-      loop.push_back(vh[i]);
-    }
-    PolyMesh::FaceHandle fh;
-    if (valid) fh = mesh_.add_face(loop);
+    for (int i : data.faces[f]) loop.push_back(vh[i]);
+    const PolyMesh::FaceHandle fh = mesh_.add_face(loop);
     if (!fh.is_valid()) {
       ++info.rejected_faces;
       continue;
     }
     mesh_.property(object_, fh) = static_cast<std::int32_t>(id);
     mesh_.property(kind_, fh) = static_cast<std::uint8_t>(kind);
-    const int t = f < data.faceTag.size() ? data.faceTag[f] : 0;
-    const int m = f < data.faceMaterial.size() ? data.faceMaterial[f] : 0;
+    const int t = static_cast<size_t>(f) < data.faceTag.size() ? data.faceTag[f] : 0;
+    const int m = static_cast<size_t>(f) < data.faceMaterial.size() ? data.faceMaterial[f] : 0;
     mesh_.property(tag_, fh) = (t >= 0 && static_cast<size_t>(t) < tagMap.size()) ? tagMap[t] : 0;
     mesh_.property(material_, fh) = (m >= 0 && static_cast<size_t>(m) < materialMap.size()) ? materialMap[m] : 0;
   }

@@ -70,7 +70,9 @@ class Scene {
 
   bool hasObject(ObjectId id) const { return objects_.count(id) != 0; }
   const std::map<ObjectId, ObjectInfo>& objects() const { return objects_; }
-  std::vector<PolyMesh::FaceHandle> faces(ObjectId id) const;
+  std::vector<PolyMesh::FaceHandle> faces(ObjectId id) const;  // one scan of the mesh
+  // Every object's faces in one scan (exporters of large scenes).
+  std::map<ObjectId, std::vector<PolyMesh::FaceHandle>> facesByObject() const;
 
   BBox bounds(ObjectId id) const;
   BBox bounds() const;

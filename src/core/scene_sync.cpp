@@ -1,5 +1,6 @@
 #include "core/scene_sync.h"
 
+#include "core/error.h"
 #include "core/massing.h"
 
 #include <ranges>
@@ -7,16 +8,18 @@
 
 namespace corbel {
 
-MeshData buildObject(const DocObject& object, Kind* kind) {
-  return std::visit(
-      [&](const auto& spec) -> MeshData {
-        using T = std::decay_t<decltype(spec)>;
-        if constexpr (std::is_same_v<T, BoxSpec>) {
-          *kind = Kind::Mass;
-          return buildBoxes(spec);
-        }
-      },
-      object.spec);
+SceneSync::SceneSync() : builders_(std::variant_size_v<Spec>) {
+  setBuilder<BoxSpec>([](const DocObject& o) {
+    BuildResult r;
+    r.kind = Kind::Mass;
+    r.mesh = buildBoxes(std::get<BoxSpec>(o.spec));
+    return r;
+  });
+}
+
+void SceneSync::setBuilder(std::size_t specIndex, Builder builder) {
+  if (specIndex < builders_.size()) builders_[specIndex] = std::move(builder);
+  built_.clear();
 }
 
 std::size_t SceneSync::update(const Document& doc, Scene& scene, Progress* progress) {
@@ -28,17 +31,31 @@ std::size_t SceneSync::update(const Document& doc, Scene& scene, Progress* progr
   for (ObjectId id : gone) {
     scene.removeObject(id);
     built_.erase(id);
+    status_.erase(id);
   }
   std::size_t rebuilt = 0, done = 0;
   for (const DocObject& o : doc.objects) {
     if (progress && progress->cancelled()) break;
     auto it = built_.find(o.id);
-    if (it == built_.end() || !(it->second.spec == o.spec) || !scene.hasObject(o.id)) {
-      Kind kind = Kind::Mass;
-      MeshData mesh = buildObject(o, &kind);
-      scene.replaceObject(o.id, kind, o.name, mesh);
+    const bool failedBefore = status_.count(o.id) && !status_[o.id].error.empty();
+    const bool stale = it == built_.end() || !(it->second.spec == o.spec) || (!scene.hasObject(o.id) && !failedBefore);
+    if (stale) {
       built_[o.id] = o;
-      ++rebuilt;
+      Status& st = status_[o.id];
+      const Builder& b = builders_[o.spec.index()];
+      try {
+        if (!b) throw Error("this build of corbel has no kernel for this kind of object");
+        BuildResult r = b(o);
+        scene.replaceObject(o.id, r.kind, o.name, r.mesh);
+        st.error.clear();
+        st.warnings = std::move(r.warnings);
+        ++rebuilt;
+      } catch (const Cancelled&) {
+        built_.erase(o.id);
+        throw;
+      } catch (const std::exception& e) {
+        st.error = e.what();  // the last good geometry (if any) stays in the Scene
+      }
     } else if (it->second.name != o.name) {
       scene.setObjectName(o.id, o.name);
       it->second.name = o.name;

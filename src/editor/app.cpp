@@ -4,6 +4,7 @@
 #include "core/export.h"
 #include "core/materials.h"
 #include "core/project_io.h"
+#include "extrude/kernel.h"
 #include "render/gl.h"
 #include "render/image.h"
 
@@ -32,6 +33,7 @@ App::App(GLFWwindow* window, EditorOptions options)
       options_(std::move(options)),
       recovery_(stateDirOr(options_.stateDir)),
       recent_(stateDirOr(options_.stateDir) + "/recent.json") {
+  extrude::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());
   registerActions();
@@ -74,6 +76,18 @@ void App::syncScene() {
   if (history_.stateId() == syncedState_) return;
   sync_.update(history_.current(), scene_);
   syncedState_ = history_.stateId();
+  // Kernel messages go to the log once per change; a failed object keeps its last good shell.
+  for (const auto& [id, st] : sync_.status()) {
+    const DocObject* o = history_.current().find(id);
+    const std::string name = o ? o->name : std::to_string(id);
+    std::string text = st.error.empty() ? std::string() : name + ": " + st.error;
+    for (const auto& w : st.warnings) text += (text.empty() ? name + ": " : "; ") + w;
+    auto& last = reported_[id];
+    if (text != last) {
+      if (!text.empty()) log(text, !st.error.empty());
+      last = text;
+    }
+  }
   if (selected_ && !history_.current().find(*selected_)) selected_.reset();
 }
 
@@ -296,7 +310,12 @@ void App::registerActions() {
          Document d = doc();
          const DocObject* o = d.find(*selected_);
          DocObject copy = *o;
-         std::visit([](BoxSpec& b) { b.origin[0] += b.size[0] + 2.0; }, copy.spec);
+         const BBox box = scene_.bounds(copy.id);
+         const double shift = box.empty() ? 10.0 : box.size()[0] + 2.0;
+         if (auto* b = std::get_if<BoxSpec>(&copy.spec)) b->origin[0] += shift;
+         if (auto* e = std::get_if<ExtrusionSpec>(&copy.spec))
+           for (auto& loop : e->loops)
+             for (auto& p : loop.points) p[0] += shift;
          const ObjectId id = d.add(o->name, copy.spec);
          commit(std::move(d), "Duplicate " + copy.name);
          selected_ = id;
@@ -433,8 +452,8 @@ void App::drawObjectProperties(const DocObject& object) {
       edited("name", "name");
     }
   }
-  std::visit(
-      [&](BoxSpec& b) {
+  if (auto* bp = std::get_if<BoxSpec>(&o->spec)) {
+        BoxSpec& b = *bp;
         ImGui::Separator();
   ImGui::TextDisabled("Box");
         float origin[3] = {float(b.origin[0]), float(b.origin[1]), float(b.origin[2])};
@@ -488,8 +507,35 @@ void App::drawObjectProperties(const DocObject& object) {
             changed = false;
           }
         }
-      },
-      o->spec);
+  } else if (auto* e = std::get_if<ExtrusionSpec>(&o->spec)) {
+    ImGui::Separator();
+    ImGui::TextDisabled("Procedural extrusion");
+    std::size_t corners = 0;
+    for (const auto& l : e->loops) corners += l.points.size();
+    ImGui::Text("%zu loop%s, %zu corners, %zu profile%s", e->loops.size(), e->loops.size() == 1 ? "" : "s", corners,
+                e->profiles.size(), e->profiles.size() == 1 ? "" : "s");
+    if (ImGui::BeginCombo("Material", e->material.c_str())) {
+      for (const auto& m : builtinMaterials())
+        if (ImGui::Selectable(std::string(m.name).c_str(), e->material == m.name)) {
+          e->material = m.name;
+          edited("material", "material");
+        }
+      ImGui::EndCombo();
+    }
+    float base = float(e->baseZ);
+    if (ImGui::DragFloat("Base height (m)", &base, 0.05f, -1e4f, 1e4f, "%.2f")) {
+      e->baseZ = base;
+      edited("base height", "base");
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+    int priority = e->priority == Priority::MaximiseVolume ? 0 : 1;
+    if (ImGui::Combo("Ambiguity", &priority, "maximise volume\0minimise volume\0")) {
+      e->priority = priority == 0 ? Priority::MaximiseVolume : Priority::MinimiseVolume;
+      edited("ambiguity priority", "priority");
+    }
+    for (const Profile& p : e->profiles) ImGui::BulletText("%s: %zu segment%s", p.name.c_str(), p.points.size() - 1,
+                                                            p.points.size() == 2 ? "" : "s");
+  }
   if (changed) commit(std::move(d), label, key + field);
 
   ImGui::Separator();

@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <deque>
+#include <map>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -94,6 +95,7 @@ class App {
     bool error;
   };
   std::deque<LogLine> log_;
+  std::map<ObjectId, std::string> reported_;  // last kernel message logged per object
 
   std::unique_ptr<BackgroundJob> job_;
   std::function<void()> jobDone_;

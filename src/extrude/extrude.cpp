@@ -90,6 +90,7 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress) {
   result.scale = box.diagonal();
 
   SweepInput in;
+  in.baseZ = spec.baseZ;
   for (std::size_t li = 0; li < spec.loops.size(); ++li) {
     const PlanLoop& l = spec.loops[li];
     std::vector<SweepEdge> loop;
@@ -100,7 +101,7 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress) {
       e.sourceEdge = static_cast<int>(i);
       const Profile& p = spec.profiles[l.profile[i]];
       for (std::size_t s = 0; s + 1 < p.points.size(); ++s)
-        e.steps.push_back({p.points[s][1] - p.points[0][1], segmentAngle(p.points[s], p.points[s + 1]), static_cast<int>(s)});
+        e.steps.push_back({spec.baseZ + p.points[s][1] - p.points[0][1], segmentAngle(p.points[s], p.points[s + 1]), static_cast<int>(s)});
       // Sec. 4.8: by default the edge with the lowest angle wins (volume maximising).
       const double first = e.steps.front().angle;
       e.priority = spec.priority == Priority::MaximiseVolume ? -first : first;

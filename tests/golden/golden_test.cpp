@@ -2,6 +2,7 @@
 // tests/golden/<name>.png. On a mismatch the actual, expected and diff images are written to
 // <build>/tests/golden/out/. Regenerate after an intended change with scripts/update-goldens
 // (CORBEL_UPDATE_GOLDENS=1), then look at the new images before committing them.
+#include "extrude/kernel.h"
 #include "golden_support.h"
 
 #include <gtest/gtest.h>
@@ -30,7 +31,10 @@ std::vector<std::string> examples() {
 render::Image renderExample(const std::string& name) {
   const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + name + ".corbel");
   Scene scene;
-  SceneSync().update(p.document, scene);
+  SceneSync sync;
+  extrude::registerKernel(sync);
+  sync.update(p.document, scene);
+  for (const auto& [id, st] : sync.status()) EXPECT_EQ(st.error, "") << name;
   render::RenderSettings settings;
   settings.visible = [&](ObjectId id) { return p.document.find(id)->visible; };
   BBox box;

@@ -336,7 +336,7 @@ TEST(ProjectIoErrors, MissingFields) {
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "box": {}}]})", "objects[0].name",
                "missing");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A"}]})", "objects[0]",
-               R"(no spec: expected one of "box")");
+               R"(no spec: expected one of "box", "extrusion")");
 }
 
 TEST(ProjectIoErrors, NonFiniteNumbers) {
@@ -478,3 +478,66 @@ TEST(ProjectIo, SaveProjectWritesTheSerialisation) {
 }
 
 }  // namespace
+
+namespace {
+
+corbel::ExtrusionSpec sampleExtrusion() {
+  corbel::ExtrusionSpec e;
+  e.material = "brick";
+  e.baseZ = 0.5;
+  e.priority = corbel::Priority::MinimiseVolume;
+  corbel::Profile hip;
+  hip.name = "hip";
+  hip.points = {{0, 0}, {3, 3}};
+  hip.tags = {"roof"};
+  corbel::Profile wall;
+  wall.name = "wall+gable";
+  wall.points = {{0, 0}, {0, 2.5}, {0.1, 6}};
+  wall.tags = {"wall", ""};
+  e.profiles = {hip, wall};
+  corbel::PlanLoop outer;
+  outer.points = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  outer.profile = {0, 1, 0, 1};
+  corbel::PlanLoop hole;
+  hole.points = {{2, 2}, {2, 4}, {4, 4}, {4, 2}};
+  hole.profile = {0, 0, 0, 0};
+  e.loops = {outer, hole};
+  return e;
+}
+
+std::string withExtrusion(const std::string& body) {
+  return R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A", "extrusion": {)" + body + "}}]}";
+}
+
+}  // namespace
+
+// Extrusion specs survive save → load exactly; a uniform plan is written with one "profile".
+TEST(ProjectIo, ExtrusionSpecsRoundTrip) {
+  Document d;
+  d.add("house", sampleExtrusion());
+  corbel::ExtrusionSpec uniform = sampleExtrusion();
+  for (auto& l : uniform.loops) l.profile.assign(l.points.size(), 1);
+  d.add("uniform", uniform);
+  const std::string text = corbel::serializeProject(d);
+  const corbel::LoadedProject back = corbel::parseProject(text);
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document), text);
+  EXPECT_NE(text.find(R"("profile": "wall+gable")"), std::string::npos);
+  EXPECT_NE(text.find(R"("edge_profiles")"), std::string::npos);
+}
+
+TEST(ProjectIoErrors, ExtrusionFaultsNameTheirPath) {
+  const std::string profiles = R"("profiles": [{"name": "hip", "points": [[0, 0], [1, 1]]}])";
+  EXPECT_FAULT(withExtrusion(profiles + R"(, "plan": {"loops": [[[0, 0], [1, 0], [1, 1], [0, "1"]]]})"),
+               "objects[0].extrusion.plan.loops[0][3]", "expected [x, y] numbers");
+  EXPECT_FAULT(withExtrusion(profiles + R"(, "plan": {"loops": [[[0, 0], [1, 0], [1, 1]]], "profile": "gable"})"),
+               "objects[0].extrusion.plan.profile", R"(no profile named "gable" in this object's profiles)");
+  EXPECT_FAULT(withExtrusion(profiles + R"(, "plan": {"loops": [[[0, 0], [1, 0], [1, 1]]], "edge_profiles": [["hip"]]})"),
+               "objects[0].extrusion.plan.edge_profiles[0]", "expected one profile per edge (3), found 1");
+  EXPECT_FAULT(withExtrusion(R"("plan": {"loops": []}, "profiles": [{"name": "a", "points": []}, {"name": "a", "points": []}])"),
+               "objects[0].extrusion.profiles[1].name", R"(profile name "a" is used twice)");
+  EXPECT_FAULT(withExtrusion(profiles + R"(, "plan": {"loops": []}, "priority": "tallest")"),
+               "objects[0].extrusion.priority", R"(expected "maximise_volume" or "minimise_volume", found "tallest")");
+  EXPECT_FAULT(withExtrusion(profiles), "objects[0].extrusion.plan", "missing");
+}

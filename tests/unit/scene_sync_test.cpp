@@ -1,5 +1,6 @@
 // scene_sync.h: SceneSync rebuilds exactly the objects whose spec changed, and the Scene
 // always mirrors the Document afterwards.
+#include "core/error.h"
 #include "core/scene_sync.h"
 
 #include "core/massing.h"
@@ -219,21 +220,53 @@ TEST(SceneSync, ProgressAndCancellation) {
   expectMirrors(doc, scene);
 }
 
-TEST(SceneSync, BuildObjectRunsTheBoxKernel) {
-  corbel::DocObject o;
-  o.id = 4;
-  o.name = "x";
+TEST(SceneSync, TheBuiltInBoxKernelGivesTheBoxesGeometry) {
+  corbel::Document d;
   BoxSpec b = box(1, 2, 3, 4, 5, "timber");
   b.repeat_x = 2;
   b.spacing_x = 6;
-  o.spec = b;
-  corbel::Kind kind = corbel::Kind::Site;
-  const corbel::MeshData m = corbel::buildObject(o, &kind);
-  EXPECT_EQ(kind, corbel::Kind::Mass);
+  const corbel::ObjectId id = d.add("x", b);
+  corbel::Scene scene;
+  SceneSync sync;
+  sync.update(d, scene);
+  EXPECT_EQ(scene.objects().at(id).kind, corbel::Kind::Mass);
   const corbel::MeshData direct = corbel::buildBoxes(b);
-  EXPECT_EQ(m.faces, direct.faces);
-  ASSERT_EQ(m.points.size(), direct.points.size());
-  for (std::size_t i = 0; i < m.points.size(); ++i) EXPECT_EQ(m.points[i], direct.points[i]);
+  EXPECT_EQ(scene.faces(id).size(), direct.faces.size());
+  EXPECT_EQ(scene.validate(id).vertices, direct.points.size());
+}
+
+// A registered kernel builds its spec type; a kernel that fails keeps the object's last good
+// geometry in the Scene and reports the error; fixing the spec clears it.
+TEST(SceneSync, KernelFailureKeepsTheLastGoodGeometryAndIsReported) {
+  corbel::Document d;
+  corbel::ExtrusionSpec e;
+  e.material = "good";
+  const corbel::ObjectId id = d.add("shell", e);
+  corbel::Scene scene;
+  SceneSync sync;
+  int calls = 0;
+  sync.setBuilder<corbel::ExtrusionSpec>([&](const corbel::DocObject& o) {
+    ++calls;
+    const auto& spec = std::get<corbel::ExtrusionSpec>(o.spec);
+    if (spec.material == "bad") throw corbel::Error("the plan intersects itself");
+    corbel::BuildResult r;
+    r.kind = corbel::Kind::Shell;
+    r.mesh = corbel::buildBoxes(box(0, 0, 0, 2, 2, "plaster"));
+    r.warnings = {"a note"};
+    return r;
+  });
+  EXPECT_EQ(sync.update(d, scene), 1u);
+  EXPECT_EQ(scene.faces(id).size(), 6u);
+  EXPECT_EQ(sync.status().at(id).warnings, std::vector<std::string>{"a note"});
+  std::get<corbel::ExtrusionSpec>(d.find(id)->spec).material = "bad";
+  EXPECT_EQ(sync.update(d, scene), 0u);
+  EXPECT_EQ(sync.status().at(id).error, "the plan intersects itself");
+  EXPECT_EQ(scene.faces(id).size(), 6u) << "the last good shell stays";
+  EXPECT_EQ(sync.update(d, scene), 0u);
+  EXPECT_EQ(calls, 2) << "a failing spec is not re-run until it changes";
+  std::get<corbel::ExtrusionSpec>(d.find(id)->spec).material = "good again";
+  EXPECT_EQ(sync.update(d, scene), 1u);
+  EXPECT_EQ(sync.status().at(id).error, "");
 }
 
 }  // namespace
