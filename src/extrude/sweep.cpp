@@ -437,6 +437,23 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     if (!closed) return false;
   }
 
+  // The event point: the least-squares meeting point of all involved lines at this height
+  // (closer to every plane than the mean of the arriving corners), unless they are too close
+  // to parallel to pin it down.
+  {
+    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
+    for (int ei : involved) {
+      const Edge& e = edges_[ei];
+      const double r = e.c + e.k * z;
+      a11 += e.n[0] * e.n[0], a12 += e.n[0] * e.n[1], a22 += e.n[1] * e.n[1];
+      b1 += e.n[0] * r, b2 += e.n[1] * r;
+    }
+    const double det = a11 * a22 - a12 * a12;
+    if (det > 1e-6 * (a11 + a22) * (a11 + a22)) {
+      const Vec2 ls((a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det);
+      if ((ls - l).norm() <= tol_.cluster) l = ls;
+    }
+  }
   ++events_;
   const int vl = addVertex(l, z);
   SWEEP_TRACE("event %zu at (%g, %g, %g): %zu corners, %zu edges, %zu splits -> v%d", events_, l[0], l[1], z, K.size(),
@@ -507,6 +524,11 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   std::vector<int> newCorners;
   if (chains.size() == 1) {
     newCorners.push_back(newCorner(chains[0].in, chains[0].out, vl, l, z));
+  } else if (chains.size() == 2) {
+    // With two chains, linking each to itself would undo the event: they must cross over.
+    // (Deciding this by angles fails when the chains are nearly antiparallel.)
+    newCorners.push_back(newCorner(chains[0].in, chains[1].out, vl, l, z));
+    newCorners.push_back(newCorner(chains[1].in, chains[0].out, vl, l, z));
   } else {
     std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) {
       return a.angle != b.angle ? a.angle < b.angle : a.incoming < b.incoming;

@@ -20,7 +20,7 @@ struct Tolerances {
 
   static Tolerances forScale(double scale) {
     const double s = std::max(scale, 1e-3);
-    return {1e-9 * s, 1e-7 * s, 1e-7 * s, 1e-10, 1e-7 * s};
+    return {1e-9 * s, 1e-8 * s, 1e-8 * s, 1e-10, 1e-7 * s};
   }
 };
 

@@ -1,0 +1,133 @@
+// Real footprints (../shared/data/footprints: 10,524 OpenStreetMap buildings from Kathmandu
+// and Moosburg). Every building must give a closed 2-manifold shell whose roof projects onto
+// the footprint exactly once: Σ_faces area·cos φ = footprint area (for one pitch φ this is
+// roof area = footprint area / cos φ). Buildings known to fail are listed, with the reason,
+// in tests/data/extrude/known_failures.txt: the test fails when any other building fails,
+// and when a listed one starts to pass (so the list only shrinks).
+#include "extrude/batch.h"
+#include "extrude/footprints.h"
+#include "support.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <fstream>
+#include <random>
+#include <set>
+
+namespace corbel::extrude::test {
+namespace {
+
+std::vector<Footprint> allFootprints() {
+  std::vector<Footprint> all;
+  for (const char* name : {"kathmandu_np.geojson", "moosburg_de.geojson"}) {
+    const std::string path = std::string(CORBEL_FOOTPRINTS) + "/" + name;
+    if (!std::filesystem::exists(path)) throw std::runtime_error("missing test data: " + path);
+    auto fps = readGeoJsonFile(path);
+    all.insert(all.end(), fps.begin(), fps.end());
+  }
+  return all;
+}
+
+std::set<std::string> knownFailures(const std::string& label) {
+  std::set<std::string> out;
+  std::ifstream in(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/known_failures.txt");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ss(line);
+    std::string l, id;
+    ss >> l >> id;
+    if (l == label) out.insert(id);
+  }
+  return out;
+}
+
+double projectedRoofArea(const SweepOutput& s) {
+  double sum = 0;
+  for (const ShellFace& f : s.faces)
+    if (!f.base) sum += faceArea(s, f) * f.normal[2];  // area × cos φ
+  return sum;
+}
+
+void runAll(const std::string& label, const std::function<ExtrusionSpec(const Footprint&)>& specFor) {
+  const auto fps = allFootprints();
+  ASSERT_EQ(fps.size(), 10524u);
+  std::vector<BatchItem> items;
+  for (const auto& fp : fps) items.push_back({fp.id, specFor(fp), fp.problem});
+  BatchOptions options;
+  const auto results = extrudeBatch(items, options);
+  const auto known = knownFailures(label);
+  std::size_t failed = 0, identityChecked = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& r = results[i];
+    if (!r.ok) {
+      ++failed;
+      if (!known.count(r.id)) ADD_FAILURE() << label << ": " << r.id << " failed: " << r.error;
+      continue;
+    }
+    if (known.count(r.id)) ADD_FAILURE() << label << ": " << r.id << " now passes: remove it from known_failures.txt";
+    // The projection identity, recomputed from the shell.
+    const ExtrusionResult er = extrude(items[i].spec);
+    double footprint = 0;
+    for (const auto& l : items[i].spec.loops) footprint += shoelace(l.points);
+    const double rel = std::abs(projectedRoofArea(er.shell) - footprint) / footprint;
+    worst = std::max(worst, rel);
+    ++identityChecked;
+    EXPECT_LT(rel, 1e-9) << label << ": " << r.id;
+    EXPECT_GT(r.measures.volume, 0) << label << ": " << r.id;
+  }
+  std::cout << label << ": " << results.size() << " buildings, " << failed << " failed (" << known.size()
+            << " known), projection identity worst relative error " << worst << " over " << identityChecked << "\n";
+}
+
+TEST(RealFootprints, HipRoofsAt45Degrees) {
+  runAll("hip45", [](const Footprint& fp) {
+    ExtrusionSpec s;
+    s.profiles = {hipProfile(45 * kDeg)};
+    for (const auto& l : fp.loops) s.loops.push_back({l, std::vector<int>(l.size(), 0)});
+    return s;
+  });
+}
+
+TEST(RealFootprints, MixedPerEdgeAnglesOverWalls) {
+  runAll("mixed", [](const Footprint& fp) {
+    ExtrusionSpec s;
+    for (int a = 20; a <= 70; a += 10) s.profiles.push_back(wallAndRoofProfile(3.0, a * kDeg));
+    std::seed_seq seq(fp.id.begin(), fp.id.end());
+    std::mt19937 rng(seq);
+    std::uniform_int_distribution<int> pick(0, static_cast<int>(s.profiles.size()) - 1);
+    for (const auto& l : fp.loops) {
+      PlanLoop pl{l, {}};
+      for (std::size_t i = 0; i < l.size(); ++i) pl.profile.push_back(pick(rng));
+      s.loops.push_back(pl);
+    }
+    return s;
+  });
+}
+
+// Footprints that once failed (tests/data/extrude): two chains that are nearly antiparallel
+// must still cross over at a split (w387700951), and a split close to a corner must not
+// reconnect a chain to itself (w180878574).
+TEST(RegressionCases, OnceFailingFootprintsGiveClosedShells) {
+  for (const char* name : {"moosburg_w387700951.geojson", "moosburg_w180878574.geojson"}) {
+    SCOPED_TRACE(name);
+    const auto fps = readGeoJsonFile(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/" + name);
+    ASSERT_EQ(fps.size(), 1u);
+    ExtrusionSpec s;
+    s.profiles = {hipProfile(45 * kDeg)};
+    for (const auto& l : fps[0].loops) s.loops.push_back({l, std::vector<int>(l.size(), 0)});
+    const auto results = extrudeBatch({{fps[0].id, s, ""}}, {});
+    EXPECT_TRUE(results[0].ok) << results[0].error;
+    EXPECT_TRUE(results[0].warnings.empty());
+    const ExtrusionResult er = extrude(s);
+    const double footprint = shoelace(fps[0].loops[0]);
+    EXPECT_NEAR(projectedRoofArea(er.shell), footprint, 1e-9 * footprint);
+  }
+}
+
+}  // namespace
+}  // namespace corbel::extrude::test
