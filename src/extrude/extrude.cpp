@@ -42,9 +42,10 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
         return seg + ": the segment is too close to horizontal (" + std::to_string(theta * 180 / std::numbers::pi) +
                "°)";
     }
+    // The last segment may stand vertical (a gable end, closed by its neighbours) but not
+    // lean outward: such an edge would grow for ever.
     const double last = segmentAngle(p.points[p.points.size() - 2], p.points.back());
-    if (!(last > 1e-9))
-      return at + ": the last segment must lean inward (angle > 0) so the roof closes";
+    if (last < 0) return at + ": the last segment leans outward (angle < 0), so the roof could never close";
   }
   std::vector<std::vector<Vec2>> loops;
   double scale = 0;
@@ -67,6 +68,15 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
     loops.push_back(l.points);
   }
   scale = box.diagonal();
+  for (std::size_t li = 0; li < spec.loops.size(); ++li) {
+    bool closes = false;
+    for (int pi : spec.loops[li].profile) {
+      const auto& pts = spec.profiles[pi].points;
+      closes = closes || segmentAngle(pts[pts.size() - 2], pts.back()) > 1e-9;
+    }
+    if (!closes)
+      return "loops[" + std::to_string(li) + "]: no edge's profile ends leaning inward, so the roof cannot close";
+  }
   const Tolerances tol = Tolerances::forScale(scale);
   for (std::size_t li = 0; li < loops.size(); ++li)
     for (std::size_t i = 0; i < loops[li].size(); ++i)

@@ -1,0 +1,87 @@
+// Bad plans and profiles get an InputError naming the loop, edge or point — never a crash,
+// a hang or garbage.
+#include "core/error.h"
+#include "support.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace corbel::extrude::test {
+namespace {
+
+std::string faultOf(const ExtrusionSpec& spec) {
+  try {
+    extrude(spec);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<accepted>";
+}
+
+#define EXPECT_FAULT(spec, text) EXPECT_EQ(faultOf(spec), text)
+
+TEST(BadInput, SelfIntersectingAndTouchingLoops) {
+  const auto bowtie = uniformSpec({{Vec2(0, 0), Vec2(10, 0), Vec2(0, 6), Vec2(10, 6)}}, hipProfile(45 * kDeg));
+  EXPECT_FAULT(bowtie, "loops[0] edge 1 and loops[0] edge 3 cross or touch: the loop intersects itself");
+  // A hole touching the outer loop at a corner.
+  const auto touching =
+      uniformSpec({rectangle(10, 10), reversed({Vec2(0, 0), Vec2(4, 2), Vec2(2, 4)})}, hipProfile(45 * kDeg));
+  EXPECT_EQ(faultOf(touching).find("cross or touch: loops must be disjoint") != std::string::npos, true)
+      << faultOf(touching);
+  // Two buildings overlapping.
+  const auto overlap = uniformSpec({rectangle(10, 10), rectangle(10, 10, 5, 5)}, hipProfile(45 * kDeg));
+  EXPECT_EQ(faultOf(overlap).find("loops must be disjoint") != std::string::npos, true) << faultOf(overlap);
+}
+
+TEST(BadInput, DegenerateEdgesAndOrientation) {
+  EXPECT_FAULT(uniformSpec({{Vec2(0, 0), Vec2(10, 0), Vec2(10, 0), Vec2(0, 6)}}, hipProfile(45 * kDeg)),
+               "loops[0].points[2]: zero-length edge (repeats points[1])");
+  EXPECT_FAULT(uniformSpec({reversed(rectangle(10, 6))}, hipProfile(45 * kDeg)),
+               "loops[0]: an outer loop must run counter-clockwise (it runs clockwise)");
+  EXPECT_FAULT(uniformSpec({rectangle(10, 10), rectangle(2, 2, 4, 4)}, hipProfile(45 * kDeg)),
+               "loops[1]: a hole must run clockwise (it runs counter-clockwise)");
+  EXPECT_FAULT(uniformSpec({{Vec2(0, 0), Vec2(10, 0)}}, hipProfile(45 * kDeg)),
+               "loops[0].points: a loop needs at least three corners");
+  EXPECT_FAULT(uniformSpec({{Vec2(0, 0), Vec2(10, 0), Vec2(5, 0), Vec2(5, 5)}}, hipProfile(45 * kDeg)),
+               "loops[0].points[1]: the plan folds back on itself (a zero-width spike)");
+}
+
+TEST(BadInput, NonFiniteAndHugeCoordinates) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  EXPECT_FAULT(uniformSpec({{Vec2(0, 0), Vec2(nan, 0), Vec2(0, 6)}}, hipProfile(45 * kDeg)),
+               "loops[0].points[1]: coordinates must be finite");
+  EXPECT_FAULT(uniformSpec({{Vec2(0, 0), Vec2(10, 0), Vec2(0, inf)}}, hipProfile(45 * kDeg)),
+               "loops[0].points[2]: coordinates must be finite");
+  EXPECT_FAULT(uniformSpec({{Vec2(0, 0), Vec2(1e9, 0), Vec2(0, 6)}}, hipProfile(45 * kDeg)),
+               "loops[0].points[1]: coordinates must be within 1e7 m");
+}
+
+TEST(BadInput, Profiles) {
+  Profile down;
+  down.points = {{0, 0}, {1, 2}, {2, 1}};
+  EXPECT_FAULT(uniformSpec({rectangle(10, 6)}, down),
+               "profiles[0].points[2]: profiles must be vertically monotone (z may not decrease)");
+  Profile outward;
+  outward.points = {{0, 0}, {0, 3}, {-1, 4}};
+  EXPECT_FAULT(uniformSpec({rectangle(10, 6)}, outward),
+               "profiles[0]: the last segment leans outward (angle < 0), so the roof could never close");
+  Profile vertical;
+  vertical.points = {{0, 0}, {0, 3}};
+  EXPECT_FAULT(uniformSpec({rectangle(10, 6)}, vertical),
+               "loops[0]: no edge's profile ends leaning inward, so the roof cannot close");
+  Profile one;
+  one.points = {{0, 0}};
+  EXPECT_FAULT(uniformSpec({rectangle(10, 6)}, one), "profiles[0].points: a profile needs at least two points");
+  Profile nan;
+  nan.points = {{0, 0}, {std::numeric_limits<double>::quiet_NaN(), 1}};
+  EXPECT_FAULT(uniformSpec({rectangle(10, 6)}, nan), "profiles[0].points[1]: coordinates must be finite");
+  ExtrusionSpec missing = uniformSpec({rectangle(10, 6)}, hipProfile(45 * kDeg));
+  missing.loops[0].profile[2] = 7;
+  EXPECT_FAULT(missing, "loops[0].profile[2]: no profile number 7");
+  ExtrusionSpec empty;
+  EXPECT_FAULT(empty, "loops: a plan needs at least one loop");
+}
+
+}  // namespace
+}  // namespace corbel::extrude::test
