@@ -10,7 +10,7 @@ namespace corbel::extrude {
 
 namespace {
 
-void runOne(const BatchItem& item, BatchResult& r, bool keepMesh) {
+void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, double timeLimit) {
   r.id = item.id;
   if (!item.problem.empty()) {
     r.error = item.problem;
@@ -18,7 +18,7 @@ void runOne(const BatchItem& item, BatchResult& r, bool keepMesh) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    const ExtrusionResult er = extrude(item.spec);
+    const ExtrusionResult er = extrude(item.spec, nullptr, timeLimit);
     r.warnings = er.shell.warnings;
     r.measures = measure(er.shell);
     MeshData mesh = toMeshData(er.shell, item.spec, item.spec.material);
@@ -52,7 +52,7 @@ std::vector<BatchResult> extrudeBatch(const std::vector<BatchItem>& items, const
   auto worker = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < items.size();) {
       if (progress && progress->cancelled()) return;
-      runOne(items[i], results[i], options.keepMeshes);
+      runOne(items[i], results[i], options.keepMeshes, options.timeLimitSeconds);
       const std::size_t d = ++done;
       if (progress && (d % 64 == 0 || d == items.size()))
         progress->report(double(d) / items.size(), "extruding buildings");

@@ -31,6 +31,7 @@ struct BatchResult {
 struct BatchOptions {
   unsigned jobs = 0;             // 0 = all cores
   bool keepMeshes = false;
+  double timeLimitSeconds = 10.0;  // per building
 };
 
 std::vector<BatchResult> extrudeBatch(const std::vector<BatchItem>& items, const BatchOptions& options,

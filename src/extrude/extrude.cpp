@@ -88,7 +88,7 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
   return checkPlanTopology(loops);
 }
 
-ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress) {
+ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double timeLimitSeconds) {
   if (auto problem = checkSpec(spec)) {
     const auto colon = problem->find(": ");
     throw InputError(problem->substr(0, colon), colon == std::string::npos ? *problem : problem->substr(colon + 2));
@@ -101,6 +101,7 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress) {
 
   SweepInput in;
   in.baseZ = spec.baseZ;
+  in.timeLimitSeconds = timeLimitSeconds;
   for (std::size_t li = 0; li < spec.loops.size(); ++li) {
     const PlanLoop& l = spec.loops[li];
     std::vector<SweepEdge> loop;

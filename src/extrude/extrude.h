@@ -16,7 +16,7 @@ struct ExtrusionResult {
 };
 
 // Validates the spec (throws InputError naming the loop/edge/point) and runs the sweep.
-ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress = nullptr);
+ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress = nullptr, double timeLimitSeconds = 0.0);
 
 // Areas and volume of a shell, from its planar faces (holes included).
 struct ShellMeasures {

@@ -6,7 +6,10 @@
 // lines (no drift). Every face of the output is traced by one edge between two events.
 #include "extrude/sweep.h"
 
+#include "core/error.h"
+
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
@@ -123,6 +126,9 @@ class Sweeper {
   double z_ = 0;
   std::size_t events_ = 0;
   std::vector<int> recent_;  // vertices made at height recentZ_
+  Vec2 lastEventPoint_{std::numeric_limits<double>::infinity(), 0.0};
+  double lastEventZ_ = 0;
+  int repeats_ = 0;
   double recentZ_ = std::numeric_limits<double>::quiet_NaN();
 };
 
@@ -229,7 +235,7 @@ void Sweeper::resolveCorner(int ci, double z, int depth) {
   const Corner& c = corners_[ci];
   const Edge& a = edges_[c.prev];
   const Edge& b = edges_[c.next];
-  if (std::abs(cross2(a.d, b.d)) > tol_.parallelSine) return;  // an ordinary corner
+  if (std::abs(cross2(a.d, b.d)) > tol_.mergeSine) return;  // an ordinary corner
   if (OpenMesh::dot(a.d, b.d) < 0) {
     zipSpike(ci, z, depth);
   } else if (std::abs(a.k - b.k) > 1e-12 * (1.0 + std::abs(a.k) + std::abs(b.k))) {
@@ -453,6 +459,20 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
       const Vec2 ls((a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det);
       if ((ls - l).norm() <= tol_.cluster) l = ls;
     }
+  }
+  // A cascade of events at one point within a sliver of height means the configuration
+  // re-creates itself (coincident corner paths): stop with a reason instead of looping.
+  if ((l - lastEventPoint_).norm() <= tol_.cluster && z - lastEventZ_ <= 1e3 * tol_.cluster) {
+    if (++repeats_ > 32) {
+      std::ostringstream m;
+      m << "degenerate event cascade at (" << l[0] << ", " << l[1] << ", " << z
+        << "): coincident corner paths the sweep cannot separate";
+      throw Error(m.str());
+    }
+  } else {
+    repeats_ = 0;
+    lastEventPoint_ = l;
+    lastEventZ_ = z;
   }
   ++events_;
   const int vl = addVertex(l, z);
@@ -688,6 +708,7 @@ SweepOutput Sweeper::run() {
   for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci)
     if (corners_[ci].alive) predict(ci);
 
+  const auto started = std::chrono::steady_clock::now();
   std::size_t nextDirection = 0;
   const std::size_t cap = 200000 + 400 * edges_.size() * edges_.size();
   std::size_t popped = 0;
@@ -703,7 +724,12 @@ SweepOutput Sweeper::run() {
       warnings_.push_back("event limit reached; the result is incomplete");
       break;
     }
-    if (progress_ && (popped & 1023) == 0 && progress_->cancelled()) throw Cancelled();
+    if ((popped & 255) == 0) {
+      if (progress_ && progress_->cancelled()) throw Cancelled();
+      if (in_.timeLimitSeconds > 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
+        throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+    }
     const Candidate cand = queue_.top();
     queue_.pop();
     if (cand.z < z_ - tol_.height) continue;  // predicted before an earlier change

@@ -32,6 +32,7 @@ struct SweepInput {
   std::vector<std::vector<SweepEdge>> loops;
   double baseZ = 0.0;
   bool emitBase = true;  // the floor face(s)
+  double timeLimitSeconds = 0.0;  // > 0: give up with an Error after this long
 };
 
 // A face of the output shell: a planar polygon with holes, in one direction plane.
