@@ -33,6 +33,7 @@ struct ExtrusionSpec {
   std::vector<Profile> profiles;  // the library the edges refer to
   Priority priority = Priority::MaximiseVolume;
   std::string material = "plaster";
+  std::string roofMaterial;  // faces leaning inward; "" = material
   double baseZ = 0.0;
   bool operator==(const ExtrusionSpec&) const = default;
 };

@@ -65,6 +65,7 @@ ojson vec2(const Vec2& v) { return ojson::array({v[0], v[1]}); }
 ojson extrusionToJson(const ExtrusionSpec& e) {
   ojson j;
   j["material"] = e.material;
+  if (!e.roofMaterial.empty()) j["roof_material"] = e.roofMaterial;
   j["base"] = e.baseZ;
   j["priority"] = e.priority == Priority::MaximiseVolume ? "maximise_volume" : "minimise_volume";
   ojson loops = ojson::array();
@@ -103,10 +104,11 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
 
 ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"material", "base", "priority", "plan", "profiles"}))
+  for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles"}))
     warnings.push_back(k + ": unknown key ignored");
   ExtrusionSpec e;
   if (auto v = r.find("material")) e.material = v->string(limits::kMaxNameLength);
+  if (auto v = r.find("roof_material")) e.roofMaterial = v->string(limits::kMaxNameLength);
   if (auto v = r.find("base")) e.baseZ = v->number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
   if (auto v = r.find("priority")) {
     const std::string p = v->string(64);

@@ -69,6 +69,7 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
   MeshData out;
   out.points = shell.points;
   const int mat = out.addMaterial(material);
+  const int roofMat = spec.roofMaterial.empty() ? mat : out.addMaterial(spec.roofMaterial);
   for (const ShellFace& f : shell.faces) {
     std::string tag;
     if (f.sourceLoop >= 0 && f.segment >= 0) {
@@ -78,8 +79,9 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
     }
     if (tag.empty()) tag = defaultTag(f);
     const int t = out.addTag(tag);
+    const int m = (!f.base && (f.segment == -2 || f.angle > 1e-9)) ? roofMat : mat;
     if (f.loops.size() == 1) {
-      out.addFace(f.loops[0], t, mat);
+      out.addFace(f.loops[0], t, m);
       continue;
     }
     // Triangulate in the face's plane.
@@ -102,7 +104,7 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
       if (!fh->info().inDomain()) continue;
       std::vector<int> tri;
       for (int i = 0; i < 3; ++i) tri.push_back(fh->vertex(i)->info());
-      out.addFace(tri, t, mat);  // CDT faces are counter-clockwise in the (u, w) frame: outward
+      out.addFace(tri, t, m);  // CDT faces are counter-clockwise in the (u, w) frame: outward
     }
   }
   return out;

@@ -107,6 +107,20 @@ TEST(Features, ProfileTagsReachTheScene) {
   EXPECT_EQ(count["base"], 1);
 }
 
+// A roof material colours exactly the faces that lean inward.
+TEST(Features, RoofMaterialGoesToInwardFaces) {
+  ExtrusionSpec spec = rectangleWith({wallAndRoofProfile(3.0, 40 * kDeg)}, {0, 0, 0, 0});
+  spec.roofMaterial = "roof_tile";
+  const ExtrusionResult r = extrude(spec);
+  Scene scene;
+  scene.replaceObject(1, Kind::Shell, "x", toMeshData(r.shell, spec, "brick"));
+  std::map<std::string, int> count;
+  for (auto f : scene.faces(1)) ++count[scene.faceTag(f) + "/" + scene.faceMaterial(f)];
+  EXPECT_EQ(count["roof/roof_tile"], 4);
+  EXPECT_EQ(count["wall/brick"], 4);
+  EXPECT_EQ(count["base/brick"], 1);
+}
+
 // Eight faces meeting at one point on a symmetrical footprint (Fig. 23): a regular octagon's
 // planes all meet at the apex, height r·cos(π/8)·tan φ.
 TEST(Features, EightFacesMeetAtOnePoint) {

@@ -484,6 +484,7 @@ namespace {
 corbel::ExtrusionSpec sampleExtrusion() {
   corbel::ExtrusionSpec e;
   e.material = "brick";
+  e.roofMaterial = "slate";
   e.baseZ = 0.5;
   e.priority = corbel::Priority::MinimiseVolume;
   corbel::Profile hip;
