@@ -102,6 +102,10 @@ class Sweeper {
   void killCorner(int c, int topVertex);
   void resolveCorner(int c, double z, int depth = 0);
   void zipSpike(int c, double z, int depth);
+  // Edges A (arriving) and B (leaving) of a closed corner meet along vl–v: their faces' tops.
+  void shareTop(int A, int B, int vl, int v);
+  // A corner that replaces closed ones: made, resolved and, if it lives, predicted.
+  void relink(int prev, int next, int vertex, const Vec2& at, double z, int depth);
   void mergeColinear(int c, double z, int depth);
 
   // Events.
@@ -243,6 +247,17 @@ void Sweeper::resolveCorner(int ci, double z, int depth) {
   }
 }
 
+void Sweeper::shareTop(int A, int B, int vl, int v) {
+  faces_[edges_[A].face].segments.emplace_back(vl, v);
+  faces_[edges_[B].face].segments.emplace_back(v, vl);
+}
+
+void Sweeper::relink(int prev, int next, int vertex, const Vec2& at, double z, int depth) {
+  const int n = newCorner(prev, next, vertex, at, z);
+  resolveCorner(n, z, depth + 1);
+  if (corners_[n].alive) predict(n);
+}
+
 // Two antiparallel edges meeting at a corner lie on one line: above this height they would
 // cross. They meet along their overlap (a ridge); the longer one goes on (Sec. 4.4, the
 // degenerate chains of two parallel edges).
@@ -259,8 +274,7 @@ void Sweeper::zipSpike(int ci, double z, int depth) {
     const Vec2 pa = cornerAt(a0, z);
     const int va = addVertex(pa, z);
     killCorner(a0, va);
-    faces_[edges_[A].face].segments.emplace_back(vl, va);
-    faces_[edges_[B].face].segments.emplace_back(va, vl);
+    shareTop(A, B, vl, va);
     edges_[A].alive = edges_[B].alive = false;
     return;
   }
@@ -272,35 +286,26 @@ void Sweeper::zipSpike(int ci, double z, int depth) {
     const int v = addVertex((pa + pb) * 0.5, z);
     killCorner(a0, v);
     killCorner(b1, v);
-    faces_[edges_[A].face].segments.emplace_back(vl, v);
-    faces_[edges_[B].face].segments.emplace_back(v, vl);
+    shareTop(A, B, vl, v);
     edges_[A].alive = edges_[B].alive = false;
     if (aPrev == bNext) {
       // A loop of three edges closing at once: the third edge's face ends at v too.
       edges_[aPrev].alive = false;
       return;
     }
-    const int n = newCorner(aPrev, bNext, v, (pa + pb) * 0.5, z);
-    resolveCorner(n, z, depth + 1);
-    if (corners_[n].alive) predict(n);
+    relink(aPrev, bNext, v, (pa + pb) * 0.5, z, depth);
   } else if (la < lb) {
     const int va = addVertex(pa, z);
     killCorner(a0, va);
-    faces_[edges_[A].face].segments.emplace_back(vl, va);
-    faces_[edges_[B].face].segments.emplace_back(va, vl);
+    shareTop(A, B, vl, va);
     edges_[A].alive = false;
-    const int n = newCorner(aPrev, B, va, pa, z);
-    resolveCorner(n, z, depth + 1);
-    if (corners_[n].alive) predict(n);
+    relink(aPrev, B, va, pa, z, depth);
   } else {
     const int vb = addVertex(pb, z);
     killCorner(b1, vb);
-    faces_[edges_[A].face].segments.emplace_back(vl, vb);
-    faces_[edges_[B].face].segments.emplace_back(vb, vl);
+    shareTop(A, B, vl, vb);
     edges_[B].alive = false;
-    const int n = newCorner(A, bNext, vb, pb, z);
-    resolveCorner(n, z, depth + 1);
-    if (corners_[n].alive) predict(n);
+    relink(A, bNext, vb, pb, z, depth);
   }
 }
 
@@ -318,25 +323,19 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
     const Vec2 pb = cornerAt(b1, z);
     const int vb = addVertex(pb, z);
     killCorner(b1, vb);
-    faces_[edges_[B].face].segments.emplace_back(vb, vl);  // B's face ends along its top
-    faces_[edges_[A].face].segments.emplace_back(vl, vb);  // A's face starts above it
+    shareTop(A, B, vl, vb);  // B's face ends along its top; A's face goes on above it
     const int bNext = corners_[b1].next;
     edges_[B].alive = false;
-    const int n = newCorner(A, bNext, vb, pb, z);
-    resolveCorner(n, z, depth + 1);
-    if (corners_[n].alive) predict(n);
+    relink(A, bNext, vb, pb, z, depth);
   } else {
     const int a0 = edges_[A].start;
     const Vec2 pa = cornerAt(a0, z);
     const int va = addVertex(pa, z);
     killCorner(a0, va);
-    faces_[edges_[A].face].segments.emplace_back(vl, va);
-    faces_[edges_[B].face].segments.emplace_back(va, vl);
+    shareTop(A, B, vl, va);
     const int aPrev = corners_[a0].prev;
     edges_[A].alive = false;
-    const int n = newCorner(aPrev, B, va, pa, z);
-    resolveCorner(n, z, depth + 1);
-    if (corners_[n].alive) predict(n);
+    relink(aPrev, B, va, pa, z, depth);
   }
 }
 
