@@ -62,6 +62,7 @@ inline constexpr std::size_t kMaxNameLength = 256;
 inline constexpr std::size_t kMaxLoops = 10000;        // plan loops per extrusion
 inline constexpr std::size_t kMaxLoopPoints = 100000;  // plan corners per extrusion
 inline constexpr std::size_t kMaxProfiles = 1000;
+inline constexpr std::size_t kMaxSteps = 1000;     // plan steps and mesh anchors per extrusion
 inline constexpr std::size_t kMaxProfilePoints = 1000;
 }  // namespace limits
 

@@ -67,7 +67,9 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
   j["material"] = e.material;
   if (!e.roofMaterial.empty()) j["roof_material"] = e.roofMaterial;
   j["base"] = e.baseZ;
-  j["priority"] = e.priority == Priority::MaximiseVolume ? "maximise_volume" : "minimise_volume";
+  j["priority"] = e.priority == Priority::MaximiseVolume   ? "maximise_volume"
+                  : e.priority == Priority::MinimiseVolume ? "minimise_volume"
+                                                           : "manual";
   ojson loops = ojson::array();
   bool uniform = true;
   for (const PlanLoop& l : e.loops)
@@ -99,12 +101,45 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
     profiles.push_back(std::move(pj));
   }
   j["profiles"] = std::move(profiles);
+  auto anchorJson = [&](const Anchor& a) {
+    ojson aj;
+    aj["loop"] = a.loop;
+    aj["edge"] = a.edge;
+    aj[a.absolute ? "at" : "fraction"] = a.along;
+    aj["height"] = a.height;
+    return aj;
+  };
+  if (!e.steps.empty()) {
+    ojson steps = ojson::array();
+    for (const PlanStep& st : e.steps) {
+      ojson sj;
+      if (!st.name.empty()) sj["name"] = st.name;
+      sj["anchor"] = anchorJson(st.anchor);
+      sj["shape"] = st.shape == StepShape::Bay ? "bay" : "rectangle";
+      sj["width"] = st.width;
+      sj["depth"] = st.depth;
+      if (st.shape == StepShape::Bay) sj["cant"] = st.cant;
+      sj["front_profile"] = e.profiles[st.frontProfile].name;
+      sj["side_profile"] = e.profiles[st.sideProfile].name;
+      steps.push_back(std::move(sj));
+    }
+    j["steps"] = std::move(steps);
+  }
+  if (!e.anchors.empty()) {
+    ojson anchors = ojson::array();
+    for (const MeshAnchor& m : e.anchors) {
+      ojson mj = anchorJson(m.anchor);
+      mj["name"] = m.name;
+      anchors.push_back(std::move(mj));
+    }
+    j["anchors"] = std::move(anchors);
+  }
   return j;
 }
 
 ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles"}))
+  for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles", "steps", "anchors"}))
     warnings.push_back(k + ": unknown key ignored");
   ExtrusionSpec e;
   if (auto v = r.find("material")) e.material = v->string(limits::kMaxNameLength);
@@ -114,7 +149,8 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
     const std::string p = v->string(64);
     if (p == "maximise_volume") e.priority = Priority::MaximiseVolume;
     else if (p == "minimise_volume") e.priority = Priority::MinimiseVolume;
-    else v->fail("expected \"maximise_volume\" or \"minimise_volume\", found \"" + p + "\"");
+    else if (p == "manual") e.priority = Priority::Manual;
+    else v->fail("expected \"maximise_volume\", \"minimise_volume\" or \"manual\", found \"" + p + "\"");
   }
   std::map<std::string, int> byName;
   for (const JsonReader& pr : r.at("profiles").array(limits::kMaxProfiles)) {
@@ -165,6 +201,54 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
     }
   } else if (uniform < 0) {
     plan.fail("name the edges' profile: \"profile\" for all edges or \"edge_profiles\" per edge");
+  }
+  // Anchors: {loop, edge, fraction | at, height}; the kernel checks that they name real edges.
+  auto anchorFrom = [&](const JsonReader& ar, std::set<std::string> extra) {
+    ar.expectObject();
+    extra.insert({"loop", "edge", "fraction", "at", "height"});
+    for (auto& k : ar.unknownKeys(extra)) warnings.push_back(k + ": unknown key ignored");
+    Anchor a;
+    a.loop = static_cast<int>(ar.at("loop").integer(0, static_cast<long>(limits::kMaxLoops)));
+    a.edge = static_cast<int>(ar.at("edge").integer(0, static_cast<long>(limits::kMaxLoopPoints)));
+    const auto fraction = ar.find("fraction"), at = ar.find("at");
+    if (fraction && at) ar.fail("give either \"fraction\" (relative anchor) or \"at\" (absolute anchor), not both");
+    if (at) {
+      a.absolute = true;
+      a.along = at->number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+    } else if (fraction) {
+      a.along = fraction->number(0.0, 1.0);
+    }
+    if (auto h = ar.find("height")) a.height = h->number(0.0, limits::kMaxCoordinate);
+    return a;
+  };
+  if (auto steps = r.find("steps")) {
+    for (const JsonReader& sr : steps->array(limits::kMaxSteps)) {
+      sr.expectObject();
+      for (auto& k : sr.unknownKeys({"name", "anchor", "shape", "width", "depth", "cant", "front_profile", "side_profile"}))
+        warnings.push_back(k + ": unknown key ignored");
+      PlanStep st;
+      if (auto v = sr.find("name")) st.name = v->string(limits::kMaxNameLength);
+      st.anchor = anchorFrom(sr.at("anchor"), {});
+      if (auto v = sr.find("shape")) {
+        const std::string shape = v->string(32);
+        if (shape == "bay") st.shape = StepShape::Bay;
+        else if (shape != "rectangle") v->fail("expected \"rectangle\" or \"bay\", found \"" + shape + "\"");
+      }
+      st.width = sr.at("width").number(0.0, limits::kMaxCoordinate);
+      st.depth = sr.at("depth").number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (auto v = sr.find("cant")) st.cant = v->number(0.0, limits::kMaxCoordinate);
+      st.frontProfile = profileIndex(sr.at("front_profile"));
+      st.sideProfile = sr.find("side_profile") ? profileIndex(sr.at("side_profile")) : st.frontProfile;
+      e.steps.push_back(std::move(st));
+    }
+  }
+  if (auto anchors = r.find("anchors")) {
+    for (const JsonReader& ar : anchors->array(limits::kMaxSteps)) {
+      MeshAnchor m;
+      m.anchor = anchorFrom(ar, {"name"});
+      m.name = ar.at("name").string(limits::kMaxNameLength);
+      e.anchors.push_back(std::move(m));
+    }
   }
   return e;
 }

@@ -35,8 +35,12 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
       const std::string seg = at + ".points[" + std::to_string(i + 1) + "]";
       if (b[1] < a[1]) return seg + ": profiles must be vertically monotone (z may not decrease)";
       if (b[1] == a[1] && b[0] == a[0]) return seg + ": repeats the previous point";
-      if (b[1] == a[1])
-        return seg + ": horizontal profile segments (near-horizontal direction events, Sec. 4.5.2) are not supported yet";
+      if (b[1] == a[1]) {
+        if (i == 0) return seg + ": a profile may not start with a horizontal segment (move the plan instead)";
+        if (i + 2 == p.points.size()) return seg + ": a profile may not end with a horizontal segment";
+        if (std::abs(b[0] - a[0]) > 1e6) return seg + ": the horizontal segment is longer than 1e6 m";
+        continue;
+      }
       const double theta = segmentAngle(a, b);
       if (std::abs(theta) > kHalfPi - 1e-6)
         return seg + ": the segment is too close to horizontal (" + std::to_string(theta * 180 / std::numbers::pi) +
@@ -85,43 +89,34 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
           << i << "])";
         return m.str();
       }
-  return checkPlanTopology(loops);
-}
-
-ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double timeLimitSeconds) {
-  if (auto problem = checkSpec(spec)) {
-    const auto colon = problem->find(": ");
-    throw InputError(problem->substr(0, colon), colon == std::string::npos ? *problem : problem->substr(colon + 2));
+  if (auto bad = checkPlanTopology(loops)) return bad;
+  auto checkAnchor = [&](const Anchor& a, const std::string& at) -> std::optional<std::string> {
+    if (a.loop < 0 || a.loop >= static_cast<int>(spec.loops.size()))
+      return at + ".loop: no loop number " + std::to_string(a.loop);
+    if (a.edge < 0 || a.edge >= static_cast<int>(spec.loops[a.loop].points.size()))
+      return at + ".edge: loop " + std::to_string(a.loop) + " has no edge number " + std::to_string(a.edge);
+    if (!std::isfinite(a.along) || (!a.absolute && (a.along < 0 || a.along > 1)))
+      return at + ".along: a relative anchor needs a fraction within [0, 1]";
+    if (!std::isfinite(a.height) || a.height < 0 || a.height > 1e5)
+      return at + ".height: must be within [0, 1e5] m above the base";
+    return std::nullopt;
+  };
+  for (std::size_t si = 0; si < spec.steps.size(); ++si) {
+    const PlanStep& st = spec.steps[si];
+    const std::string at = "steps[" + std::to_string(si) + "]";
+    if (auto bad = checkAnchor(st.anchor, at + ".anchor")) return bad;
+    if (!std::isfinite(st.width) || st.width <= tol.minEdge * 1e3) return at + ".width: must be positive";
+    if (!std::isfinite(st.depth) || std::abs(st.depth) <= tol.minEdge * 1e3)
+      return at + ".depth: must be non-zero (negative for a recess)";
+    if (std::abs(st.width) > 1e5 || std::abs(st.depth) > 1e5) return at + ": larger than 1e5 m";
+    if (st.shape == StepShape::Bay && (!std::isfinite(st.cant) || st.cant < 0 || 2 * st.cant >= st.width))
+      return at + ".cant: a bay's cant must be at least 0 and less than half its width";
+    for (int p : {st.frontProfile, st.sideProfile})
+      if (p < 0 || p >= static_cast<int>(spec.profiles.size())) return at + ": no profile number " + std::to_string(p);
   }
-  BBox box;
-  for (const auto& l : spec.loops)
-    for (const Vec2& p : l.points) box.add(Vec3(p[0], p[1], 0));
-  ExtrusionResult result;
-  result.scale = box.diagonal();
-
-  SweepInput in;
-  in.baseZ = spec.baseZ;
-  in.timeLimitSeconds = timeLimitSeconds;
-  for (std::size_t li = 0; li < spec.loops.size(); ++li) {
-    const PlanLoop& l = spec.loops[li];
-    std::vector<SweepEdge> loop;
-    for (std::size_t i = 0; i < l.points.size(); ++i) {
-      SweepEdge e;
-      e.start = l.points[i];
-      e.sourceLoop = static_cast<int>(li);
-      e.sourceEdge = static_cast<int>(i);
-      const Profile& p = spec.profiles[l.profile[i]];
-      for (std::size_t s = 0; s + 1 < p.points.size(); ++s)
-        e.steps.push_back({spec.baseZ + p.points[s][1] - p.points[0][1], segmentAngle(p.points[s], p.points[s + 1]), static_cast<int>(s)});
-      // Sec. 4.8: by default the edge with the lowest angle wins (volume maximising).
-      const double first = e.steps.front().angle;
-      e.priority = spec.priority == Priority::MaximiseVolume ? -first : first;
-      loop.push_back(std::move(e));
-    }
-    in.loops.push_back(std::move(loop));
-  }
-  result.shell = sweep(in, Tolerances::forScale(result.scale), progress);
-  return result;
+  for (std::size_t k = 0; k < spec.anchors.size(); ++k)
+    if (auto bad = checkAnchor(spec.anchors[k].anchor, "anchors[" + std::to_string(k) + "].anchor")) return bad;
+  return std::nullopt;
 }
 
 double faceArea(const SweepOutput& shell, const ShellFace& face) {

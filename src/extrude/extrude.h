@@ -10,8 +10,19 @@
 
 namespace corbel::extrude {
 
+// A mesh anchor's place on the shell (Sec. 3.4): where it is and the frame of the face there.
+struct AnchorFrame {
+  std::string name;
+  bool instanced = false;  // false: its edge is not in the active plan at that height
+  Vec3 position;
+  Vec3 along;   // unit, along the active edge (the input edge's direction)
+  Vec3 normal;  // unit, outward normal of the face the edge traces there
+  Vec3 up;      // unit, normal × along: up the face
+};
+
 struct ExtrusionResult {
   SweepOutput shell;
+  std::vector<AnchorFrame> anchors;  // one per spec.anchors entry, in order
   double scale = 0.0;  // plan bounding-box diagonal the tolerances were scaled by
 };
 

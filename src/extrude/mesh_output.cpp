@@ -72,9 +72,8 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
   const int roofMat = spec.roofMaterial.empty() ? mat : out.addMaterial(spec.roofMaterial);
   for (const ShellFace& f : shell.faces) {
     std::string tag;
-    if (f.sourceLoop >= 0 && f.segment >= 0) {
-      const PlanLoop& loop = spec.loops[f.sourceLoop];
-      const Profile& p = spec.profiles[loop.profile[f.sourceEdge]];
+    if (f.profile >= 0 && f.profile < static_cast<int>(spec.profiles.size()) && f.segment >= 0) {
+      const Profile& p = spec.profiles[f.profile];
       if (static_cast<std::size_t>(f.segment) < p.tags.size()) tag = p.tags[f.segment];
     }
     if (tag.empty()) tag = defaultTag(f);

@@ -10,7 +10,11 @@
 
 namespace corbel::extrude {
 
+using corbel::Anchor;
 using corbel::ExtrusionSpec;
+using corbel::MeshAnchor;
+using corbel::PlanStep;
+using corbel::StepShape;
 using corbel::PlanLoop;
 using corbel::Priority;
 using corbel::Profile;

@@ -74,6 +74,7 @@ struct FaceBuild {
   bool base = false;
 };
 
+
 struct Candidate {
   double z;
   Vec2 p;
@@ -113,7 +114,9 @@ class Sweeper {
   void predictAgainst(int edge);
   bool handleIntersection(const Candidate& cand);
   void handleDirectionChanges(double h);
-  void capRemaining(double z);
+  // Closes every loop still open at z: with a flat cap (and a warning) when the sweep ran out
+  // of events, or, at a stop height, by handing the loops back as the active plan.
+  void capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan = nullptr);
   void buildFaces(SweepOutput& out);
 
   const SweepInput& in_;
@@ -630,7 +633,7 @@ void Sweeper::handleDirectionChanges(double h) {
 
 // Loops still open when no event is left (a missed event in a degenerate configuration):
 // close each with a flat cap so the shell stays closed, and say so.
-void Sweeper::capRemaining(double z) {
+void Sweeper::capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan) {
   std::vector<char> seen(corners_.size(), 0);
   int capped = 0;
   for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
@@ -647,7 +650,12 @@ void Sweeper::capRemaining(double z) {
     cap.normal = Vec3(0, 0, 1);
     cap.segment = -2;
     std::vector<int> verts;
-    for (int c : loop) verts.push_back(addVertex(cornerAt(c, z), z));
+    std::vector<PlanCorner> out;
+    for (int c : loop) {
+      const Vec2 p = cornerAt(c, z);
+      verts.push_back(addVertex(p, z));
+      out.push_back({p, verts.back(), edges_[corners_[c].next].src});
+    }
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const int c = loop[i];
       killCorner(c, verts[i]);
@@ -656,6 +664,10 @@ void Sweeper::capRemaining(double z) {
       faces_[edges_[e].face].segments.emplace_back(vt, vs);
       cap.segments.emplace_back(vs, vt);
       edges_[e].alive = false;
+    }
+    if (plan) {
+      plan->push_back(std::move(out));
+      continue;
     }
     faces_.push_back(std::move(cap));
     ++capped;
@@ -713,12 +725,13 @@ SweepOutput Sweeper::run() {
   std::size_t popped = 0;
   while (true) {
     const double nextEventZ = queue_.empty() ? std::numeric_limits<double>::infinity() : queue_.top().z;
-    if (nextDirection < directionHeights_.size() && directionHeights_[nextDirection] < nextEventZ - tol_.height) {
+    if (nextDirection < directionHeights_.size() && directionHeights_[nextDirection] <= nextEventZ + tol_.height &&
+        directionHeights_[nextDirection] < in_.stopZ - tol_.height) {
       z_ = std::max(z_, directionHeights_[nextDirection]);
       handleDirectionChanges(directionHeights_[nextDirection++]);
       continue;
     }
-    if (queue_.empty()) break;
+    if (queue_.empty() || nextEventZ > in_.stopZ + tol_.height) break;
     if (++popped > cap) {
       warnings_.push_back("event limit reached; the result is incomplete");
       break;
@@ -734,9 +747,9 @@ SweepOutput Sweeper::run() {
     if (cand.z < z_ - tol_.height) continue;  // predicted before an earlier change
     if (handleIntersection(cand)) z_ = std::max(z_, cand.z);
   }
-  capRemaining(z_);
-
   SweepOutput out;
+  if (std::isfinite(in_.stopZ)) capRemaining(in_.stopZ, &out.plan);
+  else capRemaining(z_);
   buildFaces(out);
   out.warnings = warnings_;
   out.events = events_;
@@ -748,10 +761,36 @@ SweepOutput Sweeper::run() {
 void Sweeper::buildFaces(SweepOutput& out) {
   out.points = points_;
   for (const Vec3& p : points_) out.maxHeight = std::max(out.maxHeight, p[2]);
-  for (const FaceBuild& f : faces_) {
+  std::vector<RawFace> raw;
+  raw.reserve(faces_.size());
+  for (FaceBuild& f : faces_) {
+    RawFace r;
+    r.segments = std::move(f.segments);
+    r.info.normal = f.normal;
+    r.info.base = f.base;
+    r.info.segment = f.segment;
+    r.info.angle = f.angle;
+    if (f.src >= 0) {
+      r.info.sourceLoop = inputs_[f.src]->sourceLoop;
+      r.info.sourceEdge = inputs_[f.src]->sourceEdge;
+      r.info.profile = inputs_[f.src]->profile;
+      r.info.step = inputs_[f.src]->step;
+    }
+    raw.push_back(std::move(r));
+  }
+  if (in_.keepRaw) out.raw = std::move(raw);
+  else traceFaces(points_, raw, tol_, out.faces, warnings_);
+}
+
+}  // namespace
+
+void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& raw, const Tolerances& tol_,
+                std::vector<ShellFace>& faces, std::vector<std::string>& warnings) {
+  for (const RawFace& rf : raw) {
+    const ShellFace& f = rf.info;
     // Drop zero-length pieces and pieces cancelled by their reverse (a face folded onto itself).
     std::map<std::pair<int, int>, int> count;
-    for (auto [u, v] : f.segments) {
+    for (auto [u, v] : rf.segments) {
       if (u == v || (points_[u] - points_[v]).norm() <= tol_.cluster * 1e-3) continue;
       auto rev = count.find({v, u});
       if (rev != count.end() && rev->second > 0) {
@@ -817,16 +856,8 @@ void Sweeper::buildFaces(SweepOutput& out) {
     }
     std::vector<ShellFace> made;
     for (int o : outers) {
-      ShellFace sf;
-      sf.loops.push_back(loops[o]);
-      sf.normal = f.normal;
-      sf.base = f.base;
-      if (f.src >= 0) {
-        sf.sourceLoop = inputs_[f.src]->sourceLoop;
-        sf.sourceEdge = inputs_[f.src]->sourceEdge;
-      }
-      sf.segment = f.segment;
-      sf.angle = f.angle;
+      ShellFace sf = f;
+      sf.loops.assign(1, loops[o]);
       made.push_back(std::move(sf));
     }
     auto inside = [&](const Vec2& p, const std::vector<int>& loop) {
@@ -854,14 +885,12 @@ void Sweeper::buildFaces(SweepOutput& out) {
       }
       if (owner >= 0) made[owner].loops.push_back(hl);
       else if (!made.empty()) {
-        out.warnings.push_back("a face boundary piece could not be placed (hole outside its face)");
+        warnings.push_back("a face boundary piece could not be placed (hole outside its face)");
       }
     }
-    for (auto& m : made) out.faces.push_back(std::move(m));
+    for (auto& m : made) faces.push_back(std::move(m));
   }
 }
-
-}  // namespace
 
 SweepOutput sweep(const SweepInput& input, const Tolerances& tol, Progress* progress) {
   Sweeper s(input, tol, progress);

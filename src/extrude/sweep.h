@@ -7,6 +7,7 @@
 #include "core/progress.h"
 #include "extrude/tolerances.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct SweepEdge {
   std::vector<Step> steps;  // sorted by z; steps[0].z = base height
   int sourceLoop = 0;
   int sourceEdge = 0;
+  int profile = -1;  // provenance: index into the spec's profile library (-1: none)
+  int step = -1;     // provenance: the plan step (spec.steps) that made the edge, else -1
   // Higher wins when colinear neighbours of different angles must merge (Sec. 4.8).
   double priority = 0.0;
 };
@@ -33,6 +36,12 @@ struct SweepInput {
   double baseZ = 0.0;
   bool emitBase = true;  // the floor face(s)
   double timeLimitSeconds = 0.0;  // > 0: give up with an Error after this long
+  // Finite: stop the sweep at this height and hand back the active plan there (SweepOutput::
+  // plan) with the faces left open along it, for a recursive or staged extrusion (Sec. 4.5.2,
+  // 4.6, 4.7). Events at the stop height itself are handled first.
+  double stopZ = std::numeric_limits<double>::infinity();
+  // Keep the faces as untraced boundary pieces (SweepOutput::raw) instead of tracing them.
+  bool keepRaw = false;
 };
 
 // A face of the output shell: a planar polygon with holes, in one direction plane.
@@ -43,7 +52,26 @@ struct ShellFace {
   int sourceEdge = -1;
   int segment = -1;                     // profile segment; -1 for base faces
   double angle = 0.0;                   // θ of the direction plane (base: NaN-free 0)
+  int profile = -1;                     // profile library index (-1: base, caps)
+  int step = -1;                        // the plan step whose edge traced it (sourceEdge: its
+                                        // edge in the step's shape), else -1
   bool base = false;
+};
+
+// A face before tracing: its directed boundary pieces (vertex pairs) and what it comes from.
+// Pieces of one face may come from several sweeps (staged extrusions); a piece and its reverse
+// cancel when the face is traced.
+struct RawFace {
+  std::vector<std::pair<int, int>> segments;
+  ShellFace info;  // everything but loops
+};
+
+// A corner of the active plan where a stopped sweep ended: its place, its shell vertex and
+// the input edge (flat index over SweepInput::loops) that leaves it.
+struct PlanCorner {
+  Vec2 p;
+  int vertex = -1;
+  int input = -1;
 };
 
 struct SweepOutput {
@@ -52,7 +80,14 @@ struct SweepOutput {
   std::vector<std::string> warnings;
   double maxHeight = 0.0;
   std::size_t events = 0;  // generalized intersection events handled
+  std::vector<RawFace> raw;                     // with SweepInput::keepRaw
+  std::vector<std::vector<PlanCorner>> plan;    // with a finite SweepInput::stopZ
 };
+
+// Traces raw faces into planar polygons with holes (outer loops counter-clockwise seen from
+// outside). Pieces cancelled by their reverse, and zero-length ones, are dropped.
+void traceFaces(const std::vector<Vec3>& points, const std::vector<RawFace>& raw, const Tolerances& tol,
+                std::vector<ShellFace>& faces, std::vector<std::string>& warnings);
 
 // Runs the sweep. The input must already be valid (see checkSpec): simple, consistently
 // oriented loops and angles within (−π/2, π/2) with the last one > 0.

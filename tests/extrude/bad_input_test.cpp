@@ -81,6 +81,49 @@ TEST(BadInput, Profiles) {
   EXPECT_FAULT(missing, "loops[0].profile[2]: no profile number 7");
   ExtrusionSpec empty;
   EXPECT_FAULT(empty, "loops: a plan needs at least one loop");
+  Profile flatStart;
+  flatStart.points = {{0, 0}, {1, 0}, {2, 1}};
+  EXPECT_FAULT(uniformSpec({rectangle(10, 6)}, flatStart),
+               "profiles[0].points[1]: a profile may not start with a horizontal segment (move the plan instead)");
+  Profile flatEnd;
+  flatEnd.points = {{0, 0}, {0, 1}, {1, 1}};
+  EXPECT_FAULT(uniformSpec({rectangle(10, 6)}, flatEnd),
+               "profiles[0].points[2]: a profile may not end with a horizontal segment");
+}
+
+TEST(BadInput, StepsAndAnchors) {
+  const ExtrusionSpec house = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+  PlanStep ok;
+  ok.anchor = {0, 0, false, 0.5, 3};
+  ExtrusionSpec s = house;
+  s.steps = {ok};
+  s.steps[0].anchor.loop = 2;
+  EXPECT_FAULT(s, "steps[0].anchor.loop: no loop number 2");
+  s.steps = {ok};
+  s.steps[0].anchor.edge = 4;
+  EXPECT_FAULT(s, "steps[0].anchor.edge: loop 0 has no edge number 4");
+  s.steps = {ok};
+  s.steps[0].anchor.along = 1.5;
+  EXPECT_FAULT(s, "steps[0].anchor.along: a relative anchor needs a fraction within [0, 1]");
+  s.steps = {ok};
+  s.steps[0].anchor.height = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FAULT(s, "steps[0].anchor.height: must be within [0, 1e5] m above the base");
+  s.steps = {ok};
+  s.steps[0].depth = 0;
+  EXPECT_FAULT(s, "steps[0].depth: must be non-zero (negative for a recess)");
+  s.steps = {ok};
+  s.steps[0].shape = StepShape::Bay;
+  s.steps[0].cant = 0.6;
+  s.steps[0].width = 1;
+  EXPECT_FAULT(s, "steps[0].cant: a bay's cant must be at least 0 and less than half its width");
+  s.steps = {ok};
+  s.steps[0].sideProfile = 3;
+  EXPECT_FAULT(s, "steps[0]: no profile number 3");
+  s.steps.clear();
+  s.anchors = {{"door", {0, 0, true, -1e9, 0}}};
+  EXPECT_EQ(faultOf(s), "<accepted>") << "an absolute anchor may lie beyond its edge (it is then not instanced)";
+  s.anchors[0].anchor.height = -1;
+  EXPECT_FAULT(s, "anchors[0].anchor.height: must be within [0, 1e5] m above the base");
 }
 
 }  // namespace

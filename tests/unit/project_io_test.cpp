@@ -503,6 +503,20 @@ corbel::ExtrusionSpec sampleExtrusion() {
   hole.points = {{2, 2}, {2, 4}, {4, 4}, {4, 2}};
   hole.profile = {0, 0, 0, 0};
   e.loops = {outer, hole};
+  corbel::PlanStep dormer;
+  dormer.name = "dormer";
+  dormer.anchor = {0, 0, false, 0.25, 2.5};
+  dormer.width = 2;
+  dormer.depth = 0.1;
+  dormer.frontProfile = 1;
+  dormer.sideProfile = 0;
+  corbel::PlanStep bay;
+  bay.anchor = {0, 2, true, 3.0, 0.0};
+  bay.shape = corbel::StepShape::Bay;
+  bay.cant = 0.5;
+  bay.frontProfile = bay.sideProfile = 1;
+  e.steps = {dormer, bay};
+  e.anchors = {{"door", {0, 0, true, 4.5, 0.0}}};
   return e;
 }
 
@@ -539,6 +553,15 @@ TEST(ProjectIoErrors, ExtrusionFaultsNameTheirPath) {
   EXPECT_FAULT(withExtrusion(R"("plan": {"loops": []}, "profiles": [{"name": "a", "points": []}, {"name": "a", "points": []}])"),
                "objects[0].extrusion.profiles[1].name", R"(profile name "a" is used twice)");
   EXPECT_FAULT(withExtrusion(profiles + R"(, "plan": {"loops": []}, "priority": "tallest")"),
-               "objects[0].extrusion.priority", R"(expected "maximise_volume" or "minimise_volume", found "tallest")");
+               "objects[0].extrusion.priority", R"(expected "maximise_volume", "minimise_volume" or "manual", found "tallest")");
+  const std::string plan = R"(, "plan": {"loops": [[[0, 0], [1, 0], [1, 1]]]})";
+  EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "steps": [{"anchor": {"loop": 0, "edge": 0}, "width": 1, "depth": 1, "front_profile": "x"}])"),
+               "objects[0].extrusion.steps[0].front_profile", R"(no profile named "x" in this object's profiles)");
+  EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "steps": [{"anchor": {"loop": 0, "edge": 0, "fraction": 0.5, "at": 2}, "width": 1, "depth": 1, "front_profile": "hip"}])"),
+               "objects[0].extrusion.steps[0].anchor", R"(give either "fraction" (relative anchor) or "at" (absolute anchor), not both)");
+  EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "steps": [{"anchor": {"loop": 0, "edge": 0}, "width": 1, "depth": 1, "shape": "dome", "front_profile": "hip"}])"),
+               "objects[0].extrusion.steps[0].shape", R"(expected "rectangle" or "bay", found "dome")");
+  EXPECT_FAULT_CONTAINS(withExtrusion(profiles + plan + R"(, "anchors": [{"loop": 0, "edge": 0, "fraction": 1.5, "name": "a"}])"),
+                        "objects[0].extrusion.anchors[0].fraction", "1.5");
   EXPECT_FAULT(withExtrusion(profiles), "objects[0].extrusion.plan", "missing");
 }

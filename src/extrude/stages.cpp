@@ -1,0 +1,609 @@
+// Staged extrusion. The sweep (sweep.cpp) runs between the heights where the active plan
+// changes discretely: horizontal profile segments (near-horizontal edge direction events,
+// Sec. 4.5.2), plan steps (natural steps, Sec. 4.7) and mesh anchors (Sec. 3.4). Each change
+// is a recursive extrusion of the active plan for one unit of height in which only the
+// changing edges move (Fig. 16, 20): its plan at the top replaces the active plan, and its
+// faces, flattened onto the sweep plane, are the horizontal faces at that height — ledges
+// facing up where an edge moved inward, soffits facing down where it moved outward.
+//
+// The pieces of the shell meet along the seams between stages. Vertices at a seam are welded
+// by position, every boundary piece at a seam is split at the seam's vertices that lie on it
+// (no T-junctions), and the faces of one edge and profile segment that continue across a
+// seam in one plane are joined into one face.
+#include "core/error.h"
+#include "extrude/extrude.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <tuple>
+
+namespace corbel::extrude {
+
+namespace {
+
+double segmentAngle(const Vec2& a, const Vec2& b) { return std::atan2(b[0] - a[0], b[1] - a[1]); }
+double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
+Vec2 leftOf(const Vec2& d) { return Vec2(-d[1], d[0]); }
+
+// An edge of the active plan at a seam, leaving `start`.
+struct Active {
+  Vec2 start;
+  int vertex = -1;  // its shell vertex at the seam (-1: not made yet)
+  int profile = 0;
+  double z0 = 0;    // the absolute height of the profile's first point
+  int sourceLoop = -1, sourceEdge = -1, step = -1;
+};
+using Plan = std::vector<std::vector<Active>>;
+
+// A profile segment in absolute heights.
+struct Seg {
+  double lo, hi;  // hi = +inf for the last one
+  double angle;   // θ; for horizontal segments ±π/2
+  double dw;      // horizontal segments: the inward move
+  bool horizontal;
+  int index;
+};
+
+struct Located {
+  int loop = -1, index = -1;
+  double t = 0;  // metres from the edge's start
+  double length = 0;
+  Vec2 at, d;
+};
+
+class Stager {
+ public:
+  Stager(const ExtrusionSpec& spec, const Tolerances& tol, Progress* progress, double timeLimit)
+      : spec_(spec), tol_(tol), progress_(progress), timeLimit_(timeLimit),
+        started_(std::chrono::steady_clock::now()) {}
+
+  ExtrusionResult run(double scale);
+
+ private:
+  std::vector<Seg> segs(const Active& a) const;
+  double priorityOf(const Active& a, double z) const;
+  SweepEdge sweepEdge(const Active& a, double za) const;
+  double remaining() const;
+
+  int weld(const Vec2& p, double seam);
+  int point(const Vec3& p);
+  void addFace(RawFace f);
+  void addFlatFace(std::vector<int> loop, bool up, const ShellFace& info);
+
+  Plan runStage(const Plan& plan, double z, double next, bool first);
+  Plan change(const Plan& plan, double h, bool atBase);
+  std::optional<Located> locate(const Plan& plan, const Anchor& a) const;
+  void frame(const Plan& plan, double h);
+  void fixTJunctions();
+
+  const ExtrusionSpec& spec_;
+  const Tolerances& tol_;
+  Progress* progress_;
+  double timeLimit_;
+  std::chrono::steady_clock::time_point started_;
+
+  std::vector<Vec3> points_;
+  std::map<double, std::vector<int>> seams_;  // seam height → its vertices
+  std::vector<RawFace> faces_;
+  std::multimap<std::tuple<int, int, int, int, int>, int> byKey_;
+  std::vector<std::string> warnings_;
+  std::vector<AnchorFrame> frames_;
+  std::vector<char> stepDone_;
+  std::size_t events_ = 0;
+};
+
+std::vector<Seg> Stager::segs(const Active& a) const {
+  const Profile& p = spec_.profiles[a.profile];
+  std::vector<Seg> out;
+  for (std::size_t s = 0; s + 1 < p.points.size(); ++s) {
+    const Vec2 &q = p.points[s], &r = p.points[s + 1];
+    Seg g;
+    g.lo = a.z0 + q[1] - p.points[0][1];
+    g.hi = s + 2 == p.points.size() ? std::numeric_limits<double>::infinity() : a.z0 + r[1] - p.points[0][1];
+    g.horizontal = r[1] == q[1];
+    g.dw = g.horizontal ? r[0] - q[0] : 0.0;
+    g.angle = g.horizontal ? std::copysign(std::numbers::pi / 2, g.dw) : segmentAngle(q, r);
+    g.index = static_cast<int>(s);
+    out.push_back(g);
+  }
+  return out;
+}
+
+double Stager::priorityOf(const Active& a, double z) const {
+  const Profile& p = spec_.profiles[a.profile];
+  double angle = 0;
+  int seg = 0;
+  for (const Seg& g : segs(a))
+    if (!g.horizontal && g.hi > z + tol_.height) {
+      angle = g.angle;
+      seg = g.index;
+      break;
+    }
+  switch (spec_.priority) {
+    case Priority::MinimiseVolume: return angle;
+    case Priority::Manual: {
+      const std::string tag = static_cast<std::size_t>(seg) < p.tags.size() ? p.tags[seg] : "";
+      const double rank = tag == "high" ? 1.0 : tag == "low" ? -1.0 : 0.0;
+      return 10.0 * rank - angle;
+    }
+    case Priority::MaximiseVolume: break;
+  }
+  return -angle;  // Sec. 4.8: the lowest angle wins by default
+}
+
+SweepEdge Stager::sweepEdge(const Active& a, double za) const {
+  SweepEdge e;
+  e.start = a.start;
+  e.sourceLoop = a.sourceLoop;
+  e.sourceEdge = a.sourceEdge;
+  e.profile = a.profile;
+  e.step = a.step;
+  for (const Seg& g : segs(a)) {
+    if (g.horizontal || g.hi <= za + tol_.height) continue;
+    e.steps.push_back({std::max(g.lo, za), g.angle, g.index});
+  }
+  if (e.steps.empty()) e.steps.push_back({za, 0.0, -1});  // cannot happen for checked profiles
+  e.steps.front().z = za;
+  e.priority = priorityOf(a, za);
+  return e;
+}
+
+double Stager::remaining() const {
+  if (timeLimit_ <= 0) return 0.0;
+  const double used = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  if (used >= timeLimit_)
+    throw Error("the extrusion took longer than its time limit of " + std::to_string(timeLimit_) + " s");
+  return timeLimit_ - used;
+}
+
+int Stager::point(const Vec3& p) {
+  points_.push_back(p);
+  return static_cast<int>(points_.size()) - 1;
+}
+
+int Stager::weld(const Vec2& p, double seam) {
+  auto& list = seams_[seam];
+  for (int v : list)
+    if (std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster) return v;
+  const int v = point(Vec3(p[0], p[1], seam));
+  list.push_back(v);
+  return v;
+}
+
+// Faces of one edge and profile segment in one plane are one face, whichever stage made them.
+void Stager::addFace(RawFace f) {
+  if (f.segments.empty()) return;
+  const ShellFace& i = f.info;
+  if (!i.base && (i.segment >= 0 || i.step >= 0)) {
+    const auto key = std::make_tuple(i.sourceLoop, i.sourceEdge, i.step, i.profile, i.segment);
+    const Vec3 p = points_[f.segments.front().first];
+    auto range = byKey_.equal_range(key);
+    for (auto it = range.first; it != range.second; ++it) {
+      RawFace& g = faces_[it->second];
+      const Vec3 q = points_[g.segments.front().first];
+      if (OpenMesh::dot(g.info.normal, i.normal) > 1 - 1e-12 && std::abs(OpenMesh::dot(i.normal, p - q)) <= tol_.cluster) {
+        g.segments.insert(g.segments.end(), f.segments.begin(), f.segments.end());
+        return;
+      }
+    }
+    byKey_.emplace(key, static_cast<int>(faces_.size()));
+  }
+  faces_.push_back(std::move(f));
+}
+
+void Stager::addFlatFace(std::vector<int> loop, bool up, const ShellFace& info) {
+  double a = 0;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Vec3 &p = points_[loop[k]], &q = points_[loop[(k + 1) % loop.size()]];
+    a += p[0] * q[1] - p[1] * q[0];
+  }
+  if ((a > 0) != up) std::reverse(loop.begin(), loop.end());
+  RawFace f;
+  f.info = info;
+  f.info.normal = Vec3(0, 0, up ? 1 : -1);
+  for (std::size_t k = 0; k < loop.size(); ++k) f.segments.emplace_back(loop[k], loop[(k + 1) % loop.size()]);
+  addFace(std::move(f));
+}
+
+// One stage of the sweep from z up to `next`; returns the active plan at `next`.
+Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
+  SweepInput in;
+  in.baseZ = z;
+  in.emitBase = first;
+  in.stopZ = next;
+  in.keepRaw = true;
+  in.timeLimitSeconds = remaining();
+  std::vector<const Active*> flat;
+  for (const auto& loop : plan) {
+    std::vector<SweepEdge> l;
+    for (const Active& a : loop) {
+      l.push_back(sweepEdge(a, z));
+      flat.push_back(&a);
+    }
+    in.loops.push_back(std::move(l));
+  }
+  SweepOutput out = sweep(in, tol_, progress_);
+  events_ += out.events;
+  for (auto& w : out.warnings) warnings_.push_back(std::move(w));
+  std::vector<int> map(out.points.size());
+  for (std::size_t i = 0; i < out.points.size(); ++i) {
+    const Vec3& p = out.points[i];
+    if (std::abs(p[2] - z) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), z);
+    else if (std::abs(p[2] - next) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), next);
+    else map[i] = point(p);
+  }
+  for (RawFace& f : out.raw) {
+    for (auto& [u, v] : f.segments) u = map[u], v = map[v];
+    addFace(std::move(f));
+  }
+  Plan result;
+  for (const auto& loop : out.plan) {
+    std::vector<Active> l;
+    for (const PlanCorner& c : loop) {
+      Active a = *flat[c.input];
+      a.start = c.p;
+      a.vertex = map[c.vertex];
+      if (!l.empty() && l.back().vertex == a.vertex) l.pop_back();  // a zero-length edge
+      l.push_back(a);
+    }
+    while (l.size() > 1 && l.back().vertex == l.front().vertex) l.pop_back();
+    if (l.size() >= 3) result.push_back(std::move(l));
+    else warnings_.push_back("a sliver of the plan vanished at height " + std::to_string(next));
+  }
+  return result;
+}
+
+std::optional<Located> Stager::locate(const Plan& plan, const Anchor& a) const {
+  std::optional<Located> best;
+  for (int li = 0; li < static_cast<int>(plan.size()); ++li) {
+    const auto& loop = plan[li];
+    for (int i = 0; i < static_cast<int>(loop.size()); ++i) {
+      const Active& e = loop[i];
+      if (e.step != -1 || e.sourceLoop != a.loop || e.sourceEdge != a.edge) continue;
+      Located l;
+      l.loop = li;
+      l.index = i;
+      Vec2 d = loop[(i + 1) % loop.size()].start - e.start;
+      l.length = d.norm();
+      if (l.length <= tol_.minEdge) continue;
+      l.d = d / l.length;
+      if (a.absolute) {
+        const auto& in = spec_.loops[a.loop].points;
+        const Vec2 s = in[a.edge];
+        Vec2 din = in[(a.edge + 1) % in.size()] - s;
+        din.normalize();
+        l.t = a.along - OpenMesh::dot(din, e.start - s);
+        if (l.t < 0 || l.t > l.length) continue;
+        l.at = e.start + l.d * l.t;
+        return l;
+      }
+      l.t = a.along * l.length;
+      l.at = e.start + l.d * l.t;
+      if (!best || l.length > best->length) best = l;
+    }
+  }
+  return best;
+}
+
+void Stager::frame(const Plan& plan, double h) {
+  for (std::size_t k = 0; k < spec_.anchors.size(); ++k) {
+    const MeshAnchor& m = spec_.anchors[k];
+    if (std::abs(spec_.baseZ + m.anchor.height - h) > tol_.height) continue;
+    AnchorFrame& f = frames_[k];
+    const auto at = locate(plan, m.anchor);
+    if (!at) continue;
+    const Active& e = plan[at->loop][at->index];
+    double angle = 0;
+    for (const Seg& g : segs(e))
+      if (!g.horizontal && g.hi > h + tol_.height) {
+        angle = g.angle;
+        break;
+      }
+    const Vec2 n = leftOf(at->d);
+    f.instanced = true;
+    f.position = Vec3(at->at[0], at->at[1], h);
+    f.along = Vec3(at->d[0], at->d[1], 0);
+    f.normal = Vec3(-n[0], -n[1], std::tan(angle));
+    f.normal.normalize();
+    f.up = OpenMesh::cross(f.normal, f.along);
+  }
+}
+
+// The discrete changes at height h: horizontal moves of edges and plan steps, made together by
+// one recursive extrusion (Sec. 4.5.2, 4.7).
+Plan Stager::change(const Plan& plan, double h, bool atBase) {
+  frame(plan, h);
+  struct Item {
+    Active a;      // what the edge will be in the new plan
+    double k = 0;  // its move over the unit height of the recursive extrusion
+    int segment = -1;
+  };
+  std::vector<std::vector<Item>> loops;
+  bool any = false;
+  for (const auto& loop : plan) {
+    std::vector<Item> l;
+    for (const Active& a : loop) {
+      Item it;
+      it.a = a;
+      for (const Seg& g : segs(a))
+        if (g.horizontal && std::abs(g.lo - h) <= tol_.height) {
+          if (it.segment < 0) it.segment = g.index;
+          it.k += g.dw;
+        }
+      any = any || it.k != 0;
+      l.push_back(it);
+    }
+    loops.push_back(std::move(l));
+  }
+  // Natural steps: a protrusion λ times its size, grown to full size by the recursion.
+  const double epsilon = 100 * tol_.minEdge;  // 1e-5 of the plan's size
+  std::vector<std::pair<std::vector<int>, ShellFace>> tiny;  // the λ-sized protrusions' faces
+  std::vector<bool> tinyUp;
+  // Every step at this height is placed on the plan as it arrives, then inserted from the
+  // last along each loop to the first so earlier places stay valid.
+  struct Placed {
+    std::size_t si;
+    Located at;
+  };
+  std::vector<Placed> placed;
+  for (std::size_t si = 0; si < spec_.steps.size(); ++si) {
+    const PlanStep& st = spec_.steps[si];
+    if (stepDone_[si] || std::abs(spec_.baseZ + st.anchor.height - h) > tol_.height) continue;
+    stepDone_[si] = 1;
+    const std::string name = "steps[" + std::to_string(si) + "]" + (st.name.empty() ? "" : " (" + st.name + ")");
+    const auto at = locate(plan, st.anchor);
+    if (!at) {
+      warnings_.push_back(name + ": not placed: its edge is not in the active plan at height " + std::to_string(h));
+      continue;
+    }
+    placed.push_back({si, *at});
+  }
+  std::sort(placed.begin(), placed.end(), [](const Placed& x, const Placed& y) {
+    return std::tie(x.at.loop, x.at.index, x.at.t) > std::tie(y.at.loop, y.at.index, y.at.t);
+  });
+  double limit = std::numeric_limits<double>::infinity();  // where the previous step on this edge began
+  for (std::size_t k = 0; k < placed.size(); ++k) {
+    const std::size_t si = placed[k].si;
+    const Located* at = &placed[k].at;
+    if (k == 0 || placed[k - 1].at.loop != at->loop || placed[k - 1].at.index != at->index) limit = at->length;
+    const PlanStep& st = spec_.steps[si];
+    const std::string name = "steps[" + std::to_string(si) + "]" + (st.name.empty() ? "" : " (" + st.name + ")");
+    // The shape in the edge's frame (u along the edge, v outward), about the anchor.
+    const double W = st.width, D = st.depth, c = st.shape == StepShape::Bay ? st.cant : 0.0;
+    const std::vector<Vec2> shape = {Vec2(-W / 2, 0), Vec2(-W / 2 + c, D), Vec2(W / 2 - c, D), Vec2(W / 2, 0)};
+    const double lambda = epsilon / std::max(W, std::abs(D));
+    if (at->t - lambda * W / 2 <= 10 * tol_.minEdge || at->t + lambda * W / 2 >= limit - 10 * tol_.minEdge) {
+      warnings_.push_back(name + ": not placed: its anchor is at the end of its active edge or on another step");
+      continue;
+    }
+    limit = at->t - lambda * W / 2;
+    const Vec2 o = -leftOf(at->d);
+    auto world = [&](const Vec2& q) { return at->at + at->d * q[0] + o * q[1]; };
+    const Item host = loops[at->loop][at->index];
+    std::vector<Item> inserted;
+    std::vector<Vec2> tinyPts;
+    for (std::size_t j = 0; j < shape.size(); ++j) {
+      const Vec2 p = world(shape[j] * lambda);
+      tinyPts.push_back(p);
+      if (j + 1 == shape.size()) break;
+      Item it;
+      it.a.start = p;
+      it.a.vertex = -1;
+      it.a.profile = j == 1 ? st.frontProfile : st.sideProfile;
+      it.a.z0 = h;
+      it.a.sourceLoop = -1;
+      it.a.sourceEdge = static_cast<int>(j);
+      it.a.step = static_cast<int>(si);
+      // Grow from the λ-sized line to the full-sized one along the inward normal.
+      const Vec2 q0 = world(shape[j]), q1 = world(shape[j + 1]);
+      Vec2 dir = q1 - q0;
+      dir.normalize();
+      it.k = (1 - lambda) * OpenMesh::dot(leftOf(dir), q0 - at->at);
+      inserted.push_back(it);
+    }
+    Item after = host;
+    after.a.start = tinyPts.back();
+    after.a.vertex = -1;
+    inserted.push_back(after);
+    auto& l = loops[at->loop];
+    l.insert(l.begin() + at->index + 1, inserted.begin(), inserted.end());
+    if (!atBase) {
+      std::vector<int> ids;
+      for (const Vec2& p : tinyPts) ids.push_back(weld(p, h));
+      ShellFace info;
+      info.step = static_cast<int>(si);
+      info.sourceLoop = info.sourceEdge = -1;
+      info.angle = D > 0 ? -std::numbers::pi / 2 : std::numbers::pi / 2;
+      tiny.emplace_back(ids, info);
+      tinyUp.push_back(D < 0);
+    }
+    any = true;
+  }
+  if (!any) return plan;
+  for (std::size_t k = 0; k < tiny.size(); ++k) addFlatFace(tiny[k].first, tinyUp[k], tiny[k].second);
+
+  SweepInput in;
+  in.baseZ = 0;
+  in.stopZ = 1;
+  in.emitBase = false;
+  in.keepRaw = true;
+  in.timeLimitSeconds = remaining();
+  std::vector<const Item*> flat;
+  for (const auto& l : loops) {
+    std::vector<SweepEdge> sl;
+    for (const Item& it : l) {
+      SweepEdge e;
+      e.start = it.a.start;
+      e.sourceLoop = it.a.sourceLoop;
+      e.sourceEdge = it.a.sourceEdge;
+      e.step = it.a.step;
+      e.profile = it.a.step >= 0 ? -1 : it.a.profile;
+      e.steps.push_back({0.0, std::atan(it.k), it.a.step >= 0 ? -1 : it.segment});
+      sl.push_back(e);
+      flat.push_back(&it);
+    }
+    in.loops.push_back(std::move(sl));
+  }
+  SweepOutput out = sweep(in, tol_, progress_);
+  events_ += out.events;
+  for (auto& w : out.warnings) warnings_.push_back(w + " (in the recursive extrusion at height " + std::to_string(h) + ")");
+  std::vector<int> map(out.points.size(), -1);
+  if (!atBase) {
+    for (std::size_t i = 0; i < out.points.size(); ++i) map[i] = weld(Vec2(out.points[i][0], out.points[i][1]), h);
+    for (RawFace& f : out.raw) {
+      if (f.info.angle == 0) continue;  // an edge that did not move: a vertical sliver
+      RawFace g;
+      g.info = f.info;
+      if (g.info.step >= 0) g.info.sourceEdge = -1;  // a step's soffit (or ledge) is one face
+      const bool up = f.info.angle > 0;
+      g.info.angle = up ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+      g.info.normal = Vec3(0, 0, up ? 1 : -1);
+      for (auto [u, v] : f.segments)
+        if (map[u] != map[v]) g.segments.emplace_back(map[u], map[v]);
+      addFace(std::move(g));
+    }
+  }
+  Plan result;
+  for (const auto& loop : out.plan) {
+    std::vector<Active> l;
+    for (const PlanCorner& c : loop) {
+      Active a = flat[c.input]->a;
+      a.start = c.p;
+      a.vertex = atBase ? -1 : map[c.vertex];
+      if (!l.empty() && (atBase ? (l.back().start - a.start).norm() <= tol_.cluster : l.back().vertex == a.vertex))
+        l.pop_back();
+      l.push_back(a);
+    }
+    if (l.size() >= 3) result.push_back(std::move(l));
+  }
+  return result;
+}
+
+// Every boundary piece lying in a seam is split at the seam's vertices on it, so faces from
+// different stages meet edge to edge.
+void Stager::fixTJunctions() {
+  for (const auto& [h, list] : seams_) {
+    if (list.size() < 3) continue;
+    std::vector<int> sorted = list;
+    std::sort(sorted.begin(), sorted.end(), [&](int a, int b) { return points_[a][0] < points_[b][0]; });
+    for (RawFace& f : faces_) {
+      std::vector<std::pair<int, int>> out;
+      out.reserve(f.segments.size());
+      for (auto [u, v] : f.segments) {
+        const Vec3 &pu = points_[u], &pv = points_[v];
+        if (pu[2] != h || pv[2] != h) {
+          out.emplace_back(u, v);
+          continue;
+        }
+        const Vec2 a(pu[0], pu[1]), b(pv[0], pv[1]);
+        const Vec2 d = b - a;
+        const double len2 = OpenMesh::dot(d, d);
+        const double lo = std::min(a[0], b[0]) - tol_.cluster, hi = std::max(a[0], b[0]) + tol_.cluster;
+        auto first = std::lower_bound(sorted.begin(), sorted.end(), lo, [&](int w, double x) { return points_[w][0] < x; });
+        std::vector<std::pair<double, int>> on;
+        for (auto it = first; it != sorted.end() && points_[*it][0] <= hi; ++it) {
+          const int w = *it;
+          if (w == u || w == v || len2 == 0) continue;
+          const Vec2 p(points_[w][0], points_[w][1]);
+          const double t = OpenMesh::dot(p - a, d) / len2;
+          if (t <= 0 || t >= 1) continue;
+          if (std::abs(cross2(d, p - a)) / std::sqrt(len2) <= tol_.cluster) on.emplace_back(t, w);
+        }
+        std::sort(on.begin(), on.end());
+        int prev = u;
+        for (auto [t, w] : on) {
+          out.emplace_back(prev, w);
+          prev = w;
+        }
+        out.emplace_back(prev, v);
+      }
+      f.segments = std::move(out);
+    }
+  }
+}
+
+ExtrusionResult Stager::run(double scale) {
+  ExtrusionResult result;
+  result.scale = scale;
+  frames_.resize(spec_.anchors.size());
+  for (std::size_t k = 0; k < frames_.size(); ++k) frames_[k].name = spec_.anchors[k].name;
+  stepDone_.assign(spec_.steps.size(), 0);
+
+  Plan plan;
+  for (std::size_t li = 0; li < spec_.loops.size(); ++li) {
+    const PlanLoop& l = spec_.loops[li];
+    std::vector<Active> loop;
+    for (std::size_t i = 0; i < l.points.size(); ++i) {
+      Active a;
+      a.start = l.points[i];
+      a.profile = l.profile[i];
+      a.z0 = spec_.baseZ;
+      a.sourceLoop = static_cast<int>(li);
+      a.sourceEdge = static_cast<int>(i);
+      loop.push_back(a);
+    }
+    plan.push_back(std::move(loop));
+  }
+  double z = spec_.baseZ;
+  plan = change(plan, z, true);  // steps standing on the base (buttresses, bays)
+  bool first = true;
+  while (!plan.empty()) {
+    double next = std::numeric_limits<double>::infinity();
+    for (const auto& loop : plan)
+      for (const Active& a : loop)
+        for (const Seg& g : segs(a))
+          if (g.horizontal && g.lo > z + tol_.height) {
+            next = std::min(next, g.lo);
+            break;
+          }
+    for (std::size_t si = 0; si < spec_.steps.size(); ++si) {
+      const double hs = spec_.baseZ + spec_.steps[si].anchor.height;
+      if (!stepDone_[si] && hs > z + tol_.height) next = std::min(next, hs);
+    }
+    for (const MeshAnchor& m : spec_.anchors) {
+      const double ha = spec_.baseZ + m.anchor.height;
+      if (ha > z + tol_.height) next = std::min(next, ha);
+    }
+    plan = runStage(plan, z, next, first);
+    first = false;
+    if (!std::isfinite(next)) break;
+    z = next;
+    plan = change(plan, z, false);
+  }
+  for (std::size_t si = 0; si < spec_.steps.size(); ++si)
+    if (!stepDone_[si] && std::none_of(warnings_.begin(), warnings_.end(), [&](const std::string& w) {
+          return w.rfind("steps[" + std::to_string(si) + "]", 0) == 0;
+        }))
+      warnings_.push_back("steps[" + std::to_string(si) + "]: not placed: the roof has closed below its height");
+  if (seams_.size() > 1) fixTJunctions();
+
+  SweepOutput& out = result.shell;
+  traceFaces(points_, faces_, tol_, out.faces, warnings_);
+  out.points = std::move(points_);
+  for (const Vec3& p : out.points) out.maxHeight = std::max(out.maxHeight, p[2]);
+  out.warnings = std::move(warnings_);
+  out.events = events_;
+  result.anchors = std::move(frames_);
+  return result;
+}
+
+}  // namespace
+
+ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double timeLimitSeconds) {
+  if (auto problem = checkSpec(spec)) {
+    const auto colon = problem->find(": ");
+    throw InputError(problem->substr(0, colon), colon == std::string::npos ? *problem : problem->substr(colon + 2));
+  }
+  BBox box;
+  for (const auto& l : spec.loops)
+    for (const Vec2& p : l.points) box.add(Vec3(p[0], p[1], 0));
+  const Tolerances tol = Tolerances::forScale(box.diagonal());
+  Stager stager(spec, tol, progress, timeLimitSeconds);
+  return stager.run(box.diagonal());
+}
+
+}  // namespace corbel::extrude

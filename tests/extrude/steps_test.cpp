@@ -1,0 +1,187 @@
+// Discrete changes of the active plan (Sec. 4.5.2, 4.7): horizontal profile segments
+// (overhangs and ledges, Fig. 16–17) and natural steps (dormers, buttresses, bays: Fig. 6, 20,
+// 22), each against a hand computation or an independent height-field integration.
+#include "core/scene.h"
+#include "support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+
+namespace corbel::extrude::test {
+namespace {
+
+Profile polyline(std::string name, std::vector<Vec2> pts, std::vector<std::string> tags = {}) {
+  Profile p;
+  p.name = std::move(name);
+  p.points = std::move(pts);
+  p.tags = std::move(tags);
+  return p;
+}
+
+struct Checked {
+  ExtrusionResult r;
+  ShellMeasures m;
+  ValidityReport v;
+};
+
+Checked run(const ExtrusionSpec& spec) {
+  Checked c{extrude(spec), {}, {}};
+  for (const auto& w : c.r.shell.warnings) ADD_FAILURE() << "warning: " << w;
+  Scene scene;
+  scene.replaceObject(1, Kind::Shell, "x", toMeshData(c.r.shell, spec, "plaster"));
+  c.m = measure(c.r.shell);
+  c.v = scene.validate(1);
+  for (const auto& p : c.v.problems()) ADD_FAILURE() << p;
+  EXPECT_EQ(c.v.euler, 2);
+  EXPECT_NEAR(c.v.volume, c.m.volume, 1e-9 * c.m.volume) << "Scene and kernel agree on the volume";
+  return c;
+}
+
+// Volume under a height field top(x, y) over bottom(x, y) by the midpoint rule on a fine grid:
+// an oracle that knows nothing of the sweep.
+double integrate(double x0, double x1, double y0, double y1, int nx, int ny,
+                 const std::function<double(double, double)>& f) {
+  const double hx = (x1 - x0) / nx, hy = (y1 - y0) / ny;
+  double s = 0;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) s += f(x0 + (i + 0.5) * hx, y0 + (j + 0.5) * hy);
+  return s * hx * hy;
+}
+
+// The 10 × 6 hip roof at 45° over walls 3 m high: its top surface at (x, y).
+double hipTop(double x, double y) {
+  if (x < 0 || x > 10 || y < 0 || y > 6) return 0;
+  return 3 + std::min({x, 10 - x, y, 6 - y});
+}
+
+TEST(Steps, HorizontalOverhangIsAnOutwardNearHorizontalEvent) {
+  // Walls 3 m, a 0.5 m overhang (horizontal segment outward), then a 45° hip (Fig. 17b).
+  const Profile p = polyline("eaves", {{0, 0}, {0, 3}, {-0.5, 3}, {0.5, 4}}, {"wall", "soffit", "roof"});
+  const Checked c = run(uniformSpec({rectangle(10, 6)}, p));
+  EXPECT_NEAR(c.m.wallArea, 2 * (10 + 6) * 3, 1e-9);
+  EXPECT_NEAR(c.m.soffitArea, 11 * 7 - 60, 1e-9);  // the offset ring under the eaves
+  EXPECT_NEAR(c.m.roofArea, 11 * 7 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(c.m.maxHeight, 6.5, 1e-12);
+  // Walls, plus the hip over the 11 × 7 rectangle: b²(3a − b)/12.
+  EXPECT_NEAR(c.m.volume, 60 * 3 + 49 * (33 - 7) / 12.0, 1e-9);
+  EXPECT_EQ(c.r.shell.faces.size(), 13u);  // base, 4 walls, 4 soffits, 4 roofs
+}
+
+TEST(Steps, InwardHorizontalSegmentMakesALedge) {
+  // A setback: walls 3 m, a 1 m ledge inward, an upper storey 2 m, a 45° hip.
+  const Profile p = polyline("setback", {{0, 0}, {0, 3}, {1, 3}, {1, 5}, {2, 6}});
+  const Checked c = run(uniformSpec({rectangle(10, 6)}, p));
+  EXPECT_NEAR(c.m.wallArea, 2 * (10 + 6) * 3 + 2 * (8 + 4) * 2, 1e-9);
+  EXPECT_NEAR(c.m.roofArea, (60 - 32) + 32 * std::sqrt(2.0), 1e-9);  // ledge + hip
+  EXPECT_NEAR(c.m.volume, 60 * 3 + 32 * 2 + 16 * (24 - 4) / 12.0, 1e-9);
+  EXPECT_NEAR(c.m.maxHeight, 7.0, 1e-12);
+}
+
+TEST(Steps, OverhangOnlyWhereTheProfileSaysSo) {
+  // Eaves overhang on the long sides; the gable ends stay flush and vertical, so the eave
+  // soffits run out past the gables: the overhang of Fig. 17 b on two edges only.
+  ExtrusionSpec s;
+  s.profiles = {polyline("eaves", {{0, 0}, {0, 3}, {-0.5, 3}, {0.5, 4}}), polyline("gable", {{0, 0}, {0, 1}})};
+  s.loops.push_back({rectangle(10, 6), {0, 1, 0, 1}});
+  const Checked c = run(s);
+  EXPECT_NEAR(c.m.soffitArea, 2 * 10 * 0.5, 1e-9);
+  EXPECT_NEAR(c.m.maxHeight, 3 + 3.5, 1e-12);
+  // A prism: walls, then the gable section over 7 m widths, 10 m long.
+  EXPECT_NEAR(c.m.volume, 60 * 3 + 10 * (7 * 3.5 / 2), 1e-9);
+  EXPECT_NEAR(c.m.roofArea, 2 * 10 * 3.5 * std::sqrt(2.0), 1e-9);
+}
+
+TEST(Steps, DormerByNaturalStepOnTheEaves) {
+  // Fig. 6: a natural step at the top of the wall on the front edge; the dormer's front
+  // stands 0.1 m proud of the wall, its sides rise 1.5 m and close with a 45° gable roof.
+  ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+  s.profiles.push_back(polyline("dormer front", {{0, 0}, {0, 1}}, {"dormer"}));
+  s.profiles.push_back(polyline("dormer side", {{0, 0}, {0, 1.5}, {1, 2.5}}, {"dormer", "dormer roof"}));
+  PlanStep d;
+  d.name = "dormer";
+  d.anchor = {0, 0, false, 0.5, 3.0};
+  d.width = 2;
+  d.depth = 0.1;
+  d.frontProfile = 1;
+  d.sideProfile = 2;
+  s.steps.push_back(d);
+  const Checked c = run(s);
+  // The dormer's own roof over the strip it occupies: from its front back to where it dips
+  // under the front slope of the main roof (the maximum below), which is before the ridge.
+  auto dormer = [](double x, double y) { return x < 4 || x > 6 || y < -0.1 || y > 3 ? 0.0 : 4.5 + std::min(x - 4, 6 - x); };
+  const double expect = integrate(0, 10, -0.1, 6, 2000, 6100, [&](double x, double y) {
+    const double top = std::max(hipTop(x, y), dormer(x, y));
+    const double bottom = (y < 0 && top > 0) ? 3.0 : 0.0;
+    return top - bottom;
+  });
+  EXPECT_NEAR(c.m.volume, expect, 1e-4 * expect);
+  EXPECT_NEAR(c.m.maxHeight, 6.0, 1e-12);
+  std::size_t dormerFaces = 0;
+  for (const ShellFace& f : c.r.shell.faces) dormerFaces += f.step == 0;
+  EXPECT_EQ(dormerFaces, 6u);  // front, two side walls, two roof slopes, one soffit
+}
+
+TEST(Steps, ButtressStandsOnTheBase) {
+  // A 1 m square buttress against the front wall, its face leaning back at 45° from 2 m so it
+  // meets the wall where the roof starts; the sides are vertical.
+  ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+  s.profiles.push_back(polyline("buttress front", {{0, 0}, {0, 2}, {1, 3}, {2, 4}}));
+  s.profiles.push_back(polyline("buttress side", {{0, 0}, {0, 1}}));
+  PlanStep b;
+  b.anchor = {0, 0, true, 2.5, 0.0};  // 2.5 m along the front edge
+  b.width = 1;
+  b.depth = 1;
+  b.frontProfile = 1;
+  b.sideProfile = 2;
+  s.steps.push_back(b);
+  const Checked c = run(s);
+  EXPECT_NEAR(c.m.volume, 252 + 2.5, 1e-9);  // house + a wedge of section (2 + 3)/2 · 1 m
+  EXPECT_NEAR(c.m.baseArea, 61, 1e-9);
+}
+
+TEST(Steps, BayWindowsWithBothPriorities) {
+  // Fig. 22: two identical canted bays side by side; their roofs meet the main roof in
+  // ambiguous events at one height, resolved the same way by both.
+  for (Priority pr : {Priority::MaximiseVolume, Priority::MinimiseVolume}) {
+    ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+    s.priority = pr;
+    s.profiles.push_back(polyline("bay", {{0, 0}, {0, 2}, {1, 3}}));
+    for (double at : {2.5, 7.5}) {
+      PlanStep b;
+      b.shape = StepShape::Bay;
+      b.anchor = {0, 0, true, at, 0.0};
+      b.width = 3;
+      b.depth = 1;
+      b.cant = 1;
+      b.frontProfile = b.sideProfile = 1;
+      s.steps.push_back(b);
+    }
+    const Checked c = run(s);
+    EXPECT_NEAR(c.m.baseArea, 60 + 2 * (3 + 1) / 2.0 * 1, 1e-9);
+  }
+}
+
+TEST(Steps, MeshAnchorsReportTheirFrame) {
+  ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+  s.anchors.push_back({"door", {0, 0, true, 4.0, 0.0}});
+  s.anchors.push_back({"skylight", {0, 2, false, 0.5, 4.0}});
+  s.anchors.push_back({"too high", {0, 0, false, 0.5, 10.0}});
+  const Checked c = run(s);
+  ASSERT_EQ(c.r.anchors.size(), 3u);
+  const AnchorFrame& door = c.r.anchors[0];
+  EXPECT_TRUE(door.instanced);
+  EXPECT_NEAR((door.position - Vec3(4, 0, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((door.normal - Vec3(0, -1, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((door.up - Vec3(0, 0, 1)).norm(), 0, 1e-12);
+  // On the back roof slope 1 m above the eaves: the edge has moved 1 m in, and is 8 m long.
+  const AnchorFrame& sky = c.r.anchors[1];
+  EXPECT_TRUE(sky.instanced);
+  EXPECT_NEAR((sky.position - Vec3(5, 5, 4)).norm(), 0, 1e-12);
+  EXPECT_NEAR((sky.normal - Vec3(0, 1, 1) / std::sqrt(2.0)).norm(), 0, 1e-12);
+  EXPECT_FALSE(c.r.anchors[2].instanced);
+}
+
+}  // namespace
+}  // namespace corbel::extrude::test
