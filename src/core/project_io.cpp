@@ -118,7 +118,7 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
       sj["shape"] = st.shape == StepShape::Bay ? "bay" : "rectangle";
       sj["width"] = st.width;
       sj["depth"] = st.depth;
-      if (st.shape == StepShape::Bay) sj["cant"] = st.cant;
+      if (st.shape == StepShape::Bay || st.cant != 0) sj["cant"] = st.cant;
       sj["front_profile"] = e.profiles[st.frontProfile].name;
       sj["side_profile"] = e.profiles[st.sideProfile].name;
       steps.push_back(std::move(sj));

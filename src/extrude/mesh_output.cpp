@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 
 namespace corbel::extrude {
 
@@ -58,6 +59,7 @@ void markDomains(CDT& cdt) {
 std::string defaultTag(const ShellFace& f) {
   if (f.base) return "base";
   if (f.segment == -2) return "roof";
+  if (f.angle >= std::numbers::pi / 2 - 1e-9) return "ledge";
   if (f.angle > 1e-9) return "roof";
   if (f.angle < -1e-9) return "soffit";
   return "wall";
@@ -78,7 +80,9 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
     }
     if (tag.empty()) tag = defaultTag(f);
     const int t = out.addTag(tag);
-    const int m = (!f.base && (f.segment == -2 || f.angle > 1e-9)) ? roofMat : mat;
+    // Roof material on sloped inward faces and caps; flat ledges and steps keep the walls'.
+    const bool slope = f.angle > 1e-9 && f.angle < std::numbers::pi / 2 - 1e-9;
+    const int m = (!f.base && (f.segment == -2 || slope)) ? roofMat : mat;
     if (f.loops.size() == 1) {
       out.addFace(f.loops[0], t, m);
       continue;

@@ -2,6 +2,7 @@
 // same run (so the figures are ratios), and end to end on the real footprints.
 // Run: build/tests/bench/corbel_bench_extrude  (see docs/benchmarks.md)
 #include "core/export.h"
+#include "core/project_io.h"
 #include "core/scene.h"
 #include "extrude/batch.h"
 #include "extrude/extrude.h"
@@ -142,7 +143,8 @@ void RealFootprints_EndToEnd(benchmark::State& state) {
 }
 BENCHMARK(RealFootprints_EndToEnd)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Editing: re-extrusion of a 50-corner plan with 3-segment profiles (wall, steep, shallow).
+// Editing: re-extrusion of a 50-corner plan with 3-segment profiles (wall, steep, shallow)
+// and two natural steps (dormers at the top of the wall).
 void ReExtrude50Corners(benchmark::State& state) {
   ExtrusionSpec s;
   Profile p;
@@ -155,9 +157,46 @@ void ReExtrude50Corners(benchmark::State& state) {
     loop.emplace_back(r * std::cos(a), r * std::sin(a));
   }
   s.loops = {{loop, std::vector<int>(50, 0)}};
+  Profile front, side;
+  front.name = "dormer front";
+  front.points = {{0, 0}, {0, 1}};
+  side.name = "dormer side";
+  side.points = {{0, 0}, {0, 1.2}, {1, 2.2}};
+  s.profiles.push_back(front);
+  s.profiles.push_back(side);
+  for (int edge : {0, 25}) {
+    PlanStep d;
+    d.anchor = {0, edge, false, 0.5, 3.0};
+    d.width = 1.2;
+    d.depth = 0.1;
+    d.frontProfile = 1;
+    d.sideProfile = 2;
+    s.steps.push_back(d);
+  }
+  if (!corbel::extrude::extrude(s).shell.warnings.empty()) state.SkipWithError("the benchmark plan has warnings");
   for (auto _ : state) benchmark::DoNotOptimize(corbel::extrude::extrude(s).shell.faces.size());
 }
 BENCHMARK(ReExtrude50Corners)->Unit(benchmark::kMicrosecond);
+
+// The gallery: one building of each example, extruded from its spec.
+void Gallery(benchmark::State& state, const char* file, int object) {
+  const Document d = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + file).document;
+  const ExtrusionSpec s = std::get<ExtrusionSpec>(d.objects[object].spec);
+  for (auto _ : state) benchmark::DoNotOptimize(corbel::extrude::extrude(s).shell.faces.size());
+}
+BENCHMARK_CAPTURE(Gallery, house_fig1, "house.corbel", 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Gallery, temple_fig5, "temple.corbel", 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Gallery, terrace_with_bays, "terrace.corbel", 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Gallery, courtyard_building, "extrusions.corbel", 0)->Unit(benchmark::kMicrosecond);
+
+// The town block: 87 real footprints as one project, all its extrusions.
+void Gallery_TownBlock(benchmark::State& state) {
+  const Document d = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/town.corbel").document;
+  for (auto _ : state)
+    for (const DocObject& o : d.objects)
+      if (const auto* s = std::get_if<ExtrusionSpec>(&o.spec)) benchmark::DoNotOptimize(corbel::extrude::extrude(*s).shell.faces.size());
+}
+BENCHMARK(Gallery_TownBlock)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

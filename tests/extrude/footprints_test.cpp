@@ -110,9 +110,12 @@ TEST(RealFootprints, MixedPerEdgeAnglesOverWalls) {
 }
 
 // Footprints that once failed (tests/data/extrude): two chains that are nearly antiparallel
-// must still cross over at a split, not reconnect each chain to itself.
+// must still cross over at a split, not reconnect each chain to itself (w387700951,
+// w180878574); sliver ridges between near-antiparallel edges must leave no face overlapping
+// its neighbour once every edge is split at the vertices on it (w177600540, w574863504).
 TEST(RegressionCases, OnceFailingFootprintsGiveClosedShells) {
-  for (const char* name : {"moosburg_w387700951.geojson", "moosburg_w180878574.geojson"}) {
+  for (const char* name : {"moosburg_w387700951.geojson", "moosburg_w180878574.geojson", "moosburg_w177600540.geojson",
+                           "moosburg_w574863504.geojson"}) {
     SCOPED_TRACE(name);
     const auto fps = readGeoJsonFile(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/" + name);
     ASSERT_EQ(fps.size(), 1u);
