@@ -19,7 +19,9 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <cstdint>
 #include <tuple>
+#include <unordered_map>
 
 namespace corbel::extrude {
 
@@ -86,7 +88,9 @@ class Stager {
   std::chrono::steady_clock::time_point started_;
 
   std::vector<Vec3> points_;
-  std::map<double, std::vector<int>> seams_;  // seam height → its vertices
+  // Seam height → its vertices, bucketed on a grid of cell δ2 for welding.
+  std::map<double, std::unordered_map<std::uint64_t, std::vector<int>>> seams_;
+  bool merging_ = false;  // from the first seam on, faces that continue one are joined
   std::vector<RawFace> faces_;
   std::multimap<std::tuple<int, int, int, int, int>, int> byKey_;
   std::vector<std::string> warnings_;
@@ -165,11 +169,21 @@ int Stager::point(const Vec3& p) {
 }
 
 int Stager::weld(const Vec2& p, double seam) {
-  auto& list = seams_[seam];
-  for (int v : list)
-    if (std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster) return v;
+  auto& grid = seams_[seam];
+  const double cell = tol_.cluster;
+  const auto ix = static_cast<std::int64_t>(std::floor(p[0] / cell)), iy = static_cast<std::int64_t>(std::floor(p[1] / cell));
+  auto key = [](std::int64_t x, std::int64_t y) {
+    return (static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull) ^ static_cast<std::uint64_t>(y);
+  };
+  for (std::int64_t dx = -1; dx <= 1; ++dx)
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      auto it = grid.find(key(ix + dx, iy + dy));
+      if (it == grid.end()) continue;
+      for (int v : it->second)
+        if (std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster) return v;
+    }
   const int v = point(Vec3(p[0], p[1], seam));
-  list.push_back(v);
+  grid[key(ix, iy)].push_back(v);
   return v;
 }
 
@@ -177,7 +191,7 @@ int Stager::weld(const Vec2& p, double seam) {
 void Stager::addFace(RawFace f) {
   if (f.segments.empty()) return;
   const ShellFace& i = f.info;
-  if (!i.base && (i.segment >= 0 || i.step >= 0)) {
+  if (merging_ && !i.base && (i.segment >= 0 || i.step >= 0)) {
     const auto key = std::make_tuple(i.sourceLoop, i.sourceEdge, i.step, i.profile, i.segment);
     const Vec3 p = points_[f.segments.front().first];
     auto range = byKey_.equal_range(key);
@@ -231,7 +245,8 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
   std::vector<int> map(out.points.size());
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     const Vec3& p = out.points[i];
-    if (std::abs(p[2] - z) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), z);
+    if (first && std::abs(p[2] - z) <= tol_.height) map[i] = point(p);  // the base: no seam below
+    else if (std::abs(p[2] - z) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), z);
     else if (std::abs(p[2] - next) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), next);
     else map[i] = point(p);
   }
@@ -573,6 +588,15 @@ ExtrusionResult Stager::run(double scale) {
     plan = runStage(plan, z, next, first);
     first = false;
     if (!std::isfinite(next)) break;
+    if (!merging_) {
+      // From here on, faces that continue across a seam are joined: index those made so far.
+      merging_ = true;
+      for (int k = 0; k < static_cast<int>(faces_.size()); ++k) {
+        const ShellFace& i = faces_[k].info;
+        if (!i.base && (i.segment >= 0 || i.step >= 0))
+          byKey_.emplace(std::make_tuple(i.sourceLoop, i.sourceEdge, i.step, i.profile, i.segment), k);
+      }
+    }
     z = next;
     plan = change(plan, z, false);
   }

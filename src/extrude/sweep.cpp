@@ -9,6 +9,7 @@
 #include "core/error.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -788,23 +789,30 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
                 std::vector<ShellFace>& faces, std::vector<std::string>& warnings) {
   for (const RawFace& rf : raw) {
     const ShellFace& f = rf.info;
-    // Drop zero-length pieces and pieces cancelled by their reverse (a face folded onto itself).
-    std::map<std::pair<int, int>, int> count;
-    for (auto [u, v] : rf.segments) {
-      if (u == v || (points_[u] - points_[v]).norm() <= tol_.cluster * 1e-3) continue;
-      auto rev = count.find({v, u});
-      if (rev != count.end() && rev->second > 0) {
-        --rev->second;
-        continue;
-      }
-      ++count[{u, v}];
-    }
-    std::multimap<int, int> from;
+    // Drop zero-length pieces and pieces cancelled by their reverse (a face folded onto itself):
+    // each piece keeps its count less its reverse's. Sorted vectors, not maps: faces are small
+    // and this runs for every face of every shell.
+    std::vector<std::pair<int, int>> all;
+    all.reserve(rf.segments.size());
+    for (auto [u, v] : rf.segments)
+      if (u != v && (points_[u] - points_[v]).norm() > tol_.cluster * 1e-3) all.emplace_back(u, v);
+    std::sort(all.begin(), all.end());
     std::vector<std::pair<int, int>> segs;
-    for (const auto& [uv, n] : count)
-      for (int i = 0; i < n; ++i) segs.push_back(uv);
+    for (std::size_t i = 0; i < all.size();) {
+      std::size_t j = i;
+      while (j < all.size() && all[j] == all[i]) ++j;
+      const auto rev = std::equal_range(all.begin(), all.end(), std::make_pair(all[i].second, all[i].first));
+      const long net = static_cast<long>(j - i) - static_cast<long>(rev.second - rev.first);
+      for (long k = 0; k < net; ++k) segs.push_back(all[i]);
+      i = j;
+    }
     if (segs.size() < 3) continue;
-    for (int i = 0; i < static_cast<int>(segs.size()); ++i) from.emplace(segs[i].first, i);
+    auto leaving = [&](int at) {
+      return std::equal_range(segs.begin(), segs.end(), at, [](const auto& a, const auto& b) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(a)>, int>) return a < b.first;
+        else return a.first < b;
+      });
+    };
 
     // 2D frame of the face plane, counter-clockwise seen from outside.
     Vec3 u = std::abs(f.normal[2]) < 0.9 ? OpenMesh::cross(Vec3(0, 0, 1), f.normal) : Vec3(1, 0, 0);
@@ -822,19 +830,27 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
         usedSeg[s] = 1;
         loop.push_back(segs[s].first);
         const int at = segs[s].second;
-        const Vec2 back = flat(segs[s].first) - flat(at);
+        const Vec2 back = flat(segs[s].first) - flat(at);  // used when several pieces leave `at`
         // Among the pieces leaving `at`, the first one clockwise from the way back.
-        int best = -1;
-        double bestTurn = 1e9;
-        auto range = from.equal_range(at);
-        for (auto it = range.first; it != range.second; ++it) {
-          if (usedSeg[it->second]) continue;
-          const Vec2 out = flat(segs[it->second].second) - flat(at);
-          double turn = std::atan2(cross2(out, back), OpenMesh::dot(out, back));  // clockwise angle back → out
-          if (turn <= 0) turn += 2 * std::numbers::pi;
-          if (turn < bestTurn) {
-            bestTurn = turn;
-            best = it->second;
+        int best = -1, candidates = 0;
+        const auto range = leaving(at);
+        for (auto it = range.first; it != range.second; ++it)
+          if (!usedSeg[it - segs.begin()]) {
+            ++candidates;
+            best = static_cast<int>(it - segs.begin());
+          }
+        if (candidates > 1) {
+          double bestTurn = 1e9;
+          for (auto it = range.first; it != range.second; ++it) {
+            const int k = static_cast<int>(it - segs.begin());
+            if (usedSeg[k]) continue;
+            const Vec2 out = flat(segs[k].second) - flat(at);
+            double turn = std::atan2(cross2(out, back), OpenMesh::dot(out, back));  // clockwise angle back → out
+            if (turn <= 0) turn += 2 * std::numbers::pi;
+            if (turn < bestTurn) {
+              bestTurn = turn;
+              best = k;
+            }
           }
         }
         s = best;
