@@ -59,6 +59,25 @@ struct PlanStep {
   bool operator==(const PlanStep&) const = default;
 };
 
+// A profile offset event (Sec. 3.3, 4.6, Fig. 17): at `height` above the base, an offset
+// region bounded by two offsets of the active plan is inserted into it (offsets outward) or
+// cut from it (offsets inward). Each active edge whose profile is listed takes part: its inside
+// and outside boundaries lie `inside` and `outside` metres out from it (negative: in), and the
+// new edges on them follow insideProfile and outsideProfile. Edges whose profile is not listed
+// are disabled (no offset region along them). Edges where the region ends follow sideProfile.
+struct OffsetEdge {
+  int profile = 0;
+  double inside = 0.0, outside = 0.5;
+  int insideProfile = 0, outsideProfile = 0;
+  bool operator==(const OffsetEdge&) const = default;
+};
+struct OffsetEvent {
+  double height = 0.0;
+  std::vector<OffsetEdge> edges;
+  int sideProfile = 0;
+  bool operator==(const OffsetEvent&) const = default;
+};
+
 // A named place on the shell (doors, windows): the kernel reports its position and frame.
 struct MeshAnchor {
   std::string name;
@@ -74,6 +93,7 @@ struct ExtrusionSpec {
   std::string roofMaterial;  // faces leaning inward; "" = material
   double baseZ = 0.0;
   std::vector<PlanStep> steps;
+  std::vector<OffsetEvent> offsets;
   std::vector<MeshAnchor> anchors;
   bool operator==(const ExtrusionSpec&) const = default;
 };

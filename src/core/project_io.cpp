@@ -125,6 +125,27 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
     }
     j["steps"] = std::move(steps);
   }
+  if (!e.offsets.empty()) {
+    ojson offsets = ojson::array();
+    for (const OffsetEvent& o : e.offsets) {
+      ojson oj;
+      oj["height"] = o.height;
+      oj["side_profile"] = e.profiles[o.sideProfile].name;
+      ojson edges = ojson::array();
+      for (const OffsetEdge& t : o.edges) {
+        ojson tj;
+        tj["profile"] = e.profiles[t.profile].name;
+        tj["inside"] = t.inside;
+        tj["outside"] = t.outside;
+        tj["inside_profile"] = e.profiles[t.insideProfile].name;
+        tj["outside_profile"] = e.profiles[t.outsideProfile].name;
+        edges.push_back(std::move(tj));
+      }
+      oj["edges"] = std::move(edges);
+      offsets.push_back(std::move(oj));
+    }
+    j["offsets"] = std::move(offsets);
+  }
   if (!e.anchors.empty()) {
     ojson anchors = ojson::array();
     for (const MeshAnchor& m : e.anchors) {
@@ -139,7 +160,7 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
 
 ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles", "steps", "anchors"}))
+  for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles", "steps", "offsets", "anchors"}))
     warnings.push_back(k + ": unknown key ignored");
   ExtrusionSpec e;
   if (auto v = r.find("material")) e.material = v->string(limits::kMaxNameLength);
@@ -240,6 +261,29 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
       st.frontProfile = profileIndex(sr.at("front_profile"));
       st.sideProfile = sr.find("side_profile") ? profileIndex(sr.at("side_profile")) : st.frontProfile;
       e.steps.push_back(std::move(st));
+    }
+  }
+  if (auto offsets = r.find("offsets")) {
+    for (const JsonReader& orr : offsets->array(limits::kMaxSteps)) {
+      orr.expectObject();
+      for (auto& k : orr.unknownKeys({"height", "side_profile", "edges"})) warnings.push_back(k + ": unknown key ignored");
+      OffsetEvent o;
+      o.height = orr.at("height").number(0.0, limits::kMaxCoordinate);
+      o.sideProfile = profileIndex(orr.at("side_profile"));
+      for (const JsonReader& tr : orr.at("edges").array(limits::kMaxProfiles)) {
+        tr.expectObject();
+        for (auto& k : tr.unknownKeys({"profile", "inside", "outside", "inside_profile", "outside_profile"}))
+          warnings.push_back(k + ": unknown key ignored");
+        OffsetEdge t;
+        t.profile = profileIndex(tr.at("profile"));
+        t.inside = tr.at("inside").number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+        t.outside = tr.at("outside").number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+        t.insideProfile = profileIndex(tr.at("inside_profile"));
+        t.outsideProfile = profileIndex(tr.at("outside_profile"));
+        o.edges.push_back(t);
+      }
+      if (o.edges.empty()) orr.at("edges").fail("an offset event needs at least one edge");
+      e.offsets.push_back(std::move(o));
     }
   }
   if (auto anchors = r.find("anchors")) {

@@ -114,6 +114,26 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
     for (int p : {st.frontProfile, st.sideProfile})
       if (p < 0 || p >= static_cast<int>(spec.profiles.size())) return at + ": no profile number " + std::to_string(p);
   }
+  for (std::size_t k = 0; k < spec.offsets.size(); ++k) {
+    const OffsetEvent& o = spec.offsets[k];
+    const std::string at = "offsets[" + std::to_string(k) + "]";
+    if (!std::isfinite(o.height) || o.height <= 0 || o.height > 1e5) return at + ".height: must be within (0, 1e5] m above the base";
+    auto badProfile = [&](int p) { return p < 0 || p >= static_cast<int>(spec.profiles.size()); };
+    if (badProfile(o.sideProfile)) return at + ".side_profile: no profile number " + std::to_string(o.sideProfile);
+    if (o.edges.empty()) return at + ".edges: an offset event needs at least one edge";
+    for (std::size_t j = 0; j < o.edges.size(); ++j) {
+      const OffsetEdge& e = o.edges[j];
+      const std::string ej = at + ".edges[" + std::to_string(j) + "]";
+      for (int p : {e.profile, e.insideProfile, e.outsideProfile})
+        if (badProfile(p)) return ej + ": no profile number " + std::to_string(p);
+      if (!std::isfinite(e.inside) || !std::isfinite(e.outside) || std::abs(e.outside) > 1e5)
+        return ej + ": offsets must be finite and within 1e5 m";
+      if (e.inside * e.outside < 0 || std::abs(e.outside) <= std::abs(e.inside))
+        return ej + ": the outside offset must lie beyond the inside one, on the same side of the edge";
+      if ((e.outside > 0) != (o.edges[0].outside > 0))
+        return ej + ": all offsets of one event must go the same way (all out, or all in)";
+    }
+  }
   for (std::size_t k = 0; k < spec.anchors.size(); ++k)
     if (auto bad = checkAnchor(spec.anchors[k].anchor, "anchors[" + std::to_string(k) + "].anchor")) return bad;
   return std::nullopt;

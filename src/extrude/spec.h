@@ -13,6 +13,8 @@ namespace corbel::extrude {
 using corbel::Anchor;
 using corbel::ExtrusionSpec;
 using corbel::MeshAnchor;
+using corbel::OffsetEdge;
+using corbel::OffsetEvent;
 using corbel::PlanStep;
 using corbel::StepShape;
 using corbel::PlanLoop;

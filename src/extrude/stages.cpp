@@ -13,6 +13,9 @@
 #include "core/error.h"
 #include "extrude/extrude.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_set_2.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -26,6 +29,11 @@
 namespace corbel::extrude {
 
 namespace {
+
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using EPolygon = CGAL::Polygon_2<EK>;
+using EPolygonH = CGAL::Polygon_with_holes_2<EK>;
+using EPolygonSet = CGAL::Polygon_set_2<EK>;
 
 double segmentAngle(const Vec2& a, const Vec2& b) { return std::atan2(b[0] - a[0], b[1] - a[1]); }
 Vec2 leftOf(const Vec2& d) { return Vec2(-d[1], d[0]); }
@@ -77,6 +85,8 @@ class Stager {
 
   Plan runStage(const Plan& plan, double z, double next, bool first);
   Plan change(const Plan& plan, double h, bool atBase);
+  Plan offset(const Plan& plan, double h, const OffsetEvent& ev, std::size_t index);
+  void addFlatRegion(const EPolygonH& region, double h, bool up, const ShellFace& info);
   std::optional<Located> locate(const Plan& plan, const Anchor& a) const;
   void frame(const Plan& plan, double h);
   void fixTJunctions();
@@ -497,6 +507,189 @@ Plan Stager::change(const Plan& plan, double h, bool atBase) {
   return result;
 }
 
+EPolygon toPolygon(const std::vector<Vec2>& pts) {
+  EPolygon p;
+  for (const Vec2& q : pts) p.push_back(EK::Point_2(q[0], q[1]));
+  if (p.size() >= 3 && p.is_simple() && p.is_clockwise_oriented()) p.reverse_orientation();
+  return p;
+}
+
+Vec2 toVec(const EK::Point_2& p) { return Vec2(CGAL::to_double(p.x()), CGAL::to_double(p.y())); }
+
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double len2 = OpenMesh::dot(d, d);
+  const double t = len2 > 0 ? std::clamp(OpenMesh::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  return (a + d * t - p).norm();
+}
+
+void Stager::addFlatRegion(const EPolygonH& region, double h, bool up, const ShellFace& info) {
+  RawFace f;
+  f.info = info;
+  f.info.normal = Vec3(0, 0, up ? 1 : -1);
+  auto add = [&](const EPolygon& p, [[maybe_unused]] bool ccw) {
+    std::vector<int> ids;
+    for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v) ids.push_back(weld(toVec(*v), h));
+    // CGAL gives outer boundaries counter-clockwise and holes clockwise from above: right as
+    // seen from outside for a face looking up; a face looking down is seen from below.
+    if (!up) std::reverse(ids.begin(), ids.end());
+    for (std::size_t k = 0; k < ids.size(); ++k) f.segments.emplace_back(ids[k], ids[(k + 1) % ids.size()]);
+  };
+  add(region.outer_boundary(), true);
+  for (auto hole = region.holes_begin(); hole != region.holes_end(); ++hole) add(*hole, false);
+  addFace(std::move(f));
+}
+
+// A profile offset event (Sec. 4.6): a recursive extrusion moves every listed edge out by its
+// inside distance over the first unit of height and by its outside distance over the second
+// (disabled edges stand still); its faces between the two heights, flattened, are the offset
+// region R (Fig. 18). Outward, R joins the active plan and its underside is a soffit; inward,
+// R is cut from the plan and its top is a ledge. The new plan's edges keep their profiles where
+// they lie on the old plan; elsewhere they follow the inside, outside or side profile of the
+// boundary they lie on. Booleans are CGAL's, exact.
+Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size_t index) {
+  const bool outward = ev.edges.front().outside > 0;
+  auto tupleOf = [&](const Active& a) -> const OffsetEdge* {
+    for (const OffsetEdge& t : ev.edges)
+      if (t.profile == a.profile) return &t;
+    return nullptr;
+  };
+  SweepInput in;
+  in.baseZ = 0;
+  in.stopZ = 2;
+  in.emitBase = false;
+  in.keepRaw = true;
+  in.timeLimitSeconds = remaining();
+  std::vector<const Active*> flat;
+  EPolygonSet active;
+  for (const auto& loop : plan) {
+    std::vector<SweepEdge> sl;
+    std::vector<Vec2> pts;
+    for (const Active& a : loop) {
+      const OffsetEdge* t = tupleOf(a);
+      SweepEdge e;
+      e.start = a.start;
+      e.sourceLoop = -1;
+      e.sourceEdge = static_cast<int>(flat.size());
+      // Distances are outward; k = tan θ moves an edge inward per unit of height.
+      e.steps.push_back({0.0, std::atan(t ? -t->inside : 0.0), 0});
+      e.steps.push_back({1.0, std::atan(t ? -t->outside : 0.0), 1});
+      sl.push_back(e);
+      flat.push_back(&a);
+      pts.push_back(a.start);
+    }
+    in.loops.push_back(std::move(sl));
+    const EPolygon p = toPolygon(pts);
+    if (p.size() >= 3 && p.is_simple()) active.symmetric_difference(p);
+  }
+  SweepOutput out = sweep(in, tol_, progress_);
+  events_ += out.events;
+  for (auto& w : out.warnings) warnings_.push_back(w + " (in the offset event at height " + std::to_string(h) + ")");
+
+  // R, and the pieces of its two boundaries by the edge they come from.
+  struct Piece {
+    Vec2 a, b;
+    int edge;
+    int boundary;  // 0 inside, 1 outside
+  };
+  std::vector<Piece> pieces;
+  std::vector<RawFace> second;
+  for (RawFace& f : out.raw) {
+    const Active* a = flat[f.info.sourceEdge];
+    if (f.info.segment != 1 || !tupleOf(*a)) continue;
+    for (auto [u, v] : f.segments) {
+      const Vec3 &p = out.points[u], &q = out.points[v];
+      for (int b : {0, 1})
+        if (std::abs(p[2] - (1 + b)) <= tol_.height && std::abs(q[2] - (1 + b)) <= tol_.height)
+          pieces.push_back({Vec2(p[0], p[1]), Vec2(q[0], q[1]), f.info.sourceEdge, b});
+    }
+    second.push_back(std::move(f));
+  }
+  std::vector<ShellFace> faces;
+  std::vector<std::string> ignored;
+  traceFaces(out.points, second, tol_, faces, ignored);
+  EPolygonSet region;
+  for (const ShellFace& f : faces) {
+    if (std::abs(f.normal[2]) < 1e-9) continue;  // vertical: the edge did not move
+    for (const auto& loop : f.loops) {
+      std::vector<Vec2> pts;
+      for (int v : loop) pts.emplace_back(out.points[v][0], out.points[v][1]);
+      const EPolygon p = toPolygon(pts);
+      if (p.size() < 3 || !p.is_simple() || p.area() == 0) continue;
+      EPolygonSet piece(p);
+      region.join(piece);
+    }
+  }
+  EPolygonSet next = active, flats = region;
+  if (outward) {
+    next.join(region);
+    flats.difference(active);
+  } else {
+    next.difference(region);
+    flats.intersection(active);
+  }
+  ShellFace info;
+  info.angle = outward ? -std::numbers::pi / 2 : std::numbers::pi / 2;
+  std::vector<EPolygonH> regions;
+  flats.polygons_with_holes(std::back_inserter(regions));
+  for (const EPolygonH& r : regions) addFlatRegion(r, h, !outward, info);
+
+  // The new plan, edge by edge.
+  auto classify = [&](const Vec2& a, const Vec2& b) {
+    const Vec2 mid = (a + b) * 0.5;
+    Vec2 d = b - a;
+    d.normalize();
+    for (const auto& loop : plan)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Vec2 &p = loop[i].start, &q = loop[(i + 1) % loop.size()].start;
+        Vec2 e = q - p;
+        if (e.norm() == 0) continue;
+        e.normalize();
+        if (OpenMesh::dot(d, e) > 1 - 1e-9 && distanceToSegment(mid, p, q) <= tol_.cluster) return loop[i];
+      }
+    Active n;
+    n.z0 = h;
+    n.profile = ev.sideProfile;
+    double best = tol_.cluster;
+    for (const Piece& pc : pieces) {
+      const double dist = distanceToSegment(mid, pc.a, pc.b);
+      if (dist > best) continue;
+      best = dist;
+      const Active& src = *flat[pc.edge];
+      const OffsetEdge* t = tupleOf(src);
+      n.profile = pc.boundary == 0 ? t->insideProfile : t->outsideProfile;
+      n.sourceLoop = src.sourceLoop;
+      n.sourceEdge = src.sourceEdge;
+      n.step = src.step;
+    }
+    return n;
+  };
+  regions.clear();
+  next.polygons_with_holes(std::back_inserter(regions));
+  Plan result;
+  auto addLoop = [&](const EPolygon& p) {
+    std::vector<Vec2> pts;
+    for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v) pts.push_back(toVec(*v));
+    std::vector<Active> l;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      Active a = classify(pts[i], pts[(i + 1) % pts.size()]);
+      a.start = pts[i];
+      a.vertex = weld(pts[i], h);
+      if (!l.empty() && l.back().vertex == a.vertex) l.pop_back();
+      l.push_back(a);
+    }
+    while (l.size() > 1 && l.back().vertex == l.front().vertex) l.pop_back();
+    if (l.size() >= 3) result.push_back(std::move(l));
+  };
+  for (const EPolygonH& r : regions) {
+    addLoop(r.outer_boundary());
+    for (auto hole = r.holes_begin(); hole != r.holes_end(); ++hole) addLoop(*hole);
+  }
+  if (result.empty())
+    warnings_.push_back("offsets[" + std::to_string(index) + "]: the offset removed the whole plan at height " + std::to_string(h));
+  return result;
+}
+
 // Every boundary piece is split at the shell's vertices that lie on it, so faces meet edge to
 // edge: faces from different stages along a seam, and the pieces of one face where simultaneous
 // events left a long top opposite several short ones (ambiguous events along one line,
@@ -585,6 +778,10 @@ ExtrusionResult Stager::run(double scale) {
       const double ha = spec_.baseZ + m.anchor.height;
       if (ha > z + tol_.height) next = std::min(next, ha);
     }
+    for (const OffsetEvent& o : spec_.offsets) {
+      const double ho = spec_.baseZ + o.height;
+      if (ho > z + tol_.height) next = std::min(next, ho);
+    }
     plan = runStage(plan, z, next, first);
     first = false;
     if (!std::isfinite(next)) break;
@@ -599,6 +796,9 @@ ExtrusionResult Stager::run(double scale) {
     }
     z = next;
     plan = change(plan, z, false);
+    for (std::size_t k = 0; k < spec_.offsets.size(); ++k)
+      if (!plan.empty() && std::abs(spec_.baseZ + spec_.offsets[k].height - z) <= tol_.height)
+        plan = offset(plan, z, spec_.offsets[k], k);
   }
   for (std::size_t si = 0; si < spec_.steps.size(); ++si)
     if (!stepDone_[si] && std::none_of(warnings_.begin(), warnings_.end(), [&](const std::string& w) {

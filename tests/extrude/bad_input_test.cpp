@@ -120,6 +120,17 @@ TEST(BadInput, StepsAndAnchors) {
   s.steps[0].sideProfile = 3;
   EXPECT_FAULT(s, "steps[0]: no profile number 3");
   s.steps.clear();
+  s.offsets = {{3.0, {{0, 0.0, 0.5, 0, 0}, {0, -0.1, -0.5, 0, 0}}, 0}};
+  EXPECT_FAULT(s, "offsets[0].edges[1]: all offsets of one event must go the same way (all out, or all in)");
+  s.offsets = {{3.0, {{0, 0.5, 0.2, 0, 0}}, 0}};
+  EXPECT_FAULT(s, "offsets[0].edges[0]: the outside offset must lie beyond the inside one, on the same side of the edge");
+  s.offsets = {{3.0, {}, 0}};
+  EXPECT_FAULT(s, "offsets[0].edges: an offset event needs at least one edge");
+  s.offsets = {{0.0, {{0, 0.0, 0.5, 0, 0}}, 0}};
+  EXPECT_FAULT(s, "offsets[0].height: must be within (0, 1e5] m above the base");
+  s.offsets = {{3.0, {{0, 0.0, 0.5, 0, 9}}, 0}};
+  EXPECT_FAULT(s, "offsets[0].edges[0]: no profile number 9");
+  s.offsets.clear();
   s.anchors = {{"door", {0, 0, true, -1e9, 0}}};
   EXPECT_EQ(faultOf(s), "<accepted>") << "an absolute anchor may lie beyond its edge (it is then not instanced)";
   s.anchors[0].anchor.height = -1;

@@ -163,6 +163,55 @@ TEST(Steps, BayWindowsWithBothPriorities) {
   }
 }
 
+// Profile offset events (Sec. 4.6, Fig. 17): the offset region joins the plan (outward) or is
+// cut from it (inward).
+ExtrusionSpec offsetHouse(std::vector<Profile> profiles, std::vector<int> perEdge, OffsetEvent ev) {
+  ExtrusionSpec s;
+  s.profiles = std::move(profiles);
+  s.loops.push_back({rectangle(10, 6), std::move(perEdge)});
+  s.offsets.push_back(std::move(ev));
+  return s;
+}
+
+TEST(Steps, OffsetEventOverhangingRoof) {
+  // Fig. 17 b: the region between the plan and its 0.5 m offset joins the plan at the top of
+  // the walls; the roof rises from the outer boundary.
+  const Profile wall = polyline("wall", {{0, 0}, {0, 3}, {3, 6}});
+  const Profile roof = polyline("roof", {{0, 0}, {1, 1}});
+  const Checked c = run(offsetHouse({wall, roof}, {0, 0, 0, 0}, {3.0, {{0, 0.0, 0.5, 1, 1}}, 1}));
+  EXPECT_NEAR(c.m.soffitArea, 11 * 7 - 60, 1e-9);
+  EXPECT_NEAR(c.m.roofArea, 11 * 7 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(c.m.volume, 60 * 3 + 49 * (33 - 7) / 12.0, 1e-9);
+  EXPECT_NEAR(c.m.maxHeight, 6.5, 1e-12);
+}
+
+TEST(Steps, OffsetEventOpenGable) {
+  // Fig. 17 c: the gable edges are disabled (their profile is not listed), so the eaves
+  // overhang and the roof stays open-ended over the gables.
+  const Profile eaves = polyline("eaves", {{0, 0}, {0, 3}, {3, 6}});
+  const Profile gable = polyline("gable", {{0, 0}, {0, 1}});
+  const Profile roof = polyline("roof", {{0, 0}, {1, 1}});
+  const Checked c = run(offsetHouse({eaves, gable, roof}, {0, 1, 0, 1}, {3.0, {{0, 0.0, 0.5, 2, 2}}, 1}));
+  EXPECT_NEAR(c.m.soffitArea, 2 * 10 * 0.5, 1e-9);
+  EXPECT_NEAR(c.m.volume, 60 * 3 + 10 * (7 * 3.5 / 2), 1e-9);
+  EXPECT_NEAR(c.m.roofArea, 2 * 10 * 3.5 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(c.m.maxHeight, 6.5, 1e-12);
+}
+
+TEST(Steps, OffsetEventWalledRoof) {
+  // Fig. 17 d: offsets inward: everything deeper than 0.3 m is cut from the plan at 3 m, a
+  // flat roof; the 0.3 m ring left rises 1 m as a parapet and closes flat.
+  const Profile wall = polyline("wall", {{0, 0}, {0, 4}, {0.3, 4}, {1.3, 5}});
+  const Profile inner = polyline("parapet inside", {{0, 0}, {0, 2}});
+  const Checked c = run(offsetHouse({wall, inner}, {0, 0, 0, 0}, {3.0, {{0, -0.3, -1000, 1, 1}}, 1}));
+  const double inside = 9.4 * 5.4, ring = 60 - inside;
+  EXPECT_NEAR(c.m.volume, 60 * 3 + ring * 1, 1e-9);
+  EXPECT_NEAR(c.m.roofArea, inside + ring, 1e-9);  // the flat roof and the parapet's top
+  EXPECT_NEAR(c.m.wallArea, 2 * (10 + 6) * 4 + 2 * (9.4 + 5.4) * 1, 1e-9);
+  EXPECT_NEAR(c.m.maxHeight, 4.0, 1e-12);
+  EXPECT_EQ(c.r.shell.faces.size(), 14u);  // base, 4 walls, flat roof, 4 parapet insides, 4 tops
+}
+
 TEST(Steps, MeshAnchorsReportTheirFrame) {
   ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
   s.anchors.push_back({"door", {0, 0, true, 4.0, 0.0}});

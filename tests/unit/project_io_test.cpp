@@ -517,6 +517,7 @@ corbel::ExtrusionSpec sampleExtrusion() {
   bay.frontProfile = bay.sideProfile = 1;
   e.steps = {dormer, bay};
   e.anchors = {{"door", {0, 0, true, 4.5, 0.0}}};
+  e.offsets = {{2.5, {{1, -0.3, -100, 1, 0}}, 0}};
   return e;
 }
 
