@@ -47,7 +47,9 @@ struct Anchor {
 // anchor and grown by a recursive extrusion to its size, so it never self-intersects.
 // Rectangle (dormers, chimneys, buttresses): `width` along the edge, `depth` out. Bay: an
 // opening `width` wide in the edge, a front `depth` out and `cant` narrower on each side.
-enum class StepShape { Rectangle, Bay };
+// Forced (Sec. 3.5): `points`, a simple polygon in the anchor's frame (u along the edge,
+// v outward, metres), unioned with the active plan; its new edges follow frontProfile.
+enum class StepShape { Rectangle, Bay, Forced };
 struct PlanStep {
   std::string name;
   Anchor anchor;
@@ -56,6 +58,7 @@ struct PlanStep {
   double depth = 0.5;  // outward from the active edge, m (negative: a recess into the plan)
   double cant = 0.0;   // bay: how much narrower the front is on each side, m
   int frontProfile = 0, sideProfile = 0;
+  std::vector<Vec2> points;  // forced steps only
   bool operator==(const PlanStep&) const = default;
 };
 

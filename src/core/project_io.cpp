@@ -115,9 +115,16 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
       ojson sj;
       if (!st.name.empty()) sj["name"] = st.name;
       sj["anchor"] = anchorJson(st.anchor);
-      sj["shape"] = st.shape == StepShape::Bay ? "bay" : "rectangle";
-      sj["width"] = st.width;
-      sj["depth"] = st.depth;
+      sj["shape"] = st.shape == StepShape::Bay ? "bay" : st.shape == StepShape::Forced ? "forced" : "rectangle";
+      if (!st.points.empty()) {
+        ojson pts = ojson::array();
+        for (const Vec2& q : st.points) pts.push_back(vec2(q));
+        sj["points"] = std::move(pts);
+      }
+      if (st.shape != StepShape::Forced) {
+        sj["width"] = st.width;
+        sj["depth"] = st.depth;
+      }
       if (st.shape == StepShape::Bay || st.cant != 0) sj["cant"] = st.cant;
       sj["front_profile"] = e.profiles[st.frontProfile].name;
       sj["side_profile"] = e.profiles[st.sideProfile].name;
@@ -245,7 +252,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   if (auto steps = r.find("steps")) {
     for (const JsonReader& sr : steps->array(limits::kMaxSteps)) {
       sr.expectObject();
-      for (auto& k : sr.unknownKeys({"name", "anchor", "shape", "width", "depth", "cant", "front_profile", "side_profile"}))
+      for (auto& k : sr.unknownKeys({"name", "anchor", "shape", "width", "depth", "cant", "front_profile", "side_profile", "points"}))
         warnings.push_back(k + ": unknown key ignored");
       PlanStep st;
       if (auto v = sr.find("name")) st.name = v->string(limits::kMaxNameLength);
@@ -253,10 +260,15 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
       if (auto v = sr.find("shape")) {
         const std::string shape = v->string(32);
         if (shape == "bay") st.shape = StepShape::Bay;
-        else if (shape != "rectangle") v->fail("expected \"rectangle\" or \"bay\", found \"" + shape + "\"");
+        else if (shape == "forced") st.shape = StepShape::Forced;
+        else if (shape != "rectangle") v->fail("expected \"rectangle\", \"bay\" or \"forced\", found \"" + shape + "\"");
       }
-      st.width = sr.at("width").number(0.0, limits::kMaxCoordinate);
-      st.depth = sr.at("depth").number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (st.shape == StepShape::Forced) {
+        for (const JsonReader& q : sr.at("points").array(limits::kMaxProfilePoints)) st.points.push_back(q.vec2());
+      } else {
+        st.width = sr.at("width").number(0.0, limits::kMaxCoordinate);
+        st.depth = sr.at("depth").number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+      }
       if (auto v = sr.find("cant")) st.cant = v->number(0.0, limits::kMaxCoordinate);
       st.frontProfile = profileIndex(sr.at("front_profile"));
       st.sideProfile = sr.find("side_profile") ? profileIndex(sr.at("side_profile")) : st.frontProfile;

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "extrude/plan_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -105,6 +106,23 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
     const PlanStep& st = spec.steps[si];
     const std::string at = "steps[" + std::to_string(si) + "]";
     if (auto bad = checkAnchor(st.anchor, at + ".anchor")) return bad;
+    if (st.shape == StepShape::Forced) {
+      if (st.points.size() < 3) return at + ".points: a forced step needs a polygon of at least three points";
+      for (std::size_t i = 0; i < st.points.size(); ++i)
+        if (!finite(st.points[i]) || std::abs(st.points[i][0]) > 1e5 || std::abs(st.points[i][1]) > 1e5)
+          return at + ".points[" + std::to_string(i) + "]: coordinates must be finite and within 1e5 m";
+      std::vector<Vec2> poly = st.points;
+      double area = 0;
+      for (std::size_t i = 0; i < poly.size(); ++i) area += poly[i][0] * poly[(i + 1) % poly.size()][1] - poly[(i + 1) % poly.size()][0] * poly[i][1];
+      if (area < 0) std::reverse(poly.begin(), poly.end());
+      if (auto bad = checkPlanTopology({poly})) {
+        const auto colon = bad->find(": ");
+        return at + ".points: " + (colon == std::string::npos ? *bad : bad->substr(colon + 2));
+      }
+      for (int p : {st.frontProfile})
+        if (p < 0 || p >= static_cast<int>(spec.profiles.size())) return at + ": no profile number " + std::to_string(p);
+      continue;
+    }
     if (!std::isfinite(st.width) || st.width <= tol.minEdge * 1e3) return at + ".width: must be positive";
     if (!std::isfinite(st.depth) || std::abs(st.depth) <= tol.minEdge * 1e3)
       return at + ".depth: must be non-zero (negative for a recess)";

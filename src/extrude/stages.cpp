@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -86,6 +87,9 @@ class Stager {
   Plan runStage(const Plan& plan, double z, double next, bool first);
   Plan change(const Plan& plan, double h, bool atBase);
   Plan offset(const Plan& plan, double h, const OffsetEvent& ev, std::size_t index);
+  Plan forcedSteps(const Plan& plan, double h, bool atBase);
+  Plan rebuild(const Plan& old, const EPolygonSet& next, double h, const std::function<Active(const Vec2&)>& other,
+              bool atBase = false);
   void addFlatRegion(const EPolygonH& region, double h, bool up, const ShellFace& info);
   std::optional<Located> locate(const Plan& plan, const Anchor& a) const;
   void frame(const Plan& plan, double h);
@@ -376,7 +380,8 @@ Plan Stager::change(const Plan& plan, double h, bool atBase) {
   std::vector<Placed> placed;
   for (std::size_t si = 0; si < spec_.steps.size(); ++si) {
     const PlanStep& st = spec_.steps[si];
-    if (stepDone_[si] || std::abs(spec_.baseZ + st.anchor.height - h) > tol_.height) continue;
+    if (st.shape == StepShape::Forced || stepDone_[si] || std::abs(spec_.baseZ + st.anchor.height - h) > tol_.height)
+      continue;
     stepDone_[si] = 1;
     const std::string name = "steps[" + std::to_string(si) + "]" + (st.name.empty() ? "" : " (" + st.name + ")");
     const auto at = locate(plan, st.anchor);
@@ -540,6 +545,116 @@ void Stager::addFlatRegion(const EPolygonH& region, double h, bool up, const She
   addFace(std::move(f));
 }
 
+EPolygonSet planSet(const Plan& plan) {
+  EPolygonSet set;
+  for (const auto& loop : plan) {
+    std::vector<Vec2> pts;
+    for (const Active& a : loop) pts.push_back(a.start);
+    const EPolygon p = toPolygon(pts);
+    if (p.size() >= 3 && p.is_simple()) set.symmetric_difference(p);
+  }
+  return set;
+}
+
+// The active plan after a Boolean change: an edge lying on an edge of the old plan (same way
+// round) keeps what that edge was; any other edge is what `other` says for its midpoint.
+Plan Stager::rebuild(const Plan& old, const EPolygonSet& next, double h, const std::function<Active(const Vec2&)>& other,
+                     bool atBase) {
+  auto classify = [&](const Vec2& a, const Vec2& b) {
+    const Vec2 mid = (a + b) * 0.5;
+    Vec2 d = b - a;
+    d.normalize();
+    for (const auto& loop : old)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Vec2 &p = loop[i].start, &q = loop[(i + 1) % loop.size()].start;
+        Vec2 e = q - p;
+        if (e.norm() == 0) continue;
+        e.normalize();
+        if (OpenMesh::dot(d, e) > 1 - 1e-9 && distanceToSegment(mid, p, q) <= tol_.cluster) return loop[i];
+      }
+    return other(mid);
+  };
+  std::vector<EPolygonH> regions;
+  next.polygons_with_holes(std::back_inserter(regions));
+  Plan result;
+  auto addLoop = [&](const EPolygon& p) {
+    std::vector<Vec2> pts;
+    for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v) pts.push_back(toVec(*v));
+    std::vector<Active> l;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      Active a = classify(pts[i], pts[(i + 1) % pts.size()]);
+      a.start = pts[i];
+      a.vertex = atBase ? -1 : weld(pts[i], h);  // the base's vertices are made by the first stage
+      l.push_back(a);
+    }
+    if (l.size() >= 3) result.push_back(std::move(l));
+  };
+  for (const EPolygonH& r : regions) {
+    addLoop(r.outer_boundary());
+    for (auto hole = r.holes_begin(); hole != r.holes_end(); ++hole) addLoop(*hole);
+  }
+  return result;
+}
+
+// Forced steps (Sec. 3.5, 4.7): arbitrary polygons, placed in the frame of their anchor,
+// unioned with the active plan (exactly, so the plan never self-intersects); the part outside
+// the old plan gets a soffit, the new edges the step's front profile.
+Plan Stager::forcedSteps(const Plan& plan, double h, bool atBase) {
+  struct Placed {
+    std::size_t si;
+    std::vector<Vec2> pts;
+  };
+  std::vector<Placed> placed;
+  for (std::size_t si = 0; si < spec_.steps.size(); ++si) {
+    const PlanStep& st = spec_.steps[si];
+    if (st.shape != StepShape::Forced || stepDone_[si] || std::abs(spec_.baseZ + st.anchor.height - h) > tol_.height)
+      continue;
+    stepDone_[si] = 1;
+    const auto at = locate(plan, st.anchor);
+    if (!at) {
+      warnings_.push_back("steps[" + std::to_string(si) + "]" + (st.name.empty() ? "" : " (" + st.name + ")") +
+                          ": not placed: its edge is not in the active plan at height " + std::to_string(h));
+      continue;
+    }
+    const Vec2 o = -leftOf(at->d);
+    Placed p{si, {}};
+    for (const Vec2& q : st.points) p.pts.push_back(at->at + at->d * q[0] + o * q[1]);
+    placed.push_back(std::move(p));
+  }
+  if (placed.empty()) return plan;
+  const EPolygonSet active = planSet(plan);
+  EPolygonSet added;
+  for (const Placed& p : placed) added.join(toPolygon(p.pts));
+  EPolygonSet next = active, flats = added;
+  next.join(added);
+  flats.difference(active);
+  std::vector<EPolygonH> regions;
+  flats.polygons_with_holes(std::back_inserter(regions));
+  for (const EPolygonH& r : regions) {
+    if (atBase) break;  // the base face covers it
+    ShellFace info;
+    info.angle = -std::numbers::pi / 2;
+    addFlatRegion(r, h, false, info);
+  }
+  return rebuild(plan, next, h, [&](const Vec2& mid) {
+    Active n;
+    n.z0 = h;
+    n.profile = spec_.steps[placed.front().si].frontProfile;
+    n.step = static_cast<int>(placed.front().si);
+    double best = std::numeric_limits<double>::infinity();
+    for (const Placed& p : placed)
+      for (std::size_t k = 0; k < p.pts.size(); ++k) {
+        const double dist = distanceToSegment(mid, p.pts[k], p.pts[(k + 1) % p.pts.size()]);
+        if (dist >= best) continue;
+        best = dist;
+        n.profile = spec_.steps[p.si].frontProfile;
+        n.step = static_cast<int>(p.si);
+        n.sourceEdge = static_cast<int>(k);
+      }
+    return n;
+  }, atBase);
+}
+
 // A profile offset event (Sec. 4.6): a recursive extrusion moves every listed edge out by its
 // inside distance over the first unit of height and by its outside distance over the second
 // (disabled edges stand still); its faces between the two heights, flattened, are the offset
@@ -561,10 +676,9 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
   in.keepRaw = true;
   in.timeLimitSeconds = remaining();
   std::vector<const Active*> flat;
-  EPolygonSet active;
+  const EPolygonSet active = planSet(plan);
   for (const auto& loop : plan) {
     std::vector<SweepEdge> sl;
-    std::vector<Vec2> pts;
     for (const Active& a : loop) {
       const OffsetEdge* t = tupleOf(a);
       SweepEdge e;
@@ -576,11 +690,8 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
       e.steps.push_back({1.0, std::atan(t ? -t->outside : 0.0), 1});
       sl.push_back(e);
       flat.push_back(&a);
-      pts.push_back(a.start);
     }
     in.loops.push_back(std::move(sl));
-    const EPolygon p = toPolygon(pts);
-    if (p.size() >= 3 && p.is_simple()) active.symmetric_difference(p);
   }
   SweepOutput out = sweep(in, tol_, progress_);
   events_ += out.events;
@@ -634,19 +745,8 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
   flats.polygons_with_holes(std::back_inserter(regions));
   for (const EPolygonH& r : regions) addFlatRegion(r, h, !outward, info);
 
-  // The new plan, edge by edge.
-  auto classify = [&](const Vec2& a, const Vec2& b) {
-    const Vec2 mid = (a + b) * 0.5;
-    Vec2 d = b - a;
-    d.normalize();
-    for (const auto& loop : plan)
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        const Vec2 &p = loop[i].start, &q = loop[(i + 1) % loop.size()].start;
-        Vec2 e = q - p;
-        if (e.norm() == 0) continue;
-        e.normalize();
-        if (OpenMesh::dot(d, e) > 1 - 1e-9 && distanceToSegment(mid, p, q) <= tol_.cluster) return loop[i];
-      }
+  // The new plan, edge by edge: edges off the old plan lie on a boundary piece.
+  Plan result = rebuild(plan, next, h, [&](const Vec2& mid) {
     Active n;
     n.z0 = h;
     n.profile = ev.sideProfile;
@@ -663,28 +763,7 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
       n.step = src.step;
     }
     return n;
-  };
-  regions.clear();
-  next.polygons_with_holes(std::back_inserter(regions));
-  Plan result;
-  auto addLoop = [&](const EPolygon& p) {
-    std::vector<Vec2> pts;
-    for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v) pts.push_back(toVec(*v));
-    std::vector<Active> l;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      Active a = classify(pts[i], pts[(i + 1) % pts.size()]);
-      a.start = pts[i];
-      a.vertex = weld(pts[i], h);
-      if (!l.empty() && l.back().vertex == a.vertex) l.pop_back();
-      l.push_back(a);
-    }
-    while (l.size() > 1 && l.back().vertex == l.front().vertex) l.pop_back();
-    if (l.size() >= 3) result.push_back(std::move(l));
-  };
-  for (const EPolygonH& r : regions) {
-    addLoop(r.outer_boundary());
-    for (auto hole = r.holes_begin(); hole != r.holes_end(); ++hole) addLoop(*hole);
-  }
+  });
   if (result.empty())
     warnings_.push_back("offsets[" + std::to_string(index) + "]: the offset removed the whole plan at height " + std::to_string(h));
   return result;
@@ -760,6 +839,7 @@ ExtrusionResult Stager::run(double scale) {
   }
   double z = spec_.baseZ;
   plan = change(plan, z, true);  // steps standing on the base (buttresses, bays)
+  plan = forcedSteps(plan, z, true);
   bool first = true;
   while (!plan.empty()) {
     double next = std::numeric_limits<double>::infinity();
@@ -796,6 +876,7 @@ ExtrusionResult Stager::run(double scale) {
     }
     z = next;
     plan = change(plan, z, false);
+    plan = forcedSteps(plan, z, false);
     for (std::size_t k = 0; k < spec_.offsets.size(); ++k)
       if (!plan.empty() && std::abs(spec_.baseZ + spec_.offsets[k].height - z) <= tol_.height)
         plan = offset(plan, z, spec_.offsets[k], k);

@@ -163,6 +163,48 @@ TEST(Steps, BayWindowsWithBothPriorities) {
   }
 }
 
+TEST(Steps, ForcedStepMatchesTheNaturalOneWhereNothingIntervenes) {
+  // The buttress above as a forced step: the same rectangle, unioned with the plan instead
+  // of grown; away from corners the two constructions must agree.
+  ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+  s.profiles.push_back(polyline("buttress front", {{0, 0}, {0, 2}, {1, 3}, {2, 4}}));
+  PlanStep b;
+  b.shape = StepShape::Forced;
+  b.anchor = {0, 0, true, 2.5, 0.0};
+  b.points = {{-0.5, 0}, {-0.5, 1}, {0.5, 1}, {0.5, 0}};
+  b.frontProfile = 1;
+  s.steps.push_back(b);
+  // Every new edge of a forced step takes its front profile, so the oracle is the same
+  // rectangle as a natural step with that profile on its front and sides.
+  ExtrusionSpec natural = s;
+  natural.steps[0].shape = StepShape::Rectangle;
+  natural.steps[0].width = 1;
+  natural.steps[0].depth = 1;
+  natural.steps[0].frontProfile = natural.steps[0].sideProfile = 1;
+  const Checked f = run(s), n = run(natural);
+  EXPECT_NEAR(f.m.volume, n.m.volume, 1e-9 * n.m.volume);
+  EXPECT_NEAR(f.m.roofArea, n.m.roofArea, 1e-9 * n.m.roofArea);
+  EXPECT_NEAR(f.m.wallArea, n.m.wallArea, 1e-9 * n.m.wallArea);
+  EXPECT_NEAR(f.m.baseArea, 61, 1e-9);
+}
+
+TEST(Steps, ForcedStepAcrossACornerIsUnionedExactly) {
+  // A 2 × 1 block placed across the front-right corner at the top of the walls: the part
+  // outside the plan (2 m × 1 m in front of the wall, plus nothing beside it) overhangs, and
+  // the plan at 3 m is the exact union, so the soffit is the block less the plan.
+  ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+  s.profiles.push_back(polyline("block", {{0, 0}, {0, 1}, {1, 2}}));
+  PlanStep b;
+  b.shape = StepShape::Forced;
+  b.anchor = {0, 0, true, 9.5, 3.0};
+  b.points = {{-1, -0.5}, {-1, 1}, {1, 1}, {1, -0.5}};  // x 8.5 … 10.5, y −1 … 0.5
+  b.frontProfile = 1;
+  s.steps.push_back(b);
+  const Checked c = run(s);
+  // The block outside the plan: 2 × 1 in front, plus 0.5 × 0.5 beside the side wall.
+  EXPECT_NEAR(c.m.soffitArea, 2 * 1 + 0.5 * 0.5, 1e-9);
+}
+
 // Profile offset events (Sec. 4.6, Fig. 17): the offset region joins the plan (outward) or is
 // cut from it (inward).
 ExtrusionSpec offsetHouse(std::vector<Profile> profiles, std::vector<int> perEdge, OffsetEvent ev) {

@@ -515,7 +515,12 @@ corbel::ExtrusionSpec sampleExtrusion() {
   bay.shape = corbel::StepShape::Bay;
   bay.cant = 0.5;
   bay.frontProfile = bay.sideProfile = 1;
-  e.steps = {dormer, bay};
+  corbel::PlanStep forced;
+  forced.shape = corbel::StepShape::Forced;
+  forced.anchor = {0, 1, false, 0.5, 1.0};
+  forced.points = {{-1, 0}, {0, 2}, {1, 0}};
+  forced.frontProfile = 1;
+  e.steps = {dormer, bay, forced};
   e.anchors = {{"door", {0, 0, true, 4.5, 0.0}}};
   e.offsets = {{2.5, {{1, -0.3, -100, 1, 0}}, 0}};
   return e;
@@ -561,7 +566,7 @@ TEST(ProjectIoErrors, ExtrusionFaultsNameTheirPath) {
   EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "steps": [{"anchor": {"loop": 0, "edge": 0, "fraction": 0.5, "at": 2}, "width": 1, "depth": 1, "front_profile": "hip"}])"),
                "objects[0].extrusion.steps[0].anchor", R"(give either "fraction" (relative anchor) or "at" (absolute anchor), not both)");
   EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "steps": [{"anchor": {"loop": 0, "edge": 0}, "width": 1, "depth": 1, "shape": "dome", "front_profile": "hip"}])"),
-               "objects[0].extrusion.steps[0].shape", R"(expected "rectangle" or "bay", found "dome")");
+               "objects[0].extrusion.steps[0].shape", R"(expected "rectangle", "bay" or "forced", found "dome")");
   EXPECT_FAULT_CONTAINS(withExtrusion(profiles + plan + R"(, "anchors": [{"loop": 0, "edge": 0, "fraction": 1.5, "name": "a"}])"),
                         "objects[0].extrusion.anchors[0].fraction", "1.5");
   EXPECT_FAULT(withExtrusion(profiles), "objects[0].extrusion.plan", "missing");
