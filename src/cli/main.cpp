@@ -288,6 +288,23 @@ int cmdExtrude(const Args& a) {
         j["wall_area"] = r.measures.wallArea;
         j["volume"] = r.measures.volume;
         j["max_height"] = r.measures.maxHeight;
+        if (!r.anchors.empty()) {
+          auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v[0], v[1], v[2]}); };
+          nlohmann::ordered_json anchors = nlohmann::ordered_json::array();
+          for (const auto& a : r.anchors) {
+            nlohmann::ordered_json aj;
+            aj["name"] = a.name;
+            aj["instanced"] = a.instanced;
+            if (a.instanced) {
+              aj["position"] = vec(a.position);
+              aj["along"] = vec(a.along);
+              aj["normal"] = vec(a.normal);
+              aj["up"] = vec(a.up);
+            }
+            anchors.push_back(std::move(aj));
+          }
+          j["anchors"] = std::move(anchors);
+        }
       } else {
         j["error"] = r.error;
       }

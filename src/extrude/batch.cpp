@@ -20,7 +20,15 @@ void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, double timeLim
   try {
     const ExtrusionResult er = extrude(item.spec, nullptr, timeLimit);
     r.warnings = er.shell.warnings;
+    r.anchors = er.anchors;
     r.measures = measure(er.shell);
+    // A shell that is not closed fails here, before a mesh is built: inserting a badly broken
+    // shell into a half-edge mesh can take seconds.
+    if (const std::size_t open = unpairedEdges(er.shell)) {
+      r.error = "the shell is not closed: " + std::to_string(open) + " edges without a partner";
+      r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      return;
+    }
     MeshData mesh = toMeshData(er.shell, item.spec, item.spec.material);
     Scene scene;
     scene.replaceObject(1, Kind::Shell, item.id, mesh);

@@ -25,6 +25,7 @@ struct BatchResult {
   std::size_t meshFaces = 0, meshVertices = 0;
   bool watertight = false, manifold = false;
   double ms = 0.0;
+  std::vector<AnchorFrame> anchors;  // the spec's mesh anchors, placed on the shell
   MeshData mesh;                 // kept when requested (for export)
 };
 

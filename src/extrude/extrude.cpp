@@ -157,6 +157,21 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
   return std::nullopt;
 }
 
+std::size_t unpairedEdges(const SweepOutput& shell) {
+  std::vector<std::pair<int, int>> edges;
+  for (const ShellFace& f : shell.faces)
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) edges.emplace_back(loop[i], loop[(i + 1) % loop.size()]);
+  std::sort(edges.begin(), edges.end());
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const bool repeated = (i > 0 && edges[i - 1] == edges[i]) || (i + 1 < edges.size() && edges[i + 1] == edges[i]);
+    const auto rev = std::equal_range(edges.begin(), edges.end(), std::make_pair(edges[i].second, edges[i].first));
+    if (repeated || rev.second - rev.first != 1) ++bad;
+  }
+  return bad;
+}
+
 double faceArea(const SweepOutput& shell, const ShellFace& face) {
   double a = 0;
   for (std::size_t k = 0; k < face.loops.size(); ++k) {

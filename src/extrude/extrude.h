@@ -46,6 +46,10 @@ ShellMeasures measure(const SweepOutput& shell);
 // the profile segment's tag, else "wall", "roof", "soffit" or "base".
 MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const std::string& material);
 
+// Directed boundary edges of the shell without exactly one reverse partner (0 for a closed,
+// consistently oriented shell). Linear-logarithmic: a cheap test before building a mesh.
+std::size_t unpairedEdges(const SweepOutput& shell);
+
 // Area of a planar polygon with holes (outer minus holes), in its own plane.
 double faceArea(const SweepOutput& shell, const ShellFace& face);
 

@@ -1,5 +1,6 @@
 #include "extrude/kernel.h"
 
+#include "core/error.h"
 #include "extrude/extrude.h"
 
 namespace corbel::extrude {
@@ -8,6 +9,9 @@ void registerKernel(SceneSync& sync) {
   sync.setBuilder<ExtrusionSpec>([](const DocObject& o) {
     const auto& spec = std::get<ExtrusionSpec>(o.spec);
     ExtrusionResult r = extrude(spec);
+    if (const std::size_t open = unpairedEdges(r.shell))
+      throw Error("the shell did not close (" + std::to_string(open) +
+                  " edges without a partner): a degenerate configuration the kernel cannot resolve yet");
     BuildResult b;
     b.kind = Kind::Shell;
     b.mesh = toMeshData(r.shell, spec, spec.material);

@@ -104,7 +104,8 @@ class Stager {
   std::vector<Vec3> points_;
   // Seam height → its vertices, bucketed on a grid of cell δ2 for welding.
   std::map<double, std::unordered_map<std::uint64_t, std::vector<int>>> seams_;
-  bool merging_ = false;  // from the first seam on, faces that continue one are joined
+  bool merging_ = false;
+  bool diverged_ = false;  // a stage ran away: its shell is suspect, skip the edge splitting  // from the first seam on, faces that continue one are joined
   std::vector<RawFace> faces_;
   std::multimap<std::tuple<int, int, int, int, int>, int> byKey_;
   std::vector<std::string> warnings_;
@@ -255,6 +256,7 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
   }
   SweepOutput out = sweep(in, tol_, progress_);
   events_ += out.events;
+  diverged_ = diverged_ || out.diverged;
   for (auto& w : out.warnings) warnings_.push_back(std::move(w));
   std::vector<int> map(out.points.size());
   for (std::size_t i = 0; i < out.points.size(); ++i) {
@@ -783,10 +785,17 @@ void Stager::fixTJunctions() {
   // the real footprints: at δ2 one roof's area identity degrades to 3e-9, at δ2/10 it stays
   // at 5e-11 and two footprints that failed before close).
   const double splitTol = 0.1 * tol_.cluster;
+  std::size_t visited = 0;
   for (RawFace& f : faces_) {
     std::vector<std::pair<int, int>> out;
     out.reserve(f.segments.size());
     for (auto [u, v] : f.segments) {
+      // A runaway shell (a sweep that diverged far beyond its plan) can make this quadratic:
+      // honour the time limit and cancellation here too.
+      if ((++visited & 1023) == 0) {
+        remaining();
+        if (progress_ && progress_->cancelled()) throw Cancelled();
+      }
       const Vec3 &a = points_[u], &b = points_[v];
       const Vec3 d = b - a;
       const double len2 = d.sqrnorm();
@@ -886,7 +895,7 @@ ExtrusionResult Stager::run(double scale) {
           return w.rfind("steps[" + std::to_string(si) + "]", 0) == 0;
         }))
       warnings_.push_back("steps[" + std::to_string(si) + "]: not placed: the roof has closed below its height");
-  fixTJunctions();
+  if (!diverged_) fixTJunctions();
 
   SweepOutput& out = result.shell;
   traceFaces(points_, faces_, tol_, out.faces, warnings_);

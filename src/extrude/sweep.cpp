@@ -62,6 +62,10 @@ struct Corner {
   Vec2 p0;
   double z0 = 0;
   Vec2 v;
+  // Where the corner's lines meet at z0 and |v|: together they bound where it can be at any
+  // height without touching its edges (a cheap rejection in event scans).
+  Vec2 base;
+  double speed = 0;
   bool parallel = false;
   bool alive = true;
 };
@@ -76,10 +80,29 @@ struct FaceBuild {
 };
 
 
+// Flags over corner or edge ids, cleared in O(1) by moving to a new generation.
+class Marks {
+ public:
+  void reset(std::size_t n) {
+    if (v_.size() < n) v_.resize(n, 0);
+    ++gen_;
+  }
+  bool operator[](int i) const { return static_cast<std::size_t>(i) < v_.size() && v_[i] == gen_; }
+  void set(int i) {
+    if (static_cast<std::size_t>(i) >= v_.size()) v_.resize(i + 1, 0);
+    v_[i] = gen_;
+  }
+
+ private:
+  std::vector<unsigned> v_;
+  unsigned gen_ = 0;
+};
+
 struct Candidate {
   double z;
   Vec2 p;
   int corner;  // the corner whose motion predicted it (a cheap staleness test)
+  unsigned id = 0;
   bool operator>(const Candidate& o) const { return z > o.z; }
 };
 
@@ -128,7 +151,21 @@ class Sweeper {
   std::vector<Corner> corners_;
   std::vector<FaceBuild> faces_;
   std::vector<Vec3> points_;
+  // Predictions are kept per corner (a min-heap each); the global queue holds each corner's
+  // earliest, so it stays as small as the plan and pops in the same height order as one queue
+  // of every prediction would.
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue_;
+  std::vector<std::vector<Candidate>> pending_;
+  // Live corners and edges in id order (dead ones dropped when met), so an event scans the
+  // plan as it is, not everything it ever was.
+  std::vector<int> liveCorners_, liveEdges_;
+  std::size_t syncedCorners_ = 0, syncedEdges_ = 0;
+  Marks inK_, involved_, used_;
+  void syncLive();
+  unsigned nextId_ = 0;
+  bool diverged_ = false;
+  void push(Candidate c);
+  bool nextCandidate(Candidate& out);
   std::vector<double> directionHeights_;
   std::vector<std::string> warnings_;
   double z_ = 0;
@@ -169,12 +206,16 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
   if (std::abs(det) > tol_.parallelSine) {
     c.parallel = false;
     c.v = Vec2((a.k * b.n[1] - b.k * a.n[1]) / det, (a.n[0] * b.k - b.n[0] * a.k) / det);
+    c.speed = c.v.norm();
+    c.base = cornerAt(ci, z);
     return;
   }
   // Parallel neighbours: colinear edges of one plane move the corner with them; an
   // antiparallel spike is zipped before it moves (resolveCorner).
   c.parallel = true;
   c.v = OpenMesh::dot(a.d, b.d) > 0 ? a.n * a.k : Vec2(0.0, 0.0);
+  c.speed = c.v.norm();
+  c.base = at;
 }
 
 // Points made at one event height that coincide are one vertex: several corners and zips of
@@ -213,6 +254,7 @@ int Sweeper::newCorner(int prev, int next, int vertex, const Vec2& at, double z)
   c.next = next;
   c.vertex = vertex;
   corners_.push_back(c);
+  pending_.emplace_back();
   const int ci = static_cast<int>(corners_.size()) - 1;
   edges_[prev].end = ci;
   edges_[next].start = ci;
@@ -361,7 +403,8 @@ void Sweeper::predict(int ci) {
     v = Vec2((a.k * b.n[1] - b.k * a.n[1]) / det, (a.n[0] * b.k - b.n[0] * a.k) / det);
     q = Vec2((a.c * b.n[1] - b.c * a.n[1]) / det, (a.n[0] * b.c - b.n[0] * a.c) / det);
   }
-  for (int ei = 0; ei < static_cast<int>(edges_.size()); ++ei) {
+  syncLive();
+  for (int ei : liveEdges_) {
     const Edge& e = edges_[ei];
     if (!e.alive || ei == c.prev || ei == c.next) continue;
     const double denom = OpenMesh::dot(e.n, v) - e.k;
@@ -370,14 +413,56 @@ void Sweeper::predict(int ci) {
     // A corner takes part in nothing more at the height it was made: everything at its
     // point and height was handled by the event that made it.
     if (!(z > c.z0 + tol_.height) || !std::isfinite(z)) continue;
-    queue_.push({z, q + v * z, ci});
+    push({z, q + v * z, ci});
   }
+}
+
+void Sweeper::syncLive() {
+  auto compact = [](std::vector<int>& live, auto alive) {
+    live.erase(std::remove_if(live.begin(), live.end(), [&](int i) { return !alive(i); }), live.end());
+  };
+  compact(liveCorners_, [&](int i) { return corners_[i].alive; });
+  compact(liveEdges_, [&](int i) { return edges_[i].alive; });
+  for (; syncedCorners_ < corners_.size(); ++syncedCorners_)
+    if (corners_[syncedCorners_].alive) liveCorners_.push_back(static_cast<int>(syncedCorners_));
+  for (; syncedEdges_ < edges_.size(); ++syncedEdges_)
+    if (edges_[syncedEdges_].alive) liveEdges_.push_back(static_cast<int>(syncedEdges_));
+}
+
+void Sweeper::push(Candidate c) {
+  c.id = ++nextId_;
+  auto& h = pending_[c.corner];
+  const bool head = h.empty() || c.z < h.front().z;
+  h.push_back(c);
+  std::push_heap(h.begin(), h.end(), std::greater<Candidate>());
+  if (head) queue_.push(c);
+}
+
+// The earliest prediction of a live corner, if any (stale global entries are dropped).
+bool Sweeper::nextCandidate(Candidate& out) {
+  while (!queue_.empty()) {
+    const Candidate& t = queue_.top();
+    auto& h = pending_[t.corner];
+    if (!corners_[t.corner].alive) {
+      h.clear();
+      h.shrink_to_fit();
+      queue_.pop();
+      continue;
+    }
+    if (!h.empty() && h.front().id == t.id) {
+      out = t;
+      return true;
+    }
+    queue_.pop();
+  }
+  return false;
 }
 
 void Sweeper::predictAgainst(int ei) {
   // Every live corner against one (new) plane.
   const Edge& e = edges_[ei];
-  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
+  syncLive();
+  for (int ci : liveCorners_) {
     const Corner& c = corners_[ci];
     if (!c.alive || c.prev == ei || c.next == ei) continue;
     const Vec2 p0 = cornerAt(ci, z_), p1 = cornerAt(ci, z_ + 1.0);
@@ -386,7 +471,7 @@ void Sweeper::predictAgainst(int ei) {
     if (std::abs(denom) < 1e-14) continue;
     const double z = (e.c - OpenMesh::dot(e.n, q)) / denom;
     if (!(z > std::max(c.z0, z_) + tol_.height) || !std::isfinite(z)) continue;
-    queue_.push({z, q + v * z, ci});
+    push({z, q + v * z, ci});
   }
 }
 
@@ -401,8 +486,15 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   // Corners that arrive at the point.
   std::vector<int> K;
   Vec2 l(0.0, 0.0);
-  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
-    if (!corners_[ci].alive) continue;
+  syncLive();
+  for (int ci : liveCorners_) {
+    // Far corners are rejected from where their lines met at z0 and their speed alone; the
+    // bound is loose by 2 δ2 plus a relative margin far above rounding, so no corner within δ2
+    // of the point is ever skipped.
+    const Corner& c = corners_[ci];
+    const double travel = c.speed * std::abs(z - c.z0);
+    const double reach = travel + 2 * tol_.cluster + 1e-12 * (c.base.norm() + travel);
+    if ((c.base - cand.p).sqrnorm() > reach * reach) continue;
     const Vec2 p = cornerAt(ci, z);
     if ((p - cand.p).norm() <= tol_.cluster) {
       K.push_back(ci);
@@ -411,15 +503,17 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   }
   if (K.empty()) return false;
   l /= static_cast<double>(K.size());
-  std::vector<char> inK(corners_.size(), 0);
-  for (int ci : K) inK[ci] = 1;
+  Marks& inK = inK_;
+  inK.reset(corners_.size());
+  for (int ci : K) inK.set(ci);
 
   // Edges through the point: those of arriving corners, and edges the point splits.
   std::vector<int> involved;
-  std::vector<char> isInvolved(edges_.size(), 0);
+  Marks& isInvolved = involved_;
+  isInvolved.reset(edges_.size());
   auto involve = [&](int ei) {
     if (!isInvolved[ei]) {
-      isInvolved[ei] = 1;
+      isInvolved.set(ei);
       involved.push_back(ei);
     }
   };
@@ -428,7 +522,7 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     involve(corners_[ci].next);
   }
   std::vector<int> splits;
-  for (int ei = 0; ei < static_cast<int>(edges_.size()); ++ei) {
+  for (int ei : liveEdges_) {
     const Edge& e = edges_[ei];
     if (!e.alive || isInvolved[ei]) continue;
     if (std::abs(OpenMesh::dot(e.n, l) - (e.c + e.k * z)) > tol_.cluster) continue;
@@ -488,17 +582,18 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     int in, out;  // the edge arriving at l and the edge leaving it
   };
   std::vector<Chain> chains;
-  std::vector<char> used(edges_.size(), 0);
+  Marks& used = used_;
+  used.reset(edges_.size());
   for (int ei : involved) {
     if (used[ei]) continue;
     const Edge& e = edges_[ei];
     if (inK[e.start]) continue;  // not the head of a chain
     if (!inK[e.end]) continue;   // an edge the point splits (below)
-    used[ei] = 1;
+    used.set(ei);
     int last = ei;
     for (int cur = ei;;) {
       const int nxt = corners_[edges_[cur].end].next;
-      used[nxt] = 1;
+      used.set(nxt);
       if (nxt != ei && inK[edges_[nxt].end]) {
         edges_[nxt].alive = false;  // interior edge: shrank to nothing at l
         cur = nxt;
@@ -514,7 +609,7 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     if (used[ei] || splits.end() != std::find(splits.begin(), splits.end(), ei)) continue;
     int cur = ei;
     do {
-      used[cur] = 1;
+      used.set(cur);
       edges_[cur].alive = false;
       cur = corners_[edges_[cur].end].next;
     } while (cur != ei && !used[cur]);
@@ -720,19 +815,33 @@ SweepOutput Sweeper::run() {
   for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci)
     if (corners_[ci].alive) predict(ci);
 
+  // No real event lies far above the plan: the roof over a plan of size s whose edges climb
+  // at most k per metre inward tops out within s·k of the last profile change. Events far
+  // beyond that mean the sweep has diverged in a degenerate configuration: fail at once
+  // instead of chasing them up to the event limit, and cap what is left.
+  double maxK = 1.0, lastChange = in_.baseZ;
+  for (const SweepEdge* e : inputs_)
+    for (const auto& st : e->steps) {
+      maxK = std::max(maxK, std::abs(std::tan(st.angle)));
+      lastChange = std::max(lastChange, st.z);
+    }
+  const double scale = tol_.minEdge / 1e-7;
+  const double divergedZ = lastChange + 1e3 * scale * maxK;
   const auto started = std::chrono::steady_clock::now();
   std::size_t nextDirection = 0;
   const std::size_t cap = 200000 + 400 * edges_.size() * edges_.size();
   std::size_t popped = 0;
+  Candidate cand{};
   while (true) {
-    const double nextEventZ = queue_.empty() ? std::numeric_limits<double>::infinity() : queue_.top().z;
+    const bool any = nextCandidate(cand);
+    const double nextEventZ = any ? cand.z : std::numeric_limits<double>::infinity();
     if (nextDirection < directionHeights_.size() && directionHeights_[nextDirection] <= nextEventZ + tol_.height &&
         directionHeights_[nextDirection] < in_.stopZ - tol_.height) {
       z_ = std::max(z_, directionHeights_[nextDirection]);
       handleDirectionChanges(directionHeights_[nextDirection++]);
       continue;
     }
-    if (queue_.empty() || nextEventZ > in_.stopZ + tol_.height) break;
+    if (!any || nextEventZ > in_.stopZ + tol_.height) break;
     if (++popped > cap) {
       warnings_.push_back("event limit reached; the result is incomplete");
       break;
@@ -743,8 +852,19 @@ SweepOutput Sweeper::run() {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
         throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
     }
-    const Candidate cand = queue_.top();
+    if (cand.z > divergedZ && std::isinf(in_.stopZ)) {
+      // What is left is capped where the last real event was (capRemaining says so).
+      std::ostringstream m;
+      m << "the sweep diverged: the next event was at height " << cand.z << ", far above the plan";
+      warnings_.push_back(m.str());
+      diverged_ = true;
+      break;
+    }
     queue_.pop();
+    auto& h = pending_[cand.corner];
+    std::pop_heap(h.begin(), h.end(), std::greater<Candidate>());
+    h.pop_back();
+    if (!h.empty()) queue_.push(h.front());
     if (cand.z < z_ - tol_.height) continue;  // predicted before an earlier change
     if (handleIntersection(cand)) z_ = std::max(z_, cand.z);
   }
@@ -754,6 +874,7 @@ SweepOutput Sweeper::run() {
   buildFaces(out);
   out.warnings = warnings_;
   out.events = events_;
+  out.diverged = diverged_;
   return out;
 }
 

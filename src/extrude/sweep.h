@@ -80,6 +80,7 @@ struct SweepOutput {
   std::vector<std::string> warnings;
   double maxHeight = 0.0;
   std::size_t events = 0;  // generalized intersection events handled
+  bool diverged = false;   // events ran away far above the plan; the rest was capped
   std::vector<RawFace> raw;                     // with SweepInput::keepRaw
   std::vector<std::vector<PlanCorner>> plan;    // with a finite SweepInput::stopZ
 };

@@ -147,12 +147,21 @@ TEST(RandomRobustness, HundredThousandFootprints) {
   BatchOptions options;
   options.timeLimitSeconds = 1.0;  // the slowest real building takes under 50 ms
   const auto results = extrudeBatch(items, options);
+  if (const char* dump = std::getenv("CORBEL_RANDOM_DUMP"))  // write one case to a file, to study it
+    for (const auto& item : items)
+      if (item.id == dump) {
+        Document doc;
+        doc.add(item.id, item.spec);
+        saveProject(doc, item.id + ".corbel");
+      }
   const std::filesystem::path dir = std::filesystem::current_path() / "extrude-random-failures";
   std::filesystem::remove_all(dir);
   std::size_t failed = 0, rejected = 0;
   double worst = 0;
+  std::size_t slowest = 0;
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
+    if (r.ms > results[slowest].ms) slowest = i;
     if (r.ok) {
       double footprint = 0;
       for (const auto& l : items[i].spec.loops) footprint += shoelace(l.points);
@@ -181,7 +190,9 @@ TEST(RandomRobustness, HundredThousandFootprints) {
     saveProject(doc, (dir / (r.id + ".corbel")).string());
   }
   std::cout << kCount << " random footprints: " << failed << " failed, " << rejected
-            << " refused as invalid input, projection identity worst " << worst << "; failures in " << dir << "\n";
+            << " refused as invalid input, projection identity worst " << worst << "; slowest "
+            << (results.empty() ? std::string("-") : results[slowest].id + " " + std::to_string(results[slowest].ms) + " ms")
+            << "; failures in " << dir << "\n";
   EXPECT_LT(failed, kCount * 5 / 100) << "see " << dir;
 }
 

@@ -270,3 +270,62 @@ TEST(Cli, RenderWritesAPng) {
 }
 
 }  // namespace
+
+namespace {
+
+std::vector<nlohmann::json> jsonLines(const std::string& text) {
+  std::istringstream lines(text);
+  std::vector<nlohmann::json> rows;
+  for (std::string line; std::getline(lines, line);) rows.push_back(nlohmann::json::parse(line));
+  return rows;
+}
+
+}  // namespace
+
+// extrude --stats: one line per building with its measures and mesh anchors, then a summary.
+TEST(Cli, ExtrudeStatsReportTheShellAndItsAnchors) {
+  TempDir dir;
+  const CliRun r = cli(dir, "extrude " + quote(corbel::test::sourcePath("assets/examples/house.corbel")) + " --stats");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = jsonLines(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["id"], "House");
+  EXPECT_EQ(rows[0]["watertight"], true);
+  EXPECT_EQ(rows[0]["manifold"], true);
+  ASSERT_EQ(rows[0]["anchors"].size(), 1u);
+  const auto& door = rows[0]["anchors"][0];
+  EXPECT_EQ(door["name"], "front door");
+  EXPECT_EQ(door["instanced"], true);
+  // Halfway along the right wall (12, 0) → (12, 8), on the ground, facing +x.
+  EXPECT_EQ(door["position"], nlohmann::json::array({12.0, 4.0, 0.0}));
+  EXPECT_EQ(door["normal"], nlohmann::json::array({1.0, 0.0, 0.0}));
+  EXPECT_EQ(rows[1]["summary"], true);
+  EXPECT_EQ(rows[1]["failed"], 0);
+}
+
+// A bad building in a GeoJSON batch is reported with its reason; the rest are built and the
+// exit code says that one failed.
+TEST(Cli, ExtrudeBatchKeepsGoingPastABadFootprint) {
+  TempDir dir;
+  const std::string geo = dir.file("two.geojson");
+  writeText(geo, R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"id": "square"}, "geometry": {"type": "Polygon",
+      "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}},
+    {"type": "Feature", "properties": {"id": "bowtie"}, "geometry": {"type": "Polygon",
+      "coordinates": [[[20, 0], [30, 0], [30, 10], [25, -5], [20, 10], [20, 0]]]}}]})");
+  const CliRun r = cli(dir, "extrude " + quote(geo) + " --stats --pitch 45");
+  EXPECT_EQ(r.code, 1) << r.err;
+  const auto rows = jsonLines(r.out);
+  ASSERT_EQ(rows.size(), 3u);
+  int failed = 0;
+  for (int i = 0; i < 2; ++i) {
+    if (rows[i].contains("error")) {
+      ++failed;
+      EXPECT_NE(rows[i]["error"].get<std::string>().find("intersect"), std::string::npos) << rows[i];
+    } else {
+      EXPECT_NEAR(rows[i]["volume"].get<double>(), 100.0 * 5 / 3, 1e-9);  // a square pyramid
+    }
+  }
+  EXPECT_EQ(failed, 1);
+  EXPECT_EQ(rows[2]["failed"], 1);
+}
