@@ -36,11 +36,12 @@ usage:
   corbel-cli export PROJECT --out FILE.{obj,ply,off,glb} [--object NAME]
   corbel-cli check PROJECT        validate the file and every object's shell (JSON lines)
   corbel-cli extrude INPUT [--pitch DEG] [--wall-height M] [--out FILE.{obj,ply,off,glb}] [--stats]
-                    [--jobs N] [--library PROJECT]
+                    [--jobs N] [--library PROJECT] [--merge-coplanar]
                     INPUT: a project (its extrusion objects) or GeoJSON footprints (meters).
                     --pitch gives every edge one roof slope (default 45 for GeoJSON) over walls
                     --wall-height high (default 0). --stats prints one JSON line per building.
                     GeoJSON features may name a profile of the --library project ("profile").
+                    --merge-coplanar writes neighbouring faces in one plane as one face.
   corbel-cli --version | --help
 
 Exit codes: 0 success, 1 bad input or failed check, 2 bad command line.
@@ -268,6 +269,7 @@ int cmdExtrude(const Args& a) {
   extrude::BatchOptions options;
   options.jobs = jobs;
   options.keepMeshes = !out.empty();
+  options.mergeCoplanar = a.options.count("--merge-coplanar") > 0;
   const auto t0 = std::chrono::steady_clock::now();
   const auto results = extrude::extrudeBatch(items, options);
   const double batchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -388,7 +390,8 @@ int main(int argc, char** argv) {
     if (cmd == "check") return cmdCheck(parseArgs(argc, argv, {}));
     if (cmd == "extrude")
       return cmdExtrude(parseArgs(argc, argv, {{"--pitch", true}, {"--wall-height", true}, {"--out", true},
-                                               {"--stats", false}, {"--jobs", true}, {"--library", true}}));
+                                               {"--stats", false}, {"--jobs", true}, {"--library", true},
+                                               {"--merge-coplanar", false}}));
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";

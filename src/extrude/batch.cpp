@@ -10,7 +10,7 @@ namespace corbel::extrude {
 
 namespace {
 
-void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, double timeLimit) {
+void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, bool merge, double timeLimit) {
   r.id = item.id;
   if (!item.problem.empty()) {
     r.error = item.problem;
@@ -42,7 +42,7 @@ void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, double timeLim
       r.error = "the shell is not a closed 2-manifold:";
       for (const auto& p : v.problems()) r.error += " " + p + ";";
     }
-    if (keepMesh) r.mesh = std::move(mesh);
+    if (keepMesh) r.mesh = merge ? toMeshData(er.shell, item.spec, item.spec.material, true) : std::move(mesh);
   } catch (const std::exception& e) {
     r.error = e.what();
   }
@@ -60,7 +60,7 @@ std::vector<BatchResult> extrudeBatch(const std::vector<BatchItem>& items, const
   auto worker = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < items.size();) {
       if (progress && progress->cancelled()) return;
-      runOne(items[i], results[i], options.keepMeshes, options.timeLimitSeconds);
+      runOne(items[i], results[i], options.keepMeshes, options.mergeCoplanar, options.timeLimitSeconds);
       const std::size_t d = ++done;
       if (progress && (d % 64 == 0 || d == items.size()))
         progress->report(double(d) / items.size(), "extruding buildings");

@@ -32,6 +32,7 @@ struct BatchResult {
 struct BatchOptions {
   unsigned jobs = 0;             // 0 = all cores
   bool keepMeshes = false;
+  bool mergeCoplanar = false;    // kept meshes only: coplanar neighbours merged (export option)
   double timeLimitSeconds = 10.0;  // per building
 };
 

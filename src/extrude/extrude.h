@@ -44,7 +44,10 @@ ShellMeasures measure(const SweepOutput& shell);
 // The shell as Scene geometry: faces without holes stay one polygon; faces with holes are
 // triangulated (CGAL constrained Delaunay), every piece keeping the face's provenance. Tags:
 // the profile segment's tag, else "wall", "roof", "soffit" or "base".
-MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const std::string& material);
+// mergeCoplanar (an export option): neighbouring faces in one plane with the same tag and
+// material become one face, as campskeleton outputs them; provenance is then the first's.
+MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const std::string& material,
+                    bool mergeCoplanar = false);
 
 // Directed boundary edges of the shell without exactly one reverse partner (0 for a closed,
 // consistently oriented shell). Linear-logarithmic: a cheap test before building a mesh.

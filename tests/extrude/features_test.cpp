@@ -141,5 +141,25 @@ TEST(Features, CurvedPlan) {
   EXPECT_EQ(c.faces, 129u);
 }
 
+// The export option: under a short stem, the two bar edges of a T come to share a line and
+// their faces meet in one roof plane; merged, they are one face and the shell is the same
+// solid (closed, same volume).
+TEST(Features, CoplanarMergeIsAnExportOption) {
+  const std::vector<Vec2> t = {{0, 5}, {4, 5}, {4, 6}, {10, 6}, {10, 14}, {-6, 14}, {-6, 6}, {0, 6}};
+  ExtrusionSpec spec = uniformSpec({t}, hipProfile(45 * kDeg));
+  const ExtrusionResult r = extrude(spec);
+  const MeshData plain = toMeshData(r.shell, spec, "plaster");
+  const MeshData merged = toMeshData(r.shell, spec, "plaster", true);
+  EXPECT_EQ(plain.faces.size(), r.shell.faces.size());
+  EXPECT_EQ(merged.faces.size(), plain.faces.size() - 1) << "the two bar faces of the T's top";
+  Scene a, b;
+  a.replaceObject(1, Kind::Shell, "plain", plain);
+  b.replaceObject(1, Kind::Shell, "merged", merged);
+  const ValidityReport va = a.validate(1), vb = b.validate(1);
+  EXPECT_TRUE(vb.problems().empty());
+  EXPECT_EQ(vb.euler, 2);
+  EXPECT_NEAR(vb.volume, va.volume, 1e-9 * va.volume);
+}
+
 }  // namespace
 }  // namespace corbel::extrude::test
