@@ -1,0 +1,390 @@
+#include "extrude/edit.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace corbel::extrude::edit {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& where, const std::string& why) { throw InputError(where, why); }
+
+PlanLoop& loopAt(ExtrusionSpec& s, int loop) {
+  if (loop < 0 || loop >= static_cast<int>(s.loops.size())) fail("loop", "no loop number " + std::to_string(loop));
+  return s.loops[loop];
+}
+
+Profile& profileAt(ExtrusionSpec& s, int profile) {
+  if (profile < 0 || profile >= static_cast<int>(s.profiles.size()))
+    fail("profile", "no profile number " + std::to_string(profile));
+  return s.profiles[profile];
+}
+
+bool finite(const Vec2& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }
+
+double signedArea(const std::vector<Vec2>& p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) a += p[i][0] * p[(i + 1) % p.size()][1] - p[(i + 1) % p.size()][0] * p[i][1];
+  return a / 2;
+}
+
+bool inside(const Vec2& q, const std::vector<Vec2>& poly) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vec2 &a = poly[i], &b = poly[j];
+    if ((a[1] > q[1]) != (b[1] > q[1]) && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
+  }
+  return in;
+}
+
+}  // namespace
+
+ExtrusionSpec insertCorner(ExtrusionSpec s, int loop, int edge, const Vec2& at) {
+  PlanLoop& l = loopAt(s, loop);
+  if (edge < 0 || edge >= static_cast<int>(l.points.size())) fail("edge", "loop " + std::to_string(loop) + " has no edge " + std::to_string(edge));
+  if (!finite(at)) fail("point", "coordinates must be finite");
+  l.points.insert(l.points.begin() + edge + 1, at);
+  l.profile.insert(l.profile.begin() + edge + 1, l.profile[edge]);
+  return s;
+}
+
+ExtrusionSpec deleteCorner(ExtrusionSpec s, int loop, int corner) {
+  PlanLoop& l = loopAt(s, loop);
+  if (corner < 0 || corner >= static_cast<int>(l.points.size())) fail("corner", "no corner " + std::to_string(corner));
+  if (l.points.size() <= 3) fail("corner", "a loop needs at least three corners (delete the loop instead)");
+  // The edge arriving at the corner now runs on to the next one and keeps its profile.
+  l.points.erase(l.points.begin() + corner);
+  l.profile.erase(l.profile.begin() + corner);
+  return s;
+}
+
+ExtrusionSpec moveCorner(ExtrusionSpec s, int loop, int corner, const Vec2& to) {
+  PlanLoop& l = loopAt(s, loop);
+  if (corner < 0 || corner >= static_cast<int>(l.points.size())) fail("corner", "no corner " + std::to_string(corner));
+  if (!finite(to)) fail("point", "coordinates must be finite");
+  l.points[corner] = to;
+  return s;
+}
+
+ExtrusionSpec addLoop(ExtrusionSpec s, std::vector<Vec2> points, int profile) {
+  if (points.size() < 3) fail("points", "a loop needs at least three corners");
+  for (const Vec2& p : points)
+    if (!finite(p)) fail("points", "coordinates must be finite");
+  profileAt(s, profile);
+  int depth = 0;
+  for (const PlanLoop& l : s.loops) depth += inside(points[0], l.points);
+  const bool hole = depth % 2 == 1;
+  if ((signedArea(points) > 0) == hole) std::reverse(points.begin(), points.end());
+  PlanLoop l;
+  l.profile.assign(points.size(), profile);
+  l.points = std::move(points);
+  s.loops.push_back(std::move(l));
+  return s;
+}
+
+ExtrusionSpec deleteLoop(ExtrusionSpec s, int loop) {
+  loopAt(s, loop);
+  if (s.loops.size() == 1) fail("loop", "the plan's last loop cannot be deleted (delete the object instead)");
+  s.loops.erase(s.loops.begin() + loop);
+  for (PlanStep& st : s.steps)
+    if (st.anchor.loop > loop) --st.anchor.loop;
+  for (MeshAnchor& m : s.anchors)
+    if (m.anchor.loop > loop) --m.anchor.loop;
+  return s;
+}
+
+ExtrusionSpec setEdgeProfile(ExtrusionSpec s, const std::vector<EdgeRef>& edges, int profile) {
+  profileAt(s, profile);
+  for (auto [loop, edge] : edges) {
+    PlanLoop& l = loopAt(s, loop);
+    if (edge < 0 || edge >= static_cast<int>(l.profile.size())) fail("edge", "no edge " + std::to_string(edge));
+    l.profile[edge] = profile;
+  }
+  return s;
+}
+
+Vec2 clampProfilePoint(const Profile& p, int point, const Vec2& wz) {
+  if (point == 0) return Vec2(0, 0);
+  Vec2 q = wz;
+  const double lo = p.points[point - 1][1];
+  const double hi = point + 1 < static_cast<int>(p.points.size()) ? p.points[point + 1][1] : 1e5;
+  q[1] = std::clamp(q[1], lo, hi);
+  q[0] = std::clamp(q[0], -1e5, 1e5);
+  return q;
+}
+
+ExtrusionSpec insertProfilePoint(ExtrusionSpec s, int profile, int after, const Vec2& wz) {
+  Profile& p = profileAt(s, profile);
+  if (after < 0 || after >= static_cast<int>(p.points.size())) fail("point", "no profile point " + std::to_string(after));
+  if (!finite(wz)) fail("point", "coordinates must be finite");
+  p.points.insert(p.points.begin() + after + 1, wz);
+  p.points[after + 1] = clampProfilePoint(p, after + 1, wz);
+  if (static_cast<int>(p.tags.size()) > after) p.tags.insert(p.tags.begin() + after + 1, p.tags[after]);
+  return s;
+}
+
+ExtrusionSpec deleteProfilePoint(ExtrusionSpec s, int profile, int point) {
+  Profile& p = profileAt(s, profile);
+  if (point <= 0 || point >= static_cast<int>(p.points.size())) fail("point", "the first point cannot be deleted");
+  if (p.points.size() <= 2) fail("point", "a profile needs at least two points");
+  p.points.erase(p.points.begin() + point);
+  if (static_cast<int>(p.tags.size()) >= point) p.tags.erase(p.tags.begin() + point - 1);
+  return s;
+}
+
+ExtrusionSpec moveProfilePoint(ExtrusionSpec s, int profile, int point, const Vec2& wz) {
+  Profile& p = profileAt(s, profile);
+  if (point < 0 || point >= static_cast<int>(p.points.size())) fail("point", "no profile point " + std::to_string(point));
+  if (!finite(wz)) fail("point", "coordinates must be finite");
+  p.points[point] = clampProfilePoint(p, point, wz);
+  return s;
+}
+
+ExtrusionSpec addOverhang(ExtrusionSpec s, double height, double depth) {
+  if (!std::isfinite(height) || height <= 0) fail("height", "an overhang starts above the base (height > 0)");
+  if (!std::isfinite(depth) || depth == 0 || std::abs(depth) > 1e3) fail("depth", "the overhang's depth must be non-zero");
+  for (Profile& p : s.profiles) {
+    const std::size_t n = p.points.size();
+    const Vec2 lastDir = p.points[n - 1] - p.points[n - 2];
+    if (height > p.points.back()[1]) {
+      // Above the last point the last segment carries on: put a point on it at the height.
+      const Vec2 a = p.points[n - 2], b = p.points[n - 1];
+      p.points.push_back(a + (b - a) * ((height - a[1]) / (b[1] - a[1])));
+    }
+    // Where the profile reaches the height.
+    std::size_t i = 1;
+    while (i < p.points.size() && p.points[i][1] < height) ++i;
+    Vec2 at = p.points[i];
+    if (p.points[i][1] > height) {
+      const Vec2 a = p.points[i - 1], b = p.points[i];
+      at = a + (b - a) * ((height - a[1]) / (b[1] - a[1]));
+      p.points.insert(p.points.begin() + i, at);
+      if (p.tags.size() >= i) p.tags.insert(p.tags.begin() + i, p.tags[i - 1]);
+    }
+    // A horizontal segment outward; everything above moves out with it.
+    for (std::size_t k = i + 1; k < p.points.size(); ++k) p.points[k][0] -= depth;
+    p.points.insert(p.points.begin() + i + 1, Vec2(at[0] - depth, height));
+    if (p.tags.size() >= i) p.tags.insert(p.tags.begin() + i, "soffit");
+    // A profile may not end on the horizontal segment: carry on as its last segment did.
+    if (i + 2 == p.points.size()) p.points.push_back(p.points.back() + lastDir);
+  }
+  return s;
+}
+
+ExtrusionSpec setSegmentTag(ExtrusionSpec s, int profile, int segment, const std::string& tag) {
+  Profile& p = profileAt(s, profile);
+  if (segment < 0 || segment + 1 >= static_cast<int>(p.points.size())) fail("segment", "no segment " + std::to_string(segment));
+  if (static_cast<int>(p.tags.size()) <= segment) p.tags.resize(segment + 1);
+  p.tags[segment] = tag;
+  return s;
+}
+
+ExtrusionSpec addProfile(ExtrusionSpec s, Profile p, int* index) {
+  const std::string base = p.name.empty() ? "profile" : p.name;
+  auto taken = [&](const std::string& n) {
+    return std::any_of(s.profiles.begin(), s.profiles.end(), [&](const Profile& q) { return q.name == n; });
+  };
+  std::string name = base;
+  for (int k = 2; taken(name); ++k) name = base + " " + std::to_string(k);
+  p.name = name;
+  s.profiles.push_back(std::move(p));
+  if (index) *index = static_cast<int>(s.profiles.size()) - 1;
+  return s;
+}
+
+ExtrusionSpec addStep(ExtrusionSpec s, const PlanStep& step) {
+  s.steps.push_back(step);
+  return s;
+}
+
+ExtrusionSpec moveAnchor(ExtrusionSpec s, int step, const Anchor& anchor) {
+  if (step < 0 || step >= static_cast<int>(s.steps.size())) fail("step", "no step " + std::to_string(step));
+  s.steps[step].anchor = anchor;
+  return s;
+}
+
+ExtrusionSpec deleteStep(ExtrusionSpec s, int step) {
+  if (step < 0 || step >= static_cast<int>(s.steps.size())) fail("step", "no step " + std::to_string(step));
+  s.steps.erase(s.steps.begin() + step);
+  return s;
+}
+
+std::vector<Profile> profileLibrary() {
+  auto make = [](std::string name, std::vector<Vec2> pts, std::vector<std::string> tags) {
+    Profile p;
+    p.name = std::move(name);
+    p.points = std::move(pts);
+    p.tags = std::move(tags);
+    return p;
+  };
+  return {
+      make("vertical wall", {{0, 0}, {0, 1}}, {"wall"}),
+      make("hip", {{0, 0}, {0, 3}, {3, 6}}, {"wall", "roof"}),
+      make("gable", {{0, 0}, {0, 3}, {0, 4}}, {"wall", "gable"}),
+      make("mansard", {{0, 0}, {0, 3}, {0.8, 5.5}, {3.5, 6.8}}, {"wall", "mansard", "roof"}),
+      make("gambrel", {{0, 0}, {0, 3}, {0.9, 5}, {0.9, 6}}, {"wall", "gambrel", "gable"}),
+      make("shed", {{0, 0}, {0, 3}, {4, 5}}, {"wall", "roof"}),
+      make("overhanging eave", {{0, 0}, {0, 3}, {-0.4, 3}, {3.1, 6}}, {"wall", "soffit", "roof"}),
+      make("dormer front", {{0, 0}, {0, 1}}, {"dormer"}),
+      make("dormer side", {{0, 0}, {0, 1.2}, {1, 2.2}}, {"dormer", "dormer roof"}),
+      make("cornice", {{0, 0}, {0, 6}, {-0.3, 6}, {-0.3, 6.4}, {0.2, 6.4}, {0.2, 7}, {3.2, 9}},
+           {"wall", "cornice soffit", "cornice", "cornice top", "attic", "roof"}),
+  };
+}
+
+namespace {
+
+Vec2 vec2(const nlohmann::json& j, const std::string& what) {
+  if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number())
+    fail(what, "expected [x, y] numbers");
+  return Vec2(j[0].get<double>(), j[1].get<double>());
+}
+
+int integer(const nlohmann::json& op, const std::string& key) {
+  if (!op.contains(key) || !op[key].is_number_integer()) fail(key, "expected an integer");
+  return op[key].get<int>();
+}
+
+double number(const nlohmann::json& op, const std::string& key) {
+  if (!op.contains(key) || !op[key].is_number()) fail(key, "expected a number");
+  return op[key].get<double>();
+}
+
+std::string text(const nlohmann::json& op, const std::string& key) {
+  if (!op.contains(key) || !op[key].is_string()) fail(key, "expected a string");
+  return op[key].get<std::string>();
+}
+
+int profileNamed(const ExtrusionSpec& s, const std::string& name) {
+  for (std::size_t i = 0; i < s.profiles.size(); ++i)
+    if (s.profiles[i].name == name) return static_cast<int>(i);
+  fail("profile", "no profile named \"" + name + "\"");
+}
+
+Profile libraryProfile(const std::string& name) {
+  for (const Profile& p : profileLibrary())
+    if (p.name == name) return p;
+  fail("profile", "no library profile named \"" + name + "\"");
+}
+
+Anchor anchorFrom(const nlohmann::json& j) {
+  if (!j.is_object()) fail("anchor", "expected an object");
+  Anchor a;
+  a.loop = integer(j, "loop");
+  a.edge = integer(j, "edge");
+  if (j.contains("at")) {
+    a.absolute = true;
+    a.along = number(j, "at");
+  } else if (j.contains("fraction")) {
+    a.along = number(j, "fraction");
+  }
+  if (j.contains("height")) a.height = number(j, "height");
+  return a;
+}
+
+}  // namespace
+
+std::string applyEdit(Document& doc, const nlohmann::json& op) {
+  if (!op.is_object()) fail("op", "an edit is a JSON object");
+  const std::string kind = text(op, "op");
+  if (kind == "new_extrusion") {
+    ExtrusionSpec s;
+    Profile p = libraryProfile(text(op, "profile"));
+    s.profiles.push_back(p);
+    std::vector<Vec2> pts;
+    if (!op.contains("points") || !op["points"].is_array()) fail("points", "expected a list of [x, y]");
+    for (const auto& q : op["points"]) pts.push_back(vec2(q, "points"));
+    s = addLoop(std::move(s), std::move(pts), 0);
+    const std::string name = text(op, "name");
+    if (doc.findByName(name)) fail("name", "an object called \"" + name + "\" exists already");
+    doc.add(name, s);
+    return "New extrusion " + name;
+  }
+  const std::string name = text(op, "object");
+  const DocObject* found = doc.findByName(name);
+  if (!found) fail("object", "no object called \"" + name + "\"");
+  DocObject* o = doc.find(found->id);
+  auto* sp = std::get_if<ExtrusionSpec>(&o->spec);
+  if (!sp) fail("object", "\"" + name + "\" is not an extrusion");
+  ExtrusionSpec& s = *sp;
+  std::string label;
+  if (kind == "insert_corner") {
+    s = insertCorner(s, integer(op, "loop"), integer(op, "edge"), vec2(op["at"], "at"));
+    label = "Insert corner";
+  } else if (kind == "delete_corner") {
+    s = deleteCorner(s, integer(op, "loop"), integer(op, "corner"));
+    label = "Delete corner";
+  } else if (kind == "move_corner") {
+    s = moveCorner(s, integer(op, "loop"), integer(op, "corner"), vec2(op["to"], "to"));
+    label = "Move corner";
+  } else if (kind == "add_loop") {
+    std::vector<Vec2> pts;
+    if (!op.contains("points") || !op["points"].is_array()) fail("points", "expected a list of [x, y]");
+    for (const auto& q : op["points"]) pts.push_back(vec2(q, "points"));
+    s = addLoop(s, std::move(pts), profileNamed(s, text(op, "profile")));
+    label = "Add loop";
+  } else if (kind == "set_edge_profile") {
+    std::vector<EdgeRef> edges;
+    if (!op.contains("edges") || !op["edges"].is_array()) fail("edges", "expected a list of [loop, edge]");
+    for (const auto& e : op["edges"]) {
+      const Vec2 v = vec2(e, "edges");
+      edges.emplace_back(static_cast<int>(v[0]), static_cast<int>(v[1]));
+    }
+    s = setEdgeProfile(s, edges, profileNamed(s, text(op, "profile")));
+    label = "Assign profile";
+  } else if (kind == "add_profile") {
+    Profile p = libraryProfile(text(op, "from"));
+    if (op.contains("as")) p.name = text(op, "as");
+    s = addProfile(s, p);
+    label = "Add profile";
+  } else if (kind == "insert_profile_point") {
+    s = insertProfilePoint(s, profileNamed(s, text(op, "profile")), integer(op, "after"), vec2(op["at"], "at"));
+    label = "Insert profile point";
+  } else if (kind == "move_profile_point") {
+    s = moveProfilePoint(s, profileNamed(s, text(op, "profile")), integer(op, "point"), vec2(op["to"], "to"));
+    label = "Move profile point";
+  } else if (kind == "delete_profile_point") {
+    s = deleteProfilePoint(s, profileNamed(s, text(op, "profile")), integer(op, "point"));
+    label = "Delete profile point";
+  } else if (kind == "add_overhang") {
+    s = addOverhang(s, number(op, "height"), number(op, "depth"));
+    label = "Add overhang";
+  } else if (kind == "set_tag") {
+    s = setSegmentTag(s, profileNamed(s, text(op, "profile")), integer(op, "segment"), text(op, "tag"));
+    label = "Set tag";
+  } else if (kind == "add_step") {
+    const nlohmann::json& j = op.contains("step") ? op["step"] : nlohmann::json();
+    if (!j.is_object()) fail("step", "expected an object");
+    PlanStep st;
+    if (j.contains("name")) st.name = text(j, "name");
+    st.anchor = anchorFrom(j.contains("anchor") ? j["anchor"] : nlohmann::json());
+    const std::string shape = j.contains("shape") ? text(j, "shape") : "rectangle";
+    if (shape == "bay") st.shape = StepShape::Bay;
+    else if (shape == "forced") st.shape = StepShape::Forced;
+    else if (shape != "rectangle") fail("shape", "expected \"rectangle\", \"bay\" or \"forced\"");
+    if (st.shape == StepShape::Forced) {
+      for (const auto& q : j.value("points", nlohmann::json::array())) st.points.push_back(vec2(q, "points"));
+    } else {
+      st.width = number(j, "width");
+      st.depth = number(j, "depth");
+      if (j.contains("cant")) st.cant = number(j, "cant");
+    }
+    st.frontProfile = profileNamed(s, text(j, "front_profile"));
+    st.sideProfile = j.contains("side_profile") ? profileNamed(s, text(j, "side_profile")) : st.frontProfile;
+    s = addStep(s, st);
+    label = "Add step";
+  } else if (kind == "move_anchor") {
+    s = moveAnchor(s, integer(op, "step"), anchorFrom(op["anchor"]));
+    label = "Move anchor";
+  } else if (kind == "delete_step") {
+    s = deleteStep(s, integer(op, "step"));
+    label = "Delete step";
+  } else {
+    fail("op", "unknown edit \"" + kind + "\"");
+  }
+  return label + " (" + name + ")";
+}
+
+}  // namespace corbel::extrude::edit

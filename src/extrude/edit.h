@@ -1,0 +1,61 @@
+#pragma once
+// Editing operations on an extrusion spec, as the editor's plan and profile panes perform them
+// (Kelly & Wonka, Sec. 3). Each takes the spec, changes a copy and returns it, or throws
+// InputError naming what is wrong; none leaves a half-made change. The same operations drive
+// scripted editing (edit scripts: one JSON object per operation, see applyEdit), so a test can
+// do exactly what a user does.
+#include "core/document.h"
+#include "extrude/spec.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace corbel::extrude::edit {
+
+using EdgeRef = std::pair<int, int>;  // (loop, edge)
+
+// Plan.
+ExtrusionSpec insertCorner(ExtrusionSpec s, int loop, int edge, const Vec2& at);  // splits the edge
+ExtrusionSpec deleteCorner(ExtrusionSpec s, int loop, int corner);
+ExtrusionSpec moveCorner(ExtrusionSpec s, int loop, int corner, const Vec2& to);
+// A new loop with every edge on `profile`; drawn inside an odd number of loops it is a hole,
+// so its orientation is set to match whichever way it was drawn.
+ExtrusionSpec addLoop(ExtrusionSpec s, std::vector<Vec2> points, int profile);
+ExtrusionSpec deleteLoop(ExtrusionSpec s, int loop);
+ExtrusionSpec setEdgeProfile(ExtrusionSpec s, const std::vector<EdgeRef>& edges, int profile);
+
+// Profiles. Point 0 stays at (0, 0); z never decreases along a profile (a dragged point is
+// clamped between its neighbours' heights).
+ExtrusionSpec insertProfilePoint(ExtrusionSpec s, int profile, int after, const Vec2& wz);
+ExtrusionSpec deleteProfilePoint(ExtrusionSpec s, int profile, int point);
+ExtrusionSpec moveProfilePoint(ExtrusionSpec s, int profile, int point, const Vec2& wz);
+Vec2 clampProfilePoint(const Profile& p, int point, const Vec2& wz);
+// "Add overhang" (Sec. 3.3): every profile gets, at one height, a horizontal segment reaching
+// `depth` metres outward, the rest of the profile moving out with it: one change to all.
+ExtrusionSpec addOverhang(ExtrusionSpec s, double height, double depth);
+ExtrusionSpec setSegmentTag(ExtrusionSpec s, int profile, int segment, const std::string& tag);
+// Adds a copy of a library profile under a free name; returns its index in `index`.
+ExtrusionSpec addProfile(ExtrusionSpec s, Profile p, int* index = nullptr);
+
+// Anchored features.
+ExtrusionSpec addStep(ExtrusionSpec s, const PlanStep& step);
+ExtrusionSpec moveAnchor(ExtrusionSpec s, int step, const Anchor& anchor);
+ExtrusionSpec deleteStep(ExtrusionSpec s, int step);
+
+// The library of Sec. 3 profiles the panes offer.
+std::vector<Profile> profileLibrary();
+
+// Applies one edit-script operation to a document, e.g.
+//   {"op": "move_corner", "object": "House", "loop": 0, "corner": 2, "to": [10, 6]}
+// Operations: new_extrusion {name, points, profile: library name}, insert_corner, delete_corner,
+// move_corner, add_loop {points, profile}, set_edge_profile {edges: [[loop, edge]...], profile},
+// add_profile {from: library name, as: name}, insert_profile_point {profile, after, at},
+// move_profile_point {profile, point, to}, delete_profile_point, add_overhang {height, depth},
+// set_tag {profile, segment, tag}, add_step {step: as in the project file}, move_anchor,
+// delete_step. Profiles are named; the label for undo is returned.
+std::string applyEdit(Document& doc, const nlohmann::json& op);
+
+}  // namespace corbel::extrude::edit
