@@ -4,6 +4,7 @@
 #include "core/export.h"
 #include "core/materials.h"
 #include "core/project_io.h"
+#include "extrude/edit.h"
 #include "extrude/kernel.h"
 #include "render/gl.h"
 #include "render/image.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 namespace corbel::editor {
 
@@ -23,6 +25,7 @@ namespace {
 
 constexpr float kLeftPanelWidth = 320.0f;
 constexpr float kStatusBarHeight = 118.0f;
+constexpr float kPaneWidth = 460.0f;  // the plan and profile panes, right of the 3D view
 
 std::string stateDirOr(const std::string& dir) { return dir.empty() ? defaultStateDir() : dir; }
 
@@ -53,6 +56,12 @@ App::App(GLFWwindow* window, EditorOptions options)
       showError_ = true;
       log(e.what(), true);
     }
+  }
+  if (!options_.script.empty()) {
+    std::ifstream in(options_.script);
+    if (!in) log("cannot read the edit script " + options_.script, true), scriptFailed_ = true;
+    for (std::string line; std::getline(in, line);) scriptLines_.push_back(line);
+    if (!options_.scriptShots.empty()) std::filesystem::create_directories(options_.scriptShots);
   }
   syncScene();
   frameAll();
@@ -304,6 +313,22 @@ void App::registerActions() {
          const ObjectId id = d.add("Box", b);
          commit(std::move(d), "Add box");
          selected_ = id;
+       }});
+  add({"object.add_extrusion", "Object", "Add Extrusion",
+       "Add a procedural extrusion (a 12 × 8 m plan on the hip profile) next to the existing objects; edit it in the "
+       "plan and profile panes.",
+       {GLFW_KEY_X, true, true}, false, [this, doc] {
+         Document d = doc();
+         ExtrusionSpec e;
+         e.profiles.push_back(extrude::edit::profileLibrary()[1]);
+         e.roofMaterial = "roof_tile";
+         const BBox box = scene_.bounds();
+         const double x0 = box.empty() ? 0.0 : box.hi[0] + 4.0, y0 = box.empty() ? 0.0 : box.center()[1] - 4.0;
+         e.loops.push_back({{Vec2(x0, y0), Vec2(x0 + 12, y0), Vec2(x0 + 12, y0 + 8), Vec2(x0, y0 + 8)}, {0, 0, 0, 0}});
+         const ObjectId id = d.add("Extrusion", e);
+         commit(std::move(d), "Add extrusion");
+         selected_ = id;
+         if (box.empty()) firstFrame_ = true;  // frame the first object of a new scene
        }});
   add({"object.duplicate", "Object", "Duplicate", "Copy the selected object beside itself.", {GLFW_KEY_D, true}, true,
        [this, doc] {
@@ -731,6 +756,44 @@ void App::handleViewportInput() {
   if (io.MouseWheel != 0) camera_.zoom(io.MouseWheel);
 }
 
+// One line of the edit script: an edit (extrude/edit.h) committed like a user's, its object
+// selected so the panes show it; at the end of each stage, a screenshot once the preview has
+// caught up.
+void App::runScriptLine() {
+  if (scriptLine_ >= scriptLines_.size() || shotAtFrame_ >= 0) return;
+  const std::string& line = scriptLines_[scriptLine_++];
+  if (line.find_first_not_of(" \t\r") == std::string::npos) return;
+  try {
+    const nlohmann::json op = nlohmann::json::parse(line);
+    Document d = history_.current();
+    const std::string label = extrude::edit::applyEdit(d, op);
+    commit(std::move(d), label);
+    history_.closeMerge();
+    const std::string object = op.contains("object") ? op["object"].get<std::string>() : op.value("name", "");
+    if (const DocObject* o = history_.current().findByName(object)) selected_ = o->id;
+    log("script: " + label);
+    const std::string stage = op.value("stage", "");
+    std::string nextStage;
+    for (std::size_t k = scriptLine_; k < scriptLines_.size(); ++k)
+      if (scriptLines_[k].find_first_not_of(" \t\r") != std::string::npos) {
+        nextStage = nlohmann::json::parse(scriptLines_[k]).value("stage", "");
+        break;
+      }
+    if (!options_.scriptShots.empty() && !stage.empty() && stage != nextStage) {
+      std::string file = stage;
+      std::replace(file.begin(), file.end(), ' ', '-');
+      char prefix[16];
+      std::snprintf(prefix, sizeof prefix, "%02d-", ++shotCount_);
+      shotPath_ = (std::filesystem::path(options_.scriptShots) / (prefix + file + ".png")).string();
+      shotAtFrame_ = frame_ + 3;
+      firstFrame_ = true;  // frame the new state
+    }
+  } catch (const std::exception& e) {
+    log("script line " + std::to_string(scriptLine_) + ": " + e.what(), true);
+    scriptFailed_ = true;
+  }
+}
+
 void App::takeScreenshot(const std::string& path) {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
@@ -768,6 +831,8 @@ int App::run() {
     if (scriptedIndex_ < options_.actions.size() && frame_ >= 2) {
       const std::string& id = options_.actions[scriptedIndex_++];
       if (!actions_.trigger(id)) log("script: action '" + id + "' is unknown or disabled", true);
+    } else if (frame_ >= 2) {
+      runScriptLine();
     }
     handleShortcuts();
     pollJob();
@@ -776,14 +841,32 @@ int App::run() {
     drawMenuBar();
     drawLeftPanel();
     drawStatusBar();
+    // The plan and profile panes of a selected extrusion, right of the 3D view.
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    const DocObject* sel = selected_ ? history_.current().find(*selected_) : nullptr;
+    const bool panes = sel && std::holds_alternative<ExtrusionSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    if (panes) {
+      if (panesFor_ != sel->id) panes_.reset();
+      panesFor_ = sel->id;
+      PaneHost host;
+      host.doc = &history_.current();
+      host.object = sel->id;
+      if (auto it = sync_.status().find(sel->id); it != sync_.status().end()) host.error = it->second.error;
+      host.commit = [this](Document d, const std::string& label, const std::string& key) { commit(std::move(d), label, key); };
+      host.endDrag = [this] { history_.closeMerge(); };
+      host.log = [this](const std::string& line, bool error) { log(line, error); };
+      const float top = ImGui::GetFrameHeight();
+      panes_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth, vp->Size.y - top - kStatusBarHeight);
+    } else {
+      panesFor_.reset();
+    }
     drawHelp();
     drawModals();
     syncScene();  // edits made by the panels this frame
 
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
     vpX_ = vp->Pos.x + kLeftPanelWidth;
     vpY_ = vp->Pos.y + ImGui::GetFrameHeight();
-    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth);
+    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (panes ? kPaneWidth : 0.0f));
     vpH_ = std::max(1.0f, vp->Size.y - ImGui::GetFrameHeight() - kStatusBarHeight);
     if (firstFrame_) {
       frameAll();
@@ -810,6 +893,16 @@ int App::run() {
                     settings_);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
+    if (shotAtFrame_ >= 0 && frame_ >= shotAtFrame_) {
+      try {
+        takeScreenshot(shotPath_);
+        log("script: screenshot " + shotPath_);
+      } catch (const std::exception& e) {
+        log(e.what(), true);
+        scriptFailed_ = true;
+      }
+      shotAtFrame_ = -1;
+    }
     ++frame_;
     if (options_.quitAfterFrames > 0 && frame_ >= options_.quitAfterFrames) {
       if (!options_.screenshot.empty()) {
@@ -837,6 +930,11 @@ int App::run() {
   }
   // A clean exit with nothing unsaved needs no recovery file.
   if (!history_.dirty()) recovery_.discard();
+  if (!scriptLines_.empty() && (scriptFailed_ || scriptLine_ < scriptLines_.size())) {
+    std::fprintf(stderr, "corbel: the edit script did not complete (%zu of %zu lines)%s\n", scriptLine_,
+                 scriptLines_.size(), scriptFailed_ ? " and a line failed" : "");
+    return 1;
+  }
   return 0;
 }
 

@@ -7,6 +7,7 @@
 #include "core/scene.h"
 #include "core/scene_sync.h"
 #include "editor/actions.h"
+#include "editor/extrusion_panes.h"
 #include "editor/file_dialog.h"
 #include "render/camera.h"
 #include "render/renderer.h"
@@ -29,6 +30,8 @@ struct EditorOptions {
   std::string screenshot;           // write the window to this PNG, then quit
   int quitAfterFrames = -1;         // quit after this many frames (> 0)
   std::vector<std::string> actions; // action ids run one per frame at start (scripted use)
+  std::string script;               // an edit script (JSON lines, extrude/edit.h) run one line per frame
+  std::string scriptShots;          // a folder: a screenshot after each stage of the script
   double autosaveSeconds = 60.0;
   enum class Recover { Ask, Yes, No } recover = Recover::Ask;
   std::string stateDir;             // recovery and recent files ("" = defaultStateDir())
@@ -69,6 +72,7 @@ class App {
   void syncScene();
   void frameAll();
   void takeScreenshot(const std::string& path);
+  void runScriptLine();
   std::string windowTitle() const;
 
   GLFWwindow* window_;
@@ -113,6 +117,14 @@ class App {
   float vpX_ = 0, vpY_ = 0, vpW_ = 1, vpH_ = 1;
   int frame_ = 0;
   std::size_t scriptedIndex_ = 0;
+  ExtrusionPanes panes_;
+  std::optional<ObjectId> panesFor_;
+  std::vector<std::string> scriptLines_;
+  std::size_t scriptLine_ = 0;
+  int shotAtFrame_ = -1;
+  std::string shotPath_;
+  int shotCount_ = 0;
+  bool scriptFailed_ = false;
   bool firstFrame_ = true;
 };
 

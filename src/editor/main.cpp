@@ -23,6 +23,8 @@ options:
   --screenshot OUT.png    save the window to a PNG after --quit-after-frames frames
   --quit-after-frames N   quit after N frames (for tests and scripted runs)
   --actions ID,ID,...     run these actions one per frame at start (see Help > Keyboard Shortcuts)
+  --script FILE           run an edit script (JSON lines, one edit per frame; see docs/user-guide.md)
+  --script-shots DIR      with --script: save a screenshot to DIR after each stage of the script
   --autosave-seconds S    autosave interval while there are unsaved changes (default 60)
   --recover ask|yes|no    what to do with unsaved work found from a crash (default ask)
   --state-dir DIR         where recovery and recent files live (default $XDG_STATE_HOME/corbel)
@@ -67,6 +69,10 @@ int main(int argc, char** argv) {
       std::string id;
       while (std::getline(ss, id, ','))
         if (!id.empty()) options.actions.push_back(id);
+    } else if (a == "--script") {
+      options.script = value();
+    } else if (a == "--script-shots") {
+      options.scriptShots = value();
     } else if (a == "--autosave-seconds") {
       options.autosaveSeconds = std::atof(value().c_str());
     } else if (a == "--recover") {

@@ -162,6 +162,7 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
   std::vector<Vec3> poly;
   BBox box;
   impl_->triangles = 0;
+  std::vector<Vec3> normals(mesh.n_faces(), Vec3(0, 0, 0));
   for (auto f : mesh.faces()) {
     const ObjectId id = scene.faceObject(f);
     if (!visible(id)) continue;
@@ -172,6 +173,7 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
     }
     Vec3 n = newellNormal(poly);
     if (n.norm() > 0) n.normalize();
+    normals[f.idx()] = n;
     const Rgb c = materialColor(scene.faceMaterial(f), scene.faceKind(f));
     std::vector<float>& out = (settings.highlight && *settings.highlight == id) ? highlightData : faceData;
     for (const auto& t : triangulatePolygon(poly)) {
@@ -186,6 +188,12 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
     auto f0 = mesh.face_handle(h), f1 = mesh.opposite_face_handle(h);
     const bool on = (f0.is_valid() && visible(scene.faceObject(f0))) || (f1.is_valid() && visible(scene.faceObject(f1)));
     if (!on) continue;
+    // An edge inside one planar face (a kernel triangulated a face with holes) is not drawn,
+    // except in wireframe: outlines show the model's faces, not how they were cut up.
+    if (!settings.wireframe && f0.is_valid() && f1.is_valid() && scene.faceObject(f0) == scene.faceObject(f1) &&
+        scene.faceMaterial(f0) == scene.faceMaterial(f1) && scene.faceTag(f0) == scene.faceTag(f1) &&
+        OpenMesh::dot(normals[f0.idx()], normals[f1.idx()]) > 1 - 1e-9)
+      continue;
     for (auto v : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)}) {
       const auto& p = mesh.point(v);
       edgeData.insert(edgeData.end(), {float(p[0]), float(p[1]), float(p[2]), 0.12f, 0.12f, 0.14f, 0.85f});

@@ -2,9 +2,11 @@
 # The editor under Xvfb, as a user would meet it:
 #  1. it opens the example and its screenshot shows the model (compared with an empty project);
 #  2. an edit made by a scripted action is autosaved to the recovery file while unsaved, and a
-#     new session recovers it.
+#     new session recovers it;
+#  3. the Fig. 4 (j–n) house is built through the plan and profile panes' operations by an edit
+#     script, with a screenshot after each stage, and the result is a closed shell.
 set -euo pipefail
-editor=$1 cli=$2 check=$3 example=$4 work=$5
+editor=$1 cli=$2 check=$3 example=$4 work=$5 script=${6:-}
 rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
@@ -27,4 +29,16 @@ after=$(sed -E 's/.*"objects":([0-9]+).*/\1/' <<<"$objects_after")
 cmp -s "$example" "$work/state/recovery.corbel" && { echo "recovery must not be the untouched example"; exit 1; }
 run --recover yes --screenshot "$work/recovered.png" --quit-after-frames 8
 "$check" "$work/recovered.png" "$work/empty.png" 0.05
+if [[ -n $script ]]; then
+  echo "== the Fig. 4 house by edit script"
+  rm -rf "$work/state"
+  run --recover no --script "$script" --script-shots "$work/shots" --autosave-seconds 0 --quit-after-frames 40
+  shots=("$work"/shots/*.png)
+  [[ ${#shots[@]} -eq 4 ]] || { echo "expected a screenshot per stage (4), found ${#shots[@]}"; exit 1; }
+  for s in "${shots[@]}"; do "$check" "$s" "$work/empty.png" 0.05; done
+  test -f "$work/state/recovery.corbel" || { echo "the scripted document was not autosaved"; exit 1; }
+  summary=$("$cli" check "$work/state/recovery.corbel" | tail -1)
+  echo "scripted house: $summary"
+  [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the scripted house should be one closed shell"; exit 1; }
+fi
 echo "editor test passed"

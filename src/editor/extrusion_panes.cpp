@@ -1,0 +1,491 @@
+#include "editor/extrusion_panes.h"
+
+#include "core/error.h"
+#include "extrude/edit.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+
+namespace corbel::editor {
+
+namespace ed = extrude::edit;
+
+namespace {
+
+// Edge colours by profile index (the paper's colour coding of Fig. 4).
+ImU32 profileColor(int i) {
+  static const ImU32 palette[] = {IM_COL32(230, 90, 70, 255),  IM_COL32(70, 130, 230, 255), IM_COL32(90, 190, 90, 255),
+                                  IM_COL32(220, 170, 40, 255), IM_COL32(170, 90, 210, 255), IM_COL32(40, 190, 190, 255),
+                                  IM_COL32(230, 120, 180, 255), IM_COL32(150, 150, 150, 255)};
+  return palette[static_cast<std::size_t>(i) % (sizeof palette / sizeof palette[0])];
+}
+
+double distToSegment(ImVec2 p, ImVec2 a, ImVec2 b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+  double t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  const double ex = a.x + t * dx - p.x, ey = a.y + t * dy - p.y;
+  return std::sqrt(ex * ex + ey * ey);
+}
+
+double dist(ImVec2 a, ImVec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+bool keyPressed(ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), false); }
+
+}  // namespace
+
+void ExtrusionPanes::reset() {
+  fitted_ = false;
+  selectedEdges_.clear();
+  dragCorner_.reset();
+  selectedCorner_.reset();
+  drawing_ = false;
+  drawn_.clear();
+  profile_ = 0;
+  dragPoint_.reset();
+  selectedPoint_.reset();
+}
+
+void ExtrusionPanes::apply(const PaneHost& host, const std::function<ExtrusionSpec(const ExtrusionSpec&)>& change,
+                           const std::string& label, const std::string& mergeKey) {
+  Document d = *host.doc;
+  DocObject* o = d.find(host.object);
+  if (!o) return;
+  auto* spec = std::get_if<ExtrusionSpec>(&o->spec);
+  if (!spec) return;
+  try {
+    *spec = change(*spec);
+  } catch (const InputError& e) {
+    host.log(label + ": " + e.what(), true);
+    return;
+  }
+  host.commit(std::move(d), label + " (" + o->name + ")", mergeKey);
+}
+
+void ExtrusionPanes::fit(const ExtrusionSpec& spec, float w, float h) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const PlanLoop& l : spec.loops)
+    for (const Vec2& p : l.points) {
+      x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]);
+      x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+    }
+  if (x0 > x1) return;
+  cx_ = (x0 + x1) / 2;
+  cy_ = (y0 + y1) / 2;
+  zoom_ = std::clamp(0.8 * std::min(w / std::max(x1 - x0, 1e-3), h / std::max(y1 - y0, 1e-3)), 0.5, 2000.0);
+  fitted_ = true;
+}
+
+void ExtrusionPanes::draw(const PaneHost& host, float x, float y, float w, float h) {
+  const DocObject* o = host.doc->find(host.object);
+  if (!o) return;
+  const auto* spec = std::get_if<ExtrusionSpec>(&o->spec);
+  if (!spec) return;
+  if (profile_ >= static_cast<int>(spec->profiles.size())) profile_ = 0;
+  const float planH = std::floor(h * 0.55f);
+  drawPlan(host, *spec, x, y, w, planH);
+  drawProfile(host, *spec, x, y + planH, w, h - planH);
+}
+
+void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Plan", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  // Toolbar.
+  if (ImGui::Button("Fit")) fitted_ = false;
+  ImGui::SameLine();
+  ImGui::Checkbox("Snap", &snap_);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Snap corners to a %.2f m grid (hold Alt to drag freely)", grid_);
+  ImGui::SameLine();
+  if (ImGui::Button(drawing_ ? "Cancel loop" : "Draw loop")) {
+    drawing_ = !drawing_;
+    drawn_.clear();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Click to place corners; click the first corner or press Enter to close. Inside another loop it becomes a hole.");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x));
+  const std::string current = spec.profiles.empty() ? "" : spec.profiles[std::min<std::size_t>(profile_, spec.profiles.size() - 1)].name;
+  if (ImGui::BeginCombo("##assign", selectedEdges_.empty() ? "Select edges to assign a profile" : "Assign profile…")) {
+    for (int i = 0; i < static_cast<int>(spec.profiles.size()); ++i) {
+      ImGui::PushStyleColor(ImGuiCol_Text, profileColor(i));
+      if (ImGui::Selectable(spec.profiles[i].name.c_str(), false) && !selectedEdges_.empty()) {
+        const std::vector<ed::EdgeRef> edges(selectedEdges_.begin(), selectedEdges_.end());
+        apply(host, [&](const ExtrusionSpec& s) { return ed::setEdgeProfile(s, edges, i); }, "Assign profile " + spec.profiles[i].name);
+        profile_ = i;
+      }
+      ImGui::PopStyleColor();
+    }
+    ImGui::EndCombo();
+  }
+  (void)current;
+
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float errH = host.error.empty() ? 0.0f : ImGui::GetTextLineHeightWithSpacing() * 2;
+  const ImVec2 size(std::max(avail.x, 10.0f), std::max(avail.y - errH, 10.0f));
+  if (!fitted_) fit(spec, size.x, size.y);
+  ImGui::InvisibleButton("plan-canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                                                  ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  const ImGuiIO& io = ImGui::GetIO();
+  auto toScreen = [&](const Vec2& p) {
+    return ImVec2(float(origin.x + size.x / 2 + (p[0] - cx_) * zoom_), float(origin.y + size.y / 2 - (p[1] - cy_) * zoom_));
+  };
+  auto toWorld = [&](ImVec2 s) {
+    return Vec2(cx_ + (s.x - origin.x - size.x / 2) / zoom_, cy_ - (s.y - origin.y - size.y / 2) / zoom_);
+  };
+  auto snapped = [&](Vec2 p) {
+    if (!snap_ || io.KeyAlt) return p;
+    return Vec2(std::round(p[0] / grid_) * grid_, std::round(p[1] / grid_) * grid_);
+  };
+
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(28, 30, 34, 255));
+  // Grid: 1 m lines, 5 m lines stronger; coarser when zoomed out.
+  const double step = zoom_ < 4 ? 10 : 1;
+  const Vec2 lo = toWorld(ImVec2(origin.x, origin.y + size.y)), hi = toWorld(ImVec2(origin.x + size.x, origin.y));
+  for (double gx = std::floor(lo[0] / step) * step; gx <= hi[0]; gx += step) {
+    const bool major = std::fmod(std::abs(gx), 5 * step) < 1e-9;
+    const ImVec2 a = toScreen(Vec2(gx, lo[1])), b = toScreen(Vec2(gx, hi[1]));
+    dl->AddLine(a, b, major ? IM_COL32(70, 74, 82, 255) : IM_COL32(45, 48, 54, 255));
+  }
+  for (double gy = std::floor(lo[1] / step) * step; gy <= hi[1]; gy += step) {
+    const bool major = std::fmod(std::abs(gy), 5 * step) < 1e-9;
+    const ImVec2 a = toScreen(Vec2(lo[0], gy)), b = toScreen(Vec2(hi[0], gy));
+    dl->AddLine(a, b, major ? IM_COL32(70, 74, 82, 255) : IM_COL32(45, 48, 54, 255));
+  }
+  // The kernel's complaint, if it names a point: "loops[i].points[j]".
+  std::optional<std::pair<int, int>> faulty;
+  std::smatch m;
+  static const std::regex where(R"(loops\[(\d+)\]\.points\[(\d+)\])");
+  if (std::regex_search(host.error, m, where)) faulty = std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
+
+  // Hit testing.
+  const ImVec2 mouse = io.MousePos;
+  std::optional<std::pair<int, int>> hotCorner, hotEdge;
+  double best = 8;
+  for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li)
+    for (int i = 0; i < static_cast<int>(spec.loops[li].points.size()); ++i) {
+      const double d = dist(mouse, toScreen(spec.loops[li].points[i]));
+      if (d < best) best = d, hotCorner = std::make_pair(li, i);
+    }
+  if (!hotCorner) {
+    best = 6;
+    for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li) {
+      const auto& pts = spec.loops[li].points;
+      for (int i = 0; i < static_cast<int>(pts.size()); ++i) {
+        const double d = distToSegment(mouse, toScreen(pts[i]), toScreen(pts[(i + 1) % pts.size()]));
+        if (d < best) best = d, hotEdge = std::make_pair(li, i);
+      }
+    }
+  }
+
+  // Edges, coloured by profile; selected ones wide; the faulty one red and dashed-thick.
+  for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li) {
+    const auto& l = spec.loops[li];
+    for (int i = 0; i < static_cast<int>(l.points.size()); ++i) {
+      const ImVec2 a = toScreen(l.points[i]), b = toScreen(l.points[(i + 1) % l.points.size()]);
+      const bool sel = selectedEdges_.count({li, i}) > 0;
+      const bool hot = hotEdge && *hotEdge == std::make_pair(li, i);
+      dl->AddLine(a, b, profileColor(l.profile[i]), sel ? 5.0f : hot ? 3.5f : 2.0f);
+      if (sel) dl->AddLine(a, b, IM_COL32(255, 255, 255, 160), 1.0f);
+      // Direction tick at the middle: which side is inside.
+      const ImVec2 mid((a.x + b.x) / 2, (a.y + b.y) / 2);
+      const float dx = b.x - a.x, dy = b.y - a.y, len = std::max(1e-3f, std::sqrt(dx * dx + dy * dy));
+      dl->AddLine(mid, ImVec2(mid.x + dy / len * 6, mid.y - dx / len * 6), profileColor(l.profile[i]), 1.5f);
+    }
+    for (int i = 0; i < static_cast<int>(l.points.size()); ++i) {
+      const ImVec2 p = toScreen(l.points[i]);
+      const bool isFaulty = faulty && faulty->first == li && faulty->second == i;
+      const bool sel = selectedCorner_ && *selectedCorner_ == std::make_pair(li, i);
+      const bool hot = hotCorner && *hotCorner == std::make_pair(li, i);
+      const float r = hot || sel ? 5.0f : 3.5f;
+      dl->AddRectFilled(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r),
+                        isFaulty ? IM_COL32(255, 60, 60, 255) : sel ? IM_COL32(255, 255, 255, 255) : IM_COL32(210, 210, 210, 255));
+      if (isFaulty) dl->AddCircle(p, 11, IM_COL32(255, 60, 60, 255), 20, 2.5f);
+    }
+  }
+  // Anchors of steps: circles on their input edge (Fig. 4 j–n).
+  for (const PlanStep& st : spec.steps) {
+    if (st.anchor.loop >= static_cast<int>(spec.loops.size())) continue;
+    const auto& pts = spec.loops[st.anchor.loop].points;
+    if (st.anchor.edge >= static_cast<int>(pts.size())) continue;
+    const Vec2 a = pts[st.anchor.edge], b = pts[(st.anchor.edge + 1) % pts.size()];
+    Vec2 d = b - a;
+    const double len = d.norm();
+    const Vec2 at = st.anchor.absolute ? a + d / std::max(len, 1e-9) * st.anchor.along : a + d * st.anchor.along;
+    dl->AddCircle(toScreen(at), 6, IM_COL32(240, 80, 240, 255), 16, 2.0f);
+  }
+  // A loop being drawn.
+  if (drawing_) {
+    for (std::size_t i = 0; i < drawn_.size(); ++i) {
+      const ImVec2 p = toScreen(Vec2(drawn_[i].first, drawn_[i].second));
+      dl->AddCircleFilled(p, 4, IM_COL32(255, 220, 120, 255));
+      const ImVec2 q = i + 1 < drawn_.size() ? toScreen(Vec2(drawn_[i + 1].first, drawn_[i + 1].second))
+                                             : toScreen(snapped(toWorld(mouse)));
+      dl->AddLine(p, q, IM_COL32(255, 220, 120, 255), 2.0f);
+    }
+  }
+  dl->PopClipRect();
+
+  // Input.
+  if (hovered) {
+    if (io.MouseWheel != 0) {
+      const Vec2 before = toWorld(mouse);
+      zoom_ = std::clamp(zoom_ * std::pow(1.15, io.MouseWheel), 0.5, 2000.0);
+      const Vec2 after = toWorld(mouse);
+      cx_ += before[0] - after[0];
+      cy_ += before[1] - after[1];
+    }
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
+      cx_ -= io.MouseDelta.x / zoom_;
+      cy_ += io.MouseDelta.y / zoom_;
+    }
+  }
+  if (drawing_) {
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      const Vec2 p = snapped(toWorld(mouse));
+      const bool closes = drawn_.size() >= 3 && dist(mouse, toScreen(Vec2(drawn_[0].first, drawn_[0].second))) < 8;
+      if (!closes) drawn_.emplace_back(p[0], p[1]);
+      if (closes || (drawn_.size() >= 3 && keyPressed(ImGuiKey_Enter))) {
+        std::vector<Vec2> pts;
+        for (auto [px, py] : drawn_) pts.emplace_back(px, py);
+        apply(host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
+        drawing_ = false;
+        drawn_.clear();
+      }
+    } else if (drawn_.size() >= 3 && keyPressed(ImGuiKey_Enter)) {
+      std::vector<Vec2> pts;
+      for (auto [px, py] : drawn_) pts.emplace_back(px, py);
+      apply(host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
+      drawing_ = false;
+      drawn_.clear();
+    } else if (keyPressed(ImGuiKey_Escape)) {
+      drawing_ = false;
+      drawn_.clear();
+    }
+  } else {
+    if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && hotEdge) {
+      const auto [li, ei] = *hotEdge;
+      const Vec2 p = snapped(toWorld(mouse));
+      apply(host, [&](const ExtrusionSpec& s) { return ed::insertCorner(s, li, ei, p); }, "Insert corner");
+      selectedCorner_ = std::make_pair(li, ei + 1);
+    } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      if (hotCorner) {
+        dragCorner_ = hotCorner;
+        selectedCorner_ = hotCorner;
+      } else if (hotEdge) {
+        if (!io.KeyShift) selectedEdges_.clear();
+        if (!selectedEdges_.erase(*hotEdge)) selectedEdges_.insert(*hotEdge);
+        const auto& l = spec.loops[hotEdge->first];
+        profile_ = l.profile[hotEdge->second];
+        selectedCorner_.reset();
+      } else {
+        selectedEdges_.clear();
+        selectedCorner_.reset();
+      }
+    }
+    if (dragCorner_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+      const auto [li, ci] = *dragCorner_;
+      const Vec2 p = snapped(toWorld(mouse));
+      if (li < static_cast<int>(spec.loops.size()) && ci < static_cast<int>(spec.loops[li].points.size()) &&
+          (spec.loops[li].points[ci] - p).norm() > 1e-12)
+        apply(host, [&](const ExtrusionSpec& s) { return ed::moveCorner(s, li, ci, p); }, "Move corner",
+              "plan-corner-" + std::to_string(li) + "-" + std::to_string(ci));
+    }
+    if (dragCorner_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      dragCorner_.reset();
+      host.endDrag();
+    }
+    if (ImGui::IsWindowFocused() && selectedCorner_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+      const auto [li, ci] = *selectedCorner_;
+      apply(host, [&](const ExtrusionSpec& s) { return ed::deleteCorner(s, li, ci); }, "Delete corner");
+      selectedCorner_.reset();
+    }
+  }
+  if (hovered) {
+    const Vec2 p = toWorld(mouse);
+    ImGui::SetTooltip("%.2f, %.2f m%s", p[0], p[1],
+                      hotCorner ? "\ndrag to move, Delete to remove" : hotEdge ? "\nclick to select (Shift adds), double-click to add a corner" : "");
+  }
+  if (!host.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
+    ImGui::TextWrapped("%s (the last good shell stays in the preview)", host.error.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::End();
+}
+
+void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Profile", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  if (spec.profiles.empty()) {
+    ImGui::End();
+    return;
+  }
+  ImGui::SetNextItemWidth(150);
+  if (ImGui::BeginCombo("##profile", spec.profiles[profile_].name.c_str())) {
+    for (int i = 0; i < static_cast<int>(spec.profiles.size()); ++i) {
+      ImGui::PushStyleColor(ImGuiCol_Text, profileColor(i));
+      if (ImGui::Selectable(spec.profiles[i].name.c_str(), i == profile_)) {
+        profile_ = i;
+        selectedPoint_.reset();
+      }
+      ImGui::PopStyleColor();
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::BeginCombo("##library", "New from library")) {
+    for (const Profile& p : ed::profileLibrary())
+      if (ImGui::Selectable(p.name.c_str())) {
+        int index = 0;
+        apply(host, [&](const ExtrusionSpec& s) { return ed::addProfile(s, p, &index); }, "Add profile " + p.name);
+        profile_ = static_cast<int>(spec.profiles.size());  // the new one, once committed
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Add overhang")) ImGui::OpenPopup("overhang");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Insert a horizontal overhang into every profile at one height (Sec. 3.3)");
+  if (ImGui::BeginPopup("overhang")) {
+    ImGui::InputFloat("Height (m)", &overhangHeight_, 0.1f, 1.0f, "%.2f");
+    ImGui::InputFloat("Depth (m)", &overhangDepth_, 0.05f, 0.5f, "%.2f");
+    if (ImGui::Button("Add to every profile")) {
+      const double hh = overhangHeight_, dd = overhangDepth_;
+      apply(host, [&](const ExtrusionSpec& s) { return ed::addOverhang(s, hh, dd); }, "Add overhang");
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+  const Profile& p = spec.profiles[profile_];
+  if (selectedPoint_ && *selectedPoint_ >= static_cast<int>(p.points.size())) selectedPoint_.reset();
+  if (selectedPoint_) {
+    const int i = *selectedPoint_;
+    float wz[2] = {float(p.points[i][0]), float(p.points[i][1])};
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::InputFloat2("w, z (m)", wz, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue))
+      apply(host, [&](const ExtrusionSpec& s) { return ed::moveProfilePoint(s, profile_, i, Vec2(wz[0], wz[1])); }, "Set profile point");
+    if (i > 0) {
+      ImGui::SameLine();
+      char tag[64];
+      std::snprintf(tag, sizeof tag, "%s", static_cast<std::size_t>(i - 1) < p.tags.size() ? p.tags[i - 1].c_str() : "");
+      ImGui::SetNextItemWidth(110);
+      if (ImGui::InputText("tag below", tag, sizeof tag, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        const std::string t = tag;
+        apply(host, [&](const ExtrusionSpec& s) { return ed::setSegmentTag(s, profile_, i - 1, t); }, "Set tag");
+      }
+    }
+  }
+
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 10.0f), std::max(ImGui::GetContentRegionAvail().y, 10.0f));
+  ImGui::InvisibleButton("profile-canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  const bool hovered = ImGui::IsItemHovered();
+  const ImGuiIO& io = ImGui::GetIO();
+  // Fit the profile (and its continuation) once per profile shown.
+  double wMin = 0, wMax = 1, zMax = 1;
+  for (const Vec2& q : p.points) wMin = std::min(wMin, q[0]), wMax = std::max(wMax, q[0]), zMax = std::max(zMax, q[1]);
+  pzoom_ = std::clamp(0.8 * std::min(size.x / (wMax - wMin + 2), size.y / (zMax + 1)), 2.0, 400.0);
+  pw0_ = wMin - 1;
+  pz0_ = -0.5;
+  auto toScreen = [&](const Vec2& q) {
+    return ImVec2(float(origin.x + (q[0] - pw0_) * pzoom_), float(origin.y + size.y - (q[1] - pz0_) * pzoom_));
+  };
+  auto toProfile = [&](ImVec2 s) { return Vec2(pw0_ + (s.x - origin.x) / pzoom_, pz0_ + (origin.y + size.y - s.y) / pzoom_); };
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(28, 30, 34, 255));
+  for (double gz = 0; gz <= zMax + 1; gz += 1)
+    dl->AddLine(toScreen(Vec2(pw0_, gz)), toScreen(Vec2(pw0_ + size.x / pzoom_, gz)), IM_COL32(45, 48, 54, 255));
+  for (double gw = std::floor(pw0_); gw <= pw0_ + size.x / pzoom_; gw += 1)
+    dl->AddLine(toScreen(Vec2(gw, pz0_)), toScreen(Vec2(gw, zMax + 1)), IM_COL32(45, 48, 54, 255));
+  // The plan edge (w = 0) and the ground.
+  dl->AddLine(toScreen(Vec2(0, pz0_)), toScreen(Vec2(0, zMax + 1)), IM_COL32(90, 95, 105, 255), 1.5f);
+  dl->AddLine(toScreen(Vec2(pw0_, 0)), toScreen(Vec2(pw0_ + size.x / pzoom_, 0)), IM_COL32(90, 95, 105, 255), 1.5f);
+  dl->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(150, 150, 160, 255), "z up; w inward (right) from the plan edge");
+
+  std::optional<int> hotPoint, hotSegment;
+  double best = 8;
+  for (int i = 0; i < static_cast<int>(p.points.size()); ++i) {
+    const double d = dist(io.MousePos, toScreen(p.points[i]));
+    if (d < best) best = d, hotPoint = i;
+  }
+  if (!hotPoint) {
+    best = 6;
+    for (int i = 0; i + 1 < static_cast<int>(p.points.size()); ++i) {
+      const double d = distToSegment(io.MousePos, toScreen(p.points[i]), toScreen(p.points[i + 1]));
+      if (d < best) best = d, hotSegment = i;
+    }
+  }
+  const ImU32 col = profileColor(profile_);
+  for (int i = 0; i + 1 < static_cast<int>(p.points.size()); ++i) {
+    const ImVec2 a = toScreen(p.points[i]), b = toScreen(p.points[i + 1]);
+    dl->AddLine(a, b, col, hotSegment && *hotSegment == i ? 4.0f : 2.5f);
+    // Tags as small triangles beside their segment.
+    if (static_cast<std::size_t>(i) < p.tags.size() && !p.tags[i].empty()) {
+      const ImVec2 mid((a.x + b.x) / 2 + 8, (a.y + b.y) / 2);
+      dl->AddTriangleFilled(ImVec2(mid.x, mid.y - 4), ImVec2(mid.x, mid.y + 4), ImVec2(mid.x + 7, mid.y), IM_COL32(240, 200, 80, 255));
+      dl->AddText(ImVec2(mid.x + 10, mid.y - 7), IM_COL32(200, 200, 200, 255), p.tags[i].c_str());
+    }
+  }
+  // The last segment carries on upward: dotted continuation.
+  if (p.points.size() >= 2) {
+    const Vec2 a = p.points[p.points.size() - 2], b = p.points.back();
+    const Vec2 c = b + (b - a) / std::max((b - a).norm(), 1e-9) * 1.5;
+    dl->AddLine(toScreen(b), toScreen(c), (col & 0x00FFFFFF) | 0x60000000, 1.5f);
+  }
+  // Anchor heights of steps (Sec. 3.4).
+  for (const PlanStep& st : spec.steps)
+    dl->AddCircle(toScreen(Vec2(0, st.anchor.height)), 5, IM_COL32(240, 80, 240, 255), 12, 2.0f);
+  for (int i = 0; i < static_cast<int>(p.points.size()); ++i) {
+    const ImVec2 q = toScreen(p.points[i]);
+    const bool sel = selectedPoint_ && *selectedPoint_ == i;
+    const float r = (hotPoint && *hotPoint == i) || sel ? 5.0f : 3.5f;
+    dl->AddRectFilled(ImVec2(q.x - r, q.y - r), ImVec2(q.x + r, q.y + r), sel ? IM_COL32(255, 255, 255, 255) : IM_COL32(210, 210, 210, 255));
+  }
+  dl->PopClipRect();
+
+  if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && hotSegment) {
+    const int s = *hotSegment;
+    const Vec2 at = toProfile(io.MousePos);
+    apply(host, [&](const ExtrusionSpec& sp) { return ed::insertProfilePoint(sp, profile_, s, at); }, "Insert profile point");
+    selectedPoint_ = s + 1;
+  } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    selectedPoint_ = hotPoint;
+    dragPoint_ = hotPoint;
+  }
+  if (dragPoint_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) && *dragPoint_ > 0) {
+    const int i = *dragPoint_;
+    Vec2 at = toProfile(io.MousePos);
+    if (!io.KeyAlt) at = Vec2(std::round(at[0] * 10) / 10, std::round(at[1] * 10) / 10);
+    apply(host, [&](const ExtrusionSpec& s) { return ed::moveProfilePoint(s, profile_, i, at); }, "Move profile point",
+          "profile-" + std::to_string(profile_) + "-" + std::to_string(i));
+  }
+  if (dragPoint_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    dragPoint_.reset();
+    host.endDrag();
+  }
+  if (ImGui::IsWindowFocused() && selectedPoint_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+    const int i = *selectedPoint_;
+    apply(host, [&](const ExtrusionSpec& s) { return ed::deleteProfilePoint(s, profile_, i); }, "Delete profile point");
+    selectedPoint_.reset();
+  }
+  if (hovered) {
+    const Vec2 q = toProfile(io.MousePos);
+    ImGui::SetTooltip("w %.2f, z %.2f m%s", q[0], q[1],
+                      hotPoint ? "\ndrag (z stays between its neighbours), Delete to remove"
+                               : hotSegment ? "\ndouble-click to add a point" : "");
+  }
+  ImGui::End();
+}
+
+}  // namespace corbel::editor

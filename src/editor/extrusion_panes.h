@@ -1,0 +1,57 @@
+#pragma once
+// The plan pane and the profile pane of a procedural extrusion (Kelly & Wonka, Sec. 3, Fig. 4–5):
+// 2D views drawn with ImGui's draw lists beside the 3D preview. Every change goes through the
+// editing operations of extrude/edit.h and is committed to the document's history, so it is
+// undoable and the preview re-extrudes from the new spec.
+#include "core/document.h"
+
+#include <functional>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+
+struct ImVec2;
+
+namespace corbel::editor {
+
+struct PaneHost {
+  const Document* doc = nullptr;
+  ObjectId object = 0;
+  std::string error;  // the kernel's message for the object ("" = its shell is current)
+  std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
+  std::function<void()> endDrag;  // closes the current merge (a drag ended)
+  std::function<void(const std::string&, bool)> log;
+};
+
+class ExtrusionPanes {
+ public:
+  // Draws both panes in the rectangle (pos, size), plan above profile.
+  void draw(const PaneHost& host, float x, float y, float w, float h);
+  void reset();  // another object was selected
+
+ private:
+  void drawPlan(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h);
+  void drawProfile(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h);
+  void apply(const PaneHost& host, const std::function<ExtrusionSpec(const ExtrusionSpec&)>& change,
+             const std::string& label, const std::string& mergeKey = {});
+  void fit(const ExtrusionSpec& spec, float w, float h);
+
+  // Plan view: world (m) ↔ pane pixels.
+  double cx_ = 0, cy_ = 0, zoom_ = 20;  // centre, pixels per metre
+  bool fitted_ = false;
+  bool snap_ = true;
+  double grid_ = 0.25;
+  std::set<std::pair<int, int>> selectedEdges_;
+  std::optional<std::pair<int, int>> dragCorner_, selectedCorner_;
+  bool drawing_ = false;
+  std::vector<std::pair<double, double>> drawn_;
+
+  // Profile view.
+  int profile_ = 0;
+  double pzoom_ = 30, pw0_ = -1, pz0_ = -0.5;  // pixels per metre, lower-left corner in (w, z)
+  std::optional<int> dragPoint_, selectedPoint_;
+  float overhangHeight_ = 3.0f, overhangDepth_ = 0.4f;
+};
+
+}  // namespace corbel::editor
