@@ -145,9 +145,13 @@ ExtrusionSpec moveProfilePoint(ExtrusionSpec s, int profile, int point, const Ve
 ExtrusionSpec addOverhang(ExtrusionSpec s, double height, double depth) {
   if (!std::isfinite(height) || height <= 0) fail("height", "an overhang starts above the base (height > 0)");
   if (!std::isfinite(depth) || depth == 0 || std::abs(depth) > 1e3) fail("depth", "the overhang's depth must be non-zero");
-  for (Profile& p : s.profiles) {
+  for (std::size_t pi = 0; pi < s.profiles.size(); ++pi) {
+    Profile& p = s.profiles[pi];
     const std::size_t n = p.points.size();
+    if (n < 2) fail("profiles[" + std::to_string(pi) + "]", "a profile needs at least two points");
     const Vec2 lastDir = p.points[n - 1] - p.points[n - 2];
+    if (!(lastDir[1] > 0))
+      fail("profiles[" + std::to_string(pi) + "]", "the profile ends with a horizontal segment: fix it before adding an overhang");
     if (height > p.points.back()[1]) {
       // Above the last point the last segment carries on: put a point on it at the height.
       const Vec2 a = p.points[n - 2], b = p.points[n - 1];
@@ -156,6 +160,7 @@ ExtrusionSpec addOverhang(ExtrusionSpec s, double height, double depth) {
     // Where the profile reaches the height.
     std::size_t i = 1;
     while (i < p.points.size() && p.points[i][1] < height) ++i;
+    if (i >= p.points.size()) fail("profiles[" + std::to_string(pi) + "]", "the profile does not reach the height");
     Vec2 at = p.points[i];
     if (p.points[i][1] > height) {
       const Vec2 a = p.points[i - 1], b = p.points[i];
