@@ -123,6 +123,57 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     ImGui::EndCombo();
   }
   (void)current;
+  if (selectedEdges_.size() == 1) {
+    if (ImGui::Button("Add step here")) ImGui::OpenPopup("step");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("A natural step anchored on the selected edge: a dormer, a bay window or a buttress (Sec. 3.5)");
+  }
+  if (ImGui::BeginPopup("step")) {
+    ImGui::Combo("Kind", &stepShape_, "dormer\0bay window\0buttress\0");
+    ImGui::SliderFloat("Along the edge", &stepFraction_, 0.0f, 1.0f, "%.2f");
+    ImGui::InputFloat("Height (m)", &stepHeight_, 0.1f, 1.0f, "%.2f");
+    ImGui::InputFloat("Width (m)", &stepWidth_, 0.1f, 1.0f, "%.2f");
+    ImGui::InputFloat("Depth out (m)", &stepDepth_, 0.05f, 0.5f, "%.2f");
+    if (stepShape_ == 1) ImGui::InputFloat("Cant (m)", &stepCant_, 0.05f, 0.5f, "%.2f");
+    if (ImGui::Button("Add") && !selectedEdges_.empty()) {
+      const auto [li, ei] = *selectedEdges_.begin();
+      const int shape = stepShape_;
+      PlanStep st;
+      st.name = shape == 0 ? "dormer" : shape == 1 ? "bay window" : "buttress";
+      st.anchor = {li, ei, false, stepFraction_, shape == 0 ? stepHeight_ : 0.0};
+      st.width = stepWidth_;
+      st.depth = stepDepth_;
+      st.cant = stepCant_;
+      st.shape = shape == 1 ? StepShape::Bay : StepShape::Rectangle;
+      apply(host, [&](const ExtrusionSpec& s0) {
+        // The step's profiles come from the library, added once.
+        ExtrusionSpec s = s0;
+        auto use = [&](const std::string& name) {
+          for (int i = 0; i < static_cast<int>(s.profiles.size()); ++i)
+            if (s.profiles[i].name == name) return i;
+          for (const Profile& p : ed::profileLibrary())
+            if (p.name == name) {
+              int index = 0;
+              s = ed::addProfile(s, p, &index);
+              return index;
+            }
+          throw InputError("profile", "no library profile " + name);
+        };
+        if (shape == 0) {
+          st.frontProfile = use("dormer front");
+          st.sideProfile = use("dormer side");
+        } else if (shape == 1) {
+          st.frontProfile = st.sideProfile = use("bay");
+        } else {
+          st.frontProfile = use("buttress");
+          st.sideProfile = use("vertical wall");
+        }
+        return ed::addStep(s, st);
+      }, "Add " + st.name);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
 
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 avail = ImGui::GetContentRegionAvail();

@@ -52,6 +52,9 @@ class ExtrusionPanes {
   double pzoom_ = 30, pw0_ = -1, pz0_ = -0.5;  // pixels per metre, lower-left corner in (w, z)
   std::optional<int> dragPoint_, selectedPoint_;
   float overhangHeight_ = 3.0f, overhangDepth_ = 0.4f;
+  // "Add step" on the selected edge: a natural step at an anchor (Sec. 3.4–3.5).
+  float stepFraction_ = 0.5f, stepHeight_ = 3.0f, stepWidth_ = 1.6f, stepDepth_ = 0.3f, stepCant_ = 0.4f;
+  int stepShape_ = 0;  // 0 dormer, 1 bay, 2 buttress
 };
 
 }  // namespace corbel::editor

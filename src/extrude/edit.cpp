@@ -234,6 +234,8 @@ std::vector<Profile> profileLibrary() {
       make("overhanging eave", {{0, 0}, {0, 3}, {-0.4, 3}, {3.1, 6}}, {"wall", "soffit", "roof"}),
       make("dormer front", {{0, 0}, {0, 1}}, {"dormer"}),
       make("dormer side", {{0, 0}, {0, 1.2}, {1, 2.2}}, {"dormer", "dormer roof"}),
+      make("bay", {{0, 0}, {0, 2.6}, {1, 3.6}}, {"bay", "bay roof"}),
+      make("buttress", {{0, 0}, {0, 2}, {1, 3.5}}, {"buttress", "buttress slope"}),
       make("cornice", {{0, 0}, {0, 6}, {-0.3, 6}, {-0.3, 6.4}, {0.2, 6.4}, {0.2, 7}, {3.2, 9}},
            {"wall", "cornice soffit", "cornice", "cornice top", "attic", "roof"}),
   };
