@@ -300,23 +300,20 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     }
   }
   if (drawing_) {
-    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-      const Vec2 p = snapped(toWorld(mouse));
-      const bool closes = drawn_.size() >= 3 && dist(mouse, toScreen(Vec2(drawn_[0].first, drawn_[0].second))) < 8;
-      if (!closes) drawn_.emplace_back(p[0], p[1]);
-      if (closes || (drawn_.size() >= 3 && keyPressed(ImGuiKey_Enter))) {
-        std::vector<Vec2> pts;
-        for (auto [px, py] : drawn_) pts.emplace_back(px, py);
-        apply(host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
-        drawing_ = false;
-        drawn_.clear();
-      }
-    } else if (drawn_.size() >= 3 && keyPressed(ImGuiKey_Enter)) {
+    auto finishLoop = [&] {
       std::vector<Vec2> pts;
       for (auto [px, py] : drawn_) pts.emplace_back(px, py);
       apply(host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
       drawing_ = false;
       drawn_.clear();
+    };
+    const bool enter = drawn_.size() >= 3 && keyPressed(ImGuiKey_Enter);
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      const bool closes = drawn_.size() >= 3 && dist(mouse, toScreen(Vec2(drawn_[0].first, drawn_[0].second))) < 8;
+      if (closes) finishLoop();
+      else drawn_.emplace_back(snapped(toWorld(mouse))[0], snapped(toWorld(mouse))[1]);
+    } else if (enter) {
+      finishLoop();
     } else if (keyPressed(ImGuiKey_Escape)) {
       drawing_ = false;
       drawn_.clear();

@@ -139,5 +139,29 @@ TEST(EditFuzz, RandomEditingNeverLeavesAnOpenShell) {
   EXPECT_GT(built, 100u);
 }
 
+// Documents that long runs (CORBEL_EDIT_FUZZ_SECONDS=1800) found the kernel cannot yet close:
+// plans dragged into slivers and spikes under stacks of overhangs. Each must still be reported
+// as a failure with a reason, never crash or hang; one that closes is to be moved out of
+// tests/data/edit (it has become a regression case).
+TEST(EditFuzz, KnownHardCasesFailWithAReason) {
+  int cases = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(CORBEL_SOURCE_DIR) + "/tests/data/edit")) {
+    if (entry.path().extension() != ".corbel") continue;
+    ++cases;
+    const ExtrusionSpec s = std::get<ExtrusionSpec>(loadProject(entry.path().string()).document.objects[0].spec);
+    SCOPED_TRACE(entry.path().filename().string());
+    ASSERT_FALSE(checkSpec(s).has_value());
+    const ExtrusionResult r = extrude(s, nullptr, 5.0);
+    Scene scene;
+    bool closed = unpairedEdges(r.shell) == 0;
+    if (closed) {
+      scene.replaceObject(1, Kind::Shell, "x", toMeshData(r.shell, s, "plaster"));
+      closed = scene.validate(1).problems().empty();
+    }
+    EXPECT_FALSE(closed) << "now closes: move it to the regression cases";
+  }
+  EXPECT_GE(cases, 4);
+}
+
 }  // namespace
 }  // namespace corbel::extrude::test
