@@ -754,6 +754,24 @@ void App::handleViewportInput() {
   if (panning) camera_.pan(d.x, d.y, static_cast<int>(vpH_));
   else if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) camera_.orbit(d.x, d.y);
   if (io.MouseWheel != 0) camera_.zoom(io.MouseWheel);
+  // A click (no drag) on the selected extrusion picks a face: its provenance is shown and its
+  // plan edge and profile segment are highlighted in the panes.
+  if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !io.KeyShift) {
+    const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
+    const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+    const auto* spec = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
+    if (spec && std::hypot(drag.x, drag.y) < 3.0f) {
+      const double x = 2.0 * (m.x - vpX_) / vpW_ - 1.0, y = 1.0 - 2.0 * (m.y - vpY_) / vpH_;
+      const glm::dmat4 inv = glm::inverse(camera_.projection(vpW_ / std::max(vpH_, 1.0f)) * camera_.view());
+      glm::dvec4 a = inv * glm::dvec4(x, y, -1.0, 1.0), b = inv * glm::dvec4(x, y, 1.0, 1.0);
+      a /= a.w;
+      b /= b.w;
+      Vec3 dir(b.x - a.x, b.y - a.y, b.z - a.z);
+      dir.normalize();
+      const std::string what = panes_.pick(*spec, Vec3(a.x, a.y, a.z), dir);
+      if (!what.empty()) log(o->name + ": picked " + what);
+    }
+  }
 }
 
 // One line of the edit script: an edit (extrude/edit.h) committed like a user's, its object

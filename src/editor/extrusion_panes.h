@@ -4,6 +4,7 @@
 // editing operations of extrude/edit.h and is committed to the document's history, so it is
 // undoable and the preview re-extrudes from the new spec.
 #include "core/document.h"
+#include "core/geometry.h"
 
 #include <functional>
 #include <optional>
@@ -29,6 +30,10 @@ class ExtrusionPanes {
   // Draws both panes in the rectangle (pos, size), plan above profile.
   void draw(const PaneHost& host, float x, float y, float w, float h);
   void reset();  // another object was selected
+  // A click in the 3D view: the face of the object's shell under the ray (re-extruded, so its
+  // provenance is exact) selects its plan edge and profile segment. Returns a description, or
+  // "" when the ray misses.
+  std::string pick(const ExtrusionSpec& spec, const Vec3& origin, const Vec3& direction);
 
  private:
   void drawPlan(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h);
@@ -50,7 +55,7 @@ class ExtrusionPanes {
   // Profile view.
   int profile_ = 0;
   double pzoom_ = 30, pw0_ = -1, pz0_ = -0.5;  // pixels per metre, lower-left corner in (w, z)
-  std::optional<int> dragPoint_, selectedPoint_;
+  std::optional<int> dragPoint_, selectedPoint_, pickedSegment_;
   float overhangHeight_ = 3.0f, overhangDepth_ = 0.4f;
   // "Add step" on the selected edge: a natural step at an anchor (Sec. 3.4–3.5).
   float stepFraction_ = 0.5f, stepHeight_ = 3.0f, stepWidth_ = 1.6f, stepDepth_ = 0.3f, stepCant_ = 0.4f;
