@@ -103,6 +103,7 @@ void ExtrusionPanes::reset() {
   selectedEdges_.clear();
   dragCorner_.reset();
   selectedCorner_.reset();
+  boxFrom_.reset();
   drawing_ = false;
   drawn_.clear();
   profile_ = 0;
@@ -396,8 +397,28 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
         profile_ = l.profile[hotEdge->second];
         selectedCorner_.reset();
       } else {
-        selectedEdges_.clear();
+        if (!io.KeyShift) selectedEdges_.clear();
         selectedCorner_.reset();
+        boxFrom_ = std::make_pair(mouse.x, mouse.y);  // a drag from empty space selects by box
+      }
+    }
+    // Box selection: every edge with both ends inside the box (Shift adds to the selection).
+    if (boxFrom_) {
+      const ImVec2 a(boxFrom_->first, boxFrom_->second);
+      const ImVec2 lo(std::min(a.x, mouse.x), std::min(a.y, mouse.y)), hi(std::max(a.x, mouse.x), std::max(a.y, mouse.y));
+      auto inBox = [&](const Vec2& p) {
+        const ImVec2 q = toScreen(p);
+        return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
+      };
+      if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        ImGui::GetWindowDrawList()->AddRect(lo, hi, IM_COL32(255, 255, 255, 160));
+      } else {
+        if (hi.x - lo.x > 3 || hi.y - lo.y > 3)
+          for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li)
+            for (int i = 0; i < static_cast<int>(spec.loops[li].points.size()); ++i)
+              if (inBox(spec.loops[li].points[i]) && inBox(spec.loops[li].points[(i + 1) % spec.loops[li].points.size()]))
+                selectedEdges_.insert({li, i});
+        boxFrom_.reset();
       }
     }
     if (dragCorner_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {

@@ -49,6 +49,7 @@ class ExtrusionPanes {
   double grid_ = 0.25;
   std::set<std::pair<int, int>> selectedEdges_;
   std::optional<std::pair<int, int>> dragCorner_, selectedCorner_;
+  std::optional<std::pair<float, float>> boxFrom_;  // where a box selection started (pixels)
   bool drawing_ = false;
   std::vector<std::pair<double, double>> drawn_;
 
