@@ -85,6 +85,9 @@ class Stager {
   void addFlatFace(std::vector<int> loop, bool up, const ShellFace& info);
 
   Plan runStage(const Plan& plan, double z, double next, bool first);
+  // Runs one sweep (a stage or a recursive extrusion) under the remaining time, keeping its
+  // faces raw; its events, divergence and warnings (with `context` appended) join the shell's.
+  SweepOutput runSweep(SweepInput& in, const std::string& context);
   Plan change(const Plan& plan, double h, bool atBase);
   Plan offset(const Plan& plan, double h, const OffsetEvent& ev, std::size_t index);
   Plan forcedSteps(const Plan& plan, double h, bool atBase);
@@ -237,14 +240,22 @@ void Stager::addFlatFace(std::vector<int> loop, bool up, const ShellFace& info) 
   addFace(std::move(f));
 }
 
+SweepOutput Stager::runSweep(SweepInput& in, const std::string& context) {
+  in.keepRaw = true;
+  in.timeLimitSeconds = remaining();
+  SweepOutput out = sweep(in, tol_, progress_);
+  events_ += out.events;
+  diverged_ = diverged_ || out.diverged;
+  for (auto& w : out.warnings) warnings_.push_back(w + context);
+  return out;
+}
+
 // One stage of the sweep from z up to `next`; returns the active plan at `next`.
 Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
   SweepInput in;
   in.baseZ = z;
   in.emitBase = first;
   in.stopZ = next;
-  in.keepRaw = true;
-  in.timeLimitSeconds = remaining();
   std::vector<const Active*> flat;
   for (const auto& loop : plan) {
     std::vector<SweepEdge> l;
@@ -254,10 +265,7 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
     }
     in.loops.push_back(std::move(l));
   }
-  SweepOutput out = sweep(in, tol_, progress_);
-  events_ += out.events;
-  diverged_ = diverged_ || out.diverged;
-  for (auto& w : out.warnings) warnings_.push_back(std::move(w));
+  SweepOutput out = runSweep(in, "");
   std::vector<int> map(out.points.size());
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     const Vec3& p = out.points[i];
@@ -461,8 +469,6 @@ Plan Stager::change(const Plan& plan, double h, bool atBase) {
   in.baseZ = 0;
   in.stopZ = 1;
   in.emitBase = false;
-  in.keepRaw = true;
-  in.timeLimitSeconds = remaining();
   std::vector<const Item*> flat;
   for (const auto& l : loops) {
     std::vector<SweepEdge> sl;
@@ -479,9 +485,7 @@ Plan Stager::change(const Plan& plan, double h, bool atBase) {
     }
     in.loops.push_back(std::move(sl));
   }
-  SweepOutput out = sweep(in, tol_, progress_);
-  events_ += out.events;
-  for (auto& w : out.warnings) warnings_.push_back(w + " (in the recursive extrusion at height " + std::to_string(h) + ")");
+  SweepOutput out = runSweep(in, " (in the recursive extrusion at height " + std::to_string(h) + ")");
   std::vector<int> map(out.points.size(), -1);
   if (!atBase) {
     for (std::size_t i = 0; i < out.points.size(); ++i) map[i] = weld(Vec2(out.points[i][0], out.points[i][1]), h);
@@ -675,8 +679,6 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
   in.baseZ = 0;
   in.stopZ = 2;
   in.emitBase = false;
-  in.keepRaw = true;
-  in.timeLimitSeconds = remaining();
   std::vector<const Active*> flat;
   const EPolygonSet active = planSet(plan);
   for (const auto& loop : plan) {
@@ -695,9 +697,7 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
     }
     in.loops.push_back(std::move(sl));
   }
-  SweepOutput out = sweep(in, tol_, progress_);
-  events_ += out.events;
-  for (auto& w : out.warnings) warnings_.push_back(w + " (in the offset event at height " + std::to_string(h) + ")");
+  SweepOutput out = runSweep(in, " (in the offset event at height " + std::to_string(h) + ")");
 
   // R, and the pieces of its two boundaries by the edge they come from.
   struct Piece {
