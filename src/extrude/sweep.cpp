@@ -132,6 +132,9 @@ class Sweeper {
   // A corner that replaces closed ones: made, resolved and, if it lives, predicted.
   void relink(int prev, int next, int vertex, const Vec2& at, double z, int depth);
   void mergeColinear(int c, double z, int depth);
+  // Post inter-chain validation (Sec. 4.4): do the corners an event made at l keep the active
+  // plan simple up to maxRise above it? False where their wedges overlap or their edges cross.
+  bool locallySimple(const std::vector<int>& made, const Vec2& l, double z, double maxRise) const;
 
   // Events.
   void predict(int corner);
@@ -175,6 +178,8 @@ class Sweeper {
   double lastEventZ_ = 0;
   int repeats_ = 0;
   double recentZ_ = std::numeric_limits<double>::quiet_NaN();
+  std::size_t overlaps_ = 0;  // events after which the plan overlapped itself
+  Vec3 firstOverlap_;
 };
 
 // ------------------------------------------------------------------ geometry
@@ -285,10 +290,19 @@ void Sweeper::resolveCorner(int ci, double z, int depth) {
   const Corner& c = corners_[ci];
   const Edge& a = edges_[c.prev];
   const Edge& b = edges_[c.next];
-  if (std::abs(cross2(a.d, b.d)) > tol_.mergeSine) return;  // an ordinary corner
+  const double sine = std::abs(cross2(a.d, b.d));
+  if (sine > std::max(tol_.mergeSine, tol_.ridgeMaxSine)) return;  // an ordinary corner
   if (OpenMesh::dot(a.d, b.d) < 0) {
+    // Almost antiparallel: one line (a ridge) when they are within ridgeSine, or, up to
+    // ridgeMaxSine, when the sliver between them is too small to matter (sine · L² of the
+    // shorter edge under ridgeArea). Otherwise the corner races along the ridge exactly.
+    if (sine > tol_.ridgeSine) {
+      const Vec2 l = cornerAt(ci, z);
+      const double shorter = std::min((l - cornerAt(a.start, z)).norm(), (cornerAt(b.end, z) - l).norm());
+      if (sine * shorter * shorter > tol_.ridgeArea) return;
+    }
     zipSpike(ci, z, depth);
-  } else if (std::abs(a.k - b.k) > 1e-12 * (1.0 + std::abs(a.k) + std::abs(b.k))) {
+  } else if (sine <= tol_.mergeSine && std::abs(a.k - b.k) > 1e-12 * (1.0 + std::abs(a.k) + std::abs(b.k))) {
     mergeColinear(ci, z, depth);
   }
 }
@@ -664,9 +678,90 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
       }
     }
   }
+  const std::size_t firstMade = corners_.size() - newCorners.size();
   for (int ci : newCorners) resolveCorner(ci, z);
   for (int ci : newCorners)
     if (corners_[ci].alive) predict(ci);
+  // Post inter-chain validation (Sec. 4.4): the corners made at l must keep the plan simple
+  // just above it, below the next event. Where they do not, an earlier configuration was
+  // already degenerate; the sweep says so.
+  std::vector<int> made;
+  for (std::size_t ci = firstMade; ci < corners_.size(); ++ci)
+    if (corners_[ci].alive && corners_[ci].vertex == vl) made.push_back(static_cast<int>(ci));
+  const double next = queue_.empty() ? std::numeric_limits<double>::infinity() : queue_.top().z;
+  if (next - z > 1e3 * tol_.height && !locallySimple(made, l, z, 0.25 * (next - z))) {
+    SWEEP_TRACE("  post inter-chain check: the plan overlaps itself above (%g, %g, %g)", l[0], l[1], z);
+    if (overlaps_++ == 0) firstOverlap_ = Vec3(l[0], l[1], z);
+  }
+  return true;
+}
+
+bool Sweeper::locallySimple(const std::vector<int>& made, const Vec2& l, double z, double maxRise) const {
+  if (made.size() < 2) return true;
+  // Within R (half the shortest edge of the made corners) only their edges matter, and each
+  // corner's neighbourhood is a wedge: its apex moves from l with the corner, its sides are
+  // its two edges.
+  double R = std::numeric_limits<double>::infinity(), speed = 0;
+  for (int ci : made) {
+    const Corner& c = corners_[ci];
+    R = std::min(R, (cornerAt(edges_[c.prev].start, z) - l).norm());
+    R = std::min(R, (cornerAt(edges_[c.next].end, z) - l).norm());
+    speed = std::max(speed, c.speed);
+  }
+  R *= 0.5;
+  if (!(R > 10 * tol_.cluster) || !(speed > 0)) return true;
+  struct Wedge {
+    Vec2 p, a, b, v;  // apex, arriving and leaving directions, apex velocity
+    bool convex;
+  };
+  std::vector<Wedge> w;
+  std::vector<double> angles;  // every side's direction from l
+  for (int ci : made) {
+    const Corner& c = corners_[ci];
+    const Vec2 a = edges_[c.prev].d, b = edges_[c.next].d;
+    // A spike sharper than about 0.1° races along its ridge: its wedge says nothing reliable.
+    if (std::abs(cross2(a, b)) <= 2e-3 && OpenMesh::dot(a, b) < 0) return true;
+    w.push_back({Vec2(0.0, 0.0), a, b, c.v, cross2(a, b) >= 0});
+    angles.push_back(std::atan2(-a[1], -a[0]));
+    angles.push_back(std::atan2(b[1], b[0]));
+  }
+  std::sort(angles.begin(), angles.end());
+  // The apexes may spread only a small part of the narrowest sector at the sampling radius, so
+  // the samples see the wedges' order around l, not the noise of where their apexes are.
+  const double rho = 0.1 * R;
+  double narrowest = 2 * std::numbers::pi;
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    const double gap = (i + 1 < angles.size() ? angles[i + 1] : angles[0] + 2 * std::numbers::pi) - angles[i];
+    if (gap > 1e-9) narrowest = std::min(narrowest, gap);
+  }
+  const double h = std::min(maxRise, 1e-3 * rho * narrowest / speed);
+  for (Wedge& k : w) k.p = k.v * h;  // relative to l, so tiny offsets keep their digits
+  auto inside = [](const Wedge& k, const Vec2& q) {
+    const double s1 = cross2(k.a, q - k.p), s2 = cross2(k.b, q - k.p);
+    return k.convex ? (s1 > 0 && s2 > 0) : (s1 > 0 || s2 > 0);
+  };
+  auto covered = [&](const Vec2& q) {
+    int n = 0;
+    for (const Wedge& k : w) n += inside(k, q);
+    return n;
+  };
+  // Far samples: between every two sides, on a circle of radius rho around l (the origin).
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    const double a0 = angles[i], a1 = i + 1 < angles.size() ? angles[i + 1] : angles[0] + 2 * std::numbers::pi;
+    if (a1 - a0 <= 1e-9) continue;
+    const double m = 0.5 * (a0 + a1);
+    if (covered(Vec2(std::cos(m), std::sin(m)) * rho) > 1) return false;
+  }
+  // Near samples: just inside each apex, on its bisector (colinear sides that overlap).
+  double spread = 0;
+  for (const Wedge& k : w) spread = std::max(spread, k.p.norm());
+  if (spread > 0)
+    for (const Wedge& k : w) {
+      Vec2 bis = leftOf(k.a) + leftOf(k.b);
+      if (bis.norm() < 1e-9) bis = leftOf(k.a);
+      bis.normalize();
+      if (covered(k.p + bis * (1e-2 * spread)) > 1) return false;
+    }
   return true;
 }
 
@@ -866,7 +961,20 @@ SweepOutput Sweeper::run() {
     h.pop_back();
     if (!h.empty()) queue_.push(h.front());
     if (cand.z < z_ - tol_.height) continue;  // predicted before an earlier change
-    if (handleIntersection(cand)) z_ = std::max(z_, cand.z);
+    if (handleIntersection(cand)) {
+      z_ = std::max(z_, cand.z);
+      // An event can cost far more than a pop (hundreds of edges through one point in a
+      // degenerate plan), so the time limit is also checked after every one.
+      if (in_.timeLimitSeconds > 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
+        throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+    }
+  }
+  if (overlaps_) {
+    std::ostringstream m;
+    m << "the active plan overlapped itself after " << overlaps_ << " event(s), first at (" << firstOverlap_[0] << ", "
+      << firstOverlap_[1] << ", " << firstOverlap_[2] << "): a degenerate configuration (Sec. 4.4); the output may be undesirable";
+    warnings_.push_back(m.str());
   }
   SweepOutput out;
   if (std::isfinite(in_.stopZ)) capRemaining(in_.stopZ, &out.plan);

@@ -16,16 +16,21 @@ struct Tolerances {
   // Below this sine of their angle two edge directions are parallel for computing a corner's
   // motion (their lines' intersection is ill-conditioned).
   double parallelSine;
-  // Below this sine, neighbouring edges are treated as one line: antiparallel ones meet along
-  // a ridge at once (instead of racing a corner along an almost flat ridge), colinear ones of
-  // different angles merge (Sec. 4.8). 1e-6 moves a 50 m ridge by 0.05 mm at most.
+  // Below this sine, colinear neighbours of different angles merge into one line (Sec. 4.8):
+  // the higher priority takes over. 1e-7 moves a 50 m wall by 5 µm at most.
   double mergeSine;
+  // Antiparallel neighbours (a spike) within ridgeSine meet along a ridge at once instead of
+  // racing a corner along an almost flat ridge; up to ridgeMaxSine they do so only where the
+  // sliver this ignores is small: sine · (shorter edge)² below ridgeArea (an area, m²).
+  double ridgeSine;
+  double ridgeMaxSine;
+  double ridgeArea;
   // Input points closer than this are one point (zero-length edges are refused).
   double minEdge;
 
   static Tolerances forScale(double scale) {
     const double s = std::max(scale, 1e-3);
-    return {1e-9 * s, 1e-8 * s, 1e-8 * s, 1e-8, 1e-8, 1e-7 * s};
+    return {1e-9 * s, 1e-8 * s, 1e-8 * s, 1e-8, 1e-7, 1e-8, 1e-5, 1e-11 * s * s, 1e-7 * s};
   }
 };
 
