@@ -364,6 +364,10 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
         }
         m.size = {d[0], d[1], d[2]};
       }
+      if (m.feature == FeatureKind::None && ar.find("size")) {
+        warnings.push_back(ar.path() + ".size: ignored: the anchor has no feature");
+        m.size = FeatureSize();
+      }
       if (auto rep = ar.find("repeat")) m.repeat = repeatFrom(*rep, m.anchor);
       e.anchors.push_back(std::move(m));
     }

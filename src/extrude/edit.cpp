@@ -261,6 +261,7 @@ ExtrusionSpec addMeshAnchor(ExtrusionSpec s, const MeshAnchor& anchor) {
       fail(bad->substr(0, colon), bad->substr(colon + 2));
     }
   s.anchors.push_back(anchor);
+  if (anchor.feature == FeatureKind::None) s.anchors.back().size = FeatureSize();  // not saved without a feature
   checkRepeatOf(s, anchor.anchor, anchor.repeat);
   return s;
 }
@@ -284,7 +285,9 @@ ExtrusionSpec setFeatureSize(ExtrusionSpec s, int index, const FeatureSize& size
     const auto colon = bad->find(": ");
     fail(bad->substr(0, colon), bad->substr(colon + 2));
   }
-  meshAnchorAt(s, index).size = size;
+  MeshAnchor& m = meshAnchorAt(s, index);
+  if (m.feature == FeatureKind::None) fail("index", "mesh anchor " + std::to_string(index) + " has no feature to resize");
+  m.size = size;
   return s;
 }
 
