@@ -3,7 +3,11 @@
 // The kernel that turns it into a shell lives in src/extrude.
 #include "core/geometry.h"
 
+#include <cstddef>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace corbel {
@@ -43,6 +47,23 @@ struct Anchor {
   bool operator==(const Anchor&) const = default;
 };
 
+// Repeating an anchored thing (Sec. 3.6): the anchor marks the first element and `along` (and,
+// for a grid, `height`) the last one, on the same input edge. Between them go as many columns
+// as fit with at least `spacing` metres between neighbours (rows: `rowSpacing`), spread evenly
+// so both ends are used. `along` is in the anchor's own units (a fraction of the active edge
+// for a relative anchor, metres along the input edge for an absolute one), so with relative
+// anchors the columns follow a resized facade. The number of columns of a relative repeat is
+// fixed by the input edge's length.
+enum class RepeatKind { None, Row, Grid };
+struct Repeat {
+  RepeatKind kind = RepeatKind::None;
+  double along = 0.5;       // the last column's place on the edge
+  double height = 0.0;      // grid: the last row's height above the base
+  double spacing = 2.0;     // least distance between columns, m
+  double rowSpacing = 3.0;  // grid: least distance between rows, m
+  bool operator==(const Repeat&) const = default;
+};
+
 // A natural step (Sec. 3.5, 4.7): a small protrusion inserted into the active plan at the
 // anchor and grown by a recursive extrusion to its size, so it never self-intersects.
 // Rectangle (dormers, chimneys, buttresses): `width` along the edge, `depth` out. Bay: an
@@ -59,6 +80,7 @@ struct PlanStep {
   double cant = 0.0;   // bay: how much narrower the front is on each side, m
   int frontProfile = 0, sideProfile = 0;
   std::vector<Vec2> points;  // forced steps only
+  Repeat repeat;             // a row (or grid) of the same step, e.g. dormers along a roof
   bool operator==(const PlanStep&) const = default;
 };
 
@@ -81,12 +103,36 @@ struct OffsetEvent {
   bool operator==(const OffsetEvent&) const = default;
 };
 
-// A named place on the shell (doors, windows): the kernel reports its position and frame.
+// A feature mesh instanced at a mesh anchor (Fig. 28), built in the anchor's frame by
+// extrude/features.h.
+enum class FeatureKind { None, Door, Window, RoofWindow, ChimneyPot };
+struct FeatureSize {
+  double width = 1.0;   // along the edge, m
+  double height = 1.5;  // up the face (a chimney pot: straight up), m
+  double depth = 0.15;  // out of the face (a chimney pot: its size across), m
+  bool operator==(const FeatureSize&) const = default;
+};
+
+// A named place on the shell (doors, windows): the kernel reports its position and frame and,
+// when a feature is attached, instances its mesh there (repeated as `repeat` says).
 struct MeshAnchor {
+  MeshAnchor() = default;
+  MeshAnchor(std::string n, Anchor a, FeatureKind f = FeatureKind::None, FeatureSize s = {}, Repeat r = {})
+      : name(std::move(n)), anchor(a), feature(f), size(s), repeat(r) {}
   std::string name;
   Anchor anchor;
+  FeatureKind feature = FeatureKind::None;
+  FeatureSize size;
+  Repeat repeat;
   bool operator==(const MeshAnchor&) const = default;
 };
+
+// Feature names as the project file writes them ("door", "window", "roof_window",
+// "chimney_pot"; "none").
+const char* featureName(FeatureKind kind);
+std::optional<FeatureKind> featureFromName(std::string_view name);
+// A size that suits the kind (used when a file or a script names a feature without a size).
+FeatureSize defaultFeatureSize(FeatureKind kind);
 
 struct ExtrusionSpec {
   std::vector<PlanLoop> loops;
@@ -100,5 +146,37 @@ struct ExtrusionSpec {
   std::vector<MeshAnchor> anchors;
   bool operator==(const ExtrusionSpec&) const = default;
 };
+
+// Columns and rows of a repeat at an anchor (1 × 1 when it does not repeat). Columns of a
+// relative anchor count on the input edge's length (0 when the edge does not exist). Counts
+// are capped at 1e9 each so absurd spacings stay representable for the limit checks.
+struct RepeatGrid {
+  std::size_t columns = 1, rows = 1;
+  std::size_t count() const { return columns * rows; }
+};
+RepeatGrid repeatGrid(const ExtrusionSpec& spec, const Anchor& anchor, const Repeat& repeat);
+// The anchors of every element of a repeat, first row first, each row from the first column
+// to the last: the anchor itself when it does not repeat.
+std::vector<Anchor> repeatAnchors(const ExtrusionSpec& spec, const Anchor& anchor, const Repeat& repeat);
+
+// Limits on the expansion (per extrusion): mesh-anchor instances and step instances.
+inline constexpr std::size_t kMaxFeatureInstances = 10000;
+inline constexpr std::size_t kMaxStepInstances = 1000;
+
+// The spec with every repeat expanded into single instances (Sec. 3.6), before the sweep: a
+// repeated step or anchor becomes one entry per element, named "name (i of n)", without a
+// repeat. `stepSource` and `anchorSource` give each entry's index in the original spec.
+struct ExpandedSpec {
+  ExtrusionSpec spec;
+  std::vector<int> stepSource, anchorSource;
+};
+ExpandedSpec expandRepeats(const ExtrusionSpec& spec);
+
+// Value checks shared by the loader, the kernel and the editing operations. Each returns the
+// first fault naming its field relative to the checked value ("spacing: ..."), or nullopt.
+std::optional<std::string> checkRepeat(const Anchor& anchor, const Repeat& repeat);
+std::optional<std::string> checkFeatureSize(const FeatureSize& size);
+// The expanded instance counts against the limits, e.g. "anchors[2].repeat: ...".
+std::optional<std::string> checkInstanceCounts(const ExtrusionSpec& spec);
 
 }  // namespace corbel

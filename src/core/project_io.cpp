@@ -109,6 +109,17 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
     aj["height"] = a.height;
     return aj;
   };
+  auto repeatJson = [&](const Repeat& rep) {
+    ojson rj;
+    rj["kind"] = rep.kind == RepeatKind::Grid ? "grid" : "row";
+    rj["along"] = rep.along;
+    rj["spacing"] = rep.spacing;
+    if (rep.kind == RepeatKind::Grid) {
+      rj["height"] = rep.height;
+      rj["row_spacing"] = rep.rowSpacing;
+    }
+    return rj;
+  };
   if (!e.steps.empty()) {
     ojson steps = ojson::array();
     for (const PlanStep& st : e.steps) {
@@ -128,6 +139,7 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
       if (st.shape == StepShape::Bay || st.cant != 0) sj["cant"] = st.cant;
       sj["front_profile"] = e.profiles[st.frontProfile].name;
       sj["side_profile"] = e.profiles[st.sideProfile].name;
+      if (st.repeat.kind != RepeatKind::None) sj["repeat"] = repeatJson(st.repeat);
       steps.push_back(std::move(sj));
     }
     j["steps"] = std::move(steps);
@@ -158,6 +170,11 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
     for (const MeshAnchor& m : e.anchors) {
       ojson mj = anchorJson(m.anchor);
       mj["name"] = m.name;
+      if (m.feature != FeatureKind::None) {
+        mj["feature"] = featureName(m.feature);
+        mj["size"] = ojson::array({m.size.width, m.size.height, m.size.depth});
+      }
+      if (m.repeat.kind != RepeatKind::None) mj["repeat"] = repeatJson(m.repeat);
       anchors.push_back(std::move(mj));
     }
     j["anchors"] = std::move(anchors);
@@ -249,10 +266,33 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
     if (auto h = ar.find("height")) a.height = h->number(0.0, limits::kMaxCoordinate);
     return a;
   };
+  // Repeats (Sec. 3.6): {kind: row | grid, along, spacing, height, row_spacing}.
+  auto repeatFrom = [&](const JsonReader& rr, const Anchor& a) {
+    rr.expectObject();
+    for (auto& k : rr.unknownKeys({"kind", "along", "spacing", "height", "row_spacing"}))
+      warnings.push_back(k + ": unknown key ignored");
+    Repeat rep;
+    const JsonReader kindReader = rr.at("kind");
+    const std::string kind = kindReader.string(32);
+    if (kind == "row") rep.kind = RepeatKind::Row;
+    else if (kind == "grid") rep.kind = RepeatKind::Grid;
+    else kindReader.fail("expected \"row\" or \"grid\", found \"" + kind + "\"");
+    rep.along = rr.at("along").number();
+    rep.spacing = rr.at("spacing").number();
+    if (rep.kind == RepeatKind::Grid) {
+      rep.height = rr.at("height").number();
+      rep.rowSpacing = rr.at("row_spacing").number();
+    }
+    if (auto problem = checkRepeat(a, rep)) {
+      const auto colon = problem->find(": ");
+      rr.at(problem->substr(0, colon)).fail(problem->substr(colon + 2));
+    }
+    return rep;
+  };
   if (auto steps = r.find("steps")) {
     for (const JsonReader& sr : steps->array(limits::kMaxSteps)) {
       sr.expectObject();
-      for (auto& k : sr.unknownKeys({"name", "anchor", "shape", "width", "depth", "cant", "front_profile", "side_profile", "points"}))
+      for (auto& k : sr.unknownKeys({"name", "anchor", "shape", "width", "depth", "cant", "front_profile", "side_profile", "points", "repeat"}))
         warnings.push_back(k + ": unknown key ignored");
       PlanStep st;
       if (auto v = sr.find("name")) st.name = v->string(limits::kMaxNameLength);
@@ -272,6 +312,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
       if (auto v = sr.find("cant")) st.cant = v->number(0.0, limits::kMaxCoordinate);
       st.frontProfile = profileIndex(sr.at("front_profile"));
       st.sideProfile = sr.find("side_profile") ? profileIndex(sr.at("side_profile")) : st.frontProfile;
+      if (auto rep = sr.find("repeat")) st.repeat = repeatFrom(*rep, st.anchor);
       e.steps.push_back(std::move(st));
     }
   }
@@ -301,10 +342,39 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   if (auto anchors = r.find("anchors")) {
     for (const JsonReader& ar : anchors->array(limits::kMaxSteps)) {
       MeshAnchor m;
-      m.anchor = anchorFrom(ar, {"name"});
+      m.anchor = anchorFrom(ar, {"name", "feature", "size", "repeat"});
       m.name = ar.at("name").string(limits::kMaxNameLength);
+      if (auto f = ar.find("feature")) {
+        const std::string name = f->string(32);
+        const auto kind = featureFromName(name);
+        if (!kind)
+          f->fail("expected \"none\", \"door\", \"window\", \"roof_window\" or \"chimney_pot\", found \"" + name + "\"");
+        m.feature = *kind;
+        m.size = defaultFeatureSize(m.feature);
+      }
+      if (auto sz = ar.find("size")) {
+        const auto v = sz->array(3);
+        if (v.size() != 3) sz->fail("expected [width, height, depth] in metres");
+        double d[3];
+        for (std::size_t i = 0; i < 3; ++i) {
+          d[i] = v[i].number();
+          FeatureSize probe;
+          (i == 0 ? probe.width : i == 1 ? probe.height : probe.depth) = d[i];
+          if (auto problem = checkFeatureSize(probe)) v[i].fail(problem->substr(problem->find(": ") + 2));
+        }
+        m.size = {d[0], d[1], d[2]};
+      }
+      if (m.feature == FeatureKind::None && ar.find("size")) {
+        warnings.push_back(ar.path() + ".size: ignored: the anchor has no feature");
+        m.size = FeatureSize();
+      }
+      if (auto rep = ar.find("repeat")) m.repeat = repeatFrom(*rep, m.anchor);
       e.anchors.push_back(std::move(m));
     }
+  }
+  if (auto problem = checkInstanceCounts(e)) {
+    const auto colon = problem->find(": ");
+    throw InputError(r.path() + "." + problem->substr(0, colon), problem->substr(colon + 2));
   }
   return e;
 }

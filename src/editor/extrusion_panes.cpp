@@ -110,6 +110,83 @@ void ExtrusionPanes::reset() {
   dragPoint_.reset();
   selectedPoint_.reset();
   pickedSegment_.reset();
+  selectedFeature_.reset();
+  dragFeature_.reset();
+  dragFeatureHeight_.reset();
+}
+
+namespace {
+
+const FeatureKind kFeatureKinds[] = {FeatureKind::Door, FeatureKind::Window, FeatureKind::RoofWindow, FeatureKind::ChimneyPot};
+const char* const kFeatureLabels = "door\0window\0roof window\0chimney pot\0";
+
+// Where an anchor lies on its input edge in the plan (the plan pane draws input edges).
+std::optional<Vec2> anchorOnPlan(const ExtrusionSpec& spec, const Anchor& a) {
+  if (a.loop < 0 || a.loop >= static_cast<int>(spec.loops.size())) return std::nullopt;
+  const auto& pts = spec.loops[a.loop].points;
+  if (a.edge < 0 || a.edge >= static_cast<int>(pts.size())) return std::nullopt;
+  const Vec2 p = pts[a.edge], q = pts[(a.edge + 1) % pts.size()];
+  const Vec2 d = q - p;
+  const double len = d.norm();
+  return a.absolute ? p + d / std::max(len, 1e-9) * a.along : p + d * a.along;
+}
+
+}  // namespace
+
+// Size, repeat and deletion of the selected feature anchor; each field commits when edited.
+void ExtrusionPanes::featureFields(const PaneHost& host, const ExtrusionSpec& spec) {
+  if (!selectedFeature_ || *selectedFeature_ >= static_cast<int>(spec.anchors.size())) {
+    selectedFeature_.reset();
+    return;
+  }
+  const int k = *selectedFeature_;
+  const MeshAnchor& m = spec.anchors[k];
+  ImGui::Separator();
+  ImGui::Text("Feature \"%s\": %s", m.name.c_str(), featureName(m.feature));
+  if (m.feature != FeatureKind::None) {
+    float size[3] = {float(m.size.width), float(m.size.height), float(m.size.depth)};
+    ImGui::SetNextItemWidth(220);
+    if (ImGui::InputFloat3("W, H, D (m)", size, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+      const FeatureSize fs{size[0], size[1], size[2]};
+      apply(host, [&](const ExtrusionSpec& s) { return ed::setFeatureSize(s, k, fs); }, "Resize " + m.name);
+    }
+  }
+  Repeat rep = m.repeat;
+  int kind = static_cast<int>(rep.kind);
+  ImGui::SetNextItemWidth(90);
+  bool changed = ImGui::Combo("Repeat", &kind, "none\0row\0grid\0");
+  if (changed && rep.kind == RepeatKind::None) {
+    // A new repeat runs to the far end of the edge (relative) or 4 m on (absolute).
+    rep.along = m.anchor.absolute ? m.anchor.along + 4 : (m.anchor.along < 0.5 ? 0.9 : 0.1);
+    rep.height = m.anchor.height + 3;
+  }
+  rep.kind = static_cast<RepeatKind>(kind);
+  if (rep.kind != RepeatKind::None) {
+    float v[2] = {float(rep.along), float(rep.spacing)};
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(140);
+    if (ImGui::InputFloat2(m.anchor.absolute ? "last at, spacing" : "last fraction, spacing", v, "%.2f",
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
+      rep.along = v[0];
+      rep.spacing = v[1];
+      changed = true;
+    }
+    if (rep.kind == RepeatKind::Grid) {
+      float g[2] = {float(rep.height), float(rep.rowSpacing)};
+      ImGui::SetNextItemWidth(140);
+      if (ImGui::InputFloat2("last row height, row spacing", g, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+        rep.height = g[0];
+        rep.rowSpacing = g[1];
+        changed = true;
+      }
+    }
+  }
+  if (changed) apply(host, [&](const ExtrusionSpec& s) { return ed::setFeatureRepeat(s, k, rep); }, "Repeat " + m.name);
+  ImGui::SameLine();
+  if (ImGui::Button("Delete feature")) {
+    apply(host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete " + m.name);
+    selectedFeature_.reset();
+  }
 }
 
 void ExtrusionPanes::apply(const PaneHost& host, const std::function<ExtrusionSpec(const ExtrusionSpec&)>& change,
@@ -237,6 +314,35 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     ImGui::EndPopup();
   }
 
+  if (selectedEdges_.size() == 1) {
+    ImGui::SameLine();
+    if (ImGui::Button("Add feature here")) ImGui::OpenPopup("feature");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("A door, window, roof window or chimney pot at a mesh anchor on the selected edge (Sec. 3.4, Fig. 28)");
+  }
+  if (ImGui::BeginPopup("feature")) {
+    if (ImGui::Combo("Kind", &featureKind_, kFeatureLabels)) {
+      const FeatureSize d = defaultFeatureSize(kFeatureKinds[featureKind_]);
+      featureSize_[0] = float(d.width), featureSize_[1] = float(d.height), featureSize_[2] = float(d.depth);
+    }
+    ImGui::SliderFloat("Along the edge", &featureFraction_, 0.0f, 1.0f, "%.2f");
+    ImGui::InputFloat("Height (m)", &featureHeight_, 0.1f, 1.0f, "%.2f");
+    ImGui::InputFloat3("W, H, D (m)", featureSize_, "%.2f");
+    if (ImGui::Button("Add") && !selectedEdges_.empty()) {
+      const auto [li, ei] = *selectedEdges_.begin();
+      const FeatureKind kind = kFeatureKinds[featureKind_];
+      std::string label = featureName(kind);
+      std::replace(label.begin(), label.end(), '_', ' ');
+      const MeshAnchor m(label, {li, ei, false, featureFraction_, std::max(0.0f, featureHeight_)}, kind,
+                         {featureSize_[0], featureSize_[1], featureSize_[2]});
+      apply(host, [&](const ExtrusionSpec& s) { return ed::addMeshAnchor(s, m); }, "Add " + label);
+      selectedFeature_ = static_cast<int>(spec.anchors.size());  // the new one, once committed
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+  featureFields(host, spec);
+
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float errH = host.error.empty() ? 0.0f : ImGui::GetTextLineHeightWithSpacing() * 2;
@@ -282,13 +388,16 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   // Hit testing.
   const ImVec2 mouse = io.MousePos;
   std::optional<std::pair<int, int>> hotCorner, hotEdge;
-  double best = 8;
+  std::optional<int> hotFeature;
+  for (int k = 0; k < static_cast<int>(spec.anchors.size()); ++k)
+    if (auto at = anchorOnPlan(spec, spec.anchors[k].anchor); at && dist(mouse, toScreen(*at)) < 7) hotFeature = k;
+  double best = hotFeature ? 0 : 8;
   for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li)
     for (int i = 0; i < static_cast<int>(spec.loops[li].points.size()); ++i) {
       const double d = dist(mouse, toScreen(spec.loops[li].points[i]));
       if (d < best) best = d, hotCorner = std::make_pair(li, i);
     }
-  if (!hotCorner) {
+  if (!hotCorner && !hotFeature) {
     best = 6;
     for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li) {
       const auto& pts = spec.loops[li].points;
@@ -334,6 +443,22 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     const double len = d.norm();
     const Vec2 at = st.anchor.absolute ? a + d / std::max(len, 1e-9) * st.anchor.along : a + d * st.anchor.along;
     dl->AddCircle(toScreen(at), 6, IM_COL32(240, 80, 240, 255), 16, 2.0f);
+  }
+  // Mesh anchors (features): cyan circles; a repeat's elements as dots on a line to its last.
+  for (int k = 0; k < static_cast<int>(spec.anchors.size()); ++k) {
+    const MeshAnchor& m = spec.anchors[k];
+    const auto at = anchorOnPlan(spec, m.anchor);
+    if (!at) continue;
+    const ImU32 col = IM_COL32(80, 220, 240, 255);
+    if (m.repeat.kind != RepeatKind::None) {
+      const std::vector<Anchor> all = repeatAnchors(spec, m.anchor, m.repeat);
+      if (auto last = anchorOnPlan(spec, all.back())) dl->AddLine(toScreen(*at), toScreen(*last), (col & 0x00FFFFFF) | 0x80000000, 1.5f);
+      for (std::size_t i = 1; i < all.size() && i < 2000; ++i)
+        if (auto q = anchorOnPlan(spec, all[i])) dl->AddCircleFilled(toScreen(*q), 3, col);
+    }
+    const bool sel = selectedFeature_ && *selectedFeature_ == k;
+    if (sel || (hotFeature && *hotFeature == k)) dl->AddCircleFilled(toScreen(*at), 6, (col & 0x00FFFFFF) | 0x90000000, 16);
+    dl->AddCircle(toScreen(*at), 6, col, 16, sel ? 3.0f : 2.0f);
   }
   // A loop being drawn.
   if (drawing_) {
@@ -387,7 +512,11 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       apply(host, [&](const ExtrusionSpec& s) { return ed::insertCorner(s, li, ei, p); }, "Insert corner");
       selectedCorner_ = std::make_pair(li, ei + 1);
     } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-      if (hotCorner) {
+      if (hotFeature) {
+        selectedFeature_ = hotFeature;
+        dragFeature_ = hotFeature;
+        selectedCorner_.reset();
+      } else if (hotCorner) {
         dragCorner_ = hotCorner;
         selectedCorner_ = hotCorner;
       } else if (hotEdge) {
@@ -433,6 +562,32 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       dragCorner_.reset();
       host.endDrag();
     }
+    // Dragging a feature's marker slides its anchor along its input edge: one undo step.
+    if (dragFeature_ && *dragFeature_ < static_cast<int>(spec.anchors.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
+        ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+      const int k = *dragFeature_;
+      Anchor a = spec.anchors[k].anchor;
+      const auto& pts = spec.loops[a.loop].points;
+      const Vec2 p = pts[a.edge], d = pts[(a.edge + 1) % pts.size()] - p;
+      const double len2 = std::max(OpenMesh::dot(d, d), 1e-18);
+      double t = OpenMesh::dot(toWorld(mouse) - p, d) / len2;
+      if (!io.KeyAlt) t = std::round(t * std::sqrt(len2) / grid_) * grid_ / std::sqrt(len2);
+      const double along = a.absolute ? t * std::sqrt(len2) : std::clamp(t, 0.0, 1.0);
+      if (std::abs(along - a.along) > 1e-12) {
+        a.along = along;
+        apply(host, [&](const ExtrusionSpec& s) { return ed::moveMeshAnchor(s, k, a); }, "Move " + spec.anchors[k].name,
+              "feature-anchor-" + std::to_string(k));
+      }
+    }
+    if (dragFeature_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      dragFeature_.reset();
+      host.endDrag();
+    }
+    if (ImGui::IsWindowFocused() && !selectedCorner_ && selectedFeature_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+      const int k = *selectedFeature_;
+      apply(host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete feature");
+      selectedFeature_.reset();
+    }
     if (ImGui::IsWindowFocused() && selectedCorner_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const auto [li, ci] = *selectedCorner_;
       apply(host, [&](const ExtrusionSpec& s) { return ed::deleteCorner(s, li, ci); }, "Delete corner");
@@ -442,7 +597,10 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   if (hovered) {
     const Vec2 p = toWorld(mouse);
     ImGui::SetTooltip("%.2f, %.2f m%s", p[0], p[1],
-                      hotCorner ? "\ndrag to move, Delete to remove" : hotEdge ? "\nclick to select (Shift adds), double-click to add a corner" : "");
+                      hotFeature ? "\na feature's anchor: drag along its edge, click to edit"
+                      : hotCorner ? "\ndrag to move, Delete to remove"
+                      : hotEdge   ? "\nclick to select (Shift adds), double-click to add a corner"
+                                  : "");
   }
   if (!host.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
@@ -576,9 +734,28 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     const Vec2 c = b + (b - a) / std::max((b - a).norm(), 1e-9) * 1.5;
     dl->AddLine(toScreen(b), toScreen(c), (col & 0x00FFFFFF) | 0x60000000, 1.5f);
   }
-  // Anchor heights of steps (Sec. 3.4).
+  // Anchor heights of steps (Sec. 3.4), and of features (cyan, beside the plan edge: drag up
+  // or down to move the anchor's height).
   for (const PlanStep& st : spec.steps)
     dl->AddCircle(toScreen(Vec2(0, st.anchor.height)), 5, IM_COL32(240, 80, 240, 255), 12, 2.0f);
+  std::optional<int> hotFeature;
+  auto featureMarker = [&](int k) {
+    const ImVec2 q = toScreen(Vec2(0, spec.anchors[k].anchor.height));
+    return ImVec2(q.x - 12, q.y);
+  };
+  for (int k = 0; k < static_cast<int>(spec.anchors.size()); ++k) {
+    const ImVec2 q = featureMarker(k);
+    if (dist(io.MousePos, q) < 7) hotFeature = k;
+    const bool sel = selectedFeature_ && *selectedFeature_ == k;
+    if (sel) dl->AddCircleFilled(q, 5, IM_COL32(80, 220, 240, 150), 12);
+    dl->AddCircle(q, 5, IM_COL32(80, 220, 240, 255), 12, sel ? 3.0f : 2.0f);
+    if (spec.anchors[k].repeat.kind == RepeatKind::Grid) {
+      const ImVec2 top = featureMarker(k), last(top.x, toScreen(Vec2(0, spec.anchors[k].repeat.height)).y);
+      dl->AddLine(top, last, IM_COL32(80, 220, 240, 128), 1.5f);
+      dl->AddCircleFilled(last, 3, IM_COL32(80, 220, 240, 255));
+    }
+  }
+  if (hotFeature) hotPoint.reset(), hotSegment.reset();
   for (int i = 0; i < static_cast<int>(p.points.size()); ++i) {
     const ImVec2 q = toScreen(p.points[i]);
     const bool sel = selectedPoint_ && *selectedPoint_ == i;
@@ -592,9 +769,28 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     const Vec2 at = toProfile(io.MousePos);
     apply(host, [&](const ExtrusionSpec& sp) { return ed::insertProfilePoint(sp, profile_, s, at); }, "Insert profile point");
     selectedPoint_ = s + 1;
+  } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && hotFeature) {
+    selectedFeature_ = hotFeature;
+    dragFeatureHeight_ = hotFeature;
   } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     selectedPoint_ = hotPoint;
     dragPoint_ = hotPoint;
+  }
+  if (dragFeatureHeight_ && *dragFeatureHeight_ < static_cast<int>(spec.anchors.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
+      ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+    const int k = *dragFeatureHeight_;
+    Anchor a = spec.anchors[k].anchor;
+    double z = std::max(0.0, toProfile(io.MousePos)[1]);
+    if (!io.KeyAlt) z = std::round(z * 20) / 20;
+    if (std::abs(z - a.height) > 1e-12) {
+      a.height = z;
+      apply(host, [&](const ExtrusionSpec& s) { return ed::moveMeshAnchor(s, k, a); }, "Move " + spec.anchors[k].name,
+            "feature-height-" + std::to_string(k));
+    }
+  }
+  if (dragFeatureHeight_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    dragFeatureHeight_.reset();
+    host.endDrag();
   }
   if (dragPoint_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) && *dragPoint_ > 0) {
     const int i = *dragPoint_;

@@ -61,6 +61,12 @@ class ExtrusionPanes {
   // "Add step" on the selected edge: a natural step at an anchor (Sec. 3.4–3.5).
   float stepFraction_ = 0.5f, stepHeight_ = 3.0f, stepWidth_ = 1.6f, stepDepth_ = 0.3f, stepCant_ = 0.4f;
   int stepShape_ = 0;  // 0 dormer, 1 bay, 2 buttress
+  // "Add feature here" and the selected mesh anchor with its feature (Sec. 3.4, 3.6, Fig. 28).
+  int featureKind_ = 1;  // 0 door, 1 window, 2 roof window, 3 chimney pot
+  float featureFraction_ = 0.5f, featureHeight_ = 1.0f;
+  float featureSize_[3] = {1.2f, 1.4f, 0.12f};
+  std::optional<int> selectedFeature_, dragFeature_, dragFeatureHeight_;
+  void featureFields(const PaneHost& host, const ExtrusionSpec& spec);
 };
 
 }  // namespace corbel::editor

@@ -1,6 +1,7 @@
 #include "extrude/batch.h"
 
 #include "core/scene.h"
+#include "extrude/features.h"
 
 #include <atomic>
 #include <chrono>
@@ -30,6 +31,7 @@ void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, bool merge, do
       return;
     }
     MeshData mesh = toMeshData(er.shell, item.spec, item.spec.material);
+    appendFeatures(mesh, item.spec, er, r.warnings);
     Scene scene;
     scene.replaceObject(1, Kind::Shell, item.id, mesh);
     const ValidityReport v = scene.validate(1);
@@ -42,7 +44,13 @@ void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, bool merge, do
       r.error = "the shell is not a closed 2-manifold:";
       for (const auto& p : v.problems()) r.error += " " + p + ";";
     }
-    if (keepMesh) r.mesh = merge ? toMeshData(er.shell, item.spec, item.spec.material, true) : std::move(mesh);
+    if (keepMesh && merge) {
+      r.mesh = toMeshData(er.shell, item.spec, item.spec.material, true);
+      std::vector<std::string> again;
+      appendFeatures(r.mesh, item.spec, er, again);
+    } else if (keepMesh) {
+      r.mesh = std::move(mesh);
+    }
   } catch (const std::exception& e) {
     r.error = e.what();
   }

@@ -216,6 +216,88 @@ ExtrusionSpec deleteStep(ExtrusionSpec s, int step) {
   return s;
 }
 
+namespace {
+
+// Throws when the anchor names no edge of the plan or its place is not a valid number.
+void checkAnchorOn(const ExtrusionSpec& s, const Anchor& a) {
+  if (a.loop < 0 || a.loop >= static_cast<int>(s.loops.size())) fail("anchor.loop", "no loop number " + std::to_string(a.loop));
+  if (a.edge < 0 || a.edge >= static_cast<int>(s.loops[a.loop].points.size()))
+    fail("anchor.edge", "loop " + std::to_string(a.loop) + " has no edge " + std::to_string(a.edge));
+  if (!std::isfinite(a.along) || (!a.absolute && (a.along < 0 || a.along > 1)) || std::abs(a.along) > 1e7)
+    fail("anchor.along", a.absolute ? "an absolute anchor needs a finite distance" : "a relative anchor needs a fraction within [0, 1]");
+  if (!std::isfinite(a.height) || a.height < 0 || a.height > 1e5) fail("anchor.height", "must be within [0, 1e5] m above the base");
+}
+
+void checkRepeatOf(const ExtrusionSpec& s, const Anchor& a, const Repeat& r) {
+  if (auto bad = checkRepeat(a, r)) {
+    const auto colon = bad->find(": ");
+    fail("repeat." + bad->substr(0, colon), bad->substr(colon + 2));
+  }
+  if (auto bad = checkInstanceCounts(s)) {
+    const auto colon = bad->find(": ");
+    fail("repeat", bad->substr(colon + 2));
+  }
+}
+
+MeshAnchor& meshAnchorAt(ExtrusionSpec& s, int index) {
+  if (index < 0 || index >= static_cast<int>(s.anchors.size())) fail("index", "no mesh anchor " + std::to_string(index));
+  return s.anchors[index];
+}
+
+}  // namespace
+
+ExtrusionSpec setStepRepeat(ExtrusionSpec s, int step, const Repeat& repeat) {
+  if (step < 0 || step >= static_cast<int>(s.steps.size())) fail("step", "no step " + std::to_string(step));
+  s.steps[step].repeat = repeat;
+  checkRepeatOf(s, s.steps[step].anchor, repeat);
+  return s;
+}
+
+ExtrusionSpec addMeshAnchor(ExtrusionSpec s, const MeshAnchor& anchor) {
+  checkAnchorOn(s, anchor.anchor);
+  if (anchor.feature != FeatureKind::None)
+    if (auto bad = checkFeatureSize(anchor.size)) {
+      const auto colon = bad->find(": ");
+      fail(bad->substr(0, colon), bad->substr(colon + 2));
+    }
+  s.anchors.push_back(anchor);
+  if (anchor.feature == FeatureKind::None) s.anchors.back().size = FeatureSize();  // not saved without a feature
+  checkRepeatOf(s, anchor.anchor, anchor.repeat);
+  return s;
+}
+
+ExtrusionSpec moveMeshAnchor(ExtrusionSpec s, int index, const Anchor& anchor) {
+  MeshAnchor& m = meshAnchorAt(s, index);
+  checkAnchorOn(s, anchor);
+  m.anchor = anchor;
+  checkRepeatOf(s, m.anchor, m.repeat);
+  return s;
+}
+
+ExtrusionSpec deleteMeshAnchor(ExtrusionSpec s, int index) {
+  meshAnchorAt(s, index);
+  s.anchors.erase(s.anchors.begin() + index);
+  return s;
+}
+
+ExtrusionSpec setFeatureSize(ExtrusionSpec s, int index, const FeatureSize& size) {
+  if (auto bad = checkFeatureSize(size)) {
+    const auto colon = bad->find(": ");
+    fail(bad->substr(0, colon), bad->substr(colon + 2));
+  }
+  MeshAnchor& m = meshAnchorAt(s, index);
+  if (m.feature == FeatureKind::None) fail("index", "mesh anchor " + std::to_string(index) + " has no feature to resize");
+  m.size = size;
+  return s;
+}
+
+ExtrusionSpec setFeatureRepeat(ExtrusionSpec s, int index, const Repeat& repeat) {
+  MeshAnchor& m = meshAnchorAt(s, index);
+  m.repeat = repeat;
+  checkRepeatOf(s, m.anchor, repeat);
+  return s;
+}
+
 std::vector<Profile> profileLibrary() {
   auto make = [](std::string name, std::vector<Vec2> pts, std::vector<std::string> tags) {
     Profile p;
@@ -289,6 +371,29 @@ Anchor anchorFrom(const nlohmann::json& j) {
   }
   if (j.contains("height")) a.height = number(j, "height");
   return a;
+}
+
+Repeat repeatFrom(const nlohmann::json& j) {
+  if (!j.is_object()) fail("repeat", "expected an object");
+  Repeat r;
+  const std::string kind = text(j, "kind");
+  if (kind == "none") return r;
+  if (kind == "row") r.kind = RepeatKind::Row;
+  else if (kind == "grid") r.kind = RepeatKind::Grid;
+  else fail("repeat.kind", "expected \"row\", \"grid\" or \"none\"");
+  r.along = number(j, "along");
+  r.spacing = number(j, "spacing");
+  if (r.kind == RepeatKind::Grid) {
+    r.height = number(j, "height");
+    r.rowSpacing = number(j, "row_spacing");
+  }
+  return r;
+}
+
+FeatureSize sizeFrom(const nlohmann::json& j) {
+  if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
+    fail("size", "expected [width, height, depth] numbers");
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
 }
 
 }  // namespace
@@ -383,11 +488,37 @@ std::string applyEdit(Document& doc, const nlohmann::json& op) {
     s = addStep(s, st);
     label = "Add step";
   } else if (kind == "move_anchor") {
-    s = moveAnchor(s, integer(op, "step"), anchorFrom(op["anchor"]));
+    s = moveAnchor(s, integer(op, "step"), anchorFrom(op.contains("anchor") ? op["anchor"] : nlohmann::json()));
     label = "Move anchor";
   } else if (kind == "delete_step") {
     s = deleteStep(s, integer(op, "step"));
     label = "Delete step";
+  } else if (kind == "set_step_repeat") {
+    s = setStepRepeat(s, integer(op, "step"), repeatFrom(op.contains("repeat") ? op["repeat"] : nlohmann::json()));
+    label = "Repeat step";
+  } else if (kind == "add_feature") {
+    MeshAnchor m;
+    m.name = op.contains("name") ? text(op, "name") : text(op, "feature");
+    const auto feature = featureFromName(text(op, "feature"));
+    if (!feature) fail("feature", "expected \"none\", \"door\", \"window\", \"roof_window\" or \"chimney_pot\"");
+    m.feature = *feature;
+    m.size = op.contains("size") ? sizeFrom(op["size"]) : defaultFeatureSize(m.feature);
+    m.anchor = anchorFrom(op.contains("anchor") ? op["anchor"] : nlohmann::json());
+    if (op.contains("repeat")) m.repeat = repeatFrom(op["repeat"]);
+    s = addMeshAnchor(s, m);
+    label = "Add " + m.name;
+  } else if (kind == "move_feature") {
+    s = moveMeshAnchor(s, integer(op, "index"), anchorFrom(op.contains("anchor") ? op["anchor"] : nlohmann::json()));
+    label = "Move feature";
+  } else if (kind == "set_feature_size") {
+    s = setFeatureSize(s, integer(op, "index"), sizeFrom(op.contains("size") ? op["size"] : nlohmann::json()));
+    label = "Resize feature";
+  } else if (kind == "set_feature_repeat") {
+    s = setFeatureRepeat(s, integer(op, "index"), repeatFrom(op.contains("repeat") ? op["repeat"] : nlohmann::json()));
+    label = "Repeat feature";
+  } else if (kind == "delete_feature") {
+    s = deleteMeshAnchor(s, integer(op, "index"));
+    label = "Delete feature";
   } else {
     fail("op", "unknown edit \"" + kind + "\"");
   }

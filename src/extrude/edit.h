@@ -44,6 +44,16 @@ ExtrusionSpec addProfile(ExtrusionSpec s, Profile p, int* index = nullptr);
 ExtrusionSpec addStep(ExtrusionSpec s, const PlanStep& step);
 ExtrusionSpec moveAnchor(ExtrusionSpec s, int step, const Anchor& anchor);
 ExtrusionSpec deleteStep(ExtrusionSpec s, int step);
+// A row (or grid) of the same step (Sec. 3.6); RepeatKind::None removes it.
+ExtrusionSpec setStepRepeat(ExtrusionSpec s, int step, const Repeat& repeat);
+
+// Mesh anchors with their feature meshes (Sec. 3.4, Fig. 28). The anchor must name an edge of
+// the plan, sizes must be positive, and a repeat must stay within the instance limit.
+ExtrusionSpec addMeshAnchor(ExtrusionSpec s, const MeshAnchor& anchor);
+ExtrusionSpec moveMeshAnchor(ExtrusionSpec s, int index, const Anchor& anchor);  // the repeat's last place stays
+ExtrusionSpec deleteMeshAnchor(ExtrusionSpec s, int index);
+ExtrusionSpec setFeatureSize(ExtrusionSpec s, int index, const FeatureSize& size);
+ExtrusionSpec setFeatureRepeat(ExtrusionSpec s, int index, const Repeat& repeat);
 
 // The library of Sec. 3 profiles the panes offer.
 std::vector<Profile> profileLibrary();
@@ -55,7 +65,11 @@ std::vector<Profile> profileLibrary();
 // add_profile {from: library name, as: name}, insert_profile_point {profile, after, at},
 // move_profile_point {profile, point, to}, delete_profile_point, add_overhang {height, depth},
 // set_tag {profile, segment, tag}, add_step {step: as in the project file}, move_anchor,
-// delete_step. Profiles are named; the label for undo is returned.
+// delete_step, set_step_repeat {step, repeat}, add_feature {name, feature, anchor, size,
+// repeat} (size and repeat optional), move_feature {index, anchor}, set_feature_size {index,
+// size: [w, h, d]}, set_feature_repeat {index, repeat}, delete_feature {index}. A repeat is
+// {kind: "row" | "grid" | "none", along, spacing, height, row_spacing} as in the project file.
+// Profiles are named; the label for undo is returned.
 std::string applyEdit(Document& doc, const nlohmann::json& op);
 
 }  // namespace corbel::extrude::edit

@@ -152,8 +152,18 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
         return ej + ": all offsets of one event must go the same way (all out, or all in)";
     }
   }
-  for (std::size_t k = 0; k < spec.anchors.size(); ++k)
-    if (auto bad = checkAnchor(spec.anchors[k].anchor, "anchors[" + std::to_string(k) + "].anchor")) return bad;
+  for (std::size_t k = 0; k < spec.anchors.size(); ++k) {
+    const MeshAnchor& a = spec.anchors[k];
+    const std::string at = "anchors[" + std::to_string(k) + "]";
+    if (auto bad = checkAnchor(a.anchor, at + ".anchor")) return bad;
+    if (a.feature != FeatureKind::None)
+      if (auto bad = checkFeatureSize(a.size)) return at + "." + *bad;
+    if (auto bad = checkRepeat(a.anchor, a.repeat)) return at + ".repeat." + *bad;
+  }
+  for (std::size_t k = 0; k < spec.steps.size(); ++k)
+    if (auto bad = checkRepeat(spec.steps[k].anchor, spec.steps[k].repeat))
+      return "steps[" + std::to_string(k) + "].repeat." + *bad;
+  if (auto bad = checkInstanceCounts(spec)) return bad;
   return std::nullopt;
 }
 

@@ -13,6 +13,7 @@ namespace corbel::extrude {
 // A mesh anchor's place on the shell (Sec. 3.4): where it is and the frame of the face there.
 struct AnchorFrame {
   std::string name;
+  int source = -1;         // the spec.anchors entry it is an instance of (repeats expanded)
   bool instanced = false;  // false: its edge is not in the active plan at that height
   Vec3 position;
   Vec3 along;   // unit, along the active edge (the input edge's direction)
@@ -22,11 +23,14 @@ struct AnchorFrame {
 
 struct ExtrusionResult {
   SweepOutput shell;
-  std::vector<AnchorFrame> anchors;  // one per spec.anchors entry, in order
+  // One per instance of spec.anchors, in order (an anchor that repeats gives one per element).
+  std::vector<AnchorFrame> anchors;
   double scale = 0.0;  // plan bounding-box diagonal the tolerances were scaled by
 };
 
-// Validates the spec (throws InputError naming the loop/edge/point) and runs the sweep.
+// Validates the spec (throws InputError naming the loop/edge/point), expands its repeats
+// (core/extrusion_spec.h) and runs the sweep. Shell faces of a repeated step name the step's
+// index in `spec`.
 ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress = nullptr, double timeLimitSeconds = 0.0);
 
 // Areas and volume of a shell, from its planar faces (holes included).

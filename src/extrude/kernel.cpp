@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "extrude/extrude.h"
+#include "extrude/features.h"
 
 namespace corbel::extrude {
 
@@ -16,6 +17,7 @@ void registerKernel(SceneSync& sync) {
     b.kind = Kind::Shell;
     b.mesh = toMeshData(r.shell, spec, spec.material);
     b.warnings = std::move(r.shell.warnings);
+    appendFeatures(b.mesh, spec, r, b.warnings);
     return b;
   });
 }

@@ -12,6 +12,10 @@ namespace corbel::extrude {
 
 using corbel::Anchor;
 using corbel::ExtrusionSpec;
+using corbel::FeatureKind;
+using corbel::FeatureSize;
+using corbel::Repeat;
+using corbel::RepeatKind;
 using corbel::MeshAnchor;
 using corbel::OffsetEdge;
 using corbel::OffsetEvent;

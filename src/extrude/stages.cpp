@@ -918,8 +918,13 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double ti
   for (const auto& l : spec.loops)
     for (const Vec2& p : l.points) box.add(Vec3(p[0], p[1], 0));
   const Tolerances tol = Tolerances::forScale(box.diagonal());
-  Stager stager(spec, tol, progress, timeLimitSeconds);
-  return stager.run(box.diagonal());
+  const ExpandedSpec expanded = expandRepeats(spec);
+  Stager stager(expanded.spec, tol, progress, timeLimitSeconds);
+  ExtrusionResult r = stager.run(box.diagonal());
+  for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = expanded.anchorSource[k];
+  for (ShellFace& f : r.shell.faces)
+    if (f.step >= 0 && f.step < static_cast<int>(expanded.stepSource.size())) f.step = expanded.stepSource[f.step];
+  return r;
 }
 
 }  // namespace corbel::extrude

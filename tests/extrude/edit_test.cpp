@@ -2,6 +2,7 @@
 // spec valid or refuses with a reason, and the Fig. 4 (j–n) house built by its edit script has
 // the faces and tags each stage should give.
 #include "core/error.h"
+#include "core/history.h"
 #include "core/scene.h"
 #include "core/scene_sync.h"
 #include "extrude/edit.h"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -110,6 +112,107 @@ TEST(Edit, ScriptsRefuseBadOperationsWithAReason) {
   EXPECT_EQ(reason(R"({"op": "set_edge_profile", "object": "A", "edges": [[0, 1]], "profile": "nope"})"),
             R"(profile: no profile named "nope")");
   EXPECT_EQ(reason("[1]"), "op: an edit is a JSON object");
+}
+
+// Sum of the signed volumes of the object's faces with a tag (divergence theorem on fans).
+double taggedVolume(const Scene& scene, ObjectId id, const std::string& tag) {
+  double v = 0;
+  for (auto f : scene.faces(id)) {
+    if (scene.faceTag(f) != tag) continue;
+    std::vector<Vec3> p;
+    for (auto vh : scene.mesh().fv_range(f)) p.push_back(scene.mesh().point(vh));
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) v += OpenMesh::dot(p[0], OpenMesh::cross(p[i], p[i + 1])) / 6.0;
+  }
+  return v;
+}
+
+// A window added, resized and repeated by an edit script, each step one undoable commit: the
+// window's volume follows its control points (frame 0.06 m, pane half the depth, sill), and
+// undo brings the earlier size back.
+TEST(Edit, FeatureScriptAddsResizesRepeatsAndUndoes) {
+  auto windowVolume = [](double W, double H, double D) {
+    const double f = 0.06;
+    return (W * H - (W - 2 * f) * (H - 2 * f)) * D + (W - 2 * f) * (H - 2 * f) * D / 2 + (W + 0.1) * 0.06 * (D + 0.05);
+  };
+  History history;
+  SceneSync sync;
+  registerKernel(sync);
+  Scene scene;
+  auto run = [&](const std::string& json) {
+    Document d = history.current();
+    const std::string label = ed::applyEdit(d, nlohmann::json::parse(json));
+    history.commit(std::move(d), label);
+    sync.update(history.current(), scene);
+  };
+  run(R"({"op": "new_extrusion", "name": "H", "profile": "hip", "points": [[0, 0], [10, 0], [10, 6], [0, 6]]})");
+  const ObjectId id = history.current().findByName("H")->id;
+  run(R"({"op": "add_feature", "object": "H", "feature": "window", "anchor": {"loop": 0, "edge": 0, "fraction": 0.5, "height": 1}})");
+  EXPECT_EQ(history.undoLabel(), "Add window (H)");
+  EXPECT_NEAR(taggedVolume(scene, id, "window"), windowVolume(1.2, 1.4, 0.12), 1e-12) << "the kind's default size";
+  run(R"({"op": "set_feature_size", "object": "H", "index": 0, "size": [2, 1, 0.2]})");
+  EXPECT_NEAR(taggedVolume(scene, id, "window"), windowVolume(2, 1, 0.2), 1e-12);
+  run(R"({"op": "set_feature_repeat", "object": "H", "index": 0, "repeat": {"kind": "row", "along": 0.9, "spacing": 2}})");
+  EXPECT_NEAR(taggedVolume(scene, id, "window"), 3 * windowVolume(2, 1, 0.2), 1e-12) << "0.5 .. 0.9 of 10 m at 2 m: 3";
+  EXPECT_TRUE(scene.validate(id).closedManifold());
+  ASSERT_TRUE(history.undo());
+  ASSERT_TRUE(history.undo());
+  sync.update(history.current(), scene);
+  EXPECT_NEAR(taggedVolume(scene, id, "window"), windowVolume(1.2, 1.4, 0.12), 1e-12);
+  const auto& spec = std::get<ExtrusionSpec>(history.current().find(id)->spec);
+  EXPECT_EQ(spec.anchors.at(0).size, (FeatureSize{1.2, 1.4, 0.12}));
+  run(R"({"op": "move_feature", "object": "H", "index": 0, "anchor": {"loop": 0, "edge": 1, "fraction": 0.25, "height": 0.5}})");
+  EXPECT_EQ(std::get<ExtrusionSpec>(history.current().find(id)->spec).anchors[0].anchor, (Anchor{0, 1, false, 0.25, 0.5}));
+  run(R"({"op": "delete_feature", "object": "H", "index": 0})");
+  EXPECT_EQ(taggedVolume(scene, id, "window"), 0.0);
+}
+
+TEST(Edit, FeatureEditsRefuseBadInputNamingTheField) {
+  const ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, hipProfile(45 * kDeg));
+  auto reason = [](const std::function<ExtrusionSpec()>& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("<accepted>");
+  };
+  MeshAnchor w{"w", {0, 0, false, 0.5, 1}, FeatureKind::Window, {1, 1, 0.1}};
+  EXPECT_EQ(reason([&] { return ed::addMeshAnchor(s, w); }), "<accepted>");
+  w.anchor.edge = 4;
+  EXPECT_EQ(reason([&] { return ed::addMeshAnchor(s, w); }), "anchor.edge: loop 0 has no edge 4");
+  w.anchor.edge = 0;
+  w.size.width = -1;
+  EXPECT_EQ(reason([&] { return ed::addMeshAnchor(s, w); }), "size[0]: must be greater than 0 and at most 1000 m");
+  w.size.width = 1;
+  const ExtrusionSpec one = ed::addMeshAnchor(s, w);
+  EXPECT_EQ(reason([&] { return ed::setFeatureSize(one, 0, {1, 0, 1}); }), "size[1]: must be greater than 0 and at most 1000 m");
+  EXPECT_EQ(reason([&] { return ed::setFeatureSize(one, 3, {1, 1, 1}); }), "index: no mesh anchor 3");
+  EXPECT_EQ(reason([&] { return ed::setFeatureRepeat(one, 0, {RepeatKind::Row, 0.9, 0, 0, 1}); }),
+            "repeat.spacing: must be greater than 0 m");
+  EXPECT_NE(reason([&] { return ed::setFeatureRepeat(one, 0, {RepeatKind::Grid, 1.0, 1e4, 1e-3, 1e-3}); }).find("limit of 10000"),
+            std::string::npos);
+  EXPECT_EQ(reason([&] { return ed::moveMeshAnchor(one, 0, {0, 0, false, 1.5, 1}); }),
+            "anchor.along: a relative anchor needs a fraction within [0, 1]");
+  EXPECT_EQ(reason([&] { return ed::deleteMeshAnchor(one, -1); }), "index: no mesh anchor -1");
+  Document d;
+  d.add("H", s);
+  auto script = [&](const std::string& json) {
+    try {
+      ed::applyEdit(d, nlohmann::json::parse(json));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("<accepted>");
+  };
+  EXPECT_EQ(script(R"({"op": "add_feature", "object": "H", "feature": "gargoyle", "anchor": {"loop": 0, "edge": 0}})"),
+            R"(feature: expected "none", "door", "window", "roof_window" or "chimney_pot")");
+  EXPECT_EQ(script(R"({"op": "add_feature", "object": "H", "feature": "door", "size": [1, 2], "anchor": {"loop": 0, "edge": 0}})"),
+            "size: expected [width, height, depth] numbers");
+  EXPECT_EQ(script(R"({"op": "add_feature", "object": "H", "feature": "door"})"), "anchor: expected an object");
+  EXPECT_EQ(script(R"({"op": "move_anchor", "object": "H", "step": 0})"), "anchor: expected an object");
+  EXPECT_EQ(script(R"({"op": "set_feature_repeat", "object": "H", "index": 0, "repeat": {"kind": "spiral"}})"),
+            R"(repeat.kind: expected "row", "grid" or "none")");
+  EXPECT_EQ(script(R"({"op": "delete_feature", "object": "H", "index": 0})"), "index: no mesh anchor 0");
 }
 
 // The acceptance session of issue 4 as a script: the house of Fig. 4 (j–n) — a plan, two

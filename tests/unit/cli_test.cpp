@@ -292,7 +292,10 @@ TEST(Cli, ExtrudeStatsReportTheShellAndItsAnchors) {
   EXPECT_EQ(rows[0]["id"], "House");
   EXPECT_EQ(rows[0]["watertight"], true);
   EXPECT_EQ(rows[0]["manifold"], true);
-  ASSERT_EQ(rows[0]["anchors"].size(), 1u);
+  // The door, 4 + 4 windows in two grids, one over the bay, 2 roof windows, 2 chimney pots.
+  ASSERT_EQ(rows[0]["anchors"].size(), 14u);
+  EXPECT_EQ(rows[0]["anchors"][2]["name"], "gable windows (2 of 4)");
+  EXPECT_EQ(rows[0]["anchors"][2]["position"], nlohmann::json::array({12.0, 6.4, 0.9}));
   const auto& door = rows[0]["anchors"][0];
   EXPECT_EQ(door["name"], "front door");
   EXPECT_EQ(door["instanced"], true);

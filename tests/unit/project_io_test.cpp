@@ -521,7 +521,12 @@ corbel::ExtrusionSpec sampleExtrusion() {
   forced.points = {{-1, 0}, {0, 2}, {1, 0}};
   forced.frontProfile = 1;
   e.steps = {dormer, bay, forced};
-  e.anchors = {{"door", {0, 0, true, 4.5, 0.0}}};
+  e.anchors = {{"door", {0, 0, true, 4.5, 0.0}},
+               {"windows", {0, 0, false, 0.1, 1.0}, corbel::FeatureKind::Window, {1.2, 1.4, 0.12},
+                {corbel::RepeatKind::Grid, 0.9, 3.5, 2.0, 2.5}},
+               {"pot", {0, 1, false, 0.5, 4.0}, corbel::FeatureKind::ChimneyPot, {0.3, 0.6, 0.25},
+                {corbel::RepeatKind::Row, 0.7, 0.0, 0.5, 3.0}}};
+  e.steps[0].repeat = {corbel::RepeatKind::Row, 0.75, 0.0, 2.5, 3.0};
   e.offsets = {{2.5, {{1, -0.3, -100, 1, 0}}, 0}};
   return e;
 }
@@ -546,6 +551,51 @@ TEST(ProjectIo, ExtrusionSpecsRoundTrip) {
   EXPECT_EQ(corbel::serializeProject(back.document), text);
   EXPECT_NE(text.find(R"("profile": "wall+gable")"), std::string::npos);
   EXPECT_NE(text.find(R"("edge_profiles")"), std::string::npos);
+}
+
+// Features and repeats: written only when present, so files without them load unchanged; a
+// feature named without a size gets its kind's size.
+TEST(ProjectIo, MeshAnchorFeaturesAndRepeats) {
+  const std::string profiles = R"("profiles": [{"name": "hip", "points": [[0, 0], [1, 1]]}])";
+  const std::string plan = R"(, "plan": {"loops": [[[0, 0], [10, 0], [10, 6]]]})";
+  const auto loaded = corbel::parseProject(withExtrusion(profiles + plan + R"(, "anchors": [
+      {"loop": 0, "edge": 0, "fraction": 0.5, "name": "plain"},
+      {"loop": 0, "edge": 0, "fraction": 0.1, "height": 1, "name": "w", "feature": "window",
+       "repeat": {"kind": "row", "along": 0.9, "spacing": 2}}])"));
+  EXPECT_TRUE(loaded.warnings.empty());
+  const auto& e = std::get<corbel::ExtrusionSpec>(loaded.document.objects[0].spec);
+  ASSERT_EQ(e.anchors.size(), 2u);
+  EXPECT_EQ(e.anchors[0].feature, corbel::FeatureKind::None);
+  EXPECT_EQ(e.anchors[0].repeat.kind, corbel::RepeatKind::None);
+  EXPECT_EQ(e.anchors[1].feature, corbel::FeatureKind::Window);
+  EXPECT_EQ(e.anchors[1].size, corbel::defaultFeatureSize(corbel::FeatureKind::Window));
+  EXPECT_EQ(e.anchors[1].repeat, (corbel::Repeat{corbel::RepeatKind::Row, 0.9, 0.0, 2.0, 3.0}));
+  const std::string text = corbel::serializeProject(loaded.document);
+  EXPECT_EQ(text.find(R"("feature": "none")"), std::string::npos) << "a plain anchor is written as before";
+  EXPECT_EQ(corbel::serializeProject(corbel::parseProject(text).document), text);
+}
+
+TEST(ProjectIoErrors, FeatureAndRepeatFaultsNameTheirPath) {
+  const std::string head = withExtrusion(R"("profiles": [{"name": "hip", "points": [[0, 0], [1, 1]]}],
+      "plan": {"loops": [[[0, 0], [10, 0], [10, 6]]]}, "anchors": [{"loop": 0, "edge": 0, "name": "a", )");
+  auto with = [&](const std::string& fields) { return head.substr(0, head.size() - 4) + fields + "}]}}]}"; };
+  EXPECT_FAULT(with(R"("feature": "gargoyle")"), "objects[0].extrusion.anchors[0].feature",
+               R"(expected "none", "door", "window", "roof_window" or "chimney_pot", found "gargoyle")");
+  EXPECT_FAULT(with(R"("feature": 3)"), "objects[0].extrusion.anchors[0].feature", "expected a string, found a number");
+  EXPECT_FAULT(with(R"("feature": "door", "size": [1, -2, 0.1])"), "objects[0].extrusion.anchors[0].size[1]",
+               "must be greater than 0 and at most 1000 m");
+  EXPECT_FAULT(with(R"("feature": "door", "size": [1, 2])"), "objects[0].extrusion.anchors[0].size",
+               "expected [width, height, depth] in metres");
+  EXPECT_FAULT(with(R"("feature": "door", "size": [1, "2", 1])"), "objects[0].extrusion.anchors[0].size[1]",
+               "expected a number, found a string");
+  EXPECT_FAULT(with(R"("repeat": {"kind": "row", "along": 0.9, "spacing": 0})"),
+               "objects[0].extrusion.anchors[0].repeat.spacing", "must be greater than 0 m");
+  EXPECT_FAULT(with(R"("repeat": {"kind": "spiral", "along": 0.9, "spacing": 1})"),
+               "objects[0].extrusion.anchors[0].repeat.kind", R"(expected "row" or "grid", found "spiral")");
+  EXPECT_FAULT(with(R"("repeat": {"kind": "grid", "along": 0.9, "spacing": 1, "height": 5})"),
+               "objects[0].extrusion.anchors[0].repeat.row_spacing", "missing");
+  EXPECT_FAULT(with(R"("repeat": {"kind": "row", "along": 0.9, "spacing": 0.0002})"), "objects[0].extrusion.anchors[0].repeat",
+               "20001 x 1 instances make 20001, more than the limit of 10000 per extrusion");
 }
 
 TEST(ProjectIoErrors, ExtrusionFaultsNameTheirPath) {

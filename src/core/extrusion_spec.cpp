@@ -1,0 +1,165 @@
+#include "core/extrusion_spec.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace corbel {
+
+const char* featureName(FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::None: return "none";
+    case FeatureKind::Door: return "door";
+    case FeatureKind::Window: return "window";
+    case FeatureKind::RoofWindow: return "roof_window";
+    case FeatureKind::ChimneyPot: return "chimney_pot";
+  }
+  return "none";
+}
+
+std::optional<FeatureKind> featureFromName(std::string_view name) {
+  for (FeatureKind k : {FeatureKind::None, FeatureKind::Door, FeatureKind::Window, FeatureKind::RoofWindow, FeatureKind::ChimneyPot})
+    if (name == featureName(k)) return k;
+  return std::nullopt;
+}
+
+FeatureSize defaultFeatureSize(FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::Door: return {1.0, 2.2, 0.15};
+    case FeatureKind::Window: return {1.2, 1.4, 0.12};
+    case FeatureKind::RoofWindow: return {0.8, 1.1, 0.12};
+    case FeatureKind::ChimneyPot: return {0.3, 0.6, 0.3};
+    case FeatureKind::None: break;
+  }
+  return {};
+}
+
+namespace {
+
+// How many elements fit between two places `span` metres apart with at least `spacing`
+// between neighbours; both ends are used when more than one fits.
+std::size_t fitting(double span, double spacing) {
+  if (!std::isfinite(span) || !std::isfinite(spacing) || spacing <= 0) return 1;
+  const double n = std::floor(std::abs(span) / spacing + 1e-9) + 1;
+  return static_cast<std::size_t>(std::min(n, 1e9));
+}
+
+double inputEdgeLength(const ExtrusionSpec& spec, const Anchor& a) {
+  if (a.loop < 0 || a.loop >= static_cast<int>(spec.loops.size())) return 0;
+  const auto& pts = spec.loops[a.loop].points;
+  if (a.edge < 0 || a.edge >= static_cast<int>(pts.size())) return 0;
+  return (pts[(a.edge + 1) % pts.size()] - pts[a.edge]).norm();
+}
+
+}  // namespace
+
+RepeatGrid repeatGrid(const ExtrusionSpec& spec, const Anchor& anchor, const Repeat& repeat) {
+  RepeatGrid g;
+  if (repeat.kind == RepeatKind::None) return g;
+  const double span = (repeat.along - anchor.along) * (anchor.absolute ? 1.0 : inputEdgeLength(spec, anchor));
+  g.columns = fitting(span, repeat.spacing);
+  if (repeat.kind == RepeatKind::Grid) g.rows = fitting(repeat.height - anchor.height, repeat.rowSpacing);
+  return g;
+}
+
+std::vector<Anchor> repeatAnchors(const ExtrusionSpec& spec, const Anchor& anchor, const Repeat& repeat) {
+  const RepeatGrid g = repeatGrid(spec, anchor, repeat);
+  std::vector<Anchor> out;
+  out.reserve(std::min<std::size_t>(g.count(), kMaxFeatureInstances + 1));
+  auto at = [](double first, double last, std::size_t i, std::size_t n) {
+    return n <= 1 ? first : first + (last - first) * static_cast<double>(i) / static_cast<double>(n - 1);
+  };
+  for (std::size_t r = 0; r < g.rows && out.size() <= kMaxFeatureInstances; ++r)
+    for (std::size_t c = 0; c < g.columns && out.size() <= kMaxFeatureInstances; ++c) {
+      Anchor a = anchor;
+      a.along = at(anchor.along, repeat.along, c, g.columns);
+      if (repeat.kind == RepeatKind::Grid) a.height = at(anchor.height, repeat.height, r, g.rows);
+      out.push_back(a);
+    }
+  return out;
+}
+
+ExpandedSpec expandRepeats(const ExtrusionSpec& spec) {
+  ExpandedSpec e;
+  e.spec = spec;
+  e.spec.steps.clear();
+  e.spec.anchors.clear();
+  auto numbered = [](const std::string& name, std::size_t i, std::size_t n) {
+    if (n <= 1) return name;
+    return (name.empty() ? std::string() : name + " ") + "(" + std::to_string(i + 1) + " of " + std::to_string(n) + ")";
+  };
+  for (std::size_t k = 0; k < spec.steps.size(); ++k) {
+    const PlanStep& st = spec.steps[k];
+    const std::vector<Anchor> places = repeatAnchors(spec, st.anchor, st.repeat);
+    for (std::size_t i = 0; i < places.size(); ++i) {
+      PlanStep one = st;
+      one.anchor = places[i];
+      one.repeat = Repeat();
+      one.name = numbered(st.name, i, places.size());
+      e.spec.steps.push_back(std::move(one));
+      e.stepSource.push_back(static_cast<int>(k));
+    }
+  }
+  for (std::size_t k = 0; k < spec.anchors.size(); ++k) {
+    const MeshAnchor& m = spec.anchors[k];
+    const std::vector<Anchor> places = repeatAnchors(spec, m.anchor, m.repeat);
+    for (std::size_t i = 0; i < places.size(); ++i) {
+      MeshAnchor one = m;
+      one.anchor = places[i];
+      one.repeat = Repeat();
+      one.name = numbered(m.name, i, places.size());
+      e.spec.anchors.push_back(std::move(one));
+      e.anchorSource.push_back(static_cast<int>(k));
+    }
+  }
+  return e;
+}
+
+std::optional<std::string> checkRepeat(const Anchor& anchor, const Repeat& repeat) {
+  if (repeat.kind == RepeatKind::None) return std::nullopt;
+  if (!std::isfinite(repeat.along) || std::abs(repeat.along) > 1e7)
+    return std::string("along: the last element's place must be a finite number");
+  if (!anchor.absolute && (repeat.along < 0 || repeat.along > 1))
+    return std::string("along: a relative anchor's repeat ends at a fraction within [0, 1]");
+  if (!std::isfinite(repeat.spacing) || repeat.spacing <= 0)
+    return std::string("spacing: must be greater than 0 m");
+  if (repeat.kind == RepeatKind::Grid) {
+    if (!std::isfinite(repeat.height) || repeat.height < 0 || repeat.height > 1e5)
+      return std::string("height: the last row must be within [0, 1e5] m above the base");
+    if (!std::isfinite(repeat.rowSpacing) || repeat.rowSpacing <= 0)
+      return std::string("row_spacing: must be greater than 0 m");
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> checkFeatureSize(const FeatureSize& size) {
+  const double v[3] = {size.width, size.height, size.depth};
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(v[i]) || v[i] <= 0 || v[i] > 1e3)
+      return "size[" + std::to_string(i) + "]: must be greater than 0 and at most 1000 m";
+  return std::nullopt;
+}
+
+std::optional<std::string> checkInstanceCounts(const ExtrusionSpec& spec) {
+  std::size_t steps = 0, anchors = 0;
+  auto over = [](const std::string& at, const RepeatGrid& g, std::size_t total, std::size_t limit) {
+    return at + ".repeat: " + std::to_string(g.columns) + " x " + std::to_string(g.rows) + " instances make " +
+           std::to_string(total) + ", more than the limit of " + std::to_string(limit) + " per extrusion";
+  };
+  for (std::size_t k = 0; k < spec.steps.size(); ++k) {
+    const RepeatGrid g = repeatGrid(spec, spec.steps[k].anchor, spec.steps[k].repeat);
+    const double total = static_cast<double>(steps) + static_cast<double>(g.columns) * static_cast<double>(g.rows);
+    if (total > static_cast<double>(kMaxStepInstances))
+      return over("steps[" + std::to_string(k) + "]", g, static_cast<std::size_t>(std::min(total, 1e18)), kMaxStepInstances);
+    steps = static_cast<std::size_t>(total);
+  }
+  for (std::size_t k = 0; k < spec.anchors.size(); ++k) {
+    const RepeatGrid g = repeatGrid(spec, spec.anchors[k].anchor, spec.anchors[k].repeat);
+    const double total = static_cast<double>(anchors) + static_cast<double>(g.columns) * static_cast<double>(g.rows);
+    if (total > static_cast<double>(kMaxFeatureInstances))
+      return over("anchors[" + std::to_string(k) + "]", g, static_cast<std::size_t>(std::min(total, 1e18)), kMaxFeatureInstances);
+    anchors = static_cast<std::size_t>(total);
+  }
+  return std::nullopt;
+}
+
+}  // namespace corbel
