@@ -9,7 +9,7 @@
 namespace corbel {
 
 SceneSync::SceneSync() : builders_(std::variant_size_v<Spec>) {
-  setBuilder<BoxSpec>([](const DocObject& o) {
+  setBuilder<BoxSpec>([](const DocObject& o, Progress*) {
     BuildResult r;
     r.kind = Kind::Mass;
     r.mesh = buildBoxes(std::get<BoxSpec>(o.spec));
@@ -22,47 +22,78 @@ void SceneSync::setBuilder(std::size_t specIndex, Builder builder) {
   built_.clear();
 }
 
-std::size_t SceneSync::update(const Document& doc, Scene& scene, Progress* progress) {
-  std::vector<ObjectId> gone;
+SceneSync::Job SceneSync::plan(const Document& doc, const Scene& scene) const {
+  Job job;
   for (const auto& [id, _] : built_)
-    if (!doc.find(id)) gone.push_back(id);
+    if (!doc.find(id)) job.gone.push_back(id);
   for (ObjectId id : scene.objects() | std::views::keys)
-    if (!doc.find(id) && !built_.count(id)) gone.push_back(id);
-  for (ObjectId id : gone) {
+    if (!doc.find(id) && !built_.count(id)) job.gone.push_back(id);
+  for (const DocObject& o : doc.objects) {
+    auto it = built_.find(o.id);
+    const auto st = status_.find(o.id);
+    const bool failedBefore = st != status_.end() && !st->second.error.empty();
+    const bool stale = it == built_.end() || !(it->second.spec == o.spec) || (!scene.hasObject(o.id) && !failedBefore);
+    if (stale) job.build.push_back(o);
+    else if (it->second.name != o.name) job.renamed.emplace_back(o.id, o.name);
+  }
+  return job;
+}
+
+void SceneSync::run(Job& job, Progress* progress) const {
+  job.outcomes.assign(job.build.size(), {});
+  for (std::size_t i = 0; i < job.build.size(); ++i) {
+    if (progress && progress->cancelled()) return;
+    const DocObject& o = job.build[i];
+    Job::Outcome& out = job.outcomes[i];
+    try {
+      const Builder& b = builders_[o.spec.index()];
+      if (!b) throw Error("this build of corbel has no kernel for this kind of object");
+      out.result = b(o, progress);
+      out.ran = true;
+    } catch (const Cancelled&) {
+      return;  // this object and the rest stay as they were; a later job rebuilds them
+    } catch (const std::exception& e) {
+      out.error = e.what();  // the last good geometry (if any) stays in the Scene
+      out.ran = true;
+    }
+    if (progress) progress->report(static_cast<double>(i + 1) / job.build.size(), "building objects");
+  }
+}
+
+std::size_t SceneSync::apply(Job& job, Scene& scene) {
+  for (ObjectId id : job.gone) {
     scene.removeObject(id);
     built_.erase(id);
     status_.erase(id);
   }
-  std::size_t rebuilt = 0, done = 0;
-  for (const DocObject& o : doc.objects) {
-    if (progress && progress->cancelled()) break;
-    auto it = built_.find(o.id);
-    const bool failedBefore = status_.count(o.id) && !status_[o.id].error.empty();
-    const bool stale = it == built_.end() || !(it->second.spec == o.spec) || (!scene.hasObject(o.id) && !failedBefore);
-    if (stale) {
-      built_[o.id] = o;
-      Status& st = status_[o.id];
-      const Builder& b = builders_[o.spec.index()];
-      try {
-        if (!b) throw Error("this build of corbel has no kernel for this kind of object");
-        BuildResult r = b(o);
-        scene.replaceObject(o.id, r.kind, o.name, r.mesh);
-        st.error.clear();
-        st.warnings = std::move(r.warnings);
-        ++rebuilt;
-      } catch (const Cancelled&) {
-        built_.erase(o.id);
-        throw;
-      } catch (const std::exception& e) {
-        st.error = e.what();  // the last good geometry (if any) stays in the Scene
-      }
-    } else if (it->second.name != o.name) {
-      scene.setObjectName(o.id, o.name);
-      it->second.name = o.name;
+  for (const auto& [id, name] : job.renamed) {
+    if (!scene.hasObject(id)) continue;
+    scene.setObjectName(id, name);
+    if (auto it = built_.find(id); it != built_.end()) it->second.name = name;
+  }
+  std::size_t rebuilt = 0;
+  for (std::size_t i = 0; i < job.build.size() && i < job.outcomes.size(); ++i) {
+    Job::Outcome& out = job.outcomes[i];
+    if (!out.ran) continue;
+    const DocObject& o = job.build[i];
+    built_[o.id] = o;
+    Status& st = status_[o.id];
+    if (!out.error.empty()) {
+      st.error = out.error;
+      continue;
     }
-    if (progress) progress->report(static_cast<double>(++done) / doc.objects.size(), "building objects");
+    scene.replaceObject(o.id, out.result.kind, o.name, out.result.mesh);
+    st.error.clear();
+    st.warnings = std::move(out.result.warnings);
+    ++rebuilt;
   }
   return rebuilt;
+}
+
+std::size_t SceneSync::update(const Document& doc, Scene& scene, Progress* progress) {
+  Job job = plan(doc, scene);
+  run(job, progress);
+  return apply(job, scene);
 }
 
 }  // namespace corbel

@@ -21,8 +21,10 @@ struct BuildResult {
   Kind kind = Kind::Mass;
   std::vector<std::string> warnings;
 };
-// Spec → geometry; throws (InputError or Error) with a message a user can act on.
-using Builder = std::function<BuildResult(const DocObject&)>;
+// Spec → geometry; throws (InputError or Error) with a message a user can act on, or
+// Cancelled when the progress (may be null) is cancelled. A pure function of the object: it
+// may run on any thread.
+using Builder = std::function<BuildResult(const DocObject&, Progress*)>;
 
 class SceneSync {
  public:
@@ -37,6 +39,26 @@ class SceneSync {
   // Returns the number of objects rebuilt. Cancelling leaves the Scene consistent with the
   // objects already processed; a later call finishes the work.
   std::size_t update(const Document& doc, Scene& scene, Progress* progress = nullptr);
+
+  // The same update in three steps, so that the kernels can run off the UI thread (see
+  // LiveSync): plan() and apply() touch the Scene and this object's records, run() only
+  // calls the builders. A job's results are applied even when the document has moved on
+  // since it was planned; the next plan() then picks up what changed after it.
+  struct Job {
+    std::vector<DocObject> build;  // objects to (re)build, as the document had them
+    std::vector<ObjectId> gone;    // objects to remove from the Scene
+    std::vector<std::pair<ObjectId, std::string>> renamed;
+    struct Outcome {
+      bool ran = false;  // false: not reached (cancelled before it)
+      BuildResult result;
+      std::string error;  // the builder failed with this
+    };
+    std::vector<Outcome> outcomes;  // run() fills one per build entry
+    bool empty() const { return build.empty() && gone.empty() && renamed.empty(); }
+  };
+  Job plan(const Document& doc, const Scene& scene) const;
+  void run(Job& job, Progress* progress = nullptr) const;  // safe on any thread
+  std::size_t apply(Job& job, Scene& scene);               // returns the objects rebuilt
   void invalidate() { built_.clear(); }
 
   struct Status {

@@ -63,7 +63,7 @@ App::App(GLFWwindow* window, EditorOptions options)
     for (std::string line; std::getline(in, line);) scriptLines_.push_back(line);
     if (!options_.scriptShots.empty()) std::filesystem::create_directories(options_.scriptShots);
   }
-  syncScene();
+  syncScene(true);
   frameAll();
   checkRecovery();
 }
@@ -81,10 +81,14 @@ void App::commit(Document doc, const std::string& label, const std::string& merg
   history_.commit(std::move(doc), label, mergeKey);
 }
 
-void App::syncScene() {
-  if (history_.stateId() == syncedState_) return;
-  sync_.update(history_.current(), scene_);
-  syncedState_ = history_.stateId();
+bool App::scripted() const {
+  return !scriptLines_.empty() || !options_.actions.empty() || options_.quitAfterFrames > 0 || !options_.screenshot.empty();
+}
+
+void App::syncScene(bool wait) {
+  if (selected_ && !history_.current().find(*selected_)) selected_.reset();
+  if (wait || scripted()) live_.settle(history_.current(), history_.stateId(), scene_);
+  else if (!live_.update(history_.current(), history_.stateId(), scene_)) return;
   // Kernel messages go to the log once per change; a failed object keeps its last good shell.
   for (const auto& [id, st] : sync_.status()) {
     const DocObject* o = history_.current().find(id);
@@ -97,7 +101,6 @@ void App::syncScene() {
       last = text;
     }
   }
-  if (selected_ && !history_.current().find(*selected_)) selected_.reset();
 }
 
 void App::frameAll() {
@@ -122,7 +125,7 @@ void App::newDocument() {
     path_.clear();
     selected_.reset();
     recovery_.discard();
-    syncScene();
+    syncScene(true);
     frameAll();
     log("New document");
   });
@@ -145,7 +148,7 @@ void App::openFile(const std::string& path) {
           selected_.reset();
           recent_.add(path);
           recovery_.discard();
-          syncScene();
+          syncScene(true);
           frameAll();
           log("Opened " + path);
         });
@@ -230,7 +233,7 @@ void App::checkRecovery() {
       history_.reset(Document{});
       commit(found->document, "Recover unsaved work");
       path_ = found->originalPath;
-      syncScene();
+      syncScene(true);
       frameAll();
       log("Recovered unsaved work from " + found->savedAt);
       break;
@@ -622,6 +625,13 @@ void App::drawStatusBar() {
     if (ImGui::Button("Cancel")) job_->progress().cancel();
     ImGui::SameLine();
   }
+  if (!live_.current()) {
+    // A build longer than a frame runs off the UI thread; the 3D view keeps the last result.
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Updating geometry... (the view shows the previous result)");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("An edit takes longer than a frame to build: it runs in the background and the newest edit wins");
+    ImGui::SameLine();
+  }
   ImGui::Text("%s%s  |  %zu objects, %zu triangles  |  %.0f fps", path_.empty() ? "(unsaved project)" : path_.c_str(),
               history_.dirty() ? " *" : "", history_.current().objects.size(), renderer_->triangleCount(),
               ImGui::GetIO().Framerate);
@@ -714,7 +724,7 @@ void App::drawModals() {
       history_.reset(history_.current());
       commit(recoveryOffer_->document, "Recover unsaved work");
       path_ = recoveryOffer_->originalPath;
-      syncScene();
+      syncScene(true);
       frameAll();
       log("Recovered unsaved work");
       recoveryOffer_.reset();
@@ -839,7 +849,7 @@ int App::run() {
     }
     if (quitRequested_) break;
     // Sleep until input arrives unless something is moving or scripted.
-    if (job_ || options_.quitAfterFrames > 0 || frame_ < 3) glfwPollEvents();
+    if (job_ || live_.building() || options_.quitAfterFrames > 0 || frame_ < 3) glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
 
     ImGui_ImplOpenGL3_NewFrame();

@@ -3,6 +3,7 @@
 // renderer, and the ImGui shell (menu bar, left panel, status/log bar, 3D viewport).
 #include "core/app_state.h"
 #include "core/history.h"
+#include "core/live_sync.h"
 #include "core/progress.h"
 #include "core/scene.h"
 #include "core/scene_sync.h"
@@ -69,7 +70,10 @@ class App {
   void pollJob();
   void startJob(std::string title, BackgroundJob::Work work, std::function<void()> onDone);
   void log(const std::string& line, bool error = false);
-  void syncScene();
+  // Brings the Scene to the current document: off the UI thread (a build longer than a few
+  // milliseconds keeps the last result on screen, marked as updating), or, with wait, at once.
+  void syncScene(bool wait = false);
+  bool scripted() const;  // a scripted or screenshot run: every frame shows the current state
   void frameAll();
   void takeScreenshot(const std::string& path);
   void runScriptLine();
@@ -80,6 +84,7 @@ class App {
   History history_;
   Scene scene_;
   SceneSync sync_;
+  LiveSync live_{sync_};  // after sync_: its builds use it
   std::unique_ptr<render::Renderer> renderer_;
   render::OrbitCamera camera_;
   render::RenderSettings settings_;
@@ -90,7 +95,6 @@ class App {
 
   std::string path_;  // current file ("" = never saved)
   std::optional<ObjectId> selected_;
-  std::uint64_t syncedState_ = 0;
   std::uint64_t autosavedState_ = 0;
   std::chrono::steady_clock::time_point lastAutosave_;
 

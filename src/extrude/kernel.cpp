@@ -7,9 +7,9 @@
 namespace corbel::extrude {
 
 void registerKernel(SceneSync& sync) {
-  sync.setBuilder<ExtrusionSpec>([](const DocObject& o) {
+  sync.setBuilder<ExtrusionSpec>([](const DocObject& o, Progress* progress) {
     const auto& spec = std::get<ExtrusionSpec>(o.spec);
-    ExtrusionResult r = extrude(spec);
+    ExtrusionResult r = extrude(spec, progress, kEditTimeLimitSeconds);
     if (const std::size_t open = unpairedEdges(r.shell))
       throw Error("the shell did not close (" + std::to_string(open) +
                   " edges without a partner): a degenerate configuration the kernel cannot resolve yet");

@@ -5,6 +5,10 @@
 
 namespace corbel::extrude {
 
+// A building that takes longer than this in the editor is given up with an error (its last
+// good shell stays): no degenerate plan can keep a background build busy for ever.
+inline constexpr double kEditTimeLimitSeconds = 30.0;
+
 void registerKernel(SceneSync& sync);
 
 }  // namespace corbel::extrude

@@ -245,7 +245,7 @@ TEST(SceneSync, KernelFailureKeepsTheLastGoodGeometryAndIsReported) {
   corbel::Scene scene;
   SceneSync sync;
   int calls = 0;
-  sync.setBuilder<corbel::ExtrusionSpec>([&](const corbel::DocObject& o) {
+  sync.setBuilder<corbel::ExtrusionSpec>([&](const corbel::DocObject& o, corbel::Progress*) {
     ++calls;
     const auto& spec = std::get<corbel::ExtrusionSpec>(o.spec);
     if (spec.material == "bad") throw corbel::Error("the plan intersects itself");
