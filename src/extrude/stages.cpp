@@ -351,6 +351,44 @@ void Stager::frame(const Plan& plan, double h) {
   }
 }
 
+// An overhang pushes a sharp convex corner out by its move over the sine of half the corner's
+// angle: a 1 m overhang on a 1° spike would reach 115 m out, a sliver no one wants (and a
+// shell of needle faces). Beyond kMitreLimit times the move (a corner under about 5.7°), the
+// edit is refused with the corner named, as offsetting tools do with their mitre limit.
+template <class Item>
+void checkMitre(const std::vector<std::vector<Item>>& loops, double h, double baseZ) {
+  constexpr double kMitreLimit = 20.0;
+  for (const auto& l : loops)
+    for (std::size_t j = 0; j < l.size(); ++j) {
+      const Item& a = l[(j + l.size() - 1) % l.size()];
+      const Item& b = l[j];
+      if (!(a.k < 0 || b.k < 0) || a.a.step >= 0 || b.a.step >= 0) continue;  // only outward moves
+      Vec2 da = b.a.start - a.a.start, db = l[(j + 1) % l.size()].a.start - b.a.start;
+      if (da.norm() == 0 || db.norm() == 0) continue;
+      da.normalize();
+      db.normalize();
+      const double sine = da[0] * db[1] - da[1] * db[0];
+      if (sine <= 0 || OpenMesh::dot(da, db) > 0) continue;  // a reflex or blunt corner
+      // The corner's move: where the two moved lines meet (n·v = k for each, n inward).
+      const Vec2 na(-da[1], da[0]), nb(-db[1], db[0]);
+      const double det = na[0] * nb[1] - na[1] * nb[0];
+      const Vec2 v((a.k * nb[1] - b.k * na[1]) / det, (na[0] * b.k - nb[0] * a.k) / det);
+      const double move = std::max(std::abs(a.k), std::abs(b.k));
+      if (v.norm() <= kMitreLimit * move) continue;
+      const double degrees = std::atan2(sine, -OpenMesh::dot(da, db)) * 180 / std::numbers::pi;
+      std::ostringstream m;
+      m.precision(3);
+      m << "at height " << h - baseZ << " m the " << move << " m overhang would push this " << degrees
+        << "° corner " << v.norm() << " m out (more than " << kMitreLimit
+        << " times the overhang): blunt the corner or take the overhang off its edges";
+      const bool sameLoop = a.a.sourceLoop == b.a.sourceLoop && a.a.sourceLoop >= 0;
+      std::ostringstream where;
+      if (sameLoop) where << "loops[" << b.a.sourceLoop << "].points[" << b.a.sourceEdge << "]";
+      else where << "loops[" << b.a.sourceLoop << "] edge " << b.a.sourceEdge;
+      throw InputError(where.str(), m.str());
+    }
+}
+
 // The discrete changes at height h: horizontal moves of edges and plan steps, made together by
 // one recursive extrusion (Sec. 4.5.2, 4.7).
 Plan Stager::change(const Plan& plan, double h, bool atBase) {
@@ -377,6 +415,7 @@ Plan Stager::change(const Plan& plan, double h, bool atBase) {
     }
     loops.push_back(std::move(l));
   }
+  if (any) checkMitre(loops, h, spec_.baseZ);
   // Natural steps: a protrusion λ times its size, grown to full size by the recursion.
   const double epsilon = 100 * tol_.minEdge;  // 1e-5 of the plan's size
   std::vector<std::pair<std::vector<int>, ShellFace>> tiny;  // the λ-sized protrusions' faces

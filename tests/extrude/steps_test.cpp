@@ -1,6 +1,7 @@
 // Discrete changes of the active plan (Sec. 4.5.2, 4.7): horizontal profile segments
 // (overhangs and ledges, Fig. 16–17) and natural steps (dormers, buttresses, bays: Fig. 6, 20,
 // 22), each against a hand computation or an independent height-field integration.
+#include "core/error.h"
 #include "core/scene.h"
 #include "support.h"
 
@@ -67,6 +68,32 @@ TEST(Steps, HorizontalOverhangIsAnOutwardNearHorizontalEvent) {
   // Walls, plus the hip over the 11 × 7 rectangle: b²(3a − b)/12.
   EXPECT_NEAR(c.m.volume, 60 * 3 + 49 * (33 - 7) / 12.0, 1e-9);
   EXPECT_EQ(c.r.shell.faces.size(), 13u);  // base, 4 walls, 4 soffits, 4 roofs
+}
+
+// An isosceles dart with apex angle α under an overhang d: the apex moves out by d / sin(α/2)
+// (the mitre). Past 20 d the edit is refused naming the apex; below it the shell closes.
+TEST(Steps, OverhangOnASpikePastTheMitreLimitIsRefusedNamingTheCorner) {
+  const Profile p = polyline("eaves", {{0, 0}, {0, 3}, {-0.5, 3}, {0.5, 4}}, {"wall", "soffit", "roof"});
+  auto dart = [](double apexDegrees) {
+    const double half = apexDegrees / 2 * kDeg, length = 12;
+    // Apex at the origin pointing −x; the two long sides open towards +x.
+    return std::vector<Vec2>{Vec2(0, 0), Vec2(length * std::cos(half), -length * std::sin(half)),
+                             Vec2(length * std::cos(half), length * std::sin(half))};
+  };
+  // 4°: 0.5 / sin 2° = 14.3 m > 20 × 0.5 m.
+  try {
+    extrude(uniformSpec({dart(4)}, p));
+    ADD_FAILURE() << "a 4° spike under a 0.5 m overhang was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where, "loops[0].points[0]") << e.what();
+    EXPECT_NE(e.reason.find("14.3 m out"), std::string::npos) << e.what();
+    EXPECT_NE(e.reason.find("at height 3 m"), std::string::npos) << e.what();
+  }
+  // 8°: 0.5 / sin 4° = 7.2 m < 10 m: built, closed, and the soffit reaches the mitre.
+  const Checked c = run(uniformSpec({dart(8)}, p));
+  double reach = 0;
+  for (const Vec3& q : c.r.shell.points) reach = std::max(reach, -q[0]);
+  EXPECT_NEAR(reach, 0.5 / std::sin(4 * kDeg), 1e-9);
 }
 
 TEST(Steps, InwardHorizontalSegmentMakesALedge) {
