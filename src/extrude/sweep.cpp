@@ -688,6 +688,14 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   std::vector<int> made;
   for (std::size_t ci = firstMade; ci < corners_.size(); ++ci)
     if (corners_[ci].alive && corners_[ci].vertex == vl) made.push_back(static_cast<int>(ci));
+  if (traceOn()) {
+    for (int ci : liveCorners_) {
+      if (!corners_[ci].alive) continue;
+      const Vec2 p = cornerAt(ci, z);
+      SWEEP_TRACE("    live corner %d: edges %d -> %d at (%.9g, %.9g) v=(%g, %g)", ci, corners_[ci].prev, corners_[ci].next, p[0], p[1],
+                  corners_[ci].v[0], corners_[ci].v[1]);
+    }
+  }
   const double next = queue_.empty() ? std::numeric_limits<double>::infinity() : queue_.top().z;
   if (next - z > 1e3 * tol_.height && !locallySimple(made, l, z, 0.25 * (next - z))) {
     SWEEP_TRACE("  post inter-chain check: the plan overlaps itself above (%g, %g, %g)", l[0], l[1], z);
