@@ -82,3 +82,20 @@ std::optional<std::string> checkBoxSpec(const BoxSpec& s) {
 }
 
 }  // namespace corbel
+
+namespace corbel {
+
+std::optional<std::string> checkPlanBackground(const PlanBackground& b) {
+  if (b.image.empty()) return "image: the image's path must not be empty";
+  if (b.image.size() > limits::kMaxPathLength) return "image: the path is longer than 4096 bytes";
+  if (b.image.find('\0') != std::string::npos) return "image: a path cannot hold a NUL character";
+  if (!std::isfinite(b.scale) || b.scale < limits::kMinBackgroundScale || b.scale > limits::kMaxBackgroundScale)
+    return "scale: must be within [1e-06, 10000] metres per pixel";
+  for (int k = 0; k < 2; ++k)
+    if (!std::isfinite(b.origin[k]) || std::abs(b.origin[k]) > limits::kMaxCoordinate)
+      return "origin: must lie within 1e7 m of the origin";
+  if (!std::isfinite(b.opacity) || b.opacity < 0 || b.opacity > 1) return "opacity: must be within [0, 1]";
+  return std::nullopt;
+}
+
+}  // namespace corbel

@@ -29,11 +29,23 @@ struct BoxSpec {
 // One spec type per kernel; extrude, statics, growth and kifs add theirs.
 using Spec = std::variant<BoxSpec, ExtrusionSpec>;
 
+// An image laid under an object's plan in the plan pane, to trace a drawing or a map from.
+// It belongs to the object but no kernel sees it, so changing it never rebuilds geometry.
+struct PlanBackground {
+  std::string image;     // the file; in memory as chosen or resolved, in a project file
+                         // relative to that file where possible (core/project_io.h)
+  double scale = 0.05;   // metres per pixel
+  Vec2 origin{0.0, 0.0}; // where the image's lower-left corner lies on the plan, m
+  double opacity = 0.5;  // 0 (invisible) .. 1
+  bool operator==(const PlanBackground&) const = default;
+};
+
 struct DocObject {
   ObjectId id = 0;
   std::string name;
   bool visible = true;
   Spec spec;
+  std::optional<PlanBackground> background;
   bool operator==(const DocObject&) const = default;
 };
 
@@ -64,10 +76,14 @@ inline constexpr std::size_t kMaxLoopPoints = 100000;  // plan corners per extru
 inline constexpr std::size_t kMaxProfiles = 1000;
 inline constexpr std::size_t kMaxSteps = 1000;     // plan steps and mesh anchors per extrusion
 inline constexpr std::size_t kMaxProfilePoints = 1000;
+inline constexpr std::size_t kMaxPathLength = 4096;  // a background image's file path
+inline constexpr double kMinBackgroundScale = 1e-6, kMaxBackgroundScale = 1e4;  // metres per pixel
 }  // namespace limits
 
 // Checks a spec's values (the loader and the editor share it). Returns an error text with
 // the offending field, relative to the spec, or nullopt.
 std::optional<std::string> checkBoxSpec(const BoxSpec& spec);
+// The same for a plan background ("scale: ...", "opacity: ...").
+std::optional<std::string> checkPlanBackground(const PlanBackground& background);
 
 }  // namespace corbel

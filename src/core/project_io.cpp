@@ -3,6 +3,8 @@
 #include "core/atomic_file.h"
 #include "core/json_reader.h"
 
+#include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -379,9 +381,49 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   return e;
 }
 
+PlanBackground backgroundFromJson(const JsonReader& r, const std::string& folder, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"image", "scale", "origin", "opacity"})) warnings.push_back(k + ": unknown key ignored");
+  PlanBackground b;
+  const JsonReader image = r.at("image");
+  b.image = image.string(limits::kMaxPathLength);
+  if (b.image.empty()) image.fail("the image's path must not be empty");
+  if (b.image.find('\0') != std::string::npos) image.fail("a path cannot hold a NUL character");
+  if (!folder.empty() && std::filesystem::path(b.image).is_relative())
+    b.image = (std::filesystem::path(folder) / b.image).lexically_normal().string();
+  if (auto v = r.find("scale")) b.scale = v->number(limits::kMinBackgroundScale, limits::kMaxBackgroundScale);
+  if (auto v = r.find("origin")) {
+    b.origin = v->vec2();
+    if (std::abs(b.origin[0]) > limits::kMaxCoordinate || std::abs(b.origin[1]) > limits::kMaxCoordinate)
+      v->fail("must lie within 1e7 m of the origin");
+  }
+  if (auto v = r.find("opacity")) b.opacity = v->number(0, 1);
+  return b;
+}
+
+ojson backgroundToJson(const PlanBackground& b, const std::string& folder) {
+  ojson j;
+  std::string image = b.image;
+  if (!folder.empty() && std::filesystem::path(image).is_absolute()) {
+    const std::filesystem::path rel = std::filesystem::path(image).lexically_relative(std::filesystem::path(folder).lexically_normal());
+    if (!rel.empty()) image = rel.generic_string();
+  }
+  j["image"] = image;
+  j["scale"] = b.scale;
+  j["origin"] = vec2(b.origin);
+  j["opacity"] = b.opacity;
+  return j;
+}
+
+std::string absoluteFolderOf(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path abs = std::filesystem::absolute(path, ec);
+  return ec ? std::string() : abs.parent_path().lexically_normal().string();
+}
+
 }  // namespace
 
-LoadedProject parseProject(const std::string& text) {
+LoadedProject parseProject(const std::string& text, const std::string& folder) {
   const nlohmann::json root = parseJsonText(text);
   JsonReader r(root, "");
   if (!root.is_object()) r.fail("a project file must hold a JSON object");
@@ -420,7 +462,8 @@ LoadedProject parseProject(const std::string& text) {
       if (specCount > 1) o.fail("more than one spec: an object has exactly one");
       if (auto b = o.find("box")) obj.spec = boxFromJson(*b, out.warnings);
       else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
-      for (auto& k : o.unknownKeys({"id", "name", "visible", "box", "extrusion"}))
+      if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
+      for (auto& k : o.unknownKeys({"id", "name", "visible", "box", "extrusion", "plan_background"}))
         out.warnings.push_back(k + ": unknown key ignored");
       doc.objects.push_back(std::move(obj));
     }
@@ -431,13 +474,13 @@ LoadedProject parseProject(const std::string& text) {
 LoadedProject loadProject(const std::string& path) {
   const std::string text = readFile(path, kMaxProjectBytes);
   try {
-    return parseProject(text);
+    return parseProject(text, absoluteFolderOf(path));
   } catch (const InputError& e) {
     throw InputError(e.where.empty() ? path : path + ": " + e.where, e.reason);
   }
 }
 
-std::string serializeProject(const Document& doc) {
+std::string serializeProject(const Document& doc, const std::string& folder) {
   ojson root;
   root["format"] = "corbel";
   root["version"] = kProjectVersion;
@@ -450,12 +493,15 @@ std::string serializeProject(const Document& doc) {
     j["visible"] = o.visible;
     if (const auto* b = std::get_if<BoxSpec>(&o.spec)) j["box"] = boxToJson(*b);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
+    if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
     objects.push_back(std::move(j));
   }
   root["objects"] = std::move(objects);
   return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
-void saveProject(const Document& doc, const std::string& path) { writeFileAtomic(path, serializeProject(doc)); }
+void saveProject(const Document& doc, const std::string& path) {
+  writeFileAtomic(path, serializeProject(doc, absoluteFolderOf(path)));
+}
 
 }  // namespace corbel

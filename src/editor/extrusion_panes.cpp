@@ -3,12 +3,16 @@
 #include "core/error.h"
 #include "extrude/edit.h"
 #include "extrude/extrude.h"
+#include "render/gl.h"
+#include "render/image.h"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <regex>
 
@@ -37,6 +41,10 @@ double distToSegment(ImVec2 p, ImVec2 a, ImVec2 b) {
 double dist(ImVec2 a, ImVec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 bool keyPressed(ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), false); }
+
+// Angle steps offered for angle snapping, degrees.
+const float kAngleSteps[] = {5, 15, 30, 45};
+const char* const kAngleStepLabels = "5\xc2\xb0\00015\xc2\xb0\00030\xc2\xb0\00045\xc2\xb0\0";
 
 }  // namespace
 
@@ -113,6 +121,11 @@ void ExtrusionPanes::reset() {
   selectedFeature_.reset();
   dragFeature_.reset();
   dragFeatureHeight_.reset();
+  forcedEdge_.reset();
+  selectedStep_.reset();
+  calibrating_ = 0;
+  calibratePopup_ = false;
+  chosenBackground_.reset();
 }
 
 namespace {
@@ -205,13 +218,193 @@ void ExtrusionPanes::apply(const PaneHost& host, const std::function<ExtrusionSp
   host.commit(std::move(d), label + " (" + o->name + ")", mergeKey);
 }
 
-void ExtrusionPanes::fit(const ExtrusionSpec& spec, float w, float h) {
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  for (const PlanLoop& l : spec.loops)
-    for (const Vec2& p : l.points) {
-      x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]);
-      x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+void ExtrusionPanes::setBackground(const PaneHost& host, std::optional<PlanBackground> b, const std::string& label,
+                                   const std::string& mergeKey) {
+  Document d = *host.doc;
+  DocObject* o = d.find(host.object);
+  if (!o) return;
+  if (b)
+    if (auto bad = checkPlanBackground(*b)) {
+      host.log(label + ": " + *bad, true);
+      return;
     }
+  if (o->background == b) return;
+  o->background = std::move(b);
+  const std::string name = o->name;
+  host.commit(std::move(d), label + " (" + name + ")", mergeKey);
+}
+
+bool ExtrusionPanes::backgroundTexture(const PaneHost& host, const PlanBackground& b) {
+  if (b.image == texturePath_) return texture_ != 0;
+  texturePath_ = b.image;
+  textureError_.clear();
+  render::Image img;
+  try {
+    img = render::readImage(b.image, 8192);
+  } catch (const std::exception& e) {
+    textureError_ = e.what();
+    host.log("Background image: " + textureError_ + " (the plan is shown without it)", true);
+    if (texture_) glDeleteTextures(1, &texture_);
+    texture_ = 0;
+    return false;
+  }
+  GLint bound = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+  if (!texture_) glGenTextures(1, &texture_);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
+  textureW_ = img.width;
+  textureH_ = img.height;
+  fitted_ = false;  // frame the new image with the plan
+  return true;
+}
+
+// The Background popup: choose, place, fade, calibrate or remove the tracing image.
+void ExtrusionPanes::backgroundFields(const PaneHost& host, const DocObject& object, const ExtrusionSpec& spec) {
+  if (ImGui::Button("Choose image…")) {
+    const std::string start = object.background ? object.background->image : std::string();
+    backgroundDialog_.open(FileDialog::Mode::Open, "Background image", {".png", ".jpg", ".jpeg", ".PNG", ".JPG", ".JPEG"},
+                           start, [this](const std::string& path) { chosenBackground_ = path; });
+    ImGui::CloseCurrentPopup();
+  }
+  if (!object.background) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("none: a PNG or JPEG to trace the plan from");
+    return;
+  }
+  PlanBackground b = *object.background;
+  ImGui::SameLine();
+  if (ImGui::Button("Remove")) {
+    setBackground(host, std::nullopt, "Remove background");
+    ImGui::CloseCurrentPopup();
+    return;
+  }
+  ImGui::TextWrapped("%s", b.image.c_str());
+  if (b.image == texturePath_ && !textureError_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
+    ImGui::TextWrapped("%s", textureError_.c_str());
+    ImGui::PopStyleColor();
+  } else if (texture_ && b.image == texturePath_) {
+    ImGui::Text("%d x %d px = %.2f x %.2f m", textureW_, textureH_, textureW_ * b.scale, textureH_ * b.scale);
+  }
+  double scale = b.scale;
+  ImGui::SetNextItemWidth(140);
+  if (ImGui::InputDouble("metres per pixel", &scale, 0, 0, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    b.scale = scale;
+    setBackground(host, b, "Scale background");
+  }
+  float origin[2] = {float(b.origin[0]), float(b.origin[1])};
+  ImGui::SetNextItemWidth(140);
+  if (ImGui::InputFloat2("lower-left corner (m)", origin, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    b.origin = Vec2(origin[0], origin[1]);
+    setBackground(host, b, "Move background");
+  }
+  float opacity = float(b.opacity);
+  ImGui::SetNextItemWidth(140);
+  if (ImGui::SliderFloat("opacity", &opacity, 0.0f, 1.0f, "%.2f")) {
+    b.opacity = opacity;
+    setBackground(host, b, "Fade background", "plan-background-opacity");
+  }
+  if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+  if (ImGui::Button("Calibrate: click two points")) {
+    calibrating_ = 2;
+    ImGui::CloseCurrentPopup();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Click two points of the image whose distance you know, then type it: the image is scaled about the first");
+  ImGui::SameLine();
+  if (ImGui::Button("Centre on plan") && texture_ && b.image == texturePath_) {
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const PlanLoop& l : spec.loops)
+      for (const Vec2& p : l.points) x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+    if (x0 <= x1) {
+      b.origin = Vec2((x0 + x1 - textureW_ * b.scale) / 2, (y0 + y1 - textureH_ * b.scale) / 2);
+      setBackground(host, b, "Move background");
+    }
+  }
+}
+
+// Name, repeat and deletion of the selected step (Sec. 3.5–3.6); each field commits when edited.
+void ExtrusionPanes::stepFields(const PaneHost& host, const ExtrusionSpec& spec) {
+  if (!selectedStep_ || *selectedStep_ >= static_cast<int>(spec.steps.size())) {
+    selectedStep_.reset();
+    return;
+  }
+  const int k = *selectedStep_;
+  const PlanStep& st = spec.steps[k];
+  ImGui::Separator();
+  const char* shape = st.shape == StepShape::Forced ? "forced" : st.shape == StepShape::Bay ? "bay" : "rectangle";
+  ImGui::Text("Step \"%s\": %s at %.2f m", st.name.c_str(), shape, st.anchor.height);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Delete step")) {
+    apply(host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
+    selectedStep_.reset();
+    return;
+  }
+  Repeat rep = st.repeat;
+  int kind = static_cast<int>(rep.kind);
+  ImGui::SetNextItemWidth(90);
+  bool changed = ImGui::Combo("Repeat##step", &kind, "none\0row\0grid\0");
+  if (changed && rep.kind == RepeatKind::None) {
+    // A new row runs to the far end of the edge (relative) or 4 m on (absolute).
+    rep.along = st.anchor.absolute ? st.anchor.along + 4 : (st.anchor.along < 0.5 ? 0.9 : 0.1);
+    rep.height = st.anchor.height + 3;
+  }
+  rep.kind = static_cast<RepeatKind>(kind);
+  if (rep.kind != RepeatKind::None) {
+    float v[2] = {float(rep.along), float(rep.spacing)};
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(140);
+    if (ImGui::InputFloat2(st.anchor.absolute ? "last at, spacing##step" : "last fraction, spacing##step", v, "%.2f",
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
+      rep.along = v[0];
+      rep.spacing = v[1];
+      changed = true;
+    }
+    if (rep.kind == RepeatKind::Grid) {
+      float g[2] = {float(rep.height), float(rep.rowSpacing)};
+      ImGui::SetNextItemWidth(140);
+      if (ImGui::InputFloat2("last row height, row spacing##step", g, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+        rep.height = g[0];
+        rep.rowSpacing = g[1];
+        changed = true;
+      }
+    }
+    const RepeatGrid grid = repeatGrid(spec, st.anchor, st.repeat);
+    if (st.repeat.kind != RepeatKind::None) ImGui::TextDisabled("%zu x %zu steps", grid.columns, grid.rows);
+  }
+  if (changed) apply(host, [&](const ExtrusionSpec& s) { return ed::setStepRepeat(s, k, rep); }, "Repeat " + st.name);
+}
+
+void ExtrusionPanes::fit(const ExtrusionSpec& spec, const PlanBackground* background, float w, float h) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  auto grow = [&](const Vec2& p) {
+    x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]);
+    x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+  };
+  for (const PlanLoop& l : spec.loops)
+    for (const Vec2& p : l.points) grow(p);
+  // Forced steps reach out of the plan: frame them too.
+  for (const PlanStep& st : spec.steps) {
+    const auto at = st.shape == StepShape::Forced ? anchorOnPlan(spec, st.anchor) : std::nullopt;
+    if (!at) continue;
+    const auto& pts = spec.loops[st.anchor.loop].points;
+    Vec2 d = pts[(st.anchor.edge + 1) % pts.size()] - pts[st.anchor.edge];
+    d /= std::max(d.norm(), 1e-12);
+    for (const Vec2& q : st.points) grow(*at + d * q[0] + Vec2(d[1], -d[0]) * q[1]);
+  }
+  // And the tracing image, once it is loaded.
+  if (background && texture_ && background->image == texturePath_) {
+    grow(background->origin);
+    grow(background->origin + Vec2(textureW_, textureH_) * background->scale);
+  }
   if (x0 > x1) return;
   cx_ = (x0 + x1) / 2;
   cy_ = (y0 + y1) / 2;
@@ -234,19 +427,58 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
   ImGui::Begin("Plan", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  const DocObject* object = host.doc->find(host.object);
   // Toolbar.
   if (ImGui::Button("Fit")) fitted_ = false;
   ImGui::SameLine();
   ImGui::Checkbox("Snap", &snap_);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Snap corners to a %.2f m grid (hold Alt to drag freely)", grid_);
   ImGui::SameLine();
-  if (ImGui::Button(drawing_ ? "Cancel loop" : "Draw loop")) {
-    drawing_ = !drawing_;
+  ImGui::Checkbox("Angles", &snapAngles_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("With Snap: new edges turn to multiples of the angle step, or parallel or perpendicular to their "
+                      "neighbour when that is within half a step (hold Alt to draw freely)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(52);
+  ImGui::Combo("##anglestep", &angleStep_, kAngleStepLabels);
+  ImGui::SameLine();
+  if (ImGui::Button(drawing_ && !forcedEdge_ ? "Cancel loop" : "Draw loop")) {
+    drawing_ = !(drawing_ && !forcedEdge_);
+    forcedEdge_.reset();
     drawn_.clear();
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Click to place corners; click the first corner or press Enter to close. Inside another loop it becomes a hole.");
   ImGui::SameLine();
+  if (ImGui::Button("Background…")) ImGui::OpenPopup("background");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("An image under the plan to trace from (saved with the object; never extruded)");
+  if (ImGui::BeginPopup("background")) {
+    if (object) backgroundFields(host, *object, spec);
+    ImGui::EndPopup();
+  }
+  backgroundDialog_.draw();
+  if (chosenBackground_ && object) {
+    const std::string path = *chosenBackground_;
+    chosenBackground_.reset();
+    PlanBackground b = object->background.value_or(PlanBackground());
+    const bool fresh = !object->background;
+    b.image = path;
+    texturePath_.clear();  // read it again, even if it is the same file
+    if (backgroundTexture(host, b)) {
+      if (fresh) {
+        // Fit the image's longer side to 1.5 times the plan's, centred on it.
+        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+        for (const PlanLoop& l : spec.loops)
+          for (const Vec2& p : l.points) x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+        if (x0 <= x1) {
+          b.scale = std::clamp(1.5 * std::max(x1 - x0, y1 - y0) / std::max(textureW_, textureH_), limits::kMinBackgroundScale,
+                               limits::kMaxBackgroundScale);
+          b.origin = Vec2((x0 + x1 - textureW_ * b.scale) / 2, (y0 + y1 - textureH_ * b.scale) / 2);
+        }
+      }
+      setBackground(host, b, "Set background");
+    }
+  }
   ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x));
   const std::string current = spec.profiles.empty() ? "" : spec.profiles[std::min<std::size_t>(profile_, spec.profiles.size() - 1)].name;
   if (ImGui::BeginCombo("##assign", selectedEdges_.empty() ? "Select edges to assign a profile" : "Assign profile…")) {
@@ -319,6 +551,15 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (ImGui::Button("Add feature here")) ImGui::OpenPopup("feature");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("A door, window, roof window or chimney pot at a mesh anchor on the selected edge (Sec. 3.4, Fig. 28)");
+    ImGui::SameLine();
+    if (ImGui::Button("Draw forced step") && !(drawing_ && forcedEdge_)) {
+      drawing_ = true;
+      forcedEdge_ = *selectedEdges_.begin();
+      drawn_.clear();
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Click the corners of a polygon; closing it unions it with the plan at the chosen height, anchored on "
+                        "the selected edge where it is nearest (a forced step, Sec. 3.5)");
   }
   if (ImGui::BeginPopup("feature")) {
     if (ImGui::Combo("Kind", &featureKind_, kFeatureLabels)) {
@@ -341,13 +582,28 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     }
     ImGui::EndPopup();
   }
+  if (forcedEdge_ && drawing_) {
+    ImGui::TextColored(ImVec4(1.0f, 0.86f, 0.47f, 1.0f), "Forced step on loop %d edge %d:", forcedEdge_->first, forcedEdge_->second);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputFloat("height (m)##forced", &forcedHeight_, 0.1f, 1.0f, "%.2f");
+    forcedHeight_ = std::max(0.0f, forcedHeight_);
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      drawing_ = false;
+      forcedEdge_.reset();
+      drawn_.clear();
+    }
+  }
   featureFields(host, spec);
+  stepFields(host, spec);
 
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float errH = host.error.empty() ? 0.0f : ImGui::GetTextLineHeightWithSpacing() * 2;
   const ImVec2 size(std::max(avail.x, 10.0f), std::max(avail.y - errH, 10.0f));
-  if (!fitted_) fit(spec, size.x, size.y);
+  if (object && object->background) backgroundTexture(host, *object->background);  // may ask for a fit
+  if (!fitted_) fit(spec, object && object->background ? &*object->background : nullptr, size.x, size.y);
   ImGui::InvisibleButton("plan-canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                                   ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered();
@@ -362,22 +618,65 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (!snap_ || io.KeyAlt) return p;
     return Vec2(std::round(p[0] / grid_) * grid_, std::round(p[1] / grid_) * grid_);
   };
+  // Angle snapping (extrude/edit.h): the guides it used are drawn over the plan this frame.
+  std::vector<ed::SnapGuide> guides;
+  const bool angles = snap_ && snapAngles_ && !io.KeyAlt;
+  const double angleStep = kAngleSteps[std::clamp(angleStep_, 0, 3)];
+  // The next point of a drawn polygon: its edge from the last point snaps to the axes or to
+  // the previous edge (the first edge of a forced step: to its plan edge).
+  auto drawnPoint = [&](const Vec2& pointer) {
+    if (!angles || drawn_.empty()) return snapped(pointer);
+    const Vec2 last(drawn_.back().first, drawn_.back().second);
+    std::vector<Vec2> refs;
+    if (drawn_.size() >= 2) refs.push_back(last - Vec2(drawn_[drawn_.size() - 2].first, drawn_[drawn_.size() - 2].second));
+    else if (forcedEdge_ && forcedEdge_->first < static_cast<int>(spec.loops.size()) &&
+             forcedEdge_->second < static_cast<int>(spec.loops[forcedEdge_->first].points.size())) {
+      const auto& pts = spec.loops[forcedEdge_->first].points;
+      refs.push_back(pts[(forcedEdge_->second + 1) % pts.size()] - pts[forcedEdge_->second]);
+    }
+    ed::AngleSnap a = ed::snapEdgeAngle(last, pointer, angleStep, refs, grid_);
+    guides.insert(guides.end(), a.guides.begin(), a.guides.end());
+    return a.point;
+  };
+  // A corner between corners `before` and `after` of a loop (dragged, or inserted into the
+  // edge before `after`): both of its edges snap, each against the edge beyond its far corner.
+  auto cornerPoint = [&](int li, int before, int after, const Vec2& pointer) {
+    const Vec2 p = snapped(pointer);
+    const auto& pts = spec.loops[li].points;
+    const int n = static_cast<int>(pts.size());
+    if (!angles || n < 3) return p;
+    const Vec2 prev = pts[(before + n) % n], next = pts[after % n];
+    const Vec2 refPrev = prev - pts[(before - 1 + 2 * n) % n], refNext = pts[(after + 1) % n] - next;
+    ed::AngleSnap a = ed::snapCornerAngles(prev, next, pointer, angleStep, {refPrev}, {refNext});
+    guides.insert(guides.end(), a.guides.begin(), a.guides.end());
+    return a.guides.empty() ? p : a.point;
+  };
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
   dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(28, 30, 34, 255));
-  // Grid: 1 m lines, 5 m lines stronger; coarser when zoomed out.
+  // The tracing image under everything, its lower-left corner at its origin.
+  if (object && object->background && backgroundTexture(host, *object->background)) {
+    const PlanBackground& b = *object->background;
+    const ImVec2 tl = toScreen(Vec2(b.origin[0], b.origin[1] + textureH_ * b.scale));
+    const ImVec2 br = toScreen(Vec2(b.origin[0] + textureW_ * b.scale, b.origin[1]));
+    const int alpha = std::clamp(static_cast<int>(std::lround(b.opacity * 255)), 0, 255);
+    dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)), tl, br, ImVec2(0, 0), ImVec2(1, 1),
+                 IM_COL32(255, 255, 255, alpha));
+  }
+  // Grid: 1 m lines, 5 m lines stronger; coarser when zoomed out; see-through over an image.
+  const ImU32 seeThrough = object && object->background && texture_ ? 0x70FFFFFF : 0xFFFFFFFF;
   const double step = zoom_ < 4 ? 10 : 1;
   const Vec2 lo = toWorld(ImVec2(origin.x, origin.y + size.y)), hi = toWorld(ImVec2(origin.x + size.x, origin.y));
   for (double gx = std::floor(lo[0] / step) * step; gx <= hi[0]; gx += step) {
     const bool major = std::fmod(std::abs(gx), 5 * step) < 1e-9;
     const ImVec2 a = toScreen(Vec2(gx, lo[1])), b = toScreen(Vec2(gx, hi[1]));
-    dl->AddLine(a, b, major ? IM_COL32(70, 74, 82, 255) : IM_COL32(45, 48, 54, 255));
+    dl->AddLine(a, b, (major ? IM_COL32(70, 74, 82, 255) : IM_COL32(45, 48, 54, 255)) & seeThrough);
   }
   for (double gy = std::floor(lo[1] / step) * step; gy <= hi[1]; gy += step) {
     const bool major = std::fmod(std::abs(gy), 5 * step) < 1e-9;
     const ImVec2 a = toScreen(Vec2(lo[0], gy)), b = toScreen(Vec2(hi[0], gy));
-    dl->AddLine(a, b, major ? IM_COL32(70, 74, 82, 255) : IM_COL32(45, 48, 54, 255));
+    dl->AddLine(a, b, (major ? IM_COL32(70, 74, 82, 255) : IM_COL32(45, 48, 54, 255)) & seeThrough);
   }
   // The kernel's complaint, if it names a point: "loops[i].points[j]".
   std::optional<std::pair<int, int>> faulty;
@@ -388,16 +687,19 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   // Hit testing.
   const ImVec2 mouse = io.MousePos;
   std::optional<std::pair<int, int>> hotCorner, hotEdge;
-  std::optional<int> hotFeature;
+  std::optional<int> hotFeature, hotStep;
   for (int k = 0; k < static_cast<int>(spec.anchors.size()); ++k)
     if (auto at = anchorOnPlan(spec, spec.anchors[k].anchor); at && dist(mouse, toScreen(*at)) < 7) hotFeature = k;
-  double best = hotFeature ? 0 : 8;
+  if (!hotFeature)
+    for (int k = 0; k < static_cast<int>(spec.steps.size()); ++k)
+      if (auto at = anchorOnPlan(spec, spec.steps[k].anchor); at && dist(mouse, toScreen(*at)) < 7) hotStep = k;
+  double best = hotFeature || hotStep ? 0 : 8;
   for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li)
     for (int i = 0; i < static_cast<int>(spec.loops[li].points.size()); ++i) {
       const double d = dist(mouse, toScreen(spec.loops[li].points[i]));
       if (d < best) best = d, hotCorner = std::make_pair(li, i);
     }
-  if (!hotCorner && !hotFeature) {
+  if (!hotCorner && !hotFeature && !hotStep) {
     best = 6;
     for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li) {
       const auto& pts = spec.loops[li].points;
@@ -433,16 +735,31 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       if (isFaulty) dl->AddCircle(p, 11, IM_COL32(255, 60, 60, 255), 20, 2.5f);
     }
   }
-  // Anchors of steps: circles on their input edge (Fig. 4 j–n).
-  for (const PlanStep& st : spec.steps) {
-    if (st.anchor.loop >= static_cast<int>(spec.loops.size())) continue;
-    const auto& pts = spec.loops[st.anchor.loop].points;
-    if (st.anchor.edge >= static_cast<int>(pts.size())) continue;
-    const Vec2 a = pts[st.anchor.edge], b = pts[(st.anchor.edge + 1) % pts.size()];
-    Vec2 d = b - a;
-    const double len = d.norm();
-    const Vec2 at = st.anchor.absolute ? a + d / std::max(len, 1e-9) * st.anchor.along : a + d * st.anchor.along;
-    dl->AddCircle(toScreen(at), 6, IM_COL32(240, 80, 240, 255), 16, 2.0f);
+  // Anchors of steps: circles on their input edge (Fig. 4 j–n); a forced step's polygon as it
+  // lies against its input edge; a repeat's elements as dots on a line to its last.
+  for (int k = 0; k < static_cast<int>(spec.steps.size()); ++k) {
+    const PlanStep& st = spec.steps[k];
+    const auto at = anchorOnPlan(spec, st.anchor);
+    if (!at) continue;
+    const ImU32 col = IM_COL32(240, 80, 240, 255);
+    if (st.shape == StepShape::Forced && st.points.size() >= 3) {
+      const auto& pts = spec.loops[st.anchor.loop].points;
+      Vec2 d = pts[(st.anchor.edge + 1) % pts.size()] - pts[st.anchor.edge];
+      d /= std::max(d.norm(), 1e-12);
+      const Vec2 out(d[1], -d[0]);
+      std::vector<ImVec2> poly;
+      for (const Vec2& q : st.points) poly.push_back(toScreen(*at + d * q[0] + out * q[1]));
+      dl->AddPolyline(poly.data(), static_cast<int>(poly.size()), (col & 0x00FFFFFF) | 0xB0000000, ImDrawFlags_Closed, 1.5f);
+    }
+    if (st.repeat.kind != RepeatKind::None) {
+      const std::vector<Anchor> all = repeatAnchors(spec, st.anchor, st.repeat);
+      if (auto last = anchorOnPlan(spec, all.back())) dl->AddLine(toScreen(*at), toScreen(*last), (col & 0x00FFFFFF) | 0x80000000, 1.5f);
+      for (std::size_t i = 1; i < all.size() && i < 2000; ++i)
+        if (auto q = anchorOnPlan(spec, all[i])) dl->AddCircleFilled(toScreen(*q), 3, col);
+    }
+    const bool sel = selectedStep_ && *selectedStep_ == k;
+    if (sel || (hotStep && *hotStep == k)) dl->AddCircleFilled(toScreen(*at), 6, (col & 0x00FFFFFF) | 0x90000000, 16);
+    dl->AddCircle(toScreen(*at), 6, col, 16, sel ? 3.0f : 2.0f);
   }
   // Mesh anchors (features): cyan circles; a repeat's elements as dots on a line to its last.
   for (int k = 0; k < static_cast<int>(spec.anchors.size()); ++k) {
@@ -460,15 +777,26 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (sel || (hotFeature && *hotFeature == k)) dl->AddCircleFilled(toScreen(*at), 6, (col & 0x00FFFFFF) | 0x90000000, 16);
     dl->AddCircle(toScreen(*at), 6, col, 16, sel ? 3.0f : 2.0f);
   }
-  // A loop being drawn.
+  // A loop (or a forced step's polygon) being drawn; its next point as it would be placed.
+  std::optional<Vec2> nextDrawn;
+  if (drawing_ && hovered) nextDrawn = drawnPoint(toWorld(mouse));
   if (drawing_) {
+    const ImU32 col = forcedEdge_ ? IM_COL32(240, 120, 240, 255) : IM_COL32(255, 220, 120, 255);
     for (std::size_t i = 0; i < drawn_.size(); ++i) {
       const ImVec2 p = toScreen(Vec2(drawn_[i].first, drawn_[i].second));
-      dl->AddCircleFilled(p, 4, IM_COL32(255, 220, 120, 255));
-      const ImVec2 q = i + 1 < drawn_.size() ? toScreen(Vec2(drawn_[i + 1].first, drawn_[i + 1].second))
-                                             : toScreen(snapped(toWorld(mouse)));
-      dl->AddLine(p, q, IM_COL32(255, 220, 120, 255), 2.0f);
+      dl->AddCircleFilled(p, 4, col);
+      if (i + 1 < drawn_.size()) dl->AddLine(p, toScreen(Vec2(drawn_[i + 1].first, drawn_[i + 1].second)), col, 2.0f);
+      else if (nextDrawn) dl->AddLine(p, toScreen(*nextDrawn), col, 2.0f);
     }
+    if (nextDrawn) dl->AddCircle(toScreen(*nextDrawn), 4, col, 12, 1.5f);
+  }
+  // Calibration: the points clicked so far.
+  if (calibrating_ == 1 || calibratePopup_) {
+    const ImU32 col = IM_COL32(120, 255, 160, 255);
+    dl->AddCircle(toScreen(calibrateA_), 5, col, 12, 2.0f);
+    const Vec2 b = calibratePopup_ ? calibrateB_ : toWorld(mouse);
+    dl->AddLine(toScreen(calibrateA_), toScreen(b), col, 1.5f);
+    dl->AddCircle(toScreen(b), 5, col, 12, 2.0f);
   }
   dl->PopClipRect();
 
@@ -486,35 +814,65 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       cy_ += io.MouseDelta.y / zoom_;
     }
   }
-  if (drawing_) {
+  if (calibrating_ > 0) {
+    // Two free clicks (no snapping: they mark the image, not the plan).
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      if (calibrating_ == 2) calibrateA_ = toWorld(mouse);
+      else calibrateB_ = toWorld(mouse);
+      if (--calibrating_ == 0) {
+        calibratePopup_ = true;
+        calibrateDistance_ = float((calibrateB_ - calibrateA_).norm());
+        ImGui::OpenPopup("calibrate");
+      }
+    } else if (keyPressed(ImGuiKey_Escape)) {
+      calibrating_ = 0;
+    }
+  } else if (drawing_) {
     auto finishLoop = [&] {
       std::vector<Vec2> pts;
       for (auto [px, py] : drawn_) pts.emplace_back(px, py);
-      apply(host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
+      if (forcedEdge_) {
+        const auto [li, ei] = *forcedEdge_;
+        const double height = forcedHeight_;
+        const int front = profile_;
+        const int index = static_cast<int>(spec.steps.size());
+        apply(host, [&](const ExtrusionSpec& s) { return ed::addForcedStep(s, li, ei, pts, height, front); }, "Add forced step");
+        selectedStep_ = index;  // the new one, once committed
+      } else {
+        apply(host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
+      }
       drawing_ = false;
+      forcedEdge_.reset();
       drawn_.clear();
     };
     const bool enter = drawn_.size() >= 3 && keyPressed(ImGuiKey_Enter);
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
       const bool closes = drawn_.size() >= 3 && dist(mouse, toScreen(Vec2(drawn_[0].first, drawn_[0].second))) < 8;
+      const Vec2 p = nextDrawn ? *nextDrawn : snapped(toWorld(mouse));
       if (closes) finishLoop();
-      else drawn_.emplace_back(snapped(toWorld(mouse))[0], snapped(toWorld(mouse))[1]);
+      else drawn_.emplace_back(p[0], p[1]);
     } else if (enter) {
       finishLoop();
     } else if (keyPressed(ImGuiKey_Escape)) {
       drawing_ = false;
+      forcedEdge_.reset();
       drawn_.clear();
     }
   } else {
     if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && hotEdge) {
       const auto [li, ei] = *hotEdge;
-      const Vec2 p = snapped(toWorld(mouse));
+      const Vec2 p = cornerPoint(li, ei, ei + 1, toWorld(mouse));
       apply(host, [&](const ExtrusionSpec& s) { return ed::insertCorner(s, li, ei, p); }, "Insert corner");
       selectedCorner_ = std::make_pair(li, ei + 1);
     } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
       if (hotFeature) {
         selectedFeature_ = hotFeature;
         dragFeature_ = hotFeature;
+        selectedCorner_.reset();
+        selectedStep_.reset();
+      } else if (hotStep) {
+        selectedStep_ = hotStep;
+        selectedFeature_.reset();
         selectedCorner_.reset();
       } else if (hotCorner) {
         dragCorner_ = hotCorner;
@@ -552,9 +910,9 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     }
     if (dragCorner_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
       const auto [li, ci] = *dragCorner_;
-      const Vec2 p = snapped(toWorld(mouse));
-      if (li < static_cast<int>(spec.loops.size()) && ci < static_cast<int>(spec.loops[li].points.size()) &&
-          (spec.loops[li].points[ci] - p).norm() > 1e-12)
+      const bool exists = li < static_cast<int>(spec.loops.size()) && ci < static_cast<int>(spec.loops[li].points.size());
+      const Vec2 p = exists ? cornerPoint(li, ci - 1, ci + 1, toWorld(mouse)) : toWorld(mouse);
+      if (exists && (spec.loops[li].points[ci] - p).norm() > 1e-12)
         apply(host, [&](const ExtrusionSpec& s) { return ed::moveCorner(s, li, ci, p); }, "Move corner",
               "plan-corner-" + std::to_string(li) + "-" + std::to_string(ci));
     }
@@ -583,6 +941,12 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       dragFeature_.reset();
       host.endDrag();
     }
+    if (ImGui::IsWindowFocused() && !selectedCorner_ && !selectedFeature_ && selectedStep_ &&
+        (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+      const int k = *selectedStep_;
+      apply(host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
+      selectedStep_.reset();
+    }
     if (ImGui::IsWindowFocused() && !selectedCorner_ && selectedFeature_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const int k = *selectedFeature_;
       apply(host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete feature");
@@ -594,13 +958,49 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       selectedCorner_.reset();
     }
   }
+  // Guides of this frame's angle snapping: the snapped edges' lines across the pane.
+  if (!guides.empty()) {
+    dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+    const double reach = (size.x + size.y) / zoom_;
+    for (const ed::SnapGuide& g : guides) {
+      const ImU32 col = g.kind == ed::SnapKind::Axis ? IM_COL32(120, 200, 255, 150) : IM_COL32(120, 255, 160, 170);
+      dl->AddLine(toScreen(g.from - g.direction * reach), toScreen(g.from + g.direction * reach), col, 1.0f);
+    }
+    dl->PopClipRect();
+  }
+  if (ImGui::BeginPopup("calibrate")) {
+    ImGui::Text("The two points are %.3f m apart on the plan.", (calibrateB_ - calibrateA_).norm());
+    ImGui::SetNextItemWidth(120);
+    ImGui::InputFloat("their true distance (m)", &calibrateDistance_, 0.1f, 1.0f, "%.3f");
+    const double now = (calibrateB_ - calibrateA_).norm();
+    if (ImGui::Button("Scale the image") && object && object->background && now > 1e-9 && calibrateDistance_ > 0) {
+      const double f = calibrateDistance_ / now;
+      PlanBackground b = *object->background;
+      b.scale *= f;
+      b.origin = calibrateA_ + (b.origin - calibrateA_) * f;  // the first point stays put
+      setBackground(host, b, "Calibrate background");
+      calibratePopup_ = false;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel##calibrate")) {
+      calibratePopup_ = false;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  } else {
+    calibratePopup_ = false;
+  }
   if (hovered) {
     const Vec2 p = toWorld(mouse);
     ImGui::SetTooltip("%.2f, %.2f m%s", p[0], p[1],
-                      hotFeature ? "\na feature's anchor: drag along its edge, click to edit"
-                      : hotCorner ? "\ndrag to move, Delete to remove"
-                      : hotEdge   ? "\nclick to select (Shift adds), double-click to add a corner"
-                                  : "");
+                      calibrating_ ? "\ncalibrating: click a point of the image whose distance to another you know"
+                      : drawing_   ? "\nclick to place a corner; click the first one or press Enter to close, Esc to cancel"
+                      : hotFeature ? "\na feature's anchor: drag along its edge, click to edit"
+                      : hotStep    ? "\na step's anchor: click to edit its repeat, Delete to remove"
+                      : hotCorner  ? "\ndrag to move, Delete to remove"
+                      : hotEdge    ? "\nclick to select (Shift adds), double-click to add a corner"
+                                   : "");
   }
   if (!host.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));

@@ -5,6 +5,7 @@
 // undoable and the preview re-extrudes from the new spec.
 #include "core/document.h"
 #include "core/geometry.h"
+#include "editor/file_dialog.h"
 
 #include <functional>
 #include <optional>
@@ -40,18 +41,44 @@ class ExtrusionPanes {
   void drawProfile(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h);
   void apply(const PaneHost& host, const std::function<ExtrusionSpec(const ExtrusionSpec&)>& change,
              const std::string& label, const std::string& mergeKey = {});
-  void fit(const ExtrusionSpec& spec, float w, float h);
+  void fit(const ExtrusionSpec& spec, const PlanBackground* background, float w, float h);  // plan, forced steps, image
+  // Commits the object's plan background (nullopt removes it); not a spec change.
+  void setBackground(const PaneHost& host, std::optional<PlanBackground> b, const std::string& label,
+                     const std::string& mergeKey = {});
+  void backgroundFields(const PaneHost& host, const DocObject& object, const ExtrusionSpec& spec);
+  // Loads the background's image into a texture when its path changed; false when it has none
+  // or it cannot be read (logged once per path).
+  bool backgroundTexture(const PaneHost& host, const PlanBackground& b);
+  void stepFields(const PaneHost& host, const ExtrusionSpec& spec);
 
   // Plan view: world (m) ↔ pane pixels.
   double cx_ = 0, cy_ = 0, zoom_ = 20;  // centre, pixels per metre
   bool fitted_ = false;
   bool snap_ = true;
   double grid_ = 0.25;
+  bool snapAngles_ = true;  // with snap_: edges turn to multiples of angleStep_ or to a neighbour
+  int angleStep_ = 1;       // index into the pane's angle steps (5, 15, 30, 45 degrees)
   std::set<std::pair<int, int>> selectedEdges_;
   std::optional<std::pair<int, int>> dragCorner_, selectedCorner_;
   std::optional<std::pair<float, float>> boxFrom_;  // where a box selection started (pixels)
   bool drawing_ = false;
   std::vector<std::pair<double, double>> drawn_;
+  // Drawing a forced step (Sec. 3.5) for this edge instead of a loop.
+  std::optional<std::pair<int, int>> forcedEdge_;
+  float forcedHeight_ = 0.0f;
+  std::optional<int> selectedStep_;
+
+  // Background image for tracing: the texture of the image at texturePath_ (0 = none).
+  unsigned texture_ = 0;
+  int textureW_ = 0, textureH_ = 0;
+  std::string texturePath_, textureError_;
+  FileDialog backgroundDialog_;
+  std::optional<std::string> chosenBackground_;  // picked in the dialog, committed next frame
+  // Calibrating the background: two clicked plan points, then their true distance.
+  int calibrating_ = 0;  // points still to click (0: not calibrating)
+  Vec2 calibrateA_{0, 0}, calibrateB_{0, 0};
+  float calibrateDistance_ = 1.0f;
+  bool calibratePopup_ = false;
 
   // Profile view.
   int profile_ = 0;

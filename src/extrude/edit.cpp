@@ -1,9 +1,13 @@
 #include "extrude/edit.h"
 
 #include "core/error.h"
+#include "extrude/plan_check.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
 
 namespace corbel::extrude::edit {
 
@@ -115,6 +119,86 @@ Vec2 clampProfilePoint(const Profile& p, int point, const Vec2& wz) {
   return q;
 }
 
+namespace {
+
+double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
+
+// The direction `stepDeg * k` from the x axis; exact on the axes so snapped corners stay
+// on round coordinates.
+Vec2 axisDirection(long k, double stepDeg) {
+  const double deg = std::remainder(static_cast<double>(k) * stepDeg, 360.0);
+  if (std::abs(deg) < 1e-9) return Vec2(1, 0);
+  if (std::abs(deg - 90) < 1e-9) return Vec2(0, 1);
+  if (std::abs(std::abs(deg) - 180) < 1e-9) return Vec2(-1, 0);
+  if (std::abs(deg + 90) < 1e-9) return Vec2(0, -1);
+  const double r = deg * std::numbers::pi / 180;
+  return Vec2(std::cos(r), std::sin(r));
+}
+
+// The allowed direction nearest to d (unit), with its kind and its angle from d in degrees.
+struct Candidate {
+  Vec2 direction;
+  SnapKind kind = SnapKind::Axis;
+  double deviation = 0;
+};
+
+double angleBetween(const Vec2& a, const Vec2& b) {
+  return std::abs(std::atan2(cross2(a, b), OpenMesh::dot(a, b))) * 180 / std::numbers::pi;
+}
+
+std::optional<Candidate> nearestDirection(const Vec2& d, double stepDeg, const std::vector<Vec2>& references) {
+  if (!(stepDeg > 0 && stepDeg <= 90)) return std::nullopt;
+  std::optional<Candidate> best;
+  for (const Vec2& ref : references) {
+    const double len = ref.norm();
+    if (!(len > 0) || !std::isfinite(len)) continue;
+    const Vec2 u = ref / len;
+    const Vec2 rotated[4] = {u, Vec2(-u[1], u[0]), -u, Vec2(u[1], -u[0])};
+    for (int k = 0; k < 4; ++k) {
+      const double dev = angleBetween(d, rotated[k]);
+      if (dev <= stepDeg / 2 && (!best || dev < best->deviation))
+        best = Candidate{rotated[k], k % 2 == 0 ? SnapKind::Parallel : SnapKind::Perpendicular, dev};
+    }
+  }
+  if (best) return best;
+  const double a = std::atan2(d[1], d[0]) * 180 / std::numbers::pi;
+  const Vec2 dir = axisDirection(std::lround(a / stepDeg), stepDeg);
+  return Candidate{dir, SnapKind::Axis, angleBetween(d, dir)};
+}
+
+}  // namespace
+
+AngleSnap snapEdgeAngle(const Vec2& from, const Vec2& to, double stepDeg, const std::vector<Vec2>& references,
+                        double lengthStep) {
+  const Vec2 d = to - from;
+  const double r = d.norm();
+  if (!(r > 0) || !std::isfinite(r)) return {to, {}};
+  const auto c = nearestDirection(d / r, stepDeg, references);
+  if (!c) return {to, {}};
+  double len = OpenMesh::dot(d, c->direction);  // > 0: the deviation is at most 45 degrees
+  if (lengthStep > 0 && std::isfinite(lengthStep)) len = std::max(1.0, std::round(len / lengthStep)) * lengthStep;
+  return {from + c->direction * len, {SnapGuide{from, c->direction, c->kind}}};
+}
+
+AngleSnap snapCornerAngles(const Vec2& prev, const Vec2& next, const Vec2& to, double stepDeg,
+                           const std::vector<Vec2>& prevReferences, const std::vector<Vec2>& nextReferences) {
+  const AngleSnap a = snapEdgeAngle(prev, to, stepDeg, prevReferences);
+  const AngleSnap b = snapEdgeAngle(next, to, stepDeg, nextReferences);
+  if (a.guides.empty() || b.guides.empty()) return a.guides.empty() ? b : a;
+  const Vec2 da = a.guides[0].direction, db = b.guides[0].direction;
+  const double det = cross2(da, db);
+  auto single = [&] { return (a.point - to).sqrnorm() <= (b.point - to).sqrnorm() ? a : b; };
+  if (std::abs(det) < std::sin(std::numbers::pi / 360)) return single();  // within half a degree
+  // prev + t da = next + u db.
+  const Vec2 w = next - prev;
+  const double t = cross2(w, db) / det, u = cross2(w, da) / det;
+  if (!(t > 0) || !(u > 0)) return single();
+  const Vec2 meet = prev + da * t;
+  const double reach = 0.5 * std::min((to - prev).norm(), (to - next).norm());
+  if ((meet - to).norm() > reach) return single();
+  return {meet, {a.guides[0], b.guides[0]}};
+}
+
 ExtrusionSpec insertProfilePoint(ExtrusionSpec s, int profile, int after, const Vec2& wz) {
   Profile& p = profileAt(s, profile);
   if (after < 0 || after >= static_cast<int>(p.points.size())) fail("point", "no profile point " + std::to_string(after));
@@ -201,6 +285,96 @@ ExtrusionSpec addProfile(ExtrusionSpec s, Profile p, int* index) {
 
 ExtrusionSpec addStep(ExtrusionSpec s, const PlanStep& step) {
   s.steps.push_back(step);
+  return s;
+}
+
+ForcedStepFrame forcedStepFrame(const ExtrusionSpec& s, int loop, int edge, const std::vector<Vec2>& world, double height) {
+  if (loop < 0 || loop >= static_cast<int>(s.loops.size())) fail("loop", "no loop number " + std::to_string(loop));
+  const auto& pts = s.loops[loop].points;
+  if (edge < 0 || edge >= static_cast<int>(pts.size()))
+    fail("edge", "loop " + std::to_string(loop) + " has no edge " + std::to_string(edge));
+  if (!std::isfinite(height) || height < 0 || height > 1e5) fail("height", "must be within [0, 1e5] m above the base");
+  if (world.size() < 3) fail("points", "a forced step needs a polygon of at least three corners");
+  double extent = 0;
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    if (!finite(world[i]) || std::abs(world[i][0]) > 1e7 || std::abs(world[i][1]) > 1e7)
+      fail("points[" + std::to_string(i) + "]", "coordinates must be finite and within 1e7 m");
+    extent = std::max(extent, (world[i] - world[0]).norm());
+  }
+  for (std::size_t i = 0; i < world.size(); ++i)
+    if ((world[(i + 1) % world.size()] - world[i]).norm() <= 1e-6 * std::max(extent, 1.0))
+      fail("points[" + std::to_string(i) + "]", "repeats the next corner (the polygon has a zero-length edge)");
+  if (std::abs(signedArea(world)) <= 1e-9 * extent * extent) fail("points", "the polygon encloses no area");
+  std::vector<Vec2> ccw = world;
+  if (signedArea(ccw) < 0) std::reverse(ccw.begin(), ccw.end());
+  if (auto bad = checkPlanTopology({ccw})) {
+    const auto colon = bad->find(": ");
+    fail("points", "the polygon is not simple: " + (colon == std::string::npos ? *bad : bad->substr(colon + 2)));
+  }
+  const Vec2 p = pts[edge], q = pts[(edge + 1) % pts.size()];
+  const double len = (q - p).norm();
+  if (!(len > 0)) fail("edge", "the edge has no length");
+  const Vec2 d = (q - p) / len, out(d[1], -d[0]);  // the plan's inside is left of every edge
+  // Where the polygon covers the edge: the crossings of its boundary with the edge, and the
+  // edge's ends where they lie inside it; the anchor is the middle of that stretch.
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  auto cover = [&](double t) { lo = std::min(lo, t), hi = std::max(hi, t); };
+  if (inside(p, ccw)) cover(0);
+  if (inside(q, ccw)) cover(len);
+  for (std::size_t i = 0; i < ccw.size(); ++i) {
+    const Vec2 a = ccw[i], b = ccw[(i + 1) % ccw.size()];
+    const double va = OpenMesh::dot(a - p, out), vb = OpenMesh::dot(b - p, out);
+    if ((va > 0) == (vb > 0) && va != 0 && vb != 0) continue;
+    const double ua = OpenMesh::dot(a - p, d), ub = OpenMesh::dot(b - p, d);
+    const double t = va == vb ? std::clamp(ua, 0.0, len) : ua + (ub - ua) * (va / (va - vb));
+    if (va == vb) {  // along the edge's line: the part of it on the edge
+      const double t0 = std::clamp(std::min(ua, ub), 0.0, len), t1 = std::clamp(std::max(ua, ub), 0.0, len);
+      if (std::max(ua, ub) >= 0 && std::min(ua, ub) <= len) cover(t0), cover(t1);
+      continue;
+    }
+    if (t >= 0 && t <= len) cover(t);
+  }
+  double at;
+  if (lo <= hi) {
+    at = (lo + hi) / 2;
+  } else {
+    // Apart from the edge: the closest pair of a corner and the other's boundary.
+    double best = std::numeric_limits<double>::infinity();
+    at = 0;
+    for (const Vec2& c : ccw) {
+      const double t = std::clamp(OpenMesh::dot(c - p, d), 0.0, len);
+      const double dd = (p + d * t - c).norm();
+      if (dd < best) best = dd, at = t;
+    }
+    for (double t : {0.0, len}) {
+      const Vec2 e = p + d * t;
+      for (std::size_t i = 0; i < ccw.size(); ++i) {
+        const Vec2 a = ccw[i], b = ccw[(i + 1) % ccw.size()], ab = b - a;
+        const double k = std::clamp(OpenMesh::dot(e - a, ab) / std::max(ab.sqrnorm(), 1e-300), 0.0, 1.0);
+        const double dd = (a + ab * k - e).norm();
+        if (dd < best) best = dd, at = t;
+      }
+    }
+  }
+  ForcedStepFrame f;
+  f.anchor = Anchor{loop, edge, false, at / len, height};
+  const Vec2 origin = p + d * at;
+  for (const Vec2& w : world) f.points.emplace_back(OpenMesh::dot(w - origin, d), OpenMesh::dot(w - origin, out));
+  return f;
+}
+
+ExtrusionSpec addForcedStep(ExtrusionSpec s, int loop, int edge, const std::vector<Vec2>& world, double height,
+                            int frontProfile, const std::string& name) {
+  profileAt(s, frontProfile);
+  ForcedStepFrame f = forcedStepFrame(s, loop, edge, world, height);
+  PlanStep st;
+  st.name = name;
+  st.shape = StepShape::Forced;
+  st.anchor = f.anchor;
+  st.points = std::move(f.points);
+  st.frontProfile = st.sideProfile = frontProfile;
+  if (s.steps.size() >= limits::kMaxSteps) fail("steps", "an extrusion holds at most " + std::to_string(limits::kMaxSteps) + " steps");
+  s.steps.push_back(std::move(st));
   return s;
 }
 
@@ -418,6 +592,23 @@ std::string applyEdit(Document& doc, const nlohmann::json& op) {
   const DocObject* found = doc.findByName(name);
   if (!found) fail("object", "no object called \"" + name + "\"");
   DocObject* o = doc.find(found->id);
+  if (kind == "set_background") {
+    PlanBackground b = o->background.value_or(PlanBackground());
+    b.image = text(op, "image");
+    if (op.contains("scale")) b.scale = number(op, "scale");
+    if (op.contains("origin")) b.origin = vec2(op["origin"], "origin");
+    if (op.contains("opacity")) b.opacity = number(op, "opacity");
+    if (auto bad = checkPlanBackground(b)) {
+      const auto colon = bad->find(": ");
+      fail(bad->substr(0, colon), bad->substr(colon + 2));
+    }
+    o->background = b;
+    return "Set background (" + name + ")";
+  }
+  if (kind == "clear_background") {
+    o->background.reset();
+    return "Remove background (" + name + ")";
+  }
   auto* sp = std::get_if<ExtrusionSpec>(&o->spec);
   if (!sp) fail("object", "\"" + name + "\" is not an extrusion");
   ExtrusionSpec& s = *sp;
@@ -487,6 +678,14 @@ std::string applyEdit(Document& doc, const nlohmann::json& op) {
     st.sideProfile = j.contains("side_profile") ? profileNamed(s, text(j, "side_profile")) : st.frontProfile;
     s = addStep(s, st);
     label = "Add step";
+  } else if (kind == "add_forced_step") {
+    std::vector<Vec2> pts;
+    if (!op.contains("points") || !op["points"].is_array()) fail("points", "expected a list of [x, y]");
+    for (const auto& q : op["points"]) pts.push_back(vec2(q, "points"));
+    const double height = op.contains("height") ? number(op, "height") : 0.0;
+    s = addForcedStep(s, integer(op, "loop"), integer(op, "edge"), pts, height, profileNamed(s, text(op, "profile")),
+                      op.contains("name") ? text(op, "name") : "forced step");
+    label = "Add forced step";
   } else if (kind == "move_anchor") {
     s = moveAnchor(s, integer(op, "step"), anchorFrom(op.contains("anchor") ? op["anchor"] : nlohmann::json()));
     label = "Move anchor";

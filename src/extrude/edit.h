@@ -40,8 +40,47 @@ ExtrusionSpec setSegmentTag(ExtrusionSpec s, int profile, int segment, const std
 // Adds a copy of a library profile under a free name; returns its index in `index`.
 ExtrusionSpec addProfile(ExtrusionSpec s, Profile p, int* index = nullptr);
 
+// Angle snapping of the plan pane (its Snap toggle): the edge being drawn or dragged turns to
+// the nearest allowed direction and the point moves onto it. Allowed directions are parallel
+// or perpendicular to a reference edge (a neighbour), preferred when one lies within half a
+// step of the pointer's direction, else multiples of `stepDeg` from the plan's x axis. The
+// snapped point is the pointer's orthogonal projection onto the snapped ray from `from`;
+// `lengthStep` > 0 also rounds the edge's length to a multiple of it (at least one).
+// A step outside (0, 90] degrees, or a pointer on `from`, leaves the point where it is.
+enum class SnapKind { Axis, Parallel, Perpendicular };
+struct SnapGuide {
+  Vec2 from, direction;  // the guide line (direction is a unit vector)
+  SnapKind kind = SnapKind::Axis;
+};
+struct AngleSnap {
+  Vec2 point;
+  std::vector<SnapGuide> guides;  // empty when nothing snapped
+};
+AngleSnap snapEdgeAngle(const Vec2& from, const Vec2& to, double stepDeg, const std::vector<Vec2>& references,
+                        double lengthStep = 0);
+// A corner between the fixed corners `prev` and `next` (dragged or inserted): both of its
+// edges snap, each with its own references (the edge before `prev`, the edge after `next`),
+// and the corner goes where the two snapped lines meet. When they are (nearly) parallel, meet
+// behind either corner, or farther from the pointer than half the shorter edge, only the edge
+// whose snap moves the pointer least is snapped.
+AngleSnap snapCornerAngles(const Vec2& prev, const Vec2& next, const Vec2& to, double stepDeg,
+                           const std::vector<Vec2>& prevReferences, const std::vector<Vec2>& nextReferences);
+
 // Anchored features.
 ExtrusionSpec addStep(ExtrusionSpec s, const PlanStep& step);
+// A forced step (Sec. 3.5) from a polygon drawn on the plan in world coordinates, for input
+// edge (loop, edge) at `height` above the base: its anchor is relative, at the point of the
+// edge nearest the polygon (the middle of the stretch it covers when it reaches the edge), and
+// its points are the polygon in that anchor's frame (u along the edge, v outward, as
+// PlanStep::points). Refuses fewer than three corners, non-finite or repeated corners, a
+// self-intersecting polygon and one enclosing no area, each with a reason.
+struct ForcedStepFrame {
+  Anchor anchor;
+  std::vector<Vec2> points;
+};
+ForcedStepFrame forcedStepFrame(const ExtrusionSpec& s, int loop, int edge, const std::vector<Vec2>& world, double height);
+ExtrusionSpec addForcedStep(ExtrusionSpec s, int loop, int edge, const std::vector<Vec2>& world, double height,
+                            int frontProfile, const std::string& name = "forced step");
 ExtrusionSpec moveAnchor(ExtrusionSpec s, int step, const Anchor& anchor);
 ExtrusionSpec deleteStep(ExtrusionSpec s, int step);
 // A row (or grid) of the same step (Sec. 3.6); RepeatKind::None removes it.
@@ -64,11 +103,14 @@ std::vector<Profile> profileLibrary();
 // move_corner, add_loop {points, profile}, set_edge_profile {edges: [[loop, edge]...], profile},
 // add_profile {from: library name, as: name}, insert_profile_point {profile, after, at},
 // move_profile_point {profile, point, to}, delete_profile_point, add_overhang {height, depth},
-// set_tag {profile, segment, tag}, add_step {step: as in the project file}, move_anchor,
+// set_tag {profile, segment, tag}, add_step {step: as in the project file}, add_forced_step
+// {loop, edge, points: [[x, y]...] on the plan, height, profile, name (optional)}, move_anchor,
 // delete_step, set_step_repeat {step, repeat}, add_feature {name, feature, anchor, size,
 // repeat} (size and repeat optional), move_feature {index, anchor}, set_feature_size {index,
 // size: [w, h, d]}, set_feature_repeat {index, repeat}, delete_feature {index}. A repeat is
 // {kind: "row" | "grid" | "none", along, spacing, height, row_spacing} as in the project file.
+// set_background {image, scale, origin, opacity} (the plan pane's tracing image; fields left
+// out keep their value) and clear_background change the object, not its spec.
 // Profiles are named; the label for undo is returned.
 std::string applyEdit(Document& doc, const nlohmann::json& op);
 

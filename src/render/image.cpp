@@ -39,8 +39,13 @@ void writePng(const Image& image, const std::string& path) {
   writeFileAtomic(path, bytes);
 }
 
-Image readPng(const std::string& path) {
+Image readPng(const std::string& path) { return readImage(path); }
+
+Image readImage(const std::string& path, int maxSide) {
   int w = 0, h = 0, n = 0;
+  if (stbi_info(path.c_str(), &w, &h, &n) && (w > maxSide || h > maxSide))
+    throw Error("cannot read image '" + path + "': " + std::to_string(w) + " x " + std::to_string(h) +
+                " pixels is larger than " + std::to_string(maxSide) + " on a side");
   unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
   if (!data) throw Error("cannot read image '" + path + "': " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown"));
   Image img(w, h);

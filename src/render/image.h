@@ -23,6 +23,10 @@ struct Image {
 void writePng(const Image& image, const std::string& path);
 // Throws corbel::Error if the file is missing or not a PNG.
 Image readPng(const std::string& path);
+// Any image stb reads (PNG, JPEG, BMP, TGA, GIF's first frame), as RGBA. Throws corbel::Error
+// naming the file and the reason when it is missing, unreadable, or wider or taller than
+// `maxSide` pixels (checked before decoding).
+Image readImage(const std::string& path, int maxSide = 1 << 15);
 
 struct ImageDiff {
   int maxChannelDelta = 0;       // over all pixels and channels

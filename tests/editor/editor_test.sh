@@ -4,7 +4,10 @@
 #  2. an edit made by a scripted action is autosaved to the recovery file while unsaved, and a
 #     new session recovers it;
 #  3. the Fig. 4 (j–n) house is built through the plan and profile panes' operations by an edit
-#     script, with a screenshot after each stage, and the result is a closed shell.
+#     script, with a screenshot after each stage, and the result is a closed shell;
+#  4. a plan traced over a background image, with a forced step, shows the image in the plan
+#     pane (the shot differs from the same plan without it) and stays one closed shell; a
+#     missing image is reported in the log and the editor carries on.
 set -euo pipefail
 editor=$1 cli=$2 check=$3 example=$4 work=$5 script=${6:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -41,4 +44,23 @@ if [[ -n $script ]]; then
   echo "scripted house: $summary"
   [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the scripted house should be one closed shell"; exit 1; }
 fi
+echo "== tracing over a background image, and a missing one"
+image=$(cd "$(dirname "$example")/../../docs/images" && pwd)/house.png
+trace() {  # $1: the image (or nothing), $2: the shots folder
+  {
+    echo '{"stage": "traced", "op": "new_extrusion", "name": "T", "profile": "hip", "points": [[0, 0], [12, 0], [12, 8], [0, 8]]}'
+    [[ -n $1 ]] && echo '{"stage": "traced", "op": "set_background", "object": "T", "image": "'"$1"'", "scale": 0.01, "origin": [-2, -2], "opacity": 0.8}'
+    echo '{"stage": "traced", "op": "add_forced_step", "object": "T", "loop": 0, "edge": 0, "points": [[7, 1], [10, 1], [10, -2], [7, -2]], "height": 0, "profile": "hip"}'
+  } > "$work/trace.jsonl"
+  rm -rf "$work/state"
+  run --recover no --script "$work/trace.jsonl" --script-shots "$2" --autosave-seconds 0 --quit-after-frames 30 > "$work/trace.log" 2>&1
+}
+trace "$image" "$work/traced"
+summary=$("$cli" check "$work/state/recovery.corbel" | tail -1)
+[[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the traced plan with its forced step should be one closed shell: $summary"; exit 1; }
+grep -q '"plan_background"' "$work/state/recovery.corbel" || { echo "the background was not saved with the object"; exit 1; }
+trace "" "$work/untraced"
+"$check" "$work/traced/01-traced.png" "$work/untraced/01-traced.png" 0.02
+trace "$work/no-such-image.png" "$work/missing"
+test -f "$work/missing/01-traced.png" || { echo "a missing background image stopped the editor"; exit 1; }
 echo "editor test passed"

@@ -256,5 +256,146 @@ TEST(Edit, Figure4HouseScriptBuildsStageByStage) {
   }
 }
 
+
+// Forced steps drawn on the plan (the plan pane's Draw forced step, Sec. 3.5).
+namespace forced {
+
+// A 10 × 6 box turned 30° about the origin: edge 0 runs along d = (cos 30°, sin 30°), the
+// outward side of it is out = (sin 30°, −cos 30°).
+const double c30 = std::sqrt(3.0) / 2, s30 = 0.5;
+Vec2 turned(double x, double y) { return Vec2(c30 * x - s30 * y, s30 * x + c30 * y); }
+
+// Walls 3 m high closed flat: the inward ledge at 3 m is wider than the plan, so the top is one
+// flat face over the whole active plan and the solid is the plan's prism.
+Profile flatTopBox() {
+  Profile p;
+  p.name = "box";
+  p.points = {Vec2(0, 0), Vec2(0, 3), Vec2(1000, 3), Vec2(1001, 4)};
+  return p;
+}
+
+TEST(Edit, ForcedStepDrawnOnATurnedEdgeIsStoredInTheAnchorsFrame) {
+  std::vector<Vec2> box;
+  for (const Vec2& p : rectangle(10, 6)) box.push_back(turned(p[0], p[1]));
+  const ExtrusionSpec s = uniformSpec({box}, flatTopBox());
+  // A 2 × 2 square drawn across edge 0, from 3 to 5 m along it, 1 m in and 1 m out; in world
+  // coordinates (x, y) = u d + v out, e.g. (u, v) = (3, 1): (3 c30 + s30, 3 s30 − c30).
+  const std::vector<Vec2> world = {Vec2(3 * c30 + s30, 3 * s30 - c30), Vec2(5 * c30 + s30, 5 * s30 - c30),
+                                   Vec2(5 * c30 - s30, 5 * s30 + c30), Vec2(3 * c30 - s30, 3 * s30 + c30)};
+  const ExtrusionSpec e = ed::addForcedStep(s, 0, 0, world, 0.0, 0, "wing");
+  ASSERT_EQ(e.steps.size(), 1u);
+  const PlanStep& st = e.steps[0];
+  EXPECT_EQ(st.shape, StepShape::Forced);
+  EXPECT_EQ(st.name, "wing");
+  EXPECT_FALSE(st.anchor.absolute);
+  EXPECT_NEAR(st.anchor.along, 0.4, 1e-12) << "the middle of the 3 .. 5 m it covers, of 10 m";
+  EXPECT_EQ(st.anchor.height, 0.0);
+  // Anchor at 4 m: (u, v) relative to it.
+  const std::vector<Vec2> uv = {Vec2(-1, 1), Vec2(1, 1), Vec2(1, -1), Vec2(-1, -1)};
+  ASSERT_EQ(st.points.size(), uv.size());
+  for (std::size_t i = 0; i < uv.size(); ++i) EXPECT_NEAR((st.points[i] - uv[i]).norm(), 0, 1e-12) << i;
+
+  // The shell: closed, and its volume the union's area × 3 m. The union's outline, walked
+  // counter-clockwise in the box's own frame, by the shoelace formula: 60 + 2 × 1.
+  const ExtrusionResult r = extrude(e);
+  for (const auto& w : r.shell.warnings) ADD_FAILURE() << w;
+  Scene scene;
+  scene.replaceObject(1, Kind::Shell, "x", toMeshData(r.shell, e, "plaster"));
+  const ValidityReport v = scene.validate(1);
+  EXPECT_TRUE(v.closedManifold());
+  for (const auto& p : v.problems()) ADD_FAILURE() << p;
+  const std::vector<Vec2> outline = {Vec2(0, 0), Vec2(3, 0), Vec2(3, -1), Vec2(5, -1), Vec2(5, 0),
+                                     Vec2(10, 0), Vec2(10, 6), Vec2(0, 6)};
+  const double area = shoelace(outline);
+  EXPECT_NEAR(area, 62, 1e-12);
+  EXPECT_NEAR(v.volume, area * 3, 1e-9 * area * 3);
+  EXPECT_NEAR(measure(r.shell).baseArea, area, 1e-9);
+}
+
+TEST(Edit, ForcedStepApartFromItsEdgeAnchorsAtTheNearestPoint) {
+  const ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, flatTopBox());
+  // A triangle below edge 0 (which runs along +x, outward is −y), its tip 1 m from the edge at
+  // x = 3: the anchor is at 3 m; out is −y, so (2, −3) is u = −1, v = 3.
+  const ExtrusionSpec e = ed::addForcedStep(s, 0, 0, {Vec2(2, -3), Vec2(4, -3), Vec2(3, -1)}, 2.5, 0);
+  const PlanStep& st = e.steps.at(0);
+  EXPECT_NEAR(st.anchor.along, 0.3, 1e-12);
+  EXPECT_EQ(st.anchor.height, 2.5);
+  const std::vector<Vec2> uv = {Vec2(-1, 3), Vec2(1, 3), Vec2(0, 1)};
+  for (std::size_t i = 0; i < uv.size(); ++i) EXPECT_NEAR((st.points.at(i) - uv[i]).norm(), 0, 1e-12) << i;
+  // On edge 1 (x = 10, running +y, outward +x) a square beyond its end at y = 6 anchors at the end.
+  const ExtrusionSpec f = ed::addForcedStep(s, 0, 1, rectangle(1, 1, 11, 7), 0, 0);
+  EXPECT_NEAR(f.steps.at(0).anchor.along, 1.0, 1e-12);
+  EXPECT_NEAR((f.steps[0].points[0] - Vec2(1, 1)).norm(), 0, 1e-12) << "(11, 7) is 1 m on and 1 m out from (10, 6)";
+}
+
+TEST(Edit, ForcedStepRefusesBadPolygonsWithAReason) {
+  const ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, flatTopBox());
+  auto reason = [&](const std::vector<Vec2>& pts, int loop = 0, int edge = 0, double h = 0) -> std::string {
+    try {
+      ed::addForcedStep(s, loop, edge, pts, h, 0);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(reason({Vec2(0, 0), Vec2(1, -1)}).find("at least three"), std::string::npos);
+  EXPECT_NE(reason({Vec2(0, -1), Vec2(2, -1), Vec2(4, -1)}).find("no area"), std::string::npos);
+  EXPECT_NE(reason({Vec2(0, -1), Vec2(2, -1), Vec2(2, -1), Vec2(2, -3)}).find("zero-length"), std::string::npos);
+  EXPECT_NE(reason({Vec2(0, -1), Vec2(3, -3), Vec2(3, -1), Vec2(0, -2)}).find("not simple"), std::string::npos)
+      << "a bow tie";
+  EXPECT_NE(reason({Vec2(0, -1), Vec2(std::nan(""), -1), Vec2(0, -3)}).find("finite"), std::string::npos);
+  EXPECT_NE(reason(rectangle(1, 1, 2, -2), 0, 7).find("no edge"), std::string::npos);
+  EXPECT_NE(reason(rectangle(1, 1, 2, -2), 3).find("no loop"), std::string::npos);
+  EXPECT_NE(reason(rectangle(1, 1, 2, -2), 0, 0, -1).find("height"), std::string::npos);
+  EXPECT_THROW(ed::addForcedStep(s, 0, 0, rectangle(1, 1, 2, -2), 0, 5), InputError) << "no profile 5";
+  EXPECT_EQ(reason(rectangle(1, 1, 2, -2)), "");
+}
+
+TEST(Edit, ForcedStepScriptCommand) {
+  Document doc;
+  ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "new_extrusion", "name": "H", "profile": "hip", "points": [[0, 0], [10, 0], [10, 6], [0, 6]]})"));
+  const std::string label = ed::applyEdit(doc, nlohmann::json::parse(
+      R"({"op": "add_forced_step", "object": "H", "loop": 0, "edge": 0, "points": [[4, 1], [6, 1], [6, -2], [4, -2]], "height": 0, "profile": "hip", "name": "porch"})"));
+  EXPECT_EQ(label, "Add forced step (H)");
+  const auto& spec = std::get<ExtrusionSpec>(doc.findByName("H")->spec);
+  ASSERT_EQ(spec.steps.size(), 1u);
+  EXPECT_EQ(spec.steps[0].name, "porch");
+  EXPECT_NEAR(spec.steps[0].anchor.along, 0.5, 1e-12);
+  EXPECT_NEAR((spec.steps[0].points[2] - Vec2(1, 2)).norm(), 0, 1e-12);
+  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(
+                   R"({"op": "add_forced_step", "object": "H", "loop": 0, "edge": 0, "points": [[4, 1], [6, 1]], "profile": "hip"})")),
+               InputError);
+  const ExtrusionResult r = extrude(spec);
+  EXPECT_TRUE(r.shell.warnings.empty());
+}
+
+TEST(Edit, BackgroundScriptCommandsChangeTheObjectNotItsSpec) {
+  Document doc;
+  ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "new_extrusion", "name": "H", "profile": "hip", "points": [[0, 0], [10, 0], [10, 6], [0, 6]]})"));
+  const ExtrusionSpec before = std::get<ExtrusionSpec>(doc.findByName("H")->spec);
+  EXPECT_EQ(ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "/scans/h.png", "scale": 0.02, "origin": [-1, 2]})")),
+            "Set background (H)");
+  const DocObject* o = doc.findByName("H");
+  ASSERT_TRUE(o->background);
+  EXPECT_EQ(*o->background, (PlanBackground{"/scans/h.png", 0.02, Vec2(-1, 2), 0.5}));
+  EXPECT_EQ(std::get<ExtrusionSpec>(o->spec), before);
+  // Fields left out keep their value.
+  ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "/scans/h2.png", "opacity": 0.8})"));
+  EXPECT_EQ(*doc.findByName("H")->background, (PlanBackground{"/scans/h2.png", 0.02, Vec2(-1, 2), 0.8}));
+  try {
+    ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "a.png", "opacity": 2})"));
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where, "opacity");
+  }
+  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "a.png", "scale": 0})")), InputError);
+  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": ""})")), InputError);
+  EXPECT_EQ(doc.findByName("H")->background->image, "/scans/h2.png") << "a refused edit changes nothing";
+  ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "clear_background", "object": "H"})"));
+  EXPECT_FALSE(doc.findByName("H")->background);
+}
+
+}  // namespace forced
+
 }  // namespace
 }  // namespace corbel::extrude::test

@@ -621,3 +621,83 @@ TEST(ProjectIoErrors, ExtrusionFaultsNameTheirPath) {
                         "objects[0].extrusion.anchors[0].fraction", "1.5");
   EXPECT_FAULT(withExtrusion(profiles), "objects[0].extrusion.plan", "missing");
 }
+
+// ---------------------------------------------------------------------------------------------
+// Plan backgrounds (an image under the plan pane for tracing).
+
+namespace background {
+
+Document withBackground(const std::string& image) {
+  Document d;
+  d.name = "traced";
+  DocObject o;
+  o.id = 4;
+  o.name = "House";
+  BoxSpec b;
+  o.spec = b;
+  o.background = corbel::PlanBackground{image, 0.025, corbel::Vec2(-3.5, 12.25), 0.4};
+  d.objects.push_back(o);
+  return d;
+}
+
+TEST(ProjectIo, PlanBackgroundIsSavedRelativeToTheProjectFile) {
+  TempDir dir;
+  const std::string folder = std::filesystem::path(dir.file("x")).parent_path().string();
+  const std::string image = folder + "/scans/plan.png";
+  const Document doc = withBackground(image);
+  corbel::saveProject(doc, dir.file("a.corbel"));
+  const std::string a = readText(dir.file("a.corbel"));
+  EXPECT_NE(a.find(R"("image": "scans/plan.png")"), std::string::npos) << a;
+  EXPECT_NE(a.find(R"("scale": 0.025)"), std::string::npos);
+  // Loading resolves it against the file's folder: the same document comes back.
+  const corbel::LoadedProject loaded = corbel::loadProject(dir.file("a.corbel"));
+  EXPECT_TRUE(loaded.warnings.empty());
+  EXPECT_EQ(loaded.document, doc);
+  corbel::saveProject(loaded.document, dir.file("b.corbel"));
+  EXPECT_EQ(readText(dir.file("b.corbel")), a) << "save → load → save is byte-identical";
+  // From a project one folder down the path climbs out; it still resolves to the image.
+  std::filesystem::create_directories(folder + "/sub");
+  corbel::saveProject(doc, folder + "/sub/c.corbel");
+  EXPECT_NE(readText(folder + "/sub/c.corbel").find(R"("image": "../scans/plan.png")"), std::string::npos);
+  EXPECT_EQ(corbel::loadProject(folder + "/sub/c.corbel").document, doc);
+  // Without a folder, paths are written and read as they are.
+  EXPECT_EQ(corbel::parseProject(corbel::serializeProject(doc)).document, doc);
+  const Document rel = withBackground("plan.png");
+  EXPECT_EQ(corbel::parseProject(corbel::serializeProject(rel)).document, rel);
+  EXPECT_EQ(corbel::parseProject(corbel::serializeProject(rel), "/work/p").document.objects[0].background->image,
+            "/work/p/plan.png");
+}
+
+TEST(ProjectIo, PlanBackgroundOptionalFieldsTakeDefaults) {
+  const Document d = corbel::parseProject(
+      R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A", "box": {"size": [1, 1, 1]}, "plan_background": {"image": "/a.png"}}]})")
+                         .document;
+  ASSERT_TRUE(d.objects.at(0).background);
+  EXPECT_EQ(*d.objects[0].background, (corbel::PlanBackground{"/a.png", 0.05, corbel::Vec2(0, 0), 0.5}));
+  // An object without one has none, and writes none.
+  const Document plain = corbel::parseProject(withBox(R"("size": [1, 1, 1])")).document;
+  EXPECT_FALSE(plain.objects.at(0).background);
+  EXPECT_EQ(corbel::serializeProject(plain).find("plan_background"), std::string::npos);
+}
+
+TEST(ProjectIoErrors, PlanBackgroundFaultsNameTheirPath) {
+  auto with = [](const std::string& bg) { return withBox(R"("size": [1, 1, 1])", R"("plan_background": )" + bg + ", "); };
+  EXPECT_FAULT(with("[]"), "objects[0].plan_background", "expected an object, found an array");
+  EXPECT_FAULT(with("{}"), "objects[0].plan_background.image", "missing");
+  EXPECT_FAULT(with(R"({"image": 3})"), "objects[0].plan_background.image", "expected a string, found a number");
+  EXPECT_FAULT(with(R"({"image": ""})"), "objects[0].plan_background.image", "the image's path must not be empty");
+  EXPECT_FAULT(with(R"({"image": "a.png", "scale": "0.1"})"), "objects[0].plan_background.scale",
+               "expected a number, found a string");
+  EXPECT_FAULT_CONTAINS(with(R"({"image": "a.png", "scale": 0})"), "objects[0].plan_background.scale", "is outside");
+  EXPECT_FAULT(with(R"({"image": "a.png", "origin": [1]})"), "objects[0].plan_background.origin", "expected [x, y] numbers");
+  EXPECT_FAULT(with(R"({"image": "a.png", "origin": [1e8, 0]})"), "objects[0].plan_background.origin",
+               "must lie within 1e7 m of the origin");
+  EXPECT_FAULT(with(R"({"image": "a.png", "opacity": true})"), "objects[0].plan_background.opacity",
+               "expected a number, found a boolean");
+  EXPECT_FAULT_CONTAINS(with(R"({"image": "a.png", "opacity": 1.5})"), "objects[0].plan_background.opacity", "is outside [0, 1]");
+  const corbel::LoadedProject w = corbel::parseProject(with(R"({"image": "a.png", "rotation": 5})"));
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_EQ(w.warnings[0], "objects[0].plan_background.rotation: unknown key ignored");
+}
+
+}  // namespace background

@@ -269,4 +269,28 @@ TEST(SceneSync, KernelFailureKeepsTheLastGoodGeometryAndIsReported) {
   EXPECT_EQ(sync.status().at(id).error, "");
 }
 
+TEST(SceneSync, APlanBackgroundNeverRebuildsItsObject) {
+  // The background is the plan pane's tracing aid: adding, moving or removing it leaves the
+  // Scene untouched (same revision, same points).
+  Document doc;
+  const ObjectId id = doc.add("Hall", box(0, 0, 18, 10, 7));
+  Scene scene;
+  SceneSync sync;
+  sync.update(doc, scene);
+  const auto revision = scene.revision();
+  const auto points = pointsOf(scene, id);
+  doc.find(id)->background = corbel::PlanBackground{"/plans/hall.png", 0.02, corbel::Vec2(-5, -3), 0.6};
+  EXPECT_EQ(sync.update(doc, scene), 0u);
+  doc.find(id)->background->origin = corbel::Vec2(1, 1);
+  doc.find(id)->background->image = "/missing/elsewhere.jpg";
+  EXPECT_EQ(sync.update(doc, scene), 0u);
+  doc.find(id)->background.reset();
+  EXPECT_EQ(sync.update(doc, scene), 0u);
+  EXPECT_EQ(scene.revision(), revision);
+  EXPECT_EQ(pointsOf(scene, id), points);
+  // A spec change still rebuilds (so the check above could fail).
+  std::get<BoxSpec>(doc.find(id)->spec).size[2] = 8;
+  EXPECT_EQ(sync.update(doc, scene), 1u);
+}
+
 }  // namespace
