@@ -20,6 +20,40 @@ namespace corbel::editor {
 
 namespace ed = extrude::edit;
 
+// The repeat fields of a feature or a step (Sec. 3.6): none, a row or a grid up to a last
+// place; true when the user changed them. `id` keeps two sets of fields apart.
+static bool repeatFields(Repeat& rep, const Anchor& anchor, const std::string& id) {
+  int kind = static_cast<int>(rep.kind);
+  ImGui::SetNextItemWidth(90);
+  bool changed = ImGui::Combo(("Repeat" + id).c_str(), &kind, "none\0row\0grid\0");
+  if (changed && rep.kind == RepeatKind::None) {
+    // A new repeat runs to the far end of the edge (relative) or 4 m on (absolute).
+    rep.along = anchor.absolute ? anchor.along + 4 : (anchor.along < 0.5 ? 0.9 : 0.1);
+    rep.height = anchor.height + 3;
+  }
+  rep.kind = static_cast<RepeatKind>(kind);
+  if (rep.kind == RepeatKind::None) return changed;
+  float v[2] = {float(rep.along), float(rep.spacing)};
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(140);
+  if (ImGui::InputFloat2(((anchor.absolute ? "last at, spacing" : "last fraction, spacing") + id).c_str(), v, "%.2f",
+                         ImGuiInputTextFlags_EnterReturnsTrue)) {
+    rep.along = v[0];
+    rep.spacing = v[1];
+    changed = true;
+  }
+  if (rep.kind == RepeatKind::Grid) {
+    float g[2] = {float(rep.height), float(rep.rowSpacing)};
+    ImGui::SetNextItemWidth(140);
+    if (ImGui::InputFloat2(("last row height, row spacing" + id).c_str(), g, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+      rep.height = g[0];
+      rep.rowSpacing = g[1];
+      changed = true;
+    }
+  }
+  return changed;
+}
+
 namespace {
 
 // Edge colours by profile index (the paper's colour coding of Fig. 4).
@@ -165,35 +199,7 @@ void ExtrusionPanes::featureFields(const PaneHost& host, const ExtrusionSpec& sp
     }
   }
   Repeat rep = m.repeat;
-  int kind = static_cast<int>(rep.kind);
-  ImGui::SetNextItemWidth(90);
-  bool changed = ImGui::Combo("Repeat", &kind, "none\0row\0grid\0");
-  if (changed && rep.kind == RepeatKind::None) {
-    // A new repeat runs to the far end of the edge (relative) or 4 m on (absolute).
-    rep.along = m.anchor.absolute ? m.anchor.along + 4 : (m.anchor.along < 0.5 ? 0.9 : 0.1);
-    rep.height = m.anchor.height + 3;
-  }
-  rep.kind = static_cast<RepeatKind>(kind);
-  if (rep.kind != RepeatKind::None) {
-    float v[2] = {float(rep.along), float(rep.spacing)};
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(140);
-    if (ImGui::InputFloat2(m.anchor.absolute ? "last at, spacing" : "last fraction, spacing", v, "%.2f",
-                           ImGuiInputTextFlags_EnterReturnsTrue)) {
-      rep.along = v[0];
-      rep.spacing = v[1];
-      changed = true;
-    }
-    if (rep.kind == RepeatKind::Grid) {
-      float g[2] = {float(rep.height), float(rep.rowSpacing)};
-      ImGui::SetNextItemWidth(140);
-      if (ImGui::InputFloat2("last row height, row spacing", g, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
-        rep.height = g[0];
-        rep.rowSpacing = g[1];
-        changed = true;
-      }
-    }
-  }
+  const bool changed = repeatFields(rep, m.anchor, "");
   if (changed) apply(host, [&](const ExtrusionSpec& s) { return ed::setFeatureRepeat(s, k, rep); }, "Repeat " + m.name);
   ImGui::SameLine();
   if (ImGui::Button("Delete feature")) {
@@ -349,34 +355,8 @@ void ExtrusionPanes::stepFields(const PaneHost& host, const ExtrusionSpec& spec)
     return;
   }
   Repeat rep = st.repeat;
-  int kind = static_cast<int>(rep.kind);
-  ImGui::SetNextItemWidth(90);
-  bool changed = ImGui::Combo("Repeat##step", &kind, "none\0row\0grid\0");
-  if (changed && rep.kind == RepeatKind::None) {
-    // A new row runs to the far end of the edge (relative) or 4 m on (absolute).
-    rep.along = st.anchor.absolute ? st.anchor.along + 4 : (st.anchor.along < 0.5 ? 0.9 : 0.1);
-    rep.height = st.anchor.height + 3;
-  }
-  rep.kind = static_cast<RepeatKind>(kind);
+  const bool changed = repeatFields(rep, st.anchor, "##step");
   if (rep.kind != RepeatKind::None) {
-    float v[2] = {float(rep.along), float(rep.spacing)};
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(140);
-    if (ImGui::InputFloat2(st.anchor.absolute ? "last at, spacing##step" : "last fraction, spacing##step", v, "%.2f",
-                           ImGuiInputTextFlags_EnterReturnsTrue)) {
-      rep.along = v[0];
-      rep.spacing = v[1];
-      changed = true;
-    }
-    if (rep.kind == RepeatKind::Grid) {
-      float g[2] = {float(rep.height), float(rep.rowSpacing)};
-      ImGui::SetNextItemWidth(140);
-      if (ImGui::InputFloat2("last row height, row spacing##step", g, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
-        rep.height = g[0];
-        rep.rowSpacing = g[1];
-        changed = true;
-      }
-    }
     const RepeatGrid grid = repeatGrid(spec, st.anchor, st.repeat);
     if (st.repeat.kind != RepeatKind::None) ImGui::TextDisabled("%zu x %zu steps", grid.columns, grid.rows);
   }
