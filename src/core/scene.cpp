@@ -309,7 +309,10 @@ ValidityReport Scene::validate(ObjectId id) const {
   std::vector<char> vSeen(mesh_.n_vertices(), 0), eSeen(mesh_.n_edges(), 0);
   const BBox box = bounds(id);
   const double scale = std::max(box.diagonal(), 1e-300);
-  const double areaEps = 1e-12 * scale * scale;
+  // Zero area at the kernels' resolution: the extrusion kernel keeps faces down to its
+  // clustering distance squared (1e-16 s²) and its natural steps leave soffits about 1e-10 s²;
+  // below 1e-14 s² a face is taken to have collapsed.
+  const double areaEps = 1e-14 * scale * scale;
 
   // Connected components by a flood fill over shared edges.
   std::vector<int> faceComponent(mesh_.n_faces(), -1);

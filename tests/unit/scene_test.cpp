@@ -215,6 +215,23 @@ TEST(Scene, ZeroAreaFaceIsDegenerate) {
   EXPECT_FALSE(r.consistent());
 }
 
+// A face much smaller than its object is still a face: the extrusion kernel's natural steps
+// leave soffits 1e-5 of the plan's size across. Only a collapse below 1e-14 s² (s the object's
+// diagonal) counts as zero area.
+TEST(Scene, TinyButRealFacesAreNotDegenerate) {
+  for (const double leg : {1e-5, 1e-8}) {
+    MeshData m = handBox(Vec3(0, 0, 0), Vec3(1, 1, 1));
+    const int a = m.addPoint(Vec3(0.5, 0.5, 2)), b = m.addPoint(Vec3(0.5 + leg, 0.5, 2)), c = m.addPoint(Vec3(0.5, 0.5 + leg, 2));
+    m.addFace({a, b, c});
+    Scene s;
+    s.replaceObject(1, Kind::Mass, "speck", m);
+    const ValidityReport r = s.validate(1);
+    const double scale = std::sqrt(1.0 + 1.0 + 4.0);  // the bounding box (0,0,0)–(1,1,2)
+    SCOPED_TRACE(leg);
+    EXPECT_EQ(r.degenerate_faces, 0.5 * leg * leg > 1e-14 * scale * scale ? 0u : 1u);
+  }
+}
+
 TEST(Scene, CollapsedBoxFacesAreDegenerate) {
   // A box of zero height: top and bottom coincide, every wall has zero area.
   Scene s;
