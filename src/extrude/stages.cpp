@@ -1,6 +1,7 @@
 // Staged extrusion. The sweep (sweep.cpp) runs between the heights where the active plan
 // changes discretely: horizontal profile segments (near-horizontal edge direction events,
-// Sec. 4.5.2), plan steps (natural steps, Sec. 4.7) and mesh anchors (Sec. 3.4). Each change
+// Sec. 4.5.2), plan steps (natural steps, Sec. 4.7) and offset events (Sec. 4.6); mesh
+// anchors (Sec. 3.4) read the plan at their height without stopping the sweep. Each change
 // is a recursive extrusion of the active plan for one unit of height in which only the
 // changing edges move (Fig. 16, 20): its plan at the top replaces the active plan, and its
 // faces, flattened onto the sweep plane, are the horizontal faces at that height — ledges
@@ -265,7 +266,30 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
     }
     in.loops.push_back(std::move(l));
   }
+  // Mesh anchors inside the stage read the plan at their height without a seam there (a seam
+  // just below an event would leave a sliver face).
+  for (const MeshAnchor& m : spec_.anchors) {
+    const double ha = spec_.baseZ + m.anchor.height;
+    if (ha > z + tol_.height && ha < next - tol_.height &&
+        std::none_of(in.probes.begin(), in.probes.end(), [&](double p) { return std::abs(p - ha) <= tol_.height; }))
+      in.probes.push_back(ha);
+  }
+  std::sort(in.probes.begin(), in.probes.end());
   SweepOutput out = runSweep(in, "");
+  for (std::size_t i = 0; i < out.probed.size(); ++i) {
+    Plan probe;
+    for (const auto& loop : out.probed[i]) {
+      std::vector<Active> l;
+      for (const PlanCorner& c : loop) {
+        Active a = *flat[c.input];
+        a.start = c.p;
+        a.vertex = -1;
+        l.push_back(a);
+      }
+      probe.push_back(std::move(l));
+    }
+    frame(probe, in.probes[i]);
+  }
   std::vector<int> map(out.points.size());
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     const Vec3& p = out.points[i];
@@ -901,10 +925,6 @@ ExtrusionResult Stager::run(double scale) {
     for (std::size_t si = 0; si < spec_.steps.size(); ++si) {
       const double hs = spec_.baseZ + spec_.steps[si].anchor.height;
       if (!stepDone_[si] && hs > z + tol_.height) next = std::min(next, hs);
-    }
-    for (const MeshAnchor& m : spec_.anchors) {
-      const double ha = spec_.baseZ + m.anchor.height;
-      if (ha > z + tol_.height) next = std::min(next, ha);
     }
     for (const OffsetEvent& o : spec_.offsets) {
       const double ho = spec_.baseZ + o.height;

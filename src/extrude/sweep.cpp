@@ -145,6 +145,8 @@ class Sweeper {
   // of events, or, at a stop height, by handing the loops back as the active plan.
   void capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan = nullptr);
   void buildFaces(SweepOutput& out);
+  // The active plan at height z (between events), for SweepInput::probes.
+  std::vector<std::vector<PlanCorner>> snapshot(double z) const;
 
   const SweepInput& in_;
   const Tolerances& tol_;
@@ -935,9 +937,18 @@ SweepOutput Sweeper::run() {
   const std::size_t cap = 200000 + 400 * edges_.size() * edges_.size();
   std::size_t popped = 0;
   Candidate cand{};
+  std::vector<std::vector<std::vector<PlanCorner>>> probed;
   while (true) {
     const bool any = nextCandidate(cand);
     const double nextEventZ = any ? cand.z : std::numeric_limits<double>::infinity();
+    {
+      // Probes below everything still to come see the plan as it is between events.
+      double upcoming = nextEventZ;
+      if (nextDirection < directionHeights_.size()) upcoming = std::min(upcoming, directionHeights_[nextDirection]);
+      while (probed.size() < in_.probes.size() && in_.probes[probed.size()] + tol_.height < upcoming &&
+             in_.probes[probed.size()] < in_.stopZ)
+        probed.push_back(snapshot(in_.probes[probed.size()]));
+    }
     if (nextDirection < directionHeights_.size() && directionHeights_[nextDirection] <= nextEventZ + tol_.height &&
         directionHeights_[nextDirection] < in_.stopZ - tol_.height) {
       z_ = std::max(z_, directionHeights_[nextDirection]);
@@ -985,6 +996,9 @@ SweepOutput Sweeper::run() {
     warnings_.push_back(m.str());
   }
   SweepOutput out;
+  // Probes above the last event: the plan is empty if the roof closed, else as it stands.
+  while (probed.size() < in_.probes.size()) probed.push_back(snapshot(in_.probes[probed.size()]));
+  out.probed = std::move(probed);
   if (std::isfinite(in_.stopZ)) capRemaining(in_.stopZ, &out.plan);
   else capRemaining(z_);
   buildFaces(out);
@@ -992,6 +1006,21 @@ SweepOutput Sweeper::run() {
   out.events = events_;
   out.diverged = diverged_;
   return out;
+}
+
+std::vector<std::vector<PlanCorner>> Sweeper::snapshot(double z) const {
+  std::vector<std::vector<PlanCorner>> plan;
+  std::vector<char> seen(corners_.size(), 0);
+  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
+    if (!corners_[ci].alive || seen[ci]) continue;
+    std::vector<PlanCorner> loop;
+    for (int cur = ci; cur >= 0 && !seen[cur]; cur = edges_[corners_[cur].next].end) {
+      seen[cur] = 1;
+      loop.push_back({cornerAt(cur, z), -1, edges_[corners_[cur].next].src});
+    }
+    if (loop.size() >= 3) plan.push_back(std::move(loop));
+  }
+  return plan;
 }
 
 // ------------------------------------------------------------------ faces

@@ -42,6 +42,9 @@ struct SweepInput {
   double stopZ = std::numeric_limits<double>::infinity();
   // Keep the faces as untraced boundary pieces (SweepOutput::raw) instead of tracing them.
   bool keepRaw = false;
+  // Heights (ascending, above baseZ) at which to read the active plan without stopping the
+  // sweep or cutting its faces (SweepOutput::probed): where mesh anchors find their frame.
+  std::vector<double> probes;
 };
 
 // A face of the output shell: a planar polygon with holes, in one direction plane.
@@ -83,6 +86,9 @@ struct SweepOutput {
   bool diverged = false;   // events ran away far above the plan; the rest was capped
   std::vector<RawFace> raw;                     // with SweepInput::keepRaw
   std::vector<std::vector<PlanCorner>> plan;    // with a finite SweepInput::stopZ
+  // One active plan per SweepInput::probes entry (no loops once the roof has closed below
+  // it); corners carry no vertex (-1).
+  std::vector<std::vector<std::vector<PlanCorner>>> probed;
 };
 
 // Traces raw faces into planar polygons with holes (outer loops counter-clockwise seen from
