@@ -7,11 +7,11 @@
 namespace corbel::statics {
 
 double bisectThreshold(const std::function<bool(double)>& feasible, double feasibleEnd, double infeasibleEnd,
-                       double tolerance) {
+                       double tolerance, const std::string& parameter) {
   if (!(tolerance > 0) || !std::isfinite(feasibleEnd) || !std::isfinite(infeasibleEnd))
     throw Error("bisection: the ends and the tolerance must be finite, the tolerance positive");
-  if (!feasible(feasibleEnd)) throw Error("bisection: the structure does not stand at " + std::to_string(feasibleEnd));
-  if (feasible(infeasibleEnd)) throw Error("bisection: the structure still stands at " + std::to_string(infeasibleEnd));
+  if (!feasible(feasibleEnd)) throw Error("the structure does not stand at " + parameter + " = " + std::to_string(feasibleEnd));
+  if (feasible(infeasibleEnd)) throw Error("the structure still stands at " + parameter + " = " + std::to_string(infeasibleEnd));
   double ok = feasibleEnd, bad = infeasibleEnd;
   while (std::abs(ok - bad) > tolerance) {
     const double mid = 0.5 * (ok + bad);
@@ -27,7 +27,7 @@ double minimumArchThickness(ArchSpec spec, const AnalysisOptions& options, doubl
         s.thickness = t;
         return checkFeasibility(semicircularArch(s), options).feasible;
       },
-      0.5 * spec.radius, 0.01 * spec.radius, tolerance);
+      0.5 * spec.radius, 0.01 * spec.radius, tolerance, "thickness");
 }
 
 double criticalArchTilt(ArchSpec spec, const AnalysisOptions& options, double toleranceDeg) {
@@ -37,7 +37,7 @@ double criticalArchTilt(ArchSpec spec, const AnalysisOptions& options, double to
         s.tiltDeg = deg;
         return checkFeasibility(semicircularArch(s), options).feasible;
       },
-      0.0, 60.0, toleranceDeg);
+      0.0, 60.0, toleranceDeg, "tilt (degrees)");
 }
 
 }  // namespace corbel::statics

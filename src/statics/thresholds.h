@@ -4,14 +4,15 @@
 #include "statics/arch.h"
 
 #include <functional>
+#include <string>
 
 namespace corbel::statics {
 
 // Bisection between a parameter value where `feasible` holds and one where it fails, until
 // they are within `tolerance`. Returns the midpoint of the last bracket. Throws corbel::Error
-// if the two ends do not bracket a change.
+// naming `parameter` if the two ends do not bracket a change.
 double bisectThreshold(const std::function<bool(double)>& feasible, double feasibleEnd, double infeasibleEnd,
-                       double tolerance);
+                       double tolerance, const std::string& parameter = "the parameter");
 
 // The least thickness at which the arch stands (spec.thickness is ignored), to `tolerance`.
 double minimumArchThickness(ArchSpec spec, const AnalysisOptions& options = {}, double tolerance = 1e-6);
