@@ -1,0 +1,226 @@
+#include "statics/analysis.h"
+
+#include "core/error.h"
+#include "statics/tolerances.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace corbel::statics {
+namespace {
+
+std::string blockName(const Assembly& as, int i) {
+  const std::string& n = as.blocks[std::size_t(i)].name;
+  return "block " + std::to_string(i) + (n.empty() ? "" : " \"" + n + "\"");
+}
+
+// What both problems share: geometry, contacts, the equilibrium rows and the loads.
+struct Prepared {
+  std::vector<BlockProperties> props;
+  Contacts contacts;
+  std::vector<int> rowOf;  // block → first equilibrium row, −1 for fixed blocks
+  int rows = 0;
+  double totalWeight = 0;
+  Eigen::VectorXd w;  // loads / W, 6 per free block
+  double alpha = 0.7;
+  std::vector<std::string> warnings;
+};
+
+Prepared prepare(const Assembly& as, const AnalysisOptions& opt) {
+  if (!std::isfinite(opt.friction) || opt.friction < 0) throw Error("statics: friction must be a number ≥ 0");
+  if (!std::isfinite(opt.kernShrink) || opt.kernShrink < 0 || opt.kernShrink >= 1)
+    throw Error("statics: kern shrink must be in [0, 1)");
+  Prepared p;
+  BBox model;
+  for (const Block& b : as.blocks)
+    for (const Vec3& v : b.vertices)
+      if (std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])) model.add(v);
+  const double tol = lengthTolerance(model);
+  p.props = validateAssembly(as, tol);
+  p.contacts = findContacts(as, p.props, tol, opt.kernShrink);
+  p.alpha = opt.conservativeFriction ? opt.friction / std::sqrt(2.0) : opt.friction;
+
+  const int nb = int(as.blocks.size());
+  p.rowOf.assign(std::size_t(nb), -1);
+  for (int i = 0; i < nb; ++i)
+    if (!as.blocks[std::size_t(i)].fixed) {
+      p.rowOf[std::size_t(i)] = p.rows;
+      p.rows += 6;
+    }
+  if (p.rows == 0) throw Error("statics: every block is fixed; there is nothing to analyse");
+
+  // Every free block must reach a fixed one through contacts with area.
+  std::vector<int> parent(static_cast<std::size_t>(nb));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[std::size_t(x)] != x) x = parent[std::size_t(x)] = parent[std::size_t(parent[std::size_t(x)])];
+    return x;
+  };
+  for (const Interface& itf : p.contacts.interfaces) parent[std::size_t(find(itf.a))] = find(itf.b);
+  std::vector<bool> grounded(std::size_t(nb), false);
+  for (int i = 0; i < nb; ++i)
+    if (as.blocks[std::size_t(i)].fixed) grounded[std::size_t(find(i))] = true;
+  for (int i = 0; i < nb; ++i) {
+    if (as.blocks[std::size_t(i)].fixed || grounded[std::size_t(find(i))]) continue;
+    std::string why;
+    for (const ZeroAreaContact& z : p.contacts.zeroArea)
+      if (z.a == i || z.b == i)
+        why = " (it touches " + blockName(as, z.a == i ? z.b : z.a) + " only along an edge or at a point: a zero-area contact)";
+    bool touchesAny = false;
+    for (const Interface& itf : p.contacts.interfaces) touchesAny = touchesAny || itf.a == i || itf.b == i;
+    throw Error("statics: " + blockName(as, i) +
+                (touchesAny ? " is not connected to a fixed block through contacts" : " floats: it has no contact with area") +
+                why);
+  }
+  for (const ZeroAreaContact& z : p.contacts.zeroArea)
+    p.warnings.push_back(blockName(as, z.a) + " and " + blockName(as, z.b) +
+                         " touch only along an edge or at a point; that contact carries no force");
+
+  for (int i = 0; i < nb; ++i)
+    if (!as.blocks[std::size_t(i)].fixed)
+      p.totalWeight += as.blocks[std::size_t(i)].density * p.props[std::size_t(i)].volume * as.g;
+  const Vec3 gdir = as.gravity / as.gravity.norm();
+  p.w = Eigen::VectorXd::Zero(p.rows);
+  for (int i = 0; i < nb; ++i) {
+    const int r = p.rowOf[std::size_t(i)];
+    if (r < 0) continue;
+    const Block& b = as.blocks[std::size_t(i)];
+    const Vec3 f = gdir * (b.density * p.props[std::size_t(i)].volume * as.g) + b.liveLoad;
+    for (int k = 0; k < 3; ++k) p.w[r + k] = f[k] / p.totalWeight;  // loads act at the centroid: no torque
+  }
+  return p;
+}
+
+// Adds the column of a unit force `dir` acting on b (and −dir on a) at `point`.
+void addForceColumn(const Prepared& p, const Interface& itf, const Vec3& point, const Vec3& dir,
+                    int col, std::vector<Eigen::Triplet<double>>& trips) {
+  for (int side = 0; side < 2; ++side) {
+    const int blk = side == 0 ? itf.b : itf.a;
+    const int r = p.rowOf[std::size_t(blk)];
+    if (r < 0) continue;
+    const double sgn = side == 0 ? 1.0 : -1.0;
+    const Vec3 arm = point - p.props[std::size_t(blk)].centroid;
+    const Vec3 tq = cross(arm, dir);
+    for (int k = 0; k < 3; ++k) {
+      if (dir[k] != 0) trips.emplace_back(r + k, col, sgn * dir[k]);
+      if (tq[k] != 0) trips.emplace_back(r + 3 + k, col, sgn * tq[k]);
+    }
+  }
+}
+
+}  // namespace
+
+AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
+  const Prepared p = prepare(as, opt);
+  // Variables per contact vertex: [f_n⁺, f_n⁻, f_t1, f_t2].
+  BlockQP qp;
+  std::vector<Eigen::Triplet<double>> trips;
+  int col = 0;
+  for (const Interface& itf : p.contacts.interfaces)
+    for (const Vec3& pt : itf.points) {
+      addForceColumn(p, itf, pt, itf.normal, col, trips);
+      addForceColumn(p, itf, pt, -itf.normal, col + 1, trips);
+      addForceColumn(p, itf, pt, itf.t1, col + 2, trips);
+      addForceColumn(p, itf, pt, itf.t2, col + 3, trips);
+      VarBlock vb;
+      vb.offset = col;
+      vb.size = 4;
+      vb.hessian = {0, 2, 0, 0};  // ½·2·(f_n⁻)²
+      // The pyramid bounds friction by α·f_n⁺ (statics notes): f_n⁺ ≥ 0, f_n⁻ ≥ 0, α f_n⁺ ± f_t ≥ 0.
+      vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}, {p.alpha, 0, -1, 0}, {p.alpha, 0, 1, 0}, {p.alpha, 0, 0, -1}, {p.alpha, 0, 0, 1}};
+      qp.blocks.push_back(vb);
+      col += 4;
+    }
+  qp.A.resize(p.rows, col);
+  qp.A.setFromTriplets(trips.begin(), trips.end());
+  qp.b = -p.w;
+  const IpmResult sol = solveBlockQP(qp, opt.solver);
+
+  AnalysisResult r;
+  r.status = sol.status;
+  r.iterations = sol.iterations;
+  r.totalWeight = p.totalWeight;
+  r.warnings = p.warnings;
+  r.multipliers = sol.multipliers;
+  if (sol.x.size() != col) return r;
+  double y = 0;
+  for (int v = 0; v < col; v += 4) y += sol.x[v + 1] * sol.x[v + 1];
+  r.yNormalised = y;
+  r.y = y * p.totalWeight * p.totalWeight;
+  r.equilibriumResidual = (qp.A * sol.x + p.w).norm() / p.w.norm();
+  r.feasible = sol.status == SolveStatus::Optimal && r.yNormalised <= kFeasibleMeasure;
+  const double W = p.totalWeight;
+  col = 0;
+  for (const Interface& itf : p.contacts.interfaces) {
+    InterfaceForces f;
+    f.a = itf.a;
+    f.b = itf.b;
+    f.normal = itf.normal;
+    f.area = itf.area;
+    Vec3 moment(0.0);
+    for (const Vec3& pt : itf.points) {
+      VertexForce vf;
+      vf.point = pt;
+      vf.compression = sol.x[col] * W;
+      vf.tension = sol.x[col + 1] * W;
+      vf.t1 = sol.x[col + 2] * W;
+      vf.t2 = sol.x[col + 3] * W;
+      f.resultant += itf.normal * vf.normal() + itf.t1 * vf.t1 + itf.t2 * vf.t2;
+      f.normalForce += vf.normal();
+      moment += pt * vf.normal();
+      f.maxTension = std::max(f.maxTension, vf.tension);
+      f.vertices.push_back(vf);
+      col += 4;
+    }
+    f.tangentialForce = (f.resultant - itf.normal * f.normalForce).norm();
+    f.centreOfPressure = f.normalForce > 0 ? moment / f.normalForce : itf.centroid;
+    r.interfaces.push_back(std::move(f));
+  }
+  return r;
+}
+
+FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& opt) {
+  const Prepared p = prepare(as, opt);
+  // Variables per contact vertex: [f_n, f_t1, f_t2] with f_n ≥ 0 and |f_t| ≤ α f_n; then two
+  // artificial variables (±) per equilibrium row, each costing 1.
+  BlockQP qp;
+  std::vector<Eigen::Triplet<double>> trips;
+  int col = 0;
+  for (const Interface& itf : p.contacts.interfaces)
+    for (const Vec3& pt : itf.points) {
+      addForceColumn(p, itf, pt, itf.normal, col, trips);
+      addForceColumn(p, itf, pt, itf.t1, col + 1, trips);
+      addForceColumn(p, itf, pt, itf.t2, col + 2, trips);
+      VarBlock vb;
+      vb.offset = col;
+      vb.size = 3;
+      vb.rows = {{1, 0, 0, 0}, {p.alpha, -1, 0, 0}, {p.alpha, 1, 0, 0}, {p.alpha, 0, -1, 0}, {p.alpha, 0, 1, 0}};
+      qp.blocks.push_back(vb);
+      col += 3;
+    }
+  for (int r = 0; r < p.rows; ++r)
+    for (double sgn : {1.0, -1.0}) {
+      trips.emplace_back(r, col, sgn);
+      VarBlock vb;
+      vb.offset = col;
+      vb.size = 1;
+      vb.cost = {1, 0, 0, 0};
+      vb.rows = {{1, 0, 0, 0}};
+      qp.blocks.push_back(vb);
+      ++col;
+    }
+  qp.A.resize(p.rows, col);
+  qp.A.setFromTriplets(trips.begin(), trips.end());
+  qp.b = -p.w;
+  const IpmResult sol = solveBlockQP(qp, opt.solver);
+  FeasibilityResult r;
+  r.status = sol.status;
+  r.iterations = sol.iterations;
+  r.violation = sol.x.size() == col ? sol.objective : std::numeric_limits<double>::infinity();
+  r.feasible = sol.status == SolveStatus::Optimal && r.violation <= kFeasibleViolation;
+  return r;
+}
+
+}  // namespace corbel::statics

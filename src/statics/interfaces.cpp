@@ -1,0 +1,174 @@
+#include "statics/interfaces.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "statics/tolerances.h"
+
+namespace corbel::statics {
+namespace {
+
+struct Plane2 {
+  Vec3 origin, u, v, n;
+  Vec2 to2(const Vec3& p) const { return Vec2(dot(p - origin, u), dot(p - origin, v)); }
+  Vec3 to3(const Vec2& q) const { return origin + u * q[0] + v * q[1]; }
+};
+
+double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
+
+double signedArea(const std::vector<Vec2>& p) {
+  double s = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) s += cross2(p[i], p[(i + 1) % p.size()]);
+  return 0.5 * s;
+}
+
+// Sutherland–Hodgman clip of `subject` by the convex counter-clockwise polygon `clip`.
+// Points within `tol` of a clip line count as inside, so identical faces clip to themselves.
+std::vector<Vec2> clipConvex(std::vector<Vec2> subject, const std::vector<Vec2>& clip, double tol) {
+  for (std::size_t i = 0; i < clip.size() && !subject.empty(); ++i) {
+    const Vec2 a = clip[i], b = clip[(i + 1) % clip.size()];
+    const Vec2 e = b - a;
+    const double len = e.norm();
+    auto side = [&](const Vec2& p) { return cross2(e, p - a) / len; };  // > 0 inside (left)
+    std::vector<Vec2> out;
+    for (std::size_t k = 0; k < subject.size(); ++k) {
+      const Vec2 p = subject[k], q = subject[(k + 1) % subject.size()];
+      const double sp = side(p), sq = side(q);
+      const bool pin = sp >= -tol, qin = sq >= -tol;
+      if (pin) out.push_back(p);
+      if (pin != qin && std::abs(sp - sq) > 0) {
+        const double t = sp / (sp - sq);
+        if (t > 0 && t < 1) out.push_back(p + (q - p) * t);
+      }
+    }
+    subject = std::move(out);
+  }
+  // Drop repeated and collinear points.
+  bool changed = true;
+  while (changed && subject.size() >= 3) {
+    changed = false;
+    for (std::size_t k = 0; k < subject.size() && subject.size() >= 3; ++k) {
+      const Vec2 p = subject[(k + subject.size() - 1) % subject.size()], q = subject[k],
+                 r = subject[(k + 1) % subject.size()];
+      const double pr = (r - p).norm();
+      const bool repeated = (q - p).norm() <= tol;
+      const bool collinear = pr > tol && std::abs(cross2(r - p, q - p)) / pr <= tol;
+      if (repeated || collinear) {
+        subject.erase(subject.begin() + long(k));
+        changed = true;
+        break;
+      }
+    }
+  }
+  return subject.size() >= 3 ? subject : std::vector<Vec2>{};
+}
+
+bool boxesTouch(const BBox& a, const BBox& b, double tol) {
+  for (int k = 0; k < 3; ++k)
+    if (a.lo[k] > b.hi[k] + tol || b.lo[k] > a.hi[k] + tol) return false;
+  return true;
+}
+
+struct FaceGeom {
+  Vec3 n;                 // unit outward normal
+  std::vector<Vec3> pts;  // counter-clockwise about n
+};
+
+std::vector<FaceGeom> faceGeometry(const Block& b) {
+  std::vector<FaceGeom> out;
+  for (const auto& f : b.faces) {
+    FaceGeom g;
+    for (int i : f) g.pts.push_back(b.vertices[i]);
+    g.n = newellNormal(g.pts).normalized();
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+}  // namespace
+
+Contacts findContacts(const Assembly& assembly, const std::vector<BlockProperties>& props, double tolerance,
+                      double kernShrink) {
+  Contacts result;
+  const int nb = int(assembly.blocks.size());
+  std::vector<std::vector<FaceGeom>> faces(nb);
+  for (int i = 0; i < nb; ++i) faces[i] = faceGeometry(assembly.blocks[i]);
+  // Spatial filter: blocks sorted by the low x of their boxes; a sweep keeps only pairs whose
+  // boxes overlap (within the tolerance).
+  std::vector<int> order(nb);
+  for (int i = 0; i < nb; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](int x, int y) { return props[x].bounds.lo[0] < props[y].bounds.lo[0]; });
+  for (int oi = 0; oi < nb; ++oi) {
+    const int i = order[oi];
+    for (int oj = oi + 1; oj < nb; ++oj) {
+      const int j = order[oj];
+      if (props[j].bounds.lo[0] > props[i].bounds.hi[0] + tolerance) break;
+      if (assembly.blocks[i].fixed && assembly.blocks[j].fixed) continue;
+      if (!boxesTouch(props[i].bounds, props[j].bounds, tolerance)) continue;
+      const int a = std::min(i, j), b = std::max(i, j);
+      bool touchedWithoutArea = false;
+      for (const FaceGeom& fa : faces[a]) {
+        for (const FaceGeom& fb : faces[b]) {
+          if (dot(fa.n, fb.n) > -(1.0 - kOppositeCosine)) continue;
+          bool coplanar = true;
+          for (const Vec3& q : fb.pts) coplanar = coplanar && std::abs(dot(q - fa.pts[0], fa.n)) <= tolerance;
+          if (!coplanar) continue;
+          // A frame in a's face plane, u along its first edge.
+          Plane2 pl;
+          pl.origin = fa.pts[0];
+          pl.n = fa.n;
+          pl.u = fa.pts[1] - fa.pts[0];
+          pl.u -= pl.n * dot(pl.u, pl.n);
+          pl.u.normalize();
+          pl.v = cross(pl.n, pl.u);
+          std::vector<Vec2> pa, pb;
+          for (const Vec3& q : fa.pts) pa.push_back(pl.to2(q));
+          // b's face runs clockwise about a's normal: reverse it.
+          for (auto it = fb.pts.rbegin(); it != fb.pts.rend(); ++it) pb.push_back(pl.to2(*it));
+          const std::vector<Vec2> poly = clipConvex(pa, pb, tolerance);
+          const double area = poly.empty() ? 0.0 : signedArea(poly);
+          if (poly.empty() || area <= tolerance * std::max(props[a].bounds.diagonal(), props[b].bounds.diagonal())) {
+            // Coplanar faces meeting along an edge or at a point: clip against b's face grown
+            // outwards by a few tolerances, so shared edges and corners survive the clip.
+            std::vector<Vec2> grown = pb;
+            Vec2 c(0.0);
+            for (const Vec2& q : pb) c += q;
+            c /= double(pb.size());
+            for (Vec2& q : grown) {
+              const Vec2 d = q - c;
+              const double len = d.norm();
+              if (len > 0) q += d * (4 * tolerance / len);
+            }
+            if (area > 0 || !clipConvex(pa, grown, 0).empty()) touchedWithoutArea = true;
+            continue;
+          }
+          Interface itf;
+          itf.a = a;
+          itf.b = b;
+          itf.normal = fa.n;
+          itf.area = area;
+          Vec2 c(0.0);
+          for (std::size_t k = 0; k < poly.size(); ++k) {
+            const Vec2 p = poly[k], q = poly[(k + 1) % poly.size()];
+            c += (p + q) * cross2(p, q);
+          }
+          c /= 6.0 * area;
+          itf.centroid = pl.to3(c);
+          for (const Vec2& q : poly) {
+            itf.polygon.push_back(pl.to3(q));
+            itf.points.push_back(pl.to3(c + (q - c) * (1.0 - kernShrink)));
+          }
+          itf.t1 = (itf.polygon[1] - itf.polygon[0]).normalized();
+          itf.t1 -= itf.normal * dot(itf.t1, itf.normal);
+          itf.t1.normalize();
+          itf.t2 = cross(itf.normal, itf.t1);
+          result.interfaces.push_back(std::move(itf));
+        }
+      }
+      if (touchedWithoutArea) result.zeroArea.push_back({a, b});
+    }
+  }
+  return result;
+}
+
+}  // namespace corbel::statics

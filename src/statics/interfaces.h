@@ -1,0 +1,40 @@
+#pragma once
+// Contact interfaces between blocks (Whiting et al. 2009, Sec. 2 "Adjacencies", Sec. 3.4).
+#include "statics/model.h"
+
+#include <string>
+#include <vector>
+
+namespace corbel::statics {
+
+// A planar contact between blocks a and b. `normal` points from a into b; `t1` runs along an
+// edge of the contact polygon and t2 = normal × t1. `polygon` is the contact polygon (convex,
+// counter-clockwise about the normal); `points` are where the vertex forces act: the polygon
+// scaled about its area centroid by (1 − kern shrink), Sec. 3.4.
+struct Interface {
+  int a = -1, b = -1;
+  Vec3 normal{0.0}, t1{0.0}, t2{0.0};
+  std::vector<Vec3> polygon;
+  std::vector<Vec3> points;
+  Vec3 centroid{0.0};
+  double area = 0;
+};
+
+// Two blocks whose faces touch in a common plane over no area (along an edge or at a point).
+struct ZeroAreaContact {
+  int a = -1, b = -1;
+};
+
+struct Contacts {
+  std::vector<Interface> interfaces;
+  std::vector<ZeroAreaContact> zeroArea;
+};
+
+// Finds every contact between coplanar, opposite faces of two blocks (at least one of them
+// free) whose planes are within `tolerance`, with bounding boxes as the spatial filter. The
+// contact polygon is the intersection of the two convex faces, clipped exactly in the plane
+// of a's face. `kernShrink` in [0, 1) moves every force point towards the polygon centroid.
+Contacts findContacts(const Assembly& assembly, const std::vector<BlockProperties>& props, double tolerance,
+                      double kernShrink);
+
+}  // namespace corbel::statics

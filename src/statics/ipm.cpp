@@ -1,0 +1,279 @@
+#include "statics/ipm.h"
+
+#include <Eigen/Dense>
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace corbel::statics {
+
+std::string toString(SolveStatus s) {
+  switch (s) {
+    case SolveStatus::Optimal: return "optimal";
+    case SolveStatus::IterationLimit: return "iteration limit";
+    case SolveStatus::NumericalFailure: return "numerical failure";
+  }
+  return "unknown";
+}
+
+namespace {
+
+using Eigen::VectorXd;
+using Mat4 = Eigen::Matrix4d;
+
+double maxStep(const VectorXd& v, const VectorXd& dv) {
+  double a = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (dv[i] < 0) a = std::min(a, -v[i] / dv[i]);
+  return a;
+}
+
+bool allFinite(const VectorXd& v) { return v.allFinite(); }
+
+}  // namespace
+
+// Mehrotra predictor–corrector on the block-eliminated normal equations.
+IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
+  const int n = int(qp.A.cols());
+  const int m = int(qp.A.rows());
+  const int nb = int(qp.blocks.size());
+  std::vector<int> rowStart(nb + 1, 0);
+  for (int j = 0; j < nb; ++j) rowStart[j + 1] = rowStart[j] + int(qp.blocks[j].rows.size());
+  const int mi = rowStart[nb];
+
+  VectorXd x = VectorXd::Zero(n), y = VectorXd::Zero(m), s(mi), z(mi);
+  // Infeasible start: x = 0 with unit slacks and multipliers (loads are normalised, so the
+  // solution is O(1) or smaller).
+  for (int j = 0; j < nb; ++j) {
+    const VarBlock& blk = qp.blocks[j];
+    for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+      s[rowStart[j] + int(r)] = 1.0;
+      z[rowStart[j] + int(r)] = 1.0;
+    }
+  }
+
+  auto Gx = [&](const VectorXd& v) {
+    VectorXd out(mi);
+    for (int j = 0; j < nb; ++j) {
+      const VarBlock& blk = qp.blocks[j];
+      for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+        double acc = 0;
+        for (int k = 0; k < blk.size; ++k) acc += blk.rows[r][k] * v[blk.offset + k];
+        out[rowStart[j] + int(r)] = acc;
+      }
+    }
+    return out;
+  };
+  auto GTv = [&](const VectorXd& w) {
+    VectorXd out = VectorXd::Zero(n);
+    for (int j = 0; j < nb; ++j) {
+      const VarBlock& blk = qp.blocks[j];
+      for (std::size_t r = 0; r < blk.rows.size(); ++r)
+        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] += blk.rows[r][k] * w[rowStart[j] + int(r)];
+    }
+    return out;
+  };
+  VectorXd qdiag = VectorXd::Zero(n), c = VectorXd::Zero(n);
+  for (const VarBlock& blk : qp.blocks)
+    for (int k = 0; k < blk.size; ++k) {
+      qdiag[blk.offset + k] = blk.hessian[k];
+      c[blk.offset + k] = blk.cost[k];
+    }
+  const double bnorm = qp.b.size() ? qp.b.lpNorm<Eigen::Infinity>() : 0.0;
+  const double cnorm = c.size() ? c.lpNorm<Eigen::Infinity>() : 0.0;
+
+  // Per block: the rows of A it touches and the block of A there (dense, rows × size).
+  struct BlockCols {
+    std::vector<int> rows;
+    Eigen::Matrix<double, Eigen::Dynamic, 4> vals;
+  };
+  std::vector<BlockCols> cols(nb);
+  for (int j = 0; j < nb; ++j) {
+    const VarBlock& blk = qp.blocks[j];
+    std::vector<int>& rows = cols[j].rows;
+    for (int k = 0; k < blk.size; ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it) rows.push_back(int(it.row()));
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    cols[j].vals = Eigen::Matrix<double, Eigen::Dynamic, 4>::Zero(Eigen::Index(rows.size()), 4);
+    for (int k = 0; k < blk.size; ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it) {
+        const auto pos = std::lower_bound(rows.begin(), rows.end(), int(it.row())) - rows.begin();
+        cols[j].vals(pos, k) += it.value();
+      }
+  }
+
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  bool analysed = false;
+  std::vector<Mat4> hinv(nb);
+  std::vector<Eigen::Triplet<double>> trips;
+  Eigen::SparseMatrix<double> S;
+  std::vector<int> diagSlot;
+  std::vector<std::vector<int>> blockSlots;
+
+  IpmResult best;
+  double bestMerit = std::numeric_limits<double>::infinity();
+  IpmResult res;
+  res.status = SolveStatus::IterationLimit;
+  double regularisation = 0;
+
+  auto record = [&](int iter, const VectorXd& rp, const VectorXd& rd, double gap) {
+    const double pr = rp.size() ? rp.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
+    const double dr = rd.size() ? rd.lpNorm<Eigen::Infinity>() / (1 + cnorm) : 0.0;
+    const double obj = 0.5 * x.dot(qdiag.cwiseProduct(x)) + c.dot(x);
+    const double merit = std::max({pr, dr, gap});
+    if (merit < bestMerit) {
+      bestMerit = merit;
+      best.x = x;
+      best.multipliers = y;
+      best.objective = obj;
+      best.primalResidual = pr;
+      best.dualResidual = dr;
+      best.gap = gap;
+      best.iterations = iter;
+    }
+    return pr <= options.residualTolerance && dr <= options.residualTolerance &&
+           (gap <= options.gapTolerance || gap <= options.relativeGapTolerance * std::abs(obj));
+  };
+
+  for (int iter = 0;; ++iter) {
+    const VectorXd gx = Gx(x);
+    const VectorXd rd = qdiag.cwiseProduct(x) + c - qp.A.transpose() * y - GTv(z);
+    const VectorXd rp = qp.A * x - qp.b;
+    const VectorXd rg = gx - s;
+    const double gap = s.dot(z);
+    if (record(iter, rp, rd, gap)) {
+      best.status = SolveStatus::Optimal;
+      best.regularisations = res.regularisations;
+      return best;
+    }
+    if (iter >= options.maxIterations) break;
+    const double mu = mi ? gap / mi : 0.0;
+    const VectorXd d = z.cwiseQuotient(s);
+
+    // Block Hessians and their inverses.
+    for (int j = 0; j < nb; ++j) {
+      const VarBlock& blk = qp.blocks[j];
+      Mat4 H = Mat4::Zero();
+      for (int k = 0; k < blk.size; ++k) H(k, k) = blk.hessian[k];
+      for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+        const Eigen::Vector4d g(blk.rows[r][0], blk.rows[r][1], blk.rows[r][2], blk.rows[r][3]);
+        H += d[rowStart[j] + int(r)] * g * g.transpose();
+      }
+      const int sz = blk.size;
+      Mat4 inv = Mat4::Zero();
+      const Eigen::MatrixXd Hs = H.topLeftCorner(sz, sz);
+      inv.topLeftCorner(sz, sz) = Hs.ldlt().solve(Eigen::MatrixXd::Identity(sz, sz));
+      hinv[j] = inv;
+    }
+    // Schur complement A H⁻¹ Aᵀ (lower triangle), with a diagonal entry on every row. The
+    // pattern never changes: it is built once, then values are summed into fixed slots.
+    if (!analysed) {
+      trips.clear();
+      for (int r = 0; r < m; ++r) trips.emplace_back(r, r, 1.0);
+      for (int j = 0; j < nb; ++j) {
+        const auto& rows = cols[j].rows;
+        for (std::size_t p = 0; p < rows.size(); ++p)
+          for (std::size_t q = 0; q <= p; ++q) trips.emplace_back(std::max(rows[p], rows[q]), std::min(rows[p], rows[q]), 1.0);
+      }
+      S.resize(m, m);
+      S.setFromTriplets(trips.begin(), trips.end());
+      S.makeCompressed();
+      auto slot = [&](int r, int c) { return int(&S.coeffRef(r, c) - S.valuePtr()); };
+      diagSlot.resize(std::size_t(m));
+      for (int r = 0; r < m; ++r) diagSlot[std::size_t(r)] = slot(r, r);
+      blockSlots.assign(std::size_t(nb), {});
+      for (int j = 0; j < nb; ++j) {
+        const auto& rows = cols[j].rows;
+        for (std::size_t p = 0; p < rows.size(); ++p)
+          for (std::size_t q = 0; q <= p; ++q)
+            blockSlots[std::size_t(j)].push_back(slot(std::max(rows[p], rows[q]), std::min(rows[p], rows[q])));
+      }
+      ldlt.analyzePattern(S);
+      analysed = true;
+    }
+    auto factor = [&]() {
+      double* val = S.valuePtr();
+      std::fill(val, val + S.nonZeros(), 0.0);
+      for (int r = 0; r < m; ++r) val[diagSlot[std::size_t(r)]] += regularisation;
+      for (int j = 0; j < nb; ++j) {
+        const auto& bc = cols[j];
+        const int sz = qp.blocks[j].size;
+        const Eigen::MatrixXd AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
+        const Eigen::MatrixXd block = AH * bc.vals.leftCols(sz).transpose();
+        std::size_t k = 0;
+        for (std::size_t p = 0; p < bc.rows.size(); ++p)
+          for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+      }
+      ldlt.factorize(S);
+      if (ldlt.info() != Eigen::Success) return false;
+      const VectorXd D = ldlt.vectorD();
+      const double dmax = D.size() ? D.cwiseAbs().maxCoeff() : 1.0;
+      for (Eigen::Index i = 0; i < D.size(); ++i)
+        if (!(D[i] > 1e-15 * dmax)) return false;
+      return true;
+    };
+    bool ok = factor();
+    for (int attempt = 0; !ok && attempt < 8; ++attempt) {
+      regularisation = regularisation > 0 ? regularisation * 100 : 1e-12;
+      ++res.regularisations;
+      ok = factor();
+    }
+    if (!ok) {
+      best.status = SolveStatus::NumericalFailure;
+      best.regularisations = res.regularisations;
+      return best;
+    }
+    regularisation *= 0.1;  // relax again once things go well
+    if (regularisation < 1e-14) regularisation = 0;
+
+    auto applyHinv = [&](const VectorXd& v) {
+      VectorXd out(n);
+      for (int j = 0; j < nb; ++j) {
+        const VarBlock& blk = qp.blocks[j];
+        Eigen::Vector4d in = Eigen::Vector4d::Zero();
+        for (int k = 0; k < blk.size; ++k) in[k] = v[blk.offset + k];
+        const Eigen::Vector4d o = hinv[j] * in;
+        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
+      }
+      return out;
+    };
+    auto newton = [&](const VectorXd& rc, VectorXd& dx, VectorXd& dy, VectorXd& dz, VectorXd& ds) {
+      const VectorXd w = rc.cwiseQuotient(s) + d.cwiseProduct(rg);
+      const VectorXd rho = -rd - GTv(w);
+      const VectorXd rhs = -rp - qp.A * applyHinv(rho);
+      dy = ldlt.solve(rhs);
+      dx = applyHinv(rho + qp.A.transpose() * dy);
+      dz = -w - d.cwiseProduct(Gx(dx));
+      ds = Gx(dx) + rg;
+      return allFinite(dx) && allFinite(dy) && allFinite(dz);
+    };
+    VectorXd dx, dy, dz, ds;
+    if (!newton(s.cwiseProduct(z), dx, dy, dz, ds)) {
+      best.status = SolveStatus::NumericalFailure;
+      return best;
+    }
+    const double aAff = std::min({1.0, maxStep(s, ds), maxStep(z, dz)});
+    const double muAff = mi ? (s + aAff * ds).dot(z + aAff * dz) / mi : 0.0;
+    const double sigma = mu > 0 ? std::pow(std::clamp(muAff / mu, 0.0, 1.0), 3) : 0.0;
+    const VectorXd rc = s.cwiseProduct(z) + ds.cwiseProduct(dz) - VectorXd::Constant(mi, sigma * mu);
+    if (!newton(rc, dx, dy, dz, ds)) {
+      best.status = SolveStatus::NumericalFailure;
+      return best;
+    }
+    const double alpha = std::min(1.0, 0.995 * std::min(maxStep(s, ds), maxStep(z, dz)));
+    x += alpha * dx;
+    y += alpha * dy;
+    z += alpha * dz;
+    s += alpha * ds;
+    res.iterations = iter + 1;
+  }
+  best.status = SolveStatus::IterationLimit;
+  best.regularisations = res.regularisations;
+  return best;
+}
+
+}  // namespace corbel::statics

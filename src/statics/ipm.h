@@ -1,0 +1,58 @@
+#pragma once
+// A primal-dual interior-point method for the block-structured convex QPs of the statics
+// kernel: min ½ xᵀQx + cᵀx  s.t.  A x = b,  G x ≥ 0, where x splits into small variable
+// blocks (at most 4 variables: one contact vertex, or one artificial), Q is diagonal and
+// every inequality row involves one block only. Each Newton step eliminates the blocks'
+// Hessians H_j = Q_j + G_jᵀ D_j G_j (dense, ≤ 4×4) and factors the Schur complement
+// A H⁻¹ Aᵀ (one row per equilibrium equation) with a sparse LDLᵀ after an AMD ordering.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace corbel::statics {
+
+struct VarBlock {
+  int offset = 0;                  // first variable of the block in x
+  int size = 0;                    // 1..4
+  std::array<double, 4> hessian{};  // diagonal of Q on the block
+  std::array<double, 4> cost{};     // c on the block
+  // Inequality rows g·x_block ≥ 0, coefficients on the block's variables.
+  std::vector<std::array<double, 4>> rows;
+};
+
+struct BlockQP {
+  std::vector<VarBlock> blocks;
+  Eigen::SparseMatrix<double> A;  // equations × variables
+  Eigen::VectorXd b;
+};
+
+enum class SolveStatus {
+  Optimal,          // residuals and duality gap within tolerance
+  IterationLimit,   // the iteration cap was reached; the best iterate is returned
+  NumericalFailure  // the Newton system could not be factored even with regularisation
+};
+
+std::string toString(SolveStatus s);
+
+struct IpmOptions {
+  int maxIterations = 80;
+  double residualTolerance = 1e-11;  // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
+  double gapTolerance = 1e-13;       // absolute, on sᵀz (loads are normalised, so O(1))
+  double relativeGapTolerance = 1e-10;  // or relative to |objective|
+};
+
+struct IpmResult {
+  SolveStatus status = SolveStatus::NumericalFailure;
+  Eigen::VectorXd x, multipliers;  // multipliers of A x = b
+  double objective = 0;
+  double primalResidual = 0, dualResidual = 0, gap = 0;
+  int iterations = 0;
+  int regularisations = 0;  // factorisations that needed a diagonal shift
+};
+
+IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options = {});
+
+}  // namespace corbel::statics

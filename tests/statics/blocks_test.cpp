@@ -1,0 +1,159 @@
+// Small assemblies whose thresholds are computed by hand: stacks, tipping, sliding, the kern.
+#include "core/error.h"
+#include "statics/analysis.h"
+#include "statics/thresholds.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <limits>
+#include <numbers>
+
+namespace corbel::statics {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Ground (x ≤ 0 ends at a table edge when `edge`), a unit cube at x ∈ [v, v+1] on it and a
+// unit cube at x ∈ [u, u+1] on that.
+Assembly stack(double v, double u, bool edge = false) {
+  Assembly as;
+  as.blocks.push_back(boxBlock("ground", Vec3(-3, -1, -1), Vec3(edge ? 0.0 : 3.0, 2, 0), 1.0, true));
+  as.blocks.push_back(boxBlock("bottom", Vec3(v, 0, 0), Vec3(v + 1, 1, 1)));
+  as.blocks.push_back(boxBlock("top", Vec3(u, 0, 1), Vec3(u + 1, 1, 2)));
+  return as;
+}
+
+bool stands(const Assembly& as, const AnalysisOptions& o = {}) { return checkFeasibility(as, o).feasible; }
+
+TEST(BlockStatics, AStraightStackStandsWithoutTensionAndInEquilibrium) {
+  const AnalysisResult r = analyse(stack(0, 0));
+  EXPECT_EQ(r.status, SolveStatus::Optimal);
+  EXPECT_TRUE(r.feasible);
+  EXPECT_LE(r.yNormalised, 1e-12);
+  EXPECT_LE(r.equilibriumResidual, 1e-8);
+  ASSERT_EQ(r.interfaces.size(), 2u);
+  // Each interface carries the weight above it, straight down through the centre.
+  const double cube = 2400 * 9.81;
+  for (const InterfaceForces& f : r.interfaces) {
+    const double above = f.a == 0 ? 2 * cube : cube;  // the ground (block 0) carries both cubes
+    EXPECT_NEAR(std::abs(f.normalForce), above, 1e-6 * above);
+    EXPECT_NEAR(f.tangentialForce, 0, 1e-6 * above);
+    EXPECT_NEAR(f.centreOfPressure[0], 0.5, 1e-6);
+    EXPECT_NEAR(f.centreOfPressure[1], 0.5, 1e-6);
+  }
+  EXPECT_TRUE(stands(stack(0, 0)));
+}
+
+// The top cube tips once its centroid passes the bottom cube's edge: offset 1/2.
+TEST(BlockStatics, OverhangTipsAtHalfABlock) {
+  EXPECT_TRUE(stands(stack(0, 0.49)));
+  EXPECT_FALSE(stands(stack(0, 0.51)));
+  const double d = bisectThreshold([](double u) { return stands(stack(0, u)); }, 0.0, 0.9, 1e-7);
+  EXPECT_NEAR(d, 0.5, 1e-6);
+  const AnalysisResult r = analyse(stack(0, 0.51));
+  EXPECT_FALSE(r.feasible);
+  EXPECT_GT(r.yNormalised, 1e-8);
+  EXPECT_LE(r.equilibriumResidual, 1e-8);
+}
+
+// Two cubes over a table edge (the harmonic stack): with the top at the bottom's tipping
+// offset 1/2, the pair's centroid v + 3/4 must stay over the table, so v ≤ −3/4.
+TEST(BlockStatics, HarmonicStackOverATableEdge) {
+  EXPECT_TRUE(stands(stack(-0.76, -0.76 + 0.5, true)));
+  EXPECT_FALSE(stands(stack(-0.74, -0.74 + 0.5, true)));
+  const double v = bisectThreshold([](double b) { return stands(stack(b, b + 0.5, true)); }, -0.9, -0.6, 1e-7);
+  EXPECT_NEAR(v, -0.75, 1e-6);
+}
+
+// A block on ground tilted by θ slides when tan θ > α (a cube tips only at 45°).
+TEST(BlockStatics, BlockOnAnInclineSlidesAtTheFrictionAngle) {
+  for (double alpha : {0.7, 0.4}) {
+    AnalysisOptions o;
+    o.friction = alpha;
+    auto onIncline = [&](double deg) {
+      Assembly as;
+      as.blocks.push_back(boxBlock("ground", Vec3(-2, -2, -1), Vec3(3, 3, 0), 1.0, true));
+      as.blocks.push_back(boxBlock("block", Vec3(0, 0, 0), Vec3(1, 1, 1)));
+      as.gravity = Vec3(std::sin(deg * kDeg), 0, -std::cos(deg * kDeg));
+      return as;
+    };
+    const double slide = bisectThreshold([&](double deg) { return stands(onIncline(deg), o); }, 0.0, 44.0, 1e-6);
+    EXPECT_NEAR(slide, std::atan(alpha) / kDeg, 1e-4) << "alpha " << alpha;
+    // The conservative pyramid (α/√2) slides earlier.
+    AnalysisOptions c = o;
+    c.conservativeFriction = true;
+    const double early = bisectThreshold([&](double deg) { return stands(onIncline(deg), c); }, 0.0, 44.0, 1e-6);
+    EXPECT_NEAR(early, std::atan(alpha / std::sqrt(2.0)) / kDeg, 1e-4) << "alpha " << alpha;
+    // Past the friction angle the QP holds the block by tension-free friction only if it can't:
+    // the measure is positive and equilibrium still holds.
+    const AnalysisResult r = analyse(onIncline(slide + 1), o);
+    EXPECT_FALSE(r.feasible);
+    EXPECT_LE(r.equilibriumResidual, 1e-8);
+  }
+}
+
+// Kern shrink s scales the contact [u, 1] about its centre; the top's centroid u + 1/2 reaches
+// the shrunk edge at u = (1 − s)/(2 − s).
+TEST(BlockStatics, KernShrinkTurnsAJustFeasibleOverhangInfeasible) {
+  AnalysisOptions kern;
+  kern.kernShrink = 0.1;
+  EXPECT_TRUE(stands(stack(0, 0.49)));
+  EXPECT_FALSE(stands(stack(0, 0.49), kern));
+  const double u = bisectThreshold([&](double x) { return stands(stack(0, x), kern); }, 0.0, 0.9, 1e-7);
+  EXPECT_NEAR(u, 0.9 / 1.9, 1e-6);
+  EXPECT_FALSE(analyse(stack(0, 0.49), kern).feasible);
+}
+
+TEST(BlockStatics, ContactPolygonIsTheOverlapOfTheFaces) {
+  const AnalysisResult r = analyse(stack(0, 0.3));
+  ASSERT_EQ(r.interfaces.size(), 2u);
+  for (const InterfaceForces& f : r.interfaces)
+    if (f.a == 1 && f.b == 2) {
+      EXPECT_NEAR(f.area, 0.7, 1e-12);
+      EXPECT_EQ(f.vertices.size(), 4u);
+    }
+}
+
+TEST(BlockStatics, BadInputGetsAClearError) {
+  auto message = [](const Assembly& as) {
+    try {
+      analyse(as);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  Assembly nan = stack(0, 0);
+  nan.blocks[2].vertices[3][1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(message(nan).find("\"top\": vertex 3 is not a finite point"), std::string::npos) << message(nan);
+
+  Assembly floating = stack(0, 0);
+  floating.blocks.push_back(boxBlock("cloud", Vec3(5, 5, 5), Vec3(6, 6, 6)));
+  EXPECT_NE(message(floating).find("\"cloud\" floats"), std::string::npos) << message(floating);
+
+  // The top cube beside the bottom one's top face: they share only the edge x = 1.
+  const Assembly edge = stack(0, 1.0);
+  EXPECT_NE(message(edge).find("\"top\" floats"), std::string::npos) << message(edge);
+  EXPECT_NE(message(edge).find("zero-area contact"), std::string::npos) << message(edge);
+
+  Assembly inverted = stack(0, 0);
+  for (auto& f : inverted.blocks[1].faces) std::reverse(f.begin(), f.end());
+  EXPECT_NE(message(inverted).find("\"bottom\": faces point inwards"), std::string::npos) << message(inverted);
+
+  Assembly dense = stack(0, 0);
+  dense.blocks[1].density = -1;
+  EXPECT_NE(message(dense).find("density"), std::string::npos);
+
+  AnalysisOptions bad;
+  bad.friction = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(analyse(stack(0, 0), bad), Error);
+  bad = {};
+  bad.kernShrink = 1.0;
+  EXPECT_THROW(checkFeasibility(stack(0, 0), bad), Error);
+}
+
+}  // namespace
+}  // namespace corbel::statics
