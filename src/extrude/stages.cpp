@@ -977,6 +977,16 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double ti
   for (const auto& l : spec.loops)
     for (const Vec2& p : l.points) box.add(Vec3(p[0], p[1], 0));
   const Tolerances tol = Tolerances::forScale(box.diagonal());
+  // Repeats expand into single instances first; a spec without any (most of them, and every
+  // footprint of a batch) is used as it is, without a copy.
+  const bool repeats = std::any_of(spec.steps.begin(), spec.steps.end(), [](const PlanStep& st) { return st.repeat.kind != RepeatKind::None; }) ||
+                       std::any_of(spec.anchors.begin(), spec.anchors.end(), [](const MeshAnchor& m) { return m.repeat.kind != RepeatKind::None; });
+  if (!repeats) {
+    Stager stager(spec, tol, progress, timeLimitSeconds);
+    ExtrusionResult r = stager.run(box.diagonal());
+    for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = static_cast<int>(k);
+    return r;
+  }
   const ExpandedSpec expanded = expandRepeats(spec);
   Stager stager(expanded.spec, tol, progress, timeLimitSeconds);
   ExtrusionResult r = stager.run(box.diagonal());
