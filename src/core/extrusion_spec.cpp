@@ -87,30 +87,22 @@ ExpandedSpec expandRepeats(const ExtrusionSpec& spec) {
     if (n <= 1) return name;
     return (name.empty() ? std::string() : name + " ") + "(" + std::to_string(i + 1) + " of " + std::to_string(n) + ")";
   };
-  for (std::size_t k = 0; k < spec.steps.size(); ++k) {
-    const PlanStep& st = spec.steps[k];
-    const std::vector<Anchor> places = repeatAnchors(spec, st.anchor, st.repeat);
-    for (std::size_t i = 0; i < places.size(); ++i) {
-      PlanStep one = st;
-      one.anchor = places[i];
-      one.repeat = Repeat();
-      one.name = numbered(st.name, i, places.size());
-      e.spec.steps.push_back(std::move(one));
-      e.stepSource.push_back(static_cast<int>(k));
+  // Steps and mesh anchors repeat alike: one instance per place, numbered, pointing back.
+  auto expand = [&](const auto& items, auto& out, std::vector<int>& source) {
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      const std::vector<Anchor> places = repeatAnchors(spec, items[k].anchor, items[k].repeat);
+      for (std::size_t i = 0; i < places.size(); ++i) {
+        auto one = items[k];
+        one.anchor = places[i];
+        one.repeat = Repeat();
+        one.name = numbered(items[k].name, i, places.size());
+        out.push_back(std::move(one));
+        source.push_back(static_cast<int>(k));
+      }
     }
-  }
-  for (std::size_t k = 0; k < spec.anchors.size(); ++k) {
-    const MeshAnchor& m = spec.anchors[k];
-    const std::vector<Anchor> places = repeatAnchors(spec, m.anchor, m.repeat);
-    for (std::size_t i = 0; i < places.size(); ++i) {
-      MeshAnchor one = m;
-      one.anchor = places[i];
-      one.repeat = Repeat();
-      one.name = numbered(m.name, i, places.size());
-      e.spec.anchors.push_back(std::move(one));
-      e.anchorSource.push_back(static_cast<int>(k));
-    }
-  }
+  };
+  expand(spec.steps, e.spec.steps, e.stepSource);
+  expand(spec.anchors, e.spec.anchors, e.anchorSource);
   return e;
 }
 
