@@ -95,6 +95,7 @@ class Stager {
   Plan rebuild(const Plan& old, const EPolygonSet& next, double h, const std::function<Active(const Vec2&)>& other,
               bool atBase = false);
   void addFlatRegion(const EPolygonH& region, double h, bool up, const ShellFace& info);
+  bool addFoldedFlats(const SweepInput& in, const SweepOutput& out, const std::vector<int>& map, double h);
   std::optional<Located> locate(const Plan& plan, const Anchor& a) const;
   void frame(const Plan& plan, double h);
   void fixTJunctions();
@@ -552,7 +553,18 @@ Plan Stager::change(const Plan& plan, double h, bool atBase) {
   std::vector<int> map(out.points.size(), -1);
   if (!atBase) {
     for (std::size_t i = 0; i < out.points.size(); ++i) map[i] = weld(Vec2(out.points[i][0], out.points[i][1]), h);
+    // Edges moving both ways can sweep over one another (a dormer's front stepping in while
+    // its sides step out): their flattened faces then overlap, up over down, and the shell
+    // would be non-manifold there. Such changes take their flat faces from the plans instead.
+    bool inward = false, outward = false;
+    for (const auto& l : loops)
+      for (const Item& it : l) {
+        if (it.k > 0) inward = true;
+        if (it.k < 0) outward = true;
+      }
+    const bool folded = inward && outward && addFoldedFlats(in, out, map, h);
     for (RawFace& f : out.raw) {
+      if (folded) break;
       if (f.info.angle == 0) continue;  // an edge that did not move: a vertical sliver
       RawFace g;
       g.info = f.info;
@@ -612,6 +624,90 @@ void Stager::addFlatRegion(const EPolygonH& region, double h, bool up, const She
   add(region.outer_boundary(), true);
   for (auto hole = region.holes_begin(); hole != region.holes_end(); ++hole) add(*hole, false);
   addFace(std::move(f));
+}
+
+// The flat faces of a change whose edges move both ways, from its plans: what the change takes
+// from the plan (old minus new) looks up, what it adds (new minus old) looks down (Sec. 4.5.2).
+// Each region is shared out among the recursive extrusion's faces that cover it, first come
+// first served, so ledges and soffits keep the edge (and tags) that made them; whatever no face
+// claims is added untagged, so the seam always closes. Returns false, adding nothing, where a
+// plan is not simple: the faces are then taken as the sweep made them.
+bool Stager::addFoldedFlats(const SweepInput& in, const SweepOutput& out, const std::vector<int>& map, double h) {
+  auto setOf = [](const std::vector<std::vector<Vec2>>& loops, EPolygonSet& set) {
+    for (const auto& pts : loops) {
+      if (pts.size() < 3) continue;
+      const EPolygon p = toPolygon(pts);
+      if (!p.is_simple()) return false;
+      set.symmetric_difference(p);
+    }
+    return true;
+  };
+  std::vector<std::vector<Vec2>> oldLoops, newLoops;
+  for (const auto& l : in.loops) {
+    oldLoops.emplace_back();
+    for (const SweepEdge& e : l) oldLoops.back().push_back(e.start);
+  }
+  for (const auto& l : out.plan) {
+    newLoops.emplace_back();
+    for (const PlanCorner& c : l) newLoops.back().push_back(c.p);
+  }
+  EPolygonSet oldSet, newSet;
+  if (!setOf(oldLoops, oldSet) || !setOf(newLoops, newSet)) return false;
+  EPolygonSet up = oldSet, down = newSet;
+  up.difference(newSet);
+  down.difference(oldSet);
+  auto emit = [&](const EPolygonSet& set, bool isUp, const ShellFace& info) {
+    std::vector<EPolygonH> regions;
+    set.polygons_with_holes(std::back_inserter(regions));
+    for (const EPolygonH& r : regions) addFlatRegion(r, h, isUp, info);
+  };
+  for (const RawFace& f : out.raw) {
+    if (f.info.angle == 0) continue;
+    const bool isUp = f.info.angle > 0;
+    EPolygonSet& rest = isUp ? up : down;
+    if (rest.is_empty()) continue;
+    // The face's outline, projected: its pieces chained into loops by welded vertex.
+    std::unordered_map<int, int> next;
+    bool ok = true;
+    for (auto [u, v] : f.segments)
+      if (map[u] != map[v] && !next.emplace(map[u], map[v]).second) ok = false;
+    EPolygonSet region;
+    while (ok && !next.empty()) {
+      const int first = next.begin()->first;
+      std::vector<Vec2> pts;
+      int at = first;
+      do {
+        const auto it = next.find(at);
+        if (it == next.end()) {
+          ok = false;  // an open outline
+          break;
+        }
+        pts.emplace_back(points_[at][0], points_[at][1]);
+        at = it->second;
+        next.erase(it);
+      } while (at != first);
+      if (ok && pts.size() >= 3) {
+        const EPolygon p = toPolygon(pts);
+        if (p.is_simple()) region.symmetric_difference(p);
+      }
+    }
+    if (!ok || region.is_empty()) continue;
+    EPolygonSet piece = region;
+    piece.intersection(rest);
+    if (piece.is_empty()) continue;
+    rest.difference(region);
+    ShellFace info = f.info;
+    if (info.step >= 0) info.sourceEdge = -1;  // a step's soffit (or ledge) is one face
+    info.angle = isUp ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+    emit(piece, isUp, info);
+  }
+  ShellFace rest;
+  rest.sourceLoop = rest.sourceEdge = -1;
+  rest.angle = std::numbers::pi / 2;
+  emit(up, true, rest);
+  rest.angle = -std::numbers::pi / 2;
+  emit(down, false, rest);
+  return true;
 }
 
 EPolygonSet planSet(const Plan& plan) {

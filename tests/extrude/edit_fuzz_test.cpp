@@ -175,5 +175,26 @@ TEST(EditFuzz, KnownHardCasesFailWithAReason) {
   EXPECT_GE(cases, 4);
 }
 
+// Cases long runs found that have since been fixed: each must stay a closed 2-manifold.
+TEST(EditFuzz, FormerFailuresStayClosed) {
+  int cases = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(CORBEL_SOURCE_DIR) + "/tests/data/edit-closed")) {
+    if (entry.path().extension() != ".corbel") continue;
+    ++cases;
+    SCOPED_TRACE(entry.path().filename().string());
+    const ExtrusionSpec s = std::get<ExtrusionSpec>(loadProject(entry.path().string()).document.objects[0].spec);
+    ASSERT_FALSE(checkSpec(s).has_value());
+    const ExtrusionResult r = extrude(s, nullptr, 5.0);
+    ASSERT_EQ(unpairedEdges(r.shell), 0u);
+    Scene scene;
+    scene.replaceObject(1, Kind::Shell, "x", toMeshData(r.shell, s, "plaster"));
+    const ValidityReport v = scene.validate(1);
+    EXPECT_TRUE(v.problems().empty()) << (v.problems().empty() ? "" : v.problems()[0]);
+    EXPECT_EQ(v.euler, 2);
+  }
+  EXPECT_GE(cases, 1);
+}
+
 }  // namespace
 }  // namespace corbel::extrude::test

@@ -152,6 +152,63 @@ TEST(Steps, DormerByNaturalStepOnTheEaves) {
   EXPECT_EQ(dormerFaces, 6u);  // front, two side walls, two roof slopes, one soffit
 }
 
+// A step whose front steps in while its sides step out at one height (a fuzzed dormer found
+// it): the front's ledge and the sides' soffits, swept by the recursive extrusion, overlap in
+// plan; the flat faces must be what the change takes away (up) and adds (down), no more.
+TEST(Steps, StepWhoseFrontStepsInWhileItsSidesStepOutClosesWithoutOverlap) {
+  ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
+  // From the anchor at 0.5 m: 0.5 m up, then the front 0.5 m in and the sides 0.5 m out, 0.3 m
+  // up, and a roof: the front leans back at 0.2 m per metre, the sides at 45°.
+  s.profiles.push_back(polyline("bay front", {{0, 0}, {0, 0.5}, {0.5, 0.5}, {0.5, 0.8}, {0.8, 2.3}},
+                                {"bay wall", "bay ledge", "bay wall", "bay roof"}));
+  s.profiles.push_back(polyline("bay side", {{0, 0}, {0, 0.5}, {-0.5, 0.5}, {-0.5, 0.8}, {1.5, 2.8}},
+                                {"bay wall", "bay soffit", "bay wall", "bay roof"}));
+  PlanStep d;
+  d.name = "bay";
+  d.anchor = {0, 0, false, 0.5, 0.5};
+  d.width = 2;
+  d.depth = 1;
+  d.frontProfile = 1;
+  d.sideProfile = 2;
+  s.steps.push_back(d);
+  const Checked c = run(s);
+  // Below 1 m the step is [4, 6] × [−1, 0]; above, [3.5, 6.5] × [−0.5, 0] under its hip.
+  auto bump = [](double x, double y) -> std::pair<double, double> {  // (bottom, top)
+    if (y >= 0 || x < 3.5 || x > 6.5 || y < -1) return {0, 0};
+    const bool lower = x >= 4 && x <= 6;
+    if (y < -0.5) return lower ? std::pair{0.5, 1.0} : std::pair{0.0, 0.0};
+    return {lower ? 0.5 : 1.0, 1.3 + std::min({5 * (y + 0.5), x - 3.5, 6.5 - x})};
+  };
+  const double expect = integrate(0, 10, -1, 6, 2000, 1400, [&](double x, double y) {
+    if (y >= 0) return hipTop(x, y);
+    const auto [bottom, top] = bump(x, y);
+    return top - bottom;
+  });
+  EXPECT_NEAR(c.m.volume, expect, 1e-4 * expect);
+  // The horizontal faces at 1 m, each claimed by the step's edges (none left over untagged).
+  double ledge = 0, soffit = 0;
+  for (const ShellFace& f : c.r.shell.faces) {
+    if (std::abs(f.normal[2]) < 1 - 1e-12) continue;
+    double area = 0, z = 0;
+    for (const auto& loop : f.loops)
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const Vec3 &a = c.r.shell.points[loop[k]], &b = c.r.shell.points[loop[(k + 1) % loop.size()]];
+        area += 0.5 * (a[0] * b[1] - a[1] * b[0]) * f.normal[2];
+        z = a[2];
+      }
+    if (std::abs(z - 1) > 1e-9) continue;
+    if (f.normal[2] > 0) {
+      ledge += area;
+      EXPECT_EQ(f.step, 0) << "the ledge belongs to the step";
+    } else {
+      soffit += area;
+      EXPECT_EQ(f.step, 0) << "the soffits belong to the step";
+    }
+  }
+  EXPECT_NEAR(ledge, 2 * 0.5, 1e-9);
+  EXPECT_NEAR(soffit, 2 * 0.5 * 0.5, 1e-9);
+}
+
 TEST(Steps, ButtressStandsOnTheBase) {
   // A 1 m square buttress against the front wall, its face leaning back at 45° from 2 m so it
   // meets the wall where the roof starts; the sides are vertical.
