@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -180,6 +181,82 @@ std::size_t unpairedEdges(const SweepOutput& shell) {
     if (repeated || rev.second - rev.first != 1) ++bad;
   }
   return bad;
+}
+
+namespace {
+
+// Whether the faces around every vertex of a closed shell form one fan (one cycle of corners),
+// as a polygon mesh library requires: two cones touching at a vertex fail.
+bool vertexFansClosed(const SweepOutput& shell) {
+  // Per vertex, its corners as (previous, next) vertex pairs.
+  std::vector<std::vector<std::pair<int, int>>> corners(shell.points.size());
+  for (const ShellFace& f : shell.faces)
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        corners[loop[i]].emplace_back(loop[(i + loop.size() - 1) % loop.size()], loop[(i + 1) % loop.size()]);
+  for (auto& c : corners) {
+    if (c.empty()) continue;
+    // Round the vertex: the corner after (p, n) is the one whose previous is n.
+    std::sort(c.begin(), c.end());
+    std::size_t steps = 0;
+    int at = c.front().first;
+    do {
+      const auto it = std::lower_bound(c.begin(), c.end(), std::make_pair(at, std::numeric_limits<int>::min()));
+      if (it == c.end() || it->first != at) return false;
+      at = it->second;
+    } while (++steps <= c.size() && at != c.front().first);
+    if (steps != c.size()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::size_t collapseShortEdges(SweepOutput& shell, double length) {
+  std::vector<int> parent(shell.points.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  std::size_t collapsed = 0;
+  for (const ShellFace& f : shell.faces)
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const int a = find(loop[i]), b = find(loop[(i + 1) % loop.size()]);
+        if (a == b || (shell.points[loop[i]] - shell.points[loop[(i + 1) % loop.size()]]).norm() >= length) continue;
+        parent[std::max(a, b)] = std::min(a, b);
+        ++collapsed;
+      }
+  if (collapsed == 0) return 0;
+  std::vector<ShellFace> faces;
+  for (const ShellFace& f : shell.faces) {
+    ShellFace g = f;
+    g.loops.clear();
+    for (std::size_t k = 0; k < f.loops.size(); ++k) {
+      std::vector<int> l;
+      for (int v : f.loops[k]) {
+        const int r = find(v);
+        if (l.empty() || l.back() != r) l.push_back(r);
+      }
+      while (l.size() > 1 && l.front() == l.back()) l.pop_back();
+      if (l.size() >= 3) g.loops.push_back(std::move(l));
+      else if (k == 0) break;  // the outer loop vanished: so does the face
+    }
+    // A loop through one vertex twice, or a hole touching its outer loop: leave the shell.
+    std::vector<int> used;
+    for (const auto& l : g.loops) used.insert(used.end(), l.begin(), l.end());
+    std::sort(used.begin(), used.end());
+    if (std::adjacent_find(used.begin(), used.end()) != used.end()) return 0;
+    if (!g.loops.empty()) faces.push_back(std::move(g));
+  }
+  const std::size_t before = unpairedEdges(shell);
+  std::swap(shell.faces, faces);
+  if (unpairedEdges(shell) > before || (before == 0 && !vertexFansClosed(shell))) {
+    std::swap(shell.faces, faces);
+    return 0;
+  }
+  return collapsed;
 }
 
 double faceArea(const SweepOutput& shell, const ShellFace& face) {

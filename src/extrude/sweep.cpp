@@ -1121,7 +1121,24 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
         }
         s = best;
       }
-      if (loop.size() >= 3) loops.push_back(std::move(loop));
+      // A loop that passes one vertex twice (a dormer's ridge reaching the top of the wall it
+      // stands on) is two loops touching there: a polygon mesh takes each as its own face.
+      std::vector<std::vector<int>> pending{std::move(loop)};
+      while (!pending.empty()) {
+        std::vector<int> l = std::move(pending.back());
+        pending.pop_back();
+        bool split = false;
+        for (std::size_t i = 0; i < l.size() && !split; ++i)
+          for (std::size_t j = i + 1; j < l.size() && !split; ++j)
+            if (l[i] == l[j]) {
+              pending.emplace_back(l.begin() + i, l.begin() + j);
+              std::vector<int> rest(l.begin(), l.begin() + i);
+              rest.insert(rest.end(), l.begin() + j, l.end());
+              pending.push_back(std::move(rest));
+              split = true;
+            }
+        if (!split && l.size() >= 3) loops.push_back(std::move(l));
+      }
     }
     // Outer loops are counter-clockwise in the face frame; holes go to the outer loop that
     // contains them.

@@ -190,8 +190,10 @@ TEST(EditFuzz, FormerFailuresStayClosed) {
     Scene scene;
     scene.replaceObject(1, Kind::Shell, "x", toMeshData(r.shell, s, "plaster"));
     const ValidityReport v = scene.validate(1);
+    // Closed, manifold, consistently oriented, no zero-area face. (Not necessarily of genus 0:
+    // two dormers grown into each other can leave a tunnel between them and the roof.)
     EXPECT_TRUE(v.problems().empty()) << (v.problems().empty() ? "" : v.problems()[0]);
-    EXPECT_EQ(v.euler, 2);
+    EXPECT_TRUE(v.closedManifold());
   }
   EXPECT_GE(cases, 1);
 }

@@ -1,0 +1,65 @@
+// collapseShortEdges: the output clean-up after near-simultaneous events (docs/extrude.md).
+#include "extrude/extrude.h"
+#include "extrude/sweep.h"
+
+#include <gtest/gtest.h>
+
+namespace corbel::extrude::test {
+namespace {
+
+// The unit cube, its top corner (1, 1, 1) doubled by a point `gap` away along −x: the top and
+// back faces have five corners, joined by an edge `gap` long.
+SweepOutput splitCube(double gap) {
+  SweepOutput s;
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+              Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1), Vec3(1 - gap, 1, 1)};
+  auto face = [&](std::vector<int> loop, Vec3 n) {
+    ShellFace f;
+    f.loops = {std::move(loop)};
+    f.normal = n;
+    s.faces.push_back(f);
+  };
+  face({0, 3, 2, 1}, Vec3(0, 0, -1));
+  face({4, 5, 6, 8, 7}, Vec3(0, 0, 1));
+  face({0, 1, 5, 4}, Vec3(0, -1, 0));
+  face({3, 7, 8, 6, 2}, Vec3(0, 1, 0));
+  face({0, 4, 7, 3}, Vec3(-1, 0, 0));
+  face({1, 2, 6, 5}, Vec3(1, 0, 0));
+  return s;
+}
+
+TEST(CollapseShortEdges, MergesTheEndsOfAnEdgeShorterThanTheLengthAndKeepsTheShellClosed) {
+  SweepOutput s = splitCube(1e-9);
+  ASSERT_EQ(unpairedEdges(s), 0u);
+  EXPECT_EQ(collapseShortEdges(s, 1e-8), 1u);
+  EXPECT_EQ(unpairedEdges(s), 0u);
+  ASSERT_EQ(s.faces.size(), 6u);
+  for (const ShellFace& f : s.faces) EXPECT_EQ(f.loops[0].size(), 4u) << "every face of a cube is a quad";
+  EXPECT_NEAR(measure(s).volume, 1.0, 1e-8);
+}
+
+TEST(CollapseShortEdges, LeavesLongerEdgesAlone) {
+  SweepOutput s = splitCube(1e-6);
+  EXPECT_EQ(collapseShortEdges(s, 1e-8), 0u);
+  EXPECT_EQ(s.faces[1].loops[0].size(), 5u);
+}
+
+// A sliver triangle between the two doubled corners: collapsing its short edge removes it, and
+// the faces around still pair.
+TEST(CollapseShortEdges, DropsAFaceThatVanishes) {
+  SweepOutput s = splitCube(1e-9);
+  // Replace the back face's piece 8 → 6 by a detour through a third point on a triangle face.
+  s.points.push_back(Vec3(1 - 0.5e-9, 1, 1 + 0.5e-9));  // 9
+  s.faces[3].loops[0] = {3, 7, 8, 9, 6, 2};
+  ShellFace tri;
+  tri.loops = {{8, 6, 9}};
+  tri.normal = Vec3(0, 1, 0);  // nominal: the sliver stands in the back plane
+  s.faces.push_back(tri);
+  ASSERT_EQ(unpairedEdges(s), 0u);
+  EXPECT_GE(collapseShortEdges(s, 1e-8), 2u);
+  EXPECT_EQ(unpairedEdges(s), 0u);
+  EXPECT_EQ(s.faces.size(), 6u) << "the sliver is gone";
+}
+
+}  // namespace
+}  // namespace corbel::extrude::test
