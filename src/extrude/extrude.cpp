@@ -212,7 +212,7 @@ bool vertexFansClosed(const SweepOutput& shell) {
 
 }  // namespace
 
-std::size_t collapseShortEdges(SweepOutput& shell, double length) {
+std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace) {
   std::vector<int> parent(shell.points.size());
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
   auto find = [&](int v) {
@@ -228,6 +228,21 @@ std::size_t collapseShortEdges(SweepOutput& shell, double length) {
         parent[std::max(a, b)] = std::min(a, b);
         ++collapsed;
       }
+  // A face all within tinyFace of its first corner (the last speck of a loop a change closed)
+  // becomes a point.
+  for (const ShellFace& f : shell.faces) {
+    if (f.loops.size() != 1) continue;
+    const Vec3& o = shell.points[f.loops[0][0]];
+    bool tiny = true;
+    for (int v : f.loops[0]) tiny = tiny && (shell.points[v] - o).norm() < tinyFace;
+    if (!tiny) continue;
+    for (int v : f.loops[0]) {
+      const int a = find(f.loops[0][0]), b = find(v);
+      if (a == b) continue;
+      parent[std::max(a, b)] = std::min(a, b);
+      ++collapsed;
+    }
+  }
   if (collapsed == 0) return 0;
   std::vector<ShellFace> faces;
   for (const ShellFace& f : shell.faces) {

@@ -97,10 +97,11 @@ void traceFaces(const std::vector<Vec3>& points, const std::vector<RawFace>& raw
                 std::vector<ShellFace>& faces, std::vector<std::string>& warnings);
 
 // Merges the ends of every face edge shorter than `length` (near-simultaneous events the
-// clustering kept apart leave such edges, and faces of no area between them), drops loops and
-// faces that vanish, and keeps the result only if it is as closed as before and no loop passes
-// a vertex twice. Returns the number of edges collapsed (0: the shell is unchanged).
-std::size_t collapseShortEdges(SweepOutput& shell, double length);
+// clustering kept apart leave such edges, and faces of no area between them) and every corner
+// of a face that lies within `tinyFace` of its first corner, drops loops and faces that vanish,
+// and keeps the result only if it is as closed as before, every vertex has one fan of faces and
+// no face passes a vertex twice. Returns the number of merges (0: the shell is unchanged).
+std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace = 0);
 
 // Runs the sweep. The input must already be valid (see checkSpec): simple, consistently
 // oriented loops and angles within (−π/2, π/2) with the last one > 0.

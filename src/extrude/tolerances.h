@@ -32,10 +32,13 @@ struct Tolerances {
   // Scene's degenerate-face bar in the cases seen and moves no vertex far enough to disturb the
   // projection identity (the random test's worst stays under 1e-7, docs/extrude.md).
   double collapse;
+  // A face whose corners all lie within this of one another is collapsed to a point: what is
+  // left of a loop that a change (a chimney's top stepping in) closed up to rounding.
+  double tinyFace;
 
   static Tolerances forScale(double scale) {
     const double s = std::max(scale, 1e-3);
-    return {1e-9 * s, 1e-8 * s, 1e-8 * s, 1e-8, 1e-7, 1e-8, 1e-5, 1e-11 * s * s, 1e-7 * s, 5e-8 * s};
+    return {1e-9 * s, 1e-8 * s, 1e-8 * s, 1e-8, 1e-7, 1e-8, 1e-5, 1e-11 * s * s, 1e-7 * s, 5e-8 * s, 1e-6 * s};
   }
 };
 

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace corbel::extrude::test {
 namespace {
 
@@ -59,6 +61,35 @@ TEST(CollapseShortEdges, DropsAFaceThatVanishes) {
   EXPECT_GE(collapseShortEdges(s, 1e-8), 2u);
   EXPECT_EQ(unpairedEdges(s), 0u);
   EXPECT_EQ(s.faces.size(), 6u) << "the sliver is gone";
+}
+
+// The cube with its corner (1, 1, 1) cut off by a triangle `cut` across: within tinyFace the
+// triangle becomes a point again, and the cube is whole.
+TEST(CollapseShortEdges, ATinyFaceBecomesAPoint) {
+  const double cut = 1e-7;
+  SweepOutput s;
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 0, 1),
+              Vec3(1 - cut, 1, 1), Vec3(1, 1 - cut, 1), Vec3(1, 1, 1 - cut), Vec3(0, 1, 1)};
+  auto face = [&](std::vector<int> loop, Vec3 n) {
+    ShellFace f;
+    f.loops = {std::move(loop)};
+    f.normal = n;
+    s.faces.push_back(f);
+  };
+  face({0, 3, 2, 1}, Vec3(0, 0, -1));
+  face({4, 5, 7, 6, 9}, Vec3(0, 0, 1));
+  face({0, 1, 5, 4}, Vec3(0, -1, 0));
+  face({3, 9, 6, 8, 2}, Vec3(0, 1, 0));
+  face({0, 4, 9, 3}, Vec3(-1, 0, 0));
+  face({1, 2, 8, 7, 5}, Vec3(1, 0, 0));
+  face({6, 7, 8}, Vec3(1, 1, 1) / std::sqrt(3.0));
+  ASSERT_EQ(unpairedEdges(s), 0u);
+  EXPECT_EQ(collapseShortEdges(s, 1e-9), 0u) << "no edge is that short";
+  EXPECT_EQ(collapseShortEdges(s, 1e-9, 1e-6), 2u);
+  EXPECT_EQ(unpairedEdges(s), 0u);
+  ASSERT_EQ(s.faces.size(), 6u);
+  for (const ShellFace& f : s.faces) EXPECT_EQ(f.loops[0].size(), 4u);
+  EXPECT_NEAR(measure(s).volume, 1.0, 1e-6);
 }
 
 }  // namespace
