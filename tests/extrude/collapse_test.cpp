@@ -9,18 +9,20 @@
 namespace corbel::extrude::test {
 namespace {
 
+void addFace(SweepOutput& s, std::vector<int> loop, const Vec3& n) {
+  ShellFace f;
+  f.loops = {std::move(loop)};
+  f.normal = n;
+  s.faces.push_back(f);
+}
+
 // The unit cube, its top corner (1, 1, 1) doubled by a point `gap` away along −x: the top and
 // back faces have five corners, joined by an edge `gap` long.
 SweepOutput splitCube(double gap) {
   SweepOutput s;
   s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
               Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1), Vec3(1 - gap, 1, 1)};
-  auto face = [&](std::vector<int> loop, Vec3 n) {
-    ShellFace f;
-    f.loops = {std::move(loop)};
-    f.normal = n;
-    s.faces.push_back(f);
-  };
+  auto face = [&](std::vector<int> loop, Vec3 n) { addFace(s, std::move(loop), n); };
   face({0, 3, 2, 1}, Vec3(0, 0, -1));
   face({4, 5, 6, 8, 7}, Vec3(0, 0, 1));
   face({0, 1, 5, 4}, Vec3(0, -1, 0));
@@ -70,12 +72,7 @@ TEST(CollapseShortEdges, ATinyFaceBecomesAPoint) {
   SweepOutput s;
   s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 0, 1),
               Vec3(1 - cut, 1, 1), Vec3(1, 1 - cut, 1), Vec3(1, 1, 1 - cut), Vec3(0, 1, 1)};
-  auto face = [&](std::vector<int> loop, Vec3 n) {
-    ShellFace f;
-    f.loops = {std::move(loop)};
-    f.normal = n;
-    s.faces.push_back(f);
-  };
+  auto face = [&](std::vector<int> loop, Vec3 n) { addFace(s, std::move(loop), n); };
   face({0, 3, 2, 1}, Vec3(0, 0, -1));
   face({4, 5, 7, 6, 9}, Vec3(0, 0, 1));
   face({0, 1, 5, 4}, Vec3(0, -1, 0));
