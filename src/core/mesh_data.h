@@ -32,4 +32,10 @@ struct MeshData {
   void append(const MeshData& other);
 };
 
+// Gives a vertex one copy per closed fan of faces around it, where it has several (two parts of
+// a surface touching at a point, as a face with a hole touching its outer boundary leaves once
+// triangulated): the soup is then a 2-manifold that touches itself there. Vertices with an open
+// fan are left alone. Returns the number of copies made.
+std::size_t splitPinchedVertices(MeshData& mesh);
+
 }  // namespace corbel

@@ -258,11 +258,14 @@ std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFac
       if (l.size() >= 3) g.loops.push_back(std::move(l));
       else if (k == 0) break;  // the outer loop vanished: so does the face
     }
-    // A loop through one vertex twice, or a hole touching its outer loop: leave the shell.
-    std::vector<int> used;
-    for (const auto& l : g.loops) used.insert(used.end(), l.begin(), l.end());
-    std::sort(used.begin(), used.end());
-    if (std::adjacent_find(used.begin(), used.end()) != used.end()) return 0;
+    // A loop through one vertex twice: leave the shell. (A hole may come to touch its outer
+    // loop: triangulated, the face then meets itself at a point, and toMeshData gives that
+    // point one vertex per fan.)
+    for (const auto& l : g.loops) {
+      std::vector<int> used = l;
+      std::sort(used.begin(), used.end());
+      if (std::adjacent_find(used.begin(), used.end()) != used.end()) return 0;
+    }
     if (!g.loops.empty()) faces.push_back(std::move(g));
   }
   const std::size_t before = unpairedEdges(shell);

@@ -167,6 +167,7 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
       out.addFace(tri, t, m);  // CDT faces are counter-clockwise in the (u, w) frame: outward
     }
   }
+  splitPinchedVertices(out);
   return out;
 }
 

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <cstdlib>
 #include <random>
 
 namespace corbel::extrude::test {
@@ -30,7 +31,8 @@ TEST(EditFuzz, RandomEditingNeverLeavesAnOpenShell) {
   const int sessions = timed ? std::numeric_limits<int>::max() : 400;
   const Document house = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/house.corbel").document;
   const ExtrusionSpec start = std::get<ExtrusionSpec>(house.objects[0].spec);
-  std::mt19937_64 rng(20261122);
+  const char* seeded = std::getenv("CORBEL_EDIT_FUZZ_SEED");  // fresh ground for long runs
+  std::mt19937_64 rng(seeded ? std::strtoull(seeded, nullptr, 10) : 20261122);
   auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
   auto pick = [&](std::size_t n) { return static_cast<int>(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)); };
 
@@ -172,7 +174,7 @@ TEST(EditFuzz, KnownHardCasesFailWithAReason) {
     }
     EXPECT_FALSE(closed) << "now closes: move it to the regression cases";
   }
-  EXPECT_GE(cases, 4);
+  EXPECT_GE(cases, 3);  // the three spikes; degenerate cases join them as long runs find them
 }
 
 // Cases long runs found that have since been fixed: each must stay a closed 2-manifold.

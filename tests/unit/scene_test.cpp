@@ -414,3 +414,33 @@ TEST(Scene, KindNamesRoundTrip) {
 }
 
 }  // namespace
+
+namespace {
+
+// Two unit cubes sharing only the corner (1, 1, 1): as one vertex, no polygon mesh takes it;
+// split into one vertex per fan, it is two closed cubes that touch.
+TEST(MeshData, SplitPinchedVerticesGivesEachFanItsOwnVertex) {
+  MeshData m = handBox(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const MeshData b = handBox(Vec3(1, 1, 1), Vec3(2, 2, 2));
+  const int shared = 7;  // handBox's v[1][1][1]
+  ASSERT_EQ(m.points[shared], Vec3(1, 1, 1));
+  const int offset = static_cast<int>(m.points.size());
+  m.append(b);
+  ASSERT_EQ(m.points[offset], Vec3(1, 1, 1));  // b's v[0][0][0]
+  for (auto& f : m.faces)
+    for (int& v : f)
+      if (v == offset) v = shared;
+  Scene before;
+  before.replaceObject(1, Kind::Mass, "pinched", m);
+  EXPECT_FALSE(before.validate(1).closedManifold());
+  EXPECT_EQ(corbel::splitPinchedVertices(m), 1u);
+  Scene after;
+  after.replaceObject(1, Kind::Mass, "touching", m);
+  const ValidityReport r = after.validate(1);
+  EXPECT_TRUE(r.closedManifold());
+  EXPECT_EQ(r.components, 2u);
+  EXPECT_NEAR(r.volume, 2.0, 1e-12);
+  EXPECT_EQ(corbel::splitPinchedVertices(m), 0u) << "nothing left to split";
+}
+
+}  // namespace
