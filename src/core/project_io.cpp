@@ -26,6 +26,60 @@ ojson boxToJson(const BoxSpec& b) {
   return j;
 }
 
+ojson masonryToJson(const MasonrySpec& m) {
+  ojson j;
+  j["model"] = m.model;
+  ojson params = ojson::object();
+  for (const MasonryParameter& p : m.parameters) params[p.name] = p.value;
+  j["parameters"] = std::move(params);
+  ojson free = ojson::object();
+  for (const MasonryFree& f : m.free) free[f.name] = {f.lo, f.hi};
+  j["free"] = std::move(free);
+  j["friction"] = m.friction;
+  j["kern"] = m.kern;
+  j["material"] = m.material;
+  return j;
+}
+
+MasonrySpec masonryFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"model", "parameters", "free", "friction", "kern", "material"}))
+    warnings.push_back(k + ": unknown key ignored");
+  MasonrySpec m;
+  const JsonReader model = r.at("model");
+  m.model = model.string(limits::kMaxNameLength);
+  if (m.model.empty()) model.fail("the model name must not be empty");
+  // Both maps are JSON objects keyed by parameter name (so a name cannot appear twice).
+  auto entries = [](const JsonReader& o) {
+    o.expectObject();
+    if (o.raw().size() > limits::kMaxMasonryParameters)
+      o.fail(std::to_string(o.raw().size()) + " parameters exceed the limit of " +
+             std::to_string(limits::kMaxMasonryParameters));
+    std::vector<std::pair<std::string, JsonReader>> out;
+    for (auto it = o.raw().begin(); it != o.raw().end(); ++it) {
+      if (it.key().empty() || it.key().size() > limits::kMaxNameLength)
+        o.fail("a parameter name must have 1 to " + std::to_string(limits::kMaxNameLength) + " characters");
+      out.emplace_back(it.key(), JsonReader(it.value(), o.path() + "." + it.key()));
+    }
+    return out;
+  };
+  if (auto p = r.find("parameters"))
+    for (const auto& [name, v] : entries(*p)) m.parameters.push_back({name, v.number()});
+  if (auto f = r.find("free"))
+    for (const auto& [name, v] : entries(*f)) {
+      const Vec2 b = v.vec2();
+      if (b[0] > b[1]) v.fail("the lower bound " + std::to_string(b[0]) + " is above the upper bound " + std::to_string(b[1]));
+      m.free.push_back({name, b[0], b[1]});
+    }
+  if (auto v = r.find("friction")) m.friction = v->number(0.0, 100.0);
+  if (auto v = r.find("kern")) {
+    m.kern = v->number(0.0, 1.0);
+    if (m.kern >= 1.0) v->fail("the kern factor must be below 1 (1 would shrink every contact to a point)");
+  }
+  if (auto v = r.find("material")) m.material = v->string(limits::kMaxNameLength);
+  return m;
+}
+
 BoxSpec boxFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
   for (auto& k : r.unknownKeys({"origin", "size", "rotation", "material", "repeat"}))
@@ -455,15 +509,16 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
       if (obj.name.empty()) nameReader.fail("name must not be empty");
       if (!names.insert(obj.name).second) nameReader.fail("name \"" + obj.name + "\" is used twice");
       if (auto v = o.find("visible")) obj.visible = v->boolean();
-      static const std::set<std::string> specKeys = {"box", "extrusion"};
+      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry"};
       int specCount = 0;
       for (const auto& key : specKeys) specCount += o.find(key) ? 1 : 0;
-      if (specCount == 0) o.fail("no spec: expected one of \"box\", \"extrusion\"");
+      if (specCount == 0) o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\"");
       if (specCount > 1) o.fail("more than one spec: an object has exactly one");
       if (auto b = o.find("box")) obj.spec = boxFromJson(*b, out.warnings);
+      else if (auto m = o.find("masonry")) obj.spec = masonryFromJson(*m, out.warnings);
       else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
       if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
-      for (auto& k : o.unknownKeys({"id", "name", "visible", "box", "extrusion", "plan_background"}))
+      for (auto& k : o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "plan_background"}))
         out.warnings.push_back(k + ": unknown key ignored");
       doc.objects.push_back(std::move(obj));
     }
@@ -492,6 +547,7 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     j["name"] = o.name;
     j["visible"] = o.visible;
     if (const auto* b = std::get_if<BoxSpec>(&o.spec)) j["box"] = boxToJson(*b);
+    else if (const auto* m = std::get_if<MasonrySpec>(&o.spec)) j["masonry"] = masonryToJson(*m);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
     objects.push_back(std::move(j));

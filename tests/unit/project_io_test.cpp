@@ -336,7 +336,7 @@ TEST(ProjectIoErrors, MissingFields) {
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "box": {}}]})", "objects[0].name",
                "missing");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A"}]})", "objects[0]",
-               R"(no spec: expected one of "box", "extrusion")");
+               R"(no spec: expected one of "box", "extrusion", "masonry")");
 }
 
 TEST(ProjectIoErrors, NonFiniteNumbers) {
@@ -701,3 +701,56 @@ TEST(ProjectIoErrors, PlanBackgroundFaultsNameTheirPath) {
 }
 
 }  // namespace background
+
+// ---------------------------------------------------------------------------------------------
+// Masonry objects: a statics model by name with set and freed parameters.
+
+namespace {
+
+std::string withMasonry(const std::string& body) {
+  return R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "M", "masonry": {)" + body + "}}]}";
+}
+
+}  // namespace
+
+// Parameters are JSON objects keyed by name, so they load in name order.
+TEST(ProjectIo, MasonrySpecsRoundTrip) {
+  Document d;
+  corbel::MasonrySpec m;
+  m.model = "barrel-vault";
+  m.parameters = {{"buttressWidth", 0.6}, {"radius", 2.0}, {"thickness", 0.25}};
+  m.free = {{"buttressWidth", 0.1, 1.5}, {"thickness", 0.05, 0.5}};
+  m.friction = 0.6;
+  m.kern = 0.1;
+  m.material = "limestone";
+  d.add("vault", m);
+  d.add("defaults", corbel::MasonrySpec{});
+  const std::string text = corbel::serializeProject(d);
+  const corbel::LoadedProject back = corbel::parseProject(text);
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document), text);
+  EXPECT_NE(text.find(R"("buttressWidth": [)"), std::string::npos) << "free bounds are [lo, hi] by name";
+  // Only the model is required; the rest takes the defaults.
+  const auto minimal = corbel::parseProject(withMasonry(R"("model": "tower")"));
+  const auto& spec = std::get<corbel::MasonrySpec>(minimal.document.objects[0].spec);
+  EXPECT_EQ(spec, (corbel::MasonrySpec{"tower", {}, {}, 0.7, 0.0, "stone"}));
+}
+
+TEST(ProjectIoErrors, MasonryFaultsNameTheirPath) {
+  EXPECT_FAULT(withMasonry(R"("parameters": {})"), "objects[0].masonry.model", "missing");
+  EXPECT_FAULT(withMasonry(R"("model": "")"), "objects[0].masonry.model", "the model name must not be empty");
+  EXPECT_FAULT_CONTAINS(withMasonry(R"("model": "tower", "parameters": [1, 2])"), "objects[0].masonry.parameters",
+                        "object");
+  EXPECT_FAULT_CONTAINS(withMasonry(R"("model": "tower", "parameters": {"x1": "0.1"})"),
+                        "objects[0].masonry.parameters.x1", "number");
+  EXPECT_FAULT(withMasonry(R"("model": "tower", "free": {"x1": [0.2, -0.2]})"), "objects[0].masonry.free.x1",
+               "the lower bound 0.200000 is above the upper bound -0.200000");
+  EXPECT_FAULT_CONTAINS(withMasonry(R"("model": "tower", "free": {"x1": 0.2})"), "objects[0].masonry.free.x1",
+                        "[x, y]");
+  EXPECT_FAULT(withMasonry(R"("model": "tower", "kern": 1)"), "objects[0].masonry.kern",
+               "the kern factor must be below 1 (1 would shrink every contact to a point)");
+  EXPECT_FAULT_CONTAINS(withMasonry(R"("model": "tower", "friction": -0.1)"), "objects[0].masonry.friction", "-0.1");
+  EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "M", "masonry": {"model": "tower"}, "box": {"size": [1, 1, 1]}}]})",
+               "objects[0]", "more than one spec: an object has exactly one");
+}
