@@ -1,10 +1,12 @@
 #include "statics/analysis.h"
 
 #include "core/error.h"
+#include "statics/equilibrium.h"
 #include "statics/tolerances.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numeric>
 
@@ -16,23 +18,13 @@ std::string blockName(const Assembly& as, int i) {
   return "block " + std::to_string(i) + (n.empty() ? "" : " \"" + n + "\"");
 }
 
-// What both problems share: geometry, contacts, the equilibrium rows and the loads.
-struct Prepared {
-  std::vector<BlockProperties> props;
-  Contacts contacts;
-  std::vector<int> rowOf;  // block → first equilibrium row, −1 for fixed blocks
-  int rows = 0;
-  double totalWeight = 0;
-  Eigen::VectorXd w;  // loads / W, 6 per free block
-  double alpha = 0.7;
-  std::vector<std::string> warnings;
-};
+}  // namespace
 
-Prepared prepare(const Assembly& as, const AnalysisOptions& opt) {
+EquilibriumSystem prepareEquilibrium(const Assembly& as, const AnalysisOptions& opt) {
   if (!std::isfinite(opt.friction) || opt.friction < 0) throw Error("statics: friction must be a number ≥ 0");
   if (!std::isfinite(opt.kernShrink) || opt.kernShrink < 0 || opt.kernShrink >= 1)
     throw Error("statics: kern shrink must be in [0, 1)");
-  Prepared p;
+  EquilibriumSystem p;
   BBox model;
   for (const Block& b : as.blocks)
     for (const Vec3& v : b.vertices)
@@ -93,8 +85,20 @@ Prepared prepare(const Assembly& as, const AnalysisOptions& opt) {
   return p;
 }
 
+bool sameLayout(const EquilibriumSystem& x, const EquilibriumSystem& y) {
+  if (x.rowOf != y.rowOf || x.contacts.interfaces.size() != y.contacts.interfaces.size()) return false;
+  for (std::size_t i = 0; i < x.contacts.interfaces.size(); ++i) {
+    const Interface &p = x.contacts.interfaces[i], &q = y.contacts.interfaces[i];
+    if (p.a != q.a || p.b != q.b || p.faceA != q.faceA || p.faceB != q.faceB || p.points.size() != q.points.size())
+      return false;
+  }
+  return true;
+}
+
+namespace {
+
 // Adds the column of a unit force `dir` acting on b (and −dir on a) at `point`.
-void addForceColumn(const Prepared& p, const Interface& itf, const Vec3& point, const Vec3& dir,
+void addForceColumn(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir,
                     int col, std::vector<Eigen::Triplet<double>>& trips) {
   for (int side = 0; side < 2; ++side) {
     const int blk = side == 0 ? itf.b : itf.a;
@@ -112,8 +116,7 @@ void addForceColumn(const Prepared& p, const Interface& itf, const Vec3& point, 
 
 }  // namespace
 
-AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
-  const Prepared p = prepare(as, opt);
+BlockQP penaltyQP(const EquilibriumSystem& p) {
   // Variables per contact vertex: [f_n⁺, f_n⁻, f_t1, f_t2].
   BlockQP qp;
   std::vector<Eigen::Triplet<double>> trips;
@@ -136,6 +139,16 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
   qp.A.resize(p.rows, col);
   qp.A.setFromTriplets(trips.begin(), trips.end());
   qp.b = -p.w;
+  return qp;
+}
+
+AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
+  return analyseSystem(prepareEquilibrium(as, opt), opt);
+}
+
+AnalysisResult analyseSystem(const EquilibriumSystem& p, const AnalysisOptions& opt) {
+  const BlockQP qp = penaltyQP(p);
+  const int col = int(qp.A.cols());
   const IpmResult sol = solveBlockQP(qp, opt.solver);
 
   AnalysisResult r;
@@ -144,6 +157,7 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
   r.totalWeight = p.totalWeight;
   r.warnings = p.warnings;
   r.multipliers = sol.multipliers;
+  r.solution = sol.x;
   if (sol.x.size() != col) return r;
   double y = 0;
   for (int v = 0; v < col; v += 4) y += sol.x[v + 1] * sol.x[v + 1];
@@ -152,7 +166,7 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
   r.equilibriumResidual = (qp.A * sol.x + p.w).norm() / p.w.norm();
   r.feasible = sol.status == SolveStatus::Optimal && r.yNormalised <= kFeasibleMeasure;
   const double W = p.totalWeight;
-  col = 0;
+  int v = 0;
   for (const Interface& itf : p.contacts.interfaces) {
     InterfaceForces f;
     f.a = itf.a;
@@ -163,16 +177,16 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
     for (const Vec3& pt : itf.points) {
       VertexForce vf;
       vf.point = pt;
-      vf.compression = sol.x[col] * W;
-      vf.tension = sol.x[col + 1] * W;
-      vf.t1 = sol.x[col + 2] * W;
-      vf.t2 = sol.x[col + 3] * W;
+      vf.compression = sol.x[v] * W;
+      vf.tension = sol.x[v + 1] * W;
+      vf.t1 = sol.x[v + 2] * W;
+      vf.t2 = sol.x[v + 3] * W;
       f.resultant += itf.normal * vf.normal() + itf.t1 * vf.t1 + itf.t2 * vf.t2;
       f.normalForce += vf.normal();
       moment += pt * vf.normal();
       f.maxTension = std::max(f.maxTension, vf.tension);
       f.vertices.push_back(vf);
-      col += 4;
+      v += 4;
     }
     f.tangentialForce = (f.resultant - itf.normal * f.normalForce).norm();
     f.centreOfPressure = f.normalForce > 0 ? moment / f.normalForce : itf.centroid;
@@ -182,7 +196,7 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
 }
 
 FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& opt) {
-  const Prepared p = prepare(as, opt);
+  const EquilibriumSystem p = prepareEquilibrium(as, opt);
   // Variables per contact vertex: [f_n, f_t1, f_t2] with f_n ≥ 0 and |f_t| ≤ α f_n; then two
   // artificial variables (±) per equilibrium row, each costing 1.
   BlockQP qp;

@@ -51,6 +51,7 @@ struct AnalysisResult {
   std::vector<InterfaceForces> interfaces;
   std::vector<std::string> warnings;
   Eigen::VectorXd multipliers;  // of the equilibrium rows, for loads normalised by W
+  Eigen::VectorXd solution;     // the QP's x: [f_n⁺, f_n⁻, f_t1, f_t2] per vertex, in units of W
 };
 
 // Solves the penalty QP. Throws corbel::Error for bad input or degenerate geometry (a block

@@ -24,6 +24,7 @@ namespace {
 using Eigen::VectorXd;
 using Mat4 = Eigen::Matrix4d;
 
+
 double maxStep(const VectorXd& v, const VectorXd& dv) {
   double a = std::numeric_limits<double>::infinity();
   for (Eigen::Index i = 0; i < v.size(); ++i)
@@ -230,6 +231,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     regularisation *= 0.1;  // relax again once things go well
     if (regularisation < 1e-14) regularisation = 0;
 
+    // H⁻¹ v block by block.
     auto applyHinv = [&](const VectorXd& v) {
       VectorXd out(n);
       for (int j = 0; j < nb; ++j) {
@@ -241,11 +243,19 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       }
       return out;
     };
+    // S dy = rhs with one step of iterative refinement against S applied as A H⁻¹ Aᵀ (near the
+    // optimum S mixes entries of very different sizes, z/s → 0 or ∞).
+    auto solveSchur = [&](const VectorXd& rhs) {
+      VectorXd dy = ldlt.solve(rhs);
+      const VectorXd r = rhs - qp.A * applyHinv(qp.A.transpose() * dy) - (regularisation) * dy;
+      dy += ldlt.solve(r);
+      return dy;
+    };
     auto newton = [&](const VectorXd& rc, VectorXd& dx, VectorXd& dy, VectorXd& dz, VectorXd& ds) {
       const VectorXd w = rc.cwiseQuotient(s) + d.cwiseProduct(rg);
       const VectorXd rho = -rd - GTv(w);
       const VectorXd rhs = -rp - qp.A * applyHinv(rho);
-      dy = ldlt.solve(rhs);
+      dy = solveSchur(rhs);
       dx = applyHinv(rho + qp.A.transpose() * dy);
       dz = -w - d.cwiseProduct(Gx(dx));
       ds = Gx(dx) + rg;
