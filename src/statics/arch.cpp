@@ -82,8 +82,10 @@ std::vector<ArchJoint> pointedJoints(const PointedArchSpec& spec) {
   const int m = spec.blocks / 2;
   const double rho = spec.radiusRatio * spec.radius, d = rho - spec.radius;
   const double ri = rho - spec.thickness / 2, ro = rho + spec.thickness / 2;
-  // The right half, centre (−d, 0): radial joints from the springing (angle 0) up to the crown.
-  const double apex = std::acos(d / rho);
+  // The right half, centre (−d, 0): radial joints from the springing (angle 0) towards the
+  // crown, spread up to the angle where the intrados meets x = 0 (the centreline and extrados
+  // meet it at larger angles), so no joint crosses the crown plane.
+  const double apex = std::acos(d / ri);
   std::vector<ArchJoint> right(std::size_t(m) + 1);
   for (int k = 0; k < m; ++k) {
     const double phi = apex * k / m;
@@ -97,7 +99,6 @@ std::vector<ArchJoint> pointedJoints(const PointedArchSpec& spec) {
     const ArchJoint& j = right[std::size_t(k)];
     joints.push_back({Vec2(-j.inner[0], j.inner[1]), Vec2(-j.outer[0], j.outer[1])});
   }
-  std::reverse(joints.begin(), joints.end());
   for (int k = m; k >= 0; --k) joints.push_back(right[std::size_t(k)]);
   return joints;
 }

@@ -41,7 +41,8 @@ Assembly semicircularArch(const ArchSpec& spec);
 // The pointed (gothic) arch: each half is an arc of radius ρ = radiusRatio·R whose centre lies
 // on the springing line at distance ρ − R on the other side, so the centreline springs at
 // x = ±R and the halves meet at the crown x = 0. radiusRatio 1 is the semicircular arch, 2 the
-// equilateral arch. Joints are radial to each half's centre, the crown joint vertical.
+// equilateral arch. Joints are radial to each half's centre, evenly spread in angle up to
+// where the intrados meets the crown plane; the crown joint is vertical.
 struct PointedArchSpec {
   int blocks = 20;            // voussoirs, even (half on each side of the crown)
   double radius = 1.0;        // half the centreline span, m
