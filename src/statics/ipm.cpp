@@ -166,8 +166,9 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       }
       const int sz = blk.size;
       Mat4 inv = Mat4::Zero();
-      const Eigen::MatrixXd Hs = H.topLeftCorner(sz, sz);
-      inv.topLeftCorner(sz, sz) = Hs.ldlt().solve(Eigen::MatrixXd::Identity(sz, sz));
+      using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+      const Small Hs = H.topLeftCorner(sz, sz);
+      inv.topLeftCorner(sz, sz) = Hs.ldlt().solve(Small::Identity(sz, sz));
       hinv[j] = inv;
     }
     // Schur complement A H⁻¹ Aᵀ (lower triangle), with a diagonal entry on every row. The
@@ -203,6 +204,17 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int j = 0; j < nb; ++j) {
         const auto& bc = cols[j];
         const int sz = qp.blocks[j].size;
+        // A vertex block touches the 12 rows of its two blocks: fixed-capacity, no allocation.
+        using Cols = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 4>;
+        using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
+        if (bc.rows.size() <= 12) {
+          const Cols AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
+          const Square block = AH * bc.vals.leftCols(sz).transpose();
+          std::size_t k = 0;
+          for (std::size_t p = 0; p < bc.rows.size(); ++p)
+            for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+          continue;
+        }
         const Eigen::MatrixXd AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
         const Eigen::MatrixXd block = AH * bc.vals.leftCols(sz).transpose();
         std::size_t k = 0;

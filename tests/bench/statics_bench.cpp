@@ -1,0 +1,71 @@
+// Masonry statics: one penalty QP on walls of about 100, 1,000 and 5,000 blocks, and one
+// iteration of the parameter search (one QP and its envelope gradient) on the paper's
+// examples. Results: docs/benchmarks.md.
+#include "statics/analysis.h"
+#include "statics/builder.h"
+#include "statics/examples.h"
+#include "statics/search.h"
+#include "statics/sensitivity.h"
+#include "statics/wall.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace corbel::statics;
+
+// A running-bond wall of half-metre blocks, about `blocks` of them, as wide as it is tall.
+Assembly wall(int blocks) {
+  WallSpec w;
+  const int perCourse = int(std::lround(std::sqrt(blocks)));
+  w.blockLength = 0.5;
+  w.length = perCourse * w.blockLength;
+  w.courses = perCourse;
+  w.height = perCourse * 0.25;
+  w.thickness = 0.4;
+  StructureBuilder b;
+  b.add("wall", wallBlocks(w));
+  b.groundUnder(1.0);
+  return b.build();
+}
+
+void WallQP(benchmark::State& state) {
+  const Assembly as = wall(int(state.range(0)));
+  AnalysisResult r;
+  for (auto _ : state) {
+    r = analyse(as);
+    benchmark::DoNotOptimize(r.y);
+  }
+  state.counters["blocks"] = double(as.blocks.size() - 1);
+  state.counters["iterations"] = r.iterations;
+  state.counters["optimal"] = r.status == SolveStatus::Optimal;
+}
+BENCHMARK(WallQP)->Arg(100)->Arg(1000)->Arg(5000)->Unit(benchmark::kMillisecond);
+
+void SearchIteration(benchmark::State& state, const ParametricModel& model) {
+  for (auto _ : state) {
+    const MeasureEvaluation ev = evaluateMeasure(model, model.parameters, model.suggestedFree, {}, true);
+    benchmark::DoNotOptimize(ev.gradient.data());
+  }
+}
+void BarrelVaultIteration(benchmark::State& state) { SearchIteration(state, barrelVaultExample()); }
+void TowerIteration(benchmark::State& state) { SearchIteration(state, towerExample()); }
+BENCHMARK(BarrelVaultIteration)->Unit(benchmark::kMillisecond);
+BENCHMARK(TowerIteration)->Unit(benchmark::kMillisecond);
+
+// Fig. 13's interactive update: the span changed, the buttress width searched again from
+// the previous solution.
+void BarrelVaultSearch(benchmark::State& state) {
+  const ParametricModel m = barrelVaultExample();
+  for (auto _ : state) {
+    const auto r = corbel::statics::searchParameters(m, m.suggestedFree);
+    benchmark::DoNotOptimize(r.measure);
+  }
+}
+BENCHMARK(BarrelVaultSearch)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
