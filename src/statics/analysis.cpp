@@ -139,6 +139,7 @@ BlockQP penaltyQP(const EquilibriumSystem& p) {
   qp.A.resize(p.rows, col);
   qp.A.setFromTriplets(trips.begin(), trips.end());
   qp.b = -p.w;
+  qp.rowGroup = 6;
   return qp;
 }
 
@@ -228,6 +229,7 @@ FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& op
   qp.A.resize(p.rows, col);
   qp.A.setFromTriplets(trips.begin(), trips.end());
   qp.b = -p.w;
+  qp.rowGroup = 6;
   const IpmResult sol = solveBlockQP(qp, opt.solver);
   FeasibilityResult r;
   r.status = sol.status;

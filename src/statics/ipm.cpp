@@ -1,7 +1,10 @@
 #include "statics/ipm.h"
 
+#include "statics/block_ldlt.h"
+
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -33,6 +36,81 @@ double maxStep(const VectorXd& v, const VectorXd& dv) {
 }
 
 bool allFinite(const VectorXd& v) { return v.allFinite(); }
+
+// One interface to the factorisations of S (IpmOptions::schurSolver). S arrives as the lower
+// triangle of a scalar sparse matrix; the block factorisation scatters it into 6×6 blocks
+// through a map built once.
+class SchurFactor {
+ public:
+  SchurFactor(SchurSolver kind, int rowGroup) : kind_(kind) {
+    if (kind_ == SchurSolver::BlockLdlt && rowGroup != 6) kind_ = SchurSolver::EigenLdlt;
+  }
+  void analyze(const Eigen::SparseMatrix<double>& S) {
+    if (kind_ == SchurSolver::BlockLdlt && S.rows() % 6 != 0) kind_ = SchurSolver::EigenLdlt;
+    if (kind_ == SchurSolver::Cholmod) {
+      cholmod_.analyzePattern(S);
+    } else if (kind_ == SchurSolver::EigenLdlt) {
+      ldlt_.analyzePattern(S);
+    } else {
+      std::vector<std::pair<int, int>> pairs;
+      for (int c = 0; c < S.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(S, c); it; ++it) pairs.emplace_back(int(it.row()) / 6, c / 6);
+      std::sort(pairs.begin(), pairs.end());
+      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+      blocks_.analyze(int(S.rows() / 6), pairs);
+      // Each stored scalar of S goes to one or (off the diagonal of a diagonal block) two
+      // places of the blocks: index = slot × 36 + column-major offset.
+      scatter_.clear();
+      for (int c = 0; c < S.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(S, c); it; ++it) {
+          const int r = int(it.row()), gi = r / 6, gj = c / 6, oi = r % 6, oj = c % 6;
+          const BlockLdlt::Slot sl = blocks_.slot(gi, gj);
+          if (gi == gj) {
+            scatter_.push_back({36 * sl.index + oi + 6 * oj, oi != oj ? 36 * sl.index + oj + 6 * oi : -1});
+          } else {
+            scatter_.push_back({sl.transposed ? 36 * sl.index + oj + 6 * oi : 36 * sl.index + oi + 6 * oj, -1});
+          }
+        }
+    }
+  }
+  // False when S is not (numerically) positive definite.
+  bool factorize(const Eigen::SparseMatrix<double>& S) {
+    if (kind_ == SchurSolver::Cholmod) {
+      cholmod_.factorize(S);
+      return cholmod_.info() == Eigen::Success;
+    }
+    if (kind_ == SchurSolver::BlockLdlt) {
+      std::vector<BlockLdlt::Block>& v = blocks_.values();
+      for (BlockLdlt::Block& b : v) b.setZero();
+      double* out = v.empty() ? nullptr : v[0].data();
+      const double* in = S.valuePtr();
+      for (std::size_t k = 0; k < scatter_.size(); ++k) {
+        out[scatter_[k][0]] += in[k];
+        if (scatter_[k][1] >= 0) out[scatter_[k][1]] += in[k];
+      }
+      return blocks_.factorize();
+    }
+    ldlt_.factorize(S);
+    if (ldlt_.info() != Eigen::Success) return false;
+    const VectorXd D = ldlt_.vectorD();
+    const double dmax = D.size() ? D.cwiseAbs().maxCoeff() : 1.0;
+    for (Eigen::Index i = 0; i < D.size(); ++i)
+      if (!(D[i] > 1e-15 * dmax)) return false;
+    return true;
+  }
+  VectorXd solve(const VectorXd& b) {
+    if (kind_ == SchurSolver::Cholmod) return cholmod_.solve(b);
+    if (kind_ == SchurSolver::BlockLdlt) return blocks_.solve(b);
+    return ldlt_.solve(b);
+  }
+
+ private:
+  SchurSolver kind_;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholmod_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
+  BlockLdlt blocks_;
+  std::vector<std::array<int, 2>> scatter_;
+};
 
 }  // namespace
 
@@ -107,7 +185,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       }
   }
 
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  SchurFactor ldlt(options.schurSolver, qp.rowGroup);
   bool analysed = false;
   std::vector<Mat4> hinv(nb);
   std::vector<Eigen::Triplet<double>> trips;
@@ -194,7 +272,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
           for (std::size_t q = 0; q <= p; ++q)
             blockSlots[std::size_t(j)].push_back(slot(std::max(rows[p], rows[q]), std::min(rows[p], rows[q])));
       }
-      ldlt.analyzePattern(S);
+      ldlt.analyze(S);
       analysed = true;
     }
     auto factor = [&]() {
@@ -221,13 +299,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         for (std::size_t p = 0; p < bc.rows.size(); ++p)
           for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
       }
-      ldlt.factorize(S);
-      if (ldlt.info() != Eigen::Success) return false;
-      const VectorXd D = ldlt.vectorD();
-      const double dmax = D.size() ? D.cwiseAbs().maxCoeff() : 1.0;
-      for (Eigen::Index i = 0; i < D.size(); ++i)
-        if (!(D[i] > 1e-15 * dmax)) return false;
-      return true;
+      return ldlt.factorize(S);
     };
     bool ok = factor();
     for (int attempt = 0; !ok && attempt < 8; ++attempt) {

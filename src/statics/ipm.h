@@ -27,6 +27,9 @@ struct BlockQP {
   std::vector<VarBlock> blocks;
   Eigen::SparseMatrix<double> A;  // equations × variables
   Eigen::VectorXd b;
+  // Equations come in groups of this many consecutive rows (6: force and torque of a block);
+  // SchurSolver::BlockLdlt needs 6, other values fall back to Eigen's SimplicialLDLT.
+  int rowGroup = 1;
 };
 
 enum class SolveStatus {
@@ -37,7 +40,15 @@ enum class SolveStatus {
 
 std::string toString(SolveStatus s);
 
+// The factorisation of the Schur complement A H⁻¹ Aᵀ in every Newton step.
+enum class SchurSolver {
+  BlockLdlt,   // ours (block_ldlt.h): LDLᵀ on 6×6 blocks, AMD on the graph of blocks; needs rowGroup 6
+  Cholmod,     // CHOLMOD's supernodal LLᵀ (SuiteSparse), AMD/METIS ordering chosen by CHOLMOD
+  EigenLdlt    // Eigen's SimplicialLDLT with AMD ordering
+};
+
 struct IpmOptions {
+  SchurSolver schurSolver = SchurSolver::BlockLdlt;
   int maxIterations = 80;
   double residualTolerance = 1e-11;  // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
   double gapTolerance = 1e-13;       // absolute, on sᵀz (loads are normalised, so O(1))
