@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -131,6 +132,10 @@ int exampleCommand(const Options& a) {
     out["stands"] = r.feasible;
     out["status"] = statics::toString(r.status);
     out["iterations"] = r.iterations;
+    out["tension_sites"] = r.tensionSites.size();
+    double gauge = 0;
+    for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
+    out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
   } else {
     std::vector<statics::FreeParameter> free;
     for (const std::string& f : a.frees) free.push_back(statics::parseFreeParameter(f));

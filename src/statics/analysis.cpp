@@ -85,6 +85,27 @@ EquilibriumSystem prepareEquilibrium(const Assembly& as, const AnalysisOptions& 
   return p;
 }
 
+namespace {
+
+// The gauge of p about the polygon's area centroid c: max over edges of how far p − c reaches
+// towards the edge's line, in units of the centroid's distance to it (the polygon is convex).
+double pressureGauge(const Interface& itf, const Vec3& p) {
+  double g = 0;
+  const std::size_t n = itf.polygon.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 a = itf.polygon[k], b = itf.polygon[(k + 1) % n];
+    Vec3 out = cross(b - a, itf.normal);  // in-plane, away from the interior (counter-clockwise polygon)
+    const double len = out.norm();
+    if (len <= 0) continue;
+    out /= len;
+    const double reach = dot(a - itf.centroid, out);
+    if (reach > 0) g = std::max(g, dot(p - itf.centroid, out) / reach);
+  }
+  return g;
+}
+
+}  // namespace
+
 bool sameLayout(const EquilibriumSystem& x, const EquilibriumSystem& y) {
   if (x.rowOf != y.rowOf || x.contacts.interfaces.size() != y.contacts.interfaces.size()) return false;
   for (std::size_t i = 0; i < x.contacts.interfaces.size(); ++i) {
@@ -191,8 +212,14 @@ AnalysisResult analyseSystem(const EquilibriumSystem& p, const AnalysisOptions& 
     }
     f.tangentialForce = (f.resultant - itf.normal * f.normalForce).norm();
     f.centreOfPressure = f.normalForce > 0 ? moment / f.normalForce : itf.centroid;
+    f.pressureGauge = f.normalForce > 0 ? pressureGauge(itf, f.centreOfPressure) : std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < f.vertices.size(); ++k)
+      if (f.vertices[k].tension > kTensionSite * W)
+        r.tensionSites.push_back({int(r.interfaces.size()), int(k), f.vertices[k].point, f.vertices[k].tension});
     r.interfaces.push_back(std::move(f));
   }
+  std::stable_sort(r.tensionSites.begin(), r.tensionSites.end(),
+                   [](const TensionSite& a, const TensionSite& b) { return a.tension > b.tension; });
   return r;
 }
 

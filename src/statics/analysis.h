@@ -37,7 +37,22 @@ struct InterfaceForces {
   double tangentialForce = 0; // magnitude of the net in-plane force, N
   // Where the net normal force acts (the centre of pressure); meaningful when normalForce > 0.
   Vec3 centreOfPressure{0.0};
+  // The centre of pressure relative to the contact polygon, as the factor by which the polygon
+  // must be scaled about its area centroid to reach it (Sec. 3.4, Fig. 7): 0 at the centroid,
+  // 1 on the boundary, above 1 outside (only tension can put it there). The kern shrink s
+  // keeps it within 1 − s; a rectangle's middle third along an axis is 1/3. Infinite when the
+  // net normal force is not compressive.
+  double pressureGauge = 0;
   double maxTension = 0;      // the largest f_n⁻ at a vertex, N
+};
+
+// A contact vertex carrying tension (f_n⁻ > kTensionSite·W): where the structure would need
+// glue (Sec. 3.2, Fig. 6).
+struct TensionSite {
+  int interface = -1;  // index into AnalysisResult::interfaces
+  int vertex = -1;     // index into that interface's vertices
+  Vec3 point{0.0};
+  double tension = 0;  // N
 };
 
 struct AnalysisResult {
@@ -49,6 +64,7 @@ struct AnalysisResult {
   bool feasible = false;           // optimal and y/W² ≤ kFeasibleMeasure
   double equilibriumResidual = 0;  // ‖A f + w‖ / ‖w‖
   std::vector<InterfaceForces> interfaces;
+  std::vector<TensionSite> tensionSites;  // largest tension first
   std::vector<std::string> warnings;
   Eigen::VectorXd multipliers;  // of the equilibrium rows, for loads normalised by W
   Eigen::VectorXd solution;     // the QP's x: [f_n⁺, f_n⁻, f_t1, f_t2] per vertex, in units of W

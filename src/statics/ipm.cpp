@@ -8,6 +8,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -17,6 +18,7 @@ std::string toString(SolveStatus s) {
   switch (s) {
     case SolveStatus::Optimal: return "optimal";
     case SolveStatus::IterationLimit: return "iteration limit";
+    case SolveStatus::TimeLimit: return "time limit";
     case SolveStatus::NumericalFailure: return "numerical failure";
   }
   return "unknown";
@@ -218,6 +220,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
            (gap <= options.gapTolerance || gap <= options.relativeGapTolerance * std::abs(obj));
   };
 
+  const auto started = std::chrono::steady_clock::now();
   for (int iter = 0;; ++iter) {
     const VectorXd gx = Gx(x);
     const VectorXd rd = qdiag.cwiseProduct(x) + c - qp.A.transpose() * y - GTv(z);
@@ -230,6 +233,12 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       return best;
     }
     if (iter >= options.maxIterations) break;
+    if (options.maxSeconds > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > options.maxSeconds) {
+      best.status = SolveStatus::TimeLimit;
+      best.regularisations = res.regularisations;
+      return best;
+    }
     const double mu = mi ? gap / mi : 0.0;
     const VectorXd d = z.cwiseQuotient(s);
 

@@ -35,6 +35,7 @@ struct BlockQP {
 enum class SolveStatus {
   Optimal,          // residuals and duality gap within tolerance
   IterationLimit,   // the iteration cap was reached; the best iterate is returned
+  TimeLimit,        // the time cap was reached; the best iterate is returned
   NumericalFailure  // the Newton system could not be factored even with regularisation
 };
 
@@ -50,6 +51,7 @@ enum class SchurSolver {
 struct IpmOptions {
   SchurSolver schurSolver = SchurSolver::BlockLdlt;
   int maxIterations = 80;
+  double maxSeconds = 0;  // wall-clock cap on one solve, 0 for none
   double residualTolerance = 1e-11;  // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
   double gapTolerance = 1e-13;       // absolute, on sᵀz (loads are normalised, so O(1))
   double relativeGapTolerance = 1e-10;  // or relative to |objective|

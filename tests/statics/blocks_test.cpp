@@ -107,6 +107,51 @@ TEST(BlockStatics, KernShrinkTurnsAJustFeasibleOverhangInfeasible) {
   EXPECT_FALSE(analyse(stack(0, 0.49), kern).feasible);
 }
 
+// The centre of pressure against the contact polygon: top cube at offset 0.3 rests on
+// [0.3, 1] (centroid 0.65) with its weight at 0.8: gauge 0.15/0.35; the ground carries both
+// cubes' centroid 0.65 on [0, 1] (centroid 0.5): gauge 0.15/0.5. A straight stack: 0.
+TEST(BlockStatics, PressureGaugePlacesTheResultantInTheContact) {
+  const AnalysisResult r = analyse(stack(0, 0.3));
+  ASSERT_EQ(r.interfaces.size(), 2u);
+  for (const InterfaceForces& f : r.interfaces) {
+    const double expected = f.a == 1 ? 0.15 / 0.35 : 0.15 / 0.5;
+    EXPECT_NEAR(f.pressureGauge, expected, 1e-6) << f.a << "-" << f.b;
+  }
+  EXPECT_TRUE(r.tensionSites.empty());
+  for (const InterfaceForces& f : analyse(stack(0, 0)).interfaces) EXPECT_NEAR(f.pressureGauge, 0.0, 1e-6);
+}
+
+// Past tipping the top cube (weight Wc at x = 1.2) on the contact [0.7, 1] needs tension T at
+// the edge x = 0.7: moments about x = 1 give 0.3 T = 0.2 Wc, T = 2/3 Wc, shared by the two
+// corners there (symmetry in y). So y = 2 (Wc/3)² and y/W² = 1/18 with W = 2 Wc, and the
+// tension sites are those two corners.
+TEST(BlockStatics, TensionSitesOfATippedOverhangAreHandComputed) {
+  const AnalysisResult r = analyse(stack(0, 0.7));
+  ASSERT_EQ(r.status, SolveStatus::Optimal);
+  EXPECT_NEAR(r.yNormalised, 1.0 / 18.0, 1e-7);
+  const double cube = 2400 * 9.81;
+  ASSERT_EQ(r.tensionSites.size(), 2u);
+  for (const TensionSite& t : r.tensionSites) {
+    EXPECT_NEAR(t.point[0], 0.7, 1e-9);
+    EXPECT_NEAR(t.point[2], 1.0, 1e-9);
+    EXPECT_NEAR(t.tension, cube / 3, 1e-5 * cube);
+    const InterfaceForces& f = r.interfaces[std::size_t(t.interface)];
+    EXPECT_EQ(f.a, 1);
+    EXPECT_EQ(f.b, 2);
+    EXPECT_NEAR(f.vertices[std::size_t(t.vertex)].tension, t.tension, 1e-9);
+  }
+}
+
+// A time cap returns the best iterate with its own status (any real solve takes over 1 ns).
+TEST(BlockStatics, SolverTimeCapStopsWithItsStatus) {
+  AnalysisOptions o;
+  o.solver.maxSeconds = 1e-9;
+  const AnalysisResult r = analyse(stack(0, 0.7), o);
+  EXPECT_EQ(r.status, SolveStatus::TimeLimit);
+  EXPECT_FALSE(r.feasible);
+  EXPECT_EQ(toString(r.status), "time limit");
+}
+
 TEST(BlockStatics, ContactPolygonIsTheOverlapOfTheFaces) {
   const AnalysisResult r = analyse(stack(0, 0.3));
   ASSERT_EQ(r.interfaces.size(), 2u);

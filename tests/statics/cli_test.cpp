@@ -68,7 +68,9 @@ TEST(StaticsCli, ExampleSearchPrintsAFeasibleResultAsJson) {
   // Without --optimize: the measure at the defaults, which do not stand.
   const CliRun plain = cli("example arch-on-columns --json");
   ASSERT_EQ(plain.code, 0);
-  EXPECT_FALSE(nlohmann::json::parse(plain.out)["stands"].get<bool>());
+  const nlohmann::json pj = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(pj["stands"].get<bool>());
+  EXPECT_GT(pj["tension_sites"].get<int>(), 0);
 }
 
 TEST(StaticsCli, ExampleRefusesBadNamesAndBounds) {
