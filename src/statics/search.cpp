@@ -219,4 +219,14 @@ SearchResult searchParameters(const ParametricModel& model, const std::vector<Fr
   return r;
 }
 
+SearchResult updateAfterEdit(const ParametricModel& model, const std::vector<FreeParameter>& free,
+                             const ParameterSet& previous, const std::string& name, double value,
+                             const SearchOptions& options) {
+  for (const FreeParameter& f : free)
+    if (f.name == name) throw Error("interactive edit: '" + name + "' is a free parameter; the search sets it");
+  ParameterSet start = previous;
+  start.set(name, value);
+  return searchParameters(model, free, options, &start);
+}
+
 }  // namespace corbel::statics

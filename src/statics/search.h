@@ -31,7 +31,10 @@ struct SearchProgress {
 
 struct SearchOptions {
   AnalysisOptions analysis;
-  std::string algorithm = "slsqp";  // "slsqp" (sequential quadratic programming, as the paper), "mma", "lbfgs"
+  // "mma" (method of moving asymptotes: conservative steps, so the result stays near the
+  // start), "slsqp" (sequential quadratic programming, as the paper; its first steps often
+  // jump to a bound), "lbfgs".
+  std::string algorithm = "mma";
   int maxEvaluations = 200;         // QPs
   double maxSeconds = 0;            // 0: no time cap
   double stopMeasure = kFeasibleMeasure;  // y/W² at or below which the structure counts as standing
@@ -62,5 +65,13 @@ struct SearchResult {
 // valid range) and an unknown algorithm; failures during the search are a status instead.
 SearchResult searchParameters(const ParametricModel& model, const std::vector<FreeParameter>& free,
                               const SearchOptions& options = {}, const ParameterSet* start = nullptr);
+
+// Interactive editing (Sec. 5 "Editing Parameters", Fig. 13): the user has set the fixed
+// parameter `name` to `value`; the free parameters are searched again starting from
+// `previous` (the last result's values), which is usually close. Throws corbel::Error when
+// `name` is one of the free parameters or unknown.
+SearchResult updateAfterEdit(const ParametricModel& model, const std::vector<FreeParameter>& free,
+                             const ParameterSet& previous, const std::string& name, double value,
+                             const SearchOptions& options = {});
 
 }  // namespace corbel::statics

@@ -160,6 +160,35 @@ TEST(ParameterSearch, TowerOfThirtyTwoParametersIsMadeToStand) {
   }
 }
 
+// Fig. 13: as the span of the vault grows, the buttress width is searched again from the last
+// result. Every update ends standing (LP oracle); a wider span never needs a narrower buttress
+// than the last (the search starts there and only moves while the vault does not stand). Once
+// the span makes the vault thinner than its arch can stand (t/R below the bisection's least
+// thickness for 12 voussoirs), no buttress helps: a local minimum, never "feasible".
+TEST(ParameterSearch, WideningTheVaultReSolvesTheButtressWidth) {
+  const ParametricModel m = barrelVaultExample();
+  const std::vector<FreeParameter> free = m.suggestedFree;
+  SearchResult r = searchParameters(m, free);
+  ASSERT_EQ(r.status, SearchStatus::Feasible) << r.message;
+  double width = r.values["buttressWidth"];
+  for (double radius : {2.1, 2.2}) {
+    r = updateAfterEdit(m, free, r.values, "radius", radius);
+    EXPECT_EQ(r.status, SearchStatus::Feasible) << radius << ": " << r.message;
+    EXPECT_TRUE(r.standsStrictly) << radius;
+    EXPECT_EQ(r.values["radius"], radius);
+    EXPECT_GE(r.values["buttressWidth"], width - 1e-12) << radius;
+    width = r.values["buttressWidth"];
+  }
+  ArchSpec ring;
+  ring.blocks = 12;
+  const double least = minimumArchThickness(ring, {}, 1e-5);
+  const double tooWide = 1.1 * m.parameters["thickness"] / least;
+  const SearchResult wide = updateAfterEdit(m, free, r.values, "radius", tooWide);
+  EXPECT_EQ(wide.status, SearchStatus::LocalMinimum) << wide.message;
+  EXPECT_FALSE(wide.standsStrictly);
+  EXPECT_THROW(updateAfterEdit(m, free, r.values, "buttressWidth", 1.0), Error);
+}
+
 TEST(ParameterSearch, BadFreeParametersGetAClearError) {
   auto message = [](const std::function<void()>& f) {
     try {
