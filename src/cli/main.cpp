@@ -50,7 +50,7 @@ usage:
                     it stands); --min-thickness the least t/R that stands (T ignored);
                     --critical-tilt the ground tilt in degrees at which it stops standing.
   corbel-cli statics example NAME [--set NAME=V ...] [--optimize] [--free NAME=LO:HI ...]
-                    [--algorithm slsqp|mma|lbfgs] [--max-evaluations N] [--max-seconds S]
+                    [--algorithm mma|slsqp|lbfgs] [--max-evaluations N] [--max-seconds S]
                     [--kern S] [--friction A] [--json]
                     NAME: tower (Fig. 11), arch-on-columns (Fig. 8), barrel-vault (Fig. 13).
                     Prints y/W² and the solver status; --optimize searches the free

@@ -46,6 +46,7 @@ struct Search {
   int evaluations = 0;
   std::vector<double> history;
   double bestMeasure = std::numeric_limits<double>::infinity();
+  double bestY = 0;  // y in N² at the best iterate
   std::vector<double> best;
   std::string failure;
   bool cancelled = false;
@@ -70,6 +71,7 @@ double objective(unsigned n, const double* x, double* grad, void* data) {
     s.history.push_back(ev.measure);
     if (ev.measure < s.bestMeasure) {
       s.bestMeasure = ev.measure;
+      s.bestY = ev.analysis.y;
       s.best.assign(x, x + n);
     }
     if (grad)
@@ -171,19 +173,29 @@ SearchResult searchParameters(const ParametricModel& model, const std::vector<Fr
   } else {
     s.evaluations = 1;
     s.history.push_back(first.measure);
+    s.bestMeasure = first.measure;
+    s.bestY = first.analysis.y;
   }
 
   r.evaluations = s.evaluations;
   r.history = s.history;
   r.values = s.at(x.data());
-  // The result, with its gradient, for the report (one more QP).
+  // The result. A standing one has y ≡ 0 around it, so its gradient is 0 and the best
+  // evaluation says all; otherwise one more QP gives the gradient for the report.
   try {
-    const MeasureEvaluation last = evaluateMeasure(model, r.values, free, options.analysis, true);
-    r.measure = last.measure;
-    r.y = last.analysis.y;
-    r.gradient = last.gradient;
-    r.projectedGradient = projected(last.gradient, x, free);
-    r.standsStrictly = checkFeasibility(model.build(r.values), options.analysis).feasible;
+    if (s.bestMeasure <= options.stopMeasure) {
+      r.measure = s.bestMeasure;
+      r.y = s.bestY;
+      r.gradient.assign(n, 0.0);
+      r.projectedGradient = 0;
+    } else {
+      const MeasureEvaluation last = evaluateMeasure(model, r.values, free, options.analysis, true);
+      r.measure = last.measure;
+      r.y = last.analysis.y;
+      r.gradient = last.gradient;
+      r.projectedGradient = projected(last.gradient, x, free);
+    }
+    if (options.strictCheck) r.standsStrictly = checkFeasibility(model.build(r.values), options.analysis).feasible;
   } catch (const std::exception& e) {
     r.measure = s.bestMeasure;
     if (s.failure.empty()) s.failure = std::string("at the result: ") + e.what();

@@ -40,6 +40,9 @@ struct SearchOptions {
   double stopMeasure = kFeasibleMeasure;  // y/W² at or below which the structure counts as standing
   double xTolerance = 1e-9;         // relative step below which the search has converged
   double fTolerance = 1e-12;        // relative change of y below which it has converged
+  // Check the result with the strict LP phase-1 test too (SearchResult::standsStrictly);
+  // interactive updates may leave it off to save one LP.
+  bool strictCheck = true;
   // Called after every evaluation; return false to cancel.
   std::function<bool(const SearchProgress&)> progress;
 };
@@ -53,7 +56,7 @@ struct SearchResult {
   double y = 0;                  // y in N² at the result
   std::vector<double> gradient;  // d(y/W²)/dθ at the result
   double projectedGradient = 0;  // ‖gradient projected on the bounds‖∞, 0 at a bound-constrained stationary point
-  bool standsStrictly = false;   // the LP phase-1 test at the result (exact, no tolerance on y)
+  bool standsStrictly = false;   // the LP phase-1 test at the result (exact, no tolerance on y); false unless strictCheck
   ParameterSet values;           // every parameter at the result
   std::vector<FreeParameter> free;
   std::vector<double> history;   // y/W² per evaluation

@@ -73,13 +73,16 @@ BENCHMARK(BarrelVaultSearch)->Unit(benchmark::kMillisecond);
 void BarrelVaultUpdate(benchmark::State& state) {
   const ParametricModel m = barrelVaultExample();
   const auto previous = corbel::statics::searchParameters(m, m.suggestedFree);
+  corbel::statics::SearchOptions o;
+  o.strictCheck = state.range(0) != 0;
   for (auto _ : state) {
-    const auto r = corbel::statics::updateAfterEdit(m, m.suggestedFree, previous.values, "radius", 2.3);
+    const auto r = corbel::statics::updateAfterEdit(m, m.suggestedFree, previous.values, "radius", 2.3, o);
     benchmark::DoNotOptimize(r.measure);
     state.counters["evaluations"] = r.evaluations;
   }
 }
-BENCHMARK(BarrelVaultUpdate)->Unit(benchmark::kMillisecond);
+// Argument: 1 with the strict LP check of the result, 0 without (what a drag loop needs).
+BENCHMARK(BarrelVaultUpdate)->Arg(1)->Arg(0)->ArgName("strict")->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
