@@ -136,24 +136,37 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     }
   }
 
+  // The inequality rows flattened: row i acts on variables offset[i] .. offset[i] + size[i] − 1
+  // with coefficients coef[4i ..].
+  std::vector<int> rowOffset(static_cast<std::size_t>(mi)), rowSize(static_cast<std::size_t>(mi));
+  std::vector<double> coef(4 * std::size_t(mi), 0.0);
+  for (int j = 0; j < nb; ++j) {
+    const VarBlock& blk = qp.blocks[j];
+    for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+      const std::size_t i = std::size_t(rowStart[j]) + r;
+      rowOffset[i] = blk.offset;
+      rowSize[i] = blk.size;
+      for (int k = 0; k < blk.size; ++k) coef[4 * i + std::size_t(k)] = blk.rows[r][k];
+    }
+  }
   auto Gx = [&](const VectorXd& v) {
     VectorXd out(mi);
-    for (int j = 0; j < nb; ++j) {
-      const VarBlock& blk = qp.blocks[j];
-      for (std::size_t r = 0; r < blk.rows.size(); ++r) {
-        double acc = 0;
-        for (int k = 0; k < blk.size; ++k) acc += blk.rows[r][k] * v[blk.offset + k];
-        out[rowStart[j] + int(r)] = acc;
-      }
+    for (std::size_t i = 0; i < std::size_t(mi); ++i) {
+      const double* g = &coef[4 * i];
+      const double* x0 = v.data() + rowOffset[i];
+      double acc = 0;
+      for (int k = 0; k < rowSize[i]; ++k) acc += g[k] * x0[k];
+      out[Eigen::Index(i)] = acc;
     }
     return out;
   };
   auto GTv = [&](const VectorXd& w) {
     VectorXd out = VectorXd::Zero(n);
-    for (int j = 0; j < nb; ++j) {
-      const VarBlock& blk = qp.blocks[j];
-      for (std::size_t r = 0; r < blk.rows.size(); ++r)
-        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] += blk.rows[r][k] * w[rowStart[j] + int(r)];
+    for (std::size_t i = 0; i < std::size_t(mi); ++i) {
+      const double* g = &coef[4 * i];
+      double* o = out.data() + rowOffset[i];
+      const double wi = w[Eigen::Index(i)];
+      for (int k = 0; k < rowSize[i]; ++k) o[k] += g[k] * wi;
     }
     return out;
   };
@@ -295,8 +308,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         using Cols = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 4>;
         using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
         if (bc.rows.size() <= 12) {
-          const Cols AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
-          const Square block = AH * bc.vals.leftCols(sz).transpose();
+          const Cols AH = bc.vals.leftCols(sz).lazyProduct(hinv[j].topLeftCorner(sz, sz));
+          const Square block = AH.lazyProduct(bc.vals.leftCols(sz).transpose());
           std::size_t k = 0;
           for (std::size_t p = 0; p < bc.rows.size(); ++p)
             for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
@@ -350,8 +363,9 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       const VectorXd rhs = -rp - qp.A * applyHinv(rho);
       dy = solveSchur(rhs);
       dx = applyHinv(rho + qp.A.transpose() * dy);
-      dz = -w - d.cwiseProduct(Gx(dx));
-      ds = Gx(dx) + rg;
+      const VectorXd gdx = Gx(dx);
+      dz = -w - d.cwiseProduct(gdx);
+      ds = gdx + rg;
       return allFinite(dx) && allFinite(dy) && allFinite(dz);
     };
     VectorXd dx, dy, dz, ds;
