@@ -68,7 +68,7 @@ void BarrelVaultSearch(benchmark::State& state) {
 }
 BENCHMARK(BarrelVaultSearch)->Unit(benchmark::kMillisecond);
 
-// One interactive update (Fig. 13): the span widened from 2 m to 2.3 m, the buttress width
+// One interactive update (Fig. 13): the radius widened from 2 m to 2.3 m (span 4 → 4.6 m), the buttress width
 // searched again from the previous result.
 void BarrelVaultUpdate(benchmark::State& state) {
   const ParametricModel m = barrelVaultExample();
