@@ -52,6 +52,7 @@ struct IpmOptions {
   SchurSolver schurSolver = SchurSolver::BlockLdlt;
   int maxIterations = 80;
   double maxSeconds = 0;  // wall-clock cap on one solve, 0 for none
+  int newtonRefinement = 1;  // correction steps on the unreduced Newton system (see ipm.cpp)
   double residualTolerance = 1e-11;  // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
   double gapTolerance = 1e-13;       // absolute, on sᵀz (loads are normalised, so O(1))
   double relativeGapTolerance = 1e-10;  // or relative to |objective|
