@@ -342,29 +342,20 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     regularisation *= 0.1;  // relax again once things go well
     if (regularisation < 1e-14) regularisation = 0;
 
-    // H⁻¹ v block by block.
-    auto applyHinv = [&](const VectorXd& v) {
+    // M v block by block, for M = H⁻¹ or H.
+    auto applyBlocks = [&](const std::vector<Mat4>& M, const VectorXd& v) {
       VectorXd out(n);
       for (int j = 0; j < nb; ++j) {
         const VarBlock& blk = qp.blocks[j];
         Eigen::Vector4d in = Eigen::Vector4d::Zero();
         for (int k = 0; k < blk.size; ++k) in[k] = v[blk.offset + k];
-        const Eigen::Vector4d o = hinv[j] * in;
+        const Eigen::Vector4d o = M[std::size_t(j)] * in;
         for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
       }
       return out;
     };
-    auto applyH = [&](const VectorXd& v) {
-      VectorXd out(n);
-      for (int j = 0; j < nb; ++j) {
-        const VarBlock& blk = qp.blocks[j];
-        Eigen::Vector4d in = Eigen::Vector4d::Zero();
-        for (int k = 0; k < blk.size; ++k) in[k] = v[blk.offset + k];
-        const Eigen::Vector4d o = hess[j] * in;
-        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
-      }
-      return out;
-    };
+    auto applyHinv = [&](const VectorXd& v) { return applyBlocks(hinv, v); };
+    auto applyH = [&](const VectorXd& v) { return applyBlocks(hess, v); };
     // S dy = rhs with one step of iterative refinement against S applied as A H⁻¹ Aᵀ (near the
     // optimum S mixes entries of very different sizes, z/s → 0 or ∞).
     auto solveSchur = [&](const VectorXd& rhs) {
