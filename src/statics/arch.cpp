@@ -112,4 +112,55 @@ Assembly pointedArch(const PointedArchSpec& spec) {
   return onGround(std::move(blocks), spec.radius + 1.5 * spec.thickness, spec.thickness, spec.depth, spec.tiltDeg);
 }
 
+namespace {
+
+// The unscaled centreline and its derivative at parameter u.
+Vec2 bezierPoint(const BezierArchSpec& s, double u) {
+  const Vec2 p0(-s.radius, 0.0), p1(s.x1, 1.0), p2(s.x2, 1.0), p3(s.radius, 0.0);
+  const double v = 1 - u;
+  return p0 * (v * v * v) + p1 * (3 * v * v * u) + p2 * (3 * v * u * u) + p3 * (u * u * u);
+}
+Vec2 bezierTangent(const BezierArchSpec& s, double u) {
+  const Vec2 p0(-s.radius, 0.0), p1(s.x1, 1.0), p2(s.x2, 1.0), p3(s.radius, 0.0);
+  const double v = 1 - u;
+  return (p1 - p0) * (3 * v * v) + (p2 - p1) * (6 * v * u) + (p3 - p2) * (3 * u * u);
+}
+
+}  // namespace
+
+std::vector<ArchJoint> bezierJoints(const BezierArchSpec& spec) {
+  if (spec.blocks < 2 || spec.blocks > 100000) throw Error("Bezier arch: the number of voussoirs must be in 2..100000");
+  checkCommon(spec.radius, spec.thickness, spec.depth, 0.0, spec.density, "Bezier arch");
+  if (!std::isfinite(spec.height) || spec.height <= 0) throw Error("Bezier arch: the height must be a positive number");
+  if (!std::isfinite(spec.x1) || !std::isfinite(spec.x2)) throw Error("Bezier arch: the control points must be finite");
+  // Height scale: the unscaled curve's highest point (the control points are at z = 1, the
+  // curve peaks at most 3/4 there), found on a fine sampling.
+  double top = 0;
+  for (int i = 0; i <= 2000; ++i) top = std::max(top, bezierPoint(spec, i / 2000.0)[1]);
+  const double scale = spec.height / top;
+  const int n = spec.blocks;
+  std::vector<ArchJoint> joints(std::size_t(n) + 1);
+  const double h = spec.thickness / 2;
+  joints[0] = {Vec2(-spec.radius + h, 0.0), Vec2(-spec.radius - h, 0.0)};
+  joints[std::size_t(n)] = {Vec2(spec.radius - h, 0.0), Vec2(spec.radius + h, 0.0)};
+  for (int k = 1; k < n; ++k) {
+    const double u = double(k) / n;
+    Vec2 c = bezierPoint(spec, u), t = bezierTangent(spec, u);
+    c[1] *= scale;
+    t[1] *= scale;
+    Vec2 inward(t[1], -t[0]);  // the tangent turned clockwise: towards the intrados
+    inward /= inward.norm();
+    joints[std::size_t(k)] = {c + inward * h, c - inward * h};
+  }
+  return joints;
+}
+
+std::vector<Block> bezierArchBlocks(const BezierArchSpec& spec) {
+  return voussoirs(bezierJoints(spec), -spec.depth / 2, spec.depth / 2, spec.density);
+}
+
+Assembly bezierArch(const BezierArchSpec& spec) {
+  return onGround(bezierArchBlocks(spec), spec.radius + 1.5 * spec.thickness, spec.thickness, spec.depth, 0.0);
+}
+
 }  // namespace corbel::statics

@@ -57,4 +57,23 @@ std::vector<ArchJoint> pointedJoints(const PointedArchSpec& spec);
 std::vector<Block> pointedArchBlocks(const PointedArchSpec& spec);
 Assembly pointedArch(const PointedArchSpec& spec);  // on fixed ground at z = 0
 
+// The Bezier arch of Fig. 12: the centreline is the cubic Bezier from (−R, 0) to (R, 0) with
+// inner control points (x1, 1) and (x2, 1), its height then scaled to `height`; the two inner
+// control points' horizontal positions are the shape's parameters. Joint k sits at Bezier
+// parameter k/N across the centreline (perpendicular to its tangent), except the springings,
+// which are horizontal joints on z = 0 centred on ±R.
+struct BezierArchSpec {
+  int blocks = 20;
+  double radius = 1.0;     // half the centreline span, m
+  double height = 1.0;     // of the centreline's crown, m
+  double x1 = -1.0, x2 = 1.0;  // the inner control points' x (x1 = −R, x2 = R: a tall, round arch)
+  double thickness = 0.1;  // across the centreline, m
+  double depth = 0.5;
+  double density = 2400.0;
+};
+
+std::vector<ArchJoint> bezierJoints(const BezierArchSpec& spec);
+std::vector<Block> bezierArchBlocks(const BezierArchSpec& spec);
+Assembly bezierArch(const BezierArchSpec& spec);  // on fixed ground at z = 0
+
 }  // namespace corbel::statics

@@ -137,12 +137,35 @@ ParametricModel barrelVaultExample() {
   return m;
 }
 
-std::vector<std::string> exampleNames() { return {"tower", "arch-on-columns", "barrel-vault"}; }
+ParametricModel bezierArchExample() {
+  ParametricModel m;
+  m.name = "bezier-arch";
+  m.description = "Fig. 12: a thin arch whose centreline is a cubic Bezier; its inner control points move";
+  m.parameters.add(param("x1", -1.0, -2.0, 2.0, "x of the first inner control point (span ±1), m"));
+  m.parameters.add(param("x2", 1.0, -2.0, 2.0, "x of the second inner control point, m"));
+  m.parameters.add(param("height", 1.2, 0.2, 5.0, "height of the centreline's crown, m"));
+  m.parameters.add(param("thickness", 0.05, 0.01, 0.5, "thickness across the centreline, m"));
+  m.parameters.add(param("voussoirs", 16, 4, 400, "blocks of the arch", false));
+  m.suggestedFree = {{"x1", -1.5, 0.5}, {"x2", -0.5, 1.5}};
+  m.build = [](const ParameterSet& p) {
+    BezierArchSpec s;
+    s.blocks = count(p, "voussoirs");
+    s.x1 = p["x1"];
+    s.x2 = p["x2"];
+    s.height = p["height"];
+    s.thickness = p["thickness"];
+    return bezierArch(s);
+  };
+  return m;
+}
+
+std::vector<std::string> exampleNames() { return {"tower", "arch-on-columns", "barrel-vault", "bezier-arch"}; }
 
 ParametricModel exampleByName(const std::string& name) {
   if (name == "tower") return towerExample();
   if (name == "arch-on-columns") return archOnColumnsExample();
   if (name == "barrel-vault") return barrelVaultExample();
+  if (name == "bezier-arch") return bezierArchExample();
   std::string known;
   for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown example '" + name + "' (examples: " + known + ")");

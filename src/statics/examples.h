@@ -1,7 +1,7 @@
 #pragma once
 // The paper's example structures as parametric models built from the templates (Whiting et
-// al. 2009): the stacked tower (Fig. 11), the arch on two columns (Fig. 8) and the barrel
-// vault on buttressed walls (Fig. 13).
+// al. 2009): the stacked tower (Fig. 11), the arch on two columns (Fig. 8), the barrel vault
+// on buttressed walls (Fig. 13) and a Bezier arch (Fig. 12).
 #include "statics/parameters.h"
 
 #include <string>
@@ -23,6 +23,11 @@ ParametricModel archOnColumnsExample();
 // `wallThickness` and `wallHeight` in `courses`, each backed by a buttress of
 // `buttressWidth` per ring (140 blocks by default). Free by default: buttressWidth.
 ParametricModel barrelVaultExample();
+
+// Fig. 12: a thin arch (16 voussoirs, 0.05 m, span 2 m, crown 1.2 m) whose centreline is a
+// cubic Bezier with inner control points at x1, x2 (starting at ∓1: a round arch that does not
+// stand). Free by default: x1 in [−1.5, 0.5], x2 in [−0.5, 1.5].
+ParametricModel bezierArchExample();
 
 std::vector<std::string> exampleNames();
 // Throws corbel::Error for an unknown name, listing the known ones.

@@ -146,13 +146,20 @@ TEST(ParameterSearch, ArchThicknessSearchReachesTheMinimumThicknessOrMore) {
   EXPECT_GE(r.values["thickness"], least - 1e-3);
 }
 
-// Fig. 11: the 32-parameter tower starts leaning over and must end standing (LP oracle).
+// An example that does not stand at its defaults (LP oracle) must end standing, and the
+// strict LP test must agree with the search.
+SearchResult expectMadeToStand(const ParametricModel& m) {
+  EXPECT_FALSE(checkFeasibility(m.build(m.parameters)).feasible) << m.name;
+  const SearchResult r = searchParameters(m, m.suggestedFree);
+  EXPECT_EQ(r.status, SearchStatus::Feasible) << m.name << ": " << r.message;
+  EXPECT_TRUE(r.standsStrictly) << m.name;
+  return r;
+}
+
+// Fig. 11: the 32-parameter tower starts leaning over and must end standing.
 TEST(ParameterSearch, TowerOfThirtyTwoParametersIsMadeToStand) {
   const ParametricModel m = towerExample();
-  EXPECT_FALSE(checkFeasibility(m.build(m.parameters)).feasible);
-  const SearchResult r = searchParameters(m, m.suggestedFree);
-  EXPECT_EQ(r.status, SearchStatus::Feasible) << r.message;
-  EXPECT_TRUE(r.standsStrictly);
+  const SearchResult r = expectMadeToStand(m);
   EXPECT_TRUE(checkFeasibility(m.build(r.values)).feasible);
   for (const FreeParameter& f : m.suggestedFree) {
     EXPECT_GE(r.values[f.name], f.lo);
@@ -187,6 +194,20 @@ TEST(ParameterSearch, WideningTheVaultReSolvesTheButtressWidth) {
   EXPECT_EQ(wide.status, SearchStatus::LocalMinimum) << wide.message;
   EXPECT_FALSE(wide.standsStrictly);
   EXPECT_THROW(updateAfterEdit(m, free, r.values, "buttressWidth", 1.0), Error);
+}
+
+TEST(ParameterSearch, EnvelopeGradientMatchesDifferencesOnTheBezierArch) {
+  const ParametricModel m = bezierArchExample();
+  ParameterSet at = m.parameters;
+  at.set("x2", 0.7);  // asymmetric: both components differ
+  expectGradientMatchesDifferences(m, at, m.suggestedFree, 1e-5);
+}
+
+// Fig. 12: the round thin arch does not stand; moving the inner control points makes one that
+// does (LP oracle), and as the start and the bounds are mirror-symmetric, so is the result.
+TEST(ParameterSearch, BezierArchSearchFindsAStandingShape) {
+  const SearchResult r = expectMadeToStand(bezierArchExample());
+  EXPECT_NEAR(r.values["x1"], -r.values["x2"], 1e-6);
 }
 
 TEST(ParameterSearch, BadFreeParametersGetAClearError) {

@@ -210,6 +210,59 @@ TEST(Templates, BarrelVaultCountsVolumeAndStandsWithItsArch) {
   EXPECT_FALSE(stands(barrelVault(v)));
 }
 
+// The Bezier arch's centreline, written again here: the band of thickness t around a smooth
+// curve has area t × its length exactly (the inner and outer offsets' curvature terms cancel),
+// so the voussoirs' volume is that up to chords and the horizontal springing cuts.
+double bezierLength(const BezierArchSpec& s) {
+  auto point = [&](double u) {
+    const double v = 1 - u;
+    return Vec2(-s.radius * v * v * v + 3 * s.x1 * v * v * u + 3 * s.x2 * v * u * u + s.radius * u * u * u,
+                3 * v * v * u + 3 * v * u * u);
+  };
+  double top = 0;
+  for (int i = 0; i <= 100000; ++i) top = std::max(top, point(i / 100000.0)[1]);
+  double length = 0;
+  Vec2 prev = point(0);
+  prev[1] *= s.height / top;
+  for (int i = 1; i <= 100000; ++i) {
+    Vec2 q = point(i / 100000.0);
+    q[1] *= s.height / top;
+    length += (q - prev).norm();
+    prev = q;
+  }
+  return length;
+}
+
+TEST(Templates, BezierArchVolumeIsItsBandAndItsCrownItsHeight) {
+  BezierArchSpec s;
+  s.blocks = 64;
+  s.x1 = -0.8;
+  s.x2 = 0.3;
+  s.height = 1.3;
+  s.thickness = 0.05;
+  const Assembly as = bezierArch(s);
+  const double band = bezierLength(s) * s.thickness * s.depth;
+  EXPECT_NEAR(totalVolume(as), band, 0.005 * band);
+  EXPECT_EQ(contactCount(as), std::size_t(s.blocks + 1));
+  double crown = 0;
+  for (const ArchJoint& j : bezierJoints(s)) crown = std::max(crown, 0.5 * (j.inner[1] + j.outer[1]));
+  EXPECT_NEAR(crown, s.height, 2e-3 * s.height);
+}
+
+// Mirroring the control points (x1, x2) → (−x2, −x1) mirrors the arch: the same measure.
+TEST(Templates, BezierArchMirroredHasTheSameMeasure) {
+  BezierArchSpec a;
+  a.x1 = -1.2;
+  a.x2 = 0.4;
+  a.thickness = 0.05;
+  BezierArchSpec b = a;
+  b.x1 = -a.x2;
+  b.x2 = -a.x1;
+  const AnalysisResult ra = analyse(bezierArch(a)), rb = analyse(bezierArch(b));
+  ASSERT_GT(ra.yNormalised, 1e-6);
+  EXPECT_NEAR(ra.yNormalised, rb.yNormalised, 1e-7 * ra.yNormalised);
+}
+
 TEST(Templates, ExamplesHaveThePapersBlockCounts) {
   EXPECT_EQ(towerExample().build(towerExample().parameters).blocks.size(), 96u + 1);        // Fig. 11: 96 blocks
   EXPECT_EQ(barrelVaultExample().build(barrelVaultExample().parameters).blocks.size(), 140u + 1);  // Table 1: 140
