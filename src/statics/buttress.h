@@ -21,4 +21,23 @@ struct ButtressSpec {
 // x = 0 is flat (it stands against a wall), the other side steps in. Throws corbel::Error.
 std::vector<Block> buttressBlocks(const ButtressSpec& spec);
 
+// A flying buttress (Fig. 4, Fig. 13): a quarter arc of voussoirs with radial joints about the
+// centre (0, pierHeight), from a horizontal springing on top of its pier up to a vertical head
+// joint against the wall. In its frame the wall's outer face is the plane x = 0 and the
+// buttress reaches towards +x: the springing spans x ∈ [R − t/2, R + t/2] at z = pierHeight,
+// the head z ∈ [pierHeight + R − t/2, pierHeight + R + t/2] at x = 0; the pier (courses,
+// `pierWidth` wide) stands under the springing from z = 0.
+struct FlyingButtressSpec {
+  int blocks = 5;            // voussoirs of the quarter arc
+  double radius = 1.5;       // of the arc's centreline: reach from the wall, and rise
+  double thickness = 0.25;
+  double depth = 0.5;        // along y, from y = 0
+  double pierHeight = 1.5;   // the springing's height
+  double pierWidth = 0.6;    // along x, centred under the springing
+  int pierCourses = 3;
+  double density = 2400.0;
+};
+
+std::vector<Block> flyingButtressBlocks(const FlyingButtressSpec& spec);
+
 }  // namespace corbel::statics

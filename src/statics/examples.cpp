@@ -9,6 +9,7 @@
 #include "statics/vault.h"
 
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace corbel::statics {
@@ -28,6 +29,46 @@ Parameter param(std::string name, double value, double lo, double hi, std::strin
 }
 
 int count(const ParameterSet& p, const std::string& name) { return int(std::lround(p[name])); }
+
+// The parameters both vault examples share: the vault, its walls, the rings and courses.
+void addVaultParameters(ParametricModel& m, double wallHeight, double wallThickness) {
+  m.parameters.add(param("radius", 2.0, 0.3, 30.0, "centreline radius of the vault (half its span), m"));
+  m.parameters.add(param("thickness", 0.25, 0.02, 3.0, "thickness of the vault, m"));
+  m.parameters.add(param("length", 5.0, 0.1, 200.0, "length of the vault along its axis, m"));
+  m.parameters.add(param("wallHeight", wallHeight, 0.1, 50.0, "height of the walls, m"));
+  m.parameters.add(param("wallThickness", wallThickness, 0.02, 10.0, "thickness of the walls, m"));
+  m.parameters.add(param("voussoirs", 12, 2, 400, "voussoirs per ring", false));
+  m.parameters.add(param("rings", 5, 1, 400, "rings of the vault (and wall segments) along its axis", false));
+  m.parameters.add(param("courses", 4, 1, 100, "courses of the walls (and buttresses)", false));
+}
+
+// A barrel vault on two walls of courses, one wall segment per ring; `prop(ring, y, depth,
+// x)` adds what stands behind the +x wall's outer face x in that ring (mirrored for −x).
+Assembly vaultOnWalls(const ParameterSet& p,
+                      const std::function<std::vector<Block>(int, double, double, double)>& prop) {
+  BarrelVaultSpec vault;
+  vault.blocks = count(p, "voussoirs");
+  vault.rings = count(p, "rings");
+  vault.radius = p["radius"];
+  vault.thickness = p["thickness"];
+  vault.length = p["length"];
+  const double h = p["wallHeight"], wt = p["wallThickness"];
+  const double ring = vault.length / vault.rings;
+  const double inner = vault.radius - vault.thickness / 2;  // the walls' inner faces, |x|
+  std::vector<Block> side;  // the +x side, ring by ring
+  for (int r = 0; r < vault.rings; ++r) {
+    const double y = vault.length * r / vault.rings;
+    ButtressSpec wall{h, wt, wt, ring, count(p, "courses"), 2400.0};
+    for (Block& blk : placed(buttressBlocks(wall), Vec3(inner, y, 0.0), "wall " + std::to_string(r))) side.push_back(blk);
+    for (Block& blk : prop(r, y, ring, inner + wt)) side.push_back(blk);
+  }
+  StructureBuilder b;
+  b.add("vault", barrelVaultBlocks(vault), Vec3(0.0, 0.0, h));
+  b.add("right", side);
+  b.add("left", mirroredX(side));
+  b.groundUnder(1.0);
+  return b.build();
+}
 
 }  // namespace
 
@@ -98,41 +139,15 @@ ParametricModel barrelVaultExample() {
   ParametricModel m;
   m.name = "barrel-vault";
   m.description = "Fig. 13: a barrel vault on two walls backed by buttresses (140 blocks)";
-  m.parameters.add(param("radius", 2.0, 0.3, 30.0, "centreline radius of the vault (half its span), m"));
-  m.parameters.add(param("thickness", 0.25, 0.02, 3.0, "thickness of the vault, m"));
-  m.parameters.add(param("length", 5.0, 0.1, 200.0, "length of the vault along its axis, m"));
-  m.parameters.add(param("wallHeight", 2.0, 0.1, 50.0, "height of the walls, m"));
-  m.parameters.add(param("wallThickness", 0.35, 0.02, 10.0, "thickness of the walls, m"));
+  addVaultParameters(m, 2.0, 0.35);
   m.parameters.add(param("buttressWidth", 0.1, 0.01, 10.0, "width of the buttresses behind the walls, m"));
-  m.parameters.add(param("voussoirs", 12, 2, 400, "voussoirs per ring", false));
-  m.parameters.add(param("rings", 5, 1, 400, "rings of the vault (and wall segments) along its axis", false));
-  m.parameters.add(param("courses", 4, 1, 100, "courses of the walls and buttresses", false));
   m.suggestedFree = {{"buttressWidth", 0.05, 3.0}};
   m.build = [](const ParameterSet& p) {
-    BarrelVaultSpec vault;
-    vault.blocks = count(p, "voussoirs");
-    vault.rings = count(p, "rings");
-    vault.radius = p["radius"];
-    vault.thickness = p["thickness"];
-    vault.length = p["length"];
-    const double h = p["wallHeight"], wt = p["wallThickness"], bw = p["buttressWidth"];
-    const double ring = vault.length / vault.rings;
-    const double inner = vault.radius - vault.thickness / 2;  // the walls' inner faces, |x|
-    std::vector<Block> side;  // the +x side: wall segments and buttresses, one per ring
-    for (int r = 0; r < vault.rings; ++r) {
-      const double y = vault.length * r / vault.rings;
-      ButtressSpec wall{h, wt, wt, ring, count(p, "courses"), 2400.0};
-      for (Block& blk : placed(buttressBlocks(wall), Vec3(inner, y, 0.0), "wall " + std::to_string(r))) side.push_back(blk);
-      ButtressSpec buttress{h, bw, bw, ring, count(p, "courses"), 2400.0};
-      for (Block& blk : placed(buttressBlocks(buttress), Vec3(inner + wt, y, 0.0), "buttress " + std::to_string(r)))
-        side.push_back(blk);
-    }
-    StructureBuilder b;
-    b.add("vault", barrelVaultBlocks(vault), Vec3(0.0, 0.0, h));
-    b.add("right", side);
-    b.add("left", mirroredX(side));
-    b.groundUnder(1.0);
-    return b.build();
+    return vaultOnWalls(p, [&](int r, double y, double depth, double x) {
+      const double bw = p["buttressWidth"];
+      ButtressSpec buttress{p["wallHeight"], bw, bw, depth, count(p, "courses"), 2400.0};
+      return placed(buttressBlocks(buttress), Vec3(x, y, 0.0), "buttress " + std::to_string(r));
+    });
   };
   return m;
 }
@@ -159,13 +174,40 @@ ParametricModel bezierArchExample() {
   return m;
 }
 
-std::vector<std::string> exampleNames() { return {"tower", "arch-on-columns", "barrel-vault", "bezier-arch"}; }
+ParametricModel flyingButtressVaultExample() {
+  ParametricModel m;
+  m.name = "flying-buttresses";
+  m.description = "Fig. 13 with flying buttresses: a barrel vault on two walls propped by quarter-arc flyers on piers";
+  addVaultParameters(m, 3.0, 0.3);
+  m.parameters.add(param("reach", 0.6, 0.1, 40.0, "radius of the flyers' quarter arcs: their reach from the wall and their rise, m"));
+  m.parameters.add(param("flyerThickness", 0.25, 0.02, 3.0, "thickness of the flyers, m"));
+  m.parameters.add(param("pierWidth", 0.5, 0.05, 10.0, "width of the flyers' piers, m"));
+  m.suggestedFree = {{"reach", 0.3, 2.5}};
+  m.build = [](const ParameterSet& p) {
+    FlyingButtressSpec flyer;
+    flyer.radius = p["reach"];
+    flyer.thickness = p["flyerThickness"];
+    flyer.pierWidth = p["pierWidth"];
+    flyer.pierHeight = p["wallHeight"] - flyer.thickness / 2 - flyer.radius;  // the head's top is the wall's top
+    if (!(flyer.pierHeight > 0))
+      throw Error("flying-buttresses: the flyers' reach leaves no pier (reach ≥ wall height − flyer thickness / 2)");
+    return vaultOnWalls(p, [&](int r, double y, double depth, double x) {
+      FlyingButtressSpec f = flyer;
+      f.depth = depth;
+      return placed(flyingButtressBlocks(f), Vec3(x, y, 0.0), "flyer " + std::to_string(r));
+    });
+  };
+  return m;
+}
+
+std::vector<std::string> exampleNames() { return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch"}; }
 
 ParametricModel exampleByName(const std::string& name) {
   if (name == "tower") return towerExample();
   if (name == "arch-on-columns") return archOnColumnsExample();
   if (name == "barrel-vault") return barrelVaultExample();
   if (name == "bezier-arch") return bezierArchExample();
+  if (name == "flying-buttresses") return flyingButtressVaultExample();
   std::string known;
   for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown example '" + name + "' (examples: " + known + ")");

@@ -24,6 +24,12 @@ ParametricModel archOnColumnsExample();
 // `buttressWidth` per ring (140 blocks by default). Free by default: buttressWidth.
 ParametricModel barrelVaultExample();
 
+// Fig. 13 with flying buttresses: the vault of barrelVaultExample on walls 3 m high, each
+// ring's wall propped by a quarter-arc flyer (5 voussoirs) whose head meets the wall's top and
+// whose springing sits on a pier of 3 courses; `reach` is the flyers' radius (their reach from
+// the wall and their rise). 180 blocks. Free by default: reach in [0.3, 2.5].
+ParametricModel flyingButtressVaultExample();
+
 // Fig. 12: a thin arch (16 voussoirs, 0.05 m, span 2 m, crown 1.2 m) whose centreline is a
 // cubic Bezier with inner control points at x1, x2 (starting at ∓1: a round arch that does not
 // stand). Free by default: x1 in [−1.5, 0.5], x2 in [−0.5, 1.5].

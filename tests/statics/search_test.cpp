@@ -210,6 +210,18 @@ TEST(ParameterSearch, BezierArchSearchFindsAStandingShape) {
   EXPECT_NEAR(r.values["x1"], -r.values["x2"], 1e-6);
 }
 
+// Fig. 13 with flyers: the short flyers (reach 0.6 m) do not hold the vault's thrust; the
+// search lengthens them until it stands, and widening the vault never shortens them again.
+TEST(ParameterSearch, FlyingButtressesAreLengthenedUntilTheVaultStands) {
+  const ParametricModel m = flyingButtressVaultExample();
+  const SearchResult r = expectMadeToStand(m);
+  EXPECT_GT(r.values["reach"], m.parameters["reach"]);
+  const SearchResult wider = updateAfterEdit(m, m.suggestedFree, r.values, "radius", 2.2);
+  EXPECT_EQ(wider.status, SearchStatus::Feasible) << wider.message;
+  EXPECT_TRUE(wider.standsStrictly);
+  EXPECT_GE(wider.values["reach"], r.values["reach"] - 1e-12);
+}
+
 TEST(ParameterSearch, BadFreeParametersGetAClearError) {
   auto message = [](const std::function<void()>& f) {
     try {

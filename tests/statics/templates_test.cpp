@@ -210,6 +210,34 @@ TEST(Templates, BarrelVaultCountsVolumeAndStandsWithItsArch) {
   EXPECT_FALSE(stands(barrelVault(v)));
 }
 
+// A flyer of n voussoirs is a quarter of the chorded annulus: n R t sin(π/2n) of section, on a
+// pier of height × width; its contacts are the n − 1 joints, the springing on the pier, the
+// pier's courses (the top on the ground counted once). Its head, free of any wall, leans on
+// nothing: alone it cantilevers off its pier and cannot stand; against a wall face it can.
+TEST(Templates, FlyingButtressVolumeContactsAndTheWallItNeeds) {
+  FlyingButtressSpec f;
+  f.blocks = 5;
+  f.radius = 1.2;
+  f.thickness = 0.25;
+  f.depth = 0.5;
+  f.pierHeight = 1.5;
+  f.pierWidth = 0.6;
+  f.pierCourses = 3;
+  const Assembly alone = onGround(flyingButtressBlocks(f));
+  const double section = f.blocks * f.radius * f.thickness * std::sin(std::numbers::pi / (2 * f.blocks));
+  EXPECT_NEAR(totalVolume(alone), (section + f.pierHeight * f.pierWidth) * f.depth, 1e-12);
+  EXPECT_EQ(int(contactCount(alone)), (f.blocks - 1) + 1 + f.pierCourses);
+  EXPECT_FALSE(stands(alone));
+  // A fixed wall face at x = 0 behind the head: now the flyer is an arch between pier and wall.
+  StructureBuilder b;
+  b.add("flyer", flyingButtressBlocks(f));
+  b.groundUnder(2.0);
+  Assembly propped = b.build();
+  propped.blocks.push_back(boxBlock("wall", Vec3(-1.0, -0.5, 0.0), Vec3(0.0, 1.0, 4.0), 1.0, true));
+  EXPECT_EQ(int(contactCount(propped)), (f.blocks - 1) + 1 + f.pierCourses + 1);
+  EXPECT_TRUE(stands(propped));
+}
+
 // The Bezier arch's centreline, written again here: the band of thickness t around a smooth
 // curve has area t × its length exactly (the inner and outer offsets' curvature terms cancel),
 // so the voussoirs' volume is that up to chords and the horizontal springing cuts.
@@ -267,6 +295,8 @@ TEST(Templates, ExamplesHaveThePapersBlockCounts) {
   EXPECT_EQ(towerExample().build(towerExample().parameters).blocks.size(), 96u + 1);        // Fig. 11: 96 blocks
   EXPECT_EQ(barrelVaultExample().build(barrelVaultExample().parameters).blocks.size(), 140u + 1);  // Table 1: 140
   EXPECT_EQ(archOnColumnsExample().build(archOnColumnsExample().parameters).blocks.size(), 10u + 1);  // Table 1: 10
+  // 60 vault blocks; per ring and side 4 wall courses, 5 flyer voussoirs, 3 pier courses.
+  EXPECT_EQ(flyingButtressVaultExample().build(flyingButtressVaultExample().parameters).blocks.size(), 60u + 2 * 5 * 12 + 1);
   EXPECT_THROW(exampleByName("cathedral"), Error);
 }
 
