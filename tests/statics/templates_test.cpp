@@ -5,6 +5,7 @@
 #include "statics/builder.h"
 #include "statics/buttress.h"
 #include "statics/column.h"
+#include "statics/dome.h"
 #include "statics/equilibrium.h"
 #include "statics/examples.h"
 #include "statics/thresholds.h"
@@ -291,6 +292,45 @@ TEST(Templates, BezierArchMirroredHasTheSameMeasure) {
   EXPECT_NEAR(ra.yNormalised, rb.yNormalised, 1e-7 * ra.yNormalised);
 }
 
+// The dome's blocks are inscribed in the spherical shell between the springing and the oculus,
+// (2π/3)(ro³ − ri³) sin(90° − oculus): below it, and closer with more blocks. Contacts: each
+// ring's meridional joints, the bed joints between rings, the springing ring on the ground.
+TEST(Templates, DomeVolumeApproachesItsShellAndHasTheHandCountedContacts) {
+  DomeSpec d;
+  d.radius = 2.0;
+  d.thickness = 0.2;
+  d.oculusDeg = 10.0;
+  const double ri = d.radius - d.thickness / 2, ro = d.radius + d.thickness / 2;
+  const double shell = 2 * std::numbers::pi / 3 * (ro * ro * ro - ri * ri * ri) * std::sin((90 - d.oculusDeg) * kDeg);
+  double previous = 0;
+  for (int k : {1, 2, 4}) {
+    d.rings = 4 * k;
+    d.segments = 8 * k;
+    const Assembly as = onGround(domeBlocks(d));
+    const double v = totalVolume(as);
+    EXPECT_LT(v, shell);
+    EXPECT_GT(v, previous);
+    previous = v;
+    EXPECT_EQ(int(contactCount(as)), d.rings * d.segments + (d.rings - 1) * d.segments + d.segments);
+  }
+  EXPECT_GT(previous, 0.98 * shell);
+}
+
+// Heyman (The Stone Skeleton, 1995): a hemispherical masonry dome needs t/R ≥ 0.042. A dome
+// of 10 rings × 16 voussoirs with a 2° oculus (nearly closed) stands from the same thickness.
+TEST(Templates, HemisphericalDomeMinimumThicknessIsHeymans) {
+  auto stands = [](double t) {
+    DomeSpec d;
+    d.radius = 1.0;
+    d.thickness = t;
+    d.rings = 10;
+    d.segments = 16;
+    d.oculusDeg = 2.0;
+    return checkFeasibility(onGround(domeBlocks(d))).feasible;
+  };
+  EXPECT_NEAR(bisectThreshold(stands, 0.08, 0.01, 1e-3), 0.042, 0.002);
+}
+
 TEST(Templates, ExamplesHaveThePapersBlockCounts) {
   EXPECT_EQ(towerExample().build(towerExample().parameters).blocks.size(), 96u + 1);        // Fig. 11: 96 blocks
   EXPECT_EQ(barrelVaultExample().build(barrelVaultExample().parameters).blocks.size(), 140u + 1);  // Table 1: 140
@@ -316,6 +356,12 @@ TEST(Templates, BadSpecsGetAClearError) {
   BarrelVaultSpec v;
   v.rings = 0;
   EXPECT_THROW(barrelVaultBlocks(v), Error);
+  DomeSpec d;
+  d.oculusDeg = 90;
+  EXPECT_THROW(domeBlocks(d), Error);
+  FlyingButtressSpec f;
+  f.pierWidth = 4 * f.radius;
+  EXPECT_THROW(flyingButtressBlocks(f), Error);
 }
 
 }  // namespace
