@@ -132,6 +132,7 @@ int exampleCommand(const Options& a) {
     out["stands"] = r.feasible;
     out["status"] = statics::toString(r.status);
     out["iterations"] = r.iterations;
+    out["gap"] = r.gap;
     out["tension_sites"] = r.tensionSites.size();
     double gauge = 0;
     for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);

@@ -180,13 +180,14 @@ AnalysisResult analyseSystem(const EquilibriumSystem& p, const AnalysisOptions& 
   r.warnings = p.warnings;
   r.multipliers = sol.multipliers;
   r.solution = sol.x;
+  r.gap = sol.gap;
   if (sol.x.size() != col) return r;
   double y = 0;
   for (int v = 0; v < col; v += 4) y += sol.x[v + 1] * sol.x[v + 1];
   r.yNormalised = y;
   r.y = y * p.totalWeight * p.totalWeight;
   r.equilibriumResidual = (qp.A * sol.x + p.w).norm() / p.w.norm();
-  r.feasible = sol.status == SolveStatus::Optimal && r.yNormalised <= kFeasibleMeasure;
+  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) && r.yNormalised <= kFeasibleMeasure;
   const double W = p.totalWeight;
   int v = 0;
   for (const Interface& itf : p.contacts.interfaces) {
@@ -262,7 +263,7 @@ FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& op
   r.status = sol.status;
   r.iterations = sol.iterations;
   r.violation = sol.x.size() == col ? sol.objective : std::numeric_limits<double>::infinity();
-  r.feasible = sol.status == SolveStatus::Optimal && r.violation <= kFeasibleViolation;
+  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) && r.violation <= kFeasibleViolation;
   return r;
 }
 

@@ -63,6 +63,7 @@ struct AnalysisResult {
   double yNormalised = 0;          // y / W²
   bool feasible = false;           // optimal and y/W² ≤ kFeasibleMeasure
   double equilibriumResidual = 0;  // ‖A f + w‖ / ‖w‖
+  double gap = 0;                  // the solver's duality gap in units of y/W²: y/W² is within it of the optimum
   std::vector<InterfaceForces> interfaces;
   std::vector<TensionSite> tensionSites;  // largest tension first
   std::vector<std::string> warnings;

@@ -19,6 +19,7 @@ std::string toString(SolveStatus s) {
     case SolveStatus::Optimal: return "optimal";
     case SolveStatus::IterationLimit: return "iteration limit";
     case SolveStatus::TimeLimit: return "time limit";
+    case SolveStatus::ReducedAccuracy: return "reduced accuracy";
     case SolveStatus::NumericalFailure: return "numerical failure";
   }
   return "unknown";
@@ -32,6 +33,13 @@ using Mat4 = Eigen::Matrix4d;
 // The average complementarity (loads are normalised) below which the Newton solves are
 // refined on the unreduced system (IpmOptions::newtonRefinement).
 constexpr double kRefineBelowMu = 1e-8;
+
+// A best iterate this close is reported as `reduced accuracy` rather than a failure: a scaled
+// primal residual ≤ 1e-9 (equilibrium holds), a dual residual ≤ 1e-7 and a gap ≤ 1e-3 of the
+// objective (the objective is then within the gap of its optimum; the result reports it).
+constexpr double kReducedPrimal = 1e-9;
+constexpr double kReducedDual = 1e-7;
+constexpr double kReducedGap = 1e-3;
 
 
 double maxStep(const VectorXd& v, const VectorXd& dv) {
@@ -217,6 +225,16 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   IpmResult res;
   res.status = SolveStatus::IterationLimit;
   double regularisation = 0;
+  // Stopping short of the tolerances: the best iterate, called `reduced accuracy` when it is
+  // within kReducedPrimal, kReducedDual and kReducedGap.
+  auto stop = [&](SolveStatus why) {
+    best.regularisations = res.regularisations;
+    const bool close = best.x.size() == n && best.primalResidual <= kReducedPrimal &&
+                       best.dualResidual <= kReducedDual &&
+                       best.gap <= std::max(options.gapTolerance, kReducedGap * std::abs(best.objective));
+    best.status = close && why != SolveStatus::TimeLimit ? SolveStatus::ReducedAccuracy : why;
+    return best;
+  };
 
   auto record = [&](int iter, const VectorXd& rp, const VectorXd& rd, double gap) {
     const double pr = rp.size() ? rp.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
@@ -252,9 +270,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     if (iter >= options.maxIterations) break;
     if (options.maxSeconds > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > options.maxSeconds) {
-      best.status = SolveStatus::TimeLimit;
-      best.regularisations = res.regularisations;
-      return best;
+      return stop(SolveStatus::TimeLimit);
     }
     const double mu = mi ? gap / mi : 0.0;
     const VectorXd d = z.cwiseQuotient(s);
@@ -335,9 +351,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       ok = factor();
     }
     if (!ok) {
-      best.status = SolveStatus::NumericalFailure;
-      best.regularisations = res.regularisations;
-      return best;
+      return stop(SolveStatus::NumericalFailure);
     }
     regularisation *= 0.1;  // relax again once things go well
     if (regularisation < 1e-14) regularisation = 0;
@@ -388,16 +402,14 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     };
     VectorXd dx, dy, dz, ds;
     if (!newton(s.cwiseProduct(z), dx, dy, dz, ds)) {
-      best.status = SolveStatus::NumericalFailure;
-      return best;
+      return stop(SolveStatus::NumericalFailure);
     }
     const double aAff = std::min({1.0, maxStep(s, ds), maxStep(z, dz)});
     const double muAff = mi ? (s + aAff * ds).dot(z + aAff * dz) / mi : 0.0;
     const double sigma = mu > 0 ? std::pow(std::clamp(muAff / mu, 0.0, 1.0), 3) : 0.0;
     const VectorXd rc = s.cwiseProduct(z) + ds.cwiseProduct(dz) - VectorXd::Constant(mi, sigma * mu);
     if (!newton(rc, dx, dy, dz, ds)) {
-      best.status = SolveStatus::NumericalFailure;
-      return best;
+      return stop(SolveStatus::NumericalFailure);
     }
     const double alpha = std::min(1.0, 0.995 * std::min(maxStep(s, ds), maxStep(z, dz)));
     x += alpha * dx;
@@ -406,9 +418,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     s += alpha * ds;
     res.iterations = iter + 1;
   }
-  best.status = SolveStatus::IterationLimit;
-  best.regularisations = res.regularisations;
-  return best;
+  return stop(SolveStatus::IterationLimit);
 }
 
 }  // namespace corbel::statics

@@ -36,6 +36,9 @@ enum class SolveStatus {
   Optimal,          // residuals and duality gap within tolerance
   IterationLimit,   // the iteration cap was reached; the best iterate is returned
   TimeLimit,        // the time cap was reached; the best iterate is returned
+  ReducedAccuracy,  // stopped short of the tolerances (iteration cap or a failed factorisation)
+                    // at a best iterate in equilibrium (residual ≤ 1e-9), dual residual ≤ 1e-7,
+                    // gap ≤ 1e-3 of the objective: the objective is within the gap of its optimum
   NumericalFailure  // the Newton system could not be factored even with regularisation
 };
 

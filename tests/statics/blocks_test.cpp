@@ -1,6 +1,7 @@
 // Small assemblies whose thresholds are computed by hand: stacks, tipping, sliding, the kern.
 #include "core/error.h"
 #include "statics/analysis.h"
+#include "statics/examples.h"
 #include "statics/thresholds.h"
 
 #include <gtest/gtest.h>
@@ -150,6 +151,20 @@ TEST(BlockStatics, SolverTimeCapStopsWithItsStatus) {
   EXPECT_EQ(r.status, SolveStatus::TimeLimit);
   EXPECT_FALSE(r.feasible);
   EXPECT_EQ(toString(r.status), "time limit");
+}
+
+// The strongly infeasible examples (docs/statics.md, the solver's known weakness) stop short
+// of the tolerances; they must end `reduced accuracy` — in equilibrium, the gap within 1e-3
+// of y — never a failure.
+TEST(BlockStatics, StronglyInfeasibleExamplesEndWithReducedAccuracyNotFailure) {
+  for (const ParametricModel& m : {towerExample(), barrelVaultExample(), flyingButtressVaultExample()}) {
+    const AnalysisResult r = analyse(m.build(m.parameters));
+    EXPECT_TRUE(r.status == SolveStatus::Optimal || r.status == SolveStatus::ReducedAccuracy) << m.name << ": " << toString(r.status);
+    EXPECT_LE(r.equilibriumResidual, 1e-10) << m.name;
+    EXPECT_FALSE(r.feasible) << m.name;
+    EXPECT_GT(r.yNormalised, 1e-6) << m.name;
+    EXPECT_LE(r.gap, 1e-3 * r.yNormalised) << m.name;
+  }
 }
 
 TEST(BlockStatics, ContactPolygonIsTheOverlapOfTheFaces) {
