@@ -3,6 +3,7 @@
 #include "core/error.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <set>
 
