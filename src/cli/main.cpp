@@ -44,14 +44,14 @@ usage:
                     GeoJSON features may name a profile of the --library project ("profile").
                     --merge-coplanar writes neighbouring faces in one plane as one face.
   corbel-cli statics arch --blocks N --thickness T [--tilt DEG] [--friction A] [--kern S]
-                    [--min-thickness | --critical-tilt]
+                    [--friction-sides 4|8] [--min-thickness | --critical-tilt]
                     A semicircular arch of N voussoirs (centreline radius 1, radial joints) on
                     rigid ground tilted by DEG. Prints the measure of infeasibility y/W² (0 when
                     it stands); --min-thickness the least t/R that stands (T ignored);
                     --critical-tilt the ground tilt in degrees at which it stops standing.
   corbel-cli statics example NAME [--set NAME=V ...] [--optimize] [--free NAME=LO:HI ...]
                     [--algorithm mma|slsqp|lbfgs] [--max-evaluations N] [--max-seconds S]
-                    [--kern S] [--friction A] [--json]
+                    [--kern S] [--friction A] [--friction-sides 4|8] [--json]
                     NAME: tower (Fig. 11), arch-on-columns (Fig. 8), barrel-vault (Fig. 13),
                     flying-buttresses (Fig. 13 with flyers), bezier-arch (Fig. 12).
                     Prints y/W² and the solver status; --optimize searches the free

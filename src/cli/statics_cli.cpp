@@ -68,6 +68,12 @@ double number(const Options& o, const char* opt, double def, double lo, double h
   return v;
 }
 
+int sides(const Options& a) {
+  const double v = number(a, "--friction-sides", 4, 4, 8);
+  if (v != 4 && v != 8) throw UsageError("--friction-sides: expected 4 or 8");
+  return int(v);
+}
+
 int archCommand(const Options& a) {
   const bool minThickness = a.values.count("--min-thickness") > 0, criticalTilt = a.values.count("--critical-tilt") > 0;
   if (minThickness && criticalTilt) throw UsageError("statics: --min-thickness and --critical-tilt exclude each other");
@@ -82,6 +88,7 @@ int archCommand(const Options& a) {
   statics::AnalysisOptions options;
   options.friction = number(a, "--friction", 0.7, 0, 100);
   options.kernShrink = number(a, "--kern", 0, 0, 0.99);
+  options.frictionSides = sides(a);
   char text[64];
   if (minThickness) {
     std::snprintf(text, sizeof text, "%.6f", statics::minimumArchThickness(spec, options, 1e-6));
@@ -118,6 +125,7 @@ int exampleCommand(const Options& a) {
   statics::SearchOptions options;
   options.analysis.kernShrink = number(a, "--kern", 0, 0, 0.99);
   options.analysis.friction = number(a, "--friction", 0.7, 0, 100);
+  options.analysis.frictionSides = sides(a);
   if (a.values.count("--algorithm")) options.algorithm = a.values.at("--algorithm");
   options.maxEvaluations = int(number(a, "--max-evaluations", 200, 1, 1e6));
   options.maxSeconds = number(a, "--max-seconds", 0, 0, 1e6);
@@ -183,7 +191,8 @@ int runStatics(int argc, char** argv) {
                             {{"--blocks", true}, {"--thickness", true}, {"--tilt", true}, {"--friction", true},
                              {"--kern", true}, {"--min-thickness", false}, {"--critical-tilt", false},
                              {"--optimize", false}, {"--free", true}, {"--set", true}, {"--json", false},
-                             {"--algorithm", true}, {"--max-evaluations", true}, {"--max-seconds", true}});
+                             {"--algorithm", true}, {"--max-evaluations", true}, {"--max-seconds", true},
+                             {"--friction-sides", true}});
     if (!a.positional.empty() && a.positional[0] == "arch" && a.positional.size() == 1) return archCommand(a);
     if (!a.positional.empty() && a.positional[0] == "example") return exampleCommand(a);
     throw UsageError("statics: expected 'arch' (statics arch --blocks N --thickness T ...) or 'example NAME'");

@@ -5,8 +5,10 @@
 #include "statics/tolerances.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 
 namespace corbel::statics {
@@ -32,6 +34,8 @@ EquilibriumSystem prepareEquilibrium(const Assembly& as, const AnalysisOptions& 
   p.props = validateAssembly(as, tol);
   p.contacts = findContacts(as, p.props, tol, opt.kernShrink);
   p.alpha = opt.conservativeFriction ? opt.friction / std::sqrt(2.0) : opt.friction;
+  if (opt.frictionSides != 4 && opt.frictionSides != 8) throw Error("statics: the friction pyramid has 4 or 8 sides");
+  p.frictionSides = opt.frictionSides;
 
   const int nb = int(as.blocks.size());
   p.rowOf.assign(std::size_t(nb), -1);
@@ -117,6 +121,26 @@ bool sameLayout(const EquilibriumSystem& x, const EquilibriumSystem& y) {
 
 namespace {
 
+// The friction pyramid's rows on a vertex's variables, the normal (compression) part at
+// index `normal`, the tangential parts at `t`, `t + 1`: α f_n − (cos θ_k f_t1 + sin θ_k f_t2) ≥ 0
+// for θ_k = 2πk/sides (for 4 sides: α f_n ± f_t1 ≥ 0, α f_n ± f_t2 ≥ 0).
+void addFrictionRows(VarBlock& vb, const EquilibriumSystem& p, int normal, int t) {
+  for (int k = 0; k < p.frictionSides; ++k) {
+    std::array<double, 4> row{};
+    row[std::size_t(normal)] = p.alpha;
+    if (p.frictionSides == 4) {
+      const double c[4] = {1, -1, 0, 0}, s[4] = {0, 0, 1, -1};
+      row[std::size_t(t)] = -c[k];
+      row[std::size_t(t + 1)] = -s[k];
+    } else {
+      const double th = 2 * std::numbers::pi * k / p.frictionSides;
+      row[std::size_t(t)] = -std::cos(th);
+      row[std::size_t(t + 1)] = -std::sin(th);
+    }
+    vb.rows.push_back(row);
+  }
+}
+
 // Adds the column of a unit force `dir` acting on b (and −dir on a) at `point`.
 void addForceColumn(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir,
                     int col, std::vector<Eigen::Triplet<double>>& trips) {
@@ -152,7 +176,8 @@ BlockQP penaltyQP(const EquilibriumSystem& p) {
       vb.size = 4;
       vb.hessian = {0, 2, 0, 0};  // ½·2·(f_n⁻)²
       // The pyramid bounds friction by α·f_n⁺ (statics notes): f_n⁺ ≥ 0, f_n⁻ ≥ 0, α f_n⁺ ± f_t ≥ 0.
-      vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}, {p.alpha, 0, -1, 0}, {p.alpha, 0, 1, 0}, {p.alpha, 0, 0, -1}, {p.alpha, 0, 0, 1}};
+      vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}};
+      addFrictionRows(vb, p, 0, 2);
       qp.blocks.push_back(vb);
       col += 4;
     }
@@ -238,7 +263,8 @@ FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& op
       VarBlock vb;
       vb.offset = col;
       vb.size = 3;
-      vb.rows = {{1, 0, 0, 0}, {p.alpha, -1, 0, 0}, {p.alpha, 1, 0, 0}, {p.alpha, 0, -1, 0}, {p.alpha, 0, 1, 0}};
+      vb.rows = {{1, 0, 0, 0}};
+      addFrictionRows(vb, p, 0, 1);
       qp.blocks.push_back(vb);
       col += 3;
     }

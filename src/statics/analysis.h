@@ -15,6 +15,10 @@ namespace corbel::statics {
 struct AnalysisOptions {
   double friction = 0.7;              // α, the coefficient of static friction
   bool conservativeFriction = false;  // use α/√2, so the cone circumscribes the pyramid (Sec. 3.1)
+  // Sides of the friction pyramid (Sec. 3.1): 4 (|f_t1|, |f_t2| ≤ α f_n⁺, the paper's) or 8
+  // (the octagon whose sides touch the friction circle: it exceeds the cone by at most
+  // 1/cos(π/8) − 1 = 8 % in its corners, the square by √2 − 1 = 41 %; twice the rows).
+  int frictionSides = 4;
   double kernShrink = 0.0;            // in [0, 1): geometric factor of safety (Sec. 3.4)
   IpmOptions solver;
 };

@@ -20,6 +20,7 @@ struct EquilibriumSystem {
   double totalWeight = 0;  // W, N, of the free blocks
   Eigen::VectorXd w;       // loads / W, six per free block (force, then torque about the centroid)
   double alpha = 0.7;      // the friction coefficient in use (α or α/√2)
+  int frictionSides = 4;   // of the pyramid, 4 or 8
   std::vector<std::string> warnings;
 };
 

@@ -96,6 +96,40 @@ TEST(BlockStatics, BlockOnAnInclineSlidesAtTheFrictionAngle) {
   }
 }
 
+// On a plane tilted by θ towards the direction ψ (in the frame of the contact's square edges)
+// a block needs friction tan θ · N along ψ from the friction polygon scaled by N, so it slides
+// once tan θ passes the polygon's radius along ψ: the square pyramid |f_t1|, |f_t2| ≤ α f_n
+// reaches α / max(|cos ψ|, |sin ψ|) (α√2 in its corners at 45°), the octagon with sides
+// touching the friction circle α / cos(ψ − the nearest side's normal) (α at 45°, α/cos 22.5°
+// at 22.5°). α = 0.5 keeps every threshold below tipping (atan √2 along a diagonal).
+TEST(BlockStatics, EightSidedPyramidSlidesCloserToTheCone) {
+  auto slideAngle = [](int sides, double psiDeg) {
+    AnalysisOptions o;
+    o.friction = 0.5;
+    o.frictionSides = sides;
+    const double psi = psiDeg * kDeg;
+    auto tilted = [&](double deg) {
+      Assembly as;
+      as.blocks.push_back(boxBlock("ground", Vec3(-2, -2, -1), Vec3(3, 3, 0), 1.0, true));
+      as.blocks.push_back(boxBlock("block", Vec3(0, 0, 0), Vec3(1, 1, 1)));
+      const double t = deg * kDeg;
+      as.gravity = Vec3(std::sin(t) * std::cos(psi), std::sin(t) * std::sin(psi), -std::cos(t));
+      return as;
+    };
+    return bisectThreshold([&](double deg) { return stands(tilted(deg), o); }, 0.0, 50.0, 1e-6);
+  };
+  const double a = 0.5;
+  EXPECT_NEAR(slideAngle(4, 0.0), std::atan(a) / kDeg, 1e-4);
+  EXPECT_NEAR(slideAngle(8, 0.0), std::atan(a) / kDeg, 1e-4);
+  EXPECT_NEAR(slideAngle(4, 45.0), std::atan(a * std::sqrt(2.0)) / kDeg, 1e-4);
+  EXPECT_NEAR(slideAngle(8, 45.0), std::atan(a) / kDeg, 1e-4);
+  EXPECT_NEAR(slideAngle(8, 22.5), std::atan(a / std::cos(22.5 * kDeg)) / kDeg, 1e-4);
+  EXPECT_NEAR(slideAngle(4, 22.5), std::atan(a / std::cos(22.5 * kDeg)) / kDeg, 1e-4);
+  AnalysisOptions bad;
+  bad.frictionSides = 6;
+  EXPECT_THROW(analyse(stack(0, 0), bad), Error);
+}
+
 // Kern shrink s scales the contact [u, 1] about its centre; the top's centroid u + 1/2 reaches
 // the shrunk edge at u = (1 − s)/(2 − s).
 TEST(BlockStatics, KernShrinkTurnsAJustFeasibleOverhangInfeasible) {

@@ -82,6 +82,7 @@ TEST(StaticsCli, ExampleRefusesBadNamesAndBounds) {
   EXPECT_EQ(cli("example tower --optimize --free x1=nan:0.1").code, 1);
   EXPECT_EQ(cli("example tower --set x1=0.9").code, 1);  // outside its valid range
   EXPECT_EQ(cli("example tower --set x1").code, 2);
+  EXPECT_EQ(cli("example tower --friction-sides 6").code, 2);
 }
 
 }  // namespace
