@@ -41,7 +41,9 @@ MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterS
   const Eigen::VectorXd& lambda = ev.analysis.multipliers;
   if (x.size() == 0 || lambda.size() != base.rows)
     throw Error("statics: the solver returned no solution to differentiate (" + toString(ev.analysis.status) + ")");
-  const std::optional<double> at = lagrangianTerm(model, values, base, x, lambda, options);
+  // The term at θ itself, from the system already built (used by one-sided differences).
+  const BlockQP baseQP = penaltyQP(base);
+  const std::optional<double> at = lambda.dot(baseQP.A * x - baseQP.b);
   ev.gradient.assign(free.size(), 0.0);
   for (std::size_t k = 0; k < free.size(); ++k) {
     const Parameter& p = values.find(free[k].name);

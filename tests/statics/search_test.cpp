@@ -94,6 +94,20 @@ TEST(ParameterSearch, EnvelopeGradientMatchesDifferencesOnTheOverhang) {
   expectGradientMatchesDifferences(m, at, {{"offset", -0.9, 0.9}, {"side", -0.9, 0.9}}, 1e-5);
 }
 
+// At the edge of a parameter's valid range the geometry is differenced on one side only, and
+// says so; the gradient still matches a one-sided difference of y (to its O(h) error).
+TEST(ParameterSearch, EnvelopeGradientAtAValidRangeEdgeIsOneSided) {
+  const ParametricModel m = overhang(0.95);  // the valid range ends at 0.95
+  const MeasureEvaluation ev = evaluateMeasure(m, m.parameters, {{"offset", 0.5, 0.95}}, {}, true);
+  ASSERT_EQ(ev.notes.size(), 1u);
+  EXPECT_NE(ev.notes[0].find("one-sided (backward)"), std::string::npos) << ev.notes[0];
+  const double h = 1e-6;
+  ParameterSet below = m.parameters;
+  below.set("offset", 0.95 - h);
+  const double fd = (ev.measure - analyse(m.build(below)).yNormalised) / h;
+  EXPECT_NEAR(ev.gradient[0], fd, 1e-4 * std::abs(fd));
+}
+
 TEST(ParameterSearch, EnvelopeGradientMatchesDifferencesOnTheArchThickness) {
   const ParametricModel m = thinArch(0.05);
   expectGradientMatchesDifferences(m, m.parameters, {{"thickness", 0.02, 0.3}}, 1e-5);
