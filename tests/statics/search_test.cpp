@@ -236,6 +236,23 @@ TEST(ParameterSearch, FlyingButtressesAreLengthenedUntilTheVaultStands) {
   EXPECT_GE(wider.values["reach"], r.values["reach"] - 1e-12);
 }
 
+// The progress callback sees every evaluation and can stop the search (the editor's Cancel).
+TEST(ParameterSearch, ProgressCallbackCancels) {
+  const ParametricModel m = towerExample();
+  SearchOptions o;
+  int seen = 0;
+  o.progress = [&](const SearchProgress& p) {
+    ++seen;
+    EXPECT_EQ(p.evaluation, seen);
+    EXPECT_EQ(p.values.size(), m.suggestedFree.size());
+    return false;
+  };
+  const SearchResult r = searchParameters(m, m.suggestedFree, o);
+  EXPECT_EQ(r.status, SearchStatus::Cancelled) << r.message;
+  EXPECT_EQ(seen, 1);
+  EXPECT_EQ(r.evaluations, 1);
+}
+
 TEST(ParameterSearch, BadFreeParametersGetAClearError) {
   auto message = [](const std::function<void()>& f) {
     try {
