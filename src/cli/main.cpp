@@ -8,9 +8,7 @@
 #include "extrude/footprints.h"
 #include "extrude/kernel.h"
 #include "render/headless_context.h"
-#include "statics/analysis.h"
-#include "statics/arch.h"
-#include "statics/thresholds.h"
+#include "cli/statics_cli.h"
 
 #include <nlohmann/json.hpp>
 
@@ -46,11 +44,19 @@ usage:
                     GeoJSON features may name a profile of the --library project ("profile").
                     --merge-coplanar writes neighbouring faces in one plane as one face.
   corbel-cli statics arch --blocks N --thickness T [--tilt DEG] [--friction A] [--kern S]
-                    [--min-thickness | --critical-tilt]
+                    [--friction-sides 4|8] [--min-thickness | --critical-tilt]
                     A semicircular arch of N voussoirs (centreline radius 1, radial joints) on
                     rigid ground tilted by DEG. Prints the measure of infeasibility y/W² (0 when
                     it stands); --min-thickness the least t/R that stands (T ignored);
                     --critical-tilt the ground tilt in degrees at which it stops standing.
+  corbel-cli statics example NAME [--set NAME=V ...] [--optimize] [--free NAME=LO:HI ...]
+                    [--algorithm mma|slsqp|lbfgs] [--max-evaluations N] [--max-seconds S]
+                    [--kern S] [--friction A] [--friction-sides 4|8] [--json]
+                    NAME: tower (Fig. 11), arch-on-columns (Fig. 8), barrel-vault (Fig. 13),
+                    flying-buttresses (Fig. 13 with flyers), bezier-arch (Fig. 12).
+                    Prints y/W² and the solver status; --optimize searches the free
+                    parameters (the example's own when no --free) until it stands (Sec. 4)
+                    and prints the status (feasible or local minimum), iterations, values.
   corbel-cli --version | --help
 
 Exit codes: 0 success, 1 bad input or failed check, 2 bad command line.
@@ -379,45 +385,6 @@ int cmdCheck(const Args& a) {
   return bad ? 1 : 0;
 }
 
-int cmdStatics(const Args& a) {
-  if (a.positional.size() != 1 || a.positional[0] != "arch")
-    throw UsageError("statics: expected the template 'arch' (statics arch --blocks N --thickness T ...)");
-  auto number = [&](const char* opt, double def, double lo, double hi) {
-    auto it = a.options.find(opt);
-    if (it == a.options.end()) return def;
-    const auto v = parseNumbers(it->second, ',', opt);
-    if (v.size() != 1 || !(v[0] >= lo && v[0] <= hi))
-      throw UsageError(std::string(opt) + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return v[0];
-  };
-  const bool minThickness = a.options.count("--min-thickness") > 0, criticalTilt = a.options.count("--critical-tilt") > 0;
-  if (minThickness && criticalTilt) throw UsageError("statics: --min-thickness and --critical-tilt exclude each other");
-  if (!a.options.count("--blocks")) throw UsageError("statics arch: --blocks N is required");
-  if (!minThickness && !a.options.count("--thickness")) throw UsageError("statics arch: --thickness T is required");
-  statics::ArchSpec spec;
-  const double blocks = number("--blocks", 100, 1, 100000);
-  if (blocks != std::floor(blocks)) throw UsageError("--blocks: expected a whole number");
-  spec.blocks = int(blocks);
-  spec.thickness = number("--thickness", 0.2, 1e-6, 1.999);
-  spec.tiltDeg = number("--tilt", 0, -89, 89);
-  statics::AnalysisOptions options;
-  options.friction = number("--friction", 0.7, 0, 100);
-  options.kernShrink = number("--kern", 0, 0, 0.99);
-  char text[64];
-  if (minThickness) {
-    std::snprintf(text, sizeof text, "%.6f", statics::minimumArchThickness(spec, options, 1e-6));
-  } else if (criticalTilt) {
-    std::snprintf(text, sizeof text, "%.4f", statics::criticalArchTilt(spec, options, 1e-5));
-  } else {
-    const statics::AnalysisResult r = statics::analyse(statics::semicircularArch(spec), options);
-    if (r.status != statics::SolveStatus::Optimal)
-      std::cerr << "corbel-cli: warning: the solver stopped early (" << statics::toString(r.status) << ")\n";
-    std::snprintf(text, sizeof text, "%.6g", r.feasible ? 0.0 : r.yNormalised);
-  }
-  std::cout << text << "\n";
-  return 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -440,10 +407,7 @@ int main(int argc, char** argv) {
       return cmdExtrude(parseArgs(argc, argv, {{"--pitch", true}, {"--wall-height", true}, {"--out", true},
                                                {"--stats", false}, {"--jobs", true}, {"--library", true},
                                                {"--merge-coplanar", false}}));
-    if (cmd == "statics")
-      return cmdStatics(parseArgs(argc, argv, {{"--blocks", true}, {"--thickness", true}, {"--tilt", true},
-                                               {"--friction", true}, {"--kern", true}, {"--min-thickness", false},
-                                               {"--critical-tilt", false}}));
+    if (cmd == "statics") return cli::runStatics(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";

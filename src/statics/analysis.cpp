@@ -1,11 +1,14 @@
 #include "statics/analysis.h"
 
 #include "core/error.h"
+#include "statics/equilibrium.h"
 #include "statics/tolerances.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 
 namespace corbel::statics {
@@ -16,23 +19,13 @@ std::string blockName(const Assembly& as, int i) {
   return "block " + std::to_string(i) + (n.empty() ? "" : " \"" + n + "\"");
 }
 
-// What both problems share: geometry, contacts, the equilibrium rows and the loads.
-struct Prepared {
-  std::vector<BlockProperties> props;
-  Contacts contacts;
-  std::vector<int> rowOf;  // block → first equilibrium row, −1 for fixed blocks
-  int rows = 0;
-  double totalWeight = 0;
-  Eigen::VectorXd w;  // loads / W, 6 per free block
-  double alpha = 0.7;
-  std::vector<std::string> warnings;
-};
+}  // namespace
 
-Prepared prepare(const Assembly& as, const AnalysisOptions& opt) {
+EquilibriumSystem prepareEquilibrium(const Assembly& as, const AnalysisOptions& opt) {
   if (!std::isfinite(opt.friction) || opt.friction < 0) throw Error("statics: friction must be a number ≥ 0");
   if (!std::isfinite(opt.kernShrink) || opt.kernShrink < 0 || opt.kernShrink >= 1)
     throw Error("statics: kern shrink must be in [0, 1)");
-  Prepared p;
+  EquilibriumSystem p;
   BBox model;
   for (const Block& b : as.blocks)
     for (const Vec3& v : b.vertices)
@@ -41,6 +34,8 @@ Prepared prepare(const Assembly& as, const AnalysisOptions& opt) {
   p.props = validateAssembly(as, tol);
   p.contacts = findContacts(as, p.props, tol, opt.kernShrink);
   p.alpha = opt.conservativeFriction ? opt.friction / std::sqrt(2.0) : opt.friction;
+  if (opt.frictionSides != 4 && opt.frictionSides != 8) throw Error("statics: the friction pyramid has 4 or 8 sides");
+  p.frictionSides = opt.frictionSides;
 
   const int nb = int(as.blocks.size());
   p.rowOf.assign(std::size_t(nb), -1);
@@ -93,8 +88,61 @@ Prepared prepare(const Assembly& as, const AnalysisOptions& opt) {
   return p;
 }
 
+namespace {
+
+// The gauge of p about the polygon's area centroid c: max over edges of how far p − c reaches
+// towards the edge's line, in units of the centroid's distance to it (the polygon is convex).
+double pressureGauge(const Interface& itf, const Vec3& p) {
+  double g = 0;
+  const std::size_t n = itf.polygon.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 a = itf.polygon[k], b = itf.polygon[(k + 1) % n];
+    Vec3 out = cross(b - a, itf.normal);  // in-plane, away from the interior (counter-clockwise polygon)
+    const double len = out.norm();
+    if (len <= 0) continue;
+    out /= len;
+    const double reach = dot(a - itf.centroid, out);
+    if (reach > 0) g = std::max(g, dot(p - itf.centroid, out) / reach);
+  }
+  return g;
+}
+
+}  // namespace
+
+bool sameLayout(const EquilibriumSystem& x, const EquilibriumSystem& y) {
+  if (x.rowOf != y.rowOf || x.contacts.interfaces.size() != y.contacts.interfaces.size()) return false;
+  for (std::size_t i = 0; i < x.contacts.interfaces.size(); ++i) {
+    const Interface &p = x.contacts.interfaces[i], &q = y.contacts.interfaces[i];
+    if (p.a != q.a || p.b != q.b || p.faceA != q.faceA || p.faceB != q.faceB || p.points.size() != q.points.size())
+      return false;
+  }
+  return true;
+}
+
+namespace {
+
+// The friction pyramid's rows on a vertex's variables, the normal (compression) part at
+// index `normal`, the tangential parts at `t`, `t + 1`: α f_n − (cos θ_k f_t1 + sin θ_k f_t2) ≥ 0
+// for θ_k = 2πk/sides (for 4 sides: α f_n ± f_t1 ≥ 0, α f_n ± f_t2 ≥ 0).
+void addFrictionRows(VarBlock& vb, const EquilibriumSystem& p, int normal, int t) {
+  for (int k = 0; k < p.frictionSides; ++k) {
+    std::array<double, 4> row{};
+    row[std::size_t(normal)] = p.alpha;
+    if (p.frictionSides == 4) {
+      const double c[4] = {1, -1, 0, 0}, s[4] = {0, 0, 1, -1};
+      row[std::size_t(t)] = -c[k];
+      row[std::size_t(t + 1)] = -s[k];
+    } else {
+      const double th = 2 * std::numbers::pi * k / p.frictionSides;
+      row[std::size_t(t)] = -std::cos(th);
+      row[std::size_t(t + 1)] = -std::sin(th);
+    }
+    vb.rows.push_back(row);
+  }
+}
+
 // Adds the column of a unit force `dir` acting on b (and −dir on a) at `point`.
-void addForceColumn(const Prepared& p, const Interface& itf, const Vec3& point, const Vec3& dir,
+void addForceColumn(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir,
                     int col, std::vector<Eigen::Triplet<double>>& trips) {
   for (int side = 0; side < 2; ++side) {
     const int blk = side == 0 ? itf.b : itf.a;
@@ -112,8 +160,7 @@ void addForceColumn(const Prepared& p, const Interface& itf, const Vec3& point, 
 
 }  // namespace
 
-AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
-  const Prepared p = prepare(as, opt);
+BlockQP penaltyQP(const EquilibriumSystem& p) {
   // Variables per contact vertex: [f_n⁺, f_n⁻, f_t1, f_t2].
   BlockQP qp;
   std::vector<Eigen::Triplet<double>> trips;
@@ -129,13 +176,25 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
       vb.size = 4;
       vb.hessian = {0, 2, 0, 0};  // ½·2·(f_n⁻)²
       // The pyramid bounds friction by α·f_n⁺ (statics notes): f_n⁺ ≥ 0, f_n⁻ ≥ 0, α f_n⁺ ± f_t ≥ 0.
-      vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}, {p.alpha, 0, -1, 0}, {p.alpha, 0, 1, 0}, {p.alpha, 0, 0, -1}, {p.alpha, 0, 0, 1}};
+      vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}};
+      addFrictionRows(vb, p, 0, 2);
       qp.blocks.push_back(vb);
       col += 4;
     }
   qp.A.resize(p.rows, col);
   qp.A.setFromTriplets(trips.begin(), trips.end());
   qp.b = -p.w;
+  qp.rowGroup = 6;
+  return qp;
+}
+
+AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
+  return analyseSystem(prepareEquilibrium(as, opt), opt);
+}
+
+AnalysisResult analyseSystem(const EquilibriumSystem& p, const AnalysisOptions& opt) {
+  const BlockQP qp = penaltyQP(p);
+  const int col = int(qp.A.cols());
   const IpmResult sol = solveBlockQP(qp, opt.solver);
 
   AnalysisResult r;
@@ -144,15 +203,17 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
   r.totalWeight = p.totalWeight;
   r.warnings = p.warnings;
   r.multipliers = sol.multipliers;
+  r.solution = sol.x;
+  r.gap = sol.gap;
   if (sol.x.size() != col) return r;
   double y = 0;
   for (int v = 0; v < col; v += 4) y += sol.x[v + 1] * sol.x[v + 1];
   r.yNormalised = y;
   r.y = y * p.totalWeight * p.totalWeight;
   r.equilibriumResidual = (qp.A * sol.x + p.w).norm() / p.w.norm();
-  r.feasible = sol.status == SolveStatus::Optimal && r.yNormalised <= kFeasibleMeasure;
+  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) && r.yNormalised <= kFeasibleMeasure;
   const double W = p.totalWeight;
-  col = 0;
+  int v = 0;
   for (const Interface& itf : p.contacts.interfaces) {
     InterfaceForces f;
     f.a = itf.a;
@@ -163,26 +224,32 @@ AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
     for (const Vec3& pt : itf.points) {
       VertexForce vf;
       vf.point = pt;
-      vf.compression = sol.x[col] * W;
-      vf.tension = sol.x[col + 1] * W;
-      vf.t1 = sol.x[col + 2] * W;
-      vf.t2 = sol.x[col + 3] * W;
+      vf.compression = sol.x[v] * W;
+      vf.tension = sol.x[v + 1] * W;
+      vf.t1 = sol.x[v + 2] * W;
+      vf.t2 = sol.x[v + 3] * W;
       f.resultant += itf.normal * vf.normal() + itf.t1 * vf.t1 + itf.t2 * vf.t2;
       f.normalForce += vf.normal();
       moment += pt * vf.normal();
       f.maxTension = std::max(f.maxTension, vf.tension);
       f.vertices.push_back(vf);
-      col += 4;
+      v += 4;
     }
     f.tangentialForce = (f.resultant - itf.normal * f.normalForce).norm();
     f.centreOfPressure = f.normalForce > 0 ? moment / f.normalForce : itf.centroid;
+    f.pressureGauge = f.normalForce > 0 ? pressureGauge(itf, f.centreOfPressure) : std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < f.vertices.size(); ++k)
+      if (f.vertices[k].tension > kTensionSite * W)
+        r.tensionSites.push_back({int(r.interfaces.size()), int(k), f.vertices[k].point, f.vertices[k].tension});
     r.interfaces.push_back(std::move(f));
   }
+  std::stable_sort(r.tensionSites.begin(), r.tensionSites.end(),
+                   [](const TensionSite& a, const TensionSite& b) { return a.tension > b.tension; });
   return r;
 }
 
 FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& opt) {
-  const Prepared p = prepare(as, opt);
+  const EquilibriumSystem p = prepareEquilibrium(as, opt);
   // Variables per contact vertex: [f_n, f_t1, f_t2] with f_n ≥ 0 and |f_t| ≤ α f_n; then two
   // artificial variables (±) per equilibrium row, each costing 1.
   BlockQP qp;
@@ -196,7 +263,8 @@ FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& op
       VarBlock vb;
       vb.offset = col;
       vb.size = 3;
-      vb.rows = {{1, 0, 0, 0}, {p.alpha, -1, 0, 0}, {p.alpha, 1, 0, 0}, {p.alpha, 0, -1, 0}, {p.alpha, 0, 1, 0}};
+      vb.rows = {{1, 0, 0, 0}};
+      addFrictionRows(vb, p, 0, 1);
       qp.blocks.push_back(vb);
       col += 3;
     }
@@ -214,12 +282,13 @@ FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& op
   qp.A.resize(p.rows, col);
   qp.A.setFromTriplets(trips.begin(), trips.end());
   qp.b = -p.w;
+  qp.rowGroup = 6;
   const IpmResult sol = solveBlockQP(qp, opt.solver);
   FeasibilityResult r;
   r.status = sol.status;
   r.iterations = sol.iterations;
   r.violation = sol.x.size() == col ? sol.objective : std::numeric_limits<double>::infinity();
-  r.feasible = sol.status == SolveStatus::Optimal && r.violation <= kFeasibleViolation;
+  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) && r.violation <= kFeasibleViolation;
   return r;
 }
 

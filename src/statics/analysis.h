@@ -15,6 +15,10 @@ namespace corbel::statics {
 struct AnalysisOptions {
   double friction = 0.7;              // α, the coefficient of static friction
   bool conservativeFriction = false;  // use α/√2, so the cone circumscribes the pyramid (Sec. 3.1)
+  // Sides of the friction pyramid (Sec. 3.1): 4 (|f_t1|, |f_t2| ≤ α f_n⁺, the paper's) or 8
+  // (the octagon whose sides touch the friction circle: it exceeds the cone by at most
+  // 1/cos(π/8) − 1 = 8 % in its corners, the square by √2 − 1 = 41 %; twice the rows).
+  int frictionSides = 4;
   double kernShrink = 0.0;            // in [0, 1): geometric factor of safety (Sec. 3.4)
   IpmOptions solver;
 };
@@ -37,7 +41,22 @@ struct InterfaceForces {
   double tangentialForce = 0; // magnitude of the net in-plane force, N
   // Where the net normal force acts (the centre of pressure); meaningful when normalForce > 0.
   Vec3 centreOfPressure{0.0};
+  // The centre of pressure relative to the contact polygon, as the factor by which the polygon
+  // must be scaled about its area centroid to reach it (Sec. 3.4, Fig. 7): 0 at the centroid,
+  // 1 on the boundary, above 1 outside (only tension can put it there). The kern shrink s
+  // keeps it within 1 − s; a rectangle's middle third along an axis is 1/3. Infinite when the
+  // net normal force is not compressive.
+  double pressureGauge = 0;
   double maxTension = 0;      // the largest f_n⁻ at a vertex, N
+};
+
+// A contact vertex carrying tension (f_n⁻ > kTensionSite·W): where the structure would need
+// glue (Sec. 3.2, Fig. 6).
+struct TensionSite {
+  int interface = -1;  // index into AnalysisResult::interfaces
+  int vertex = -1;     // index into that interface's vertices
+  Vec3 point{0.0};
+  double tension = 0;  // N
 };
 
 struct AnalysisResult {
@@ -48,9 +67,12 @@ struct AnalysisResult {
   double yNormalised = 0;          // y / W²
   bool feasible = false;           // optimal and y/W² ≤ kFeasibleMeasure
   double equilibriumResidual = 0;  // ‖A f + w‖ / ‖w‖
+  double gap = 0;                  // the solver's duality gap in units of y/W²: y/W² is within it of the optimum
   std::vector<InterfaceForces> interfaces;
+  std::vector<TensionSite> tensionSites;  // largest tension first
   std::vector<std::string> warnings;
   Eigen::VectorXd multipliers;  // of the equilibrium rows, for loads normalised by W
+  Eigen::VectorXd solution;     // the QP's x: [f_n⁺, f_n⁻, f_t1, f_t2] per vertex, in units of W
 };
 
 // Solves the penalty QP. Throws corbel::Error for bad input or degenerate geometry (a block

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "statics/tolerances.h"
 
@@ -107,8 +108,10 @@ Contacts findContacts(const Assembly& assembly, const std::vector<BlockPropertie
       if (!boxesTouch(props[i].bounds, props[j].bounds, tolerance)) continue;
       const int a = std::min(i, j), b = std::max(i, j);
       bool touchedWithoutArea = false;
-      for (const FaceGeom& fa : faces[a]) {
-        for (const FaceGeom& fb : faces[b]) {
+      for (std::size_t ia = 0; ia < faces[a].size(); ++ia) {
+        const FaceGeom& fa = faces[a][ia];
+        for (std::size_t ib = 0; ib < faces[b].size(); ++ib) {
+          const FaceGeom& fb = faces[b][ib];
           if (dot(fa.n, fb.n) > -(1.0 - kOppositeCosine)) continue;
           bool coplanar = true;
           for (const Vec3& q : fb.pts) coplanar = coplanar && std::abs(dot(q - fa.pts[0], fa.n)) <= tolerance;
@@ -145,6 +148,8 @@ Contacts findContacts(const Assembly& assembly, const std::vector<BlockPropertie
           Interface itf;
           itf.a = a;
           itf.b = b;
+          itf.faceA = int(ia);
+          itf.faceB = int(ib);
           itf.normal = fa.n;
           itf.area = area;
           Vec2 c(0.0);
@@ -168,6 +173,11 @@ Contacts findContacts(const Assembly& assembly, const std::vector<BlockPropertie
       if (touchedWithoutArea) result.zeroArea.push_back({a, b});
     }
   }
+  std::sort(result.interfaces.begin(), result.interfaces.end(), [](const Interface& x, const Interface& y) {
+    return std::tie(x.a, x.b, x.faceA, x.faceB) < std::tie(y.a, y.b, y.faceA, y.faceB);
+  });
+  std::sort(result.zeroArea.begin(), result.zeroArea.end(),
+            [](const ZeroAreaContact& x, const ZeroAreaContact& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
   return result;
 }
 

@@ -13,6 +13,7 @@ namespace corbel::statics {
 // scaled about its area centroid by (1 − kern shrink), Sec. 3.4.
 struct Interface {
   int a = -1, b = -1;
+  int faceA = -1, faceB = -1;  // the touching faces of a and b
   Vec3 normal{0.0}, t1{0.0}, t2{0.0};
   std::vector<Vec3> polygon;
   std::vector<Vec3> points;
@@ -34,6 +35,8 @@ struct Contacts {
 // free) whose planes are within `tolerance`, with bounding boxes as the spatial filter. The
 // contact polygon is the intersection of the two convex faces, clipped exactly in the plane
 // of a's face. `kernShrink` in [0, 1) moves every force point towards the polygon centroid.
+// Interfaces come sorted by (a, b, faceA, faceB), so the same model gives the same order
+// whatever the spatial filter visits first (the parameter search relies on it).
 Contacts findContacts(const Assembly& assembly, const std::vector<BlockProperties>& props, double tolerance,
                       double kernShrink);
 

@@ -1,10 +1,14 @@
 #include "statics/ipm.h"
 
+#include "statics/block_ldlt.h"
+
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -14,6 +18,8 @@ std::string toString(SolveStatus s) {
   switch (s) {
     case SolveStatus::Optimal: return "optimal";
     case SolveStatus::IterationLimit: return "iteration limit";
+    case SolveStatus::TimeLimit: return "time limit";
+    case SolveStatus::ReducedAccuracy: return "reduced accuracy";
     case SolveStatus::NumericalFailure: return "numerical failure";
   }
   return "unknown";
@@ -24,6 +30,18 @@ namespace {
 using Eigen::VectorXd;
 using Mat4 = Eigen::Matrix4d;
 
+// The average complementarity (loads are normalised) below which the Newton solves are
+// refined on the unreduced system (IpmOptions::newtonRefinement).
+constexpr double kRefineBelowMu = 1e-8;
+
+// A best iterate this close is reported as `reduced accuracy` rather than a failure: a scaled
+// primal residual ≤ 1e-9 (equilibrium holds), a dual residual ≤ 1e-7 and a gap ≤ 1e-3 of the
+// objective (the objective is then within the gap of its optimum; the result reports it).
+constexpr double kReducedPrimal = 1e-9;
+constexpr double kReducedDual = 1e-7;
+constexpr double kReducedGap = 1e-3;
+
+
 double maxStep(const VectorXd& v, const VectorXd& dv) {
   double a = std::numeric_limits<double>::infinity();
   for (Eigen::Index i = 0; i < v.size(); ++i)
@@ -32,6 +50,81 @@ double maxStep(const VectorXd& v, const VectorXd& dv) {
 }
 
 bool allFinite(const VectorXd& v) { return v.allFinite(); }
+
+// One interface to the factorisations of S (IpmOptions::schurSolver). S arrives as the lower
+// triangle of a scalar sparse matrix; the block factorisation scatters it into 6×6 blocks
+// through a map built once.
+class SchurFactor {
+ public:
+  SchurFactor(SchurSolver kind, int rowGroup) : kind_(kind) {
+    if (kind_ == SchurSolver::BlockLdlt && rowGroup != 6) kind_ = SchurSolver::EigenLdlt;
+  }
+  void analyze(const Eigen::SparseMatrix<double>& S) {
+    if (kind_ == SchurSolver::BlockLdlt && S.rows() % 6 != 0) kind_ = SchurSolver::EigenLdlt;
+    if (kind_ == SchurSolver::Cholmod) {
+      cholmod_.analyzePattern(S);
+    } else if (kind_ == SchurSolver::EigenLdlt) {
+      ldlt_.analyzePattern(S);
+    } else {
+      std::vector<std::pair<int, int>> pairs;
+      for (int c = 0; c < S.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(S, c); it; ++it) pairs.emplace_back(int(it.row()) / 6, c / 6);
+      std::sort(pairs.begin(), pairs.end());
+      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+      blocks_.analyze(int(S.rows() / 6), pairs);
+      // Each stored scalar of S goes to one or (off the diagonal of a diagonal block) two
+      // places of the blocks: index = slot × 36 + column-major offset.
+      scatter_.clear();
+      for (int c = 0; c < S.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(S, c); it; ++it) {
+          const int r = int(it.row()), gi = r / 6, gj = c / 6, oi = r % 6, oj = c % 6;
+          const BlockLdlt::Slot sl = blocks_.slot(gi, gj);
+          if (gi == gj) {
+            scatter_.push_back({36 * sl.index + oi + 6 * oj, oi != oj ? 36 * sl.index + oj + 6 * oi : -1});
+          } else {
+            scatter_.push_back({sl.transposed ? 36 * sl.index + oj + 6 * oi : 36 * sl.index + oi + 6 * oj, -1});
+          }
+        }
+    }
+  }
+  // False when S is not (numerically) positive definite.
+  bool factorize(const Eigen::SparseMatrix<double>& S) {
+    if (kind_ == SchurSolver::Cholmod) {
+      cholmod_.factorize(S);
+      return cholmod_.info() == Eigen::Success;
+    }
+    if (kind_ == SchurSolver::BlockLdlt) {
+      std::vector<BlockLdlt::Block>& v = blocks_.values();
+      for (BlockLdlt::Block& b : v) b.setZero();
+      double* out = v.empty() ? nullptr : v[0].data();
+      const double* in = S.valuePtr();
+      for (std::size_t k = 0; k < scatter_.size(); ++k) {
+        out[scatter_[k][0]] += in[k];
+        if (scatter_[k][1] >= 0) out[scatter_[k][1]] += in[k];
+      }
+      return blocks_.factorize();
+    }
+    ldlt_.factorize(S);
+    if (ldlt_.info() != Eigen::Success) return false;
+    const VectorXd D = ldlt_.vectorD();
+    const double dmax = D.size() ? D.cwiseAbs().maxCoeff() : 1.0;
+    for (Eigen::Index i = 0; i < D.size(); ++i)
+      if (!(D[i] > 1e-15 * dmax)) return false;
+    return true;
+  }
+  VectorXd solve(const VectorXd& b) {
+    if (kind_ == SchurSolver::Cholmod) return cholmod_.solve(b);
+    if (kind_ == SchurSolver::BlockLdlt) return blocks_.solve(b);
+    return ldlt_.solve(b);
+  }
+
+ private:
+  SchurSolver kind_;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholmod_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
+  BlockLdlt blocks_;
+  std::vector<std::array<int, 2>> scatter_;
+};
 
 }  // namespace
 
@@ -55,24 +148,37 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     }
   }
 
+  // The inequality rows flattened: row i acts on variables offset[i] .. offset[i] + size[i] − 1
+  // with coefficients coef[4i ..].
+  std::vector<int> rowOffset(static_cast<std::size_t>(mi)), rowSize(static_cast<std::size_t>(mi));
+  std::vector<double> coef(4 * std::size_t(mi), 0.0);
+  for (int j = 0; j < nb; ++j) {
+    const VarBlock& blk = qp.blocks[j];
+    for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+      const std::size_t i = std::size_t(rowStart[j]) + r;
+      rowOffset[i] = blk.offset;
+      rowSize[i] = blk.size;
+      for (int k = 0; k < blk.size; ++k) coef[4 * i + std::size_t(k)] = blk.rows[r][k];
+    }
+  }
   auto Gx = [&](const VectorXd& v) {
     VectorXd out(mi);
-    for (int j = 0; j < nb; ++j) {
-      const VarBlock& blk = qp.blocks[j];
-      for (std::size_t r = 0; r < blk.rows.size(); ++r) {
-        double acc = 0;
-        for (int k = 0; k < blk.size; ++k) acc += blk.rows[r][k] * v[blk.offset + k];
-        out[rowStart[j] + int(r)] = acc;
-      }
+    for (std::size_t i = 0; i < std::size_t(mi); ++i) {
+      const double* g = &coef[4 * i];
+      const double* x0 = v.data() + rowOffset[i];
+      double acc = 0;
+      for (int k = 0; k < rowSize[i]; ++k) acc += g[k] * x0[k];
+      out[Eigen::Index(i)] = acc;
     }
     return out;
   };
   auto GTv = [&](const VectorXd& w) {
     VectorXd out = VectorXd::Zero(n);
-    for (int j = 0; j < nb; ++j) {
-      const VarBlock& blk = qp.blocks[j];
-      for (std::size_t r = 0; r < blk.rows.size(); ++r)
-        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] += blk.rows[r][k] * w[rowStart[j] + int(r)];
+    for (std::size_t i = 0; i < std::size_t(mi); ++i) {
+      const double* g = &coef[4 * i];
+      double* o = out.data() + rowOffset[i];
+      const double wi = w[Eigen::Index(i)];
+      for (int k = 0; k < rowSize[i]; ++k) o[k] += g[k] * wi;
     }
     return out;
   };
@@ -106,9 +212,9 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       }
   }
 
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  SchurFactor ldlt(options.schurSolver, qp.rowGroup);
   bool analysed = false;
-  std::vector<Mat4> hinv(nb);
+  std::vector<Mat4> hinv(nb), hess(nb);
   std::vector<Eigen::Triplet<double>> trips;
   Eigen::SparseMatrix<double> S;
   std::vector<int> diagSlot;
@@ -119,6 +225,16 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   IpmResult res;
   res.status = SolveStatus::IterationLimit;
   double regularisation = 0;
+  // Stopping short of the tolerances: the best iterate, called `reduced accuracy` when it is
+  // within kReducedPrimal, kReducedDual and kReducedGap.
+  auto stop = [&](SolveStatus why) {
+    best.regularisations = res.regularisations;
+    const bool close = best.x.size() == n && best.primalResidual <= kReducedPrimal &&
+                       best.dualResidual <= kReducedDual &&
+                       best.gap <= std::max(options.gapTolerance, kReducedGap * std::abs(best.objective));
+    best.status = close && why != SolveStatus::TimeLimit ? SolveStatus::ReducedAccuracy : why;
+    return best;
+  };
 
   auto record = [&](int iter, const VectorXd& rp, const VectorXd& rd, double gap) {
     const double pr = rp.size() ? rp.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
@@ -139,6 +255,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
            (gap <= options.gapTolerance || gap <= options.relativeGapTolerance * std::abs(obj));
   };
 
+  const auto started = std::chrono::steady_clock::now();
   for (int iter = 0;; ++iter) {
     const VectorXd gx = Gx(x);
     const VectorXd rd = qdiag.cwiseProduct(x) + c - qp.A.transpose() * y - GTv(z);
@@ -151,6 +268,10 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       return best;
     }
     if (iter >= options.maxIterations) break;
+    if (options.maxSeconds > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > options.maxSeconds) {
+      return stop(SolveStatus::TimeLimit);
+    }
     const double mu = mi ? gap / mi : 0.0;
     const VectorXd d = z.cwiseQuotient(s);
 
@@ -165,9 +286,11 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       }
       const int sz = blk.size;
       Mat4 inv = Mat4::Zero();
-      const Eigen::MatrixXd Hs = H.topLeftCorner(sz, sz);
-      inv.topLeftCorner(sz, sz) = Hs.ldlt().solve(Eigen::MatrixXd::Identity(sz, sz));
+      using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+      const Small Hs = H.topLeftCorner(sz, sz);
+      inv.topLeftCorner(sz, sz) = Hs.ldlt().solve(Small::Identity(sz, sz));
       hinv[j] = inv;
+      hess[j] = H;
     }
     // Schur complement A H⁻¹ Aᵀ (lower triangle), with a diagonal entry on every row. The
     // pattern never changes: it is built once, then values are summed into fixed slots.
@@ -192,7 +315,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
           for (std::size_t q = 0; q <= p; ++q)
             blockSlots[std::size_t(j)].push_back(slot(std::max(rows[p], rows[q]), std::min(rows[p], rows[q])));
       }
-      ldlt.analyzePattern(S);
+      ldlt.analyze(S);
       analysed = true;
     }
     auto factor = [&]() {
@@ -202,19 +325,24 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int j = 0; j < nb; ++j) {
         const auto& bc = cols[j];
         const int sz = qp.blocks[j].size;
+        // A vertex block touches the 12 rows of its two blocks: fixed-capacity, no allocation.
+        using Cols = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 4>;
+        using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
+        if (bc.rows.size() <= 12) {
+          const Cols AH = bc.vals.leftCols(sz).lazyProduct(hinv[j].topLeftCorner(sz, sz));
+          const Square block = AH.lazyProduct(bc.vals.leftCols(sz).transpose());
+          std::size_t k = 0;
+          for (std::size_t p = 0; p < bc.rows.size(); ++p)
+            for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+          continue;
+        }
         const Eigen::MatrixXd AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
         const Eigen::MatrixXd block = AH * bc.vals.leftCols(sz).transpose();
         std::size_t k = 0;
         for (std::size_t p = 0; p < bc.rows.size(); ++p)
           for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
       }
-      ldlt.factorize(S);
-      if (ldlt.info() != Eigen::Success) return false;
-      const VectorXd D = ldlt.vectorD();
-      const double dmax = D.size() ? D.cwiseAbs().maxCoeff() : 1.0;
-      for (Eigen::Index i = 0; i < D.size(); ++i)
-        if (!(D[i] > 1e-15 * dmax)) return false;
-      return true;
+      return ldlt.factorize(S);
     };
     bool ok = factor();
     for (int attempt = 0; !ok && attempt < 8; ++attempt) {
@@ -223,46 +351,65 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       ok = factor();
     }
     if (!ok) {
-      best.status = SolveStatus::NumericalFailure;
-      best.regularisations = res.regularisations;
-      return best;
+      return stop(SolveStatus::NumericalFailure);
     }
     regularisation *= 0.1;  // relax again once things go well
     if (regularisation < 1e-14) regularisation = 0;
 
-    auto applyHinv = [&](const VectorXd& v) {
+    // M v block by block, for M = H⁻¹ or H.
+    auto applyBlocks = [&](const std::vector<Mat4>& M, const VectorXd& v) {
       VectorXd out(n);
       for (int j = 0; j < nb; ++j) {
         const VarBlock& blk = qp.blocks[j];
         Eigen::Vector4d in = Eigen::Vector4d::Zero();
         for (int k = 0; k < blk.size; ++k) in[k] = v[blk.offset + k];
-        const Eigen::Vector4d o = hinv[j] * in;
+        const Eigen::Vector4d o = M[std::size_t(j)] * in;
         for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
       }
       return out;
+    };
+    auto applyHinv = [&](const VectorXd& v) { return applyBlocks(hinv, v); };
+    auto applyH = [&](const VectorXd& v) { return applyBlocks(hess, v); };
+    // S dy = rhs with one step of iterative refinement against S applied as A H⁻¹ Aᵀ (near the
+    // optimum S mixes entries of very different sizes, z/s → 0 or ∞).
+    auto solveSchur = [&](const VectorXd& rhs) {
+      VectorXd dy = ldlt.solve(rhs);
+      const VectorXd r = rhs - qp.A * applyHinv(qp.A.transpose() * dy) - (regularisation) * dy;
+      dy += ldlt.solve(r);
+      return dy;
     };
     auto newton = [&](const VectorXd& rc, VectorXd& dx, VectorXd& dy, VectorXd& dz, VectorXd& ds) {
       const VectorXd w = rc.cwiseQuotient(s) + d.cwiseProduct(rg);
       const VectorXd rho = -rd - GTv(w);
       const VectorXd rhs = -rp - qp.A * applyHinv(rho);
-      dy = ldlt.solve(rhs);
+      dy = solveSchur(rhs);
       dx = applyHinv(rho + qp.A.transpose() * dy);
-      dz = -w - d.cwiseProduct(Gx(dx));
-      ds = Gx(dx) + rg;
+      // Refinement on the unreduced system H dx − Aᵀ dy = rho, A dx = −rp: forming the Schur
+      // right-hand side cancels large terms (H⁻¹ reaches 1/μ), which leaves A dx + rp at
+      // 1e-11..1e-10 near the optimum of strongly infeasible models; one correction solved
+      // with the same factorisation brings it back to rounding. Only needed once μ is small.
+      for (int step = 0; mu < kRefineBelowMu && step < options.newtonRefinement; ++step) {
+        const VectorXd r1 = rho + qp.A.transpose() * dy - applyH(dx);
+        const VectorXd r2 = -rp - qp.A * dx;
+        const VectorXd ddy = solveSchur(r2 - qp.A * applyHinv(r1));
+        dx += applyHinv(r1 + qp.A.transpose() * ddy);
+        dy += ddy;
+      }
+      const VectorXd gdx = Gx(dx);
+      dz = -w - d.cwiseProduct(gdx);
+      ds = gdx + rg;
       return allFinite(dx) && allFinite(dy) && allFinite(dz);
     };
     VectorXd dx, dy, dz, ds;
     if (!newton(s.cwiseProduct(z), dx, dy, dz, ds)) {
-      best.status = SolveStatus::NumericalFailure;
-      return best;
+      return stop(SolveStatus::NumericalFailure);
     }
     const double aAff = std::min({1.0, maxStep(s, ds), maxStep(z, dz)});
     const double muAff = mi ? (s + aAff * ds).dot(z + aAff * dz) / mi : 0.0;
     const double sigma = mu > 0 ? std::pow(std::clamp(muAff / mu, 0.0, 1.0), 3) : 0.0;
     const VectorXd rc = s.cwiseProduct(z) + ds.cwiseProduct(dz) - VectorXd::Constant(mi, sigma * mu);
     if (!newton(rc, dx, dy, dz, ds)) {
-      best.status = SolveStatus::NumericalFailure;
-      return best;
+      return stop(SolveStatus::NumericalFailure);
     }
     const double alpha = std::min(1.0, 0.995 * std::min(maxStep(s, ds), maxStep(z, dz)));
     x += alpha * dx;
@@ -271,9 +418,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     s += alpha * ds;
     res.iterations = iter + 1;
   }
-  best.status = SolveStatus::IterationLimit;
-  best.regularisations = res.regularisations;
-  return best;
+  return stop(SolveStatus::IterationLimit);
 }
 
 }  // namespace corbel::statics

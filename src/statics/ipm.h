@@ -27,18 +27,35 @@ struct BlockQP {
   std::vector<VarBlock> blocks;
   Eigen::SparseMatrix<double> A;  // equations × variables
   Eigen::VectorXd b;
+  // Equations come in groups of this many consecutive rows (6: force and torque of a block);
+  // SchurSolver::BlockLdlt needs 6, other values fall back to Eigen's SimplicialLDLT.
+  int rowGroup = 1;
 };
 
 enum class SolveStatus {
   Optimal,          // residuals and duality gap within tolerance
   IterationLimit,   // the iteration cap was reached; the best iterate is returned
+  TimeLimit,        // the time cap was reached; the best iterate is returned
+  ReducedAccuracy,  // stopped short of the tolerances (iteration cap or a failed factorisation)
+                    // at a best iterate in equilibrium (residual ≤ 1e-9), dual residual ≤ 1e-7,
+                    // gap ≤ 1e-3 of the objective: the objective is within the gap of its optimum
   NumericalFailure  // the Newton system could not be factored even with regularisation
 };
 
 std::string toString(SolveStatus s);
 
+// The factorisation of the Schur complement A H⁻¹ Aᵀ in every Newton step.
+enum class SchurSolver {
+  BlockLdlt,   // ours (block_ldlt.h): LDLᵀ on 6×6 blocks, AMD on the graph of blocks; needs rowGroup 6
+  Cholmod,     // CHOLMOD's supernodal LLᵀ (SuiteSparse), AMD/METIS ordering chosen by CHOLMOD
+  EigenLdlt    // Eigen's SimplicialLDLT with AMD ordering
+};
+
 struct IpmOptions {
+  SchurSolver schurSolver = SchurSolver::BlockLdlt;
   int maxIterations = 80;
+  double maxSeconds = 0;  // wall-clock cap on one solve, 0 for none
+  int newtonRefinement = 1;  // correction steps on the unreduced Newton system (see ipm.cpp)
   double residualTolerance = 1e-11;  // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
   double gapTolerance = 1e-13;       // absolute, on sᵀz (loads are normalised, so O(1))
   double relativeGapTolerance = 1e-10;  // or relative to |objective|

@@ -28,6 +28,11 @@ inline constexpr double kFeasibleMeasure = 1e-10;
 // linearly past the threshold, so this places thresholds to about 1e-8 relative.
 inline constexpr double kFeasibleViolation = 1e-9;
 
+// A contact vertex is reported as a tension site when f_n⁻ exceeds kTensionSite × W. A
+// structure the QP calls feasible (y/W² ≤ 1e-10) has every f_n⁻ ≤ 1e-5 W, so feasible
+// structures report none; solver noise in standing ones is far below.
+inline constexpr double kTensionSite = 1e-5;
+
 inline double lengthTolerance(const BBox& model) { return kLengthTolerance * std::max(model.diagonal(), 1e-300); }
 
 }  // namespace corbel::statics

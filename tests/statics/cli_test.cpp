@@ -1,5 +1,6 @@
 // corbel-cli statics arch: the numbers it prints and its refusals.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 
@@ -49,6 +50,39 @@ TEST(StaticsCli, RefusesBadCommandLines) {
   EXPECT_EQ(cli("dome --blocks 10 --thickness 0.2").code, 2);
   // A sliding-prone arch (no friction) that does not stand untilted: the bisection says so.
   EXPECT_EQ(cli("arch --blocks 10 --thickness 0.2 --friction 0 --critical-tilt").code, 1);
+}
+
+// The examples through the CLI: the search ends standing, and the strict LP test agrees.
+TEST(StaticsCli, ExampleSearchPrintsAFeasibleResultAsJson) {
+  const CliRun r = cli("example arch-on-columns --optimize --free thickness=0.05:0.5 --free columnWidth=0.05:1.5 --json");
+  ASSERT_EQ(r.code, 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "feasible");
+  EXPECT_TRUE(j["stands_strictly"].get<bool>());
+  EXPECT_GT(j["initial_measure"].get<double>(), 1e-4);
+  EXPECT_LE(j["measure"].get<double>(), 1e-10);
+  EXPECT_GE(j["iterations"].get<int>(), 1);
+  EXPECT_GE(j["parameters"]["thickness"].get<double>(), 0.05);
+  EXPECT_LE(j["parameters"]["columnWidth"].get<double>(), 1.5);
+  EXPECT_EQ(j["blocks"].get<int>(), 11);
+  // Without --optimize: the measure at the defaults, which do not stand.
+  const CliRun plain = cli("example arch-on-columns --json");
+  ASSERT_EQ(plain.code, 0);
+  const nlohmann::json pj = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(pj["stands"].get<bool>());
+  EXPECT_GT(pj["tension_sites"].get<int>(), 0);
+}
+
+TEST(StaticsCli, ExampleRefusesBadNamesAndBounds) {
+  EXPECT_EQ(cli("example cathedral").code, 1);
+  EXPECT_EQ(cli("example").code, 2);
+  EXPECT_EQ(cli("example tower --free x1=-0.1:0.1").code, 2);  // --free without --optimize
+  EXPECT_EQ(cli("example tower --optimize --free z1=-0.1:0.1").code, 1);
+  EXPECT_EQ(cli("example tower --optimize --free x1=0.1:-0.1").code, 1);
+  EXPECT_EQ(cli("example tower --optimize --free x1=nan:0.1").code, 1);
+  EXPECT_EQ(cli("example tower --set x1=0.9").code, 1);  // outside its valid range
+  EXPECT_EQ(cli("example tower --set x1").code, 2);
+  EXPECT_EQ(cli("example tower --friction-sides 6").code, 2);
 }
 
 }  // namespace

@@ -1,0 +1,208 @@
+// corbel-cli statics arch | example: parse, call the statics kernel, print.
+#include "cli/statics_cli.h"
+
+#include "core/error.h"
+#include "statics/analysis.h"
+#include "statics/arch.h"
+#include "statics/examples.h"
+#include "statics/search.h"
+#include "statics/thresholds.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace corbel::cli {
+namespace {
+
+struct UsageError : Error {
+  using Error::Error;
+};
+
+struct Options {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> values;  // last value of each single option; flags map to ""
+  std::vector<std::string> frees, sets;       // --free and --set, repeatable
+};
+
+Options parse(int argc, char** argv, const std::map<std::string, bool>& known) {
+  Options o;
+  for (int i = 2; i < argc; ++i) {
+    const std::string s = argv[i];
+    if (s.rfind("--", 0) != 0) {
+      o.positional.push_back(s);
+      continue;
+    }
+    const auto it = known.find(s);
+    if (it == known.end()) throw UsageError("statics: unknown option " + s);
+    if (!it->second) {
+      o.values[s] = "";
+      continue;
+    }
+    if (i + 1 >= argc) throw UsageError("statics: " + s + " needs a value");
+    const std::string v = argv[++i];
+    if (s == "--free")
+      o.frees.push_back(v);
+    else if (s == "--set")
+      o.sets.push_back(v);
+    else
+      o.values[s] = v;
+  }
+  return o;
+}
+
+double number(const Options& o, const char* opt, double def, double lo, double hi) {
+  const auto it = o.values.find(opt);
+  if (it == o.values.end()) return def;
+  char* end = nullptr;
+  const double v = std::strtod(it->second.c_str(), &end);
+  if (it->second.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
+    throw UsageError(std::string(opt) + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v;
+}
+
+int sides(const Options& a) {
+  const double v = number(a, "--friction-sides", 4, 4, 8);
+  if (v != 4 && v != 8) throw UsageError("--friction-sides: expected 4 or 8");
+  return int(v);
+}
+
+int archCommand(const Options& a) {
+  const bool minThickness = a.values.count("--min-thickness") > 0, criticalTilt = a.values.count("--critical-tilt") > 0;
+  if (minThickness && criticalTilt) throw UsageError("statics: --min-thickness and --critical-tilt exclude each other");
+  if (!a.values.count("--blocks")) throw UsageError("statics arch: --blocks N is required");
+  if (!minThickness && !a.values.count("--thickness")) throw UsageError("statics arch: --thickness T is required");
+  statics::ArchSpec spec;
+  const double blocks = number(a, "--blocks", 100, 1, 100000);
+  if (blocks != std::floor(blocks)) throw UsageError("--blocks: expected a whole number");
+  spec.blocks = int(blocks);
+  spec.thickness = number(a, "--thickness", 0.2, 1e-6, 1.999);
+  spec.tiltDeg = number(a, "--tilt", 0, -89, 89);
+  statics::AnalysisOptions options;
+  options.friction = number(a, "--friction", 0.7, 0, 100);
+  options.kernShrink = number(a, "--kern", 0, 0, 0.99);
+  options.frictionSides = sides(a);
+  char text[64];
+  if (minThickness) {
+    std::snprintf(text, sizeof text, "%.6f", statics::minimumArchThickness(spec, options, 1e-6));
+  } else if (criticalTilt) {
+    std::snprintf(text, sizeof text, "%.4f", statics::criticalArchTilt(spec, options, 1e-5));
+  } else {
+    const statics::AnalysisResult r = statics::analyse(statics::semicircularArch(spec), options);
+    if (r.status != statics::SolveStatus::Optimal)
+      std::cerr << "corbel-cli: warning: the solver stopped early (" << statics::toString(r.status) << ")\n";
+    std::snprintf(text, sizeof text, "%.6g", r.feasible ? 0.0 : r.yNormalised);
+  }
+  std::cout << text << "\n";
+  return 0;
+}
+
+int exampleCommand(const Options& a) {
+  if (a.positional.size() != 2) {
+    std::string names;
+    for (const std::string& n : statics::exampleNames()) names += " " + n;
+    throw UsageError("statics example: expected one example name (" + names.substr(1) + ")");
+  }
+  const statics::ParametricModel model = statics::exampleByName(a.positional[1]);
+  statics::ParameterSet values = model.parameters;
+  for (const std::string& s : a.sets) {
+    const auto eq = s.find('=');
+    char* end = nullptr;
+    const std::string v = eq == std::string::npos ? "" : s.substr(eq + 1);
+    const double d = std::strtod(v.c_str(), &end);
+    if (eq == std::string::npos || v.empty() || *end != '\0') throw UsageError("--set: expected NAME=VALUE, got '" + s + "'");
+    values.set(s.substr(0, eq), d);
+  }
+  const bool optimize = a.values.count("--optimize") > 0, json = a.values.count("--json") > 0;
+  if (!optimize && !a.frees.empty()) throw UsageError("statics example: --free needs --optimize");
+  statics::SearchOptions options;
+  options.analysis.kernShrink = number(a, "--kern", 0, 0, 0.99);
+  options.analysis.friction = number(a, "--friction", 0.7, 0, 100);
+  options.analysis.frictionSides = sides(a);
+  if (a.values.count("--algorithm")) options.algorithm = a.values.at("--algorithm");
+  options.maxEvaluations = int(number(a, "--max-evaluations", 200, 1, 1e6));
+  options.maxSeconds = number(a, "--max-seconds", 0, 0, 1e6);
+
+  nlohmann::ordered_json out;
+  out["example"] = model.name;
+  out["blocks"] = model.build(values).blocks.size();
+  if (!optimize) {
+    const statics::AnalysisResult r = statics::analyse(model.build(values), options.analysis);
+    out["measure"] = r.yNormalised;
+    out["y"] = r.y;
+    out["stands"] = r.feasible;
+    out["status"] = statics::toString(r.status);
+    out["iterations"] = r.iterations;
+    out["gap"] = r.gap;
+    out["tension_sites"] = r.tensionSites.size();
+    double gauge = 0;
+    for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
+    out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
+  } else {
+    std::vector<statics::FreeParameter> free;
+    for (const std::string& f : a.frees) free.push_back(statics::parseFreeParameter(f));
+    if (free.empty()) free = model.suggestedFree;
+    const statics::SearchResult r = statics::searchParameters(model, free, options, &values);
+    out["measure"] = r.measure;
+    out["initial_measure"] = r.initialMeasure;
+    out["y"] = r.y;
+    out["stands"] = r.status == statics::SearchStatus::Feasible;
+    out["stands_strictly"] = r.standsStrictly;
+    out["status"] = statics::toString(r.status);
+    out["message"] = r.message;
+    out["iterations"] = r.evaluations;
+    out["seconds"] = r.seconds;
+    nlohmann::ordered_json params;
+    for (const statics::FreeParameter& f : free) params[f.name] = r.values[f.name];
+    out["parameters"] = params;
+    if (r.status == statics::SearchStatus::Failed && !json) std::cerr << "corbel-cli: " << r.message << "\n";
+  }
+  if (json) {
+    std::cout << out.dump() << "\n";
+    return 0;
+  }
+  char text[96];
+  std::snprintf(text, sizeof text, "%.6g", out["measure"].get<double>());
+  std::cout << "example: " << model.name << " (" << out["blocks"].get<std::size_t>() << " blocks with the ground)\n"
+            << "y/W²: " << text << "\nstatus: " << out["status"].get<std::string>() << "\n"
+            << "iterations: " << out["iterations"].get<int>() << "\n";
+  if (optimize) {
+    std::cout << "result: " << out["message"].get<std::string>() << "\n";
+    for (const auto& [name, v] : out["parameters"].items()) {
+      std::snprintf(text, sizeof text, "%.6f", v.get<double>());
+      std::cout << name << " = " << text << "\n";
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int runStatics(int argc, char** argv) {
+  try {
+    const Options a = parse(argc, argv,
+                            {{"--blocks", true}, {"--thickness", true}, {"--tilt", true}, {"--friction", true},
+                             {"--kern", true}, {"--min-thickness", false}, {"--critical-tilt", false},
+                             {"--optimize", false}, {"--free", true}, {"--set", true}, {"--json", false},
+                             {"--algorithm", true}, {"--max-evaluations", true}, {"--max-seconds", true},
+                             {"--friction-sides", true}});
+    if (!a.positional.empty() && a.positional[0] == "arch" && a.positional.size() == 1) return archCommand(a);
+    if (!a.positional.empty() && a.positional[0] == "example") return exampleCommand(a);
+    throw UsageError("statics: expected 'arch' (statics arch --blocks N --thickness T ...) or 'example NAME'");
+  } catch (const UsageError& e) {
+    std::cerr << "corbel-cli: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "corbel-cli: error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace corbel::cli

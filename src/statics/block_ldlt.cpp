@@ -1,0 +1,130 @@
+#include "statics/block_ldlt.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+
+namespace corbel::statics {
+
+void BlockLdlt::analyze(int n, const std::vector<std::pair<int, int>>& pairs) {
+  n_ = n;
+  // AMD on the graph of blocks.
+  std::vector<Eigen::Triplet<double>> trips;
+  for (int i = 0; i < n; ++i) trips.emplace_back(i, i, 1.0);
+  for (const auto& [i, j] : pairs)
+    if (i != j) {
+      trips.emplace_back(i, j, 1.0);
+      trips.emplace_back(j, i, 1.0);
+    }
+  Eigen::SparseMatrix<double> G(n, n);
+  G.setFromTriplets(trips.begin(), trips.end());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P;
+  Eigen::AMDOrdering<int> amd;
+  amd(G, P);
+  // Eigen's orderings return the inverse permutation: entry p is the old index placed at p.
+  pos_.assign(std::size_t(n), 0);
+  perm_.assign(std::size_t(n), 0);
+  for (int p = 0; p < n; ++p) {
+    perm_[std::size_t(p)] = P.indices()[p];
+    pos_[std::size_t(P.indices()[p])] = p;
+  }
+  // Symbolic factorisation: the rows of column p are its later neighbours and its
+  // elimination-tree children's rows (all after p).
+  std::vector<std::vector<int>> adj(static_cast<std::size_t>(n));
+  for (const auto& [i, j] : pairs) {
+    if (i == j) continue;
+    const int pi = pos_[std::size_t(i)], pj = pos_[std::size_t(j)];
+    adj[std::size_t(std::min(pi, pj))].push_back(std::max(pi, pj));
+  }
+  std::vector<std::vector<int>> col(static_cast<std::size_t>(n));
+  std::vector<std::vector<int>> children(static_cast<std::size_t>(n));
+  for (int p = 0; p < n; ++p) {
+    std::vector<int>& c = col[std::size_t(p)];
+    c = adj[std::size_t(p)];
+    for (int ch : children[std::size_t(p)])
+      for (int q : col[std::size_t(ch)])
+        if (q > p) c.push_back(q);
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    if (!c.empty()) children[std::size_t(c.front())].push_back(p);
+  }
+  colStart_.assign(std::size_t(n) + 1, 0);
+  rows_.clear();
+  for (int p = 0; p < n; ++p) {
+    colStart_[std::size_t(p)] = int(rows_.size());
+    rows_.push_back(p);  // the diagonal slot
+    for (int q : col[std::size_t(p)]) rows_.push_back(q);
+  }
+  colStart_[std::size_t(n)] = int(rows_.size());
+  auto find = [&](int row, int column) {
+    const auto b = rows_.begin() + colStart_[std::size_t(column)], e = rows_.begin() + colStart_[std::size_t(column) + 1];
+    return int(std::lower_bound(b, e, row) - rows_.begin());
+  };
+  // Update targets: for rows qa ≥ qb of column p, the block (qa, qb) in column qb.
+  updStart_.assign(std::size_t(n) + 1, 0);
+  updTarget_.clear();
+  for (int p = 0; p < n; ++p) {
+    updStart_[std::size_t(p)] = int(updTarget_.size());
+    const std::vector<int>& c = col[std::size_t(p)];
+    for (std::size_t a = 0; a < c.size(); ++a)
+      for (std::size_t b = 0; b <= a; ++b) updTarget_.push_back(find(c[a], c[b]));
+  }
+  updStart_[std::size_t(n)] = int(updTarget_.size());
+  values_.assign(rows_.size(), Block::Zero());
+  dfac_.assign(std::size_t(n), Eigen::LDLT<Block>());
+}
+
+BlockLdlt::Slot BlockLdlt::slot(int i, int j) const {
+  const int pi = pos_[std::size_t(i)], pj = pos_[std::size_t(j)];
+  const int row = std::max(pi, pj), column = std::min(pi, pj);
+  const auto b = rows_.begin() + colStart_[std::size_t(column)], e = rows_.begin() + colStart_[std::size_t(column) + 1];
+  Slot s;
+  s.index = int(std::lower_bound(b, e, row) - rows_.begin());
+  s.transposed = pi < pj;  // stored as (row, column) = (j, i)
+  return s;
+}
+
+bool BlockLdlt::factorize(double minPivot) {
+  std::vector<Block> L;
+  for (int p = 0; p < n_; ++p) {
+    const int start = colStart_[std::size_t(p)], end = colStart_[std::size_t(p) + 1];
+    // D_p by a dense LDLᵀ with symmetric pivoting (scaling-invariant, unlike an explicit
+    // inverse); zero pivots give zero components (Eigen's LDLT solve).
+    Eigen::LDLT<Block>& f = dfac_[std::size_t(p)];
+    f.compute(values_[std::size_t(start)]);
+    if (f.info() != Eigen::Success) return false;
+    const auto dv = f.vectorD();
+    const double top = std::max(dv.cwiseAbs().maxCoeff(), 1e-300);
+    if (!(dv.minCoeff() > minPivot * top)) return false;
+    // L_qp = S_qp D_p⁺, then S_ab −= L_ap S_bpᵀ for the column's rows a ≥ b.
+    const int m = end - start - 1;
+    L.resize(std::size_t(m));
+    for (int a = 0; a < m; ++a) L[std::size_t(a)] = f.solve(values_[std::size_t(start + 1 + a)].transpose()).transpose();
+    int u = updStart_[std::size_t(p)];
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b <= a; ++b) values_[std::size_t(updTarget_[std::size_t(u++)])].noalias() -=
+          L[std::size_t(a)] * values_[std::size_t(start + 1 + b)].transpose();
+    for (int a = 0; a < m; ++a) values_[std::size_t(start + 1 + a)] = L[std::size_t(a)];
+  }
+  return true;
+}
+
+Eigen::VectorXd BlockLdlt::solve(const Eigen::VectorXd& b) const {
+  using V6 = Eigen::Matrix<double, 6, 1>;
+  std::vector<V6> y(static_cast<std::size_t>(n_));
+  for (int p = 0; p < n_; ++p) y[std::size_t(p)] = b.segment<6>(6 * perm_[std::size_t(p)]);
+  for (int p = 0; p < n_; ++p)
+    for (int s = colStart_[std::size_t(p)] + 1; s < colStart_[std::size_t(p) + 1]; ++s)
+      y[std::size_t(rows_[std::size_t(s)])].noalias() -= values_[std::size_t(s)] * y[std::size_t(p)];
+  for (int p = 0; p < n_; ++p) y[std::size_t(p)] = dfac_[std::size_t(p)].solve(y[std::size_t(p)]);
+  for (int p = n_ - 1; p >= 0; --p)
+    for (int s = colStart_[std::size_t(p)] + 1; s < colStart_[std::size_t(p) + 1]; ++s)
+      y[std::size_t(p)].noalias() -= values_[std::size_t(s)].transpose() * y[std::size_t(rows_[std::size_t(s)])];
+  Eigen::VectorXd x(b.size());
+  for (int p = 0; p < n_; ++p) x.segment<6>(6 * perm_[std::size_t(p)]) = y[std::size_t(p)];
+  return x;
+}
+
+}  // namespace corbel::statics

@@ -1,0 +1,56 @@
+#pragma once
+// A sparse LDLᵀ factorisation of a symmetric positive semidefinite matrix made of 6×6 blocks
+// (the Schur complement A H⁻¹ Aᵀ of the statics QPs has one 6×6 block row per free block:
+// force and torque). Working on whole blocks gives dense fixed-size kernels the compiler
+// vectorises, instead of one scalar column at a time; the ordering (AMD) and the symbolic
+// factorisation are done once, on the graph of blocks.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <utility>
+#include <vector>
+
+namespace corbel::statics {
+
+class BlockLdlt {
+ public:
+  using Block = Eigen::Matrix<double, 6, 6>;
+
+  // `pairs`: the block positions (i, j) of the matrix's nonzero blocks, either triangle, the
+  // diagonal included; n block rows.
+  void analyze(int n, const std::vector<std::pair<int, int>>& pairs);
+
+  // Where block (i, j) of the matrix (any (i, j) among `pairs` or its transpose) lives in
+  // `values()`, and whether it is stored transposed.
+  struct Slot {
+    int index = -1;
+    bool transposed = false;
+  };
+  Slot slot(int i, int j) const;
+
+  // The matrix's blocks by slot (fill positions included): set them to zero, add the matrix,
+  // then factorize. The factorisation overwrites them.
+  std::vector<Block>& values() { return values_; }
+
+  // S = L D Lᵀ with unit block-lower L and dense 6×6 blocks D_j, each factored by a dense
+  // LDLᵀ with pivoting. Returns false (the caller regularises) when a pivot is not above
+  // `minPivot` × the largest pivot of its block.
+  bool factorize(double minPivot = 1e-15);
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+
+  long factorNonZeroBlocks() const { return long(values_.size()); }
+
+ private:
+  int n_ = 0;
+  std::vector<int> perm_;      // position → block row
+  std::vector<int> pos_;       // block row → position
+  std::vector<int> colStart_;  // position → first slot of its column (the diagonal), then its rows
+  std::vector<int> rows_;      // per off-diagonal slot: the position of its row (> column)
+  std::vector<int> updStart_;  // position → first entry of its update list
+  std::vector<int> updTarget_; // per pair (a ≥ b) of a column's rows: the slot updated
+  std::vector<Block> values_;
+  std::vector<Eigen::LDLT<Block>> dfac_;  // per position: D's factorisation
+};
+
+}  // namespace corbel::statics

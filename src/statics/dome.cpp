@@ -1,0 +1,42 @@
+#include "statics/dome.h"
+
+#include "core/error.h"
+#include "statics/shapes.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace corbel::statics {
+
+std::vector<Block> domeBlocks(const DomeSpec& spec) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+  if (spec.rings < 1 || spec.rings > 1000) throw Error("dome: the number of rings must be in 1..1000");
+  if (spec.segments < 3 || spec.segments > 4096) throw Error("dome: the number of segments must be in 3..4096");
+  if (!positive(spec.radius) || !positive(spec.thickness) || spec.thickness >= 2 * spec.radius)
+    throw Error("dome: radius and thickness must be positive, the thickness below the diameter");
+  if (!std::isfinite(spec.oculusDeg) || spec.oculusDeg <= 0 || spec.oculusDeg >= 90)
+    throw Error("dome: the oculus angle must be in (0°, 90°)");
+  if (!positive(spec.density)) throw Error("dome: the density must be a positive number");
+  const double ri = spec.radius - spec.thickness / 2, ro = spec.radius + spec.thickness / 2;
+  const double top = (90.0 - spec.oculusDeg) * std::numbers::pi / 180.0;
+  auto point = [&](double r, int i, int j) {
+    const double phi = top * i / spec.rings;
+    const double th = 2 * std::numbers::pi * (j % spec.segments) / spec.segments;
+    const double c = i == 0 ? 1.0 : std::cos(phi), s = i == 0 ? 0.0 : std::sin(phi);
+    return Vec3(r * c * std::cos(th), r * c * std::sin(th), r * s);
+  };
+  std::vector<Block> out;
+  for (int i = 0; i < spec.rings; ++i)
+    for (int j = 0; j < spec.segments; ++j) {
+      // Corners: inner/outer × lower/upper latitude × first/second meridian.
+      std::vector<Vec3> v = {point(ri, i, j), point(ri, i, j + 1), point(ri, i + 1, j + 1), point(ri, i + 1, j),
+                             point(ro, i, j), point(ro, i, j + 1), point(ro, i + 1, j + 1), point(ro, i + 1, j)};
+      std::vector<std::vector<int>> faces = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 2, 6, 5}};
+      out.push_back(convexBlock("ring " + std::to_string(i) + " voussoir " + std::to_string(j), std::move(v), std::move(faces),
+                                spec.density));
+    }
+  return out;
+}
+
+}  // namespace corbel::statics

@@ -1,0 +1,26 @@
+#pragma once
+// Masonry template: a hemispherical dome with an oculus, in rings of voussoirs (Whiting et al.
+// 2009, Fig. 4, Fig. 10).
+#include "statics/model.h"
+
+#include <vector>
+
+namespace corbel::statics {
+
+struct DomeSpec {
+  int rings = 8;            // courses from the springing to the oculus
+  int segments = 16;        // voussoirs per ring
+  double radius = 2.0;      // of the middle surface, m
+  double thickness = 0.2;   // m
+  double oculusDeg = 10.0;  // angle of the oculus from the pole, degrees: the top ring ends at 90° − this
+  double density = 2400.0;
+};
+
+// Block (i, j) lies between latitudes φ_i = i·(90° − oculus)/rings, φ_{i+1} and longitudes
+// θ_j = 2πj/segments, θ_{j+1}, from radius R − t/2 to R + t/2 about the origin. Its meridional
+// joints lie in planes through the axis, its bed joints in planes through the centre (cones
+// cut by two meridians), intrados and extrados are isosceles trapezoids: every face is plane.
+// The springing ring stands on z = 0. Throws corbel::Error for a bad spec.
+std::vector<Block> domeBlocks(const DomeSpec& spec);
+
+}  // namespace corbel::statics

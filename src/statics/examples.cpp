@@ -1,0 +1,216 @@
+#include "statics/examples.h"
+
+#include "core/error.h"
+#include "statics/arch.h"
+#include "statics/builder.h"
+#include "statics/buttress.h"
+#include "statics/column.h"
+#include "statics/shapes.h"
+#include "statics/vault.h"
+
+#include <cmath>
+#include <functional>
+#include <string>
+
+namespace corbel::statics {
+namespace {
+
+constexpr int kTowerLevels = 16;
+
+Parameter param(std::string name, double value, double lo, double hi, std::string description, bool continuous = true) {
+  Parameter p;
+  p.name = std::move(name);
+  p.value = value;
+  p.lo = lo;
+  p.hi = hi;
+  p.continuous = continuous;
+  p.description = std::move(description);
+  return p;
+}
+
+int count(const ParameterSet& p, const std::string& name) { return int(std::lround(p[name])); }
+
+// The parameters both vault examples share: the vault, its walls, the rings and courses.
+void addVaultParameters(ParametricModel& m, double wallHeight, double wallThickness) {
+  m.parameters.add(param("radius", 2.0, 0.3, 30.0, "centreline radius of the vault (half its span), m"));
+  m.parameters.add(param("thickness", 0.25, 0.02, 3.0, "thickness of the vault, m"));
+  m.parameters.add(param("length", 5.0, 0.1, 200.0, "length of the vault along its axis, m"));
+  m.parameters.add(param("wallHeight", wallHeight, 0.1, 50.0, "height of the walls, m"));
+  m.parameters.add(param("wallThickness", wallThickness, 0.02, 10.0, "thickness of the walls, m"));
+  m.parameters.add(param("voussoirs", 12, 2, 400, "voussoirs per ring", false));
+  m.parameters.add(param("rings", 5, 1, 400, "rings of the vault (and wall segments) along its axis", false));
+  m.parameters.add(param("courses", 4, 1, 100, "courses of the walls (and buttresses)", false));
+}
+
+// A barrel vault on two walls of courses, one wall segment per ring; `prop(ring, y, depth,
+// x)` adds what stands behind the +x wall's outer face x in that ring (mirrored for −x).
+Assembly vaultOnWalls(const ParameterSet& p,
+                      const std::function<std::vector<Block>(int, double, double, double)>& prop) {
+  BarrelVaultSpec vault;
+  vault.blocks = count(p, "voussoirs");
+  vault.rings = count(p, "rings");
+  vault.radius = p["radius"];
+  vault.thickness = p["thickness"];
+  vault.length = p["length"];
+  const double h = p["wallHeight"], wt = p["wallThickness"];
+  const double ring = vault.length / vault.rings;
+  const double inner = vault.radius - vault.thickness / 2;  // the walls' inner faces, |x|
+  std::vector<Block> side;  // the +x side, ring by ring
+  for (int r = 0; r < vault.rings; ++r) {
+    const double y = vault.length * r / vault.rings;
+    ButtressSpec wall{h, wt, wt, ring, count(p, "courses"), 2400.0};
+    for (Block& blk : placed(buttressBlocks(wall), Vec3(inner, y, 0.0), "wall " + std::to_string(r))) side.push_back(blk);
+    for (Block& blk : prop(r, y, ring, inner + wt)) side.push_back(blk);
+  }
+  StructureBuilder b;
+  b.add("vault", barrelVaultBlocks(vault), Vec3(0.0, 0.0, h));
+  b.add("right", side);
+  b.add("left", mirroredX(side));
+  b.groundUnder(1.0);
+  return b.build();
+}
+
+}  // namespace
+
+ParametricModel towerExample() {
+  ParametricModel m;
+  m.name = "tower";
+  m.description = "Fig. 11: 16 levels of four posts under a two-block slab (96 blocks); level k moved by (xk, yk)";
+  for (int k = 1; k <= kTowerLevels; ++k)
+    m.parameters.add(param("x" + std::to_string(k), 0.12, -0.5, 0.5, "x offset of level " + std::to_string(k) + " on the one below, m"));
+  for (int k = 1; k <= kTowerLevels; ++k)
+    m.parameters.add(param("y" + std::to_string(k), 0.0, -0.5, 0.5, "y offset of level " + std::to_string(k) + " on the one below, m"));
+  for (int k = 1; k <= kTowerLevels; ++k) {
+    m.suggestedFree.push_back({"x" + std::to_string(k), -0.2, 0.2});
+  }
+  for (int k = 1; k <= kTowerLevels; ++k) m.suggestedFree.push_back({"y" + std::to_string(k), -0.2, 0.2});
+  m.build = [](const ParameterSet& p) {
+    constexpr double post = 0.3, postHeight = 1.0, slab = 0.3;
+    StructureBuilder b;
+    Vec3 at(0.0);
+    for (int k = 1; k <= kTowerLevels; ++k) {
+      at += Vec3(p["x" + std::to_string(k)], p["y" + std::to_string(k)], 0.0);
+      const double z = (k - 1) * (postHeight + slab);
+      std::vector<Block> level;
+      for (double sx : {-0.5, 0.5})
+        for (double sy : {-0.6, 0.6})
+          level.push_back(boxBlock("post", Vec3(sx - post / 2, sy - post / 2, z), Vec3(sx + post / 2, sy + post / 2, z + postHeight)));
+      level.push_back(boxBlock("slab -x", Vec3(-1, -1, z + postHeight), Vec3(0, 1, z + postHeight + slab)));
+      level.push_back(boxBlock("slab +x", Vec3(0, -1, z + postHeight), Vec3(1, 1, z + postHeight + slab)));
+      b.add("level " + std::to_string(k), std::move(level), at);
+    }
+    b.ground(Vec2(-5, -5), Vec2(5, 5));
+    return b.build();
+  };
+  return m;
+}
+
+ParametricModel archOnColumnsExample() {
+  ParametricModel m;
+  m.name = "arch-on-columns";
+  m.description = "Fig. 8: a semicircular arch on two square columns";
+  m.parameters.add(param("thickness", 0.09, 0.01, 0.9, "radial thickness of the arch (centreline radius 1), m"));
+  m.parameters.add(param("columnWidth", 0.15, 0.02, 3.0, "side of the square columns, m"));
+  m.parameters.add(param("columnHeight", 1.5, 0.05, 20.0, "height of the columns, m"));
+  m.parameters.add(param("voussoirs", 8, 2, 400, "blocks of the arch", false));
+  m.parameters.add(param("drums", 1, 1, 100, "blocks of each column", false));
+  m.suggestedFree = {{"thickness", 0.05, 0.5}, {"columnWidth", 0.05, 1.5}};
+  m.build = [](const ParameterSet& p) {
+    ArchSpec arch;
+    arch.blocks = count(p, "voussoirs");
+    arch.radius = 1.0;
+    arch.thickness = p["thickness"];
+    ColumnSpec column;
+    column.drums = count(p, "drums");
+    column.sides = 4;
+    column.radius = p["columnWidth"] / std::sqrt(2.0);
+    column.height = p["columnHeight"];
+    StructureBuilder b;
+    b.add("left column", columnBlocks(column), Vec3(-arch.radius, 0.0, 0.0));
+    b.add("right column", columnBlocks(column), Vec3(arch.radius, 0.0, 0.0));
+    b.add("arch", semicircularArchBlocks(arch), Vec3(0.0, 0.0, column.height));
+    b.groundUnder(1.0);
+    return b.build();
+  };
+  return m;
+}
+
+ParametricModel barrelVaultExample() {
+  ParametricModel m;
+  m.name = "barrel-vault";
+  m.description = "Fig. 13: a barrel vault on two walls backed by buttresses (140 blocks)";
+  addVaultParameters(m, 2.0, 0.35);
+  m.parameters.add(param("buttressWidth", 0.1, 0.01, 10.0, "width of the buttresses behind the walls, m"));
+  m.suggestedFree = {{"buttressWidth", 0.05, 3.0}};
+  m.build = [](const ParameterSet& p) {
+    return vaultOnWalls(p, [&](int r, double y, double depth, double x) {
+      const double bw = p["buttressWidth"];
+      ButtressSpec buttress{p["wallHeight"], bw, bw, depth, count(p, "courses"), 2400.0};
+      return placed(buttressBlocks(buttress), Vec3(x, y, 0.0), "buttress " + std::to_string(r));
+    });
+  };
+  return m;
+}
+
+ParametricModel bezierArchExample() {
+  ParametricModel m;
+  m.name = "bezier-arch";
+  m.description = "Fig. 12: a thin arch whose centreline is a cubic Bezier; its inner control points move";
+  m.parameters.add(param("x1", -1.0, -2.0, 2.0, "x of the first inner control point (span ±1), m"));
+  m.parameters.add(param("x2", 1.0, -2.0, 2.0, "x of the second inner control point, m"));
+  m.parameters.add(param("height", 1.2, 0.2, 5.0, "height of the centreline's crown, m"));
+  m.parameters.add(param("thickness", 0.05, 0.01, 0.5, "thickness across the centreline, m"));
+  m.parameters.add(param("voussoirs", 16, 4, 400, "blocks of the arch", false));
+  m.suggestedFree = {{"x1", -1.5, 0.5}, {"x2", -0.5, 1.5}};
+  m.build = [](const ParameterSet& p) {
+    BezierArchSpec s;
+    s.blocks = count(p, "voussoirs");
+    s.x1 = p["x1"];
+    s.x2 = p["x2"];
+    s.height = p["height"];
+    s.thickness = p["thickness"];
+    return bezierArch(s);
+  };
+  return m;
+}
+
+ParametricModel flyingButtressVaultExample() {
+  ParametricModel m;
+  m.name = "flying-buttresses";
+  m.description = "Fig. 13 with flying buttresses: a barrel vault on two walls propped by quarter-arc flyers on piers";
+  addVaultParameters(m, 3.0, 0.3);
+  m.parameters.add(param("reach", 0.6, 0.1, 40.0, "radius of the flyers' quarter arcs: their reach from the wall and their rise, m"));
+  m.parameters.add(param("flyerThickness", 0.25, 0.02, 3.0, "thickness of the flyers, m"));
+  m.parameters.add(param("pierWidth", 0.5, 0.05, 10.0, "width of the flyers' piers, m"));
+  m.suggestedFree = {{"reach", 0.3, 2.5}};
+  m.build = [](const ParameterSet& p) {
+    FlyingButtressSpec flyer;
+    flyer.radius = p["reach"];
+    flyer.thickness = p["flyerThickness"];
+    flyer.pierWidth = p["pierWidth"];
+    flyer.pierHeight = p["wallHeight"] - flyer.thickness / 2 - flyer.radius;  // the head's top is the wall's top
+    if (!(flyer.pierHeight > 0))
+      throw Error("flying-buttresses: the flyers' reach leaves no pier (reach ≥ wall height − flyer thickness / 2)");
+    return vaultOnWalls(p, [&](int r, double y, double depth, double x) {
+      FlyingButtressSpec f = flyer;
+      f.depth = depth;
+      return placed(flyingButtressBlocks(f), Vec3(x, y, 0.0), "flyer " + std::to_string(r));
+    });
+  };
+  return m;
+}
+
+std::vector<std::string> exampleNames() { return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch"}; }
+
+ParametricModel exampleByName(const std::string& name) {
+  if (name == "tower") return towerExample();
+  if (name == "arch-on-columns") return archOnColumnsExample();
+  if (name == "barrel-vault") return barrelVaultExample();
+  if (name == "bezier-arch") return bezierArchExample();
+  if (name == "flying-buttresses") return flyingButtressVaultExample();
+  std::string known;
+  for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;
+  throw Error("unknown example '" + name + "' (examples: " + known + ")");
+}
+
+}  // namespace corbel::statics

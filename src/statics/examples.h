@@ -1,0 +1,42 @@
+#pragma once
+// The paper's example structures as parametric models built from the templates (Whiting et
+// al. 2009): the stacked tower (Fig. 11), the arch on two columns (Fig. 8), the barrel vault
+// on buttressed walls (Fig. 13) and a Bezier arch (Fig. 12).
+#include "statics/parameters.h"
+
+#include <string>
+#include <vector>
+
+namespace corbel::statics {
+
+// Fig. 11: 16 levels, each four posts under a slab of two blocks (96 blocks). Level k sits
+// on level k − 1 moved by (xk, yk) (parameters x1..x16, y1..y16, the 32 of the paper); they
+// start leaning (xk = 0.12), which does not stand. Free by default: all 32 in [−0.2, 0.2].
+ParametricModel towerExample();
+
+// Fig. 8: a semicircular arch (radius 1, `voussoirs` blocks, `thickness`) springing from the
+// tops of two square columns of `columnWidth` and `columnHeight`, centred under the
+// springings, on ground. Free by default: thickness and columnWidth.
+ParametricModel archOnColumnsExample();
+
+// Fig. 13: a barrel vault (`radius`, `thickness`, `rings` along its `length`) on two walls of
+// `wallThickness` and `wallHeight` in `courses`, each backed by a buttress of
+// `buttressWidth` per ring (140 blocks by default). Free by default: buttressWidth.
+ParametricModel barrelVaultExample();
+
+// Fig. 13 with flying buttresses: the vault of barrelVaultExample on walls 3 m high, each
+// ring's wall propped by a quarter-arc flyer (5 voussoirs) whose head meets the wall's top and
+// whose springing sits on a pier of 3 courses; `reach` is the flyers' radius (their reach from
+// the wall and their rise). 180 blocks. Free by default: reach in [0.3, 2.5].
+ParametricModel flyingButtressVaultExample();
+
+// Fig. 12: a thin arch (16 voussoirs, 0.05 m, span 2 m, crown 1.2 m) whose centreline is a
+// cubic Bezier with inner control points at x1, x2 (starting at ∓1: a round arch that does not
+// stand). Free by default: x1 in [−1.5, 0.5], x2 in [−0.5, 1.5].
+ParametricModel bezierArchExample();
+
+std::vector<std::string> exampleNames();
+// Throws corbel::Error for an unknown name, listing the known ones.
+ParametricModel exampleByName(const std::string& name);
+
+}  // namespace corbel::statics
