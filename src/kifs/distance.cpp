@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 namespace corbel::kifs {
@@ -14,6 +15,7 @@ namespace corbel::kifs {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
 
 glm::dmat3 rotation(const Rotation& r) {
   glm::dmat4 m(1.0);
@@ -76,6 +78,10 @@ Building::Building(const KifsParams& params) : p_(params) {
     const Curvilinear& c = p_.curvilinear;
     ringOuter_ = m.halfDepth / c.sR - c.cR;
     ringInner_ = std::max(0.0, -m.halfDepth / c.sR - c.cR);
+    // A ring that closes on itself (docs/kifs.md) has no seam where the angle jumps.
+    const double periods = 2.0 * kPi * c.sTheta / fc.period;
+    closedRing_ = m.halfWidth - m.shell >= c.sTheta * (kPi + std::abs(c.cTheta)) &&
+                  std::abs(periods - std::round(periods)) < 1e-9 * periods;
     lo = glm::dvec3(-ringOuter_, c.z0 - ringOuter_, 0.0);
     hi = glm::dvec3(ringOuter_, c.z0 + ringOuter_, m.height);
   }
@@ -115,7 +121,7 @@ Sample Building::evaluate(const glm::dvec3& world) const {
     m.x = cv.sTheta * (std::atan2(dz, dx) + cv.cTheta);
     m.z = cv.sR * (radius + cv.cR);
     ring = std::max({ringInner_ - radius, radius - ringOuter_, -b.y, b.y - p_.mass.height});
-    cut = dx < 0 ? std::abs(dz) : radius;  // the angle jumps on this half-plane
+    if (!closedRing_) cut = dx < 0 ? std::abs(dz) : radius;  // the angle jumps on this half-plane
   }
   const FacadeFold fx = facadeFold(m.x, p_.facade), fz = facadeFold(m.z, p_.facade);
   const Floors& fl = p_.floors;
@@ -128,11 +134,22 @@ Sample Building::evaluate(const glm::dvec3& world) const {
   const glm::dvec3 q((fc.a1 * fx.id + fc.a2) * fx.f + fc.b1 * fx.id + fc.b2, fl.sy * my / fl.height,
                      (fc.a1 * fz.id + fc.a2) * fz.f + fc.b1 * fz.id + fc.b2);
   const double dk = kifs(q) / stretch_;
-  double gap = std::min(my, fl.height - my);
-  if (idsCut_) gap = std::min({gap, 0.5 * fx.gap * fc.period, 0.5 * fz.gap * fc.period});
+  // Eq. 4 is a sawtooth, so the storeys are cells. The nearer neighbouring storey starts
+  // gapNear away, and its own fold (this one shifted by a storey, continuous everywhere) bounds
+  // the distance to its solid; every other storey is at least gapFar away. Facade ids are
+  // cells too when they change the transform; they cap the bound at their distance.
+  const bool below = my < 0.5 * fl.height;
+  const double gapNear = below ? my : fl.height - my, gapFar = fl.height - gapNear;
+  double cell = std::min(dk, gapFar);
+  if (gapNear < cell) {
+    glm::dvec3 qn = q;
+    qn.y = fl.sy * (below ? my + fl.height : my - fl.height) / fl.height;
+    cell = std::min(cell, std::max(gapNear, kifs(qn) / stretch_));
+  }
+  if (idsCut_) cell = std::min({cell, 0.5 * fx.gap * fc.period, 0.5 * fz.gap * fc.period});
   const double di = massModelDistance(p_.mass, m, p_.mass.shell), d0 = massModelDistance(p_.mass, m, 0.0);
   const double surface = std::min(di, std::max(d0, dk));  // g(d_KIFS, d_i, d_o), Sec. 3
-  const double bound = std::min(di, std::max(d0, std::min(dk, gap)));
+  const double bound = std::min(di, std::max(d0, cell));
   if (!cv.enabled) {
     out.surface = surface;
     out.bound = bound;

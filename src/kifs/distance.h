@@ -43,6 +43,7 @@ class Building {
   bool idsCut() const { return idsCut_; }              // ids change the transform (a1 or b1 ≠ 0)
   double ringInner() const { return ringInner_; }      // curvilinear: the annulus holding the building
   double ringOuter() const { return ringOuter_; }
+  bool closedRing() const { return closedRing_; }      // curvilinear: no seam where the angle jumps
 
  private:
   KifsParams p_;
@@ -50,6 +51,7 @@ class Building {
   double rho_ = 2, stretch_ = 1;
   bool idsCut_ = false;
   double ringInner_ = 0, ringOuter_ = 0;
+  bool closedRing_ = false;
   Aabb bounds_;
 };
 

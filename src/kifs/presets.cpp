@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <map>
+#include <numbers>
 
 namespace corbel::kifs {
 
@@ -49,11 +50,11 @@ KifsParams hBuilding() {  // Fig. 8 (right): H footprint, facade ids select frac
 KifsParams polarTower() {  // Fig. 7 (middle, right): curvilinear coordinates, a ring of a tower
   KifsParams p = boxBuilding();
   p.curvilinear.enabled = true;
-  p.curvilinear.sTheta = 12.0;
+  p.curvilinear.sTheta = 36.0 / std::numbers::pi;  // the circumference 2π·s_θ is 12 facade periods
   p.curvilinear.sR = 1.0;
   p.curvilinear.cR = -10.0;
   p.curvilinear.cTheta = 0.0;
-  p.mass.halfWidth = 12.0 * 3.14159;  // the whole ring: s_θ·π
+  p.mass.halfWidth = 40.0;  // wider than s_θ·π: the whole ring, with no seam
   p.mass.halfDepth = 2.5;
   p.mass.shell = 1.0;
   p.mass.height = 30.0;
