@@ -35,6 +35,7 @@ Hit trace(const Building& building, const Ray& ray) {
   double t0 = 0, t1 = 0;
   if (!rayBox(ray, building.worldBounds(), t0, t1)) return hit;
   double t = std::max(t0, 0.0), tPrev = t, rPrev = 0.0, omega = tr.overRelax;
+  double lastRatio = std::numeric_limits<double>::infinity();
   for (int i = 0; i < tr.maxSteps; ++i) {
     hit.steps = i + 1;
     const Sample s = building.evaluate(ray.origin + t * ray.dir);
@@ -53,6 +54,9 @@ Hit trace(const Building& building, const Ray& ray) {
       hit.sample = s;
       return hit;
     }
+    const double ratio = s.surface / eps;
+    if (ratio > lastRatio) hit.closest = std::min(hit.closest, lastRatio);
+    lastRatio = ratio;
     tPrev = t;
     rPrev = r;
     t += std::max(omega * r, eps);  // at least eps: cell boundaries make the bound vanish

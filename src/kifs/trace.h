@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include <limits>
+
 namespace corbel::kifs {
 
 struct Ray {
@@ -18,6 +20,10 @@ struct Hit {
   bool hit = false;
   double t = 0;    // along the ray, world units
   int steps = 0;   // distance evaluations
+  // The least estimate / threshold at the samples where it stopped falling and rose again (the
+  // ray passed something by): how near the ray came to stopping earlier. Close to 1, a tiny
+  // change of the march could stop it there (a graze).
+  double closest = std::numeric_limits<double>::infinity();
   Sample sample;   // at the hit
 };
 

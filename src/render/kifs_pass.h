@@ -1,0 +1,59 @@
+#pragma once
+// Draws a KIFS building (McGraw, Sec. 3) by sphere tracing in shaders/kifs.frag.glsl, over
+// whatever the bound framebuffer holds: it writes gl_FragDepth and is depth-tested, so it
+// composes with the Scene drawn by Renderer before it.
+#include "kifs/distance.h"
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/renderer.h"
+
+#include <string>
+#include <vector>
+
+namespace corbel::render {
+
+// Display modes of Fig. 5-6.
+enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2 };
+
+// The one place that turns a building's parameters into kifs.frag.glsl's uniforms (camera and
+// mode aside). Returns the names written; throws corbel::Error if the program has no active
+// uniform of that name, so a field renamed on one side only cannot go unnoticed.
+std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building& building);
+
+class KifsPass {
+ public:
+  // Needs a current GL 3.3 core context; throws corbel::Error if the shader fails to build.
+  KifsPass();
+  ~KifsPass();
+  KifsPass(const KifsPass&) = delete;
+  KifsPass& operator=(const KifsPass&) = delete;
+
+  // Draws into the bound framebuffer's viewport (x, y, width, height). The building's
+  // trace.pixelAngle should match the view (kifsForView).
+  void draw(const kifs::Building& building, const OrbitCamera& camera, int x, int y, int width, int height,
+            KifsMode mode);
+  unsigned program() const { return program_; }
+  // Every uniform the last draw wrote (setKifsUniforms' and the camera's).
+  const std::vector<std::string>& writtenUniforms() const { return written_; }
+
+ private:
+  unsigned program_ = 0, vao_ = 0;
+  std::vector<std::string> written_;
+};
+
+// `params` with the hit threshold's pixel angle for a camera seeing `height` pixels.
+kifs::KifsParams kifsForView(kifs::KifsParams params, const OrbitCamera& camera, int height);
+// A camera framing the building's outer shell.
+OrbitCamera kifsCamera(const kifs::Building& building, double aspect, double azimuthDeg = -60.0,
+                       double elevationDeg = 22.0);
+
+// The window depth ([0, 1], 1 where the ray misses) of the building alone, one sample per
+// pixel, bottom row first, as glReadPixels gives it.
+std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                                   int height);
+// A picture: the Scene (with the renderer's sky and grid), then the building over it.
+Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& building, const Scene& scene,
+                      const OrbitCamera& camera, int width, int height, KifsMode mode,
+                      const RenderSettings& settings);
+
+}  // namespace corbel::render
