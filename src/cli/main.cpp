@@ -1,4 +1,6 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs). Thin: parse, call, report.
+#include "cli/kifs_command.h"
+#include "cli/number_list.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
@@ -51,7 +53,8 @@ usage:
                     rigid ground tilted by DEG. Prints the measure of infeasibility y/W² (0 when
                     it stands); --min-thickness the least t/R that stands (T ignored);
                     --critical-tilt the ground tilt in degrees at which it stops standing.
-  corbel-cli --version | --help
+)";
+constexpr const char* kUsageEnd = R"(  corbel-cli --version | --help
 
 Exit codes: 0 success, 1 bad input or failed check, 2 bad command line.
 )";
@@ -88,16 +91,9 @@ Args parseArgs(int argc, char** argv, const std::map<std::string, bool>& known /
 }
 
 std::vector<double> parseNumbers(const std::string& text, char sep, const std::string& what) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, sep)) {
-    char* end = nullptr;
-    const double d = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(d)) throw UsageError(what + ": '" + text + "' is not a list of numbers");
-    out.push_back(d);
-  }
-  return out;
+  const auto v = cli::numberList(text, sep);
+  if (!v) throw UsageError(what + ": '" + text + "' is not a list of numbers");
+  return *v;
 }
 
 struct Loaded {
@@ -422,7 +418,7 @@ int cmdStatics(const Args& a) {
 
 int main(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    std::cout << kUsage;
+    std::cout << kUsage << corbel::cli::kKifsUsage << kUsageEnd;
     return argc < 2 ? 2 : 0;
   }
   if (!std::strcmp(argv[1], "--version")) {
@@ -440,6 +436,7 @@ int main(int argc, char** argv) {
       return cmdExtrude(parseArgs(argc, argv, {{"--pitch", true}, {"--wall-height", true}, {"--out", true},
                                                {"--stats", false}, {"--jobs", true}, {"--library", true},
                                                {"--merge-coplanar", false}}));
+    if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics")
       return cmdStatics(parseArgs(argc, argv, {{"--blocks", true}, {"--thickness", true}, {"--tilt", true},
                                                {"--friction", true}, {"--kern", true}, {"--min-thickness", false},

@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 #include <utility>
+#include <vector>
 
 namespace corbel::kifs {
 
@@ -84,6 +85,20 @@ Building::Building(const KifsParams& params) : p_(params) {
                   std::abs(periods - std::round(periods)) < 1e-9 * periods;
     lo = glm::dvec3(-ringOuter_, c.z0 - ringOuter_, 0.0);
     hi = glm::dvec3(ringOuter_, c.z0 + ringOuter_, m.height);
+    // An arc short of a whole turn: the box of its annular sector (ends and axis crossings).
+    const double a0 = -m.halfWidth / c.sTheta - c.cTheta, a1 = m.halfWidth / c.sTheta - c.cTheta;
+    if (a1 - a0 < 2 * kPi) {
+      lo = glm::dvec3(1e300, 1e300, 0.0);
+      hi = glm::dvec3(-1e300, -1e300, m.height);
+      std::vector<double> angles = {a0, a1};
+      for (double a = std::ceil(a0 / (0.5 * kPi)) * 0.5 * kPi; a < a1; a += 0.5 * kPi) angles.push_back(a);
+      for (double a : angles)
+        for (double r : {ringInner_, ringOuter_}) {
+          const glm::dvec2 q(r * std::cos(a), c.z0 + r * std::sin(a));  // world x, y (building x, z)
+          lo = glm::dvec3(std::min(lo.x, q.x), std::min(lo.y, q.y), 0.0);
+          hi = glm::dvec3(std::max(hi.x, q.x), std::max(hi.y, q.y), m.height);
+        }
+    }
   }
   const double margin = kBoundsMargin * glm::length(hi - lo);
   bounds_ = {lo - margin, hi + margin};

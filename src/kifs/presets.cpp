@@ -10,11 +10,15 @@ namespace corbel::kifs {
 
 namespace {
 
-KifsParams boxBuilding() {  // Fig. 1b and Fig. 7 (left): c = (0.93, 0.93, 0.33) on a box
+// Fig. 1b and Fig. 7 (left): c = (0.93, 0.93, 0.33) on a box. With r = 0 Algorithm 2 is the
+// plain triangle wave, so each 6 m bay shows the fractal's face once, mirrored, and each 3 m
+// storey the upper half of its slab (s = a2 = 1: isotropic, 3 m per fractal unit).
+KifsParams boxBuilding() {
   KifsParams p;
   p.centre = {0.93, 0.93, 0.33};
-  p.facade.a2 = 2.0;
-  p.facade.b2 = 0.1;
+  p.facade.r = {0.0, 0.0, 0.0};
+  p.facade.a2 = 1.0;
+  p.facade.b2 = 0.0;
   return p;
 }
 
@@ -31,23 +35,27 @@ KifsParams tBuilding() {  // Fig. 8 (left): T footprint
   p.mass.halfDepth = 9.0;
   p.mass.wing = 3.5;
   p.mass.height = 18.0;
-  p.r2.yDeg = 22.5;  // R2 = Ry(π/8), Fig. 2d
   return p;
 }
 
-KifsParams hBuilding() {  // Fig. 8 (right): H footprint, facade ids select fractal regions
+// Fig. 8 (right) and Fig. 6: H footprint; r = (0.25, 0.125, 0.4) of Fig. 6 divides each bay
+// into id regions, and s = a1·id + a2, t = b1·id + b2 give each its own part of the fractal.
+KifsParams hBuilding() {
   KifsParams p = boxBuilding();
+  p.facade.r = {0.25, 0.125, 0.4};
   p.mass.footprint = Footprint::H;
   p.mass.halfWidth = 12.0;
   p.mass.halfDepth = 10.0;
   p.mass.wing = 3.5;
   p.mass.height = 15.0;
   p.facade.a1 = 0.5;
-  p.facade.b1 = 0.15;
+  p.facade.a2 = 1.5;
+  p.facade.b1 = 0.2;
   return p;
 }
 
-KifsParams polarTower() {  // Fig. 7 (middle, right): curvilinear coordinates, a ring of a tower
+// Fig. 7 (right): curvilinear coordinates (Eq. 5-6) closing into a round tower.
+KifsParams polarTower() {
   KifsParams p = boxBuilding();
   p.curvilinear.enabled = true;
   p.curvilinear.sTheta = 36.0 / std::numbers::pi;  // the circumference 2π·s_θ is 12 facade periods
@@ -61,9 +69,21 @@ KifsParams polarTower() {  // Fig. 7 (middle, right): curvilinear coordinates, a
   return p;
 }
 
+// Fig. 7 (middle) and Fig. 6b: a curved building, an arc of a quarter turn.
+KifsParams curvedBuilding() {
+  KifsParams p = boxBuilding();
+  p.curvilinear.enabled = true;
+  p.curvilinear.sTheta = 14.0;
+  p.curvilinear.cR = -16.0;
+  p.mass.halfWidth = 14.0 * std::numbers::pi / 4;  // θ in [−π/4, π/4]
+  p.mass.halfDepth = 4.0;
+  p.mass.height = 21.0;
+  return p;
+}
+
 const std::map<std::string, std::function<KifsParams()>>& table() {
   static const std::map<std::string, std::function<KifsParams()>> t = {
-      {"box", boxBuilding}, {"menger", menger}, {"t", tBuilding}, {"h", hBuilding}, {"polar", polarTower}};
+      {"box", boxBuilding}, {"menger", menger}, {"t", tBuilding}, {"h", hBuilding}, {"polar", polarTower}, {"curved", curvedBuilding}};
   return t;
 }
 

@@ -55,7 +55,7 @@ Twin compare(const std::string& name) {
   const int w = kSize, h = kSize;
   render::KifsPass& pass = sharedPass();
   KifsParams p = preset(name);
-  const render::OrbitCamera camera = render::kifsCamera(Building(p), 1.0, name == "polar" ? -35.0 : -60.0);
+  const render::OrbitCamera camera = render::kifsCamera(Building(p), 1.0, viewAzimuth(name));
   p = render::kifsForView(p, camera, h);
   const double size = glm::length(Building(p).worldBounds().size());
   p.trace.hitFactor = kThreshold * size / (p.trace.pixelAngle * camera.distance);
