@@ -124,36 +124,53 @@ OrbitCamera kifsCamera(const kifs::Building& building, double aspect, double azi
   return c;
 }
 
+DepthTarget::DepthTarget(int width, int height) : width_(width), height_(height) {
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glGenRenderbuffers(1, &color_);
+  glBindRenderbuffer(GL_RENDERBUFFER, color_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+  glGenRenderbuffers(1, &depth_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (!complete) {
+    this->~DepthTarget();
+    throw Error("the depth framebuffer is incomplete");
+  }
+}
+
+DepthTarget::~DepthTarget() {
+  glDeleteRenderbuffers(1, &color_);
+  glDeleteRenderbuffers(1, &depth_);
+  glDeleteFramebuffers(1, &fbo_);
+  fbo_ = color_ = depth_ = 0;
+}
+
+void DepthTarget::bind() { glBindFramebuffer(GL_FRAMEBUFFER, fbo_); }
+
+std::vector<float> DepthTarget::readDepth() {
+  std::vector<float> out(static_cast<std::size_t>(width_) * height_, 1.0f);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
 std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
                                    int height) {
-  GLuint fbo = 0, color = 0, depth = 0;
-  glGenFramebuffers(1, &fbo);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glGenRenderbuffers(1, &color);
-  glBindRenderbuffer(GL_RENDERBUFFER, color);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-  glGenRenderbuffers(1, &depth);
-  glBindRenderbuffer(GL_RENDERBUFFER, depth);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-  std::vector<float> out(static_cast<std::size_t>(width) * height, 1.0f);
-  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-  if (complete) {
-    glClearDepth(1.0);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    pass.draw(building, camera, 0, 0, width, height, KifsMode::Shaded);
-    glFinish();
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glDeleteRenderbuffers(1, &color);
-  glDeleteRenderbuffers(1, &depth);
-  glDeleteFramebuffers(1, &fbo);
-  if (!complete) throw Error("the depth framebuffer for KIFS rendering is incomplete");
-  return out;
+  DepthTarget target(width, height);
+  target.bind();
+  glClearDepth(1.0);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pass.draw(building, camera, 0, 0, width, height, KifsMode::Shaded);
+  return target.readDepth();
 }
 
 Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& building, const Scene& scene,

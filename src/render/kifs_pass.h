@@ -47,8 +47,23 @@ kifs::KifsParams kifsForView(kifs::KifsParams params, const OrbitCamera& camera,
 OrbitCamera kifsCamera(const kifs::Building& building, double aspect, double azimuthDeg = -60.0,
                        double elevationDeg = 22.0);
 
-// The window depth ([0, 1], 1 where the ray misses) of the building alone, one sample per
-// pixel, bottom row first, as glReadPixels gives it.
+// A single-sample framebuffer with a 32-bit float depth buffer, for reading depths back.
+class DepthTarget {
+ public:
+  DepthTarget(int width, int height);  // throws corbel::Error if the framebuffer is incomplete
+  ~DepthTarget();
+  DepthTarget(const DepthTarget&) = delete;
+  DepthTarget& operator=(const DepthTarget&) = delete;
+  void bind();
+  // Window depths in [0, 1] (1: nothing drawn), bottom row first as glReadPixels gives them.
+  std::vector<float> readDepth();
+
+ private:
+  int width_, height_;
+  unsigned fbo_ = 0, color_ = 0, depth_ = 0;
+};
+
+// The window depth ([0, 1], 1 where the ray misses) of the building alone (DepthTarget).
 std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
                                    int height);
 // A picture: the Scene (with the renderer's sky and grid), then the building over it.
