@@ -69,6 +69,16 @@ TEST(KifsCli, RendersAPngOfTheRequestedSize) {
   EXPECT_EQ(img.height, 30);
 }
 
+TEST(KifsCli, MeshesAClosedManifoldToAFile) {
+  const fs::path ply = fs::temp_directory_path() / ("corbel_kifs_cli_" + std::to_string(getpid()) + ".ply");
+  const CliRun r = cli("kifs --preset t --resolution 24 --mesh " + ply.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"closed_manifold\": true"), std::string::npos) << r.out;
+  EXPECT_GT(fs::file_size(ply), 1000u);
+  EXPECT_EQ(cli("kifs --mesh x.stl").code, 1);                  // unknown format
+  EXPECT_EQ(cli("kifs --mesh x.ply --resolution 0").code, 2);   // bad resolution
+}
+
 TEST(KifsCli, BadCommandLinesAreRefused) {
   EXPECT_EQ(cli("kifs").code, 2);                                  // no --out
   EXPECT_EQ(cli("kifs --out x.png --mode glossy").code, 2);        // unknown mode
