@@ -84,9 +84,33 @@ KifsParams curvedBuilding() {
   return p;
 }
 
+// Fig. 2a-d on the box: s = 3.5 (sparse, disconnected), R1 = Ry(π/25) (crumbling),
+// R1 = Ry(π/4), R2 = Ry(π/8) (polygonal, star-like).
+KifsParams sparse() {
+  KifsParams p = boxBuilding();
+  p.scale = 3.5;
+  return p;
+}
+KifsParams crumbling() {
+  KifsParams p = boxBuilding();
+  p.r1.yDeg = 180.0 / 25.0;
+  return p;
+}
+KifsParams turned() {
+  KifsParams p = boxBuilding();
+  p.r1.yDeg = 45.0;
+  return p;
+}
+KifsParams star() {
+  KifsParams p = boxBuilding();
+  p.r2.yDeg = 22.5;
+  return p;
+}
+
 const std::map<std::string, std::function<KifsParams()>>& table() {
   static const std::map<std::string, std::function<KifsParams()>> t = {
-      {"box", boxBuilding}, {"menger", menger}, {"t", tBuilding}, {"h", hBuilding}, {"polar", polarTower}, {"curved", curvedBuilding}};
+      {"box", boxBuilding}, {"menger", menger}, {"t", tBuilding}, {"h", hBuilding}, {"polar", polarTower}, {"curved", curvedBuilding},
+      {"sparse", sparse},   {"crumbling", crumbling}, {"turned", turned}, {"star", star}};
   return t;
 }
 

@@ -24,8 +24,8 @@ inline glm::dvec3 unitVector(std::mt19937_64& rng) {
   return glm::normalize(v);
 }
 
-// The building presets (the Menger preset is a special case of the box one).
-inline std::vector<std::string> buildingPresets() { return {"box", "t", "h", "polar", "curved"}; }
+// The building presets under test: every footprint and coordinate system, R1 and R2 ≠ I.
+inline std::vector<std::string> buildingPresets() { return {"box", "t", "h", "polar", "curved", "crumbling", "star"}; }
 
 // The azimuth (degrees) the tests look at a preset from: the curved one faces +x.
 inline double viewAzimuth(const std::string& preset) { return preset == "curved" ? -20.0 : preset == "polar" ? -35.0 : -60.0; }
