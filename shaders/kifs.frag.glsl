@@ -49,7 +49,8 @@ uniform float uPixelAngle;
 uniform vec3 uBoundsLo;
 uniform vec3 uBoundsHi;
 
-// Shading: 0 shaded, 1 facade ids, 2 floors (Fig. 5-6).
+// Shading: 0 shaded, 1 facade ids, 2 floors (Fig. 5-6), 3 cost (evaluations of the pixel,
+// count = 255·(r + 256·g), for render/kifs_pass's cost statistics).
 uniform int uMode;
 uniform vec3 uSunDir;
 
@@ -58,6 +59,8 @@ out vec4 fragColor;
 const float kInf = 1e30;
 const float kMinRadius = 1e-6;      // kifs/tolerances.h
 const float kMinHitDistance = 1e-7;
+
+int gEvaluations = 0;  // evaluate() calls of this pixel (mode 3)
 
 struct Sample {
   float bound;
@@ -118,6 +121,7 @@ vec3 facadeFold(float x) {
 float polarStretch(float r) { return max(max(1.0, uPolar.z), uPolar.x / max(r, kMinRadius)); }
 
 Sample evaluate(vec3 world) {
+  ++gEvaluations;
   vec3 b = world.xzy;  // building coordinates, y up
   vec3 m = b;
   float radius = 0.0, ring = -kInf, cut = kInf;
@@ -210,11 +214,11 @@ float softShadow(vec3 ro, vec3 rd, float tmin) {
   float t0, t1;
   if (!rayBox(ro, rd, t0, t1)) return 1.0;
   float res = 1.0, t = max(tmin, t0);
-  for (int i = 0; i < 64 && t < t1; ++i) {
+  for (int i = 0; i < 40 && t < t1; ++i) {
     float h = evaluate(ro + t * rd).bound;
     if (h < 0.25 * tmin) return 0.0;
     res = min(res, 10.0 * h / t);
-    t += clamp(uLipschitz * h, tmin, 0.1 * uFloors.x);
+    t += clamp(uLipschitz * h, tmin, uFloors.x);
   }
   return clamp(res, 0.0, 1.0);
 }
@@ -234,6 +238,8 @@ vec3 palette(float k) {
   return 0.55 + 0.4 * cos(6.2831853 * (vec3(0.0, 0.33, 0.67) + 0.137 * k));
 }
 
+vec4 costColor() { return vec4(float(gEvaluations % 256) / 255.0, float(gEvaluations / 256) / 255.0, 0.0, 1.0); }
+
 void main() {
   vec2 pixel = gl_FragCoord.xy - uViewport.xy;
   vec2 ndc = 2.0 * pixel / uViewport.zw - 1.0;
@@ -241,7 +247,12 @@ void main() {
   vec3 rd = normalize(far.xyz / far.w - uEye);
   Sample s;
   float t = trace(uEye, rd, s);
-  if (t < 0.0) discard;
+  if (t < 0.0) {
+    if (uMode != 3) discard;
+    fragColor = costColor();
+    gl_FragDepth = 1.0;
+    return;
+  }
   vec3 p = uEye + t * rd;
   vec4 clip = uViewProj * vec4(p, 1.0);
   gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
@@ -259,4 +270,5 @@ void main() {
   vec3 light = vec3(1.0, 0.96, 0.88) * sun * 0.85 + ao * mix(vec3(0.22, 0.21, 0.2), vec3(0.40, 0.45, 0.52), sky);
   vec3 c = base * light;
   fragColor = vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
+  if (uMode == 3) fragColor = costColor();
 }

@@ -7,6 +7,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace corbel::render {
 
 namespace {
@@ -160,6 +162,55 @@ std::vector<float> DepthTarget::readDepth() {
   glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return out;
+}
+
+Image DepthTarget::readColor() {
+  Image img(width_, height_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return img;
+}
+
+KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                         int height) {
+  DepthTarget target(width, height);
+  target.bind();
+  glClearDepth(1.0);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pass.draw(building, camera, 0, 0, width, height, KifsMode::Cost);
+  const Image raw = target.readColor();
+  const std::vector<float> depth = target.readDepth();
+  KifsCost c;
+  std::vector<int>& count = c.perPixel;
+  count.resize(depth.size());
+  double sumHit = 0, sumMiss = 0;
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    count[i] = raw.rgba[4 * i] + 256 * raw.rgba[4 * i + 1];
+    if (depth[i] < 1.0f) {
+      ++c.hits;
+      sumHit += count[i];
+      c.maxHit = std::max(c.maxHit, count[i]);
+    } else {
+      ++c.misses;
+      sumMiss += count[i];
+    }
+  }
+  c.meanHit = c.hits ? sumHit / c.hits : 0.0;
+  c.meanMiss = c.misses ? sumMiss / c.misses : 0.0;
+  const int most = std::max(1, *std::max_element(count.begin(), count.end()));
+  c.heat = Image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const auto v = static_cast<std::uint8_t>(255.0 * count[std::size_t(height - 1 - y) * width + x] / most);
+      std::uint8_t* px = c.heat.at(x, y);
+      px[0] = px[1] = px[2] = v;
+      px[3] = 255;
+    }
+  return c;
 }
 
 std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,

@@ -12,8 +12,18 @@
 
 namespace corbel::render {
 
-// Display modes of Fig. 5-6.
-enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2 };
+// Display modes of Fig. 5-6, and the cost of each pixel (evaluations of the distance function,
+// march and shading together; decode with kifsCost).
+enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2, Cost = 3 };
+
+// Evaluations of the distance function per pixel (march and shading), drawn in KifsMode::Cost.
+struct KifsCost {
+  int hits = 0, misses = 0;
+  double meanHit = 0, meanMiss = 0;  // per pixel whose ray hit / missed the building
+  int maxHit = 0;
+  std::vector<int> perPixel;  // bottom row first, as glReadPixels gives them
+  Image heat;                 // black (no evaluation) to white (the most), top row first
+};
 
 // The one place that turns a building's parameters into kifs.frag.glsl's uniforms (camera and
 // mode aside). Returns the names written; throws corbel::Error if the program has no active
@@ -57,6 +67,7 @@ class DepthTarget {
   void bind();
   // Window depths in [0, 1] (1: nothing drawn), bottom row first as glReadPixels gives them.
   std::vector<float> readDepth();
+  Image readColor();  // RGBA, bottom row first (not flipped)
 
  private:
   int width_, height_;
@@ -66,6 +77,9 @@ class DepthTarget {
 // The window depth ([0, 1], 1 where the ray misses) of the building alone (DepthTarget).
 std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
                                    int height);
+// The cost of drawing the building alone, one sample per pixel.
+KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                         int height);
 // A picture: the Scene (with the renderer's sky and grid), then the building over it.
 Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& building, const Scene& scene,
                       const OrbitCamera& camera, int width, int height, KifsMode mode,

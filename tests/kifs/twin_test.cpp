@@ -179,6 +179,36 @@ TEST(KifsTwin, EveryShaderUniformIsWritten) {
   }
 }
 
+// The shader tests the ray against the outer shell's box before marching: pixels whose ray
+// misses the box (by the CPU's slab test) evaluate nothing; the others evaluate at least once,
+// and hits on average at least ten times (a step, the normal's four, the occlusion's five).
+TEST(KifsTwin, RaysMissingTheBoundsEvaluateNothingOnTheGpu) {
+  render::KifsPass& pass = sharedPass();
+  const Building b(preset("t"));
+  const int w = 48, h = 40;
+  const render::OrbitCamera camera = render::kifsCamera(b, double(w) / h);
+  const render::KifsCost cost = render::measureKifsCost(pass, b, camera, w, h);
+  const glm::dmat4 inv = glm::inverse(camera.projection(double(w) / h) * camera.view());
+  const Vec3 e = camera.eye();
+  int outside = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double t0 = 0, t1 = 0;
+      const bool inBox = rayBox(pixelRay(inv, glm::dvec3(e[0], e[1], e[2]), x, y, w, h), b.worldBounds(), t0, t1);
+      const int n = cost.perPixel[std::size_t(y) * w + x];
+      if (!inBox) {
+        ++outside;
+        EXPECT_EQ(n, 0) << "pixel " << x << "," << y;
+      } else {
+        EXPECT_GE(n, 1) << "pixel " << x << "," << y;
+      }
+    }
+  EXPECT_GT(outside, w * h / 10);
+  EXPECT_GT(cost.hits, w * h / 10);
+  EXPECT_GE(cost.meanHit, 10.0);
+  EXPECT_EQ(cost.heat.width, w);
+}
+
 // The building composes with the rasterized Scene through gl_FragDepth: drawn after a Scene
 // holding a wall through the building's middle, every pixel keeps the nearer of the two depths
 // (each rendered alone).
