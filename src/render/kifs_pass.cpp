@@ -174,14 +174,24 @@ Image DepthTarget::readColor() {
   return img;
 }
 
-KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
-                         int height) {
-  DepthTarget target(width, height);
+namespace {
+
+// The building alone into a cleared target.
+void drawAlone(DepthTarget& target, KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera,
+               int width, int height, KifsMode mode) {
   target.bind();
   glClearDepth(1.0);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  pass.draw(building, camera, 0, 0, width, height, KifsMode::Cost);
+  pass.draw(building, camera, 0, 0, width, height, mode);
+}
+
+}  // namespace
+
+KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                         int height) {
+  DepthTarget target(width, height);
+  drawAlone(target, pass, building, camera, width, height, KifsMode::Cost);
   const Image raw = target.readColor();
   const std::vector<float> depth = target.readDepth();
   KifsCost c;
@@ -216,11 +226,7 @@ KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const O
 std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
                                    int height) {
   DepthTarget target(width, height);
-  target.bind();
-  glClearDepth(1.0);
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  pass.draw(building, camera, 0, 0, width, height, KifsMode::Shaded);
+  drawAlone(target, pass, building, camera, width, height, KifsMode::Shaded);
   return target.readDepth();
 }
 
