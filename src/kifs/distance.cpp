@@ -91,7 +91,9 @@ Building::Building(const KifsParams& params) : p_(params) {
       lo = glm::dvec3(1e300, 1e300, 0.0);
       hi = glm::dvec3(-1e300, -1e300, m.height);
       std::vector<double> angles = {a0, a1};
-      for (double a = std::ceil(a0 / (0.5 * kPi)) * 0.5 * kPi; a < a1; a += 0.5 * kPi) angles.push_back(a);
+      const double first = std::ceil(a0 / (0.5 * kPi)) * 0.5 * kPi;
+      for (int q = 0; q < 4; ++q)  // counted, so huge angles (no progress in a += π/2) cannot hang
+        if (first + q * 0.5 * kPi < a1) angles.push_back(first + q * 0.5 * kPi);
       for (double a : angles)
         for (double r : {ringInner_, ringOuter_}) {
           const glm::dvec2 q(r * std::cos(a), c.z0 + r * std::sin(a));  // world x, y (building x, z)

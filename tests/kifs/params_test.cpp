@@ -69,5 +69,17 @@ TEST(KifsParams, WildParametersAreRefusedOrBehave) {
   EXPECT_GT(accepted, 200);  // the sensible part of the space is reached
 }
 
+// Huge but finite angles and offsets: no hang, no NaN (an arc's bounds once looped on a += π/2).
+TEST(KifsParams, HugeAnglesDoNotHang) {
+  for (double c : {1e17, -1e17, 1e300}) {
+    KifsParams p = preset("curved");
+    p.curvilinear.cTheta = c;
+    p.r2.yDeg = c;
+    const Building b(p);
+    const Sample s = b.evaluate(0.5 * (b.worldBounds().lo + b.worldBounds().hi));
+    EXPECT_FALSE(std::isnan(s.bound)) << c;
+  }
+}
+
 }  // namespace
 }  // namespace corbel::kifs::test
