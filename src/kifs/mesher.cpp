@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -47,10 +48,19 @@ MeshData meshIsosurface(const std::function<double(const glm::dvec3&)>& field, c
   g.ny = static_cast<int>(std::ceil(size.y / g.h)) + 2;
   g.nz = static_cast<int>(std::ceil(size.z / g.h)) + 2;
   const int layer = (g.nx + 1) * (g.ny + 1);
+  // Samples one layer, its rows shared among the cores (the field must be safe to call from
+  // several threads; Building::evaluate is).
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 16);
   auto sampleLayer = [&](int k, std::vector<double>& out) {
     out.resize(layer);
-    for (int j = 0; j <= g.ny; ++j)
-      for (int i = 0; i <= g.nx; ++i) out[i + (g.nx + 1) * j] = field(g.origin + g.h * glm::dvec3(i, j, k));
+    auto rows = [&](int first) {
+      for (int j = first; j <= g.ny; j += threads)
+        for (int i = 0; i <= g.nx; ++i) out[i + (g.nx + 1) * j] = field(g.origin + g.h * glm::dvec3(i, j, k));
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(rows, t);
+    rows(0);
+    for (auto& th : pool) th.join();
   };
 
   MeshData mesh;

@@ -11,7 +11,8 @@
 
 namespace corbel::kifs {
 
-// The zero set of `field` (negative inside) within `box`, sampled on cubes of side
+// The zero set of `field` (negative inside; called from several threads at once) within `box`,
+// sampled on cubes of side
 // (longest side of box) / resolution with one cell of margin, each cube cut into the six
 // tetrahedra around its main diagonal. Closed and 2-manifold whenever the field is positive on
 // the margin; faces counter-clockwise seen from outside. Reports to `progress` per layer and

@@ -42,6 +42,15 @@ TEST(KifsMesher, RefusesBadResolutionsAndStopsWhenCancelled) {
   EXPECT_THROW(meshIsosurface(f, box, 16, &progress), Cancelled);
 }
 
+// Sampling is shared among threads; the mesh does not depend on how they interleave.
+TEST(KifsMesher, TwoRunsGiveTheSameMesh) {
+  const Building b(preset("curved"));
+  const MeshData a = meshBuilding(b, 32), c = meshBuilding(b, 32);
+  ASSERT_EQ(a.points.size(), c.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) ASSERT_EQ(a.points[i], c.points[i]);
+  EXPECT_EQ(a.faces, c.faces);
+}
+
 TEST(KifsMesher, BuildingIsAClosedManifoldOnItsSurface) {
   for (const std::string& name : {std::string("box"), std::string("h")}) {
     const Building b(preset(name));
