@@ -49,8 +49,9 @@ uniform float uPixelAngle;
 uniform vec3 uBoundsLo;
 uniform vec3 uBoundsHi;
 
-// Shading: 0 shaded, 1 facade ids, 2 floors (Fig. 5-6), 3 cost (evaluations of the pixel,
-// count = 255·(r + 256·g), for render/kifs_pass's cost statistics).
+// Shading: 0 shaded, 1 facade ids, 2 floors (Fig. 5-6), 3 data for render/kifs_pass: the
+// pixel's evaluations 255·(r + 256·g), and at a hit id_x + 4·id_z as 255·b and the storey
+// + 128 as 255·a.
 uniform int uMode;
 uniform vec3 uSunDir;
 
@@ -238,7 +239,10 @@ vec3 palette(float k) {
   return 0.55 + 0.4 * cos(6.2831853 * (vec3(0.0, 0.33, 0.67) + 0.137 * k));
 }
 
-vec4 costColor() { return vec4(float(gEvaluations % 256) / 255.0, float(gEvaluations / 256) / 255.0, 0.0, 1.0); }
+vec4 costColor(Sample s) {
+  return vec4(float(gEvaluations % 256), float(gEvaluations / 256), s.ids.x + 4.0 * s.ids.y,
+              clamp(s.floorIndex + 128.0, 0.0, 255.0)) / 255.0;
+}
 
 void main() {
   vec2 pixel = gl_FragCoord.xy - uViewport.xy;
@@ -249,7 +253,7 @@ void main() {
   float t = trace(uEye, rd, s);
   if (t < 0.0) {
     if (uMode != 3) discard;
-    fragColor = costColor();
+    fragColor = costColor(s);
     gl_FragDepth = 1.0;
     return;
   }
@@ -270,5 +274,5 @@ void main() {
   vec3 light = vec3(1.0, 0.96, 0.88) * sun * 0.85 + ao * mix(vec3(0.22, 0.21, 0.2), vec3(0.40, 0.45, 0.52), sky);
   vec3 c = base * light;
   fragColor = vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
-  if (uMode == 3) fragColor = costColor();
+  if (uMode == 3) fragColor = costColor(s);
 }

@@ -197,9 +197,14 @@ KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const O
   KifsCost c;
   std::vector<int>& count = c.perPixel;
   count.resize(depth.size());
+  c.ids.resize(depth.size());
+  c.storeys.resize(depth.size());
+  c.depth = depth;
   double sumHit = 0, sumMiss = 0;
   for (std::size_t i = 0; i < depth.size(); ++i) {
     count[i] = raw.rgba[4 * i] + 256 * raw.rgba[4 * i + 1];
+    c.ids[i] = raw.rgba[4 * i + 2];
+    c.storeys[i] = raw.rgba[4 * i + 3] - 128;
     if (depth[i] < 1.0f) {
       ++c.hits;
       sumHit += count[i];

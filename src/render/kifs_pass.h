@@ -23,6 +23,10 @@ struct KifsCost {
   int maxHit = 0;
   std::vector<int> perPixel;  // bottom row first, as glReadPixels gives them
   Image heat;                 // black (no evaluation) to white (the most), top row first
+  // At hit pixels (bottom row first): the GPU's facade ids id_x + 4·id_z and storey index
+  // (clamped to −128..127), and its window depth (1 where the ray missed).
+  std::vector<int> ids, storeys;
+  std::vector<float> depth;
 };
 
 // The one place that turns a building's parameters into kifs.frag.glsl's uniforms (camera and

@@ -209,6 +209,54 @@ TEST(KifsTwin, RaysMissingTheBoundsEvaluateNothingOnTheGpu) {
   EXPECT_EQ(cost.heat.width, w);
 }
 
+// The shader's facade ids and storeys (Algorithm 2, Eq. 4) are the CPU's: at each GPU hit, read
+// back with its depth, the CPU evaluated at that point gives the same ids and storey, wherever
+// it gives them unchanged over the depth buffer's resolution along the ray (on an id or storey
+// plane either side is right).
+TEST(KifsTwin, ShaderIdsAndStoreysAreTheCpus) {
+  render::KifsPass& pass = sharedPass();
+  for (const std::string& name : {std::string("h"), std::string("curved"), std::string("box")}) {
+    const Building b0(preset(name));
+    const int w = 64, h = 64;
+    const render::OrbitCamera camera = render::kifsCamera(b0, 1.0, viewAzimuth(name));
+    const Building b(render::kifsForView(preset(name), camera, h));
+    const render::KifsCost gpu = render::measureKifsCost(pass, b, camera, w, h);
+    const glm::dmat4 inv = glm::inverse(camera.projection(1.0) * camera.view());
+    const Vec3 e = camera.eye();
+    const glm::dvec3 eye(e[0], e[1], e[2]);
+    auto tOf = [&](int x, int y, double d) {
+      const glm::dvec4 q = inv * glm::dvec4(2.0 * (x + 0.5) / w - 1.0, 2.0 * (y + 0.5) / h - 1.0, 2.0 * d - 1.0, 1.0);
+      return glm::length(glm::dvec3(q) / q.w - eye);
+    };
+    int compared = 0, mismatches = 0;
+    std::set<int> idsSeen, storeysSeen;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = std::size_t(y) * w + x;
+        if (gpu.depth[i] >= 1.0f) continue;
+        const Ray ray = pixelRay(inv, eye, x, y, w, h);
+        const double t = tOf(x, y, gpu.depth[i]);
+        const double res = std::abs(tOf(x, y, std::nextafter(gpu.depth[i], 2.0f)) - t);
+        std::set<std::pair<int, int>> cpu;
+        for (double dt : {-2 * res, 0.0, 2 * res}) {
+          const Sample s = b.evaluate(ray.origin + (t + dt) * ray.dir);
+          cpu.insert({s.idX + 4 * s.idZ, std::clamp(s.floor, -128, 127)});
+        }
+        if (cpu.size() != 1) continue;
+        ++compared;
+        idsSeen.insert(cpu.begin()->first);
+        storeysSeen.insert(cpu.begin()->second);
+        if (cpu.begin()->first != gpu.ids[i] || cpu.begin()->second != gpu.storeys[i]) ++mismatches;
+      }
+    EXPECT_EQ(mismatches, 0) << name << " of " << compared;
+    EXPECT_GT(compared, w * h / 10) << name;
+    EXPECT_GT(storeysSeen.size(), 3u) << name;
+    if (name == "h") {
+      EXPECT_GT(idsSeen.size(), 3u);
+    }
+  }
+}
+
 // The building composes with the rasterized Scene through gl_FragDepth: drawn after a Scene
 // holding a wall through the building's middle, every pixel keeps the nearer of the two depths
 // (each rendered alone).
