@@ -16,6 +16,8 @@ uniform float uScale;
 uniform vec3 uCentre;
 uniform mat3 uR1;
 uniform mat3 uR2;
+uniform int uR1Identity;  // skip the product (I·p = p exactly, so nothing changes)
+uniform int uR2Identity;
 uniform float uBailout;
 uniform float uRho;
 
@@ -74,11 +76,11 @@ float kifs(vec3 p) {
   float s = uScale, h = 0.5 * uCentre.z * (s - 1.0);
   float scl = 1.0;
   for (int i = 0; i <= uIterations; ++i) {
-    p = abs(uR1 * p);
+    p = abs(uR1Identity != 0 ? p : uR1 * p);
     if (p.x < p.y) p.xy = p.yx;
     if (p.x < p.z) p.xz = p.zx;
     if (p.y < p.z) p.yz = p.zy;
-    p = uR2 * p;
+    if (uR2Identity == 0) p = uR2 * p;
     p.x = s * (p.x - uCentre.x) + uCentre.x;
     p.y = s * (p.y - uCentre.y) + uCentre.y;
     p.z = h - abs(s * p.z - h);
@@ -146,14 +148,14 @@ Sample evaluate(vec3 world) {
   float dk = kifs(q) / uStretch;
   bool below = my < 0.5 * fh;
   float gapNear = below ? my : fh - my, gapFar = fh - gapNear;
+  float di = massModel(m, uShell), d0 = massModel(m, 0.0);
   float cell = min(dk, gapFar);
-  if (gapNear < cell) {
+  if (gapNear < cell && d0 < cell) {
     vec3 qn = q;
     qn.y = uFloors.z * (below ? my + fh : my - fh) / fh;
     cell = min(cell, max(gapNear, kifs(qn) / uStretch));
   }
   if (uIdsCut != 0) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
-  float di = massModel(m, uShell), d0 = massModel(m, 0.0);
   float surface = min(di, max(d0, dk));
   float bound = min(di, max(d0, cell));
   if (uCurvilinear == 0) {

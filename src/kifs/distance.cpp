@@ -66,6 +66,8 @@ Building::Building(const KifsParams& params) : p_(params) {
   validate(p_);
   r1_ = rotation(p_.r1);
   r2_ = rotation(p_.r2);
+  r1Identity_ = r1_ == glm::dmat3(1.0);  // skipping them changes nothing (I·p = p exactly)
+  r2Identity_ = r2_ == glm::dmat3(1.0);
   rho_ = escapeRadius(p_);
   const Facade& fc = p_.facade;
   double maxScale = 0;
@@ -113,11 +115,11 @@ double Building::kifs(glm::dvec3 p) const {
   const glm::dvec3 c = p_.centre;
   double scl = 1.0;
   for (int i = 0; i <= p_.iterations; ++i) {
-    p = glm::abs(r1_ * p);
+    p = glm::abs(r1Identity_ ? p : r1_ * p);
     if (p.x < p.y) std::swap(p.x, p.y);
     if (p.x < p.z) std::swap(p.x, p.z);
     if (p.y < p.z) std::swap(p.y, p.z);
-    p = r2_ * p;
+    if (!r2Identity_) p = r2_ * p;
     p.x = s * (p.x - c.x) + c.x;
     p.y = s * (p.y - c.y) + c.y;
     p.z = h - std::abs(s * p.z - h);
@@ -157,14 +159,14 @@ Sample Building::evaluate(const glm::dvec3& world) const {
   // cells too when they change the transform; they cap the bound at their distance.
   const bool below = my < 0.5 * fl.height;
   const double gapNear = below ? my : fl.height - my, gapFar = fl.height - gapNear;
+  const double di = massModelDistance(p_.mass, m, p_.mass.shell), d0 = massModelDistance(p_.mass, m, 0.0);
   double cell = std::min(dk, gapFar);
-  if (gapNear < cell) {
+  if (gapNear < cell && d0 < cell) {  // else max(d0, cell) is d0 whatever the neighbour gives
     glm::dvec3 qn = q;
     qn.y = fl.sy * (below ? my + fl.height : my - fl.height) / fl.height;
     cell = std::min(cell, std::max(gapNear, kifs(qn) / stretch_));
   }
   if (idsCut_) cell = std::min({cell, 0.5 * fx.gap * fc.period, 0.5 * fz.gap * fc.period});
-  const double di = massModelDistance(p_.mass, m, p_.mass.shell), d0 = massModelDistance(p_.mass, m, 0.0);
   const double surface = std::min(di, std::max(d0, dk));  // g(d_KIFS, d_i, d_o), Sec. 3
   const double bound = std::min(di, std::max(d0, cell));
   if (!cv.enabled) {

@@ -38,6 +38,8 @@ class Building {
   // Derived values the shader receives too (render/kifs_pass.cpp).
   const glm::dmat3& r1() const { return r1_; }
   const glm::dmat3& r2() const { return r2_; }
+  bool r1Identity() const { return r1Identity_; }
+  bool r2Identity() const { return r2Identity_; }
   double rho() const { return rho_; }                  // ρ of the bound
   double fractalStretch() const { return stretch_; }   // Lipschitz constant of building → fractal coordinates
   bool idsCut() const { return idsCut_; }              // ids change the transform (a1 or b1 ≠ 0)
@@ -48,6 +50,7 @@ class Building {
  private:
   KifsParams p_;
   glm::dmat3 r1_{1.0}, r2_{1.0};
+  bool r1Identity_ = true, r2Identity_ = true;
   double rho_ = 2, stretch_ = 1;
   bool idsCut_ = false;
   double ringInner_ = 0, ringOuter_ = 0;

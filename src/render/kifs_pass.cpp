@@ -49,6 +49,8 @@ std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building&
   w.v3("uCentre", p.centre);
   w.m3("uR1", b.r1());
   w.m3("uR2", b.r2());
+  w.i("uR1Identity", b.r1Identity());
+  w.i("uR2Identity", b.r2Identity());
   w.f("uBailout", p.bailout);
   w.f("uRho", b.rho());
   w.i("uFootprint", static_cast<int>(p.mass.footprint));
