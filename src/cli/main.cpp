@@ -1,4 +1,6 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs). Thin: parse, call, report.
+#include "cli/kifs_command.h"
+#include "cli/number_list.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
@@ -57,7 +59,8 @@ usage:
                     Prints y/W² and the solver status; --optimize searches the free
                     parameters (the example's own when no --free) until it stands (Sec. 4)
                     and prints the status (feasible or local minimum), iterations, values.
-  corbel-cli --version | --help
+)";
+constexpr const char* kUsageEnd = R"(  corbel-cli --version | --help
 
 Exit codes: 0 success, 1 bad input or failed check, 2 bad command line.
 )";
@@ -94,16 +97,9 @@ Args parseArgs(int argc, char** argv, const std::map<std::string, bool>& known /
 }
 
 std::vector<double> parseNumbers(const std::string& text, char sep, const std::string& what) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, sep)) {
-    char* end = nullptr;
-    const double d = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(d)) throw UsageError(what + ": '" + text + "' is not a list of numbers");
-    out.push_back(d);
-  }
-  return out;
+  const auto v = cli::numberList(text, sep);
+  if (!v) throw UsageError(what + ": '" + text + "' is not a list of numbers");
+  return *v;
 }
 
 struct Loaded {
@@ -389,7 +385,7 @@ int cmdCheck(const Args& a) {
 
 int main(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    std::cout << kUsage;
+    std::cout << kUsage << corbel::cli::kKifsUsage << kUsageEnd;
     return argc < 2 ? 2 : 0;
   }
   if (!std::strcmp(argv[1], "--version")) {
@@ -407,6 +403,7 @@ int main(int argc, char** argv) {
       return cmdExtrude(parseArgs(argc, argv, {{"--pitch", true}, {"--wall-height", true}, {"--out", true},
                                                {"--stats", false}, {"--jobs", true}, {"--library", true},
                                                {"--merge-coplanar", false}}));
+    if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics") return cli::runStatics(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {

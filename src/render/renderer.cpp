@@ -37,25 +37,6 @@ GLuint compile(GLenum type, const std::string& name) {
   return s;
 }
 
-GLuint link(const std::string& vert, const std::string& frag) {
-  GLuint vs = compile(GL_VERTEX_SHADER, vert), fs = compile(GL_FRAGMENT_SHADER, frag);
-  GLuint p = glCreateProgram();
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glLinkProgram(p);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    glGetProgramInfoLog(p, sizeof log, nullptr, log);
-    glDeleteProgram(p);
-    throw Error("program " + vert + " + " + frag + " failed to link: " + log);
-  }
-  return p;
-}
-
 // A VAO + VBO pair holding interleaved float attributes.
 struct Buffer {
   GLuint vao = 0, vbo = 0;
@@ -106,6 +87,25 @@ double niceStep(double span) {
 
 }  // namespace
 
+unsigned linkProgram(const std::string& vert, const std::string& frag) {
+  GLuint vs = compile(GL_VERTEX_SHADER, vert), fs = compile(GL_FRAGMENT_SHADER, frag);
+  GLuint p = glCreateProgram();
+  glAttachShader(p, vs);
+  glAttachShader(p, fs);
+  glLinkProgram(p);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    glGetProgramInfoLog(p, sizeof log, nullptr, log);
+    glDeleteProgram(p);
+    throw Error("program " + vert + " + " + frag + " failed to link: " + log);
+  }
+  return p;
+}
+
 struct Renderer::Impl {
   GLuint meshProgram = 0, lineProgram = 0, backgroundProgram = 0;
   Buffer faces, highlightFaces, edges, grid, overlayLines, overlayTriangles;
@@ -119,9 +119,9 @@ struct Renderer::Impl {
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
-  impl_->meshProgram = link("mesh.vert.glsl", "mesh.frag.glsl");
-  impl_->lineProgram = link("line.vert.glsl", "line.frag.glsl");
-  impl_->backgroundProgram = link("background.vert.glsl", "background.frag.glsl");
+  impl_->meshProgram = linkProgram("mesh.vert.glsl", "mesh.frag.glsl");
+  impl_->lineProgram = linkProgram("line.vert.glsl", "line.frag.glsl");
+  impl_->backgroundProgram = linkProgram("background.vert.glsl", "background.frag.glsl");
   impl_->faces.create({3, 3, 3});
   impl_->highlightFaces.create({3, 3, 3});
   impl_->edges.create({3, 4});

@@ -12,5 +12,8 @@ struct ShaderSource {
 const std::vector<ShaderSource>& embeddedShaders();
 // The text of shaders/<name>; throws corbel::Error if there is no such file.
 std::string shaderSource(const std::string& name);
+// Compiles and links two embedded shaders into a program (needs a current GL context); throws
+// corbel::Error with the compiler's log.
+unsigned linkProgram(const std::string& vert, const std::string& frag);
 
 }  // namespace corbel::render

@@ -17,8 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kWidth = 640, kHeight = 480;
-constexpr int kChannelTolerance = 24;        // per channel, 0..255
-constexpr double kMaxDifferingFraction = 0.002;
 
 std::vector<std::string> examples() {
   std::vector<std::string> out;
@@ -49,27 +47,7 @@ class Golden : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Golden, MatchesReferenceImage) {
   const std::string name = GetParam();
-  const render::Image actual = renderExample(name);
-  const std::string goldenPath = std::string(CORBEL_SOURCE_DIR) + "/tests/golden/" + name + ".png";
-  const char* update = std::getenv("CORBEL_UPDATE_GOLDENS");
-  if (update && std::string(update) == "1") {
-    render::writePng(actual, goldenPath);
-    GTEST_SUCCEED() << "updated " << goldenPath;
-    return;
-  }
-  ASSERT_TRUE(fs::exists(goldenPath)) << "no golden image for example '" << name
-                                      << "': run scripts/update-goldens and inspect " << goldenPath;
-  const render::Image expected = render::readPng(goldenPath);
-  const render::ImageDiff diff = render::compareImages(expected, actual, kChannelTolerance);
-  if (diff.differingFraction > kMaxDifferingFraction) {
-    fs::create_directories(CORBEL_GOLDEN_OUT);
-    const std::string base = std::string(CORBEL_GOLDEN_OUT) + "/" + name;
-    render::writePng(actual, base + ".actual.png");
-    render::writePng(expected, base + ".expected.png");
-    render::writePng(diff.visual, base + ".diff.png");
-    ADD_FAILURE() << name << ": " << diff.differing << " pixels (" << diff.differingFraction * 100
-                  << "%) differ by more than " << kChannelTolerance << "; see " << base << ".{actual,expected,diff}.png";
-  }
+  expectMatchesGolden(renderExample(name), name);
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, Golden, ::testing::ValuesIn(examples()),

@@ -1,0 +1,280 @@
+#version 330 core
+// KIFS buildings (McGraw, Sec. 3): the twin of src/kifs/distance.cpp and trace.cpp, line for
+// line (docs/kifs.md). Drawn over the whole viewport with background.vert.glsl; each pixel
+// marches its ray, shades the hit and writes gl_FragDepth, so the building composes with the
+// rasterized Scene. Uniforms are written by render/kifs_pass.cpp from one KifsParams.
+
+// Camera and viewport.
+uniform mat4 uViewProj;
+uniform mat4 uInvViewProj;
+uniform vec3 uEye;
+uniform vec4 uViewport;  // x, y, width, height in window pixels
+
+// Algorithm 1.
+uniform int uIterations;
+uniform float uScale;
+uniform vec3 uCentre;
+uniform mat3 uR1;
+uniform mat3 uR2;
+uniform int uR1Identity;  // skip the product (I·p = p exactly, so nothing changes)
+uniform int uR2Identity;
+uniform float uBailout;
+uniform float uRho;
+
+// Mass model (Eq. 1-3): footprint 0 box, 1 T, 2 H; half-width, half-depth, height.
+uniform int uFootprint;
+uniform vec3 uMass;
+uniform float uWing;
+uniform float uShell;
+
+// Algorithm 2 and the id transform; Eq. 4 (h, y0, s_y); stretch L_f; ids are cells.
+uniform float uPeriod;
+uniform vec3 uFoldR;
+uniform vec4 uIdTransform;  // a1, a2, b1, b2
+uniform vec3 uFloors;
+uniform float uStretch;
+uniform int uIdsCut;
+
+// Eq. 5-6: s_θ, c_θ, s_r, c_r; z0; the annulus (inner, outer radius); a closed ring has no seam.
+uniform int uCurvilinear;
+uniform vec4 uPolar;
+uniform float uPolarZ0;
+uniform vec2 uRing;
+uniform int uClosedRing;
+
+// Tracing.
+uniform int uMaxSteps;
+uniform float uLipschitz;
+uniform float uOverRelax;
+uniform float uHitFactor;
+uniform float uPixelAngle;
+uniform vec3 uBoundsLo;
+uniform vec3 uBoundsHi;
+
+// Shading: 0 shaded, 1 facade ids, 2 floors (Fig. 5-6), 3 data for render/kifs_pass: the
+// pixel's evaluations 255·(r + 256·g), and at a hit id_x + 4·id_z as 255·b and the storey
+// + 128 as 255·a.
+uniform int uMode;
+uniform vec3 uSunDir;
+
+out vec4 fragColor;
+
+const float kInf = 1e30;
+const float kMinRadius = 1e-6;      // kifs/tolerances.h
+const float kMinHitDistance = 1e-7;
+
+int gEvaluations = 0;  // evaluate() calls of this pixel (mode 3)
+
+struct Sample {
+  float bound;
+  float surface;
+  vec2 ids;
+  float floorIndex;
+};
+
+float kifs(vec3 p) {
+  float s = uScale, h = 0.5 * uCentre.z * (s - 1.0);
+  float scl = 1.0;
+  for (int i = 0; i <= uIterations; ++i) {
+    p = abs(uR1Identity != 0 ? p : uR1 * p);
+    if (p.x < p.y) p.xy = p.yx;
+    if (p.x < p.z) p.xz = p.zx;
+    if (p.y < p.z) p.yz = p.zy;
+    if (uR2Identity == 0) p = uR2 * p;
+    p.x = s * (p.x - uCentre.x) + uCentre.x;
+    p.y = s * (p.y - uCentre.y) + uCentre.y;
+    p.z = h - abs(s * p.z - h);
+    scl *= s;
+    if (dot(p, p) > uBailout) break;
+  }
+  return (length(p) - uRho) / scl;
+}
+
+float boxDistance(vec3 p, vec3 centre, vec3 halfSize) {
+  vec3 q = abs(p - centre) - halfSize;
+  return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
+}
+
+float massBox(vec3 b, float inset, float cx, float cz, float hx, float hz) {
+  float top = uMass.z - inset;
+  return boxDistance(b, vec3(cx, 0.5 * top, cz), vec3(hx - inset, 0.5 * top, hz - inset));
+}
+
+float massModel(vec3 b, float inset) {
+  float hx = uMass.x, hz = uMass.y, w = uWing;
+  if (uFootprint == 0) return massBox(b, inset, 0.0, 0.0, hx, hz);
+  if (uFootprint == 1) return min(massBox(b, inset, 0.0, hz - w, hx, w), massBox(b, inset, 0.0, 0.0, w, hz));
+  return min(min(massBox(b, inset, -(hx - w), 0.0, w, hz), massBox(b, inset, hx - w, 0.0, w, hz)),
+             massBox(b, inset, 0.0, 0.0, hx, w));
+}
+
+// Algorithm 2 for one coordinate: (fold value, id, gap in fold units).
+vec3 facadeFold(float x) {
+  float f = abs(2.0 * mod(x, uPeriod) / uPeriod - 1.0);
+  float id = 0.0, gap = kInf;
+  for (int i = 0; i < 3; ++i) {
+    f = abs(f - uFoldR[i]) - uFoldR[i];
+    if (f > 0.0) id += 1.0;
+    gap = min(gap, abs(f));
+    f = abs(f);
+  }
+  return vec3(f, id, gap);
+}
+
+float polarStretch(float r) { return max(max(1.0, uPolar.z), uPolar.x / max(r, kMinRadius)); }
+
+Sample evaluate(vec3 world) {
+  ++gEvaluations;
+  vec3 b = world.xzy;  // building coordinates, y up
+  vec3 m = b;
+  float radius = 0.0, ring = -kInf, cut = kInf;
+  if (uCurvilinear != 0) {  // Eq. 5-6
+    float dx = b.x, dz = b.z - uPolarZ0;
+    radius = sqrt(dx * dx + dz * dz);
+    m.x = uPolar.x * (atan(dz, dx) + uPolar.y);
+    m.z = uPolar.z * (radius + uPolar.w);
+    ring = max(max(uRing.x - radius, radius - uRing.y), max(-b.y, b.y - uMass.z));
+    if (uClosedRing == 0) cut = dx < 0.0 ? abs(dz) : radius;
+  }
+  vec3 fx = facadeFold(m.x), fz = facadeFold(m.z);
+  float fh = uFloors.x;
+  float my = mod(m.y - uFloors.y, fh);  // Eq. 4
+  Sample o;
+  o.ids = vec2(fx.y, fz.y);
+  o.floorIndex = floor((m.y - uFloors.y) / fh);
+  vec4 a = uIdTransform;
+  vec3 q = vec3((a.x * fx.y + a.y) * fx.x + a.z * fx.y + a.w, uFloors.z * my / fh,
+                (a.x * fz.y + a.y) * fz.x + a.z * fz.y + a.w);
+  float dk = kifs(q) / uStretch;
+  bool below = my < 0.5 * fh;
+  float gapNear = below ? my : fh - my, gapFar = fh - gapNear;
+  float di = massModel(m, uShell), d0 = massModel(m, 0.0);
+  float cell = min(dk, gapFar);
+  if (gapNear < cell && d0 < cell) {
+    vec3 qn = q;
+    qn.y = uFloors.z * (below ? my + fh : my - fh) / fh;
+    cell = min(cell, max(gapNear, kifs(qn) / uStretch));
+  }
+  if (uIdsCut != 0) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
+  float surface = min(di, max(d0, dk));
+  float bound = min(di, max(d0, cell));
+  if (uCurvilinear == 0) {
+    o.surface = surface;
+    o.bound = bound;
+    return o;
+  }
+  float first = bound / polarStretch(radius);
+  float safe = bound > 0.0 ? bound / polarStretch(radius - first) : first;
+  o.surface = max(ring, surface / polarStretch(radius));
+  o.bound = max(ring, min(safe, cut));
+  return o;
+}
+
+bool rayBox(vec3 ro, vec3 rd, out float t0, out float t1) {
+  vec3 inv = 1.0 / rd;
+  vec3 ta = (uBoundsLo - ro) * inv, tb = (uBoundsHi - ro) * inv;
+  vec3 lo = min(ta, tb), hi = max(ta, tb);
+  t0 = max(max(lo.x, lo.y), lo.z);
+  t1 = min(min(hi.x, hi.y), hi.z);
+  return t1 >= max(t0, 0.0);
+}
+
+// Sphere tracing with over-relaxation and fallback (kifs/trace.cpp). Returns t, or −1.
+float trace(vec3 ro, vec3 rd, out Sample hit) {
+  float t0, t1;
+  hit = Sample(kInf, kInf, vec2(0.0), 0.0);
+  if (!rayBox(ro, rd, t0, t1)) return -1.0;
+  float t = max(t0, 0.0), tPrev = t, rPrev = 0.0, omega = uOverRelax;
+  for (int i = 0; i < uMaxSteps; ++i) {
+    Sample s = evaluate(ro + t * rd);
+    float r = uLipschitz * s.bound;
+    if (omega > 1.0 && r + rPrev < t - tPrev) {
+      t = tPrev + rPrev;
+      omega = 1.0;
+      continue;
+    }
+    float eps = max(uHitFactor * uPixelAngle * t, kMinHitDistance);
+    if (s.surface < eps) {
+      hit = s;
+      return t;
+    }
+    tPrev = t;
+    rPrev = r;
+    t += max(omega * r, eps);
+    if (t > t1) return -1.0;
+  }
+  return -1.0;
+}
+
+vec3 normalAt(vec3 p, float h) {
+  vec3 k0 = vec3(1, -1, -1), k1 = vec3(-1, -1, 1), k2 = vec3(-1, 1, -1), k3 = vec3(1, 1, 1);
+  return normalize(k0 * evaluate(p + h * k0).surface + k1 * evaluate(p + h * k1).surface +
+                   k2 * evaluate(p + h * k2).surface + k3 * evaluate(p + h * k3).surface);
+}
+
+// Penumbra from the closest approach of the shadow ray (Quilez), stepping by the bound.
+float softShadow(vec3 ro, vec3 rd, float tmin) {
+  float t0, t1;
+  if (!rayBox(ro, rd, t0, t1)) return 1.0;
+  float res = 1.0, t = max(tmin, t0);
+  for (int i = 0; i < 40 && t < t1; ++i) {
+    float h = evaluate(ro + t * rd).bound;
+    if (h < 0.25 * tmin) return 0.0;
+    res = min(res, 10.0 * h / t);
+    t += clamp(uLipschitz * h, tmin, uFloors.x);
+  }
+  return clamp(res, 0.0, 1.0);
+}
+
+// Ambient occlusion from five probes along the normal, a storey's fraction apart.
+float occlusion(vec3 p, vec3 n) {
+  float occ = 0.0, w = 1.0, step = 0.04 * uFloors.x;
+  for (int i = 1; i <= 5; ++i) {
+    float h = step * float(i);
+    occ += w * max(h - evaluate(p + h * n).surface, 0.0) / h;
+    w *= 0.6;
+  }
+  return clamp(1.0 - 0.45 * occ, 0.0, 1.0);
+}
+
+vec3 palette(float k) {
+  return 0.55 + 0.4 * cos(6.2831853 * (vec3(0.0, 0.33, 0.67) + 0.137 * k));
+}
+
+vec4 costColor(Sample s) {
+  return vec4(float(gEvaluations % 256), float(gEvaluations / 256), s.ids.x + 4.0 * s.ids.y,
+              clamp(s.floorIndex + 128.0, 0.0, 255.0)) / 255.0;
+}
+
+void main() {
+  vec2 pixel = gl_FragCoord.xy - uViewport.xy;
+  vec2 ndc = 2.0 * pixel / uViewport.zw - 1.0;
+  vec4 far = uInvViewProj * vec4(ndc, 1.0, 1.0);
+  vec3 rd = normalize(far.xyz / far.w - uEye);
+  Sample s;
+  float t = trace(uEye, rd, s);
+  if (t < 0.0) {
+    if (uMode != 3) discard;
+    fragColor = costColor(s);
+    gl_FragDepth = 1.0;
+    return;
+  }
+  vec3 p = uEye + t * rd;
+  vec4 clip = uViewProj * vec4(p, 1.0);
+  gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
+
+  float footprint = uPixelAngle * t;
+  vec3 n = normalAt(p, 0.5 * footprint);
+  if (dot(n, rd) > 0.0) n = -n;
+  vec3 base = vec3(0.80, 0.76, 0.69);
+  if (uMode == 1) base = palette(s.ids.x + 4.0 * s.ids.y);
+  if (uMode == 2) base = palette(3.0 * s.floorIndex);
+  float sun = max(dot(n, uSunDir), 0.0);
+  if (sun > 0.0) sun *= softShadow(p + 2.0 * footprint * n, uSunDir, 2.0 * footprint);
+  float ao = occlusion(p, n);
+  float sky = 0.5 + 0.5 * n.z;
+  vec3 light = vec3(1.0, 0.96, 0.88) * sun * 0.85 + ao * mix(vec3(0.22, 0.21, 0.2), vec3(0.40, 0.45, 0.52), sky);
+  vec3 c = base * light;
+  fragColor = vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
+  if (uMode == 3) fragColor = costColor(s);
+}

@@ -1,0 +1,252 @@
+#include "render/kifs_pass.h"
+
+#include "core/error.h"
+#include "kifs/trace.h"
+#include "render/gl.h"
+#include "render/shader_sources.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+
+namespace corbel::render {
+
+namespace {
+
+// Writes uniforms by name and remembers the names; a name the program lacks is an error.
+struct UniformWriter {
+  GLuint program;
+  std::vector<std::string> names;
+  GLint at(const char* name) {
+    const GLint loc = glGetUniformLocation(program, name);
+    if (loc < 0) throw Error(std::string("kifs.frag.glsl has no active uniform ") + name);
+    names.push_back(name);
+    return loc;
+  }
+  void i(const char* n, int v) { glUniform1i(at(n), v); }
+  void f(const char* n, double v) { glUniform1f(at(n), float(v)); }
+  void v2(const char* n, double x, double y) { glUniform2f(at(n), float(x), float(y)); }
+  void v3(const char* n, const glm::dvec3& v) { glUniform3f(at(n), float(v.x), float(v.y), float(v.z)); }
+  void v4(const char* n, double x, double y, double z, double w) {
+    glUniform4f(at(n), float(x), float(y), float(z), float(w));
+  }
+  void m3(const char* n, const glm::dmat3& m) { glUniformMatrix3fv(at(n), 1, GL_FALSE, glm::value_ptr(glm::mat3(m))); }
+  void m4(const char* n, const glm::dmat4& m) { glUniformMatrix4fv(at(n), 1, GL_FALSE, glm::value_ptr(glm::mat4(m))); }
+};
+
+glm::dmat4 viewProjection(const OrbitCamera& camera, int width, int height) {
+  return camera.projection(double(width) / std::max(height, 1)) * camera.view();
+}
+
+}  // namespace
+
+std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building& b) {
+  const kifs::KifsParams& p = b.params();
+  UniformWriter w{program, {}};
+  glUseProgram(program);
+  w.i("uIterations", p.iterations);
+  w.f("uScale", p.scale);
+  w.v3("uCentre", p.centre);
+  w.m3("uR1", b.r1());
+  w.m3("uR2", b.r2());
+  w.i("uR1Identity", b.r1Identity());
+  w.i("uR2Identity", b.r2Identity());
+  w.f("uBailout", p.bailout);
+  w.f("uRho", b.rho());
+  w.i("uFootprint", static_cast<int>(p.mass.footprint));
+  w.v3("uMass", {p.mass.halfWidth, p.mass.halfDepth, p.mass.height});
+  w.f("uWing", p.mass.wing);
+  w.f("uShell", p.mass.shell);
+  w.f("uPeriod", p.facade.period);
+  w.v3("uFoldR", p.facade.r);
+  w.v4("uIdTransform", p.facade.a1, p.facade.a2, p.facade.b1, p.facade.b2);
+  w.v3("uFloors", {p.floors.height, p.floors.y0, p.floors.sy});
+  w.f("uStretch", b.fractalStretch());
+  w.i("uIdsCut", b.idsCut());
+  w.i("uCurvilinear", p.curvilinear.enabled);
+  w.v4("uPolar", p.curvilinear.sTheta, p.curvilinear.cTheta, p.curvilinear.sR, p.curvilinear.cR);
+  w.f("uPolarZ0", p.curvilinear.z0);
+  w.v2("uRing", b.ringInner(), b.ringOuter());
+  w.i("uClosedRing", b.closedRing());
+  w.i("uMaxSteps", p.trace.maxSteps);
+  w.f("uLipschitz", p.trace.lipschitz);
+  w.f("uOverRelax", p.trace.overRelax);
+  w.f("uHitFactor", p.trace.hitFactor);
+  w.f("uPixelAngle", p.trace.pixelAngle);
+  w.v3("uBoundsLo", b.worldBounds().lo);
+  w.v3("uBoundsHi", b.worldBounds().hi);
+  return w.names;
+}
+
+KifsPass::KifsPass() {
+  program_ = linkProgram("background.vert.glsl", "kifs.frag.glsl");
+  glGenVertexArrays(1, &vao_);
+}
+
+KifsPass::~KifsPass() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteProgram(program_);
+}
+
+void KifsPass::draw(const kifs::Building& building, const OrbitCamera& camera, int x, int y, int width, int height,
+                    KifsMode mode) {
+  const glm::dmat4 vp = viewProjection(camera, width, height);
+  UniformWriter w{program_, setKifsUniforms(program_, building)};
+  w.m4("uViewProj", vp);
+  w.m4("uInvViewProj", glm::inverse(vp));
+  const Vec3 eye = camera.eye();
+  w.v3("uEye", {eye[0], eye[1], eye[2]});
+  w.v4("uViewport", x, y, width, height);
+  w.i("uMode", static_cast<int>(mode));
+  w.v3("uSunDir", glm::normalize(glm::dvec3(0.45, -0.35, 0.82)));  // the Renderer's sun
+  glViewport(x, y, width, height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  written_ = w.names;
+}
+
+kifs::KifsParams kifsForView(kifs::KifsParams params, const OrbitCamera& camera, int height) {
+  params.trace.pixelAngle = kifs::pixelAngle(camera.fov_deg, height);
+  return params;
+}
+
+OrbitCamera kifsCamera(const kifs::Building& building, double aspect, double azimuthDeg, double elevationDeg) {
+  const kifs::Aabb box = building.worldBounds();
+  BBox bb;
+  bb.add(Vec3(box.lo.x, box.lo.y, box.lo.z));
+  bb.add(Vec3(box.hi.x, box.hi.y, box.hi.z));
+  OrbitCamera c;
+  c.azimuth_deg = azimuthDeg;
+  c.elevation_deg = elevationDeg;
+  c.frame(bb, aspect);
+  return c;
+}
+
+DepthTarget::DepthTarget(int width, int height) : width_(width), height_(height) {
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glGenRenderbuffers(1, &color_);
+  glBindRenderbuffer(GL_RENDERBUFFER, color_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+  glGenRenderbuffers(1, &depth_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (!complete) {
+    this->~DepthTarget();
+    throw Error("the depth framebuffer is incomplete");
+  }
+}
+
+DepthTarget::~DepthTarget() {
+  glDeleteRenderbuffers(1, &color_);
+  glDeleteRenderbuffers(1, &depth_);
+  glDeleteFramebuffers(1, &fbo_);
+  fbo_ = color_ = depth_ = 0;
+}
+
+void DepthTarget::bind() { glBindFramebuffer(GL_FRAMEBUFFER, fbo_); }
+
+std::vector<float> DepthTarget::readDepth() {
+  std::vector<float> out(static_cast<std::size_t>(width_) * height_, 1.0f);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
+Image DepthTarget::readColor() {
+  Image img(width_, height_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return img;
+}
+
+namespace {
+
+// The building alone into a cleared target.
+void drawAlone(DepthTarget& target, KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera,
+               int width, int height, KifsMode mode) {
+  target.bind();
+  glClearDepth(1.0);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pass.draw(building, camera, 0, 0, width, height, mode);
+}
+
+}  // namespace
+
+KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                         int height) {
+  DepthTarget target(width, height);
+  drawAlone(target, pass, building, camera, width, height, KifsMode::Cost);
+  const Image raw = target.readColor();
+  const std::vector<float> depth = target.readDepth();
+  KifsCost c;
+  std::vector<int>& count = c.perPixel;
+  count.resize(depth.size());
+  c.ids.resize(depth.size());
+  c.storeys.resize(depth.size());
+  c.depth = depth;
+  double sumHit = 0, sumMiss = 0;
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    count[i] = raw.rgba[4 * i] + 256 * raw.rgba[4 * i + 1];
+    c.ids[i] = raw.rgba[4 * i + 2];
+    c.storeys[i] = raw.rgba[4 * i + 3] - 128;
+    if (depth[i] < 1.0f) {
+      ++c.hits;
+      sumHit += count[i];
+      c.maxHit = std::max(c.maxHit, count[i]);
+    } else {
+      ++c.misses;
+      sumMiss += count[i];
+    }
+  }
+  c.meanHit = c.hits ? sumHit / c.hits : 0.0;
+  c.meanMiss = c.misses ? sumMiss / c.misses : 0.0;
+  const int most = std::max(1, *std::max_element(count.begin(), count.end()));
+  c.heat = Image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const auto v = static_cast<std::uint8_t>(255.0 * count[std::size_t(height - 1 - y) * width + x] / most);
+      std::uint8_t* px = c.heat.at(x, y);
+      px[0] = px[1] = px[2] = v;
+      px[3] = 255;
+    }
+  return c;
+}
+
+std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                                   int height) {
+  DepthTarget target(width, height);
+  drawAlone(target, pass, building, camera, width, height, KifsMode::Shaded);
+  return target.readDepth();
+}
+
+Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& building, const Scene& scene,
+                      const OrbitCamera& camera, int width, int height, KifsMode mode,
+                      const RenderSettings& settings) {
+  OffscreenTarget target(width, height);
+  target.bind();
+  renderer.setScene(scene, settings);
+  renderer.draw(camera, 0, 0, width, height, settings);
+  pass.draw(building, camera, 0, 0, width, height, mode);
+  glFinish();
+  return target.read();
+}
+
+}  // namespace corbel::render

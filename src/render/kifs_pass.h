@@ -1,0 +1,92 @@
+#pragma once
+// Draws a KIFS building (McGraw, Sec. 3) by sphere tracing in shaders/kifs.frag.glsl, over
+// whatever the bound framebuffer holds: it writes gl_FragDepth and is depth-tested, so it
+// composes with the Scene drawn by Renderer before it.
+#include "kifs/distance.h"
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/renderer.h"
+
+#include <string>
+#include <vector>
+
+namespace corbel::render {
+
+// Display modes of Fig. 5-6, and the cost of each pixel (evaluations of the distance function,
+// march and shading together; decode with kifsCost).
+enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2, Cost = 3 };
+
+// Evaluations of the distance function per pixel (march and shading), drawn in KifsMode::Cost.
+struct KifsCost {
+  int hits = 0, misses = 0;
+  double meanHit = 0, meanMiss = 0;  // per pixel whose ray hit / missed the building
+  int maxHit = 0;
+  std::vector<int> perPixel;  // bottom row first, as glReadPixels gives them
+  Image heat;                 // black (no evaluation) to white (the most), top row first
+  // At hit pixels (bottom row first): the GPU's facade ids id_x + 4·id_z and storey index
+  // (clamped to −128..127), and its window depth (1 where the ray missed).
+  std::vector<int> ids, storeys;
+  std::vector<float> depth;
+};
+
+// The one place that turns a building's parameters into kifs.frag.glsl's uniforms (camera and
+// mode aside). Returns the names written; throws corbel::Error if the program has no active
+// uniform of that name, so a field renamed on one side only cannot go unnoticed.
+std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building& building);
+
+class KifsPass {
+ public:
+  // Needs a current GL 3.3 core context; throws corbel::Error if the shader fails to build.
+  KifsPass();
+  ~KifsPass();
+  KifsPass(const KifsPass&) = delete;
+  KifsPass& operator=(const KifsPass&) = delete;
+
+  // Draws into the bound framebuffer's viewport (x, y, width, height). The building's
+  // trace.pixelAngle should match the view (kifsForView).
+  void draw(const kifs::Building& building, const OrbitCamera& camera, int x, int y, int width, int height,
+            KifsMode mode);
+  unsigned program() const { return program_; }
+  // Every uniform the last draw wrote (setKifsUniforms' and the camera's).
+  const std::vector<std::string>& writtenUniforms() const { return written_; }
+
+ private:
+  unsigned program_ = 0, vao_ = 0;
+  std::vector<std::string> written_;
+};
+
+// `params` with the hit threshold's pixel angle for a camera seeing `height` pixels.
+kifs::KifsParams kifsForView(kifs::KifsParams params, const OrbitCamera& camera, int height);
+// A camera framing the building's outer shell.
+OrbitCamera kifsCamera(const kifs::Building& building, double aspect, double azimuthDeg = -60.0,
+                       double elevationDeg = 22.0);
+
+// A single-sample framebuffer with a 32-bit float depth buffer, for reading depths back.
+class DepthTarget {
+ public:
+  DepthTarget(int width, int height);  // throws corbel::Error if the framebuffer is incomplete
+  ~DepthTarget();
+  DepthTarget(const DepthTarget&) = delete;
+  DepthTarget& operator=(const DepthTarget&) = delete;
+  void bind();
+  // Window depths in [0, 1] (1: nothing drawn), bottom row first as glReadPixels gives them.
+  std::vector<float> readDepth();
+  Image readColor();  // RGBA, bottom row first (not flipped)
+
+ private:
+  int width_, height_;
+  unsigned fbo_ = 0, color_ = 0, depth_ = 0;
+};
+
+// The window depth ([0, 1], 1 where the ray misses) of the building alone (DepthTarget).
+std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                                   int height);
+// The cost of drawing the building alone, one sample per pixel.
+KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
+                         int height);
+// A picture: the Scene (with the renderer's sky and grid), then the building over it.
+Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& building, const Scene& scene,
+                      const OrbitCamera& camera, int width, int height, KifsMode mode,
+                      const RenderSettings& settings);
+
+}  // namespace corbel::render

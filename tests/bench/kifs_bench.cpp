@@ -1,0 +1,84 @@
+// KIFS speeds (docs/kifs.md, "Speed"): CPU distance evaluations per second for each preset, CPU
+// rays per second, the shader's frame time through OSMesa (llvmpipe) at 256² and 512² and
+// meshing at 64³ and 128³. Run: build/tests/bench/corbel_bench_kifs
+#include "kifs/mesher.h"
+#include "kifs/trace.h"
+#include "render/headless_context.h"
+#include "render/kifs_pass.h"
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+namespace {
+
+using namespace corbel;
+
+const std::vector<std::string> kPresets = {"box", "menger", "t", "h", "polar", "curved"};
+
+void KifsDistance(benchmark::State& state) {
+  const kifs::Building b(kifs::preset(kPresets[state.range(0)]));
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<glm::dvec3> points(4096);
+  const kifs::Aabb box = b.worldBounds();
+  for (auto& p : points) p = box.lo + glm::dvec3(u(rng), u(rng), u(rng)) * box.size();
+  for (auto _ : state)
+    for (const auto& p : points) benchmark::DoNotOptimize(b.evaluate(p).bound);
+  state.SetItemsProcessed(state.iterations() * points.size());
+  state.SetLabel(kPresets[state.range(0)]);
+}
+BENCHMARK(KifsDistance)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+
+void KifsCpuFrame(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const kifs::KifsParams params = kifs::preset("box");
+  const render::OrbitCamera camera = render::kifsCamera(kifs::Building(params), 1.0);
+  const kifs::Building b(render::kifsForView(params, camera, n));
+  const glm::dmat4 inv = glm::inverse(camera.projection(1.0) * camera.view());
+  const Vec3 e = camera.eye();
+  for (auto _ : state)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        benchmark::DoNotOptimize(kifs::trace(b, kifs::pixelRay(inv, glm::dvec3(e[0], e[1], e[2]), x, y, n, n)).t);
+  state.SetItemsProcessed(state.iterations() * n * n);
+}
+BENCHMARK(KifsCpuFrame)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// One shaded frame of a preset (sky, grid, building; read back), as corbel-cli kifs draws it.
+void KifsShaderFrame(benchmark::State& state) {
+  static render::HeadlessContext context;
+  static render::Renderer renderer;
+  static render::KifsPass pass;
+  const int n = static_cast<int>(state.range(0));
+  const kifs::KifsParams params = kifs::preset(kPresets[state.range(1)]);
+  const render::OrbitCamera camera = render::kifsCamera(kifs::Building(params), 1.0);
+  const kifs::Building b(render::kifsForView(params, camera, n));
+  render::RenderSettings settings;
+  settings.edges = false;
+  const Scene scene;
+  // The first draw compiles the shader (llvmpipe JIT): not part of a frame.
+  (void)render::renderKifsImage(renderer, pass, b, scene, camera, n, n, render::KifsMode::Shaded, settings);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        render::renderKifsImage(renderer, pass, b, scene, camera, n, n, render::KifsMode::Shaded, settings).rgba[0]);
+  state.SetLabel(kPresets[state.range(1)]);
+}
+BENCHMARK(KifsShaderFrame)
+    ->Args({256, 0})
+    ->Args({512, 0})
+    ->Args({640, 0})
+    ->Args({512, 3})
+    ->Args({512, 4})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void KifsMesh(benchmark::State& state) {
+  const kifs::Building b(kifs::preset("box"));
+  for (auto _ : state) benchmark::DoNotOptimize(kifs::meshBuilding(b, static_cast<int>(state.range(0))).faces.size());
+}
+BENCHMARK(KifsMesh)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

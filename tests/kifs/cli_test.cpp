@@ -1,0 +1,93 @@
+// corbel-cli kifs: --eval prints the CPU distance function (for checking it from outside), a
+// render writes a PNG of the requested size, and bad command lines are refused by exit code.
+#include "kifs/distance.h"
+#include "render/image.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace corbel::kifs::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int code;
+  std::string out;
+};
+
+CliRun cli(const std::string& args) {
+  // One file per process: ctest may run these tests side by side.
+  const fs::path out = fs::temp_directory_path() / ("corbel_kifs_cli_" + std::to_string(getpid()) + ".txt");
+  const int status = std::system((std::string(CORBEL_CLI) + " " + args + " > " + out.string() + " 2>&1").c_str());
+  std::ifstream in(out);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return {WEXITSTATUS(status), ss.str()};
+}
+
+TEST(KifsCli, EvalPrintsTheCpuDistance) {
+  const fs::path points = fs::temp_directory_path() / ("corbel_kifs_points_" + std::to_string(getpid()) + ".txt");
+  std::vector<glm::dvec3> ps;
+  std::mt19937_64 rng(8);
+  const Building b(preset("h"));
+  {
+    std::ofstream f(points);
+    f << "# x y z\n";
+    for (int i = 0; i < 50; ++i) {
+      ps.push_back(uniformIn(rng, b.worldBounds().lo, b.worldBounds().hi));
+      f.precision(17);
+      f << ps.back().x << " " << ps.back().y << " " << ps.back().z << "\n";
+    }
+  }
+  const CliRun r = cli("kifs --preset h --eval " + points.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::istringstream in(r.out);
+  for (const auto& p : ps) {
+    double bound = 0, surface = 0;
+    ASSERT_TRUE(in >> bound >> surface);
+    const Sample s = b.evaluate(p);
+    EXPECT_DOUBLE_EQ(bound, s.bound);
+    EXPECT_DOUBLE_EQ(surface, s.surface);
+  }
+}
+
+TEST(KifsCli, RendersAPngOfTheRequestedSize) {
+  const fs::path png = fs::temp_directory_path() / ("corbel_kifs_cli_" + std::to_string(getpid()) + ".png");
+  const CliRun r = cli("kifs --preset menger --size 40x30 --mode floors --out " + png.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const render::Image img = render::readPng(png.string());
+  EXPECT_EQ(img.width, 40);
+  EXPECT_EQ(img.height, 30);
+}
+
+TEST(KifsCli, MeshesAClosedManifoldToAFile) {
+  const fs::path ply = fs::temp_directory_path() / ("corbel_kifs_cli_" + std::to_string(getpid()) + ".ply");
+  const CliRun r = cli("kifs --preset t --resolution 24 --mesh " + ply.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"closed_manifold\": true"), std::string::npos) << r.out;
+  EXPECT_GT(fs::file_size(ply), 1000u);
+  EXPECT_EQ(cli("kifs --mesh x.stl").code, 1);                  // unknown format
+  EXPECT_EQ(cli("kifs --mesh x.ply --resolution 0").code, 2);   // bad resolution
+}
+
+TEST(KifsCli, BadCommandLinesAreRefused) {
+  EXPECT_EQ(cli("kifs").code, 2);                                  // no --out
+  EXPECT_EQ(cli("kifs --out x.png --mode glossy").code, 2);        // unknown mode
+  EXPECT_EQ(cli("kifs --out x.png --size 0x10").code, 2);          // bad size
+  EXPECT_EQ(cli("kifs --out x.png --frobnicate 1").code, 2);       // unknown option
+  const CliRun unknown = cli("kifs --out x.png --preset gothic");     // unknown preset: bad input
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.out.find("box"), std::string::npos) << unknown.out;
+}
+
+}  // namespace
+}  // namespace corbel::kifs::test
