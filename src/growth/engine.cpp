@@ -1,0 +1,274 @@
+#include "growth/engine.h"
+
+#include "core/error.h"
+#include "growth/tolerances.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace corbel::growth {
+
+namespace {
+
+class ViewDeficitArbitration : public Arbitration {
+ public:
+  std::vector<std::size_t> order(const std::vector<UnitState>& units, std::vector<std::size_t> growing,
+                                 const GrowthOptions& options, Rng& rng) override {
+    (void)options;  // the goal view is set per unit from viewGoalRatio
+    std::vector<std::pair<double, std::size_t>> keyed;
+    for (std::size_t i : growing) {
+      const UnitState& s = units[i];
+      const double deficit = std::clamp((s.goalView - s.view) / std::max(s.goalView, 1e-9), 0.0, 1.0);
+      const double weight = 0.1 + deficit;  // never zero: every unit keeps its turn
+      keyed.push_back({-std::log(1.0 - rng.uniform()) / weight, i});
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::size_t> out;
+    for (auto& [k, i] : keyed) out.push_back(i);
+    return out;
+  }
+};
+
+class RandomArbitration : public Arbitration {
+ public:
+  std::vector<std::size_t> order(const std::vector<UnitState>&, std::vector<std::size_t> growing, const GrowthOptions&,
+                                 Rng& rng) override {
+    for (std::size_t i = growing.size(); i > 1; --i) std::swap(growing[i - 1], growing[rng.below(int(i))]);
+    return growing;
+  }
+};
+
+class SequentialArbitration : public Arbitration {
+ public:
+  std::vector<std::size_t> order(const std::vector<UnitState>&, std::vector<std::size_t> growing, const GrowthOptions&,
+                                 Rng&) override {
+    return growing;
+  }
+};
+
+class ViewBehaviour : public Behaviour {
+ public:
+  std::vector<Move> propose(BehaviourContext& ctx) override {
+    UnitState& s = ctx.state;
+    const Site& site = ctx.engine.site();
+    const Unit& u = s.unit;
+    std::vector<Move> moves;
+    // Shape variation: the next sub-unit starts from a split of the face with the largest
+    // clearance (Sec. 5.3, "Choice of Splitting Face").
+    if (s.subUnitsStarted < s.subUnits && s.progress() >= s.target * s.subUnitsStarted / s.subUnits) {
+      double best = -1;
+      Move split;
+      for (int p = 0; p < int(u.parts.size()); ++p)
+        for (Side side : kVerticalSides) {
+          if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
+          const int along = 1 - sideAxis(side);
+          const Box& b = u.parts[p];
+          if (b.size(along) < 2 * kMinPartWidth) continue;
+          const double clearance = ctx.engine.enforcer().freeDistance(ctx.engine.units(), ctx.unit, p, side, 1e3);
+          if (clearance > best + kEps) {
+            best = clearance;
+            const double t = b.lo[along] + kMinPartWidth + ctx.rng.uniform() * (b.size(along) - 2 * kMinPartWidth);
+            split = Move::split(p, along, t);
+            pendingSide_ = side;
+          }
+        }
+      if (best >= kMinPartWidth) moves.push_back(split);
+      else s.subUnitsStarted = s.subUnits;  // no room for another sub-unit: grow what there is
+    }
+    // Double volume once the unit has half its target (Sec. 5.3, "Choice of Unit Height").
+    if (s.wantsDoubleVolume && !s.doubleVolumeDone && s.progress() >= 0.5 * s.target)
+      for (int p = 0; p < int(u.parts.size()); ++p)
+        for (Side side : {Side::Top, Side::Bottom})
+          if (!u.locked[int(side)]) moves.push_back(Move::advance(p, side, site.storeyHeight));
+    for (int p = 0; p < int(u.parts.size()); ++p)
+      for (Side side : kVerticalSides)
+        if (!u.locked[int(side)] && !sideTouchesOwnPart(u, p, side)) moves.push_back(Move::advance(p, side, site.alpha));
+    return moves;
+  }
+
+  int choose(BehaviourContext& ctx, const std::vector<ScoredMove>& valid) override {
+    UnitState& s = ctx.state;
+    const Unit& u = s.unit;
+    for (int i = 0; i < int(valid.size()); ++i)
+      if (valid[i].move.type == Move::Type::Split) return i;
+    for (int i = 0; i < int(valid.size()); ++i)
+      if (sideAxis(valid[i].move.side) == 2) return i;
+    // A new sub-unit first grows out of its face until it is 3 m deep.
+    const Box& active = u.parts[std::min<std::size_t>(s.activePart, u.parts.size() - 1)];
+    if (s.subUnitsStarted > 1 && std::abs(sideCoord(active, s.activeSide) - s.activeStart) < kMinPartWidth)
+      for (int i = 0; i < int(valid.size()); ++i)
+        if (valid[i].move.part == s.activePart && valid[i].move.side == s.activeSide) return i;
+    const bool aspect = ctx.rng.uniform() < ctx.engine.options().aspectChance;
+    int best = -1;
+    double bestScore = 0;
+    for (int i = 0; i < int(valid.size()); ++i) {
+      const ScoredMove& m = valid[i];
+      const Box& b = u.parts[m.move.part];
+      double score;
+      if (aspect) {
+        // The move that leaves the part closest to square.
+        Box grown = b;
+        const int k = sideAxis(m.move.side);
+        grown.hi[k] += m.move.distance;
+        score = -std::max(grown.size(0), grown.size(1)) / std::min(grown.size(0), grown.size(1));
+      } else {
+        double taken = 0;
+        for (const auto& [id, a] : m.view.taken) taken += a;
+        score = m.view.gain - ctx.engine.options().intrusionPenalty * taken;
+      }
+      // The sub-unit being grown goes first; other parts only when it is stuck.
+      if (m.move.part == s.activePart) score += 1e6;
+      score += 1e-9 * ctx.rng.uniform();  // random ties
+      if (best < 0 || score > bestScore) {
+        best = i;
+        bestScore = score;
+      }
+    }
+    return best;
+  }
+
+  void committed(BehaviourContext& ctx, const Move& m) override {
+    UnitState& s = ctx.state;
+    if (m.type == Move::Type::Split) {
+      ++s.subUnitsStarted;
+      // Either piece may grow the new sub-unit (the low piece keeps the index).
+      s.activePart = ctx.rng.uniform() < 0.5 ? m.part : int(s.unit.parts.size()) - 1;
+      s.activeSide = pendingSide_;
+      s.activeStart = sideCoord(s.unit.parts[s.activePart], s.activeSide);
+    } else if (sideAxis(m.side) == 2) {
+      s.doubleVolumeDone = true;
+    }
+  }
+
+ private:
+  Side pendingSide_ = Side::PosX;  // the split face's side, from propose to committed
+};
+
+}  // namespace
+
+std::shared_ptr<Behaviour> makeViewBehaviour() { return std::make_shared<ViewBehaviour>(); }
+std::unique_ptr<Arbitration> makeViewDeficitArbitration() { return std::make_unique<ViewDeficitArbitration>(); }
+std::unique_ptr<Arbitration> makeRandomArbitration() { return std::make_unique<RandomArbitration>(); }
+std::unique_ptr<Arbitration> makeSequentialArbitration() { return std::make_unique<SequentialArbitration>(); }
+
+GrowthEngine::GrowthEngine(const Site& site, GrowthOptions options, ViewMapper* mapper,
+                           std::map<std::string, std::shared_ptr<Behaviour>> extraBehaviours)
+    : site_(site),
+      options_(options),
+      enforcer_(site),
+      mapper_(mapper),
+      behaviours_(std::move(extraBehaviours)),
+      arbitration_(makeViewDeficitArbitration()),
+      rng_(options.seed) {
+  validateSite(site);
+  if (!mapper_) {
+    ownMapper_ = std::make_unique<ExactViewMapper>();
+    mapper_ = ownMapper_.get();
+  }
+  behaviours_.try_emplace("view", makeViewBehaviour());
+  for (std::size_t i = 0; i < site.seeds.size(); ++i) {
+    const Seed& seed = site.seeds[i];
+    if (!behaviours_.count(seed.behaviour))
+      throw InputError("seeds[" + std::to_string(i) + "].behaviour", "no behaviour named \"" + seed.behaviour + "\"");
+    UnitState s;
+    s.unit.id = int(i) + 1;
+    s.unit.parts = {site.seedBox(i)};
+    s.unit.locked = seed.locked;
+    s.byVolume = seed.targetVolume > 0;
+    s.target = s.byVolume ? seed.targetVolume : seed.targetArea;
+    s.behaviour = seed.behaviour;
+    const double floorTarget = s.byVolume ? s.target / site.storeyHeight : s.target;
+    s.goalView = options_.viewGoalRatio * floorTarget;
+    s.subUnits = 2 + rng_.below(2);
+    while (s.subUnits > 1 && floorTarget / s.subUnits < 2 * kMinPartWidth * kMinPartWidth) --s.subUnits;
+    s.wantsDoubleVolume = rng_.uniform() < options_.doubleVolumeChance;
+    if (s.progress() >= s.target) s.status = UnitStatus::Reached;
+    states_.push_back(std::move(s));
+    units_.push_back(states_.back().unit);
+  }
+  for (std::size_t i = 0; i < units_.size(); ++i)
+    if (!enforcer_.plausible(units_, i))
+      throw InputError("seeds[" + std::to_string(i) + "]",
+                       "is not supported: it rests on nothing and is fixed to no core or circulation within the "
+                       "cantilever limit");
+  updateQuantifiers();
+}
+
+std::vector<Unit> GrowthEngine::units() const { return units_; }
+
+std::vector<ViewBox> GrowthEngine::viewBoxes() const {
+  std::vector<ViewBox> boxes;
+  for (const Unit& u : units_)
+    for (const Box& p : u.parts) boxes.push_back({p, std::uint32_t(u.id)});
+  for (std::size_t i = 0; i < site_.cores.size(); ++i) boxes.push_back({site_.coreBox(i), kObstacleId});
+  for (const Box& c : site_.circulation) boxes.push_back({c, kObstacleId});
+  return boxes;
+}
+
+void GrowthEngine::updateQuantifiers() {
+  views_ = mapper_->render(viewBoxes(), site_.bounds());
+  for (UnitState& s : states_) {
+    s.view = views_.view(std::uint32_t(s.unit.id));
+    s.peakView = std::max(s.peakView, s.view);
+  }
+}
+
+bool GrowthEngine::done() const {
+  return std::none_of(states_.begin(), states_.end(), [](const UnitState& s) { return s.status == UnitStatus::Growing; });
+}
+
+bool GrowthEngine::step() {
+  std::vector<std::size_t> growing;
+  for (std::size_t i = 0; i < states_.size(); ++i)
+    if (states_[i].status == UnitStatus::Growing) growing.push_back(i);
+  if (growing.empty()) return false;
+  ++steps_;
+  for (std::size_t i : arbitration_->order(states_, growing, options_, rng_)) {
+    UnitState& s = states_[i];
+    Behaviour& behaviour = *behaviours_.at(s.behaviour);
+    BehaviourContext ctx{*this, i, rng_, s};
+    std::vector<ScoredMove> valid;
+    for (const Move& m : behaviour.propose(ctx)) {
+      const Verdict v = enforcer_.check(units_, i, m);
+      if (!v.ok) continue;
+      ScoredMove sm{v.move, {}};
+      if (v.move.type == Move::Type::Advance) {
+        sm.view = views_.gain(sweptRegion(units_[i].parts[v.move.part], v.move.side, v.move.distance),
+                              std::uint32_t(s.unit.id));
+        // View conflict (Sec. 5.2): no unit may lose more than τ of its best view.
+        bool conflict = false;
+        for (const auto& [id, a] : sm.view.taken) {
+          const UnitState& o = states_[id - 1];
+          if (o.view - a < (1 - options_.tau) * o.peakView - kEps) conflict = true;
+        }
+        if (conflict) continue;
+      }
+      valid.push_back(sm);
+    }
+    const int pick = valid.empty() ? -1 : behaviour.choose(ctx, valid);
+    if (pick < 0) {
+      if (++s.idleSteps >= options_.patience) s.status = UnitStatus::Stuck;
+      continue;
+    }
+    s.idleSteps = 0;
+    const Move m = valid[pick].move;
+    applyMove(units_[i], m);
+    s.unit = units_[i];
+    ++s.moves;
+    ++commits_;
+    behaviour.committed(ctx, m);
+    if (s.progress() >= s.target - kEps) s.status = UnitStatus::Reached;
+    if (onCommit_) onCommit_(*this, {steps_, i, m});
+  }
+  updateQuantifiers();
+  return true;
+}
+
+int GrowthEngine::run(int maxSteps) {
+  int n = 0;
+  while (n < maxSteps && step()) ++n;
+  return n;
+}
+
+}  // namespace corbel::growth
