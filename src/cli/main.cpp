@@ -1,4 +1,5 @@
 // corbel-cli: headless entry points (render, export, check, extrude, statics). Thin: parse, call, report.
+#include "cli/grow.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
@@ -51,6 +52,8 @@ usage:
                     rigid ground tilted by DEG. Prints the measure of infeasibility y/W² (0 when
                     it stands); --min-thickness the least t/R that stands (T ignored);
                     --critical-tilt the ground tilt in degrees at which it stops standing.
+  corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
+                    Grows housing units on a site (docs/growth.md); prints one JSON line.
   corbel-cli --version | --help
 
 Exit codes: 0 success, 1 bad input or failed check, 2 bad command line.
@@ -444,6 +447,7 @@ int main(int argc, char** argv) {
       return cmdStatics(parseArgs(argc, argv, {{"--blocks", true}, {"--thickness", true}, {"--tilt", true},
                                                {"--friction", true}, {"--kern", true}, {"--min-thickness", false},
                                                {"--critical-tilt", false}}));
+    if (cmd == "grow") return corbel::cli::grow(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";

@@ -181,3 +181,22 @@ TEST(Engine, BadSetupsGetClearErrors) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+TEST(Engine, AlphaExampleEndsWithEveryConstraintHolding) {
+  const Site site = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-alpha.json");
+  for (std::uint64_t seed : {1u, 5u}) {
+    GrowthOptions o;
+    o.seed = seed;
+    GrowthEngine engine(site, o);
+    engine.run(100000);
+    EXPECT_TRUE(engine.done());
+    const std::vector<std::string> bad = test::independentViolations(site, engine.units());
+    EXPECT_TRUE(bad.empty()) << bad.front();
+  }
+}
+
+}  // namespace
+}  // namespace corbel::growth
