@@ -1,0 +1,67 @@
+// The growth kernel on the Alpha-like example: one simulation step (early and mid-run), the
+// view maps of a grown model, and a full run. Results: docs/growth.md.
+#include "growth/engine.h"
+#include "growth/site.h"
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+namespace {
+
+using namespace corbel::growth;
+
+const Site& alpha() {
+  static const Site site = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-alpha.json");
+  return site;
+}
+
+// One step after `before` steps (the engine is rebuilt outside the timing each time).
+void BM_GrowthStep(benchmark::State& state) {
+  const int before = int(state.range(0));
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto engine = std::make_unique<GrowthEngine>(alpha());
+    engine->run(before);
+    const std::size_t commits = engine->commits();
+    state.ResumeTiming();
+    engine->step();
+    state.PauseTiming();
+    state.counters["moves"] = double(engine->commits() - commits);
+    engine.reset();
+    state.ResumeTiming();
+  }
+}
+BENCHMARK(BM_GrowthStep)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond)->Iterations(20);
+
+void BM_ExactViewMaps(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  const std::vector<ViewBox> boxes = engine.viewBoxes();
+  ExactViewMapper mapper;
+  for (auto _ : state) benchmark::DoNotOptimize(mapper.render(boxes, alpha().bounds()));
+  state.counters["boxes"] = double(boxes.size());
+}
+BENCHMARK(BM_ExactViewMaps)->Unit(benchmark::kMillisecond);
+
+void BM_RasterViewMaps(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  const std::vector<ViewBox> boxes = engine.viewBoxes();
+  RasterViewMapper mapper(0.1);
+  for (auto _ : state) benchmark::DoNotOptimize(mapper.render(boxes, alpha().bounds()));
+}
+BENCHMARK(BM_RasterViewMaps)->Unit(benchmark::kMillisecond);
+
+void BM_FullRun(benchmark::State& state) {
+  for (auto _ : state) {
+    GrowthEngine engine(alpha());
+    state.counters["steps"] = engine.run(100000);
+    state.counters["moves"] = double(engine.commits());
+  }
+}
+BENCHMARK(BM_FullRun)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
