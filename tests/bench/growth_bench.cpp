@@ -2,6 +2,8 @@
 // view maps of a grown model, and a full run. Results: docs/growth.md.
 #include "growth/engine.h"
 #include "growth/site.h"
+#include "render/gl_view_mapper.h"
+#include "render/headless_context.h"
 
 #include <benchmark/benchmark.h>
 
@@ -52,6 +54,27 @@ void BM_RasterViewMaps(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(mapper.render(boxes, alpha().bounds()));
 }
 BENCHMARK(BM_RasterViewMaps)->Unit(benchmark::kMillisecond);
+
+void BM_GlViewMaps(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  const std::vector<ViewBox> boxes = engine.viewBoxes();
+  corbel::render::HeadlessContext context;
+  corbel::render::GlViewMapper mapper(0.1);
+  for (auto _ : state) benchmark::DoNotOptimize(mapper.render(boxes, alpha().bounds()));
+}
+BENCHMARK(BM_GlViewMaps)->Unit(benchmark::kMillisecond);
+
+// A full run with view maps from OSMesa at 0.25 m pixels.
+void BM_FullRunGl(benchmark::State& state) {
+  corbel::render::HeadlessContext context;
+  corbel::render::GlViewMapper mapper(0.25);
+  for (auto _ : state) {
+    GrowthEngine engine(alpha(), {}, &mapper);
+    state.counters["steps"] = engine.run(100000);
+  }
+}
+BENCHMARK(BM_FullRunGl)->Unit(benchmark::kMillisecond);
 
 void BM_FullRun(benchmark::State& state) {
   for (auto _ : state) {
