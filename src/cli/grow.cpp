@@ -6,6 +6,7 @@
 #include "core/scene.h"
 #include "growth/engine.h"
 #include "growth/statistics.h"
+#include "render/gl_view_mapper.h"
 #include "render/headless_context.h"
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <string>
 
 namespace corbel::cli {
@@ -21,7 +23,7 @@ namespace {
 
 constexpr const char* kGrowUsage =
     "usage: corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE.{obj,ply,off,glb}] "
-    "[--render PNG]\n";
+    "[--render PNG] [--view-maps exact|raster|gl] [--pixel M]\n";
 
 bool wholeNumber(const std::string& s, long long lo, long long hi, long long& out) {
   char* end = nullptr;
@@ -72,7 +74,8 @@ nlohmann::ordered_json statisticsJson(const growth::Statistics& st) {
 }  // namespace
 
 int grow(int argc, char** argv) {
-  std::string sitePath, out, png;
+  std::string sitePath, out, png, maps = "exact";
+  double pixel = 0.1;
   long long seed = 1, steps = 100000;
   bool stats = false;
   for (int i = 2; i < argc; ++i) {
@@ -89,6 +92,20 @@ int grow(int argc, char** argv) {
       long long& target = a == "--seed" ? seed : steps;
       if (!wholeNumber(v, 0, a == "--seed" ? (1ll << 62) : 100000000ll, target)) {
         std::cerr << "corbel-cli: grow: " << a << ": expected a whole number, not '" << v << "'\n";
+        return 2;
+      }
+    } else if (a == "--view-maps") {
+      maps = value();
+      if (maps != "exact" && maps != "raster" && maps != "gl") {
+        std::cerr << "corbel-cli: grow: --view-maps: expected exact, raster or gl\n";
+        return 2;
+      }
+    } else if (a == "--pixel") {
+      const std::string v = value();
+      char* end = nullptr;
+      pixel = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !(pixel >= 0.01 && pixel <= 10)) {
+        std::cerr << "corbel-cli: grow: --pixel: expected meters in [0.01, 10], not '" << v << "'\n";
         return 2;
       }
     } else if (a == "--stats") {
@@ -122,8 +139,19 @@ int grow(int argc, char** argv) {
   for (const auto& w : warnings) std::cerr << "corbel-cli: warning: " << sitePath << ": " << w << "\n";
   growth::GrowthOptions options;
   options.seed = std::uint64_t(seed);
+  // View maps: exact (default), the CPU rasterizer, or GL through OSMesa, at `pixel` meters.
+  std::unique_ptr<render::HeadlessContext> context;
+  std::unique_ptr<growth::ViewMapper> mapper;
+  if (maps == "gl") {
+    context = std::make_unique<render::HeadlessContext>();
+    mapper = std::make_unique<render::GlViewMapper>(pixel);
+  } else if (maps == "raster") {
+    mapper = std::make_unique<growth::RasterViewMapper>(pixel);
+  } else {
+    mapper = std::make_unique<growth::ExactViewMapper>();
+  }
   const auto t0 = std::chrono::steady_clock::now();
-  growth::GrowthEngine engine(site, options);
+  growth::GrowthEngine engine(site, options, mapper.get());
   const int ran = engine.run(int(steps));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const std::vector<growth::Unit> units = engine.units();
@@ -143,6 +171,7 @@ int grow(int argc, char** argv) {
   j["reached"] = reached;
   j["stuck"] = stuck;
   j["constraints_hold"] = violations.empty();
+  j["view_maps"] = maps;
   j["grow_ms"] = ms;
   if (stats) j["statistics"] = statisticsJson(growth::computeStatistics(site, units, engine.views()));
 
@@ -153,12 +182,13 @@ int grow(int argc, char** argv) {
       j["out"] = out;
     }
     if (!png.empty()) {
-      render::HeadlessContext context;
+      if (!context) context = std::make_unique<render::HeadlessContext>();
       render::Renderer renderer;
       render::OrbitCamera camera;
       camera.frame(scene.bounds(), 1200.0 / 800.0);
-      camera.azimuth_deg = -35;
-      camera.elevation_deg = 32;
+      camera.azimuth_deg = -75;
+      camera.elevation_deg = 30;
+      camera.distance *= 0.95;
       render::RenderSettings settings;
       render::writePng(render::renderImage(renderer, scene, camera, 1200, 800, settings), png);
       j["render"] = png;

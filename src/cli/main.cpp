@@ -53,6 +53,7 @@ usage:
                     it stands); --min-thickness the least t/R that stands (T ignored);
                     --critical-tilt the ground tilt in degrees at which it stops standing.
   corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
+                    [--view-maps exact|raster|gl] [--pixel M]
                     Grows housing units on a site (docs/growth.md); prints one JSON line.
   corbel-cli --version | --help
 

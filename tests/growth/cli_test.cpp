@@ -85,3 +85,32 @@ TEST(GrowCli, BadInputAndBadCommandLines) {
 }
 
 }  // namespace
+
+namespace {
+
+// GL view maps through OSMesa and the CPU rasterizer sample the same pixel grid the same
+// way, so the whole Alpha run (thousands of moves chosen by view gains) comes out the same.
+TEST(GrowCli, GlViewMapsGrowTheSameModelAsTheCpuRasterizer) {
+  const std::string glObj = testing::TempDir() + "growth-gl.obj", cpuObj = testing::TempDir() + "growth-cpu.obj";
+  const CliRun gl = cli("grow " + kAlpha + " --view-maps gl --pixel 0.25 --stats --out " + glObj);
+  const CliRun cpu = cli("grow " + kAlpha + " --view-maps raster --pixel 0.25 --stats --out " + cpuObj);
+  ASSERT_EQ(gl.code, 0) << gl.out;
+  ASSERT_EQ(cpu.code, 0) << cpu.out;
+  auto a = nlohmann::json::parse(gl.out), b = nlohmann::json::parse(cpu.out);
+  EXPECT_EQ(a["statistics"], b["statistics"]);
+  EXPECT_EQ(a["moves"], b["moves"]);
+  // The same vertices and faces (the files differ only in the name of their .mtl).
+  auto geometry = [](const std::string& path) {
+    std::ifstream in(path);
+    std::string line, text;
+    while (std::getline(in, line))
+      if (line.rfind("mtllib", 0) != 0) text += line + "\n";
+    return text;
+  };
+  const std::string ta = geometry(glObj), tb = geometry(cpuObj);
+  EXPECT_GT(ta.size(), 1000u);
+  EXPECT_TRUE(ta == tb);
+  EXPECT_EQ(cli("grow " + kAlpha + " --view-maps paint").code, 2);
+}
+
+}  // namespace
