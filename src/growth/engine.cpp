@@ -56,7 +56,9 @@ class ViewBehaviour : public Behaviour {
     std::vector<Move> moves;
     // Shape variation: the next sub-unit starts from a split of the face with the largest
     // clearance (Sec. 5.3, "Choice of Splitting Face").
-    if (s.subUnitsStarted < s.subUnits && s.progress() >= s.target * s.subUnitsStarted / s.subUnits) {
+    // A unit that found no valid move last step also tries a new sub-unit.
+    const bool due = s.subUnitsStarted < s.subUnits && s.progress() >= s.target * s.subUnitsStarted / s.subUnits;
+    if (due || s.idleSteps > 0) {
       double best = -1;
       Move split;
       for (int p = 0; p < int(u.parts.size()); ++p)
@@ -74,16 +76,23 @@ class ViewBehaviour : public Behaviour {
           }
         }
       if (best >= kMinPartWidth) moves.push_back(split);
-      else s.subUnitsStarted = s.subUnits;  // no room for another sub-unit: grow what there is
+      else if (due) s.subUnitsStarted = s.subUnits;  // no room for another sub-unit: grow what there is
     }
     // Double volume once the unit has half its target (Sec. 5.3, "Choice of Unit Height").
     if (s.wantsDoubleVolume && !s.doubleVolumeDone && s.progress() >= 0.5 * s.target)
       for (int p = 0; p < int(u.parts.size()); ++p)
         for (Side side : {Side::Top, Side::Bottom})
           if (!u.locked[int(side)]) moves.push_back(Move::advance(p, side, site.storeyHeight));
+    // Face advances, except those that would stretch a part past maxAspect (the elongated,
+    // unusable units of Sec. 5.3).
     for (int p = 0; p < int(u.parts.size()); ++p)
-      for (Side side : kVerticalSides)
-        if (!u.locked[int(side)] && !sideTouchesOwnPart(u, p, side)) moves.push_back(Move::advance(p, side, site.alpha));
+      for (Side side : kVerticalSides) {
+        if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
+        const Box& b = u.parts[p];
+        const double along = b.size(sideAxis(side)) + site.alpha, across = b.size(1 - sideAxis(side));
+        if (along > ctx.engine.options().maxAspect * across + kEps) continue;
+        moves.push_back(Move::advance(p, side, site.alpha));
+      }
     return moves;
   }
 
@@ -131,7 +140,7 @@ class ViewBehaviour : public Behaviour {
   void committed(BehaviourContext& ctx, const Move& m) override {
     UnitState& s = ctx.state;
     if (m.type == Move::Type::Split) {
-      ++s.subUnitsStarted;
+      s.subUnits = std::max(s.subUnits, ++s.subUnitsStarted);
       // Either piece may grow the new sub-unit (the low piece keeps the index).
       s.activePart = ctx.rng.uniform() < 0.5 ? m.part : int(s.unit.parts.size()) - 1;
       s.activeSide = pendingSide_;

@@ -57,6 +57,7 @@ struct GrowthOptions {
   double viewGoalRatio = 0.5;     // goal view = this × target floor area (Ch. 8: "about half")
   double aspectChance = 0.25;     // chance a step favours aspect ratio over view (Sec. 5.3)
   double doubleVolumeChance = 0.35;
+  double maxAspect = 3.0;  // the view behaviour keeps each part's plan within 1 : maxAspect
   int patience = 5;
 };
 

@@ -200,3 +200,23 @@ TEST(Engine, AlphaExampleEndsWithEveryConstraintHolding) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// Sec. 5.3: growth by view alone stretches units; the view behaviour keeps every part within
+// 1 : maxAspect in plan (seeds start square), on both example sites.
+TEST(Engine, ViewBehaviourKeepsPartsWithinTheAspectLimit) {
+  for (const char* name : {"growth-alpha.json", "growth-beta.json"}) {
+    const Site site = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + name);
+    GrowthEngine engine(site);
+    engine.run(100000);
+    for (const Unit& u : engine.units())
+      for (const Box& p : u.parts)
+        EXPECT_LE(std::max(p.size(0), p.size(1)), engine.options().maxAspect * std::min(p.size(0), p.size(1)) + 1e-9)
+            << name << " unit " << u.id;
+  }
+}
+
+}  // namespace
+}  // namespace corbel::growth
