@@ -66,11 +66,13 @@ class ViewBehaviour : public Behaviour {
           if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
           const int along = 1 - sideAxis(side);
           const Box& b = u.parts[p];
-          if (b.size(along) < 2 * kMinPartWidth) continue;
+          // Both pieces at least 3 m wide and within the aspect limit.
+          const double least = std::max(kMinPartWidth, b.size(1 - along) / ctx.engine.options().maxAspect);
+          if (b.size(along) < 2 * least) continue;
           const double clearance = ctx.engine.enforcer().freeDistance(ctx.engine.units(), ctx.unit, p, side, 1e3);
           if (clearance > best + kEps) {
             best = clearance;
-            const double t = b.lo[along] + kMinPartWidth + ctx.rng.uniform() * (b.size(along) - 2 * kMinPartWidth);
+            const double t = b.lo[along] + least + ctx.rng.uniform() * (b.size(along) - 2 * least);
             split = Move::split(p, along, t);
             pendingSide_ = side;
           }
