@@ -85,6 +85,17 @@ void BM_FullRun(benchmark::State& state) {
 }
 BENCHMARK(BM_FullRun)->Unit(benchmark::kMillisecond);
 
+// Beta (100 m x 60 m, 6 storeys, 132 seeds) grown to completion: the goal is under 5 s.
+void BM_FullRunBeta(benchmark::State& state) {
+  static const Site beta = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-beta.json");
+  for (auto _ : state) {
+    GrowthEngine engine(beta);
+    state.counters["steps"] = engine.run(100000);
+    state.counters["moves"] = double(engine.commits());
+  }
+}
+BENCHMARK(BM_FullRunBeta)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();
