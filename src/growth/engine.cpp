@@ -206,8 +206,6 @@ GrowthEngine::GrowthEngine(const Site& site, GrowthOptions options, ViewMapper* 
   updateQuantifiers();
 }
 
-std::vector<Unit> GrowthEngine::units() const { return units_; }
-
 std::vector<ViewBox> GrowthEngine::viewBoxes() const {
   std::vector<ViewBox> boxes;
   for (const Unit& u : units_)

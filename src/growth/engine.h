@@ -131,7 +131,7 @@ class GrowthEngine {
   const GrowthOptions& options() const { return options_; }
   const ConstraintEnforcer& enforcer() const { return enforcer_; }
   const std::vector<UnitState>& states() const { return states_; }
-  std::vector<Unit> units() const;
+  const std::vector<Unit>& units() const { return units_; }
   const ViewMaps& views() const { return views_; }
   int steps() const { return steps_; }
   std::size_t commits() const { return commits_; }

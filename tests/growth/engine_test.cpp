@@ -220,3 +220,40 @@ TEST(Engine, ViewBehaviourKeepsPartsWithinTheAspectLimit) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// Sec. 5.3, locked faces: a unit whose -x, -y and +y faces are locked keeps those planes for
+// the whole run, whatever its behaviour does.
+TEST(Engine, LockedFacesKeepTheirPlanes) {
+  Site site = test::openSite(40, 40, 2);
+  Seed seed = test::seedAt(5, 10, 0, 80);
+  seed.locked[int(Side::NegX)] = seed.locked[int(Side::NegY)] = seed.locked[int(Side::PosY)] = true;
+  site.seeds = {seed};
+  GrowthEngine engine(site);
+  engine.run(1000);
+  ASSERT_GT(engine.commits(), 5u);
+  for (const Box& p : engine.units()[0].parts) {
+    EXPECT_DOUBLE_EQ(p.lo[0], 5);
+    EXPECT_GE(p.lo[1], 10);
+    EXPECT_LE(p.hi[1], 13);
+  }
+  EXPECT_GT(engine.units()[0].bounds().hi[0], 8.0);  // it grew where it could: +x
+}
+
+TEST(Engine, VolumeTargetsCountDoubleVolumes) {
+  Site site = test::openSite(40, 40, 2);
+  Seed seed = test::seedAt(18, 18, 0, 0);
+  seed.targetVolume = 240;
+  site.seeds = {seed};
+  GrowthEngine engine(site);
+  engine.run(1000);
+  const UnitState& s = engine.states()[0];
+  EXPECT_EQ(s.status, UnitStatus::Reached);
+  EXPECT_TRUE(s.byVolume);
+  EXPECT_GE(engine.units()[0].volume(), 240 - 1e-9);
+}
+
+}  // namespace
+}  // namespace corbel::growth
