@@ -34,6 +34,16 @@ bool facesAcross(const Box& b, Side s, const Box& o) {
 
 double ConstraintEnforcer::freeDistance(const std::vector<Unit>& units, std::size_t unit, int part, Side s,
                                         double limit) const {
+  return distanceAhead(units, unit, part, s, limit, 0.0, nullptr);
+}
+
+double ConstraintEnforcer::lookAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit,
+                                     double reach, const std::vector<bool>& growing) const {
+  return distanceAhead(units, unit, part, s, limit, reach, &growing);
+}
+
+double ConstraintEnforcer::distanceAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s,
+                                         double limit, double reach, const std::vector<bool>* growing) const {
   const Box& b = units[unit].parts[part];
   const int k = sideAxis(s);
   double d = limit;
@@ -43,9 +53,11 @@ double ConstraintEnforcer::freeDistance(const std::vector<Unit>& units, std::siz
     d = std::min(d, std::max(gap, 0.0));
   };
   for (const Box& z : zones_) against(z);
-  for (std::size_t i = 0; i < units.size(); ++i)
+  for (std::size_t i = 0; i < units.size(); ++i) {
+    const double grow = (i != unit && growing && i < growing->size() && (*growing)[i]) ? reach : 0.0;
     for (std::size_t j = 0; j < units[i].parts.size(); ++j)
-      if (i != unit || int(j) != part) against(units[i].parts[j]);
+      if (i != unit || int(j) != part) against(grownInPlan(units[i].parts[j], grow));
+  }
   if (k == 2) {
     d = std::min(d, sideSign(s) > 0 ? site_.top() - b.hi[2] : b.lo[2] - site_.base);
     return std::max(d, 0.0);

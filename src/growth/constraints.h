@@ -38,6 +38,11 @@ class ConstraintEnforcer {
   // Look-ahead clearance query (Sec. 5.3): how far side s of the part can advance, up to
   // `limit`, before it meets the envelope, a clearance zone, or any unit.
   double freeDistance(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit) const;
+  // Look-ahead with the conservative estimate of Sec. 5.3: the free distance if every other
+  // unit marked in `growing` had already advanced every side of its parts by `reach` in plan
+  // (what it can take within reach / α steps).
+  double lookAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit, double reach,
+                   const std::vector<bool>& growing) const;
   // Physical plausibility of one unit among the others.
   bool plausible(const std::vector<Unit>& units, std::size_t unit) const;
   // Every constraint above over a whole configuration; one sentence per violation.
@@ -48,6 +53,8 @@ class ConstraintEnforcer {
  private:
   // Plausibility of `u` standing in for units[unit].
   bool plausibleAs(const std::vector<Unit>& units, std::size_t unit, const Unit& u) const;
+  double distanceAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit, double reach,
+                       const std::vector<bool>* growing) const;
   const Site& site_;
   std::vector<Box> zones_;  // cores and circulation grown by their clearances
 };

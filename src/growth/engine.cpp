@@ -61,6 +61,8 @@ class ViewBehaviour : public Behaviour {
     if (due || s.idleSteps > 0) {
       double best = -1;
       Move split;
+      std::vector<bool> growing;
+      for (const UnitState& o : ctx.engine.states()) growing.push_back(o.status == UnitStatus::Growing);
       for (int p = 0; p < int(u.parts.size()); ++p)
         for (Side side : kVerticalSides) {
           if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
@@ -69,7 +71,9 @@ class ViewBehaviour : public Behaviour {
           // Both pieces at least 3 m wide and within the aspect limit.
           const double least = std::max(kMinPartWidth, b.size(1 - along) / ctx.engine.options().maxAspect);
           if (b.size(along) < 2 * least) continue;
-          const double clearance = ctx.engine.enforcer().freeDistance(ctx.engine.units(), ctx.unit, p, side, 1e3);
+          // Look-ahead: room for 3 m even if the growing neighbours come 3 m closer meanwhile.
+          const double clearance = ctx.engine.enforcer().lookAhead(ctx.engine.units(), ctx.unit, p, side, 1e3,
+                                                                   kMinPartWidth, growing);
           if (clearance > best + kEps) {
             best = clearance;
             const double t = b.lo[along] + least + ctx.rng.uniform() * (b.size(along) - 2 * least);

@@ -124,3 +124,22 @@ TEST(Constraints, FacesTouchingTheirOwnPartsDoNotAdvance) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+TEST(Constraints, LookAheadAssumesGrowingNeighboursComeCloser) {
+  Site site = test::openSite(40, 40, 2);
+  ConstraintEnforcer e(site);
+  const std::vector<Unit> units{test::unitOf(1, {test::box(0, 0, 0, 4, 4, 3)}),
+                                test::unitOf(2, {test::box(9, 1, 0, 13, 5, 3)})};
+  EXPECT_NEAR(e.freeDistance(units, 0, 0, Side::PosX, 100), 5, 1e-12);
+  EXPECT_NEAR(e.lookAhead(units, 0, 0, Side::PosX, 100, 3, {true, true}), 2, 1e-12);
+  EXPECT_NEAR(e.lookAhead(units, 0, 0, Side::PosX, 100, 3, {true, false}), 5, 1e-12);  // unit 2 has stopped
+  // Grown by 3 m, unit 2 spans x 6..16: still clear of the strip in front of unit 1's +y face
+  // (x 0..4), which the envelope alone limits.
+  EXPECT_NEAR(e.lookAhead(units, 0, 0, Side::PosY, 100, 3, {true, true}), 36, 1e-6);  // the envelope (within kEps)
+}
+
+}  // namespace
+}  // namespace corbel::growth
