@@ -74,6 +74,25 @@ double ConstraintEnforcer::distanceAhead(const std::vector<Unit>& units, std::si
   return d;
 }
 
+std::vector<std::pair<double, double>> ConstraintEnforcer::blockedSpans(const std::vector<Unit>& units,
+                                                                      std::size_t unit, int part, Side s,
+                                                                      double distance) const {
+  const Box& b = units[unit].parts[part];
+  const int k = sideAxis(s), along = 1 - k;
+  std::vector<std::pair<double, double>> spans;
+  auto against = [&](const Box& o) {
+    if (!facesAcross(b, s, o)) return;
+    const double gap = sideSign(s) > 0 ? o.lo[k] - b.hi[k] : b.lo[k] - o.hi[k];
+    if (gap < distance) spans.push_back({std::max(o.lo[along], b.lo[along]), std::min(o.hi[along], b.hi[along])});
+  };
+  for (const Box& z : zones_) against(z);
+  for (std::size_t i = 0; i < units.size(); ++i)
+    for (std::size_t j = 0; j < units[i].parts.size(); ++j)
+      if (i != unit || int(j) != part) against(units[i].parts[j]);
+  std::sort(spans.begin(), spans.end());
+  return spans;
+}
+
 bool ConstraintEnforcer::plausible(const std::vector<Unit>& units, std::size_t unit) const {
   return plausibleAs(units, unit, units[unit]);
 }

@@ -43,6 +43,10 @@ class ConstraintEnforcer {
   // (what it can take within reach / α steps).
   double lookAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit, double reach,
                    const std::vector<bool>& growing) const;
+  // Collide (Sec. 5.3): the spans, along side s of the part, of every obstacle (envelope
+  // excluded) that lies in front of it closer than `distance`.
+  std::vector<std::pair<double, double>> blockedSpans(const std::vector<Unit>& units, std::size_t unit, int part,
+                                                      Side s, double distance) const;
   // Physical plausibility of one unit among the others.
   bool plausible(const std::vector<Unit>& units, std::size_t unit) const;
   // Every constraint above over a whole configuration; one sentence per violation.

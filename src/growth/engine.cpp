@@ -54,6 +54,7 @@ class ViewBehaviour : public Behaviour {
     const Site& site = ctx.engine.site();
     const Unit& u = s.unit;
     std::vector<Move> moves;
+    pending_.clear();
     // Shape variation: the next sub-unit starts from a split of the face with the largest
     // clearance (Sec. 5.3, "Choice of Splitting Face").
     // A unit that found no valid move last step also tries a new sub-unit.
@@ -61,6 +62,7 @@ class ViewBehaviour : public Behaviour {
     if (due || s.idleSteps > 0) {
       double best = -1;
       Move split;
+      Side splitSide = Side::PosX;
       std::vector<bool> growing;
       for (const UnitState& o : ctx.engine.states()) growing.push_back(o.status == UnitStatus::Growing);
       for (int p = 0; p < int(u.parts.size()); ++p)
@@ -78,12 +80,17 @@ class ViewBehaviour : public Behaviour {
             best = clearance;
             const double t = b.lo[along] + least + ctx.rng.uniform() * (b.size(along) - 2 * least);
             split = Move::split(p, along, t);
-            pendingSide_ = side;
+            splitSide = side;
           }
         }
-      if (best >= kMinPartWidth) moves.push_back(split);
-      else if (due) s.subUnitsStarted = s.subUnits;  // no room for another sub-unit: grow what there is
+      if (best >= kMinPartWidth) {
+        moves.push_back(split);
+        pending_.push_back({split, splitSide, -1});
+      } else if (due) {
+        s.subUnitsStarted = s.subUnits;  // no room for another sub-unit: grow what there is
+      }
     }
+    proposeCollideSplits(ctx, moves);
     // Double volume once the unit has half its target (Sec. 5.3, "Choice of Unit Height").
     if (s.wantsDoubleVolume && !s.doubleVolumeDone && s.progress() >= 0.5 * s.target)
       for (int p = 0; p < int(u.parts.size()); ++p)
@@ -146,18 +153,60 @@ class ViewBehaviour : public Behaviour {
   void committed(BehaviourContext& ctx, const Move& m) override {
     UnitState& s = ctx.state;
     if (m.type == Move::Type::Split) {
+      Pending why{m, Side::PosX, -1};
+      for (const Pending& p : pending_)
+        if (p.move == m) why = p;
       s.subUnits = std::max(s.subUnits, ++s.subUnitsStarted);
-      // Either piece may grow the new sub-unit (the low piece keeps the index).
-      s.activePart = ctx.rng.uniform() < 0.5 ? m.part : int(s.unit.parts.size()) - 1;
-      s.activeSide = pendingSide_;
+      // The piece that grows the new sub-unit (the low piece keeps the index): either, or the
+      // free one after a collision.
+      const bool high = why.piece < 0 ? ctx.rng.uniform() < 0.5 : why.piece == 1;
+      s.activePart = high ? int(s.unit.parts.size()) - 1 : m.part;
+      s.activeSide = why.side;
       s.activeStart = sideCoord(s.unit.parts[s.activePart], s.activeSide);
     } else if (sideAxis(m.side) == 2) {
       s.doubleVolumeDone = true;
     }
+    pending_.clear();
   }
 
  private:
-  Side pendingSide_ = Side::PosX;  // the split face's side, from propose to committed
+  // Collide-and-extrude (Sec. 5.3, Fig. 5.3) for boxes: when an obstacle covers only part of a
+  // face of the growing part, the face is split at the obstacle's edge so the free piece can
+  // extrude past it (the plan difference of face and obstacle is one interval here, so no
+  // polygon Boolean is needed).
+  void proposeCollideSplits(BehaviourContext& ctx, std::vector<Move>& moves) {
+    const UnitState& s = ctx.state;
+    const Unit& u = s.unit;
+    const int p = std::min<int>(s.activePart, int(u.parts.size()) - 1);
+    const Box& b = u.parts[p];
+    const double alpha = ctx.engine.site().alpha;
+    for (Side side : kVerticalSides) {
+      if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
+      if (ctx.engine.enforcer().freeDistance(ctx.engine.units(), ctx.unit, p, side, alpha) >= alpha) continue;
+      const int along = 1 - sideAxis(side);
+      const double least = std::max(kMinPartWidth, b.size(sideAxis(side)) / ctx.engine.options().maxAspect);
+      const auto spans = ctx.engine.enforcer().blockedSpans(ctx.engine.units(), ctx.unit, p, side, alpha);
+      if (spans.empty()) continue;  // only the envelope is in the way
+      // The blocked stretch [lo, hi]; the face's free ends lie before and after it.
+      const double lo = spans.front().first;
+      double hi = lo;
+      for (const auto& sp : spans) hi = std::max(hi, sp.second);
+      if (lo - b.lo[along] >= least && b.hi[along] - lo >= least) {
+        moves.push_back(Move::split(p, along, lo));
+        pending_.push_back({moves.back(), side, 0});  // the low piece is free
+      } else if (b.hi[along] - hi >= least && hi - b.lo[along] >= least) {
+        moves.push_back(Move::split(p, along, hi));
+        pending_.push_back({moves.back(), side, 1});  // the high piece is free
+      }
+    }
+  }
+
+  struct Pending {
+    Move move;
+    Side side;  // the face the new sub-unit grows from
+    int piece;  // 0 low, 1 high, -1 either
+  };
+  std::vector<Pending> pending_;  // this turn's proposed splits, from propose to committed
 };
 
 }  // namespace

@@ -46,6 +46,21 @@ void BM_ExactViewMaps(benchmark::State& state) {
 }
 BENCHMARK(BM_ExactViewMaps)->Unit(benchmark::kMillisecond);
 
+// The gain in view of one candidate advance (Sec. 5.2) on the exact maps of grown Alpha: every
+// vertical face of every part, one query each (items = queries).
+void BM_GainQuery(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  std::vector<std::pair<Box, std::uint32_t>> regions;
+  for (const Unit& u : engine.units())
+    for (const Box& p : u.parts)
+      for (Side s : kVerticalSides) regions.push_back({sweptRegion(p, s, alpha().alpha), std::uint32_t(u.id)});
+  for (auto _ : state)
+    for (const auto& [r, id] : regions) benchmark::DoNotOptimize(engine.views().gain(r, id));
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(regions.size()));
+}
+BENCHMARK(BM_GainQuery)->Unit(benchmark::kMicrosecond);
+
 void BM_RasterViewMaps(benchmark::State& state) {
   GrowthEngine engine(alpha());
   engine.run(100000);

@@ -257,3 +257,35 @@ TEST(Engine, VolumeTargetsCountDoubleVolumes) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// Collide-and-extrude (Sec. 5.3, Fig. 5.3): unit 2 sits against the south half of unit 1's
+// +x face; unit 1 (free to grow only in +x) splits at the obstacle's edge and its north piece
+// extrudes past it.
+TEST(Engine, ACollidingFaceSplitsAndExtrudesPastTheObstacle) {
+  Site site = test::openSite(40, 40, 1);
+  Seed a = test::seedAt(0, 0, 0, 60, 6, 6);
+  a.locked[int(Side::NegX)] = a.locked[int(Side::NegY)] = a.locked[int(Side::PosY)] = true;
+  Seed b = test::seedAt(6, 0, 0, 9);  // 3 x 3, at its target from the start
+  site.seeds = {a, b};
+  GrowthEngine engine(site);
+  ASSERT_EQ(engine.states()[1].status, UnitStatus::Reached);
+  engine.run(1000);
+  const Unit& u = engine.units()[0];
+  ASSERT_GE(u.parts.size(), 2u);
+  bool past = false;
+  for (const Box& p : u.parts) {
+    EXPECT_FALSE(test::overlaps(p, engine.units()[1].parts[0]));
+    if (p.hi[0] > 6 + 1e-9) {
+      past = true;
+      EXPECT_GE(p.lo[1], 3 - 1e-9);  // only the free north piece went past x = 6
+    }
+  }
+  EXPECT_TRUE(past);
+  EXPECT_GT(u.floorArea(), 36);
+}
+
+}  // namespace
+}  // namespace corbel::growth
