@@ -35,7 +35,8 @@ bool wholeNumber(const std::string& s, long long lo, long long hi, long long& ou
 Scene modelScene(const growth::Site& site, const std::vector<growth::Unit>& units) {
   Scene scene;
   ObjectId id = 1;
-  for (const growth::Unit& u : units) scene.replaceObject(id++, Kind::Unit, "unit " + std::to_string(u.id), growth::unitMesh(u));
+  for (const growth::Unit& u : units)
+    scene.replaceObject(id++, Kind::Unit, "unit " + std::to_string(u.id), growth::unitMesh(u));
   auto solid = [&](const growth::Box& b, const std::string& name, const std::string& material) {
     growth::Unit u;
     u.parts = {b};
@@ -44,7 +45,8 @@ Scene modelScene(const growth::Site& site, const std::vector<growth::Unit>& unit
     for (int& f : m.faceMaterial) f = mat;
     scene.replaceObject(id++, Kind::Mass, name, m);
   };
-  for (std::size_t i = 0; i < site.cores.size(); ++i) solid(site.coreBox(i), "core " + std::to_string(i + 1), "concrete");
+  for (std::size_t i = 0; i < site.cores.size(); ++i)
+    solid(site.coreBox(i), "core " + std::to_string(i + 1), "concrete");
   for (std::size_t i = 0; i < site.circulation.size(); ++i)
     solid(site.circulation[i], "circulation " + std::to_string(i + 1), "slate");
   return scene;

@@ -8,7 +8,8 @@
 namespace corbel::growth {
 
 ConstraintEnforcer::ConstraintEnforcer(const Site& site) : site_(site) {
-  for (std::size_t i = 0; i < site.cores.size(); ++i) zones_.push_back(grownInPlan(site.coreBox(i), site.coreClearance));
+  for (std::size_t i = 0; i < site.cores.size(); ++i)
+    zones_.push_back(grownInPlan(site.coreBox(i), site.coreClearance));
   for (const Box& c : site.circulation) zones_.push_back(grownInPlan(c, site.circulationClearance));
 }
 
@@ -75,8 +76,8 @@ double ConstraintEnforcer::distanceAhead(const std::vector<Unit>& units, std::si
 }
 
 std::vector<std::pair<double, double>> ConstraintEnforcer::blockedSpans(const std::vector<Unit>& units,
-                                                                      std::size_t unit, int part, Side s,
-                                                                      double distance) const {
+                                                                        std::size_t unit, int part, Side s,
+                                                                        double distance) const {
   const Box& b = units[unit].parts[part];
   const int k = sideAxis(s), along = 1 - k;
   std::vector<std::pair<double, double>> spans;
@@ -116,7 +117,8 @@ bool ConstraintEnforcer::plausibleAs(const std::vector<Unit>& units, std::size_t
     auto fixedTo = [&](const Box& o, double clearance) {
       if (overlapLength(p.lo[2], p.hi[2], o.lo[2], o.hi[2]) <= kEps) return;
       const double reach = clearance + 10 * kEps;
-      if (planGap(fp, footprint(o)) <= reach && intersect(fp, grown(footprint(o), reach), true, x)) anchors.push_back(x);
+      if (planGap(fp, footprint(o)) <= reach && intersect(fp, grown(footprint(o), reach), true, x))
+        anchors.push_back(x);
     };
     for (std::size_t i = 0; i < site_.cores.size(); ++i) fixedTo(site_.coreBox(i), site_.coreClearance);
     for (const Box& c : site_.circulation) fixedTo(c, site_.circulationClearance);
@@ -178,14 +180,16 @@ std::vector<std::string> ConstraintEnforcer::violations(const std::vector<Unit>&
       const Box& p = u.parts[j];
       const std::string part = name + " part " + std::to_string(j);
       if (!site_.contains(p)) out.push_back(part + ": outside the envelope");
-      if (p.size(0) < kMinPartWidth - kEps || p.size(1) < kMinPartWidth - kEps) out.push_back(part + ": under 3 m x 3 m");
+      if (p.size(0) < kMinPartWidth - kEps || p.size(1) < kMinPartWidth - kEps)
+        out.push_back(part + ": under 3 m x 3 m");
       const double storeys = p.size(2) / site_.storeyHeight;
       const double lo = (p.lo[2] - site_.base) / site_.storeyHeight;
       if (std::abs(lo - std::round(lo)) > 1e-6 || std::abs(storeys - std::round(storeys)) > 1e-6 || storeys < 0.5 ||
           storeys > 2.5)
         out.push_back(part + ": not one or two whole storeys");
       for (std::size_t z = 0; z < zones_.size(); ++z)
-        if (interiorsOverlap(p, zones_[z], kEps)) out.push_back(part + ": within the clearance of a core or circulation");
+        if (interiorsOverlap(p, zones_[z], kEps))
+          out.push_back(part + ": within the clearance of a core or circulation");
       for (std::size_t k = 0; k < units.size(); ++k)
         for (std::size_t l = 0; l < units[k].parts.size(); ++l)
           if ((k > i || (k == i && l > j)) && interiorsOverlap(p, units[k].parts[l], kEps))

@@ -74,8 +74,8 @@ class ViewBehaviour : public Behaviour {
           const double least = std::max(kMinPartWidth, b.size(1 - along) / ctx.engine.options().maxAspect);
           if (b.size(along) < 2 * least) continue;
           // Look-ahead: room for 3 m even if the growing neighbours come 3 m closer meanwhile.
-          const double clearance = ctx.engine.enforcer().lookAhead(ctx.engine.units(), ctx.unit, p, side, 1e3,
-                                                                   kMinPartWidth, growing);
+          const double clearance =
+              ctx.engine.enforcer().lookAhead(ctx.engine.units(), ctx.unit, p, side, 1e3, kMinPartWidth, growing);
           if (clearance > best + kEps) {
             best = clearance;
             const double t = b.lo[along] + least + ctx.rng.uniform() * (b.size(along) - 2 * least);
@@ -277,7 +277,8 @@ void GrowthEngine::updateQuantifiers() {
 }
 
 bool GrowthEngine::done() const {
-  return std::none_of(states_.begin(), states_.end(), [](const UnitState& s) { return s.status == UnitStatus::Growing; });
+  return std::none_of(states_.begin(), states_.end(),
+                      [](const UnitState& s) { return s.status == UnitStatus::Growing; });
 }
 
 bool GrowthEngine::step() {

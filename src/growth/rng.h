@@ -15,7 +15,7 @@ class Rng {
     return z ^ (z >> 31);
   }
   double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-  int below(int n) { return int(uniform() * n); }                 // [0, n)
+  int below(int n) { return int(uniform() * n); }                // [0, n)
 
  private:
   std::uint64_t s_;

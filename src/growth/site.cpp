@@ -73,8 +73,10 @@ bool segmentCrossesInterior(const Vec2& a, const Vec2& b, const Rect& r) {
         if (q <= 0) return false;  // parallel and outside (or on) this slab's boundary
       } else {
         const double t = q / p;
-        if (p < 0) t0 = std::max(t0, t);
-        else t1 = std::min(t1, t);
+        if (p < 0)
+          t0 = std::max(t0, t);
+        else
+          t1 = std::min(t1, t);
       }
     }
   }
@@ -111,9 +113,9 @@ void validateSite(const Site& site) {
   finite("alpha", site.alpha);
   if (site.alpha < kMinAlpha || site.alpha > kMaxAlpha)
     bad("alpha", "Face Advance distance must lie in [0.2, 0.5] m (Sec. 5.1)");
-  for (auto [name, v] : {std::pair{"clearance.core", site.coreClearance},
-                         std::pair{"clearance.circulation", site.circulationClearance},
-                         std::pair{"cantilever", site.cantilever}}) {
+  for (auto [name, v] :
+       {std::pair{"clearance.core", site.coreClearance}, std::pair{"clearance.circulation", site.circulationClearance},
+        std::pair{"cantilever", site.cantilever}}) {
     finite(name, v);
     if (v < 0) bad(name, "must not be negative");
   }

@@ -11,11 +11,11 @@
 namespace corbel::growth {
 
 struct Seed {
-  Vec2 at{0.0};             // plan corner with the least x and y
-  Vec2 size{3.0, 3.0};      // plan size, at least 3 m × 3 m
-  int storey = 0;           // 0 = ground storey
-  double targetArea = 0;    // floor area to reach (m²), or
-  double targetVolume = 0;  // volume to reach (m³): exactly one of the two is positive
+  Vec2 at{0.0};                  // plan corner with the least x and y
+  Vec2 size{3.0, 3.0};           // plan size, at least 3 m × 3 m
+  int storey = 0;                // 0 = ground storey
+  double targetArea = 0;         // floor area to reach (m²), or
+  double targetVolume = 0;       // volume to reach (m³): exactly one of the two is positive
   std::array<bool, 6> locked{};  // by Side: faces of that orientation never advance
   std::string behaviour = "view";
 };

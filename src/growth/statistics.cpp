@@ -20,8 +20,10 @@ namespace {
 // Length along which plan rectangles a and b share a boundary (0 unless they touch).
 double sharedBoundary(const Rect& a, const Rect& b) {
   double s = 0;
-  if (std::abs(a.u1 - b.u0) <= kEps || std::abs(b.u1 - a.u0) <= kEps) s = std::max(s, overlapLength(a.v0, a.v1, b.v0, b.v1));
-  if (std::abs(a.v1 - b.v0) <= kEps || std::abs(b.v1 - a.v0) <= kEps) s = std::max(s, overlapLength(a.u0, a.u1, b.u0, b.u1));
+  if (std::abs(a.u1 - b.u0) <= kEps || std::abs(b.u1 - a.u0) <= kEps)
+    s = std::max(s, overlapLength(a.v0, a.v1, b.v0, b.v1));
+  if (std::abs(a.v1 - b.v0) <= kEps || std::abs(b.v1 - a.v0) <= kEps)
+    s = std::max(s, overlapLength(a.u0, a.u1, b.u0, b.u1));
   return s;
 }
 

@@ -49,8 +49,10 @@ void applyMove(Unit& u, const Move& m) {
   Box& b = u.parts[m.part];
   if (m.type == Move::Type::Advance) {
     const int k = sideAxis(m.side);
-    if (sideSign(m.side) > 0) b.hi[k] += m.distance;
-    else b.lo[k] -= m.distance;
+    if (sideSign(m.side) > 0)
+      b.hi[k] += m.distance;
+    else
+      b.lo[k] -= m.distance;
     return;
   }
   Box high = b;
@@ -104,15 +106,21 @@ MeshData unitMesh(const Unit& u) {
       for (int i = 0; i < n[0]; ++i) {
         if (!cell(i, j, l)) continue;
         // Each exposed side as a quad, counter-clockwise seen from outside.
-        if (!cell(i - 1, j, l)) mesh.addFace({point(i, j, l), point(i, j, l + 1), point(i, j + 1, l + 1), point(i, j + 1, l)}, wall);
+        if (!cell(i - 1, j, l))
+          mesh.addFace({point(i, j, l), point(i, j, l + 1), point(i, j + 1, l + 1), point(i, j + 1, l)}, wall);
         if (!cell(i + 1, j, l))
-          mesh.addFace({point(i + 1, j, l), point(i + 1, j + 1, l), point(i + 1, j + 1, l + 1), point(i + 1, j, l + 1)}, wall);
-        if (!cell(i, j - 1, l)) mesh.addFace({point(i, j, l), point(i + 1, j, l), point(i + 1, j, l + 1), point(i, j, l + 1)}, wall);
+          mesh.addFace({point(i + 1, j, l), point(i + 1, j + 1, l), point(i + 1, j + 1, l + 1), point(i + 1, j, l + 1)},
+                       wall);
+        if (!cell(i, j - 1, l))
+          mesh.addFace({point(i, j, l), point(i + 1, j, l), point(i + 1, j, l + 1), point(i, j, l + 1)}, wall);
         if (!cell(i, j + 1, l))
-          mesh.addFace({point(i, j + 1, l), point(i, j + 1, l + 1), point(i + 1, j + 1, l + 1), point(i + 1, j + 1, l)}, wall);
-        if (!cell(i, j, l - 1)) mesh.addFace({point(i, j, l), point(i, j + 1, l), point(i + 1, j + 1, l), point(i + 1, j, l)}, floor);
+          mesh.addFace({point(i, j + 1, l), point(i, j + 1, l + 1), point(i + 1, j + 1, l + 1), point(i + 1, j + 1, l)},
+                       wall);
+        if (!cell(i, j, l - 1))
+          mesh.addFace({point(i, j, l), point(i, j + 1, l), point(i + 1, j + 1, l), point(i + 1, j, l)}, floor);
         if (!cell(i, j, l + 1))
-          mesh.addFace({point(i, j, l + 1), point(i + 1, j, l + 1), point(i + 1, j + 1, l + 1), point(i, j + 1, l + 1)}, roof);
+          mesh.addFace({point(i, j, l + 1), point(i + 1, j, l + 1), point(i + 1, j + 1, l + 1), point(i, j + 1, l + 1)},
+                       roof);
       }
   return mesh;
 }

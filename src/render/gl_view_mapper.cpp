@@ -106,7 +106,8 @@ growth::ViewMaps GlViewMapper::render(const std::vector<growth::ViewBox>& boxes,
       const double s = growth::frontDepth(boxes[k].box, d);
       const float z = float(std::clamp(-1 + 2 * (nearS - s) / std::max(nearS - farS, 1e-9), -1.0, 1.0));
       const std::uint32_t id = std::uint32_t(k + 1);
-      const std::uint8_t b[4] = {std::uint8_t(id), std::uint8_t(id >> 8), std::uint8_t(id >> 16), std::uint8_t(id >> 24)};
+      const std::uint8_t b[4] = {std::uint8_t(id), std::uint8_t(id >> 8), std::uint8_t(id >> 16),
+                                 std::uint8_t(id >> 24)};
       auto x = [&](double u) { return float(-1 + 2 * (u - f.u0) / w); };
       auto y = [&](double v) { return float(-1 + 2 * (v - f.v0) / h); };
       const Vertex q[4] = {{x(r.u0), y(r.v0), z, {b[0], b[1], b[2], b[3]}},
@@ -160,8 +161,8 @@ growth::ViewMaps GlViewMapper::render(const std::vector<growth::ViewBox>& boxes,
     for (int j = 0; j < rows; ++j)
       for (int i = 0; i < cols; ++i) {
         const std::uint8_t* p = &pixels[(std::size_t(j) * cols + i) * 4];
-        const std::uint32_t k = std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
-                                std::uint32_t(p[3]) << 24;
+        const std::uint32_t k =
+            std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
         if (k == 0 || k > boxes.size()) continue;
         m.offer(i, j, boxes[k - 1].id, growth::frontDepth(boxes[k - 1].box, d));
       }

@@ -51,8 +51,10 @@ TEST(GrowCli, AlphaGrowsToCompletionWithConsistentStatistics) {
   std::string line;
   int units = 0, others = 0;
   while (std::getline(in, line))
-    if (line.rfind("o unit ", 0) == 0) ++units;
-    else if (line.rfind("o ", 0) == 0) ++others;
+    if (line.rfind("o unit ", 0) == 0)
+      ++units;
+    else if (line.rfind("o ", 0) == 0)
+      ++others;
   EXPECT_EQ(units, 72);
   EXPECT_EQ(others, 4 + 40);
 }

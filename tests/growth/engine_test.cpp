@@ -1,7 +1,7 @@
 // The growth loop (Fig. 4.1–4.2): reproducible for a seed, constraints after every committed
 // move (checked independently of the enforcer), per-unit termination, bad setups refused.
-#include "core/error.h"
 #include "growth/engine.h"
+#include "core/error.h"
 #include "support.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The GL view mapper (OSMesa) against the exact CPU mapper and the CPU rasterizer.
-#include "growth/engine.h"
 #include "render/gl_view_mapper.h"
+#include "growth/engine.h"
 #include "render/headless_context.h"
 #include "support.h"
 
@@ -12,9 +12,8 @@ namespace {
 using test::box;
 
 std::vector<ViewBox> scene() {
-  return {{box(10, 10, 0, 16, 14, 3), 1},   {box(20, 10, 0, 26, 14, 6), 2},
-          {box(2, 20, 0, 5, 26, 3), 3},     {box(10, 23, 0, 12, 30, 3), kObstacleId},
-          {box(30, 30, 0, 36, 34, 3), 5},   {box(30, 30, 3, 36, 34, 6), 6},
+  return {{box(10, 10, 0, 16, 14, 3), 1},           {box(20, 10, 0, 26, 14, 6), 2}, {box(2, 20, 0, 5, 26, 3), 3},
+          {box(10, 23, 0, 12, 30, 3), kObstacleId}, {box(30, 30, 0, 36, 34, 3), 5}, {box(30, 30, 3, 36, 34, 6), 6},
           {box(7.3, 3.1, 3, 13.9, 7.7, 6), 7}};  // off the 0.5 m grid
 }
 const Box kFrame = box(0, 0, 0, 40, 40, 9);

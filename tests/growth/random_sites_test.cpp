@@ -40,7 +40,8 @@ Site randomSite(Rng& rng) {
     Seed seed = test::seedAt(rng.uniform() * (w - 4), rng.uniform() * (d - 4), rng.below(s.storeys),
                              20 + 80 * rng.uniform(), 3 + rng.uniform(), 3 + rng.uniform());
     if (tidy && seed.storey > 0) {
-      if (s.circulation.empty()) seed.storey = 0;
+      if (s.circulation.empty())
+        seed.storey = 0;
       else {
         const Box& c = s.circulation[rng.below(int(s.circulation.size()))];
         seed.at = Vec2(c.hi[0], c.lo[1]);

@@ -1,6 +1,6 @@
 // Sites: the JSON of docs/growth.md and the errors a bad site gets.
-#include "core/error.h"
 #include "growth/site.h"
+#include "core/error.h"
 #include "support.h"
 
 #include <gtest/gtest.h>
@@ -67,13 +67,14 @@ TEST(Site, UnknownKeysAreWarnings) {
 
 TEST(Site, BadSitesNameTheField) {
   std::string where;
-  EXPECT_NE(errorWith("\"at\": [2, 2]", "\"at\": [38, 2]", &where).find("outside the site envelope"), std::string::npos);
+  EXPECT_NE(errorWith("\"at\": [2, 2]", "\"at\": [38, 2]", &where).find("outside the site envelope"),
+            std::string::npos);
   EXPECT_EQ(where, "seeds[1].at");
   EXPECT_NE(errorWith("\"storey\": 1", "\"storey\": 3", &where).find("0..2"), std::string::npos);
   EXPECT_EQ(where, "seeds[1].storey");
-  const std::string overlap = errorWith("\"cores\": [{\"at\": [10, 10], \"size\": [4, 4]}]",
-                                        "\"cores\": [{\"at\": [10, 10], \"size\": [4, 4]}, {\"at\": [12, 12], \"size\": [4, 4]}]",
-                                        &where);
+  const std::string overlap =
+      errorWith("\"cores\": [{\"at\": [10, 10], \"size\": [4, 4]}]",
+                "\"cores\": [{\"at\": [10, 10], \"size\": [4, 4]}, {\"at\": [12, 12], \"size\": [4, 4]}]", &where);
   EXPECT_NE(overlap.find("overlaps cores[0]"), std::string::npos) << overlap;
   EXPECT_EQ(where, "cores[1]");
   errorWith("\"size\": [4, 3]", "\"size\": [4, -3]", &where);
@@ -81,10 +82,12 @@ TEST(Site, BadSitesNameTheField) {
   EXPECT_NE(errorWith("\"size\": [4, 3]", "\"size\": [2.5, 3]", &where).find("3 m x 3 m"), std::string::npos);
   EXPECT_NE(errorWith("\"alpha\": 0.4", "\"alpha\": 0.6", &where).find("[0.2, 0.5]"), std::string::npos);
   EXPECT_EQ(where, "alpha");
-  EXPECT_NE(errorWith("\"at\": [20, 11]", "\"at\": [14.5, 14.2]", &where).find("clearance of cores[0]"), std::string::npos);
+  EXPECT_NE(errorWith("\"at\": [20, 11]", "\"at\": [14.5, 14.2]", &where).find("clearance of cores[0]"),
+            std::string::npos);
   EXPECT_NE(errorWith("\"target_area\": 60", "\"target_area\": 60, \"target_volume\": 9", &where).find("exactly one"),
             std::string::npos);
-  EXPECT_NE(errorWith("\"locked\": [\"+x\", \"top\"]", "\"locked\": [\"north\"]", &where).find("-x, +x"), std::string::npos);
+  EXPECT_NE(errorWith("\"locked\": [\"+x\", \"top\"]", "\"locked\": [\"north\"]", &where).find("-x, +x"),
+            std::string::npos);
   EXPECT_EQ(where, "seeds[0].locked[0]");
   EXPECT_NE(errorWith("\"storey_height\": 3.2", "\"storey_height\": \"tall\"", &where).find("expected a number"),
             std::string::npos);
@@ -111,7 +114,7 @@ TEST(Site, PolygonEnvelopeContainsOnlyWhatIsInside) {
   Site s = test::openSite(1, 1, 1);
   s.plan = {Vec2(0, 0), Vec2(20, 0), Vec2(20, 10), Vec2(10, 10), Vec2(10, 20), Vec2(0, 20)};
   EXPECT_DOUBLE_EQ(s.area(), 300.0);
-  EXPECT_TRUE(s.planContains({0, 0, 20, 10}));   // touching the boundary counts as inside
+  EXPECT_TRUE(s.planContains({0, 0, 20, 10}));  // touching the boundary counts as inside
   EXPECT_TRUE(s.planContains({2, 2, 10, 18}));
   EXPECT_FALSE(s.planContains({9, 9, 12, 12}));  // reaches into the missing corner
   EXPECT_FALSE(s.planContains({12, 12, 15, 15}));

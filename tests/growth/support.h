@@ -19,7 +19,9 @@ inline Site openSite(double w, double d, int storeys) {
   return s;
 }
 
-inline Box box(double x0, double y0, double z0, double x1, double y1, double z1) { return {{x0, y0, z0}, {x1, y1, z1}}; }
+inline Box box(double x0, double y0, double z0, double x1, double y1, double z1) {
+  return {{x0, y0, z0}, {x1, y1, z1}};
+}
 
 inline Unit unitOf(int id, std::vector<Box> parts) {
   Unit u;
@@ -110,7 +112,8 @@ inline std::vector<std::string> independentViolations(const Site& site, const st
       for (std::size_t c = 0; c < site.cores.size(); ++c)
         if (gapInPlan(p, site.coreBox(c)) < site.coreClearance - 1e-6) out.push_back(part + " too near a core");
       for (const Box& c : site.circulation)
-        if (gapInPlan(p, c) < site.circulationClearance - 1e-6 || overlaps(p, c)) out.push_back(part + " too near circulation");
+        if (gapInPlan(p, c) < site.circulationClearance - 1e-6 || overlaps(p, c))
+          out.push_back(part + " too near circulation");
       for (std::size_t k = i; k < units.size(); ++k)
         for (std::size_t l = (k == i ? j + 1 : 0); l < units[k].parts.size(); ++l)
           if (overlaps(p, units[k].parts[l])) out.push_back(part + " overlaps unit " + std::to_string(units[k].id));

@@ -1,6 +1,6 @@
 // Units and the shape operators (Sec. 5.1) against hand-computed volumes and closed shells.
-#include "core/scene.h"
 #include "growth/unit.h"
+#include "core/scene.h"
 #include "support.h"
 
 #include <gtest/gtest.h>
@@ -62,8 +62,8 @@ TEST(Unit, MeshOfAnLShapedUnitIsClosedWithTheRightVolumeAndArea) {
 
 TEST(Unit, DoubleVolumeMeshIsClosed) {
   Unit u = oneBox();
-  applyMove(u, Move::split(0, 1, 3));               // [0,6]x[0,3] and [0,6]x[3,4]... pieces
-  applyMove(u, Move::advance(0, Side::Top, 3));     // part 0 two storeys
+  applyMove(u, Move::split(0, 1, 3));            // [0,6]x[0,3] and [0,6]x[3,4]... pieces
+  applyMove(u, Move::advance(0, Side::Top, 3));  // part 0 two storeys
   Scene scene;
   scene.replaceObject(1, Kind::Unit, "unit", unitMesh(u));
   const ValidityReport r = scene.validate(1);

@@ -35,22 +35,17 @@ struct Expected {
 
 // Each value from the scene's geometry: face size minus what lies in front of it.
 const std::vector<Expected> kExpected = {
-    {1, D::PosX, 0.0},    // unit 2 (y 10..14, z 0..6) covers the whole 4 x 3 face
-    {1, D::NegX, 12.0},   // 4 x 3, nothing west in y 10..14
-    {1, D::PosY, 12.0},   // 6 x 3 minus the obstacle's x 10..12 north of it
-    {1, D::NegY, 18.0},   // 6 x 3
-    {2, D::PosX, 24.0},   // 4 x 6
-    {2, D::NegX, 12.0},   // 4 x 6 minus unit 1's 4 x 3 in front
-    {2, D::PosY, 36.0},   // 6 x 6
-    {2, D::NegY, 36.0},
-    {3, D::PosX, 9.0},    // 6 x 3 face, the obstacle covers y 23..26: half
-    {3, D::NegX, 18.0},
-    {3, D::PosY, 9.0},    // 3 x 3
-    {3, D::NegY, 9.0},
-    {5, D::PosX, 12.0},   // stacking hides no vertical face
-    {6, D::PosX, 12.0},
-    {5, D::NegY, 18.0},
-    {6, D::PosY, 18.0},
+    {1, D::PosX, 0.0},                       // unit 2 (y 10..14, z 0..6) covers the whole 4 x 3 face
+    {1, D::NegX, 12.0},                      // 4 x 3, nothing west in y 10..14
+    {1, D::PosY, 12.0},                      // 6 x 3 minus the obstacle's x 10..12 north of it
+    {1, D::NegY, 18.0},                      // 6 x 3
+    {2, D::PosX, 24.0},                      // 4 x 6
+    {2, D::NegX, 12.0},                      // 4 x 6 minus unit 1's 4 x 3 in front
+    {2, D::PosY, 36.0},                      // 6 x 6
+    {2, D::NegY, 36.0}, {3, D::PosX, 9.0},   // 6 x 3 face, the obstacle covers y 23..26: half
+    {3, D::NegX, 18.0}, {3, D::PosY, 9.0},   // 3 x 3
+    {3, D::NegY, 9.0},  {5, D::PosX, 12.0},  // stacking hides no vertical face
+    {6, D::PosX, 12.0}, {5, D::NegY, 18.0}, {6, D::PosY, 18.0},
 };
 
 TEST(ViewMap, ExactMapperGivesHandComputedVisibleAreas) {
