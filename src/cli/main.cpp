@@ -1,4 +1,5 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs, grow). Thin: parse, call, report.
+#include "cli/grow.h"
 #include "cli/kifs_command.h"
 #include "cli/number_list.h"
 #include "core/atomic_file.h"
@@ -59,6 +60,9 @@ usage:
                     Prints y/W² and the solver status; --optimize searches the free
                     parameters (the example's own when no --free) until it stands (Sec. 4)
                     and prints the status (feasible or local minimum), iterations, values.
+  corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
+                    [--view-maps exact|raster|gl] [--pixel M]
+                    Grows housing units on a site (docs/growth.md); prints one JSON line.
 )";
 constexpr const char* kUsageEnd = R"(  corbel-cli --version | --help
 
@@ -405,6 +409,7 @@ int main(int argc, char** argv) {
                                                {"--merge-coplanar", false}}));
     if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics") return cli::runStatics(argc, argv);
+    if (cmd == "grow") return corbel::cli::grow(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";

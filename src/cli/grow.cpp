@@ -1,0 +1,204 @@
+// corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
+#include "cli/grow.h"
+
+#include "core/error.h"
+#include "core/export.h"
+#include "core/scene.h"
+#include "growth/engine.h"
+#include "growth/statistics.h"
+#include "render/gl_view_mapper.h"
+#include "render/headless_context.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace corbel::cli {
+
+namespace {
+
+constexpr const char* kGrowUsage =
+    "usage: corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE.{obj,ply,off,glb}] "
+    "[--render PNG] [--view-maps exact|raster|gl] [--pixel M]\n";
+
+bool wholeNumber(const std::string& s, long long lo, long long hi, long long& out) {
+  char* end = nullptr;
+  out = std::strtoll(s.c_str(), &end, 10);
+  return !s.empty() && *end == '\0' && out >= lo && out <= hi;
+}
+
+// Units (kind unit), cores and circulation (kind mass) as Scene objects.
+Scene modelScene(const growth::Site& site, const std::vector<growth::Unit>& units) {
+  Scene scene;
+  ObjectId id = 1;
+  for (const growth::Unit& u : units)
+    scene.replaceObject(id++, Kind::Unit, "unit " + std::to_string(u.id), growth::unitMesh(u));
+  auto solid = [&](const growth::Box& b, const std::string& name, const std::string& material) {
+    growth::Unit u;
+    u.parts = {b};
+    MeshData m = growth::unitMesh(u);
+    const int mat = m.addMaterial(material);
+    for (int& f : m.faceMaterial) f = mat;
+    scene.replaceObject(id++, Kind::Mass, name, m);
+  };
+  for (std::size_t i = 0; i < site.cores.size(); ++i)
+    solid(site.coreBox(i), "core " + std::to_string(i + 1), "concrete");
+  for (std::size_t i = 0; i < site.circulation.size(); ++i)
+    solid(site.circulation[i], "circulation " + std::to_string(i + 1), "slate");
+  return scene;
+}
+
+nlohmann::ordered_json statisticsJson(const growth::Statistics& st) {
+  nlohmann::ordered_json j;
+  j["site_area"] = st.siteArea;
+  j["storeys"] = st.storeys;
+  j["units"] = st.units;
+  j["occupants"] = st.occupants;
+  j["occupancy_ratio"] = st.occupancyRatio;
+  j["type_a"] = st.typeA;
+  j["type_b"] = st.typeB;
+  j["type_c"] = st.typeC;
+  j["unclassified"] = st.unclassified;
+  j["average_view"] = st.averageView;
+  j["two_views"] = st.twoViews;
+  j["three_views"] = st.threeViews;
+  j["four_views"] = st.fourViews;
+  j["average_floor_area"] = st.averageFloorArea;
+  j["double_volume"] = st.doubleVolume;
+  j["outdoor_space"] = st.outdoorSpace;
+  return j;
+}
+
+}  // namespace
+
+int grow(int argc, char** argv) {
+  std::string sitePath, out, png, maps = "exact";
+  double pixel = 0.1;
+  long long seed = 1, steps = 100000;
+  bool stats = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::cerr << "corbel-cli: grow: " << a << " needs a value\n" << kGrowUsage;
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--seed" || a == "--steps") {
+      const std::string v = value();
+      long long& target = a == "--seed" ? seed : steps;
+      if (!wholeNumber(v, 0, a == "--seed" ? (1ll << 62) : 100000000ll, target)) {
+        std::cerr << "corbel-cli: grow: " << a << ": expected a whole number, not '" << v << "'\n";
+        return 2;
+      }
+    } else if (a == "--view-maps") {
+      maps = value();
+      if (maps != "exact" && maps != "raster" && maps != "gl") {
+        std::cerr << "corbel-cli: grow: --view-maps: expected exact, raster or gl\n";
+        return 2;
+      }
+    } else if (a == "--pixel") {
+      const std::string v = value();
+      char* end = nullptr;
+      pixel = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !(pixel >= 0.01 && pixel <= 10)) {
+        std::cerr << "corbel-cli: grow: --pixel: expected meters in [0.01, 10], not '" << v << "'\n";
+        return 2;
+      }
+    } else if (a == "--stats") {
+      stats = true;
+    } else if (a == "--out") {
+      out = value();
+    } else if (a == "--render") {
+      png = value();
+    } else if (a.rfind("--", 0) == 0 || !sitePath.empty()) {
+      std::cerr << "corbel-cli: grow: unexpected argument " << a << "\n" << kGrowUsage;
+      return 2;
+    } else {
+      sitePath = a;
+    }
+  }
+  if (sitePath.empty()) {
+    std::cerr << "corbel-cli: grow: expected one SITE.json\n" << kGrowUsage;
+    return 2;
+  }
+  if (!out.empty()) {
+    try {
+      exportFormatFor(out);
+    } catch (const Error& e) {
+      std::cerr << "corbel-cli: grow: " << e.what() << "\n";
+      return 2;
+    }
+  }
+
+  std::vector<std::string> warnings;
+  const growth::Site site = growth::loadSite(sitePath, &warnings);
+  for (const auto& w : warnings) std::cerr << "corbel-cli: warning: " << sitePath << ": " << w << "\n";
+  growth::GrowthOptions options;
+  options.seed = std::uint64_t(seed);
+  // View maps: exact (default), the CPU rasterizer, or GL through OSMesa, at `pixel` meters.
+  std::unique_ptr<render::HeadlessContext> context;
+  std::unique_ptr<growth::ViewMapper> mapper;
+  if (maps == "gl") {
+    context = std::make_unique<render::HeadlessContext>();
+    mapper = std::make_unique<render::GlViewMapper>(pixel);
+  } else if (maps == "raster") {
+    mapper = std::make_unique<growth::RasterViewMapper>(pixel);
+  } else {
+    mapper = std::make_unique<growth::ExactViewMapper>();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  growth::GrowthEngine engine(site, options, mapper.get());
+  const int ran = engine.run(int(steps));
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const std::vector<growth::Unit> units = engine.units();
+  int reached = 0, stuck = 0;
+  for (const auto& s : engine.states()) {
+    reached += s.status == growth::UnitStatus::Reached;
+    stuck += s.status == growth::UnitStatus::Stuck;
+  }
+  const std::vector<std::string> violations = engine.enforcer().violations(units);
+
+  nlohmann::ordered_json j;
+  j["site"] = sitePath;
+  j["seed"] = seed;
+  j["steps"] = ran;
+  j["moves"] = engine.commits();
+  j["finished"] = engine.done();
+  j["reached"] = reached;
+  j["stuck"] = stuck;
+  j["constraints_hold"] = violations.empty();
+  j["view_maps"] = maps;
+  j["grow_ms"] = ms;
+  if (stats) j["statistics"] = statisticsJson(growth::computeStatistics(site, units, engine.views()));
+
+  if (!out.empty() || !png.empty()) {
+    const Scene scene = modelScene(site, units);
+    if (!out.empty()) {
+      exportScene(scene, out);
+      j["out"] = out;
+    }
+    if (!png.empty()) {
+      if (!context) context = std::make_unique<render::HeadlessContext>();
+      render::Renderer renderer;
+      render::OrbitCamera camera;
+      camera.frame(scene.bounds(), 1200.0 / 800.0);
+      camera.azimuth_deg = -75;
+      camera.elevation_deg = 30;
+      camera.distance *= 0.95;
+      render::RenderSettings settings;
+      render::writePng(render::renderImage(renderer, scene, camera, 1200, 800, settings), png);
+      j["render"] = png;
+    }
+  }
+  std::cout << j.dump() << "\n";
+  for (const auto& v : violations) std::cerr << "corbel-cli: grow: constraint violated: " << v << "\n";
+  return violations.empty() ? 0 : 1;
+}
+
+}  // namespace corbel::cli

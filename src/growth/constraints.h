@@ -1,0 +1,66 @@
+#pragma once
+// The constraint enforcer (Ch. 4.1): only moves it passes are committed.
+//
+// Constraints on every unit, after every committed move:
+// - site: inside the envelope, on storey levels;
+// - structural: a plan gap of at least the site's clearance from cores and circulation
+//   (measured L∞ in plan, where the vertical extents overlap);
+// - no overlap with other units (nor between a unit's own parts);
+// - shape: parts at least 3 m × 3 m, one or two storeys high, a unit spanning at most two
+//   storeys (double volume, Sec. 5.3), at most kMaxParts parts;
+// - physical plausibility: every point of the unit's plan lies within the site's cantilever
+//   limit (L∞) of its supports. Supports are the ground, the tops of other units' parts and
+//   of circulation under a part's floor, and the sides of cores and circulation the unit is
+//   fixed to (a part at most its clearance away from one, over a shared storey).
+//
+// Advances that would run into an obstacle are trimmed to stop at it (when at least
+// kMinAdvance remains): the collide behaviour of Sec. 5.3 in its straightforward form.
+#include "growth/site.h"
+#include "growth/unit.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace corbel::growth {
+
+struct Verdict {
+  bool ok = false;
+  Move move;           // the move to commit (an advance may be trimmed)
+  std::string reason;  // why not, when !ok
+};
+
+class ConstraintEnforcer {
+ public:
+  explicit ConstraintEnforcer(const Site& site);
+
+  Verdict check(const std::vector<Unit>& units, std::size_t unit, const Move& m) const;
+  // Look-ahead clearance query (Sec. 5.3): how far side s of the part can advance, up to
+  // `limit`, before it meets the envelope, a clearance zone, or any unit.
+  double freeDistance(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit) const;
+  // Look-ahead with the conservative estimate of Sec. 5.3: the free distance if every other
+  // unit marked in `growing` had already advanced every side of its parts by `reach` in plan
+  // (what it can take within reach / α steps).
+  double lookAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit, double reach,
+                   const std::vector<bool>& growing) const;
+  // Collide (Sec. 5.3): the spans, along side s of the part, of every obstacle (envelope
+  // excluded) that lies in front of it closer than `distance`.
+  std::vector<std::pair<double, double>> blockedSpans(const std::vector<Unit>& units, std::size_t unit, int part,
+                                                      Side s, double distance) const;
+  // Physical plausibility of one unit among the others.
+  bool plausible(const std::vector<Unit>& units, std::size_t unit) const;
+  // Every constraint above over a whole configuration; one sentence per violation.
+  std::vector<std::string> violations(const std::vector<Unit>& units) const;
+
+  const Site& site() const { return site_; }
+
+ private:
+  // Plausibility of `u` standing in for units[unit].
+  bool plausibleAs(const std::vector<Unit>& units, std::size_t unit, const Unit& u) const;
+  double distanceAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit, double reach,
+                       const std::vector<bool>* growing) const;
+  const Site& site_;
+  std::vector<Box> zones_;  // cores and circulation grown by their clearances
+};
+
+}  // namespace corbel::growth

@@ -1,0 +1,62 @@
+#pragma once
+// The site of a growth run (Ch. 3.1, Ch. 4): the envelope units must stay in, the storeys,
+// the cores (full-height shafts), the circulation (stairs, corridors), and the seed units
+// placed at exits along the circulation with their targets, behaviours and locked faces.
+#include "growth/box.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace corbel::growth {
+
+struct Seed {
+  Vec2 at{0.0};                  // plan corner with the least x and y
+  Vec2 size{3.0, 3.0};           // plan size, at least 3 m × 3 m
+  int storey = 0;                // 0 = ground storey
+  double targetArea = 0;         // floor area to reach (m²), or
+  double targetVolume = 0;       // volume to reach (m³): exactly one of the two is positive
+  std::array<bool, 6> locked{};  // by Side: faces of that orientation never advance
+  std::string behaviour = "view";
+};
+
+struct Site {
+  // Envelope: an extruded simple polygon (plan, meters) from `base` up `storeys` storeys.
+  // A box envelope is its rectangle.
+  std::vector<Vec2> plan;
+  double base = 0;
+  double storeyHeight = 3.0;
+  int storeys = 1;
+  std::vector<Rect> cores;       // plan rectangles (u = x, v = y), full height
+  std::vector<Box> circulation;  // staircases, corridors, landings
+  std::vector<Seed> seeds;
+  double coreClearance = 1.0;         // least plan gap (L∞) between a unit and a core
+  double circulationClearance = 0.0;  // ... and circulation (0: units may touch it)
+  double cantilever = 4.0;            // the farthest a unit reaches beyond its supports
+  double alpha = 0.3;                 // Face Advance distance α (Sec. 5.1)
+
+  double top() const { return base + storeys * storeyHeight; }
+  Box coreBox(std::size_t i) const { return {{cores[i].u0, cores[i].v0, base}, {cores[i].u1, cores[i].v1, top()}}; }
+  Box seedBox(std::size_t i) const;
+  // The bounding box of the envelope.
+  Box bounds() const;
+  // Whether the plan rectangle lies inside the envelope polygon (boundary included).
+  bool planContains(const Rect& r) const;
+  // Whether the box lies inside the envelope.
+  bool contains(const Box& b) const;
+  // Site area: the envelope plan's area (Table 8.1).
+  double area() const;
+};
+
+// A site from its rectangle: plan = [x0, x1] × [y0, y1].
+std::vector<Vec2> rectanglePlan(double x0, double y0, double x1, double y1);
+
+// Throws InputError naming the first bad field ("seeds[3].at: outside the site envelope",
+// "cores[1]: overlaps cores[0]", "storey_height: must be positive", NaN anywhere).
+void validateSite(const Site& site);
+
+// Parses the site JSON of docs/growth.md and validates it. `warnings` gets unknown keys.
+Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings = nullptr);
+Site loadSite(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace corbel::growth

@@ -1,0 +1,101 @@
+// The site file of docs/growth.md → Site.
+#include "core/atomic_file.h"
+#include "core/json_reader.h"
+#include "growth/site.h"
+
+namespace corbel::growth {
+
+namespace {
+
+void warnUnknown(const JsonReader& r, const std::set<std::string>& known, std::vector<std::string>* warnings) {
+  if (!warnings) return;
+  for (auto& k : r.unknownKeys(known)) warnings->push_back(k + ": unknown key ignored");
+}
+
+Vec2 positiveSize(const JsonReader& r) {
+  const Vec2 v = r.vec2();
+  if (!(v[0] > 0 && v[1] > 0)) r.fail("sizes must be positive");
+  return v;
+}
+
+}  // namespace
+
+Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) {
+  const nlohmann::json j = parseJsonText(jsonText);
+  const JsonReader root(j, "");
+  root.expectObject();
+  warnUnknown(root,
+              {"format", "version", "envelope", "base", "storeys", "storey_height", "alpha", "cantilever", "clearance",
+               "cores", "circulation", "seeds", "name"},
+              warnings);
+  if (auto f = root.find("format"); f && f->string(64) != "corbel-growth-site")
+    f->fail("expected \"corbel-growth-site\"");
+  if (auto v = root.find("version"); v && v->integer(1, 1000) > 1) v->fail("this build reads version 1 site files");
+
+  Site site;
+  const JsonReader env = root.at("envelope");
+  warnUnknown(env, {"origin", "size", "polygon"}, warnings);
+  if (auto poly = env.find("polygon")) {
+    for (const JsonReader& p : poly->array(10000)) site.plan.push_back(p.vec2());
+    if (site.plan.size() < 3) poly->fail("needs at least 3 corners");
+  } else {
+    const Vec2 o = env.find("origin") ? env.at("origin").vec2() : Vec2(0.0);
+    const Vec2 s = positiveSize(env.at("size"));
+    site.plan = rectanglePlan(o[0], o[1], o[0] + s[0], o[1] + s[1]);
+  }
+  if (auto b = root.find("base")) site.base = b->number();
+  site.storeys = int(root.at("storeys").integer(1, 1000));
+  if (auto h = root.find("storey_height")) site.storeyHeight = h->number(1e-3, 100);
+  if (auto a = root.find("alpha")) site.alpha = a->number();
+  if (auto c = root.find("cantilever")) site.cantilever = c->number();
+  if (auto c = root.find("clearance")) {
+    warnUnknown(*c, {"core", "circulation"}, warnings);
+    if (auto k = c->find("core")) site.coreClearance = k->number();
+    if (auto k = c->find("circulation")) site.circulationClearance = k->number();
+  }
+  if (auto cores = root.find("cores"))
+    for (const JsonReader& c : cores->array(100000)) {
+      warnUnknown(c, {"at", "size", "name"}, warnings);
+      const Vec2 at = c.at("at").vec2();
+      const Vec2 size = positiveSize(c.at("size"));
+      site.cores.push_back({at[0], at[1], at[0] + size[0], at[1] + size[1]});
+    }
+  if (auto circ = root.find("circulation"))
+    for (const JsonReader& c : circ->array(100000)) {
+      warnUnknown(c, {"at", "size", "name"}, warnings);
+      const Vec3 at = c.at("at").vec3();
+      const Vec3 size = c.at("size").vec3();
+      if (!(size[0] > 0 && size[1] > 0 && size[2] > 0)) c.at("size").fail("sizes must be positive");
+      site.circulation.push_back({at, at + size});
+    }
+  for (const JsonReader& s : root.at("seeds").array(100000)) {
+    warnUnknown(s, {"at", "size", "storey", "target_area", "target_volume", "locked", "behaviour", "name"}, warnings);
+    Seed seed;
+    seed.at = s.at("at").vec2();
+    if (auto z = s.find("size")) seed.size = positiveSize(*z);
+    if (auto k = s.find("storey")) seed.storey = int(k->integer(0, 999));
+    if (auto a = s.find("target_area")) seed.targetArea = a->number(1e-6, 1e9);
+    if (auto v = s.find("target_volume")) seed.targetVolume = v->number(1e-6, 1e9);
+    if (auto l = s.find("locked"))
+      for (const JsonReader& name : l->array(6)) {
+        Side side;
+        if (!sideFromName(name.string(16), side)) name.fail("expected one of -x, +x, -y, +y, bottom, top");
+        seed.locked[static_cast<int>(side)] = true;
+      }
+    if (auto b = s.find("behaviour")) seed.behaviour = b->string(64);
+    site.seeds.push_back(seed);
+  }
+  validateSite(site);
+  return site;
+}
+
+Site loadSite(const std::string& path, std::vector<std::string>* warnings) {
+  const std::string text = readFile(path, std::size_t(64) << 20);
+  try {
+    return parseSite(text, warnings);
+  } catch (const InputError& e) {
+    throw InputError(e.where.empty() ? path : path + ": " + e.where, e.reason);
+  }
+}
+
+}  // namespace corbel::growth

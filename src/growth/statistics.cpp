@@ -1,0 +1,99 @@
+#include "growth/statistics.h"
+
+#include "growth/tolerances.h"
+
+#include <cmath>
+
+namespace corbel::growth {
+
+char housingType(double a) {
+  if (a > 85) return 'A';
+  if (a >= 50) return 'B';
+  if (a >= 30) return 'C';
+  return '-';
+}
+
+int occupantsOf(char type) { return type == 'A' ? 5 : type == 'B' ? 3 : type == 'C' ? 1 : 0; }
+
+namespace {
+
+// Length along which plan rectangles a and b share a boundary (0 unless they touch).
+double sharedBoundary(const Rect& a, const Rect& b) {
+  double s = 0;
+  if (std::abs(a.u1 - b.u0) <= kEps || std::abs(b.u1 - a.u0) <= kEps)
+    s = std::max(s, overlapLength(a.v0, a.v1, b.v0, b.v1));
+  if (std::abs(a.v1 - b.v0) <= kEps || std::abs(b.v1 - a.v0) <= kEps)
+    s = std::max(s, overlapLength(a.u0, a.u1, b.u0, b.u1));
+  return s;
+}
+
+}  // namespace
+
+bool hasOutdoorSpace(const Site& site, const std::vector<Unit>& units, std::size_t unit) {
+  // Everything that can stand on a roof: every part, core and circulation box.
+  std::vector<Box> solids;
+  for (const Unit& u : units) solids.insert(solids.end(), u.parts.begin(), u.parts.end());
+  for (std::size_t i = 0; i < site.cores.size(); ++i) solids.push_back(site.coreBox(i));
+  solids.insert(solids.end(), site.circulation.begin(), site.circulation.end());
+  for (std::size_t v = 0; v < units.size(); ++v) {
+    if (v == unit) continue;
+    for (const Box& roof : units[v].parts) {
+      const double z = roof.hi[2];
+      bool atFloor = false;
+      for (const Box& p : units[unit].parts) atFloor = atFloor || std::abs(p.lo[2] - z) <= kEps;
+      if (!atFloor) continue;
+      std::vector<Rect> garden{footprint(roof)};
+      for (const Box& s : solids)
+        if (s.lo[2] <= z + kEps && s.hi[2] > z + kEps) garden = subtract(garden, footprint(s));
+      if (totalArea(garden) < kMinGardenArea) continue;
+      for (const Box& p : units[unit].parts) {
+        if (std::abs(p.lo[2] - z) > kEps) continue;
+        for (const Rect& g : garden)
+          if (sharedBoundary(g, footprint(p)) >= kMinDoorWidth - kEps) return true;
+      }
+    }
+  }
+  return false;
+}
+
+Statistics computeStatistics(const Site& site, const std::vector<Unit>& units, const ViewMaps& views) {
+  Statistics st;
+  st.siteArea = site.area();
+  st.storeys = site.storeys;
+  st.units = int(units.size());
+  double viewSum = 0, areaSum = 0;
+  for (std::size_t i = 0; i < units.size(); ++i) {
+    const Unit& u = units[i];
+    UnitStatistics us;
+    us.id = u.id;
+    us.floorArea = u.floorArea();
+    us.volume = u.volume();
+    for (ViewDirection d : kViewDirections) {
+      const double a = views.view(std::uint32_t(u.id), d);
+      us.viewByDirection[int(d)] = a;
+      us.view += a;
+      if (a >= kMinViewArea) ++us.views;
+    }
+    us.type = housingType(us.floorArea);
+    for (const Box& p : u.parts) us.doubleVolume = us.doubleVolume || p.size(2) > 1.5 * site.storeyHeight;
+    us.outdoorSpace = hasOutdoorSpace(site, units, i);
+    st.occupants += occupantsOf(us.type);
+    (us.type == 'A' ? st.typeA : us.type == 'B' ? st.typeB : us.type == 'C' ? st.typeC : st.unclassified)++;
+    if (us.views == 2) ++st.twoViews;
+    if (us.views == 3) ++st.threeViews;
+    if (us.views == 4) ++st.fourViews;
+    if (us.doubleVolume) ++st.doubleVolume;
+    if (us.outdoorSpace) ++st.outdoorSpace;
+    viewSum += us.view;
+    areaSum += us.floorArea;
+    st.perUnit.push_back(us);
+  }
+  if (!units.empty()) {
+    st.averageView = viewSum / units.size();
+    st.averageFloorArea = areaSum / units.size();
+  }
+  st.occupancyRatio = st.occupants / (st.siteArea * site.storeys);
+  return st;
+}
+
+}  // namespace corbel::growth

@@ -1,0 +1,116 @@
+// The growth kernel on the Alpha-like example: one simulation step (early and mid-run), the
+// view maps of a grown model, and a full run. Results: docs/growth.md.
+#include "growth/engine.h"
+#include "growth/site.h"
+#include "render/gl_view_mapper.h"
+#include "render/headless_context.h"
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+namespace {
+
+using namespace corbel::growth;
+
+const Site& alpha() {
+  static const Site site = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-alpha.json");
+  return site;
+}
+
+// One step after `before` steps (the engine is rebuilt outside the timing each time).
+void BM_GrowthStep(benchmark::State& state) {
+  const int before = int(state.range(0));
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto engine = std::make_unique<GrowthEngine>(alpha());
+    engine->run(before);
+    const std::size_t commits = engine->commits();
+    state.ResumeTiming();
+    engine->step();
+    state.PauseTiming();
+    state.counters["moves"] = double(engine->commits() - commits);
+    engine.reset();
+    state.ResumeTiming();
+  }
+}
+BENCHMARK(BM_GrowthStep)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond)->Iterations(20);
+
+void BM_ExactViewMaps(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  const std::vector<ViewBox> boxes = engine.viewBoxes();
+  ExactViewMapper mapper;
+  for (auto _ : state) benchmark::DoNotOptimize(mapper.render(boxes, alpha().bounds()));
+  state.counters["boxes"] = double(boxes.size());
+}
+BENCHMARK(BM_ExactViewMaps)->Unit(benchmark::kMillisecond);
+
+// The gain in view of one candidate advance (Sec. 5.2) on the exact maps of grown Alpha: every
+// vertical face of every part, one query each (items = queries).
+void BM_GainQuery(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  std::vector<std::pair<Box, std::uint32_t>> regions;
+  for (const Unit& u : engine.units())
+    for (const Box& p : u.parts)
+      for (Side s : kVerticalSides) regions.push_back({sweptRegion(p, s, alpha().alpha), std::uint32_t(u.id)});
+  for (auto _ : state)
+    for (const auto& [r, id] : regions) benchmark::DoNotOptimize(engine.views().gain(r, id));
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(regions.size()));
+}
+BENCHMARK(BM_GainQuery)->Unit(benchmark::kMicrosecond);
+
+void BM_RasterViewMaps(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  const std::vector<ViewBox> boxes = engine.viewBoxes();
+  RasterViewMapper mapper(0.1);
+  for (auto _ : state) benchmark::DoNotOptimize(mapper.render(boxes, alpha().bounds()));
+}
+BENCHMARK(BM_RasterViewMaps)->Unit(benchmark::kMillisecond);
+
+void BM_GlViewMaps(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  const std::vector<ViewBox> boxes = engine.viewBoxes();
+  corbel::render::HeadlessContext context;
+  corbel::render::GlViewMapper mapper(0.1);
+  for (auto _ : state) benchmark::DoNotOptimize(mapper.render(boxes, alpha().bounds()));
+}
+BENCHMARK(BM_GlViewMaps)->Unit(benchmark::kMillisecond);
+
+// A full run with view maps from OSMesa at 0.25 m pixels.
+void BM_FullRunGl(benchmark::State& state) {
+  corbel::render::HeadlessContext context;
+  corbel::render::GlViewMapper mapper(0.25);
+  for (auto _ : state) {
+    GrowthEngine engine(alpha(), {}, &mapper);
+    state.counters["steps"] = engine.run(100000);
+  }
+}
+BENCHMARK(BM_FullRunGl)->Unit(benchmark::kMillisecond);
+
+void BM_FullRun(benchmark::State& state) {
+  for (auto _ : state) {
+    GrowthEngine engine(alpha());
+    state.counters["steps"] = engine.run(100000);
+    state.counters["moves"] = double(engine.commits());
+  }
+}
+BENCHMARK(BM_FullRun)->Unit(benchmark::kMillisecond);
+
+// Beta (100 m x 60 m, 6 storeys, 132 seeds) grown to completion: the goal is under 5 s.
+void BM_FullRunBeta(benchmark::State& state) {
+  static const Site beta = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-beta.json");
+  for (auto _ : state) {
+    GrowthEngine engine(beta);
+    state.counters["steps"] = engine.run(100000);
+    state.counters["moves"] = double(engine.commits());
+  }
+}
+BENCHMARK(BM_FullRunBeta)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
