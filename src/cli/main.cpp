@@ -10,6 +10,7 @@
 #include "extrude/batch.h"
 #include "extrude/footprints.h"
 #include "extrude/kernel.h"
+#include "statics/kernel.h"
 #include "render/headless_context.h"
 #include "cli/statics_cli.h"
 
@@ -118,6 +119,7 @@ Loaded load(const std::string& path) {
   l.doc = std::move(p.document);
   SceneSync sync;
   extrude::registerKernel(sync);
+  statics::registerKernel(sync);
   sync.update(l.doc, l.scene);
   for (const auto& [id, st] : sync.status()) {
     const DocObject* o = l.doc.find(id);

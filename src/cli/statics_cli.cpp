@@ -4,7 +4,9 @@
 #include "core/error.h"
 #include "statics/analysis.h"
 #include "statics/arch.h"
+#include "core/project_io.h"
 #include "statics/examples.h"
+#include "statics/kernel.h"
 #include "statics/search.h"
 #include "statics/thresholds.h"
 
@@ -104,13 +106,10 @@ int archCommand(const Options& a) {
   return 0;
 }
 
-int exampleCommand(const Options& a) {
-  if (a.positional.size() != 2) {
-    std::string names;
-    for (const std::string& n : statics::exampleNames()) names += " " + n;
-    throw UsageError("statics example: expected one example name (" + names.substr(1) + ")");
-  }
-  const statics::ParametricModel model = statics::exampleByName(a.positional[1]);
+// Analyses (or, with --optimize, searches) one model: an example by name, or a project's
+// masonry object. `free` and the analysis settings are the defaults the command line overrides.
+int runModel(const Options& a, const statics::ParametricModel& model, std::vector<statics::FreeParameter> free,
+             double friction, double kern, const std::string& object) {
   statics::ParameterSet values = model.parameters;
   for (const std::string& s : a.sets) {
     const auto eq = s.find('=');
@@ -121,16 +120,17 @@ int exampleCommand(const Options& a) {
     values.set(s.substr(0, eq), d);
   }
   const bool optimize = a.values.count("--optimize") > 0, json = a.values.count("--json") > 0;
-  if (!optimize && !a.frees.empty()) throw UsageError("statics example: --free needs --optimize");
+  if (!optimize && !a.frees.empty()) throw UsageError("statics: --free needs --optimize");
   statics::SearchOptions options;
-  options.analysis.kernShrink = number(a, "--kern", 0, 0, 0.99);
-  options.analysis.friction = number(a, "--friction", 0.7, 0, 100);
+  options.analysis.kernShrink = number(a, "--kern", kern, 0, 0.99);
+  options.analysis.friction = number(a, "--friction", friction, 0, 100);
   options.analysis.frictionSides = sides(a);
   if (a.values.count("--algorithm")) options.algorithm = a.values.at("--algorithm");
   options.maxEvaluations = int(number(a, "--max-evaluations", 200, 1, 1e6));
   options.maxSeconds = number(a, "--max-seconds", 0, 0, 1e6);
 
   nlohmann::ordered_json out;
+  if (!object.empty()) out["object"] = object;
   out["example"] = model.name;
   out["blocks"] = model.build(values).blocks.size();
   if (!optimize) {
@@ -146,7 +146,7 @@ int exampleCommand(const Options& a) {
     for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
     out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
   } else {
-    std::vector<statics::FreeParameter> free;
+    if (!a.frees.empty()) free.clear();
     for (const std::string& f : a.frees) free.push_back(statics::parseFreeParameter(f));
     if (free.empty()) free = model.suggestedFree;
     const statics::SearchResult r = statics::searchParameters(model, free, options, &values);
@@ -170,6 +170,7 @@ int exampleCommand(const Options& a) {
   }
   char text[96];
   std::snprintf(text, sizeof text, "%.6g", out["measure"].get<double>());
+  if (!object.empty()) std::cout << "object: " << object << "\n";
   std::cout << "example: " << model.name << " (" << out["blocks"].get<std::size_t>() << " blocks with the ground)\n"
             << "y/W²: " << text << "\nstatus: " << out["status"].get<std::string>() << "\n"
             << "iterations: " << out["iterations"].get<int>() << "\n";
@@ -183,6 +184,39 @@ int exampleCommand(const Options& a) {
   return 0;
 }
 
+int exampleCommand(const Options& a) {
+  if (a.positional.size() != 2) {
+    std::string names;
+    for (const std::string& n : statics::exampleNames()) names += " " + n;
+    throw UsageError("statics example: expected one example name (" + names.substr(1) + ")");
+  }
+  return runModel(a, statics::exampleByName(a.positional[1]), {}, 0.7, 0.0, "");
+}
+
+// statics PROJECT: every masonry object of the project (or the one --object names), with its
+// own parameters, free bounds, friction and kern (core/masonry_spec.h).
+int projectCommand(const Options& a) {
+  const LoadedProject p = loadProject(a.positional[0]);
+  for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << a.positional[0] << ": " << w << "\n";
+  const std::string only = a.values.count("--object") ? a.values.at("--object") : "";
+  int ran = 0, code = 0;
+  for (const DocObject& o : p.document.objects) {
+    const auto* spec = std::get_if<MasonrySpec>(&o.spec);
+    if (!spec || (!only.empty() && o.name != only)) continue;
+    std::vector<statics::FreeParameter> free;
+    for (const MasonryFree& f : spec->free) free.push_back({f.name, f.lo, f.hi});
+    try {
+      code = std::max(code, runModel(a, statics::modelOf(*spec), free, spec->friction, spec->kern, o.name));
+    } catch (const InputError& e) {
+      throw InputError(o.name + ": " + e.where, e.reason);
+    }
+    ++ran;
+  }
+  if (ran == 0)
+    throw Error(only.empty() ? "the project has no masonry object" : "the project has no masonry object named \"" + only + "\"");
+  return code;
+}
+
 }  // namespace
 
 int runStatics(int argc, char** argv) {
@@ -192,10 +226,13 @@ int runStatics(int argc, char** argv) {
                              {"--kern", true}, {"--min-thickness", false}, {"--critical-tilt", false},
                              {"--optimize", false}, {"--free", true}, {"--set", true}, {"--json", false},
                              {"--algorithm", true}, {"--max-evaluations", true}, {"--max-seconds", true},
-                             {"--friction-sides", true}});
+                             {"--friction-sides", true}, {"--object", true}});
     if (!a.positional.empty() && a.positional[0] == "arch" && a.positional.size() == 1) return archCommand(a);
     if (!a.positional.empty() && a.positional[0] == "example") return exampleCommand(a);
-    throw UsageError("statics: expected 'arch' (statics arch --blocks N --thickness T ...) or 'example NAME'");
+    if (a.positional.size() == 1 && a.positional[0].size() > 7 &&
+        a.positional[0].compare(a.positional[0].size() - 7, 7, ".corbel") == 0)
+      return projectCommand(a);
+    throw UsageError("statics: expected 'arch' (statics arch --blocks N --thickness T ...), 'example NAME' or a PROJECT.corbel");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";
     return 2;

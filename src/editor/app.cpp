@@ -6,6 +6,7 @@
 #include "core/project_io.h"
 #include "extrude/edit.h"
 #include "extrude/kernel.h"
+#include "statics/kernel.h"
 #include "render/gl.h"
 #include "render/image.h"
 
@@ -37,6 +38,7 @@ App::App(GLFWwindow* window, EditorOptions options)
       recovery_(stateDirOr(options_.stateDir)),
       recent_(stateDirOr(options_.stateDir) + "/recent.json") {
   extrude::registerKernel(sync_);
+  statics::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());
   registerActions();

@@ -3,6 +3,7 @@
 // <build>/tests/golden/out/. Regenerate after an intended change with scripts/update-goldens
 // (CORBEL_UPDATE_GOLDENS=1), then look at the new images before committing them.
 #include "extrude/kernel.h"
+#include "statics/kernel.h"
 #include "golden_support.h"
 
 #include <gtest/gtest.h>
@@ -31,6 +32,7 @@ render::Image renderExample(const std::string& name) {
   Scene scene;
   SceneSync sync;
   extrude::registerKernel(sync);
+  statics::registerKernel(sync);
   sync.update(p.document, scene);
   for (const auto& [id, st] : sync.status()) EXPECT_EQ(st.error, "") << name;
   render::RenderSettings settings;

@@ -86,3 +86,30 @@ TEST(StaticsCli, ExampleRefusesBadNamesAndBounds) {
 }
 
 }  // namespace
+
+namespace {
+
+// statics PROJECT: the masonry object of the example project, with its own parameters and free
+// bounds. As set it does not stand (its 0.12 m arch is under the arch's own limit); the search
+// over its two free parameters makes it stand within their bounds.
+TEST(StaticsCli, AProjectsMasonryObjectIsAnalysedAndMadeToStand) {
+  const std::string project = std::string("'") + CORBEL_SOURCE_DIR + "/assets/examples/masonry-arch.corbel'";
+  CliRun r = cli(project + " --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["object"], "Arch on columns");
+  EXPECT_FALSE(j["stands"].get<bool>());
+  EXPECT_GT(j["measure"].get<double>(), 1e-6);
+  r = cli(project + " --optimize --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["stands"].get<bool>()) << r.out;
+  const double thickness = j["parameters"]["thickness"], width = j["parameters"]["columnWidth"];
+  EXPECT_GE(thickness, 0.05);
+  EXPECT_LE(thickness, 0.5);
+  EXPECT_GE(width, 0.1);
+  EXPECT_LE(width, 1.5);
+  EXPECT_EQ(cli(project + " --object 'No such'").code, 1);
+}
+
+}  // namespace
