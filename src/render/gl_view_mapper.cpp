@@ -1,5 +1,7 @@
 #include "render/gl_view_mapper.h"
 
+#include "render/shader_sources.h"
+
 #include "core/error.h"
 #include "render/gl.h"
 
@@ -29,21 +31,6 @@ out vec4 fragId;
 void main() { fragId = vId; }
 )";
 
-GLuint compileStage(GLenum type, const char* source) {
-  GLuint s = glCreateShader(type);
-  glShaderSource(s, 1, &source, nullptr);
-  glCompileShader(s);
-  GLint ok = 0;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024];
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
-    glDeleteShader(s);
-    throw Error(std::string("view map shader failed to compile: ") + log);
-  }
-  return s;
-}
-
 struct Vertex {
   float x, y, z;
   std::uint8_t id[4];
@@ -53,16 +40,7 @@ struct Vertex {
 
 GlViewMapper::GlViewMapper(double pixelSize) : pixel_(pixelSize) {
   if (!(pixelSize > 0)) throw Error("view map pixel size must be positive");
-  const GLuint vs = compileStage(GL_VERTEX_SHADER, kVertex), fs = compileStage(GL_FRAGMENT_SHADER, kFragment);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) throw Error("view map shader failed to link");
+  program_ = linkSources(kVertex, kFragment, "view map vertex", "view map fragment");
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &vbo_);
   glBindVertexArray(vao_);

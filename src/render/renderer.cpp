@@ -20,11 +20,9 @@ std::string shaderSource(const std::string& name) {
 
 namespace {
 
-GLuint compile(GLenum type, const std::string& name) {
-  const std::string text = shaderSource(name);
+GLuint compile(GLenum type, const char* text, const std::string& label) {
   GLuint s = glCreateShader(type);
-  const char* src = text.c_str();
-  glShaderSource(s, 1, &src, nullptr);
+  glShaderSource(s, 1, &text, nullptr);
   glCompileShader(s);
   GLint ok = 0;
   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -32,7 +30,7 @@ GLuint compile(GLenum type, const std::string& name) {
     char log[4096] = {};
     glGetShaderInfoLog(s, sizeof log, nullptr, log);
     glDeleteShader(s);
-    throw Error("shader " + name + " failed to compile: " + log);
+    throw Error("shader " + label + " failed to compile: " + log);
   }
   return s;
 }
@@ -87,8 +85,16 @@ double niceStep(double span) {
 
 }  // namespace
 
-unsigned linkProgram(const std::string& vert, const std::string& frag) {
-  GLuint vs = compile(GL_VERTEX_SHADER, vert), fs = compile(GL_FRAGMENT_SHADER, frag);
+unsigned linkSources(const char* vertText, const char* fragText, const std::string& vertLabel,
+                     const std::string& fragLabel) {
+  GLuint vs = compile(GL_VERTEX_SHADER, vertText, vertLabel);
+  GLuint fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fragText, fragLabel);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
   GLuint p = glCreateProgram();
   glAttachShader(p, vs);
   glAttachShader(p, fs);
@@ -101,9 +107,14 @@ unsigned linkProgram(const std::string& vert, const std::string& frag) {
     char log[4096] = {};
     glGetProgramInfoLog(p, sizeof log, nullptr, log);
     glDeleteProgram(p);
-    throw Error("program " + vert + " + " + frag + " failed to link: " + log);
+    throw Error("program " + vertLabel + " + " + fragLabel + " failed to link: " + log);
   }
   return p;
+}
+
+unsigned linkProgram(const std::string& vert, const std::string& frag) {
+  const std::string vs = shaderSource(vert), fs = shaderSource(frag);
+  return linkSources(vs.c_str(), fs.c_str(), vert, frag);
 }
 
 struct Renderer::Impl {
