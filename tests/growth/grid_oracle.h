@@ -1,0 +1,55 @@
+#pragma once
+// Independent oracles for the ShapeTree tests: cells of the integer grid inside a polygon
+// (crossing count at the cell centre) and the unit-length boundary segments of an edge.
+// Written from the definitions, not from shapetree.cpp.
+#include "growth/shapetree.h"
+
+#include <set>
+#include <tuple>
+#include <vector>
+
+namespace corbel::growth::test {
+
+using Cell = std::pair<GridCoord, GridCoord>;
+
+inline bool centreInside(const std::vector<GridPoint>& poly, GridCoord cx, GridCoord cy) {
+  // The centre of cell (cx, cy) is (cx + ½, cy + ½); count vertical edges to its right.
+  int crossings = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const GridPoint a = poly[i], b = poly[(i + 1) % poly.size()];
+    if (a.x != b.x || a.x <= cx) continue;
+    if (std::min(a.y, b.y) <= cy && cy < std::max(a.y, b.y)) ++crossings;
+  }
+  return crossings % 2 == 1;
+}
+
+inline std::set<Cell> cellsOf(const std::vector<GridPoint>& poly) {
+  GridCoord x0 = poly[0].x, x1 = x0, y0 = poly[0].y, y1 = y0;
+  for (auto p : poly) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  std::set<Cell> out;
+  for (GridCoord x = x0; x < x1; ++x)
+    for (GridCoord y = y0; y < y1; ++y)
+      if (centreInside(poly, x, y)) out.insert({x, y});
+  return out;
+}
+
+inline std::set<Cell> cellsOf(const std::vector<GridRect>& rects) {
+  std::set<Cell> out;
+  for (const GridRect& r : rects)
+    for (GridCoord x = r.x0; x < r.x1; ++x)
+      for (GridCoord y = r.y0; y < r.y1; ++y) out.insert({x, y});
+  return out;
+}
+
+// The unit-length pieces of a real edge, each named by its lower-left grid point and whether
+// it is horizontal; two edges touch along a piece when both list it with opposite facings.
+using Piece = std::tuple<GridCoord, GridCoord, bool>;
+inline std::vector<Piece> piecesOf(const ShapeEdge& e) {
+  std::vector<Piece> out;
+  const GridPoint t = travelOf(e.facing);
+  for (GridPoint p = e.from; p != e.to; p = {p.x + t.x, p.y + t.y})
+    out.push_back({std::min(p.x, p.x + t.x), std::min(p.y, p.y + t.y), t.y == 0});
+  return out;
+}
+
+}  // namespace corbel::growth::test
