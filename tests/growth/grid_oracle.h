@@ -4,9 +4,14 @@
 // Written from the definitions, not from shapetree.cpp.
 #include "growth/shapetree.h"
 
+#include <ostream>
 #include <set>
 #include <tuple>
 #include <vector>
+
+namespace corbel::growth {
+inline std::ostream& operator<<(std::ostream& o, GridPoint p) { return o << "(" << p.x << "," << p.y << ")"; }
+}  // namespace corbel::growth
 
 namespace corbel::growth::test {
 
