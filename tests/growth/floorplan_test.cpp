@@ -15,32 +15,6 @@ namespace {
 
 constexpr int kN = 0, kE = 1, kS = 2, kW = 3;
 
-// The links an independent count of shared unit pieces implies, as (a, b, length).
-std::set<std::tuple<LeafRef, LeafRef, GridCoord>> sharedPieces(const Floorplan& plan) {
-  std::map<test::Piece, std::vector<std::pair<LeafRef, Facing>>> at;
-  for (std::size_t u = 0; u < plan.units().size(); ++u)
-    for (const ShapeEdge& e : plan.unit(int(u)).edges())
-      for (const test::Piece& p : test::piecesOf(e)) at[p].push_back({{int(u), e.node}, e.facing});
-  std::map<std::pair<LeafRef, LeafRef>, GridCoord> len;
-  for (const auto& [piece, users] : at)
-    for (std::size_t i = 0; i < users.size(); ++i)
-      for (std::size_t j = i + 1; j < users.size(); ++j) {
-        if (users[i].first.unit == users[j].first.unit) continue;
-        if (oppositeFacing(users[i].second) != users[j].second) continue;
-        auto key = std::minmax(users[i].first, users[j].first);
-        ++len[{key.first, key.second}];
-      }
-  std::set<std::tuple<LeafRef, LeafRef, GridCoord>> out;
-  for (const auto& [k, n] : len) out.insert({k.first, k.second, n});
-  return out;
-}
-
-std::set<std::tuple<LeafRef, LeafRef, GridCoord>> recorded(const Floorplan& plan) {
-  std::set<std::tuple<LeafRef, LeafRef, GridCoord>> out;
-  for (const Incidence& l : plan.incidences()) out.insert({l.a, l.b, l.to - l.from});
-  return out;
-}
-
 TEST(Floorplan, SplitAndAdvanceRelinkAsInFig73) {
   // Fig. 7.2: T1 (2 × 2) left of the taller T2 (2 × 4); b11 (T1 east) touches d21 (T2 west).
   Floorplan plan;
@@ -93,7 +67,7 @@ TEST(Floorplan, RandomOperatorsKeepUnitsApartAndLinksExact) {
   for (int trial = 0; trial < 25; ++trial) {
     Floorplan plan;
     for (int i = 0; i < 4; ++i) plan.addUnit(ShapeTree::canonical({GridCoord(i % 2) * 6, GridCoord(i / 2) * 6}, 6, 6));
-    std::vector<std::pair<std::size_t, decltype(recorded(plan))>> states{{plan.historySize(), recorded(plan)}};
+    std::vector<std::pair<std::size_t, decltype(test::recorded(plan))>> states{{plan.historySize(), test::recorded(plan)}};
     for (int step = 0; step < 60; ++step) {
       const int u = int(rng() % plan.units().size());
       const std::vector<int> leaves = plan.unit(u).leaves();
@@ -118,12 +92,12 @@ TEST(Floorplan, RandomOperatorsKeepUnitsApartAndLinksExact) {
         all.insert(cells.begin(), cells.end());
       }
       EXPECT_EQ(all.size(), total) << "two units share a cell";
-      ASSERT_EQ(recorded(plan), sharedPieces(plan));
-      states.push_back({plan.historySize(), recorded(plan)});
+      ASSERT_EQ(test::recorded(plan), test::sharedPieces(plan));
+      states.push_back({plan.historySize(), test::recorded(plan)});
     }
     for (std::size_t k = states.size(); k-- > 0;) {
       while (plan.historySize() > states[k].first) ASSERT_TRUE(plan.undo());
-      EXPECT_EQ(recorded(plan), states[k].second);
+      EXPECT_EQ(test::recorded(plan), states[k].second);
     }
   }
   EXPECT_GT(accepted, 600);

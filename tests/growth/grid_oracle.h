@@ -2,7 +2,11 @@
 // Independent oracles for the ShapeTree tests: cells of the integer grid inside a polygon
 // (crossing count at the cell centre) and the unit-length boundary segments of an edge.
 // Written from the definitions, not from shapetree.cpp.
+#include "growth/floorplan.h"
 #include "growth/shapetree.h"
+
+#include <algorithm>
+#include <map>
 
 #include <ostream>
 #include <set>
@@ -54,6 +58,32 @@ inline std::vector<Piece> piecesOf(const ShapeEdge& e) {
   const GridPoint t = travelOf(e.facing);
   for (GridPoint p = e.from; p != e.to; p = {p.x + t.x, p.y + t.y})
     out.push_back({std::min(p.x, p.x + t.x), std::min(p.y, p.y + t.y), t.y == 0});
+  return out;
+}
+
+// The links an independent count of shared unit pieces implies, as (a, b, length).
+inline std::set<std::tuple<LeafRef, LeafRef, GridCoord>> sharedPieces(const Floorplan& plan) {
+  std::map<Piece, std::vector<std::pair<LeafRef, Facing>>> at;
+  for (std::size_t u = 0; u < plan.units().size(); ++u)
+    for (const ShapeEdge& e : plan.unit(int(u)).edges())
+      for (const Piece& p : piecesOf(e)) at[p].push_back({{int(u), e.node}, e.facing});
+  std::map<std::pair<LeafRef, LeafRef>, GridCoord> len;
+  for (const auto& [piece, users] : at)
+    for (std::size_t i = 0; i < users.size(); ++i)
+      for (std::size_t j = i + 1; j < users.size(); ++j) {
+        if (users[i].first.unit == users[j].first.unit) continue;
+        if (oppositeFacing(users[i].second) != users[j].second) continue;
+        auto key = std::minmax(users[i].first, users[j].first);
+        ++len[{key.first, key.second}];
+      }
+  std::set<std::tuple<LeafRef, LeafRef, GridCoord>> out;
+  for (const auto& [k, n] : len) out.insert({k.first, k.second, n});
+  return out;
+}
+
+inline std::set<std::tuple<LeafRef, LeafRef, GridCoord>> recorded(const Floorplan& plan) {
+  std::set<std::tuple<LeafRef, LeafRef, GridCoord>> out;
+  for (const Incidence& l : plan.incidences()) out.insert({l.a, l.b, l.to - l.from});
   return out;
 }
 
