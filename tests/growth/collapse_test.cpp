@@ -16,33 +16,6 @@ namespace {
 
 using test::Cell;
 
-// The clockwise outline of a cell set, or empty when it has a hole or a pinch (two cells
-// meeting only at a corner): then it is not one simple polygon.
-std::vector<GridPoint> outlineOfCells(const std::set<Cell>& cells) {
-  for (const Cell& c : cells)
-    for (int dx : {-1, 1})
-      for (int dy : {-1, 1}) {
-        const bool diag = cells.count({c.first + dx, c.second + dy});
-        const bool side1 = cells.count({c.first + dx, c.second}), side2 = cells.count({c.first, c.second + dy});
-        if (diag && !side1 && !side2) return {};
-      }
-  std::map<GridPoint, GridPoint> next;  // unit boundary edges, clockwise (y up)
-  for (const auto& [x, y] : cells) {
-    if (!cells.count({x, y + 1})) next[{x, y + 1}] = {x + 1, y + 1};
-    if (!cells.count({x + 1, y})) next[{x + 1, y + 1}] = {x + 1, y};
-    if (!cells.count({x, y - 1})) next[{x + 1, y}] = {x, y};
-    if (!cells.count({x - 1, y})) next[{x, y}] = {x, y + 1};
-  }
-  std::vector<GridPoint> loop;
-  GridPoint p = next.begin()->first;
-  do {
-    loop.push_back(p);
-    p = next.at(p);
-  } while (p != loop.front() && loop.size() <= next.size());
-  if (loop.size() != next.size()) return {};  // a second loop: a hole
-  return cleanOutline(loop);
-}
-
 std::set<Cell> randomBlob(std::mt19937_64& rng, int cells, int span) {
   std::set<Cell> s{{0, 0}};
   std::vector<Cell> list{{0, 0}};
@@ -81,7 +54,7 @@ TEST(CollapseStaircases, EveryRandomRectilinearUnitReducesToTheSquareAndBack) {
   int shapes = 0, maxCorners = 0;
   while (shapes < 3000) {
     const std::set<Cell> blob = randomBlob(rng, 3 + int(rng() % 40), 7);
-    const std::vector<GridPoint> outline = outlineOfCells(blob);
+    const std::vector<GridPoint> outline = test::outlineOfCells(blob);
     if (outline.empty()) continue;
     ++shapes;
     maxCorners = std::max(maxCorners, int(outline.size()));
@@ -111,7 +84,7 @@ TEST(CollapseStaircases, RemovingOnlyCutsTheUnitIntoRectangles) {
   int shapes = 0, stuck = 0;
   while (shapes < 1000) {
     const std::set<Cell> blob = randomBlob(rng, 3 + int(rng() % 30), 6);
-    const std::vector<GridPoint> outline = outlineOfCells(blob);
+    const std::vector<GridPoint> outline = test::outlineOfCells(blob);
     if (outline.empty()) continue;
     ++shapes;
     const auto trace = collapseStaircases(outline, {rng(), true});

@@ -87,4 +87,32 @@ inline std::set<std::tuple<LeafRef, LeafRef, GridCoord>> recorded(const Floorpla
   return out;
 }
 
+// The clockwise outline of a cell set, or empty when it has a pinch (two cells meeting only
+// at a corner) or, unless outerOnly, a hole: then it is not one simple polygon. The loop
+// through the least corner is the outer one.
+inline std::vector<GridPoint> outlineOfCells(const std::set<Cell>& cells, bool outerOnly = false) {
+  for (const Cell& c : cells)
+    for (int dx : {-1, 1})
+      for (int dy : {-1, 1}) {
+        const bool diag = cells.count({c.first + dx, c.second + dy});
+        const bool side1 = cells.count({c.first + dx, c.second}), side2 = cells.count({c.first, c.second + dy});
+        if (diag && !side1 && !side2) return {};
+      }
+  std::map<GridPoint, GridPoint> next;  // unit boundary edges, clockwise (y up)
+  for (const auto& [x, y] : cells) {
+    if (!cells.count({x, y + 1})) next[{x, y + 1}] = {x + 1, y + 1};
+    if (!cells.count({x + 1, y})) next[{x + 1, y + 1}] = {x + 1, y};
+    if (!cells.count({x, y - 1})) next[{x + 1, y}] = {x, y};
+    if (!cells.count({x - 1, y})) next[{x, y}] = {x, y + 1};
+  }
+  std::vector<GridPoint> loop;
+  GridPoint p = next.begin()->first;
+  do {
+    loop.push_back(p);
+    p = next.at(p);
+  } while (p != loop.front() && loop.size() <= next.size());
+  if (loop.size() != next.size() && !outerOnly) return {};  // a second loop: a hole
+  return cleanOutline(loop);
+}
+
 }  // namespace corbel::growth::test
