@@ -22,13 +22,7 @@ std::set<test::Cell> unionCells(const Floorplan& plan) {
 }
 
 std::vector<Form> someForms(int seeds, std::uint64_t seed, int count) {
-  FormRequest rq;
-  rq.seeds = seeds;
-  rq.lo = Fraction::of(3, 10);
-  rq.hi = Fraction::of(4, 10);
-  rq.count = count;
-  rq.seed = seed;
-  return generateForms(rq).forms;
+  return generateForms(test::formRequest(seeds, Fraction::of(3, 10), Fraction::of(4, 10), count, seed)).forms;
 }
 
 TEST(BoundaryPath, TwoSquaresOfEqualHeight) {

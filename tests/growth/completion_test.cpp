@@ -19,11 +19,7 @@ TEST(TopologyGeneration, CanonicalRowComplexityIsNMinusOneOverFourN) {
 
 TEST(TopologyGeneration, FormsFallInTheRangeAndAreDistinct) {
   // Fig. 7.9 asks 5 units for 0.36-0.38.
-  FormRequest rq;
-  rq.seeds = 5;
-  rq.lo = Fraction::of(36, 100);
-  rq.hi = Fraction::of(38, 100);
-  rq.count = 5;
+  const FormRequest rq = test::formRequest(5, Fraction::of(36, 100), Fraction::of(38, 100), 5);
   const FormSet set = generateForms(rq);
   ASSERT_EQ(set.forms.size(), 5u) << set.note;
   std::set<std::string> topologies;
@@ -44,11 +40,7 @@ TEST(TopologyGeneration, FormsFallInTheRangeAndAreDistinct) {
 }
 
 TEST(TopologyGeneration, SameSeedSameForms) {
-  FormRequest rq;
-  rq.seeds = 3;
-  rq.lo = Fraction::of(1, 4);
-  rq.hi = Fraction::of(3, 10);
-  rq.count = 3;
+  const FormRequest rq = test::formRequest(3, Fraction::of(1, 4), Fraction::of(3, 10), 3);
   const FormSet a = generateForms(rq), b = generateForms(rq);
   ASSERT_EQ(a.forms.size(), b.forms.size());
   for (std::size_t i = 0; i < a.forms.size(); ++i) EXPECT_EQ(a.forms[i].topology, b.forms[i].topology);

@@ -2,6 +2,7 @@
 // Independent oracles for the ShapeTree tests: cells of the integer grid inside a polygon
 // (crossing count at the cell centre) and the unit-length boundary segments of an edge.
 // Written from the definitions, not from shapetree.cpp.
+#include "growth/completion.h"
 #include "growth/floorplan.h"
 #include "growth/shapetree.h"
 
@@ -113,6 +114,17 @@ inline std::vector<GridPoint> outlineOfCells(const std::set<Cell>& cells, bool o
   } while (p != loop.front() && loop.size() <= next.size());
   if (loop.size() != next.size() && !outerOnly) return {};  // a second loop: a hole
   return cleanOutline(loop);
+}
+
+// A form request in one line (the tests' common case).
+inline FormRequest formRequest(int seeds, Fraction lo, Fraction hi, int count, std::uint64_t seed = 1) {
+  FormRequest rq;
+  rq.seeds = seeds;
+  rq.lo = lo;
+  rq.hi = hi;
+  rq.count = count;
+  rq.seed = seed;
+  return rq;
 }
 
 }  // namespace corbel::growth::test

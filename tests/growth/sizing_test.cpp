@@ -4,6 +4,7 @@
 #include "growth/sizing.h"
 
 #include "growth/completion.h"
+#include "grid_oracle.h"
 
 #include <gtest/gtest.h>
 
@@ -25,12 +26,7 @@ TEST(Sizing, TwoSubUnitsMeetHalfWay) {
 }
 
 TEST(Sizing, GeneratedFormsGetEvenerWithoutInversion) {
-  FormRequest rq;
-  rq.seeds = 5;
-  rq.lo = Fraction::of(3, 10);
-  rq.hi = Fraction::of(4, 10);
-  rq.count = 6;
-  const FormSet set = generateForms(rq);
+  const FormSet set = generateForms(test::formRequest(5, Fraction::of(3, 10), Fraction::of(4, 10), 6));
   ASSERT_GE(set.forms.size(), 4u);
   double sumBefore = 0, sumAfter = 0;
   for (const Form& f : set.forms) {
