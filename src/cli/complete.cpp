@@ -147,9 +147,10 @@ int complete(int argc, char** argv) {
     growth::fitToRegion(c, region);
     growth::SizingOptions so;
     so.minWidth = std::min(0.5, 0.05 * std::min(w, h));
-    const growth::SizingResult sized = growth::sizeGeometry(c, so);
+    growth::Layout layout = growth::Layout::of(c);
+    const growth::SizingResult sized = growth::sizeGeometry(layout, so);
     const int n = int(f.plan.units().size());
-    std::vector<growth::Unit> units = growth::sizedUnits(c, n, 0.0, 3.0);
+    std::vector<growth::Unit> units = growth::sizedUnits(layout, n, 0.0, 3.0);
 
     nlohmann::ordered_json fj;
     const growth::Fraction v = f.complexity.value();

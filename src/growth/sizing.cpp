@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 namespace corbel::growth {
@@ -18,78 +19,183 @@ struct Score {
   }
 };
 
-double target(const Cartogram& c) {
-  const double box = (c.xs.back() - c.xs.front()) * (c.ys.back() - c.ys.front());
-  return box / std::max(1, c.subUnits());
+struct Box2 {
+  double x0, y0, x1, y1;
+};
+
+Box2 boundsOf(const Layout& l) {
+  Box2 b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (const PlanRect& r : l.rects) b = {std::min(b.x0, r.x0), std::min(b.y0, r.y0), std::max(b.x1, r.x1), std::max(b.y1, r.y1)};
+  return b;
 }
 
-double rectError(const Cartogram& c, int i, double M, double m) {
-  const double a = c.geometry(i).area();
-  return c.rects[std::size_t(i)].unit >= 0 ? std::abs(a - M) / M : std::max(0.0, a - m) / M;
+double target(const Layout& l) {
+  const Box2 b = boundsOf(l);
+  return (b.x1 - b.x0) * (b.y1 - b.y0) / std::max(1, l.subUnits());
 }
 
-Score score(const Cartogram& c, double M, double m) {
+double rectError(const Layout& l, std::size_t i, double M, double m) {
+  const double a = l.rects[i].area();
+  return l.unit[i] >= 0 ? std::abs(a - M) / M : std::max(0.0, a - m) / M;
+}
+
+Score score(const Layout& l, double M, double m) {
   Score s;
-  for (int i = 0; i < int(c.rects.size()); ++i) {
-    const double e = rectError(c, i, M, m);
-    if (c.rects[std::size_t(i)].unit >= 0) s.worst = std::max(s.worst, e);
+  for (std::size_t i = 0; i < l.rects.size(); ++i) {
+    const double e = rectError(l, i, M, m);
+    if (l.unit[i] >= 0) s.worst = std::max(s.worst, e);
     s.squares += e * e;
   }
   return s;
 }
 
+// Coordinates of a rectangle along an axis: axis 0 moves x sides, 1 moves y sides.
+double& lowSide(PlanRect& r, int axis) { return axis == 0 ? r.x0 : r.y0; }
+double& highSide(PlanRect& r, int axis) { return axis == 0 ? r.x1 : r.y1; }
+double lowAcross(const PlanRect& r, int axis) { return axis == 0 ? r.y0 : r.x0; }
+double highAcross(const PlanRect& r, int axis) { return axis == 0 ? r.y1 : r.x1; }
+
+// A maximal segment: the rectangles whose high side (before) or low side (after) lies on it.
+struct Segment {
+  int axis = 0;
+  std::vector<std::size_t> before, after;
+  double from = 0, to = 0;  // its extent across while it is being found
+};
+
+std::vector<Segment> segmentsOf(const Layout& l, const Box2& box) {
+  std::vector<Segment> out;
+  for (int axis = 0; axis < 2; ++axis) {
+    // Sides by coordinate, then merged into connected runs along the line.
+    std::map<double, std::vector<std::pair<std::size_t, bool>>> byLine;  // (rect, is its high side)
+    for (std::size_t i = 0; i < l.rects.size(); ++i) {
+      PlanRect r = l.rects[i];
+      byLine[lowSide(r, axis)].push_back({i, false});
+      byLine[highSide(r, axis)].push_back({i, true});
+    }
+    const double edge0 = axis == 0 ? box.x0 : box.y0, edge1 = axis == 0 ? box.x1 : box.y1;
+    for (auto& [c, sides] : byLine) {
+      if (c == edge0 || c == edge1) continue;
+      std::sort(sides.begin(), sides.end(), [&](auto& a, auto& b) { return lowAcross(l.rects[a.first], axis) < lowAcross(l.rects[b.first], axis); });
+      Segment cur;
+      cur.axis = axis;
+      bool open = false;
+      for (const auto& [i, high] : sides) {
+        const double a = lowAcross(l.rects[i], axis), b = highAcross(l.rects[i], axis);
+        if (open && a > cur.to) {
+          out.push_back(cur);
+          cur = Segment{axis, {}, {}, 0, 0};
+          open = false;
+        }
+        if (!open) cur.from = a, cur.to = b, open = true;
+        cur.to = std::max(cur.to, b);
+        (high ? cur.before : cur.after).push_back(i);
+      }
+      if (open) out.push_back(cur);
+    }
+  }
+  return out;
+}
+
+// How far a segment may move: its neighbouring rectangles keep minWidth, and its ends stay
+// between the nearest other corners on the lines they lie on.
+std::pair<double, double> range(const Layout& l, const Segment& s, double minWidth) {
+  PlanRect any = l.rects[s.before.empty() ? s.after[0] : s.before[0]];
+  const double c = s.before.empty() ? lowSide(any, s.axis) : highSide(any, s.axis);
+  // Its ends now (the segments it ends on may have moved since it was found).
+  double from = INFINITY, to = -INFINITY;
+  for (const auto* side : {&s.before, &s.after})
+    for (std::size_t i : *side) from = std::min(from, lowAcross(l.rects[i], s.axis)), to = std::max(to, highAcross(l.rects[i], s.axis));
+  double lo = -INFINITY, hi = INFINITY;
+  for (std::size_t i : s.before) {
+    PlanRect r = l.rects[i];
+    lo = std::max(lo, lowSide(r, s.axis) + minWidth);
+  }
+  for (std::size_t i : s.after) {
+    PlanRect r = l.rects[i];
+    hi = std::min(hi, highSide(r, s.axis) - minWidth);
+  }
+  for (const PlanRect& r0 : l.rects) {
+    PlanRect r = r0;
+    for (double across : {lowAcross(r, s.axis), highAcross(r, s.axis)}) {
+      if (across != from && across != to) continue;
+      for (double along : {lowSide(r, s.axis), highSide(r, s.axis)}) {
+        if (along < c) lo = std::max(lo, along + minWidth);
+        if (along > c) hi = std::min(hi, along - minWidth);
+      }
+    }
+  }
+  return {lo - c, hi - c};
+}
+
+void shift(Layout& l, const Segment& s, double d) {
+  for (std::size_t i : s.before) highSide(l.rects[i], s.axis) += d;
+  for (std::size_t i : s.after) lowSide(l.rects[i], s.axis) += d;
+}
+
 }  // namespace
 
-double maxAreaError(const Cartogram& c) {
-  const double M = target(c);
+Layout Layout::of(const Cartogram& c) {
+  Layout l;
+  l.rects = c.geometry();
+  for (const Cartogram::Rect& r : c.rects) l.unit.push_back(r.unit);
+  return l;
+}
+
+int Layout::subUnits() const { return int(std::count_if(unit.begin(), unit.end(), [](int u) { return u >= 0; })); }
+
+double maxAreaError(const Layout& l) {
+  const double M = target(l);
   double worst = 0;
-  for (int i = 0; i < int(c.rects.size()); ++i)
-    if (c.rects[std::size_t(i)].unit >= 0) worst = std::max(worst, std::abs(c.geometry(i).area() - M) / M);
+  for (std::size_t i = 0; i < l.rects.size(); ++i)
+    if (l.unit[i] >= 0) worst = std::max(worst, std::abs(l.rects[i].area() - M) / M);
   return worst;
 }
 
-SizingResult sizeGeometry(Cartogram& c, const SizingOptions& o) {
+SizingResult sizeGeometry(Layout& l, const SizingOptions& o) {
   SizingResult out;
-  const double M = target(c), m = o.seaShare * M;
-  out.before = maxAreaError(c);
-  Score now = score(c, M, m);
-  double delta = 0.25 * std::min((c.xs.back() - c.xs.front()) / double(c.xs.size()), (c.ys.back() - c.ys.front()) / double(c.ys.size()));
-  const double stop = 1e-4 * std::max(c.xs.back() - c.xs.front(), c.ys.back() - c.ys.front());
+  if (l.rects.empty()) return out;
+  const Box2 box = boundsOf(l);
+  const double M = target(l), m = o.seaShare * M;
+  out.before = maxAreaError(l);
+  const std::vector<Segment> segs = segmentsOf(l, box);  // the arrangement never changes
+  out.segments = int(segs.size());
+  Score now = score(l, M, m);
+  double delta = 0.125 * std::min(box.x1 - box.x0, box.y1 - box.y0);
+  const double stop = 1e-4 * std::max(box.x1 - box.x0, box.y1 - box.y0);
   while (out.passes < o.maxPasses && delta > stop) {
     ++out.passes;
-    // Lines touching the worst rectangles first.
-    std::vector<int> order(c.rects.size());
+    // Segments next to the worst rectangles first.
+    std::vector<double> priority(segs.size(), 0);
+    for (std::size_t k = 0; k < segs.size(); ++k)
+      for (const auto* side : {&segs[k].before, &segs[k].after})
+        for (std::size_t i : *side) priority[k] = std::max(priority[k], rectError(l, i, M, m));
+    std::vector<std::size_t> order(segs.size());
     std::iota(order.begin(), order.end(), 0);
-    std::vector<double> err(c.rects.size());
-    for (int i = 0; i < int(c.rects.size()); ++i) err[std::size_t(i)] = rectError(c, i, M, m);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return err[std::size_t(a)] > err[std::size_t(b)]; });
-    std::vector<std::pair<int, int>> lines;  // (axis, index)
-    for (int i : order) {
-      const Cartogram::Rect& r = c.rects[std::size_t(i)];
-      for (auto line : {std::pair{0, r.x0}, std::pair{0, r.x1}, std::pair{1, r.y0}, std::pair{1, r.y1}})
-        if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
-    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
     bool moved = false;
-    for (const auto& [axis, idx] : lines) {
-      std::vector<double>& v = axis == 0 ? c.xs : c.ys;
-      if (idx == 0 || idx + 1 == int(v.size())) continue;
-      const double lo = v[std::size_t(idx - 1)] + o.minWidth, hi = v[std::size_t(idx + 1)] - o.minWidth;
-      const double was = v[std::size_t(idx)];
-      double bestAt = was;
+    for (std::size_t k : order) {
+      const Segment& s = segs[k];
+      const auto [lo, hi] = range(l, s, o.minWidth);
+      double bestD = 0;
       Score best = now;
       for (double step : {delta, -delta}) {
-        const double at = std::clamp(was + step, lo, hi);
-        if (at == was || !(lo <= hi)) continue;
-        v[std::size_t(idx)] = at;
-        const Score s = score(c, M, m);
-        if (s < best) best = s, bestAt = at;
+        const double d = std::clamp(step, std::min(0.0, lo), std::max(0.0, hi));
+        if (d == 0) continue;
+        shift(l, s, d);
+        const Score sc = score(l, M, m);
+        shift(l, s, -d);
+        if (sc < best) best = sc, bestD = d;
       }
-      v[std::size_t(idx)] = bestAt;
-      if (bestAt != was) now = best, moved = true, ++out.moves;
+      if (bestD != 0) {
+        shift(l, s, bestD);
+        now = best;
+        moved = true;
+        ++out.moves;
+      }
     }
     if (!moved) delta *= 0.5;
   }
-  out.after = maxAreaError(c);
+  out.after = maxAreaError(l);
   return out;
 }
 
@@ -104,13 +210,13 @@ void fitToRegion(Cartogram& c, const PlanRect& region) {
   stretch(c.ys, region.y0, region.y1);
 }
 
-std::vector<Unit> sizedUnits(const Cartogram& c, int units, double z0, double storeyHeight) {
+std::vector<Unit> sizedUnits(const Layout& l, int units, double z0, double storeyHeight) {
   std::vector<Unit> out(std::size_t(std::max(0, units)));
   for (int u = 0; u < units; ++u) out[std::size_t(u)].id = u + 1;
-  for (int i = 0; i < int(c.rects.size()); ++i) {
-    const int u = c.rects[std::size_t(i)].unit;
+  for (std::size_t i = 0; i < l.rects.size(); ++i) {
+    const int u = l.unit[i];
     if (u < 0 || u >= units) continue;
-    const PlanRect r = c.geometry(i);
+    const PlanRect& r = l.rects[i];
     out[std::size_t(u)].parts.push_back({{r.x0, r.y0, z0}, {r.x1, r.y1, z0 + storeyHeight}});
   }
   return out;
