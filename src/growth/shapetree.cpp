@@ -228,6 +228,11 @@ SplitNodes ShapeTree::faceSplit(int leaf, GridCoord at, std::string* why) {
     return say(why, "Face Split needs a real leaf"), SplitNodes{};
   const ShapeNode v = nodes_[std::size_t(leaf)];
   if (at <= 0 || at >= v.weight) return say(why, "the split point must lie strictly inside the edge"), SplitNodes{};
+  for (int a = leaf; a >= 0; a = nodes_[std::size_t(a)].parent) {
+    const int cap = nodes_[std::size_t(a)].splitLimit;
+    if (cap >= 0 && splitCount(a) + 1 > cap)
+      return say(why, "the subtree at node " + std::to_string(a) + " allows " + std::to_string(cap) + " splits (Eq. 6.1)"), SplitNodes{};
+  }
   history_.push_back(save());
   const int op = int(history_.size()) - 1;
   SplitNodes s;
@@ -319,6 +324,31 @@ bool ShapeTree::faceAdvance(int leaf, GridCoord alpha, std::string* why) {
   return true;
 }
 
+int ShapeTree::splitCount(int node) const {
+  const ShapeNode& n = nodes_[std::size_t(node)];
+  if (n.isLeaf()) return 0;
+  int count = 1;
+  for (int c : n.children) count += splitCount(c);
+  return count;
+}
+
+bool ShapeTree::setSplitLimit(int node, int limit, std::string* why) {
+  if (node < 0 || std::size_t(node) >= nodes_.size()) return say(why, "no such node"), false;
+  if (limit >= 0 && splitCount(node) > limit) return say(why, "the subtree already has more splits"), false;
+  // The node's children's caps against its own, and its caps against its parent's.
+  auto childrenFit = [&](int n, int cap) {
+    if (cap < 0) return true;
+    int sum = 0;
+    for (int c : nodes_[std::size_t(n)].children) sum += std::max(0, c == node ? limit : nodes_[std::size_t(c)].splitLimit);
+    return sum <= cap;
+  };
+  const int parent = nodes_[std::size_t(node)].parent;
+  if (!childrenFit(node, limit) || (parent >= 0 && !childrenFit(parent, nodes_[std::size_t(parent)].splitLimit)))
+    return say(why, "the children's split counts would exceed the parent's (Eq. 6.1)"), false;
+  nodes_[std::size_t(node)].splitLimit = limit;
+  return true;
+}
+
 void ShapeTree::restore(Saved s) {
   nodes_ = std::move(s.nodes);
   anchor_ = s.anchor;
@@ -328,7 +358,10 @@ void ShapeTree::restore(Saved s) {
 
 bool ShapeTree::undo() {
   if (history_.empty()) return false;
-  restore(std::move(history_.back()));
+  // Split caps are settings, not ops: they survive undo on the nodes that remain.
+  Saved& back = history_.back();
+  for (std::size_t i = 0; i < back.nodes.size() && i < nodes_.size(); ++i) back.nodes[i].splitLimit = nodes_[i].splitLimit;
+  restore(std::move(back));
   history_.pop_back();
   return true;
 }

@@ -52,6 +52,7 @@ struct ShapeNode {
   int parent = -1;               // -1 for the four top-level nodes
   std::vector<int> children;     // empty for a leaf
   int createdBy = -1;            // history index of the op that made it (-1: the canonical unit)
+  int splitLimit = -1;           // SplitCount(v) of Eq. 6.1: splits allowed in its subtree (-1: any)
   bool isVirtual() const { return weight == 0; }
   bool isLeaf() const { return children.empty(); }
 };
@@ -107,6 +108,13 @@ class ShapeTree {
   // (negative: inward). Refused, leaving the tree unchanged, when a neighbour would get a
   // negative length or the outline would stop being a simple rectilinear polygon.
   bool faceAdvance(int leaf, GridCoord alpha, std::string* why = nullptr);
+  // Eq. 6.1: caps the splits in the subtree at `node` (-1 lifts the cap). Refused when the
+  // subtree already has more, or when the caps of a node's children would add up to more
+  // than the node's own (Σ SplitCount(v_i) ≤ SplitCount(v_x)).
+  bool setSplitLimit(int node, int limit, std::string* why = nullptr);
+  // Splits made so far in the subtree at `node` (its internal nodes).
+  int splitCount(int node) const;
+
   // Undo the last op; false when there is none.
   bool undo();
   std::size_t historySize() const { return history_.size(); }

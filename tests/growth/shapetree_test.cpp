@@ -109,6 +109,28 @@ TEST(ShapeTree, ComponentsAreSubtreesClosedByTheNextLeaf) {
   EXPECT_EQ(t.component(s.first).closing, s.virtualNode);
 }
 
+TEST(ShapeTree, SplitCountsCapSubtrees) {
+  // Eq. 6.1: a cap on a subtree's splits, and children's caps within their parent's.
+  ShapeTree t = ShapeTree::canonical({0, 0}, 12, 12);
+  ASSERT_TRUE(t.setSplitLimit(kN, 2));
+  const SplitNodes s = t.faceSplit(kN, 6);
+  ASSERT_GE(s.first, 0);
+  EXPECT_EQ(t.splitCount(kN), 1);
+  ASSERT_GE(t.faceSplit(s.first, 3).first, 0);
+  std::string why;
+  EXPECT_LT(t.faceSplit(s.second, 3, &why).first, 0);  // a third split under a
+  EXPECT_NE(why.find("Eq. 6.1"), std::string::npos);
+  EXPECT_GE(t.faceSplit(kE, 6).first, 0);  // other subtrees are free
+  EXPECT_FALSE(t.setSplitLimit(kN, 1));    // it already has two
+  EXPECT_FALSE(t.setSplitLimit(s.second, 3));  // more than the parent's 2
+  EXPECT_TRUE(t.setSplitLimit(s.second, 0));
+  EXPECT_TRUE(t.undo());
+  EXPECT_TRUE(t.undo());
+  EXPECT_GE(t.faceSplit(s.first, 2).first, 0);  // undo gave the split back
+  EXPECT_EQ(t.node(s.second).splitLimit, 0);     // and kept the caps
+  EXPECT_LT(t.faceSplit(s.second, 2).first, 0);
+}
+
 TEST(ShapeTree, RandomOperatorsKeepARectilinearOutlineTiledByItsBoxes) {
   // Property: after every accepted op the outline is simple and rectilinear, labels agree,
   // the boxes rasterise to exactly the cells inside the outline, and an advance changes the
