@@ -2,6 +2,7 @@
 #include "growth/sizing.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -132,7 +133,106 @@ void shift(Layout& l, const Segment& s, double d) {
   for (std::size_t i : s.after) lowSide(l.rects[i], s.axis) += d;
 }
 
+double position(const Layout& l, const Segment& s) {
+  PlanRect any = l.rects[s.before.empty() ? s.after[0] : s.before[0]];
+  return s.before.empty() ? lowSide(any, s.axis) : highSide(any, s.axis);
+}
+
+// The segment of every rectangle side: side[i][2·axis + (high ? 1 : 0)], -1 on the box.
+struct SegmentIndex {
+  std::vector<Segment> segs;
+  std::vector<std::array<int, 4>> side;
+};
+
+SegmentIndex indexSegments(const Layout& l, const Box2& box) {
+  SegmentIndex ix;
+  ix.segs = segmentsOf(l, box);
+  ix.side.assign(l.rects.size(), {-1, -1, -1, -1});
+  for (std::size_t k = 0; k < ix.segs.size(); ++k) {
+    const Segment& s = ix.segs[k];
+    for (std::size_t i : s.before) ix.side[i][std::size_t(2 * s.axis + 1)] = int(k);
+    for (std::size_t i : s.after) ix.side[i][std::size_t(2 * s.axis)] = int(k);
+  }
+  return ix;
+}
+
+// Moves segment k to `want` (dir > 0: at least that far up the axis, dir < 0: at most),
+// first pushing whatever is in the way as far as it needs to go.
+bool pushTo(Layout& l, const SegmentIndex& ix, int k, double want, int dir, double minWidth, int depth) {
+  if (k < 0 || depth > int(ix.segs.size())) return false;
+  const Segment& s = ix.segs[std::size_t(k)];
+  const int ax = s.axis;
+  const double c = position(l, s);
+  if (dir > 0 ? c >= want : c <= want) return true;
+  double from = INFINITY, to = -INFINITY;
+  for (const auto* side : {&s.before, &s.after})
+    for (std::size_t i : *side) from = std::min(from, lowAcross(l.rects[i], ax)), to = std::max(to, highAcross(l.rects[i], ax));
+  const double gap = dir > 0 ? minWidth : -minWidth;
+  // Cascading: the far sides of the rectangles being squeezed.
+  std::vector<std::pair<int, double>> ahead;  // (segment, where that side is now)
+  for (std::size_t i : dir > 0 ? s.after : s.before) {
+    PlanRect r = l.rects[i];
+    ahead.push_back({ix.side[i][std::size_t(2 * ax + (dir > 0 ? 1 : 0))], dir > 0 ? highSide(r, ax) : lowSide(r, ax)});
+  }
+  // Staircase: sides with a corner ahead on the segments this one ends on.
+  for (std::size_t i = 0; i < l.rects.size(); ++i) {
+    PlanRect r = l.rects[i];
+    if (lowAcross(r, ax) != from && lowAcross(r, ax) != to && highAcross(r, ax) != from && highAcross(r, ax) != to) continue;
+    for (int high = 0; high < 2; ++high) {
+      const double along = high ? highSide(r, ax) : lowSide(r, ax);
+      if (dir > 0 ? (along > c && along < want + minWidth) : (along < c && along > want - minWidth))
+        ahead.push_back({ix.side[i][std::size_t(2 * ax + high)], along});
+    }
+  }
+  for (const auto& [k2, now] : ahead) {
+    if (k2 == k || (dir > 0 ? now >= want + gap : now <= want + gap)) continue;
+    if (!pushTo(l, ix, k2, want + gap, dir, minWidth, depth + 1)) return false;
+  }
+  const auto [lo, hi] = range(l, s, minWidth);
+  const double d = want - c;
+  if (d > hi + 1e-9 || d < lo - 1e-9) return false;
+  shift(l, s, d);
+  return true;
+}
+
 }  // namespace
+
+bool realizeBySegments(Layout& l, const std::vector<Correspondence>& targets, double minWidth, std::string* why) {
+  const Relations rel = relationsOf(l.rects);
+  for (const Correspondence& p : targets)
+    for (const Correspondence& q : targets) {
+      const std::size_t a = std::size_t(4 * p.corner.rect + p.corner.corner), b = std::size_t(4 * q.corner.rect + q.corner.corner);
+      if ((rel.x[a][b] && !(p.x < q.x)) || (rel.z[a][b] && !(p.y < q.y))) {
+        if (why) *why = "a correspondence reverses ≺x or ≺z between two corners";
+        return false;
+      }
+    }
+  const Layout original = l;
+  const SegmentIndex ix = indexSegments(l, boundsOf(l));
+  for (int round = 0; round < 8; ++round) {
+    bool placed = true;
+    for (const Correspondence& t : targets) {
+      for (int axis = 0; axis < 2; ++axis) {
+        const int corner = t.corner.corner;
+        const bool high = axis == 0 ? (corner == 1 || corner == 2) : (corner >= 2);
+        const auto at = cornerAt(l.rects, t.corner);
+        const double d = (axis == 0 ? t.x : t.y) - at[std::size_t(axis)];
+        if (std::abs(d) < 1e-9) continue;
+        placed = false;
+        const int k = ix.side[std::size_t(t.corner.rect)][std::size_t(2 * axis + (high ? 1 : 0))];
+        if (!pushTo(l, ix, k, at[std::size_t(axis)] + d, d > 0 ? 1 : -1, minWidth, 0)) {
+          l = original;
+          if (why) *why = k < 0 ? "a corner on the bounding box cannot move" : "the moves would reach the bounding box";
+          return false;
+        }
+      }
+    }
+    if (placed) return true;
+  }
+  l = original;
+  if (why) *why = "the targets pull the corners against each other";
+  return false;
+}
 
 Layout Layout::of(const Cartogram& c) {
   Layout l;

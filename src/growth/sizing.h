@@ -37,6 +37,14 @@ struct SizingResult {
   int segments = 0;  // movable segments
 };
 
+// Cascading and staircase edge moves (Sec. 7.3.3, Fig. 7.16-7.18): each corresponded
+// corner is brought to its target by moving the segments it lies on; a segment that would
+// squeeze a neighbouring rectangle below minWidth pushes the segment beyond it (cascading), and
+// one whose end would slide past a corner on the segment it ends on pushes that corner's
+// segment (staircase), on to the box, which does not move. Refused (unchanged) when the
+// targets are not realizable or the pushes reach the box.
+bool realizeBySegments(Layout& l, const std::vector<Correspondence>& targets, double minWidth, std::string* why = nullptr);
+
 double maxAreaError(const Layout& l);
 SizingResult sizeGeometry(Layout& l, const SizingOptions& options = {});
 
