@@ -335,9 +335,8 @@ bool respace(std::vector<double>& lines, const std::map<int, double>& fixed, std
 
 }  // namespace
 
-bool realizable(const Cartogram& c, const std::vector<Correspondence>& targets, std::string* why) {
-  const std::vector<PlanRect> g = c.geometry();
-  const Relations rel = relationsOf(g);
+bool respectsRelations(const std::vector<PlanRect>& rects, const std::vector<Correspondence>& targets, std::string* why) {
+  const Relations rel = relationsOf(rects);
   for (const Correspondence& p : targets)
     for (const Correspondence& q : targets) {
       const std::size_t a = std::size_t(4 * p.corner.rect + p.corner.corner), b = std::size_t(4 * q.corner.rect + q.corner.corner);
@@ -347,6 +346,10 @@ bool realizable(const Cartogram& c, const std::vector<Correspondence>& targets, 
       }
     }
   return true;
+}
+
+bool realizable(const Cartogram& c, const std::vector<Correspondence>& targets, std::string* why) {
+  return respectsRelations(c.geometry(), targets, why);
 }
 
 bool realize(Cartogram& c, const std::vector<Correspondence>& targets, std::string* why) {

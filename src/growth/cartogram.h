@@ -82,6 +82,7 @@ struct Correspondence {
   double x = 0, y = 0;
 };
 // Whether the targets respect ≺x and ≺z pairwise (the paper's realizable correspondence).
+bool respectsRelations(const std::vector<PlanRect>& rects, const std::vector<Correspondence>& targets, std::string* why = nullptr);
 bool realizable(const Cartogram& c, const std::vector<Correspondence>& targets, std::string* why = nullptr);
 // Moves coordinate lines so each corresponded corner lands on its target; lines between
 // follow proportionally. Refuses (unchanged) when the targets are not realizable or would

@@ -198,15 +198,7 @@ bool pushTo(Layout& l, const SegmentIndex& ix, int k, double want, int dir, doub
 }  // namespace
 
 bool realizeBySegments(Layout& l, const std::vector<Correspondence>& targets, double minWidth, std::string* why) {
-  const Relations rel = relationsOf(l.rects);
-  for (const Correspondence& p : targets)
-    for (const Correspondence& q : targets) {
-      const std::size_t a = std::size_t(4 * p.corner.rect + p.corner.corner), b = std::size_t(4 * q.corner.rect + q.corner.corner);
-      if ((rel.x[a][b] && !(p.x < q.x)) || (rel.z[a][b] && !(p.y < q.y))) {
-        if (why) *why = "a correspondence reverses ≺x or ≺z between two corners";
-        return false;
-      }
-    }
+  if (!respectsRelations(l.rects, targets, why)) return false;
   const Layout original = l;
   const SegmentIndex ix = indexSegments(l, boundsOf(l));
   for (int round = 0; round < 8; ++round) {
