@@ -130,6 +130,8 @@ bool onBox(const GridRect& b, GridPoint p) { return p.x == b.x0 || p.x == b.x1 |
 }  // namespace
 
 std::vector<GridRect> seaRectangles(const Floorplan& plan, const BoundaryTrace& trace, std::size_t* bySubtraction) {
+  if (bySubtraction) *bySubtraction = 0;
+  if (plan.units().empty() || trace.corners.empty()) return {};
   const GridRect box = plan.bounds();
   const auto& c = trace.corners;
   const int n = int(c.size());

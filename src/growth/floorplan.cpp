@@ -106,7 +106,8 @@ bool Floorplan::undo() {
 }
 
 GridRect Floorplan::bounds() const {
-  GridRect r = units_.at(0).bounds();
+  if (units_.empty()) return {};
+  GridRect r = units_[0].bounds();
   for (const ShapeTree& t : units_) {
     const GridRect b = t.bounds();
     r = {std::min(r.x0, b.x0), std::min(r.y0, b.y0), std::max(r.x1, b.x1), std::max(r.y1, b.y1)};

@@ -45,7 +45,7 @@ class Floorplan {
   bool undo();  // the last faceSplit or faceAdvance (or addUnit)
   std::size_t historySize() const { return history_.size(); }
 
-  GridRect bounds() const;
+  GridRect bounds() const;  // of all units (empty when there are none)
   // Every unit valid and no two overlap.
   bool valid(std::string* why = nullptr) const;
 

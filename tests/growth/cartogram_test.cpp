@@ -103,6 +103,13 @@ TEST(SeaRegion, SeaAndSubUnitsTileTheBoundingBox) {
   EXPECT_EQ(test::cellsOf(ringSea), (std::set<test::Cell>{{2, 2}, {2, 3}, {3, 2}, {3, 3}}));
 }
 
+TEST(SeaRegion, AnEmptyFloorplanHasNoSeaAndNoCartogram) {
+  const Floorplan none;
+  EXPECT_TRUE(traceBoundary(none).corners.empty());
+  EXPECT_TRUE(seaRectangles(none, traceBoundary(none)).empty());
+  EXPECT_TRUE(Cartogram::of(none).rects.empty());
+}
+
 TEST(Relations, SideBySideRectanglesByHand) {
   // A = [0,1]², B = [1,2]×[0,1]; corners 0 SW, 1 SE, 2 NE, 3 NW.
   const std::vector<PlanRect> r{{0, 0, 1, 1}, {1, 0, 2, 1}};
