@@ -43,7 +43,8 @@ long long whole(const std::string& flag, const std::string& s, long long lo, lon
   char* end = nullptr;
   const long long v = std::strtoll(s.c_str(), &end, 10);
   if (s.empty() || *end != '\0' || v < lo || v > hi)
-    throw BadArgument{flag + ": expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not '" + s + "'"};
+    throw BadArgument{flag + ": expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                      "], not '" + s + "'"};
   return v;
 }
 
@@ -59,7 +60,8 @@ std::vector<std::string> splitOn(const std::string& s, char c) {
 // Complexity bounds to exact fractions with four decimals.
 growth::Fraction fractionOf(double v) { return growth::Fraction::of(std::llround(v * 10000.0), 10000); }
 
-const char* const kPalette[] = {"brick", "glass", "grass", "timber", "slate", "stone", "roof_tile", "metal", "plaster", "concrete"};
+const char* const kPalette[] = {"brick", "glass",     "grass", "timber",  "slate",
+                                "stone", "roof_tile", "metal", "plaster", "concrete"};
 
 }  // namespace
 
@@ -89,7 +91,8 @@ int complete(int argc, char** argv) {
         if (parts.size() != 2) throw BadArgument{"--complexity: expected LO:HI, not '" + v + "'"};
         const double lo = number("--complexity", parts[0]), hi = number("--complexity", parts[1]);
         if (lo < 0 || hi < lo) throw BadArgument{"--complexity: expected 0 <= LO <= HI, not '" + v + "'"};
-        if (hi >= 0.5) throw BadArgument{"--complexity: HI must stay below 0.5 (Type I moves approach 1/2, Sec. 7.2.1)"};
+        if (hi >= 0.5)
+          throw BadArgument{"--complexity: HI must stay below 0.5 (Type I moves approach 1/2, Sec. 7.2.1)"};
         rq.lo = fractionOf(lo);
         rq.hi = fractionOf(hi);
         haveRange = true;
@@ -97,7 +100,8 @@ int complete(int argc, char** argv) {
         const std::string v = value();
         const auto parts = splitOn(v, ',');
         if (parts.size() != 4) throw BadArgument{"--region: expected X0,Y0,X1,Y1, not '" + v + "'"};
-        region = {number("--region", parts[0]), number("--region", parts[1]), number("--region", parts[2]), number("--region", parts[3])};
+        region = {number("--region", parts[0]), number("--region", parts[1]), number("--region", parts[2]),
+                  number("--region", parts[3])};
         if (region.x1 - region.x0 < 3 || region.y1 - region.y0 < 3)
           throw BadArgument{"--region: expected X1 >= X0 + 3 and Y1 >= Y0 + 3 (meters), not '" + v + "'"};
       } else if (a == "--out") {
@@ -165,7 +169,8 @@ int complete(int argc, char** argv) {
     fj["area_error_after"] = sized.after;
     fj["sizing_passes"] = sized.passes;
     nlohmann::ordered_json uj = nlohmann::ordered_json::array();
-    for (const growth::Unit& u : units) uj.push_back({{"id", u.id}, {"area", u.floorArea()}, {"parts", u.parts.size()}});
+    for (const growth::Unit& u : units)
+      uj.push_back({{"id", u.id}, {"area", u.floorArea()}, {"parts", u.parts.size()}});
     fj["units"] = uj;
     j["forms"].push_back(fj);
 

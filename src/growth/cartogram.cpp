@@ -46,7 +46,8 @@ BoundaryTrace traceBoundary(const Floorplan& plan) {
       const ShapeEdge& e = edges[u][k];
       if (e.facing != Facing::North) continue;
       if (su < 0 || e.line() > edges[std::size_t(su)][std::size_t(sk)].line() ||
-          (e.line() == edges[std::size_t(su)][std::size_t(sk)].line() && e.lo() < edges[std::size_t(su)][std::size_t(sk)].lo()))
+          (e.line() == edges[std::size_t(su)][std::size_t(sk)].line() &&
+           e.lo() < edges[std::size_t(su)][std::size_t(sk)].lo()))
         su = int(u), sk = int(k);
     }
   if (su < 0) return out;
@@ -63,8 +64,10 @@ BoundaryTrace traceBoundary(const Floorplan& plan) {
     for (const Incidence& l : links) {
       const GridCoord a = along(e, l.from), b = along(e, l.to);
       const GridCoord u0 = std::min(a, b), u1 = std::max(a, b);
-      if (u0 <= d && d < u1) covered = &l;
-      else if (u0 > d && u0 < aheadAt) ahead = &l, aheadAt = u0;
+      if (u0 <= d && d < u1)
+        covered = &l;
+      else if (u0 > d && u0 < aheadAt)
+        ahead = &l, aheadAt = u0;
     }
     auto jump = [&](const Incidence& l) {
       const LeafRef other = l.a == LeafRef{u, e.node} ? l.b : l.a;
@@ -194,7 +197,9 @@ Cartogram Cartogram::of(const Floorplan& plan) {
   gx.erase(std::unique(gx.begin(), gx.end()), gx.end());
   std::sort(gy.begin(), gy.end());
   gy.erase(std::unique(gy.begin(), gy.end()), gy.end());
-  auto ix = [&](const std::vector<GridCoord>& v, GridCoord x) { return int(std::lower_bound(v.begin(), v.end(), x) - v.begin()); };
+  auto ix = [&](const std::vector<GridCoord>& v, GridCoord x) {
+    return int(std::lower_bound(v.begin(), v.end(), x) - v.begin());
+  };
   Cartogram c;
   for (GridCoord x : gx) c.xs.push_back(double(x));
   for (GridCoord y : gy) c.ys.push_back(double(y));
@@ -220,10 +225,14 @@ int Cartogram::subUnits() const {
 std::array<double, 2> cornerAt(const std::vector<PlanRect>& rects, CornerRef c) {
   const PlanRect& r = rects[std::size_t(c.rect)];
   switch (c.corner) {
-    case 0: return {r.x0, r.y0};
-    case 1: return {r.x1, r.y0};
-    case 2: return {r.x1, r.y1};
-    default: return {r.x0, r.y1};
+    case 0:
+      return {r.x0, r.y0};
+    case 1:
+      return {r.x1, r.y0};
+    case 2:
+      return {r.x1, r.y1};
+    default:
+      return {r.x0, r.y1};
   }
 }
 
@@ -244,7 +253,8 @@ Relations relationsOf(const std::vector<PlanRect>& rects) {
       std::vector<std::pair<double, int>> on;
       for (int q = 0; q < v; ++q) {
         const auto& p = pos[std::size_t(q)];
-        if (isHorizontal ? (p[1] == a[1] && p[0] >= a[0] && p[0] <= b[0]) : (p[0] == a[0] && p[1] >= a[1] && p[1] <= b[1]))
+        if (isHorizontal ? (p[1] == a[1] && p[0] >= a[0] && p[0] <= b[0])
+                         : (p[0] == a[0] && p[1] >= a[1] && p[1] <= b[1]))
           on.push_back({isHorizontal ? p[0] : p[1], q});
       }
       std::sort(on.begin(), on.end());
@@ -278,7 +288,9 @@ Relations relationsOf(const std::vector<PlanRect>& rects) {
           for (int b : *list)
             if (!seen[std::size_t(b)]) seen[std::size_t(b)] = 1, queue.push_back(b);
       }
-      for (int q = 0; q < v; ++q) out[std::size_t(s)][std::size_t(q)] = seen[std::size_t(q)] && pos[std::size_t(q)][std::size_t(axis)] > pos[std::size_t(s)][std::size_t(axis)];
+      for (int q = 0; q < v; ++q)
+        out[std::size_t(s)][std::size_t(q)] =
+            seen[std::size_t(q)] && pos[std::size_t(q)][std::size_t(axis)] > pos[std::size_t(s)][std::size_t(axis)];
     }
     return out;
   };
@@ -290,7 +302,8 @@ Relations relationsOf(const std::vector<PlanRect>& rects) {
   rel.z.assign(m, std::vector<char>(m, 0));
   for (std::size_t a = 0; a < m; ++a)
     for (std::size_t b = 0; b < m; ++b) {
-      const int pa = id.at(cornerAt(rects, {int(a / 4), int(a % 4)})), pb = id.at(cornerAt(rects, {int(b / 4), int(b % 4)}));
+      const int pa = id.at(cornerAt(rects, {int(a / 4), int(a % 4)})),
+                pb = id.at(cornerAt(rects, {int(b / 4), int(b % 4)}));
       rel.x[a][b] = vx[std::size_t(pa)][std::size_t(pb)];
       rel.z[a][b] = vz[std::size_t(pa)][std::size_t(pb)];
     }
@@ -318,7 +331,8 @@ bool respace(std::vector<double>& lines, const std::map<int, double>& fixed, std
   }
   std::vector<double> out = lines;
   auto first = fixed.begin();
-  for (int i = 0; i < first->first; ++i) out[std::size_t(i)] = lines[std::size_t(i)] + (first->second - lines[std::size_t(first->first)]);
+  for (int i = 0; i < first->first; ++i)
+    out[std::size_t(i)] = lines[std::size_t(i)] + (first->second - lines[std::size_t(first->first)]);
   for (auto it = fixed.begin(); it != fixed.end(); ++it) {
     out[std::size_t(it->first)] = it->second;
     auto nx = std::next(it);
@@ -337,11 +351,13 @@ bool respace(std::vector<double>& lines, const std::map<int, double>& fixed, std
 
 }  // namespace
 
-bool respectsRelations(const std::vector<PlanRect>& rects, const std::vector<Correspondence>& targets, std::string* why) {
+bool respectsRelations(const std::vector<PlanRect>& rects, const std::vector<Correspondence>& targets,
+                       std::string* why) {
   const Relations rel = relationsOf(rects);
   for (const Correspondence& p : targets)
     for (const Correspondence& q : targets) {
-      const std::size_t a = std::size_t(4 * p.corner.rect + p.corner.corner), b = std::size_t(4 * q.corner.rect + q.corner.corner);
+      const std::size_t a = std::size_t(4 * p.corner.rect + p.corner.corner),
+                        b = std::size_t(4 * q.corner.rect + q.corner.corner);
       if ((rel.x[a][b] && !(p.x < q.x)) || (rel.z[a][b] && !(p.y < q.y))) {
         if (why) *why = "a correspondence reverses ≺x or ≺z between two corners";
         return false;

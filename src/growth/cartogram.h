@@ -21,9 +21,9 @@ namespace corbel::growth {
 
 // The four cases of Fig. 7.13 as Alg. 1 meets them.
 enum class TraceCase {
-  NoIncidence = 0,   // the edge has no links: all of it is boundary
-  StartCovered = 1,  // the edge's start lies in a linked edge's interval: jump to it
-  ContactAhead = 2,  // a linked edge begins further on: boundary up to there, then jump
+  NoIncidence = 0,     // the edge has no links: all of it is boundary
+  StartCovered = 1,    // the edge's start lies in a linked edge's interval: jump to it
+  ContactAhead = 2,    // a linked edge begins further on: boundary up to there, then jump
   ContactsBehind = 3,  // links, but none ahead: the rest of the edge is boundary
 };
 
@@ -40,7 +40,8 @@ BoundaryTrace traceBoundary(const Floorplan& plan);
 
 // Alg. 2: the sea between the units and their bounding box as disjoint rectangles;
 // `bySubtraction` (if given) counts those that came from the fallback, not from collapsing.
-std::vector<GridRect> seaRectangles(const Floorplan& plan, const BoundaryTrace& trace, std::size_t* bySubtraction = nullptr);
+std::vector<GridRect> seaRectangles(const Floorplan& plan, const BoundaryTrace& trace,
+                                    std::size_t* bySubtraction = nullptr);
 
 struct PlanRect {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -82,7 +83,8 @@ struct Correspondence {
   double x = 0, y = 0;
 };
 // Whether the targets respect ≺x and ≺z pairwise (the paper's realizable correspondence).
-bool respectsRelations(const std::vector<PlanRect>& rects, const std::vector<Correspondence>& targets, std::string* why = nullptr);
+bool respectsRelations(const std::vector<PlanRect>& rects, const std::vector<Correspondence>& targets,
+                       std::string* why = nullptr);
 bool realizable(const Cartogram& c, const std::vector<Correspondence>& targets, std::string* why = nullptr);
 // Moves coordinate lines so each corresponded corner lands on its target; lines between
 // follow proportionally. Refuses (unchanged) when the targets are not realizable or would

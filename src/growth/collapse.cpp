@@ -23,8 +23,8 @@ Facing facingOf(GridPoint a, GridPoint b) {
 
 // p lies on the closed segment a–b (axis-aligned).
 bool onSegment(GridPoint p, GridPoint a, GridPoint b) {
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y) &&
-         (a.x == b.x ? p.x == a.x : p.y == a.y);
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y) && (a.x == b.x ? p.x == a.x : p.y == a.y);
 }
 
 GridRect spanOf(std::initializer_list<GridPoint> ps) {
@@ -49,7 +49,8 @@ std::optional<Candidate> tryMove(const std::vector<GridPoint>& c, std::size_t m,
   // The neighbours may shrink to nothing but not turn round (a ShapeTree never inverts an edge).
   const GridPoint before = sub(p, c[(m + n - 1) % n]), after = sub(c[(m + 2) % n], q);
   const GridPoint before2 = plus(before, shift), after2 = sub(after, shift);
-  if (before.x * before2.x + before.y * before2.y < 0 || after.x * after2.x + after.y * after2.y < 0) return std::nullopt;
+  if (before.x * before2.x + before.y * before2.y < 0 || after.x * after2.x + after.y * after2.y < 0)
+    return std::nullopt;
   std::vector<GridPoint> moved = c;
   moved[m] = plus(p, shift);
   moved[(m + 1) % n] = plus(q, shift);

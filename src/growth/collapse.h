@@ -30,18 +30,19 @@ struct CollapseStep {
 };
 
 struct CollapseTrace {
-  GridRect rectangle;              // what is left
+  GridRect rectangle;               // what is left
   std::vector<CollapseStep> steps;  // in collapse order
 };
 
 struct CollapseOptions {
-  std::uint64_t seed = 1;      // which staircase to collapse when several can be
-  bool removeOnly = false;     // only collapses that cut area away (for the sea, Alg. 2)
+  std::uint64_t seed = 1;   // which staircase to collapse when several can be
+  bool removeOnly = false;  // only collapses that cut area away (for the sea, Alg. 2)
 };
 
 // Collapses a simple clockwise rectilinear outline to a rectangle; nullopt when no staircase
 // can be collapsed without the outline touching itself (the property tests look for this).
-std::optional<CollapseTrace> collapseStaircases(const std::vector<GridPoint>& outline, const CollapseOptions& options = {});
+std::optional<CollapseTrace> collapseStaircases(const std::vector<GridPoint>& outline,
+                                                const CollapseOptions& options = {});
 
 // The canonical unit: a 1 × 1 square at the rectangle's south-west corner, advanced east and
 // north to the rectangle, then the steps replayed last to first. Its outline equals the

@@ -105,7 +105,8 @@ FormSet generateForms(const FormRequest& rq) {
   if (rq.seeds < 1 || rq.seeds > 12) throw InputError("seeds", "expected 1 to 12 units");
   if (rq.count < 1 || rq.count > 64) throw InputError("count", "expected 1 to 64 forms");
   if (rq.hi < rq.lo) throw InputError("complexity", "the range is empty (low > high)");
-  if (!(rq.hi < Fraction::of(1, 2))) throw InputError("complexity", "Type I moves stay below 1/2 (Sec. 7.2.1); ask for less");
+  if (!(rq.hi < Fraction::of(1, 2)))
+    throw InputError("complexity", "Type I moves stay below 1/2 (Sec. 7.2.1); ask for less");
   if (rq.unitSize < 2 * rq.minPiece || rq.minPiece < 1) throw InputError("unit size", "too small for its pieces");
   FormSet out;
   std::set<std::string> seen;
@@ -143,7 +144,8 @@ FormSet generateForms(const FormRequest& rq) {
     out.forms.back().complexity = formComplexity(out.forms.back().plan);
   }
   if (int(out.forms.size()) < rq.count)
-    out.note = "found " + std::to_string(out.forms.size()) + " distinct forms in " + std::to_string(out.attempts) + " attempts";
+    out.note = "found " + std::to_string(out.forms.size()) + " distinct forms in " + std::to_string(out.attempts) +
+               " attempts";
   return out;
 }
 

@@ -20,10 +20,10 @@
 namespace corbel::growth {
 
 struct FormRequest {
-  int seeds = 5;                    // n canonical units (1 .. 12)
+  int seeds = 5;                     // n canonical units (1 .. 12)
   Fraction lo = Fraction::of(1, 4);  // complexity range [lo, hi]
   Fraction hi = Fraction::of(3, 10);
-  int count = 4;                    // distinct forms wanted (1 .. 64)
+  int count = 4;  // distinct forms wanted (1 .. 64)
   std::uint64_t seed = 1;
   GridCoord unitSize = 12;  // side of a canonical unit in grid cells
   GridCoord minPiece = 3;   // no split leaves a piece, and no advance a step, shorter than this

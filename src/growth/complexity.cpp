@@ -12,7 +12,9 @@ Fraction Fraction::of(std::int64_t n, std::int64_t d) {
   return g ? Fraction{n / g, d / g} : Fraction{0, 1};
 }
 
-Fraction operator-(const Fraction& a, const Fraction& b) { return Fraction::of(a.num * b.den - b.num * a.den, a.den * b.den); }
+Fraction operator-(const Fraction& a, const Fraction& b) {
+  return Fraction::of(a.num * b.den - b.num * a.den, a.den * b.den);
+}
 
 Complexity formComplexity(const Floorplan& plan) {
   Complexity c;

@@ -21,8 +21,8 @@ struct Fraction {
 };
 
 struct Complexity {
-  std::int64_t incidences = 0;  // Σ_{i<j} C_ij
-  std::int64_t faces = 0;       // Σ |s_i|
+  std::int64_t incidences = 0;                   // Σ_{i<j} C_ij
+  std::int64_t faces = 0;                        // Σ |s_i|
   std::vector<std::vector<std::int64_t>> pairs;  // C_ij (symmetric, zero diagonal)
   Fraction value() const { return faces ? Fraction::of(incidences, faces) : Fraction{}; }
 };

@@ -33,7 +33,7 @@ bool strictlyInside(const std::vector<GridPoint>& poly, double px, double py) {
     const GridPoint a = poly[i], b = poly[(i + 1) % poly.size()];
     if (a.x != b.x) continue;  // horizontal edges never cross a horizontal ray at a non-grid y
     const double y0 = double(std::min(a.y, b.y)), y1 = double(std::max(a.y, b.y));
-    if (py > y0 && py < y1 && double(a.x) > px) in = !in;
+    if (py > y0 && py<y1&& double(a.x)> px) in = !in;
   }
   return in;
 }
@@ -59,27 +59,13 @@ char facingLetter(Facing f) { return f == Facing::None ? '?' : char('a' + int(f)
 
 Facing oppositeFacing(Facing f) { return f == Facing::None ? f : Facing((int(f) + 2) % 4); }
 
-GridPoint travelOf(Facing f) {
-  switch (f) {
-    case Facing::North: return {1, 0};
-    case Facing::East: return {0, -1};
-    case Facing::South: return {-1, 0};
-    case Facing::West: return {0, 1};
-    case Facing::None: break;
-  }
-  return {0, 0};
-}
+// Indexed by Facing: the clockwise travel direction and the outward normal.
+constexpr GridPoint kTravel[4] = {{1, 0}, {0, -1}, {-1, 0}, {0, 1}};
+constexpr GridPoint kNormal[4] = {{0, 1}, {1, 0}, {0, -1}, {-1, 0}};
 
-GridPoint normalOf(Facing f) {
-  switch (f) {
-    case Facing::North: return {0, 1};
-    case Facing::East: return {1, 0};
-    case Facing::South: return {0, -1};
-    case Facing::West: return {-1, 0};
-    case Facing::None: break;
-  }
-  return {0, 0};
-}
+GridPoint travelOf(Facing f) { return f == Facing::None ? GridPoint{0, 0} : kTravel[int(f)]; }
+
+GridPoint normalOf(Facing f) { return f == Facing::None ? GridPoint{0, 0} : kNormal[int(f)]; }
 
 // The facing whose travel direction is the unit vector d.
 static Facing facingTravelling(GridPoint d) {
@@ -231,7 +217,9 @@ SplitNodes ShapeTree::faceSplit(int leaf, GridCoord at, std::string* why) {
   for (int a = leaf; a >= 0; a = nodes_[std::size_t(a)].parent) {
     const int cap = nodes_[std::size_t(a)].splitLimit;
     if (cap >= 0 && splitCount(a) + 1 > cap)
-      return say(why, "the subtree at node " + std::to_string(a) + " allows " + std::to_string(cap) + " splits (Eq. 6.1)"), SplitNodes{};
+      return say(why,
+                 "the subtree at node " + std::to_string(a) + " allows " + std::to_string(cap) + " splits (Eq. 6.1)"),
+             SplitNodes{};
   }
   history_.push_back(save());
   const int op = int(history_.size()) - 1;
@@ -289,10 +277,9 @@ bool ShapeTree::faceAdvance(int leaf, GridCoord alpha, std::string* why) {
 
   // The swept rectangle joins the boxes (outward) or leaves them (inward).
   const GridPoint far0 = add(moved.from, nrm, alpha), far1 = add(moved.to, nrm, alpha);
-  const GridRect swept{std::min({moved.from.x, moved.to.x, far0.x, far1.x}),
-                       std::min({moved.from.y, moved.to.y, far0.y, far1.y}),
-                       std::max({moved.from.x, moved.to.x, far0.x, far1.x}),
-                       std::max({moved.from.y, moved.to.y, far0.y, far1.y})};
+  const GridRect swept{
+      std::min({moved.from.x, moved.to.x, far0.x, far1.x}), std::min({moved.from.y, moved.to.y, far0.y, far1.y}),
+      std::max({moved.from.x, moved.to.x, far0.x, far1.x}), std::max({moved.from.y, moved.to.y, far0.y, far1.y})};
   if (alpha > 0) {
     bool merged = false;
     if (!boxes_.empty() && boxOwner_.back() == leaf) {
@@ -318,7 +305,9 @@ bool ShapeTree::faceAdvance(int leaf, GridCoord alpha, std::string* why) {
   const auto out = outline();
   if (!simpleRectilinear(out, &reason) || area() != oldArea + alpha * nodes_[std::size_t(leaf)].weight) {
     restore(std::move(before));
-    return say(why, "the footprint would stop being a simple polygon (" + (reason.empty() ? "it overlaps itself" : reason) + ")"), false;
+    return say(why, "the footprint would stop being a simple polygon (" +
+                        (reason.empty() ? "it overlaps itself" : reason) + ")"),
+           false;
   }
   history_.push_back(std::move(before));
   return true;
@@ -339,7 +328,8 @@ bool ShapeTree::setSplitLimit(int node, int limit, std::string* why) {
   auto childrenFit = [&](int n, int cap) {
     if (cap < 0) return true;
     int sum = 0;
-    for (int c : nodes_[std::size_t(n)].children) sum += std::max(0, c == node ? limit : nodes_[std::size_t(c)].splitLimit);
+    for (int c : nodes_[std::size_t(n)].children)
+      sum += std::max(0, c == node ? limit : nodes_[std::size_t(c)].splitLimit);
     return sum <= cap;
   };
   const int parent = nodes_[std::size_t(node)].parent;
@@ -360,7 +350,8 @@ bool ShapeTree::undo() {
   if (history_.empty()) return false;
   // Split caps are settings, not ops: they survive undo on the nodes that remain.
   Saved& back = history_.back();
-  for (std::size_t i = 0; i < back.nodes.size() && i < nodes_.size(); ++i) back.nodes[i].splitLimit = nodes_[i].splitLimit;
+  for (std::size_t i = 0; i < back.nodes.size() && i < nodes_.size(); ++i)
+    back.nodes[i].splitLimit = nodes_[i].splitLimit;
   restore(std::move(back));
   history_.pop_back();
   return true;

@@ -26,7 +26,8 @@ struct Box2 {
 
 Box2 boundsOf(const Layout& l) {
   Box2 b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-  for (const PlanRect& r : l.rects) b = {std::min(b.x0, r.x0), std::min(b.y0, r.y0), std::max(b.x1, r.x1), std::max(b.y1, r.y1)};
+  for (const PlanRect& r : l.rects)
+    b = {std::min(b.x0, r.x0), std::min(b.y0, r.y0), std::max(b.x1, r.x1), std::max(b.y1, r.y1)};
   return b;
 }
 
@@ -76,7 +77,9 @@ std::vector<Segment> segmentsOf(const Layout& l, const Box2& box) {
     const double edge0 = axis == 0 ? box.x0 : box.y0, edge1 = axis == 0 ? box.x1 : box.y1;
     for (auto& [c, sides] : byLine) {
       if (c == edge0 || c == edge1) continue;
-      std::sort(sides.begin(), sides.end(), [&](auto& a, auto& b) { return lowAcross(l.rects[a.first], axis) < lowAcross(l.rects[b.first], axis); });
+      std::sort(sides.begin(), sides.end(), [&](auto& a, auto& b) {
+        return lowAcross(l.rects[a.first], axis) < lowAcross(l.rects[b.first], axis);
+      });
       Segment cur;
       cur.axis = axis;
       bool open = false;
@@ -105,7 +108,8 @@ std::pair<double, double> range(const Layout& l, const Segment& s, double minWid
   // Its ends now (the segments it ends on may have moved since it was found).
   double from = INFINITY, to = -INFINITY;
   for (const auto* side : {&s.before, &s.after})
-    for (std::size_t i : *side) from = std::min(from, lowAcross(l.rects[i], s.axis)), to = std::max(to, highAcross(l.rects[i], s.axis));
+    for (std::size_t i : *side)
+      from = std::min(from, lowAcross(l.rects[i], s.axis)), to = std::max(to, highAcross(l.rects[i], s.axis));
   double lo = -INFINITY, hi = INFINITY;
   for (std::size_t i : s.before) {
     PlanRect r = l.rects[i];
@@ -166,7 +170,8 @@ bool pushTo(Layout& l, const SegmentIndex& ix, int k, double want, int dir, doub
   if (dir > 0 ? c >= want : c <= want) return true;
   double from = INFINITY, to = -INFINITY;
   for (const auto* side : {&s.before, &s.after})
-    for (std::size_t i : *side) from = std::min(from, lowAcross(l.rects[i], ax)), to = std::max(to, highAcross(l.rects[i], ax));
+    for (std::size_t i : *side)
+      from = std::min(from, lowAcross(l.rects[i], ax)), to = std::max(to, highAcross(l.rects[i], ax));
   const double gap = dir > 0 ? minWidth : -minWidth;
   // Cascading: the far sides of the rectangles being squeezed.
   std::vector<std::pair<int, double>> ahead;  // (segment, where that side is now)
@@ -177,7 +182,8 @@ bool pushTo(Layout& l, const SegmentIndex& ix, int k, double want, int dir, doub
   // Staircase: sides with a corner ahead on the segments this one ends on.
   for (std::size_t i = 0; i < l.rects.size(); ++i) {
     PlanRect r = l.rects[i];
-    if (lowAcross(r, ax) != from && lowAcross(r, ax) != to && highAcross(r, ax) != from && highAcross(r, ax) != to) continue;
+    if (lowAcross(r, ax) != from && lowAcross(r, ax) != to && highAcross(r, ax) != from && highAcross(r, ax) != to)
+      continue;
     for (int high = 0; high < 2; ++high) {
       const double along = high ? highSide(r, ax) : lowSide(r, ax);
       if (dir > 0 ? (along > c && along < want + minWidth) : (along < c && along > want - minWidth))
@@ -233,7 +239,9 @@ Layout Layout::of(const Cartogram& c) {
   return l;
 }
 
-int Layout::subUnits() const { return int(std::count_if(unit.begin(), unit.end(), [](int u) { return u >= 0; })); }
+int Layout::subUnits() const {
+  return int(std::count_if(unit.begin(), unit.end(), [](int u) { return u >= 0; }));
+}
 
 double maxAreaError(const Layout& l) {
   const double M = target(l);
@@ -263,7 +271,8 @@ SizingResult sizeGeometry(Layout& l, const SizingOptions& o) {
         for (std::size_t i : *side) priority[k] = std::max(priority[k], rectError(l, i, M, m));
     std::vector<std::size_t> order(segs.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
     bool moved = false;
     for (std::size_t k : order) {
       const Segment& s = segs[k];

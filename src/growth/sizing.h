@@ -43,7 +43,8 @@ struct SizingResult {
 // one whose end would slide past a corner on the segment it ends on pushes that corner's
 // segment (staircase), on to the box, which does not move. Refused (unchanged) when the
 // targets are not realizable or the pushes reach the box.
-bool realizeBySegments(Layout& l, const std::vector<Correspondence>& targets, double minWidth, std::string* why = nullptr);
+bool realizeBySegments(Layout& l, const std::vector<Correspondence>& targets, double minWidth,
+                       std::string* why = nullptr);
 
 double maxAreaError(const Layout& l);
 SizingResult sizeGeometry(Layout& l, const SizingOptions& options = {});

@@ -3,9 +3,9 @@
 // realization keeping ≺x and ≺z for every pair of corners.
 #include "growth/cartogram.h"
 
+#include "grid_oracle.h"
 #include "growth/collapse.h"
 #include "growth/completion.h"
-#include "grid_oracle.h"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +46,8 @@ TEST(BoundaryPath, AContactAheadCutsTheEdge) {
   plan.addUnit(ShapeTree::canonical({0, 0}, 4, 4));
   plan.addUnit(ShapeTree::canonical({4, -2}, 4, 4));
   const BoundaryTrace t = traceBoundary(plan);
-  EXPECT_EQ(canonicalCycle(t.corners), canonicalCycle({{0, 4}, {4, 4}, {4, 2}, {8, 2}, {8, -2}, {4, -2}, {4, 0}, {0, 0}}));
+  EXPECT_EQ(canonicalCycle(t.corners),
+            canonicalCycle({{0, 4}, {4, 4}, {4, 2}, {8, 2}, {8, -2}, {4, -2}, {4, 0}, {0, 0}}));
   EXPECT_GT(t.cases[int(TraceCase::ContactAhead)], 0);
   // The four extremal paths: top (y = 4) to right (x = 8), and so on round.
   const auto& c = t.corners;

@@ -51,12 +51,12 @@ TEST(FormComplexity, TypeIMovesGiveTheSeriesOneEighthTwoTenthsThreeTwelfths) {
   // staircase around each other, alternately, as Fig. 7.3 begins it.
   const GridCoord n = 10, h = 40;
   Floorplan plan;
-  plan.addUnit(ShapeTree::canonical({0, 0}, n, n));      // T1
-  plan.addUnit(ShapeTree::canonical({n, 0}, 6, h));      // T2
+  plan.addUnit(ShapeTree::canonical({0, 0}, n, n));  // T1
+  plan.addUnit(ShapeTree::canonical({n, 0}, 6, h));  // T2
   EXPECT_EQ(fq(plan), Fraction::of(1, 8));
-  int west = kW;       // T2's west-facing piece that still has free length above the contact
+  int west = kW;          // T2's west-facing piece that still has free length above the contact
   GridCoord contact = n;  // where, along it, the contact with T1 ends
-  int top = kN;        // T1's top piece (runs east), whose east end is under T2
+  int top = kN;           // T1's top piece (runs east), whose east end is under T2
   GridCoord topLen = n;
   for (int k = 1; k <= 16; ++k) {
     if (k % 2) {  // T2 steps west over T1

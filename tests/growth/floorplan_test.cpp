@@ -67,7 +67,8 @@ TEST(Floorplan, RandomOperatorsKeepUnitsApartAndLinksExact) {
   for (int trial = 0; trial < 25; ++trial) {
     Floorplan plan;
     for (int i = 0; i < 4; ++i) plan.addUnit(ShapeTree::canonical({GridCoord(i % 2) * 6, GridCoord(i / 2) * 6}, 6, 6));
-    std::vector<std::pair<std::size_t, decltype(test::recorded(plan))>> states{{plan.historySize(), test::recorded(plan)}};
+    std::vector<std::pair<std::size_t, decltype(test::recorded(plan))>> states{
+        {plan.historySize(), test::recorded(plan)}};
     for (int step = 0; step < 60; ++step) {
       const int u = int(rng() % plan.units().size());
       const std::vector<int> leaves = plan.unit(u).leaves();

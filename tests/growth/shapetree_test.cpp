@@ -37,7 +37,7 @@ TEST(ShapeTree, SplitThenAdvanceMakesTheLShapeOfFig64) {
   ASSERT_GE(s.first, 0);
   EXPECT_EQ(t.node(kE).children, (std::vector<int>{s.first, s.virtualNode, s.second}));
   EXPECT_TRUE(t.node(s.virtualNode).isVirtual());
-  EXPECT_EQ(t.faceCount(), 5);  // the two pieces are faces, the virtual node is not
+  EXPECT_EQ(t.faceCount(), 5);        // the two pieces are faces, the virtual node is not
   EXPECT_EQ(t.outline().size(), 4u);  // geometry unchanged
   // Advance b2 east by 3 (Fig. 6.6): the virtual node becomes a north-facing step of length 3
   // and the next edge (south) grows by 3.
@@ -85,9 +85,9 @@ TEST(ShapeTree, RefusesSplitsOffTheEdgeAndAdvancesThatBreakTheOutline) {
   EXPECT_NE(why.find("negative"), std::string::npos);
   // A U: the south edge notched from below; then pushing one arm through the other.
   ShapeTree u = ShapeTree::canonical({0, 0}, 6, 4);
-  const SplitNodes a = u.faceSplit(kS, 2);  // south runs west: (6,0) → (4,0) | (4,0) → (0,0)
+  const SplitNodes a = u.faceSplit(kS, 2);        // south runs west: (6,0) → (4,0) | (4,0) → (0,0)
   const SplitNodes b = u.faceSplit(a.second, 2);  // (4,0) → (2,0) | (2,0) → (0,0)
-  ASSERT_TRUE(u.faceAdvance(b.first, -3));  // a 2 × 3 notch
+  ASSERT_TRUE(u.faceAdvance(b.first, -3));        // a 2 × 3 notch
   EXPECT_EQ(u.area(), 24 - 6);
   const auto before = u.outline();
   // The notch's west wall (the second split's virtual node, now an east-facing edge at x=2)
@@ -120,14 +120,14 @@ TEST(ShapeTree, SplitCountsCapSubtrees) {
   std::string why;
   EXPECT_LT(t.faceSplit(s.second, 3, &why).first, 0);  // a third split under a
   EXPECT_NE(why.find("Eq. 6.1"), std::string::npos);
-  EXPECT_GE(t.faceSplit(kE, 6).first, 0);  // other subtrees are free
-  EXPECT_FALSE(t.setSplitLimit(kN, 1));    // it already has two
+  EXPECT_GE(t.faceSplit(kE, 6).first, 0);      // other subtrees are free
+  EXPECT_FALSE(t.setSplitLimit(kN, 1));        // it already has two
   EXPECT_FALSE(t.setSplitLimit(s.second, 3));  // more than the parent's 2
   EXPECT_TRUE(t.setSplitLimit(s.second, 0));
   EXPECT_TRUE(t.undo());
   EXPECT_TRUE(t.undo());
   EXPECT_GE(t.faceSplit(s.first, 2).first, 0);  // undo gave the split back
-  EXPECT_EQ(t.node(s.second).splitLimit, 0);     // and kept the caps
+  EXPECT_EQ(t.node(s.second).splitLimit, 0);    // and kept the caps
   EXPECT_LT(t.faceSplit(s.second, 2).first, 0);
 }
 

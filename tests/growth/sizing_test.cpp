@@ -3,8 +3,8 @@
 // rectangle inverts and ≺x / ≺z are kept.
 #include "growth/sizing.h"
 
-#include "growth/completion.h"
 #include "grid_oracle.h"
+#include "growth/completion.h"
 
 #include <gtest/gtest.h>
 
@@ -130,7 +130,8 @@ TEST(EdgeMoves, RandomTargetsKeepBothRelationsOrChangeNothing) {
         const Relations before = relationsOf(l.rects);
         const CornerRef corner{int(rng() % l.rects.size()), int(rng() % 4)};
         const auto at = cornerAt(l.rects, corner);
-        const Correspondence t{corner, at[0] + double(int(rng() % 9) - 4) * 0.5, at[1] + double(int(rng() % 9) - 4) * 0.5};
+        const Correspondence t{corner, at[0] + double(int(rng() % 9) - 4) * 0.5,
+                               at[1] + double(int(rng() % 9) - 4) * 0.5};
         const Layout was = l;
         if (!realizeBySegments(l, {t}, 0.4)) {
           ++refused;
