@@ -1,4 +1,5 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs, grow). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs, grow, complete). Thin: parse, call, report.
+#include "cli/complete.h"
 #include "cli/grow.h"
 #include "cli/kifs_command.h"
 #include "cli/number_list.h"
@@ -64,6 +65,10 @@ usage:
   corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
                     [--view-maps exact|raster|gl] [--pixel M]
                     Grows housing units on a site (docs/growth.md); prints one JSON line.
+  corbel-cli complete --seeds N --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S]
+                    [--out FILE] [--render PNG]
+                    Completes forms from N seed units with F_q in [LO, HI] (docs/growth.md),
+                    fitted and sized into the region; prints one JSON line.
 )";
 constexpr const char* kUsageEnd = R"(  corbel-cli --version | --help
 
@@ -412,6 +417,7 @@ int main(int argc, char** argv) {
     if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics") return cli::runStatics(argc, argv);
     if (cmd == "grow") return corbel::cli::grow(argc, argv);
+    if (cmd == "complete") return corbel::cli::complete(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";
