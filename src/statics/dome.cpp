@@ -39,4 +39,26 @@ std::vector<Block> domeBlocks(const DomeSpec& spec) {
   return out;
 }
 
+std::vector<Block> drumBlocks(const DrumSpec& spec) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+  if (spec.courses < 1 || spec.courses > 1000) throw Error("drum: the number of courses must be in 1..1000");
+  if (spec.segments < 3 || spec.segments > 4096) throw Error("drum: the number of segments must be in 3..4096");
+  if (!positive(spec.radius) || !positive(spec.thickness) || spec.thickness >= 2 * spec.radius)
+    throw Error("drum: radius and thickness must be positive, the thickness below the diameter");
+  if (!positive(spec.height)) throw Error("drum: the height must be a positive number");
+  if (!positive(spec.density)) throw Error("drum: the density must be a positive number");
+  const double ri = spec.radius - spec.thickness / 2, ro = spec.radius + spec.thickness / 2, h = spec.height / spec.courses;
+  std::vector<Block> out;
+  for (int c = 0; c < spec.courses; ++c) {
+    const double shift = spec.bond && c % 2 ? 0.5 : 0.0;
+    for (int j = 0; j < spec.segments; ++j) {
+      const double a0 = 2 * std::numbers::pi * (j + shift) / spec.segments, a1 = 2 * std::numbers::pi * (j + 1 + shift) / spec.segments;
+      const std::vector<Vec3> base = {Vec3(ri * std::cos(a0), ri * std::sin(a0), c * h), Vec3(ro * std::cos(a0), ro * std::sin(a0), c * h),
+                                      Vec3(ro * std::cos(a1), ro * std::sin(a1), c * h), Vec3(ri * std::cos(a1), ri * std::sin(a1), c * h)};
+      out.push_back(prismBlock("course " + std::to_string(c) + " block " + std::to_string(j), base, Vec3(0.0, 0.0, h), spec.density));
+    }
+  }
+  return out;
+}
+
 }  // namespace corbel::statics

@@ -23,4 +23,21 @@ struct DomeSpec {
 // The springing ring stands on z = 0. Throws corbel::Error for a bad spec.
 std::vector<Block> domeBlocks(const DomeSpec& spec);
 
+// A drum: a round wall of `courses` courses, each of `segments` blocks, whose plan is the
+// ring between two regular polygons of `segments` sides (inner and outer circumradius
+// radius ∓ thickness / 2, so a dome of the same radius, thickness and segments sits on it
+// face to face). Course c is turned by half a block when `bond` and c is odd (running bond
+// round the drum). Block (c, j) spans the polygons' corners j and j + 1, z ∈ [c h, (c+1) h].
+struct DrumSpec {
+  int courses = 4;
+  int segments = 16;
+  double radius = 2.0;     // of the middle surface, m
+  double thickness = 0.3;  // m
+  double height = 2.0;     // m
+  bool bond = true;
+  double density = 2400.0;
+};
+
+std::vector<Block> drumBlocks(const DrumSpec& spec);
+
 }  // namespace corbel::statics

@@ -5,6 +5,7 @@
 #include "statics/builder.h"
 #include "statics/buttress.h"
 #include "statics/column.h"
+#include "statics/dome.h"
 #include "statics/shapes.h"
 #include "statics/vault.h"
 #include "statics/wall.h"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <string>
 
 namespace corbel::statics {
@@ -290,8 +292,69 @@ ParametricModel abbeyExample() {
   return m;
 }
 
+ParametricModel mosqueExample() {
+  ParametricModel m;
+  m.name = "mosque";
+  m.description = "Fig. 10 (c): a dome with an oculus on a round drum, propped by radial flying buttresses on piers";
+  m.parameters.add(param("radius", 3.0, 0.5, 30.0, "middle-surface radius of the dome and the drum, m"));
+  m.parameters.add(param("domeThickness", 0.25, 0.02, 3.0, "thickness of the dome, m"));
+  m.parameters.add(param("drumHeight", 5.0, 0.5, 60.0, "height of the drum, m"));
+  m.parameters.add(param("drumThickness", 0.3, 0.05, 5.0, "thickness of the drum's wall, m"));
+  m.parameters.add(param("courses", 5, 1, 100, "courses of the drum", false));
+  m.parameters.add(param("segments", 16, 6, 400, "blocks round the drum and the dome", false));
+  m.parameters.add(param("rings", 8, 1, 100, "rings of the dome up to its oculus", false));
+  m.parameters.add(param("flyers", 8, 0, 200, "radial flying buttresses, on every (segments / flyers)-th face of the drum", false));
+  m.parameters.add(param("reach", 1.0, 0.2, 40.0, "radius of the flyers' quarter arcs: their reach from the drum and their rise, m"));
+  m.parameters.add(param("flyerThickness", 0.4, 0.05, 3.0, "thickness of the flyers, m"));
+  m.parameters.add(param("pierWidth", 0.6, 0.05, 10.0, "width of the flyers' piers, m"));
+  m.suggestedFree = {{"drumThickness", 0.3, 1.5}, {"reach", 0.5, 3.0}};
+  m.build = [](const ParameterSet& p) {
+    const int segments = count(p, "segments"), flyers = count(p, "flyers");
+    DrumSpec drum;
+    drum.courses = count(p, "courses");
+    drum.segments = segments;
+    drum.radius = p["radius"];
+    drum.thickness = p["drumThickness"];
+    drum.height = p["drumHeight"];
+    // Stack bond: every course has its faces in the same vertical planes, so a flyer's head
+    // lies flat against the drum whatever courses it spans.
+    drum.bond = false;
+    DomeSpec dome;
+    dome.rings = count(p, "rings");
+    dome.segments = segments;
+    dome.radius = p["radius"];
+    dome.thickness = p["domeThickness"];
+    if (dome.thickness > drum.thickness)
+      throw Error("mosque: the dome (" + std::to_string(dome.thickness) + " m) is thicker than the drum that carries it (" +
+                  std::to_string(drum.thickness) + " m)");
+    StructureBuilder b;
+    b.add("drum", drumBlocks(drum));
+    b.add("dome", domeBlocks(dome), Vec3(0.0, 0.0, drum.height));
+    if (flyers > 0) {
+      if (segments % flyers) throw Error("mosque: " + std::to_string(flyers) + " flyers do not divide " + std::to_string(segments) + " segments");
+      FlyingButtressSpec f;
+      f.radius = p["reach"];
+      f.thickness = p["flyerThickness"];
+      f.pierWidth = p["pierWidth"];
+      f.pierHeight = drum.height - f.thickness / 2 - f.radius;
+      if (!(f.pierHeight > 0)) throw Error("mosque: the flyers' reach leaves no pier (reach ≥ drum height − flyer thickness / 2)");
+      const double face = 2 * (drum.radius + drum.thickness / 2) * std::sin(std::numbers::pi / segments);
+      f.depth = std::min(0.6, 0.5 * face);
+      // The drum's outer faces lie at the apothem of its outer polygon.
+      const double apothem = (drum.radius + drum.thickness / 2) * std::cos(std::numbers::pi / segments);
+      for (int k = 0; k < flyers; ++k) {
+        const double angle = 2 * std::numbers::pi * (k * (segments / flyers) + 0.5) / segments;
+        b.add("flyer " + std::to_string(k), rotatedZ(placed(flyingButtressBlocks(f), Vec3(apothem, -f.depth / 2, 0.0)), angle));
+      }
+    }
+    b.groundUnder(1.0);
+    return b.build();
+  };
+  return m;
+}
+
 std::vector<std::string> exampleNames() {
-  return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch", "chapel", "abbey"};
+  return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch", "chapel", "abbey", "mosque"};
 }
 
 ParametricModel exampleByName(const std::string& name) {
@@ -302,6 +365,7 @@ ParametricModel exampleByName(const std::string& name) {
   if (name == "flying-buttresses") return flyingButtressVaultExample();
   if (name == "chapel") return chapelExample();
   if (name == "abbey") return abbeyExample();
+  if (name == "mosque") return mosqueExample();
   std::string known;
   for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown example '" + name + "' (examples: " + known + ")");

@@ -48,6 +48,12 @@ ParametricModel chapelExample();
 // flyerThickness and reach (Table 1's four parameters).
 ParametricModel abbeyExample();
 
+// Fig. 10 (c): a hemispherical dome (`rings` rings of `segments` voussoirs up to a 10° oculus)
+// on a round drum of `courses` courses, propped by `flyers` radial flying buttresses whose
+// heads lie against the drum's faces at its top and whose piers stand on the ground (272
+// blocks by default). Free by default: drumThickness and reach.
+ParametricModel mosqueExample();
+
 std::vector<std::string> exampleNames();
 // Throws corbel::Error for an unknown name, listing the known ones.
 ParametricModel exampleByName(const std::string& name);

@@ -1,6 +1,7 @@
 #include "statics/shapes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace corbel::statics {
@@ -44,6 +45,16 @@ std::vector<Block> placed(std::vector<Block> blocks, const Vec3& offset, const s
   for (Block& b : blocks) {
     for (Vec3& v : b.vertices) v += offset;
     if (!prefix.empty()) b.name = prefix + "/" + b.name;
+  }
+  return blocks;
+}
+
+std::vector<Block> rotatedZ(std::vector<Block> blocks, double radians) {
+  const double c = std::cos(radians), sn = std::sin(radians);
+  auto turn = [&](Vec3& v) { v = Vec3(c * v[0] - sn * v[1], sn * v[0] + c * v[1], v[2]); };
+  for (Block& b : blocks) {
+    for (Vec3& v : b.vertices) turn(v);
+    turn(b.liveLoad);
   }
   return blocks;
 }

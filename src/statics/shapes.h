@@ -17,6 +17,9 @@ Block prismBlock(std::string name, const std::vector<Vec3>& base, const Vec3& ex
 // Blocks moved by `offset`, their names prefixed by "prefix/" when the prefix is not empty.
 std::vector<Block> placed(std::vector<Block> blocks, const Vec3& offset, const std::string& prefix = "");
 
+// The blocks turned by `radians` about the z-axis (counter-clockwise seen from above).
+std::vector<Block> rotatedZ(std::vector<Block> blocks, double radians);
+
 // The mirror image in the plane x = 0 (faces reversed so they still face outwards).
 std::vector<Block> mirroredX(std::vector<Block> blocks);
 

@@ -350,6 +350,8 @@ TEST(Templates, ExamplesHaveThePapersBlockCounts) {
   // Fig. 1 (Table 1: 986): 26 rings of 12 voussoirs, 5 wall courses, 5 flyer voussoirs and 3
   // pier courses a side.
   EXPECT_EQ(abbeyExample().build(abbeyExample().parameters).blocks.size(), 26u * (12 + 2 * (5 + 5 + 3)) + 1);
+  // Fig. 10 (c): 5 drum courses and 8 dome rings of 16, and 8 flyers of 5 voussoirs on 3 courses.
+  EXPECT_EQ(mosqueExample().build(mosqueExample().parameters).blocks.size(), 16u * 5 + 16 * 8 + 8 * (5 + 3) + 1);
   EXPECT_THROW(exampleByName("cathedral"), Error);
 }
 
