@@ -65,6 +65,10 @@ App::App(GLFWwindow* window, EditorOptions options)
     for (std::string line; std::getline(in, line);) scriptLines_.push_back(line);
     if (!options_.scriptShots.empty()) std::filesystem::create_directories(options_.scriptShots);
   }
+  if (!options_.select.empty()) {
+    if (const DocObject* o = history_.current().findByName(options_.select)) selected_ = o->id;
+    else log("--select: the project has no object named \"" + options_.select + "\"", true);
+  }
   syncScene(true);
   frameAll();
   checkRecovery();
@@ -404,6 +408,13 @@ void App::registerActions() {
                for (const auto& l : *lines) log(l, l.find("PROBLEMS") != std::string::npos);
              });
        }});
+  add({"statics.make_stand", "Statics", "Make It Stand",
+       "Search the selected masonry object's free parameters, within their bounds, for a structure that stands "
+       "(in the background; one undo step).",
+       {GLFW_KEY_M, true, true}, true, [this] { statics_.makeItStand(staticsHost()); },
+       [this] { return selectedMasonry() && !statics_.searching(); }});
+  add({"statics.cancel", "Statics", "Cancel Search", "Stop the running search; nothing changes.", {}, false,
+       [this] { statics_.cancelSearch(); }, [this] { return statics_.searching(); }});
   add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
        [this] { showHelp_ = true; }});
 }
@@ -837,6 +848,22 @@ void App::takeScreenshot(const std::string& path) {
   render::writePng(img, path);
 }
 
+const DocObject* App::selectedMasonry() const {
+  const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+  return o && std::holds_alternative<MasonrySpec>(o->spec) ? o : nullptr;
+}
+
+StaticsHost App::staticsHost() {
+  StaticsHost host;
+  host.doc = &history_.current();
+  host.object = selected_.value_or(0);
+  host.wait = scripted();
+  host.commit = [this](Document d, const std::string& label, const std::string& key) { commit(std::move(d), label, key); };
+  host.endDrag = [this] { history_.closeMerge(); };
+  host.log = [this](const std::string& line, bool error) { log(line, error); };
+  return host;
+}
+
 std::string App::windowTitle() const {
   std::string name = path_.empty() ? "untitled" : std::filesystem::path(path_).filename().string();
   return (history_.dirty() ? "* " : "") + name + " — corbel";
@@ -890,13 +917,27 @@ int App::run() {
     } else {
       panesFor_.reset();
     }
+    // The statics panel of a selected masonry object, in the same place.
+    const DocObject* masonry = selectedMasonry();
+    const bool staticsPane = masonry && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    if (staticsPane) {
+      if (staticsFor_ != masonry->id) statics_.reset();
+      staticsFor_ = masonry->id;
+      statics_.update(staticsHost());
+      const float top = ImGui::GetFrameHeight();
+      statics_.draw(staticsHost(), vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                    vp->Size.y - top - kStatusBarHeight);
+    } else {
+      staticsFor_.reset();
+      if (statics_.searching()) statics_.update(staticsHost());  // a search started before the selection changed
+    }
     drawHelp();
     drawModals();
     syncScene();  // edits made by the panels this frame
 
     vpX_ = vp->Pos.x + kLeftPanelWidth;
     vpY_ = vp->Pos.y + ImGui::GetFrameHeight();
-    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (panes ? kPaneWidth : 0.0f));
+    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (panes || staticsPane ? kPaneWidth : 0.0f));
     vpH_ = std::max(1.0f, vp->Size.y - ImGui::GetFrameHeight() - kStatusBarHeight);
     if (firstFrame_) {
       frameAll();
@@ -918,6 +959,11 @@ int App::run() {
       return o && o->visible;
     };
     settings_.highlight = selected_;
+    // Tension colours and force arrows of the selected masonry object, when it is shown.
+    renderer_->overlay().clear();
+    renderer_->overlayOnTop().clear();
+    if (const DocObject* m = selectedMasonry(); m && m->visible)
+      statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
     renderer_->setScene(scene_, settings_);
     renderer_->draw(camera_, int(vpX_ * sx), int((vp->Size.y - vpY_ - vpH_) * sy), int(vpW_ * sx), int(vpH_ * sy),
                     settings_);

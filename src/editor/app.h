@@ -10,6 +10,7 @@
 #include "editor/actions.h"
 #include "editor/extrusion_panes.h"
 #include "editor/file_dialog.h"
+#include "editor/statics_panel.h"
 #include "render/camera.h"
 #include "render/renderer.h"
 
@@ -36,6 +37,7 @@ struct EditorOptions {
   double autosaveSeconds = 60.0;
   enum class Recover { Ask, Yes, No } recover = Recover::Ask;
   std::string stateDir;             // recovery and recent files ("" = defaultStateDir())
+  std::string select;               // select the object of this name at start
 };
 
 class App {
@@ -77,6 +79,9 @@ class App {
   void frameAll();
   void takeScreenshot(const std::string& path);
   void runScriptLine();
+  // The selected object when it is masonry, for the statics panel.
+  const DocObject* selectedMasonry() const;
+  StaticsHost staticsHost();
   std::string windowTitle() const;
 
   GLFWwindow* window_;
@@ -123,6 +128,8 @@ class App {
   std::size_t scriptedIndex_ = 0;
   ExtrusionPanes panes_;
   std::optional<ObjectId> panesFor_;
+  StaticsPanel statics_;
+  std::optional<ObjectId> staticsFor_;
   std::vector<std::string> scriptLines_;
   std::size_t scriptLine_ = 0;
   int shotAtFrame_ = -1;
