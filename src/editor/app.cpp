@@ -6,6 +6,7 @@
 #include "core/project_io.h"
 #include "extrude/edit.h"
 #include "extrude/kernel.h"
+#include "kifs/kernel.h"
 #include "statics/kernel.h"
 #include "render/gl.h"
 #include "render/image.h"
@@ -39,6 +40,7 @@ App::App(GLFWwindow* window, EditorOptions options)
       recent_(stateDirOr(options_.stateDir) + "/recent.json") {
   extrude::registerKernel(sync_);
   statics::registerKernel(sync_);
+  kifs::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());
   registerActions();
@@ -113,6 +115,7 @@ void App::frameAll() {
   BBox box;
   for (const DocObject& o : history_.current().objects)
     if (o.visible) box.add(scene_.bounds(o.id));
+  box.add(render::raymarchedKifs(history_.current(), settings_.visible).bounds);
   camera_.frame(box, vpW_ / std::max(vpH_, 1.0f));
 }
 
@@ -338,6 +341,15 @@ void App::registerActions() {
          commit(std::move(d), "Add extrusion");
          selected_ = id;
          if (box.empty()) firstFrame_ = true;  // frame the first object of a new scene
+       }});
+  add({"object.add_kifs", "Object", "Add KIFS Building",
+       "Add a KIFS fractal building (McGraw; the box preset) at the origin; edit it in the KIFS panel.", {}, true,
+       [this, doc] {
+         Document d = doc();
+         const ObjectId id = d.add("KIFS building", kifs::specOf(kifs::preset("box"), "box"));
+         commit(std::move(d), "Add KIFS building");
+         selected_ = id;
+         firstFrame_ = true;
        }});
   add({"object.duplicate", "Object", "Duplicate", "Copy the selected object beside itself.", {GLFW_KEY_D, true}, true,
        [this, doc] {
@@ -581,6 +593,10 @@ void App::drawObjectProperties(const DocObject& object) {
 
   ImGui::Separator();
   ImGui::TextDisabled("Shell");
+  if (const auto* k = std::get_if<KifsSpec>(&object.spec); k && k->meshResolution == 0) {
+    ImGui::TextWrapped("Ray-marched: no shell in the Scene (KIFS panel > Mesh to Scene makes one).");
+    return;
+  }
   const ValidityReport r = scene_.validate(object.id);
   ImGui::Text("%zu faces, %zu vertices, %zu edges", r.faces, r.vertices, r.edges);
   ImGui::Text("Euler characteristic %ld, %zu component%s", r.euler, r.components, r.components == 1 ? "" : "s");
@@ -917,6 +933,22 @@ int App::run() {
     } else {
       panesFor_.reset();
     }
+    // The KIFS panel of a selected KIFS building, in the same place.
+    const bool kifsPane =
+        sel && std::holds_alternative<KifsSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    if (kifsPane) {
+      KifsHost host;
+      host.doc = &history_.current();
+      host.object = sel->id;
+      host.building = live_.building();
+      if (auto it = sync_.status().find(sel->id); it != sync_.status().end()) host.error = it->second.error;
+      host.commit = [this](Document d, const std::string& label, const std::string& key) { commit(std::move(d), label, key); };
+      host.endDrag = [this] { history_.closeMerge(); };
+      host.log = [this](const std::string& line, bool error) { log(line, error); };
+      const float top = ImGui::GetFrameHeight();
+      kifsPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                      vp->Size.y - top - kStatusBarHeight);
+    }
     // The statics panel of a selected masonry object, in the same place.
     const DocObject* masonry = selectedMasonry();
     const bool staticsPane = masonry && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
@@ -937,7 +969,7 @@ int App::run() {
 
     vpX_ = vp->Pos.x + kLeftPanelWidth;
     vpY_ = vp->Pos.y + ImGui::GetFrameHeight();
-    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (panes || staticsPane ? kPaneWidth : 0.0f));
+    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (panes || staticsPane || kifsPane ? kPaneWidth : 0.0f));
     vpH_ = std::max(1.0f, vp->Size.y - ImGui::GetFrameHeight() - kStatusBarHeight);
     if (firstFrame_) {
       frameAll();
@@ -965,8 +997,21 @@ int App::run() {
     if (const DocObject* m = selectedMasonry(); m && m->visible)
       statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
     renderer_->setScene(scene_, settings_);
-    renderer_->draw(camera_, int(vpX_ * sx), int((vp->Size.y - vpY_ - vpH_) * sy), int(vpW_ * sx), int(vpH_ * sy),
-                    settings_);
+    const int px = int(vpX_ * sx), py = int((vp->Size.y - vpY_ - vpH_) * sy), pw = int(vpW_ * sx), ph = int(vpH_ * sy);
+    renderer_->draw(camera_, px, py, pw, ph, settings_);
+    // KIFS buildings that are not meshed: ray-marched over the Scene, depth-tested against it.
+    const render::RaymarchedKifs raymarched = render::raymarchedKifs(doc, settings_.visible);
+    if (!raymarched.buildings.empty() && !kifsFailed_) {
+      try {
+        if (!kifsPass_) kifsPass_ = std::make_unique<render::KifsPass>();
+        for (const kifs::KifsParams& p : raymarched.buildings)
+          kifsPass_->draw(kifs::Building(render::kifsForView(p, camera_, ph)), camera_, px, py, pw, ph,
+                          render::KifsMode::Shaded);
+      } catch (const std::exception& e) {
+        log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);
+        kifsFailed_ = true;
+      }
+    }
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     if (shotAtFrame_ >= 0 && frame_ >= shotAtFrame_) {

@@ -10,8 +10,10 @@
 #include "editor/actions.h"
 #include "editor/extrusion_panes.h"
 #include "editor/file_dialog.h"
+#include "editor/kifs_panel.h"
 #include "editor/statics_panel.h"
 #include "render/camera.h"
+#include "render/kifs_pass.h"
 #include "render/renderer.h"
 
 #include <chrono>
@@ -130,6 +132,9 @@ class App {
   std::optional<ObjectId> panesFor_;
   StaticsPanel statics_;
   std::optional<ObjectId> staticsFor_;
+  KifsPanel kifsPanel_;
+  std::unique_ptr<render::KifsPass> kifsPass_;  // made when a KIFS building is first shown
+  bool kifsFailed_ = false;                      // its shader did not build (logged once)
   std::vector<std::string> scriptLines_;
   std::size_t scriptLine_ = 0;
   int shotAtFrame_ = -1;

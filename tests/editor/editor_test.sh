@@ -9,7 +9,9 @@
 #     pane (the shot differs from the same plan without it) and stays one closed shell; a
 #     missing image is reported in the log and the editor carries on;
 #  5. the masonry arch opens with its statics panel, and Make It Stand (a scripted action)
-#     changes it into an arch that the CLI's analysis calls standing.
+#     changes it into an arch that the CLI's analysis calls standing;
+#  6. a KIFS building is ray-marched in the 3D view: with its panel open, the shot differs from
+#     the same project with the building hidden.
 set -euo pipefail
 editor=$1 cli=$2 check=$3 example=$4 work=$5 script=${6:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -77,4 +79,11 @@ test -f "$work/state/recovery.corbel" || { echo "Make It Stand changed nothing (
 stood=$("$cli" statics "$work/state/recovery.corbel" --json)
 echo "after Make It Stand: $stood"
 grep -q '"stands":true' <<<"$stood" || { echo "the arch should stand after Make It Stand"; exit 1; }
+echo "== a KIFS building, ray-marched in the 3D view"
+kifs=$(dirname "$example")/kifs-h.corbel
+sed '0,/"visible": true/s//"visible": false/' "$kifs" > "$work/kifs-hidden.corbel"
+grep -q '"visible": false' "$work/kifs-hidden.corbel" || { echo "could not hide the KIFS building"; exit 1; }
+run --recover no --select "H building" --screenshot "$work/kifs.png" --quit-after-frames 6 "$kifs"
+run --recover no --select "H building" --screenshot "$work/kifs-hidden.png" --quit-after-frames 6 "$work/kifs-hidden.corbel"
+"$check" "$work/kifs.png" "$work/kifs-hidden.png" 0.05
 echo "editor test passed"
