@@ -11,6 +11,7 @@
 #include "extrude/footprints.h"
 #include "extrude/kernel.h"
 #include "statics/kernel.h"
+#include "growth/kernel.h"
 #include "kifs/kernel.h"
 #include "render/headless_context.h"
 #include "render/kifs_pass.h"
@@ -123,6 +124,7 @@ Loaded load(const std::string& path) {
   extrude::registerKernel(sync);
   statics::registerKernel(sync);
   kifs::registerKernel(sync);
+  growth::registerKernel(sync);
   sync.update(l.doc, l.scene);
   for (const auto& [id, st] : sync.status()) {
     const DocObject* o = l.doc.find(id);

@@ -218,6 +218,28 @@ KifsSpec kifsFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   return k;
 }
 
+// The site is written as the JSON object it holds, so a project embeds a site file verbatim.
+ojson growthToJson(const GrowthSpec& g) {
+  ojson j;
+  j["site"] = ojson::parse(g.site);
+  j["seed"] = g.seed;
+  j["steps"] = g.steps;
+  return j;
+}
+
+// The site's own keys are checked by the growth kernel (growth/site.h) when it builds the object.
+GrowthSpec growthFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"site", "seed", "steps"})) warnings.push_back(k + ": unknown key ignored");
+  GrowthSpec g;
+  const JsonReader site = r.at("site");
+  site.expectObject();
+  g.site = site.raw().dump();
+  if (auto v = r.find("seed")) g.seed = static_cast<std::uint64_t>(v->integer(0, (1L << 53)));
+  if (auto v = r.find("steps")) g.steps = static_cast<int>(v->integer(-1, limits::kMaxGrowthSteps));
+  return g;
+}
+
 ojson extrusionToJson(const ExtrusionSpec& e) {
   ojson j;
   j["material"] = e.material;
@@ -609,17 +631,20 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
       if (obj.name.empty()) nameReader.fail("name must not be empty");
       if (!names.insert(obj.name).second) nameReader.fail("name \"" + obj.name + "\" is used twice");
       if (auto v = o.find("visible")) obj.visible = v->boolean();
-      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry", "kifs"};
+      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry", "kifs", "growth"};
       int specCount = 0;
       for (const auto& key : specKeys) specCount += o.find(key) ? 1 : 0;
-      if (specCount == 0) o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\", \"kifs\"");
+      if (specCount == 0)
+        o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\", \"kifs\", \"growth\"");
       if (specCount > 1) o.fail("more than one spec: an object has exactly one");
       if (auto b = o.find("box")) obj.spec = boxFromJson(*b, out.warnings);
       else if (auto m = o.find("masonry")) obj.spec = masonryFromJson(*m, out.warnings);
       else if (auto k = o.find("kifs")) obj.spec = kifsFromJson(*k, out.warnings);
+      else if (auto g = o.find("growth")) obj.spec = growthFromJson(*g, out.warnings);
       else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
       if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
-      for (auto& k : o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "plan_background"}))
+      for (auto& k :
+           o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "plan_background"}))
         out.warnings.push_back(k + ": unknown key ignored");
       doc.objects.push_back(std::move(obj));
     }
@@ -650,6 +675,7 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     if (const auto* b = std::get_if<BoxSpec>(&o.spec)) j["box"] = boxToJson(*b);
     else if (const auto* m = std::get_if<MasonrySpec>(&o.spec)) j["masonry"] = masonryToJson(*m);
     else if (const auto* k = std::get_if<KifsSpec>(&o.spec)) j["kifs"] = kifsToJson(*k);
+    else if (const auto* g = std::get_if<GrowthSpec>(&o.spec)) j["growth"] = growthToJson(*g);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
     objects.push_back(std::move(j));

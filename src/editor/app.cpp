@@ -6,6 +6,7 @@
 #include "core/project_io.h"
 #include "extrude/edit.h"
 #include "extrude/kernel.h"
+#include "growth/kernel.h"
 #include "kifs/kernel.h"
 #include "statics/kernel.h"
 #include "render/gl.h"
@@ -41,6 +42,7 @@ App::App(GLFWwindow* window, EditorOptions options)
   extrude::registerKernel(sync_);
   statics::registerKernel(sync_);
   kifs::registerKernel(sync_);
+  growth::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());
   registerActions();
@@ -427,6 +429,16 @@ void App::registerActions() {
        [this] { return selectedMasonry() && !statics_.searching(); }});
   add({"statics.cancel", "Statics", "Cancel Search", "Stop the running search; nothing changes.", {}, false,
        [this] { statics_.cancelSearch(); }, [this] { return statics_.searching(); }});
+  auto growthSelected = [this] {
+    const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+    return o && std::holds_alternative<GrowthSpec>(o->spec);
+  };
+  add({"growth.step", "Growth", "Step", "Grow the selected site one step more (one undo step).", {}, true,
+       [this] { growthPanel_.step(growthHost()); }, growthSelected});
+  add({"growth.run", "Growth", "Run / Pause",
+       "Grow the selected site step by step as the view catches up, until every unit stops; again to pause.", {},
+       true, [this] { growthPanel_.toggleRun(growthHost()); }, growthSelected,
+       [this] { return growthPanel_.running(); }});
   add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
        [this] { showHelp_ = true; }});
 }
@@ -874,10 +886,39 @@ StaticsHost App::staticsHost() {
   host.doc = &history_.current();
   host.object = selected_.value_or(0);
   host.wait = scripted();
-  host.commit = [this](Document d, const std::string& label, const std::string& key) { commit(std::move(d), label, key); };
-  host.endDrag = [this] { history_.closeMerge(); };
+  host.commit = deferredCommit();
+  host.endDrag = deferredEndDrag();
   host.log = [this](const std::string& line, bool error) { log(line, error); };
   return host;
+}
+
+GrowthHost App::growthHost() {
+  GrowthHost host;
+  host.doc = &history_.current();
+  host.object = selected_.value_or(0);
+  host.current = live_.current();
+  if (auto it = sync_.status().find(host.object); it != sync_.status().end()) {
+    host.error = it->second.error;
+    host.warnings = it->second.warnings;
+  }
+  host.commit = deferredCommit();
+  host.endDrag = deferredEndDrag();
+  host.log = [this](const std::string& line, bool error) { log(line, error); };
+  return host;
+}
+
+// The panels right of the 3D view commit through these: the change is applied after they are
+// drawn, so nothing they still read of the current document moves under them (a commit may
+// reallocate the history), and in the order they made it.
+std::function<void(Document, const std::string&, const std::string&)> App::deferredCommit() {
+  return [this](Document d, const std::string& label, const std::string& key) {
+    auto doc = std::make_shared<Document>(std::move(d));
+    deferred_.push_back([this, doc, label, key] { commit(std::move(*doc), label, key); });
+  };
+}
+
+std::function<void()> App::deferredEndDrag() {
+  return [this] { deferred_.push_back([this] { history_.closeMerge(); }); };
 }
 
 std::string App::windowTitle() const {
@@ -894,7 +935,8 @@ int App::run() {
     }
     if (quitRequested_) break;
     // Sleep until input arrives unless something is moving or scripted.
-    if (job_ || live_.building() || options_.quitAfterFrames > 0 || frame_ < 3) glfwPollEvents();
+    if (job_ || live_.building() || growthPanel_.running() || options_.quitAfterFrames > 0 || frame_ < 3)
+      glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
 
     ImGui_ImplOpenGL3_NewFrame();
@@ -916,7 +958,7 @@ int App::run() {
     drawStatusBar();
     // The plan and profile panes of a selected extrusion, right of the 3D view.
     const ImGuiViewport* vp = ImGui::GetMainViewport();
-    const DocObject* sel = selected_ ? history_.current().find(*selected_) : nullptr;
+    const DocObject* sel = selected_ ? history_.current().find(*selected_) : nullptr;  // looked up again below
     const bool panes = sel && std::holds_alternative<ExtrusionSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
     if (panes) {
       if (panesFor_ != sel->id) panes_.reset();
@@ -933,7 +975,9 @@ int App::run() {
     } else {
       panesFor_.reset();
     }
-    // The KIFS panel of a selected KIFS building, in the same place.
+    // The KIFS panel of a selected KIFS building, in the same place. (The extrusion panes may
+    // have committed: look the selection up again.)
+    sel = selected_ ? history_.current().find(*selected_) : nullptr;
     const bool kifsPane =
         sel && std::holds_alternative<KifsSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
     if (kifsPane) {
@@ -942,12 +986,27 @@ int App::run() {
       host.object = sel->id;
       host.building = live_.building();
       if (auto it = sync_.status().find(sel->id); it != sync_.status().end()) host.error = it->second.error;
-      host.commit = [this](Document d, const std::string& label, const std::string& key) { commit(std::move(d), label, key); };
-      host.endDrag = [this] { history_.closeMerge(); };
+      host.commit = deferredCommit();
+      host.endDrag = deferredEndDrag();
       host.log = [this](const std::string& line, bool error) { log(line, error); };
       const float top = ImGui::GetFrameHeight();
       kifsPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
                       vp->Size.y - top - kStatusBarHeight);
+    }
+    // The growth panel of a selected growth site, in the same place.
+    const bool growthPane =
+        sel && std::holds_alternative<GrowthSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    if (growthPane) {
+      if (growthFor_ != sel->id) growthPanel_.reset();
+      growthFor_ = sel->id;
+      const GrowthHost host = growthHost();
+      growthPanel_.update(host);
+      const float top = ImGui::GetFrameHeight();
+      growthPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                        vp->Size.y - top - kStatusBarHeight);
+    } else {
+      growthFor_.reset();
+      growthPanel_.reset();
     }
     // The statics panel of a selected masonry object, in the same place.
     const DocObject* masonry = selectedMasonry();
@@ -963,13 +1022,16 @@ int App::run() {
       staticsFor_.reset();
       if (statics_.searching()) statics_.update(staticsHost());  // a search started before the selection changed
     }
+    for (auto& change : deferred_) change();
+    deferred_.clear();
     drawHelp();
     drawModals();
     syncScene();  // edits made by the panels this frame
 
     vpX_ = vp->Pos.x + kLeftPanelWidth;
     vpY_ = vp->Pos.y + ImGui::GetFrameHeight();
-    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (panes || staticsPane || kifsPane ? kPaneWidth : 0.0f));
+    const bool rightPane = panes || staticsPane || kifsPane || growthPane;
+    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (rightPane ? kPaneWidth : 0.0f));
     vpH_ = std::max(1.0f, vp->Size.y - ImGui::GetFrameHeight() - kStatusBarHeight);
     if (firstFrame_) {
       frameAll();

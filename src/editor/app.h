@@ -10,6 +10,7 @@
 #include "editor/actions.h"
 #include "editor/extrusion_panes.h"
 #include "editor/file_dialog.h"
+#include "editor/growth_panel.h"
 #include "editor/kifs_panel.h"
 #include "editor/statics_panel.h"
 #include "render/camera.h"
@@ -84,6 +85,9 @@ class App {
   // The selected object when it is masonry, for the statics panel.
   const DocObject* selectedMasonry() const;
   StaticsHost staticsHost();
+  GrowthHost growthHost();
+  std::function<void(Document, const std::string&, const std::string&)> deferredCommit();
+  std::function<void()> deferredEndDrag();
   std::string windowTitle() const;
 
   GLFWwindow* window_;
@@ -130,9 +134,12 @@ class App {
   std::size_t scriptedIndex_ = 0;
   ExtrusionPanes panes_;
   std::optional<ObjectId> panesFor_;
+  std::vector<std::function<void()>> deferred_;  // the panels' commits of this frame (deferredCommit)
   StaticsPanel statics_;
   std::optional<ObjectId> staticsFor_;
   KifsPanel kifsPanel_;
+  GrowthPanel growthPanel_;
+  std::optional<ObjectId> growthFor_;
   std::unique_ptr<render::KifsPass> kifsPass_;  // made when a KIFS building is first shown
   bool kifsFailed_ = false;                      // its shader did not build (logged once)
   std::vector<std::string> scriptLines_;

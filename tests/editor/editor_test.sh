@@ -11,7 +11,9 @@
 #  5. the masonry arch opens with its statics panel, and Make It Stand (a scripted action)
 #     changes it into an arch that the CLI's analysis calls standing;
 #  6. a KIFS building is ray-marched in the 3D view: with its panel open, the shot differs from
-#     the same project with the building hidden.
+#     the same project with the building hidden;
+#  7. two growth.step actions on the Alpha site grown 10 steps save it grown 12, and the saved
+#     site builds as closed shells.
 set -euo pipefail
 editor=$1 cli=$2 check=$3 example=$4 work=$5 script=${6:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -86,4 +88,14 @@ grep -q '"visible": false' "$work/kifs-hidden.corbel" || { echo "could not hide 
 run --recover no --select "H building" --screenshot "$work/kifs.png" --quit-after-frames 6 "$kifs"
 run --recover no --select "H building" --screenshot "$work/kifs-hidden.png" --quit-after-frames 6 "$work/kifs-hidden.corbel"
 "$check" "$work/kifs.png" "$work/kifs-hidden.png" 0.05
+echo "== growth: Step twice"
+alpha=$(dirname "$example")/housing-alpha.corbel
+sed 's/"steps": -1/"steps": 10/' "$alpha" > "$work/alpha10.corbel"
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions growth.step,growth.step --autosave-seconds 0 \
+  --screenshot "$work/growth.png" --quit-after-frames 8 "$work/alpha10.corbel"
+test -f "$work/state/recovery.corbel" || { echo "Step changed nothing (no recovery file)"; exit 1; }
+grep -q '"steps": 12' "$work/state/recovery.corbel" || { echo "two steps should make 12"; exit 1; }
+summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+[[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the grown site should be closed shells: $summary"; exit 1; }
 echo "editor test passed"

@@ -6,6 +6,7 @@
 #include "core/project_io.h"
 #include "core/scene.h"
 #include "test_support.h"
+#include "../common/one_object.h"
 
 #include <gtest/gtest.h>
 
@@ -92,17 +93,8 @@ TEST(KifsSpec, BadValuesNameTheFieldAsTheProjectFileDoes) {
   EXPECT_EQ(fault(s).rfind("kifs.iterations:", 0), 0u) << fault(s);
 }
 
-struct Synced {
-  Document doc;
-  Scene scene;
-  SceneSync sync;
-  ObjectId id = 0;
-  explicit Synced(const KifsSpec& spec) {
-    id = doc.add("K", spec);
-    registerKernel(sync);
-    sync.update(doc, scene);
-  }
-  const std::string& error() const { return sync.status().at(id).error; }
+struct Synced : corbel::test::OneObject {
+  explicit Synced(const KifsSpec& spec) : OneObject(spec, registerKernel) {}
 };
 
 TEST(KifsKernel, ARaymarchedBuildingHasNoFacesInTheScene) {

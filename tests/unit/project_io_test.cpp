@@ -336,7 +336,7 @@ TEST(ProjectIoErrors, MissingFields) {
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "box": {}}]})", "objects[0].name",
                "missing");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A"}]})", "objects[0]",
-               R"(no spec: expected one of "box", "extrusion", "masonry", "kifs")");
+               R"(no spec: expected one of "box", "extrusion", "masonry", "kifs", "growth")");
 }
 
 TEST(ProjectIoErrors, NonFiniteNumbers) {
@@ -760,9 +760,12 @@ TEST(ProjectIoErrors, MasonryFaultsNameTheirPath) {
 
 namespace {
 
-std::string withKifs(const std::string& body) {
-  return R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "K", "kifs": {)" + body + "}}]}";
+// A project of one object whose spec is `key` with this body.
+std::string withSpec(const std::string& key, const std::string& body) {
+  return R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "O", ")" + key + R"(": {)" + body +
+         "}}]}";
 }
+std::string withKifs(const std::string& body) { return withSpec("kifs", body); }
 
 }  // namespace
 
@@ -812,4 +815,42 @@ TEST(ProjectIoErrors, KifsFaultsNameTheirPath) {
   EXPECT_FAULT_CONTAINS(withKifs(R"("trace": {"maxSteps": 0})"), "objects[0].kifs.trace.maxSteps", "0");
   EXPECT_FAULT_CONTAINS(withKifs(R"("meshResolution": 5000)"), "objects[0].kifs.meshResolution", "5000");
   EXPECT_FAULT_CONTAINS(withKifs(R"("floors": {"sy": null})"), "objects[0].kifs.floors.sy", "number");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Growth sites: the site file's object embedded as it is, the seed and the steps.
+
+namespace {
+
+std::string withGrowth(const std::string& body) { return withSpec("growth", body); }
+
+}  // namespace
+
+TEST(ProjectIo, GrowthSpecsRoundTripWithTheSiteAsAnObject) {
+  corbel::GrowthSpec g;
+  g.site = R"({"envelope":{"origin":[0,0],"size":[30,20]},"seeds":[{"at":[1.5,2],"target_area":40}],"storeys":3})";
+  g.seed = 42;
+  g.steps = 17;
+  corbel::Document d;
+  d.add("site", g);
+  d.add("to the end", corbel::GrowthSpec{g.site, 1, -1});
+  const std::string text = corbel::serializeProject(d);
+  EXPECT_NE(text.find(R"("storeys": 3)"), std::string::npos) << "the site is an object in the file, not a string";
+  const corbel::LoadedProject back = corbel::parseProject(text);
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document), text);
+  const auto minimal = corbel::parseProject(withGrowth(R"("site": {})"));
+  EXPECT_EQ(std::get<corbel::GrowthSpec>(minimal.document.objects[0].spec), (corbel::GrowthSpec{"{}", 1, 0}));
+}
+
+TEST(ProjectIoErrors, GrowthFaultsNameTheirPath) {
+  EXPECT_FAULT(withGrowth(R"("seed": 1)"), "objects[0].growth.site", "missing");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": "alpha.json")"), "objects[0].growth.site", "object");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": {}, "seed": -1)"), "objects[0].growth.seed", "-1");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": {}, "steps": -2)"), "objects[0].growth.steps", "-2");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": {}, "steps": 1.5)"), "objects[0].growth.steps", "integer");
+  const auto w = corbel::parseProject(withGrowth(R"("site": {}, "speed": 2)"));
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_EQ(w.warnings[0], "objects[0].growth.speed: unknown key ignored");
 }
