@@ -985,6 +985,7 @@ int App::run() {
       host.doc = &history_.current();
       host.object = sel->id;
       host.building = live_.building();
+      host.fraction = live_.fraction();
       if (auto it = sync_.status().find(sel->id); it != sync_.status().end()) host.error = it->second.error;
       host.commit = deferredCommit();
       host.endDrag = deferredEndDrag();

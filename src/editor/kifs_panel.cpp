@@ -122,8 +122,12 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
 
   heading("Mesh");
   if (s.meshResolution > 0) {
-    ImGui::Text("Meshed into the Scene at %d cells%s", s.meshResolution, host.building ? " (building...)" : "");
-    if (ImGui::Button(host.building ? "Cancel meshing" : "Ray-march only")) {
+    ImGui::Text("Meshed into the Scene at %d cells", s.meshResolution);
+    if (host.building) {
+      ImGui::ProgressBar(float(host.fraction), ImVec2(-110, 0), "meshing");
+      ImGui::SameLine();
+    }
+    if (ImGui::Button(host.building ? "Cancel" : "Ray-march only")) {
       s.meshResolution = 0;
       label = "Ray-march " + o->name;
     }
