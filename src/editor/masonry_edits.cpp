@@ -78,8 +78,11 @@ std::vector<statics::FreeParameter> searchFreeOf(const MasonrySpec& spec) {
   return free;
 }
 
-statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress, int maxEvaluations) {
-  const statics::ParametricModel model = statics::modelOf(spec);
+namespace {
+
+// The search settings of a spec, reporting evaluations to `progress` and stopping when it is
+// cancelled.
+statics::SearchOptions searchOptionsOf(const MasonrySpec& spec, Progress* progress, int maxEvaluations) {
   statics::SearchOptions options;
   options.analysis.friction = spec.friction;
   options.analysis.kernShrink = spec.kern;
@@ -89,13 +92,31 @@ statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress,
     progress->report(std::min(1.0, double(p.evaluation) / maxEvaluations), "searching");
     return !progress->cancelled();
   };
-  if (progress && progress->cancelled()) {
-    statics::SearchResult r;
-    r.status = statics::SearchStatus::Cancelled;
-    r.message = "cancelled";
-    return r;
-  }
-  return statics::searchParameters(model, searchFreeOf(spec), options, &model.parameters);
+  return options;
+}
+
+statics::SearchResult cancelledSearch() {
+  statics::SearchResult r;
+  r.status = statics::SearchStatus::Cancelled;
+  r.message = "cancelled";
+  return r;
+}
+
+}  // namespace
+
+statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress, int maxEvaluations) {
+  const statics::ParametricModel model = statics::modelOf(spec);
+  if (progress && progress->cancelled()) return cancelledSearch();
+  return statics::searchParameters(model, searchFreeOf(spec), searchOptionsOf(spec, progress, maxEvaluations),
+                                   &model.parameters);
+}
+
+statics::SearchResult resolveAfterEdit(const MasonrySpec& spec, const std::string& name, Progress* progress) {
+  const statics::ParametricModel model = statics::modelOf(spec);
+  if (progress && progress->cancelled()) return cancelledSearch();
+  statics::SearchOptions options = searchOptionsOf(spec, progress, 200);
+  options.strictCheck = false;
+  return statics::updateAfterEdit(model, searchFreeOf(spec), model.parameters, name, model.parameters[name], options);
 }
 
 std::optional<Document> applySearch(const Document& doc, ObjectId id, const MasonrySpec& started,

@@ -36,6 +36,12 @@ std::vector<statics::FreeParameter> searchFreeOf(const MasonrySpec& spec);
 // and the search stops (status Cancelled) when the progress is cancelled.
 statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress = nullptr, int maxEvaluations = 200);
 
+// Interactive editing (Sec. 5, Fig. 13): the user has just set the fixed parameter `name` (the
+// spec holds its new value); the free parameters are searched again from the spec's values,
+// which are usually close (statics::updateAfterEdit, without the strict LP check, for speed).
+// Throws corbel::Error when `name` is free or unknown. Apply the result with applySearch.
+statics::SearchResult resolveAfterEdit(const MasonrySpec& spec, const std::string& name, Progress* progress = nullptr);
+
 // Applies a search result to object `id` as one change: the free parameters take the
 // result's values. Nothing is applied (nullopt, with the reason in `why`) when the search was
 // cancelled or failed, or when the object's spec is no longer `started` (it was edited or

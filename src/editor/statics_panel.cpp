@@ -42,7 +42,7 @@ bool collect(std::unique_ptr<BackgroundJob>& job, bool wait, std::string* error)
 }  // namespace
 
 StaticsPanel::~StaticsPanel() {
-  for (auto* job : {&analysis_, &search_})
+  for (auto* job : {&analysis_, &search_, &resolve_})
     if (*job) {
       (*job)->progress().cancel();
       (*job)->wait();
@@ -52,6 +52,7 @@ StaticsPanel::~StaticsPanel() {
 void StaticsPanel::reset() {
   if (analysis_) analysis_->progress().cancel();
   analysing_.reset();
+  pendingResolve_.reset();
   view_.reset();
   landscape_.reset();
   landscapeChoice_.clear();
@@ -114,7 +115,41 @@ void StaticsPanel::finishSearch(const StaticsHost& host) {
   }
 }
 
+void StaticsPanel::updateResolve(const StaticsHost& host) {
+  if (resolve_) {
+    std::string error;
+    const bool ok = collect(resolve_, host.wait, &error);
+    if (resolve_) return;  // still running
+    if (ok) {
+      // Into the drag's undo step (same merge key); dropped if the spec moved on meanwhile, and
+      // the newest value is re-solved next.
+      if (auto next = applySearch(*host.doc, resolveObject_, resolveStart_, *resolveResult_))
+        host.commit(std::move(*next), "Edit " + resolveParameter_,
+                    "masonry" + std::to_string(resolveObject_) + ".value." + resolveParameter_);
+    } else if (!error.empty()) {
+      host.log("Keeping it standing: " + error, true);
+    }
+  }
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!pendingResolve_ || !spec || search_) return;
+  resolveObject_ = o->id;
+  resolveStart_ = *spec;
+  resolveParameter_ = *pendingResolve_;
+  pendingResolve_.reset();
+  auto result = std::make_shared<statics::SearchResult>();
+  resolveResult_ = result;
+  const MasonrySpec start = *spec;
+  const std::string name = resolveParameter_;
+  resolve_ = std::make_unique<BackgroundJob>("Keep it standing", [result, start, name](Progress& progress) {
+    *result = resolveAfterEdit(start, name, &progress);
+    if (result->status == statics::SearchStatus::Cancelled) progress.cancel();
+  });
+  if (host.wait) updateResolve(host);
+}
+
 void StaticsPanel::update(const StaticsHost& host) {
+  updateResolve(host);
   if (search_) finishSearch(host);
   if (analysis_) {
     std::string error;
@@ -202,9 +237,13 @@ void StaticsPanel::drawParameters(const StaticsHost& host, const MasonrySpec& sp
     if (p.continuous) {
       float v = float(value);
       const float lo = std::isfinite(p.lo) ? float(p.lo) : -1e4f, hi = std::isfinite(p.hi) ? float(p.hi) : 1e4f;
-      if (ImGui::DragFloat("##value", &v, 0.002f, lo, hi, "%.4f", ImGuiSliderFlags_AlwaysClamp))
+      if (ImGui::DragFloat("##value", &v, 0.002f, lo, hi, "%.4f", ImGuiSliderFlags_AlwaysClamp)) {
         apply([&](Document& d) { setMasonryParameter(d, host.object, p.name, v); }, "Edit " + p.name,
               "value." + p.name);
+        const bool isFree =
+            std::any_of(spec.free.begin(), spec.free.end(), [&](const MasonryFree& f) { return f.name == p.name; });
+        if (interactive_ && !isFree && !spec.free.empty()) pendingResolve_ = p.name;
+      }
     } else {
       int v = int(std::lround(value));
       const int lo = std::isfinite(p.lo) ? int(p.lo) : 0, hi = std::isfinite(p.hi) ? int(std::min(p.hi, 1e6)) : 1000;
@@ -300,6 +339,16 @@ void StaticsPanel::drawSearch(const StaticsHost& host) {
     if (ImGui::Button("Cancel")) cancelSearch();
   } else {
     if (ImGui::Button("Make it stand")) makeItStand(host);
+    ImGui::SameLine();
+    ImGui::Checkbox("Keep it standing while I drag", &interactive_);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Fig. 13: after each change to a fixed parameter, the free ones are searched again from where "
+          "they are, in the background, into the same undo step");
+    if (resolve_) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("re-solving...");
+    }
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
           "Move the free parameters within their bounds to minimise y (the model's suggested ones when "

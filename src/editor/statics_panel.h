@@ -2,7 +2,8 @@
 // The statics panel of a selected masonry object (Whiting et al. 2009), right of the 3D view:
 // the model's parameters, which are free for the search and within what bounds, the analysis
 // (y, y/W², status, iterations, tension sites), "Make it stand" (Sec. 4) with progress and
-// Cancel, and the energy landscape over one parameter (Fig. 8). The analysis, the landscape
+// Cancel, keeping it standing while a fixed parameter is dragged (Fig. 13), and the energy
+// landscape over one parameter (Fig. 8). The analysis, the landscape
 // and the search run on worker threads (core/progress.h); the panel only reads their results
 // and commits Document changes (editor/masonry_edits.h), so every edit is undoable. The
 // viewport shows blocks coloured by their share of tension and the interface forces.
@@ -51,6 +52,8 @@ class StaticsPanel {
  private:
   void startAnalysis(const MasonrySpec& spec);
   void finishSearch(const StaticsHost& host);
+  // Interactive editing (Fig. 13): re-solves the free parameters after a fixed one was dragged.
+  void updateResolve(const StaticsHost& host);
   void drawParameters(const StaticsHost& host, const MasonrySpec& spec);
   void drawAnalysis(const MasonrySpec& spec);
   void drawSearch(const StaticsHost& host);
@@ -75,6 +78,14 @@ class StaticsPanel {
   MasonrySpec searchStart_;
   std::shared_ptr<statics::SearchResult> searchResult_;
   std::optional<statics::SearchResult> lastSearch_;
+
+  bool interactive_ = false;
+  std::optional<std::string> pendingResolve_;  // a fixed parameter dragged since the last re-solve
+  std::unique_ptr<BackgroundJob> resolve_;
+  ObjectId resolveObject_ = 0;
+  MasonrySpec resolveStart_;
+  std::string resolveParameter_;
+  std::shared_ptr<statics::SearchResult> resolveResult_;
 
   bool colours_ = true, arrows_ = true;
 };

@@ -160,6 +160,37 @@ TEST(MakeItStand, AResultForAStructureEditedMeanwhileIsNotApplied) {
   EXPECT_FALSE(applySearch(gone, e.id, start, r, &why));
 }
 
+// Fig. 13: narrowing the columns (a fixed parameter) makes the arch fall; the free thickness,
+// searched again from where it was, makes it stand on the narrower columns, by the strict LP
+// test (thicker, the arch's thrust line stays inside the columns).
+TEST(ResolveAfterEdit, TheFreeParametersFollowADraggedFixedOne) {
+  Example e;
+  setMasonryFree(e.doc, e.id, "columnWidth", std::nullopt);  // only the thickness is free, in [0.05, 0.5]
+  setMasonryParameter(e.doc, e.id, "columnWidth", 0.5);
+  setMasonryParameter(e.doc, e.id, "thickness", 0.2);
+  statics::AnalysisOptions options;
+  options.friction = e.spec().friction;
+  auto stands = [&](const MasonrySpec& s) {
+    const statics::ParametricModel m = statics::modelOf(s);
+    return statics::checkFeasibility(m.build(m.parameters), options).feasible;
+  };
+  ASSERT_TRUE(stands(e.spec()));
+  setMasonryParameter(e.doc, e.id, "columnWidth", 0.3);  // the drag
+  ASSERT_FALSE(stands(e.spec()));
+  const MasonrySpec started = e.spec();
+  const statics::SearchResult r = resolveAfterEdit(started, "columnWidth");
+  ASSERT_EQ(r.status, statics::SearchStatus::Feasible) << r.message;
+  const auto next = applySearch(e.doc, e.id, started, r);
+  ASSERT_TRUE(next);
+  const MasonrySpec& after = std::get<MasonrySpec>(next->find(e.id)->spec);
+  const statics::ParametricModel m = statics::modelOf(after);
+  EXPECT_EQ(m.parameters["columnWidth"], 0.3);
+  EXPECT_GT(m.parameters["thickness"], 0.2);
+  EXPECT_LE(m.parameters["thickness"], 0.5);
+  EXPECT_TRUE(stands(after));
+  EXPECT_THROW(resolveAfterEdit(started, "thickness"), Error);  // a free parameter: the search sets it
+}
+
 TEST(MakeItStand, WithNoFreeParameterTheModelsSuggestionIsSearched) {
   Example e;
   MasonrySpec s = e.spec();
