@@ -12,7 +12,10 @@
 #include "extrude/footprints.h"
 #include "extrude/kernel.h"
 #include "statics/kernel.h"
+#include "growth/kernel.h"
+#include "kifs/kernel.h"
 #include "render/headless_context.h"
+#include "render/kifs_pass.h"
 #include "cli/statics_cli.h"
 
 #include <nlohmann/json.hpp>
@@ -126,6 +129,8 @@ Loaded load(const std::string& path) {
   SceneSync sync;
   extrude::registerKernel(sync);
   statics::registerKernel(sync);
+  kifs::registerKernel(sync);
+  growth::registerKernel(sync);
   sync.update(l.doc, l.scene);
   for (const auto& [id, st] : sync.status()) {
     const DocObject* o = l.doc.find(id);
@@ -175,7 +180,9 @@ int cmdRender(const Args& a) {
   BBox box;
   for (const auto& [id, info] : l.scene.objects())
     if (settings.visible(id)) box.add(l.scene.bounds(id));
-
+  // KIFS buildings that are not meshed are ray-marched over the Scene (render/kifs_pass.h).
+  const render::RaymarchedKifs raymarched = render::raymarchedKifs(l.doc, settings.visible);
+  box.add(raymarched.bounds);
   render::OrbitCamera camera;
   camera.frame(box, double(width) / height);
   if (auto c = a.options.find("--camera"); c != a.options.end()) {
@@ -190,7 +197,8 @@ int cmdRender(const Args& a) {
   }
   render::HeadlessContext context;
   render::Renderer renderer;
-  const render::Image image = render::renderImage(renderer, l.scene, camera, width, height, settings);
+  const render::Image image =
+      render::renderSceneWithKifs(renderer, l.scene, raymarched.buildings, camera, width, height, settings);
   render::writePng(image, out->second);
   std::cout << out->second << "\n";
   return 0;
@@ -372,9 +380,14 @@ int cmdCheck(const Args& a) {
   Loaded l = load(a.positional[0]);
   int bad = 0;
   for (const DocObject& o : l.doc.objects) {
-    const ValidityReport r = l.scene.validate(o.id);
     nlohmann::ordered_json j;
     j["object"] = o.name;
+    if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0) {
+      j["raymarched"] = true;  // no shell in the Scene to check; its parameters were validated
+      std::cout << j.dump() << "\n";
+      continue;
+    }
+    const ValidityReport r = l.scene.validate(o.id);
     j["faces"] = r.faces;
     j["vertices"] = r.vertices;
     j["edges"] = r.edges;

@@ -2,6 +2,8 @@
 // Document: the user's inputs, one entry per object. Kernels turn specs into geometry; the
 // Scene is derived from the Document and can always be rebuilt (see scene_sync.h).
 #include "core/extrusion_spec.h"
+#include "core/growth_spec.h"
+#include "core/kifs_spec.h"
 #include "core/masonry_spec.h"
 #include "core/geometry.h"
 #include "core/scene_properties.h"
@@ -28,7 +30,7 @@ struct BoxSpec {
 };
 
 // One spec type per kernel; extrude, statics, growth and kifs add theirs.
-using Spec = std::variant<BoxSpec, ExtrusionSpec, MasonrySpec>;
+using Spec = std::variant<BoxSpec, ExtrusionSpec, MasonrySpec, KifsSpec, GrowthSpec>;
 
 // An image laid under an object's plan in the plan pane, to trace a drawing or a map from.
 // It belongs to the object but no kernel sees it, so changing it never rebuilds geometry.

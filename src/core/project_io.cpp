@@ -118,6 +118,128 @@ BoxSpec boxFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
 
 ojson vec2(const Vec2& v) { return ojson::array({v[0], v[1]}); }
 
+// KIFS keys are the field names of core/kifs_spec.h (and kifs/params.h), so the kernel's
+// messages ("kifs.mass.shell: ...") name the place in the file.
+ojson kifsToJson(const KifsSpec& k) {
+  ojson j;
+  if (!k.preset.empty()) j["preset"] = k.preset;
+  j["iterations"] = k.iterations;
+  j["scale"] = k.scale;
+  j["centre"] = vec(k.centre);
+  j["r1"] = vec(k.r1);
+  j["r2"] = vec(k.r2);
+  j["bailout"] = k.bailout;
+  j["mass"] = {{"footprint", k.mass.footprint}, {"halfWidth", k.mass.halfWidth}, {"halfDepth", k.mass.halfDepth},
+               {"height", k.mass.height},       {"wing", k.mass.wing},           {"shell", k.mass.shell}};
+  j["facade"] = {{"period", k.facade.period}, {"r", vec(k.facade.r)}, {"a1", k.facade.a1},
+                 {"a2", k.facade.a2},         {"b1", k.facade.b1},    {"b2", k.facade.b2}};
+  j["floors"] = {{"height", k.floors.height}, {"y0", k.floors.y0}, {"sy", k.floors.sy}};
+  j["curvilinear"] = {{"enabled", k.curvilinear.enabled}, {"sTheta", k.curvilinear.sTheta},
+                      {"cTheta", k.curvilinear.cTheta},   {"sR", k.curvilinear.sR},
+                      {"cR", k.curvilinear.cR},           {"z0", k.curvilinear.z0}};
+  j["trace"] = {{"maxSteps", k.trace.maxSteps},
+                {"lipschitz", k.trace.lipschitz},
+                {"overRelax", k.trace.overRelax},
+                {"hitFactor", k.trace.hitFactor}};
+  j["meshResolution"] = k.meshResolution;
+  j["material"] = k.material;
+  return j;
+}
+
+// Types here, values in the kifs kernel (kifs::validate) when the object is built; every key
+// is optional and defaults to kifs_spec.h.
+KifsSpec kifsFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
+  r.expectObject();
+  const std::set<std::string> top = {"preset", "iterations", "scale",  "centre",      "r1",    "r2",
+                                     "bailout", "mass",      "facade", "floors", "curvilinear", "trace",
+                                     "meshResolution", "material"};
+  for (auto& k : r.unknownKeys(top)) warnings.push_back(k + ": unknown key ignored");
+  KifsSpec k;
+  auto group = [&](const char* key, const std::set<std::string>& known) -> std::optional<JsonReader> {
+    auto g = r.find(key);
+    if (!g) return std::nullopt;
+    g->expectObject();
+    for (auto& u : g->unknownKeys(known)) warnings.push_back(u + ": unknown key ignored");
+    return g;
+  };
+  auto number = [](const std::optional<JsonReader>& g, const char* key, double& out) {
+    if (g)
+      if (auto v = g->find(key)) out = v->number();
+  };
+  auto vector = [](const std::optional<JsonReader>& g, const char* key, Vec3& out) {
+    if (g)
+      if (auto v = g->find(key)) out = v->vec3();
+  };
+  const std::optional<JsonReader> root = r;
+  if (auto v = r.find("preset")) k.preset = v->string(limits::kMaxNameLength);
+  if (auto v = r.find("iterations")) k.iterations = static_cast<int>(v->integer(0, limits::kMaxKifsCount));
+  number(root, "scale", k.scale);
+  vector(root, "centre", k.centre);
+  vector(root, "r1", k.r1);
+  vector(root, "r2", k.r2);
+  number(root, "bailout", k.bailout);
+  if (auto g = group("mass", {"footprint", "halfWidth", "halfDepth", "height", "wing", "shell"})) {
+    if (auto v = g->find("footprint")) {
+      k.mass.footprint = v->string(limits::kMaxNameLength);
+      if (k.mass.footprint != "box" && k.mass.footprint != "T" && k.mass.footprint != "H")
+        v->fail("expected \"box\", \"T\" or \"H\", found \"" + k.mass.footprint + "\"");
+    }
+    for (auto [key, out] : {std::pair{"halfWidth", &k.mass.halfWidth}, std::pair{"halfDepth", &k.mass.halfDepth},
+                            std::pair{"height", &k.mass.height}, std::pair{"wing", &k.mass.wing},
+                            std::pair{"shell", &k.mass.shell}})
+      number(g, key, *out);
+  }
+  if (auto g = group("facade", {"period", "r", "a1", "a2", "b1", "b2"})) {
+    vector(g, "r", k.facade.r);
+    for (auto [key, out] : {std::pair{"period", &k.facade.period}, std::pair{"a1", &k.facade.a1},
+                            std::pair{"a2", &k.facade.a2}, std::pair{"b1", &k.facade.b1}, std::pair{"b2", &k.facade.b2}})
+      number(g, key, *out);
+  }
+  if (auto g = group("floors", {"height", "y0", "sy"}))
+    for (auto [key, out] : {std::pair{"height", &k.floors.height}, std::pair{"y0", &k.floors.y0},
+                            std::pair{"sy", &k.floors.sy}})
+      number(g, key, *out);
+  if (auto g = group("curvilinear", {"enabled", "sTheta", "cTheta", "sR", "cR", "z0"})) {
+    if (auto v = g->find("enabled")) k.curvilinear.enabled = v->boolean();
+    for (auto [key, out] : {std::pair{"sTheta", &k.curvilinear.sTheta}, std::pair{"cTheta", &k.curvilinear.cTheta},
+                            std::pair{"sR", &k.curvilinear.sR}, std::pair{"cR", &k.curvilinear.cR},
+                            std::pair{"z0", &k.curvilinear.z0}})
+      number(g, key, *out);
+  }
+  if (auto g = group("trace", {"maxSteps", "lipschitz", "overRelax", "hitFactor"})) {
+    if (auto v = g->find("maxSteps")) k.trace.maxSteps = static_cast<int>(v->integer(1, limits::kMaxKifsCount));
+    for (auto [key, out] : {std::pair{"lipschitz", &k.trace.lipschitz}, std::pair{"overRelax", &k.trace.overRelax},
+                            std::pair{"hitFactor", &k.trace.hitFactor}})
+      number(g, key, *out);
+  }
+  if (auto v = r.find("meshResolution"))
+    k.meshResolution = static_cast<int>(v->integer(0, limits::kMaxKifsMeshResolution));
+  if (auto v = r.find("material")) k.material = v->string(limits::kMaxNameLength);
+  return k;
+}
+
+// The site is written as the JSON object it holds, so a project embeds a site file verbatim.
+ojson growthToJson(const GrowthSpec& g) {
+  ojson j;
+  j["site"] = ojson::parse(g.site);
+  j["seed"] = g.seed;
+  j["steps"] = g.steps;
+  return j;
+}
+
+// The site's own keys are checked by the growth kernel (growth/site.h) when it builds the object.
+GrowthSpec growthFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"site", "seed", "steps"})) warnings.push_back(k + ": unknown key ignored");
+  GrowthSpec g;
+  const JsonReader site = r.at("site");
+  site.expectObject();
+  g.site = site.raw().dump();
+  if (auto v = r.find("seed")) g.seed = static_cast<std::uint64_t>(v->integer(0, (1L << 53)));
+  if (auto v = r.find("steps")) g.steps = static_cast<int>(v->integer(-1, limits::kMaxGrowthSteps));
+  return g;
+}
+
 ojson extrusionToJson(const ExtrusionSpec& e) {
   ojson j;
   j["material"] = e.material;
@@ -509,16 +631,20 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
       if (obj.name.empty()) nameReader.fail("name must not be empty");
       if (!names.insert(obj.name).second) nameReader.fail("name \"" + obj.name + "\" is used twice");
       if (auto v = o.find("visible")) obj.visible = v->boolean();
-      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry"};
+      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry", "kifs", "growth"};
       int specCount = 0;
       for (const auto& key : specKeys) specCount += o.find(key) ? 1 : 0;
-      if (specCount == 0) o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\"");
+      if (specCount == 0)
+        o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\", \"kifs\", \"growth\"");
       if (specCount > 1) o.fail("more than one spec: an object has exactly one");
       if (auto b = o.find("box")) obj.spec = boxFromJson(*b, out.warnings);
       else if (auto m = o.find("masonry")) obj.spec = masonryFromJson(*m, out.warnings);
+      else if (auto k = o.find("kifs")) obj.spec = kifsFromJson(*k, out.warnings);
+      else if (auto g = o.find("growth")) obj.spec = growthFromJson(*g, out.warnings);
       else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
       if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
-      for (auto& k : o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "plan_background"}))
+      for (auto& k :
+           o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "plan_background"}))
         out.warnings.push_back(k + ": unknown key ignored");
       doc.objects.push_back(std::move(obj));
     }
@@ -548,6 +674,8 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     j["visible"] = o.visible;
     if (const auto* b = std::get_if<BoxSpec>(&o.spec)) j["box"] = boxToJson(*b);
     else if (const auto* m = std::get_if<MasonrySpec>(&o.spec)) j["masonry"] = masonryToJson(*m);
+    else if (const auto* k = std::get_if<KifsSpec>(&o.spec)) j["kifs"] = kifsToJson(*k);
+    else if (const auto* g = std::get_if<GrowthSpec>(&o.spec)) j["growth"] = growthToJson(*g);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
     objects.push_back(std::move(j));

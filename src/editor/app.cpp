@@ -6,6 +6,8 @@
 #include "core/project_io.h"
 #include "extrude/edit.h"
 #include "extrude/kernel.h"
+#include "growth/kernel.h"
+#include "kifs/kernel.h"
 #include "statics/kernel.h"
 #include "render/gl.h"
 #include "render/image.h"
@@ -39,6 +41,8 @@ App::App(GLFWwindow* window, EditorOptions options)
       recent_(stateDirOr(options_.stateDir) + "/recent.json") {
   extrude::registerKernel(sync_);
   statics::registerKernel(sync_);
+  kifs::registerKernel(sync_);
+  growth::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());
   registerActions();
@@ -64,6 +68,10 @@ App::App(GLFWwindow* window, EditorOptions options)
     if (!in) log("cannot read the edit script " + options_.script, true), scriptFailed_ = true;
     for (std::string line; std::getline(in, line);) scriptLines_.push_back(line);
     if (!options_.scriptShots.empty()) std::filesystem::create_directories(options_.scriptShots);
+  }
+  if (!options_.select.empty()) {
+    if (const DocObject* o = history_.current().findByName(options_.select)) selected_ = o->id;
+    else log("--select: the project has no object named \"" + options_.select + "\"", true);
   }
   syncScene(true);
   frameAll();
@@ -109,6 +117,7 @@ void App::frameAll() {
   BBox box;
   for (const DocObject& o : history_.current().objects)
     if (o.visible) box.add(scene_.bounds(o.id));
+  box.add(render::raymarchedKifs(history_.current(), settings_.visible).bounds);
   camera_.frame(box, vpW_ / std::max(vpH_, 1.0f));
 }
 
@@ -335,6 +344,15 @@ void App::registerActions() {
          selected_ = id;
          if (box.empty()) firstFrame_ = true;  // frame the first object of a new scene
        }});
+  add({"object.add_kifs", "Object", "Add KIFS Building",
+       "Add a KIFS fractal building (McGraw; the box preset) at the origin; edit it in the KIFS panel.", {}, true,
+       [this, doc] {
+         Document d = doc();
+         const ObjectId id = d.add("KIFS building", kifs::specOf(kifs::preset("box"), "box"));
+         commit(std::move(d), "Add KIFS building");
+         selected_ = id;
+         firstFrame_ = true;
+       }});
   add({"object.duplicate", "Object", "Duplicate", "Copy the selected object beside itself.", {GLFW_KEY_D, true}, true,
        [this, doc] {
          Document d = doc();
@@ -404,6 +422,23 @@ void App::registerActions() {
                for (const auto& l : *lines) log(l, l.find("PROBLEMS") != std::string::npos);
              });
        }});
+  add({"statics.make_stand", "Statics", "Make It Stand",
+       "Search the selected masonry object's free parameters, within their bounds, for a structure that stands "
+       "(in the background; one undo step).",
+       {GLFW_KEY_M, true, true}, true, [this] { statics_.makeItStand(staticsHost()); },
+       [this] { return selectedMasonry() && !statics_.searching(); }});
+  add({"statics.cancel", "Statics", "Cancel Search", "Stop the running search; nothing changes.", {}, false,
+       [this] { statics_.cancelSearch(); }, [this] { return statics_.searching(); }});
+  auto growthSelected = [this] {
+    const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+    return o && std::holds_alternative<GrowthSpec>(o->spec);
+  };
+  add({"growth.step", "Growth", "Step", "Grow the selected site one step more (one undo step).", {}, true,
+       [this] { growthPanel_.step(growthHost()); }, growthSelected});
+  add({"growth.run", "Growth", "Run / Pause",
+       "Grow the selected site step by step as the view catches up, until every unit stops; again to pause.", {},
+       true, [this] { growthPanel_.toggleRun(growthHost()); }, growthSelected,
+       [this] { return growthPanel_.running(); }});
   add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
        [this] { showHelp_ = true; }});
 }
@@ -570,6 +605,10 @@ void App::drawObjectProperties(const DocObject& object) {
 
   ImGui::Separator();
   ImGui::TextDisabled("Shell");
+  if (const auto* k = std::get_if<KifsSpec>(&object.spec); k && k->meshResolution == 0) {
+    ImGui::TextWrapped("Ray-marched: no shell in the Scene (KIFS panel > Mesh to Scene makes one).");
+    return;
+  }
   const ValidityReport r = scene_.validate(object.id);
   ImGui::Text("%zu faces, %zu vertices, %zu edges", r.faces, r.vertices, r.edges);
   ImGui::Text("Euler characteristic %ld, %zu component%s", r.euler, r.components, r.components == 1 ? "" : "s");
@@ -837,6 +876,51 @@ void App::takeScreenshot(const std::string& path) {
   render::writePng(img, path);
 }
 
+const DocObject* App::selectedMasonry() const {
+  const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+  return o && std::holds_alternative<MasonrySpec>(o->spec) ? o : nullptr;
+}
+
+StaticsHost App::staticsHost() {
+  StaticsHost host;
+  host.doc = &history_.current();
+  host.object = selected_.value_or(0);
+  host.wait = scripted();
+  host.commit = deferredCommit();
+  host.endDrag = deferredEndDrag();
+  host.log = [this](const std::string& line, bool error) { log(line, error); };
+  return host;
+}
+
+GrowthHost App::growthHost() {
+  GrowthHost host;
+  host.doc = &history_.current();
+  host.object = selected_.value_or(0);
+  host.current = live_.current();
+  if (auto it = sync_.status().find(host.object); it != sync_.status().end()) {
+    host.error = it->second.error;
+    host.warnings = it->second.warnings;
+  }
+  host.commit = deferredCommit();
+  host.endDrag = deferredEndDrag();
+  host.log = [this](const std::string& line, bool error) { log(line, error); };
+  return host;
+}
+
+// The panels right of the 3D view commit through these: the change is applied after they are
+// drawn, so nothing they still read of the current document moves under them (a commit may
+// reallocate the history), and in the order they made it.
+std::function<void(Document, const std::string&, const std::string&)> App::deferredCommit() {
+  return [this](Document d, const std::string& label, const std::string& key) {
+    auto doc = std::make_shared<Document>(std::move(d));
+    deferred_.push_back([this, doc, label, key] { commit(std::move(*doc), label, key); });
+  };
+}
+
+std::function<void()> App::deferredEndDrag() {
+  return [this] { deferred_.push_back([this] { history_.closeMerge(); }); };
+}
+
 std::string App::windowTitle() const {
   std::string name = path_.empty() ? "untitled" : std::filesystem::path(path_).filename().string();
   return (history_.dirty() ? "* " : "") + name + " — corbel";
@@ -851,7 +935,8 @@ int App::run() {
     }
     if (quitRequested_) break;
     // Sleep until input arrives unless something is moving or scripted.
-    if (job_ || live_.building() || options_.quitAfterFrames > 0 || frame_ < 3) glfwPollEvents();
+    if (job_ || live_.building() || growthPanel_.running() || options_.quitAfterFrames > 0 || frame_ < 3)
+      glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
 
     ImGui_ImplOpenGL3_NewFrame();
@@ -873,7 +958,7 @@ int App::run() {
     drawStatusBar();
     // The plan and profile panes of a selected extrusion, right of the 3D view.
     const ImGuiViewport* vp = ImGui::GetMainViewport();
-    const DocObject* sel = selected_ ? history_.current().find(*selected_) : nullptr;
+    const DocObject* sel = selected_ ? history_.current().find(*selected_) : nullptr;  // looked up again below
     const bool panes = sel && std::holds_alternative<ExtrusionSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
     if (panes) {
       if (panesFor_ != sel->id) panes_.reset();
@@ -890,13 +975,64 @@ int App::run() {
     } else {
       panesFor_.reset();
     }
+    // The KIFS panel of a selected KIFS building, in the same place. (The extrusion panes may
+    // have committed: look the selection up again.)
+    sel = selected_ ? history_.current().find(*selected_) : nullptr;
+    const bool kifsPane =
+        sel && std::holds_alternative<KifsSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    if (kifsPane) {
+      KifsHost host;
+      host.doc = &history_.current();
+      host.object = sel->id;
+      host.building = live_.building();
+      host.fraction = live_.fraction();
+      if (auto it = sync_.status().find(sel->id); it != sync_.status().end()) host.error = it->second.error;
+      host.commit = deferredCommit();
+      host.endDrag = deferredEndDrag();
+      host.log = [this](const std::string& line, bool error) { log(line, error); };
+      const float top = ImGui::GetFrameHeight();
+      kifsPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                      vp->Size.y - top - kStatusBarHeight);
+    }
+    // The growth panel of a selected growth site, in the same place.
+    const bool growthPane =
+        sel && std::holds_alternative<GrowthSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    if (growthPane) {
+      if (growthFor_ != sel->id) growthPanel_.reset();
+      growthFor_ = sel->id;
+      const GrowthHost host = growthHost();
+      growthPanel_.update(host);
+      const float top = ImGui::GetFrameHeight();
+      growthPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                        vp->Size.y - top - kStatusBarHeight);
+    } else {
+      growthFor_.reset();
+      growthPanel_.reset();
+    }
+    // The statics panel of a selected masonry object, in the same place.
+    const DocObject* masonry = selectedMasonry();
+    const bool staticsPane = masonry && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    if (staticsPane) {
+      if (staticsFor_ != masonry->id) statics_.reset();
+      staticsFor_ = masonry->id;
+      statics_.update(staticsHost());
+      const float top = ImGui::GetFrameHeight();
+      statics_.draw(staticsHost(), vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                    vp->Size.y - top - kStatusBarHeight);
+    } else {
+      staticsFor_.reset();
+      if (statics_.searching()) statics_.update(staticsHost());  // a search started before the selection changed
+    }
+    for (auto& change : deferred_) change();
+    deferred_.clear();
     drawHelp();
     drawModals();
     syncScene();  // edits made by the panels this frame
 
     vpX_ = vp->Pos.x + kLeftPanelWidth;
     vpY_ = vp->Pos.y + ImGui::GetFrameHeight();
-    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (panes ? kPaneWidth : 0.0f));
+    const bool rightPane = panes || staticsPane || kifsPane || growthPane;
+    vpW_ = std::max(1.0f, vp->Size.x - kLeftPanelWidth - (rightPane ? kPaneWidth : 0.0f));
     vpH_ = std::max(1.0f, vp->Size.y - ImGui::GetFrameHeight() - kStatusBarHeight);
     if (firstFrame_) {
       frameAll();
@@ -918,9 +1054,27 @@ int App::run() {
       return o && o->visible;
     };
     settings_.highlight = selected_;
+    // Tension colours and force arrows of the selected masonry object, when it is shown.
+    renderer_->overlay().clear();
+    renderer_->overlayOnTop().clear();
+    if (const DocObject* m = selectedMasonry(); m && m->visible)
+      statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
     renderer_->setScene(scene_, settings_);
-    renderer_->draw(camera_, int(vpX_ * sx), int((vp->Size.y - vpY_ - vpH_) * sy), int(vpW_ * sx), int(vpH_ * sy),
-                    settings_);
+    const int px = int(vpX_ * sx), py = int((vp->Size.y - vpY_ - vpH_) * sy), pw = int(vpW_ * sx), ph = int(vpH_ * sy);
+    renderer_->draw(camera_, px, py, pw, ph, settings_);
+    // KIFS buildings that are not meshed: ray-marched over the Scene, depth-tested against it.
+    const render::RaymarchedKifs raymarched = render::raymarchedKifs(doc, settings_.visible);
+    if (!raymarched.buildings.empty() && !kifsFailed_) {
+      try {
+        if (!kifsPass_) kifsPass_ = std::make_unique<render::KifsPass>();
+        for (const kifs::KifsParams& p : raymarched.buildings)
+          kifsPass_->draw(kifs::Building(render::kifsForView(p, camera_, ph)), camera_, px, py, pw, ph,
+                          render::KifsMode::Shaded);
+      } catch (const std::exception& e) {
+        log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);
+        kifsFailed_ = true;
+      }
+    }
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     if (shotAtFrame_ >= 0 && frame_ >= shotAtFrame_) {

@@ -10,7 +10,11 @@
 #include "editor/actions.h"
 #include "editor/extrusion_panes.h"
 #include "editor/file_dialog.h"
+#include "editor/growth_panel.h"
+#include "editor/kifs_panel.h"
+#include "editor/statics_panel.h"
 #include "render/camera.h"
+#include "render/kifs_pass.h"
 #include "render/renderer.h"
 
 #include <chrono>
@@ -36,6 +40,7 @@ struct EditorOptions {
   double autosaveSeconds = 60.0;
   enum class Recover { Ask, Yes, No } recover = Recover::Ask;
   std::string stateDir;             // recovery and recent files ("" = defaultStateDir())
+  std::string select;               // select the object of this name at start
 };
 
 class App {
@@ -77,6 +82,12 @@ class App {
   void frameAll();
   void takeScreenshot(const std::string& path);
   void runScriptLine();
+  // The selected object when it is masonry, for the statics panel.
+  const DocObject* selectedMasonry() const;
+  StaticsHost staticsHost();
+  GrowthHost growthHost();
+  std::function<void(Document, const std::string&, const std::string&)> deferredCommit();
+  std::function<void()> deferredEndDrag();
   std::string windowTitle() const;
 
   GLFWwindow* window_;
@@ -123,6 +134,14 @@ class App {
   std::size_t scriptedIndex_ = 0;
   ExtrusionPanes panes_;
   std::optional<ObjectId> panesFor_;
+  std::vector<std::function<void()>> deferred_;  // the panels' commits of this frame (deferredCommit)
+  StaticsPanel statics_;
+  std::optional<ObjectId> staticsFor_;
+  KifsPanel kifsPanel_;
+  GrowthPanel growthPanel_;
+  std::optional<ObjectId> growthFor_;
+  std::unique_ptr<render::KifsPass> kifsPass_;  // made when a KIFS building is first shown
+  bool kifsFailed_ = false;                      // its shader did not build (logged once)
   std::vector<std::string> scriptLines_;
   std::size_t scriptLine_ = 0;
   int shotAtFrame_ = -1;

@@ -28,6 +28,7 @@ options:
   --autosave-seconds S    autosave interval while there are unsaved changes (default 60)
   --recover ask|yes|no    what to do with unsaved work found from a crash (default ask)
   --state-dir DIR         where recovery and recent files live (default $XDG_STATE_HOME/corbel)
+  --select NAME           select the object called NAME (its panel opens)
   --help
 )";
 
@@ -86,6 +87,8 @@ int main(int argc, char** argv) {
       }
     } else if (a == "--state-dir") {
       options.stateDir = value();
+    } else if (a == "--select") {
+      options.select = value();
     } else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "corbel: unknown option %s (try --help)\n", a.c_str());
       return 2;

@@ -1,6 +1,7 @@
 #include "render/kifs_pass.h"
 
 #include "core/error.h"
+#include "kifs/kernel.h"
 #include "kifs/trace.h"
 #include "render/gl.h"
 #include "render/shader_sources.h"
@@ -8,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace corbel::render {
 
@@ -245,6 +247,37 @@ Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& 
   renderer.setScene(scene, settings);
   renderer.draw(camera, 0, 0, width, height, settings);
   pass.draw(building, camera, 0, 0, width, height, mode);
+  glFinish();
+  return target.read();
+}
+
+RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible) {
+  RaymarchedKifs out;
+  for (const DocObject& o : doc.objects) {
+    const auto* k = std::get_if<KifsSpec>(&o.spec);
+    if (!k || k->meshResolution > 0 || (visible && !visible(o.id))) continue;
+    try {
+      out.buildings.push_back(kifs::paramsOf(*k));
+    } catch (const Error&) {
+      continue;
+    }
+    const kifs::Aabb b = kifs::Building(out.buildings.back()).worldBounds();
+    out.bounds.add(Vec3(b.lo.x, b.lo.y, b.lo.z));
+    out.bounds.add(Vec3(b.hi.x, b.hi.y, b.hi.z));
+  }
+  return out;
+}
+
+Image renderSceneWithKifs(Renderer& renderer, const Scene& scene, const std::vector<kifs::KifsParams>& buildings,
+                          const OrbitCamera& camera, int width, int height, const RenderSettings& settings) {
+  std::optional<KifsPass> pass;
+  if (!buildings.empty()) pass.emplace();
+  OffscreenTarget target(width, height);
+  target.bind();
+  renderer.setScene(scene, settings);
+  renderer.draw(camera, 0, 0, width, height, settings);
+  for (const kifs::KifsParams& p : buildings)
+    pass->draw(kifs::Building(kifsForView(p, camera, height)), camera, 0, 0, width, height, KifsMode::Shaded);
   glFinish();
   return target.read();
 }

@@ -2,11 +2,13 @@
 // Draws a KIFS building (McGraw, Sec. 3) by sphere tracing in shaders/kifs.frag.glsl, over
 // whatever the bound framebuffer holds: it writes gl_FragDepth and is depth-tested, so it
 // composes with the Scene drawn by Renderer before it.
+#include "core/document.h"
 #include "kifs/distance.h"
 #include "render/camera.h"
 #include "render/image.h"
 #include "render/renderer.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -88,5 +90,19 @@ KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const O
 Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& building, const Scene& scene,
                       const OrbitCamera& camera, int width, int height, KifsMode mode,
                       const RenderSettings& settings);
+
+// The KIFS objects of a document that are drawn by ray marching (core/kifs_spec.h: not meshed)
+// and shown by `visible`, with their world bounds. A spec the kernel refuses is left out (its
+// error is the object's build error, kifs/kernel.h).
+struct RaymarchedKifs {
+  std::vector<kifs::KifsParams> buildings;
+  BBox bounds;
+};
+RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible);
+
+// A picture of the Scene with ray-marched buildings over it (none: the Scene alone), each one's
+// hit threshold set for this view (kifsForView); compiles a KifsPass only when there are some.
+Image renderSceneWithKifs(Renderer& renderer, const Scene& scene, const std::vector<kifs::KifsParams>& buildings,
+                          const OrbitCamera& camera, int width, int height, const RenderSettings& settings);
 
 }  // namespace corbel::render

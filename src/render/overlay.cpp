@@ -1,5 +1,7 @@
 #include "render/overlay.h"
 
+#include "core/geometry.h"
+
 #include <cmath>
 
 namespace corbel::render {
@@ -36,6 +38,17 @@ void Overlay::arrow(const Vec3& from, const Vec3& to, const Rgba& c, double head
       triangles_.insert(triangles_.end(), {float((*p)[0]), float((*p)[1]), float((*p)[2]), float(n[0]), float(n[1]),
                                            float(n[2]), c[0], c[1], c[2]});
   }
+}
+
+void Overlay::polygon(const std::vector<Vec3>& corners, const Rgba& c) {
+  if (corners.size() < 3) return;
+  Vec3 n = newellNormal(corners);
+  if (!(n.norm() > 0)) return;
+  n.normalize();
+  for (std::size_t i = 1; i + 1 < corners.size(); ++i)
+    for (const Vec3* p : {&corners[0], &corners[i], &corners[i + 1]})
+      triangles_.insert(triangles_.end(), {float((*p)[0]), float((*p)[1]), float((*p)[2]), float(n[0]), float(n[1]),
+                                           float(n[2]), c[0], c[1], c[2]});
 }
 
 }  // namespace corbel::render

@@ -15,6 +15,10 @@ class Overlay {
   void line(const Vec3& a, const Vec3& b, const Rgba& color);
   // A shaft and a four-sided cone head (head length = headFraction of the arrow).
   void arrow(const Vec3& from, const Vec3& to, const Rgba& color, double headFraction = 0.2);
+  // A filled convex polygon (a fan of triangles), lit by its Newell normal. Drawn over a Scene
+  // face it covers, it wins the depth test (the Scene's faces are pushed back by a polygon
+  // offset), so it can recolour a face, e.g. a masonry block by its tension.
+  void polygon(const std::vector<Vec3>& corners, const Rgba& color);
 
   // Interleaved [x y z r g b a] vertices.
   const std::vector<float>& lineVertices() const { return lines_; }

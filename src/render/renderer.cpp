@@ -119,7 +119,7 @@ unsigned linkProgram(const std::string& vert, const std::string& frag) {
 
 struct Renderer::Impl {
   GLuint meshProgram = 0, lineProgram = 0, backgroundProgram = 0;
-  Buffer faces, highlightFaces, edges, grid, overlayLines, overlayTriangles;
+  Buffer faces, highlightFaces, edges, grid, overlayLines, overlayTriangles, topLines, topTriangles;
   GLuint emptyVao = 0;
   std::uint64_t sceneRevision = ~0ull;
   std::vector<ObjectId> visibleIds;
@@ -139,12 +139,14 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->grid.create({3, 4});
   impl_->overlayLines.create({3, 4});
   impl_->overlayTriangles.create({3, 3, 3});
+  impl_->topLines.create({3, 4});
+  impl_->topTriangles.create({3, 3, 3});
   glGenVertexArrays(1, &impl_->emptyVao);
 }
 
 Renderer::~Renderer() {
   for (Buffer* b : {&impl_->faces, &impl_->highlightFaces, &impl_->edges, &impl_->grid, &impl_->overlayLines,
-                    &impl_->overlayTriangles})
+                    &impl_->overlayTriangles, &impl_->topLines, &impl_->topTriangles})
     b->destroy();
   glDeleteVertexArrays(1, &impl_->emptyVao);
   glDeleteProgram(impl_->meshProgram);
@@ -301,6 +303,20 @@ void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int heig
   }
   glBindVertexArray(r.overlayLines.vao);
   glDrawArrays(GL_LINES, 0, r.overlayLines.count);
+
+  if (!onTop_.empty()) {
+    glDisable(GL_DEPTH_TEST);
+    r.topTriangles.upload(onTop_.triangleVertices());
+    r.topLines.upload(onTop_.lineVertices());
+    glUseProgram(r.meshProgram);
+    glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.0f);
+    glBindVertexArray(r.topTriangles.vao);
+    glDrawArrays(GL_TRIANGLES, 0, r.topTriangles.count);
+    glUseProgram(r.lineProgram);
+    glBindVertexArray(r.topLines.vao);
+    glDrawArrays(GL_LINES, 0, r.topLines.count);
+    glEnable(GL_DEPTH_TEST);
+  }
 
   glBindVertexArray(0);
   glUseProgram(0);

@@ -34,6 +34,8 @@ class Renderer {
   // Rebuilds GPU buffers when the scene's revision or the visibility changed.
   void setScene(const Scene& scene, const RenderSettings& settings);
   Overlay& overlay() { return overlay_; }
+  // Drawn last, without the depth test: what acts inside solids (force arrows on interfaces).
+  Overlay& overlayOnTop() { return onTop_; }
   // Draws into the currently bound framebuffer, viewport (x, y, width, height).
   void draw(const OrbitCamera& camera, int x, int y, int width, int height, const RenderSettings& settings);
 
@@ -42,7 +44,7 @@ class Renderer {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  Overlay overlay_;
+  Overlay overlay_, onTop_;
 };
 
 // A framebuffer object with multisampled color and depth, resolved on read-back.

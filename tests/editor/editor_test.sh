@@ -7,7 +7,13 @@
 #     script, with a screenshot after each stage, and the result is a closed shell;
 #  4. a plan traced over a background image, with a forced step, shows the image in the plan
 #     pane (the shot differs from the same plan without it) and stays one closed shell; a
-#     missing image is reported in the log and the editor carries on.
+#     missing image is reported in the log and the editor carries on;
+#  5. the masonry arch opens with its statics panel, and Make It Stand (a scripted action)
+#     changes it into an arch that the CLI's analysis calls standing;
+#  6. a KIFS building is ray-marched in the 3D view: with its panel open, the shot differs from
+#     the same project with the building hidden;
+#  7. two growth.step actions on the Alpha site grown 10 steps save it grown 12, and the saved
+#     site builds as closed shells.
 set -euo pipefail
 editor=$1 cli=$2 check=$3 example=$4 work=$5 script=${6:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -63,4 +69,33 @@ trace "" "$work/untraced"
 "$check" "$work/traced/01-traced.png" "$work/untraced/01-traced.png" 0.02
 trace "$work/no-such-image.png" "$work/missing"
 test -f "$work/missing/01-traced.png" || { echo "a missing background image stopped the editor"; exit 1; }
+echo "== the statics panel of the masonry arch, and Make It Stand"
+masonry=$(dirname "$example")/masonry-arch.corbel
+run --recover no --select "Arch on columns" --screenshot "$work/masonry.png" --quit-after-frames 8 "$masonry"
+"$check" "$work/masonry.png" "$work/empty.png" 0.02
+"$cli" statics "$masonry" --json | grep -q '"stands":false' || { echo "the example arch should not stand as saved"; exit 1; }
+rm -rf "$work/state"
+run --recover no --select "Arch on columns" --actions statics.make_stand --autosave-seconds 0 \
+  --screenshot "$work/masonry-standing.png" --quit-after-frames 8 "$masonry"
+test -f "$work/state/recovery.corbel" || { echo "Make It Stand changed nothing (no recovery file)"; exit 1; }
+stood=$("$cli" statics "$work/state/recovery.corbel" --json)
+echo "after Make It Stand: $stood"
+grep -q '"stands":true' <<<"$stood" || { echo "the arch should stand after Make It Stand"; exit 1; }
+echo "== a KIFS building, ray-marched in the 3D view"
+kifs=$(dirname "$example")/kifs-h.corbel
+sed '0,/"visible": true/s//"visible": false/' "$kifs" > "$work/kifs-hidden.corbel"
+grep -q '"visible": false' "$work/kifs-hidden.corbel" || { echo "could not hide the KIFS building"; exit 1; }
+run --recover no --select "H building" --screenshot "$work/kifs.png" --quit-after-frames 6 "$kifs"
+run --recover no --select "H building" --screenshot "$work/kifs-hidden.png" --quit-after-frames 6 "$work/kifs-hidden.corbel"
+"$check" "$work/kifs.png" "$work/kifs-hidden.png" 0.05
+echo "== growth: Step twice"
+alpha=$(dirname "$example")/housing-alpha.corbel
+sed 's/"steps": -1/"steps": 10/' "$alpha" > "$work/alpha10.corbel"
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions growth.step,growth.step --autosave-seconds 0 \
+  --screenshot "$work/growth.png" --quit-after-frames 8 "$work/alpha10.corbel"
+test -f "$work/state/recovery.corbel" || { echo "Step changed nothing (no recovery file)"; exit 1; }
+grep -q '"steps": 12' "$work/state/recovery.corbel" || { echo "two steps should make 12"; exit 1; }
+summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+[[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the grown site should be closed shells: $summary"; exit 1; }
 echo "editor test passed"

@@ -1,8 +1,12 @@
-// Golden images: every example in assets/examples/ rendered headless must match its
+// Golden images: every example in assets/examples/ rendered headless (KIFS buildings ray-marched
+// over the Scene, as corbel-cli render draws them) must match its
 // tests/golden/<name>.png. On a mismatch the actual, expected and diff images are written to
 // <build>/tests/golden/out/. Regenerate after an intended change with scripts/update-goldens
 // (CORBEL_UPDATE_GOLDENS=1), then look at the new images before committing them.
 #include "extrude/kernel.h"
+#include "growth/kernel.h"
+#include "kifs/kernel.h"
+#include "render/kifs_pass.h"
 #include "statics/kernel.h"
 #include "golden_support.h"
 
@@ -33,6 +37,8 @@ render::Image renderExample(const std::string& name) {
   SceneSync sync;
   extrude::registerKernel(sync);
   statics::registerKernel(sync);
+  kifs::registerKernel(sync);
+  growth::registerKernel(sync);
   sync.update(p.document, scene);
   for (const auto& [id, st] : sync.status()) EXPECT_EQ(st.error, "") << name;
   render::RenderSettings settings;
@@ -40,9 +46,11 @@ render::Image renderExample(const std::string& name) {
   BBox box;
   for (const auto& o : p.document.objects)
     if (o.visible) box.add(scene.bounds(o.id));
+  const render::RaymarchedKifs kifs = render::raymarchedKifs(p.document, settings.visible);
+  box.add(kifs.bounds);
   render::OrbitCamera camera;
   camera.frame(box, double(kWidth) / kHeight);
-  return render::renderImage(sharedRenderer(), scene, camera, kWidth, kHeight, settings);
+  return render::renderSceneWithKifs(sharedRenderer(), scene, kifs.buildings, camera, kWidth, kHeight, settings);
 }
 
 class Golden : public ::testing::TestWithParam<std::string> {};

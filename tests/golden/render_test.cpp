@@ -162,6 +162,44 @@ TEST(Renderer, OverlayArrowIsDrawnWhereItProjects) {
   EXPECT_TRUE(reddish(head));
 }
 
+// A polygon laid on a face recolours it (the Scene's faces are pushed back by the polygon
+// offset), lit by the same model as a face of that colour.
+TEST(Renderer, OverlayPolygonRecoloursTheFaceItCovers) {
+  const Scene scene = oneBox(BoxSpec{.size = Vec3(8, 8, 3), .material = "brick"});
+  auto& renderer = sharedRenderer();
+  const Rgb blue{0.1f, 0.3f, 0.9f};
+  renderer.overlay().clear();
+  renderer.overlay().polygon({Vec3(-4, -4, 3), Vec3(4, -4, 3), Vec3(4, 4, 3), Vec3(-4, 4, 3)},
+                             {blue[0], blue[1], blue[2], 1.0f});
+  const render::Image img = render::renderImage(renderer, scene, topCamera(), kSize, kSize, plain());
+  renderer.overlay().clear();
+  const auto expected = litColor(blue, Vec3(0, 0, 1));
+  const auto* centre = img.at(kSize / 2, kSize / 2);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(centre[k], expected[k], 2) << "channel " << k;
+  // Fewer than three corners, or all on one line, draw nothing.
+  renderer.overlay().polygon({Vec3(0, 0, 3), Vec3(1, 0, 3)}, {1, 0, 0, 1});
+  renderer.overlay().polygon({Vec3(0, 0, 3), Vec3(1, 0, 3), Vec3(2, 0, 3)}, {1, 0, 0, 1});
+  EXPECT_TRUE(renderer.overlay().empty());
+}
+
+// An arrow inside a solid is hidden in the depth-tested overlay and seen in the one on top.
+TEST(Renderer, OverlayOnTopShowsThroughSolids) {
+  const Scene scene = oneBox(BoxSpec{.size = Vec3(20, 20, 3), .material = "plaster"});
+  auto& renderer = sharedRenderer();
+  const auto camera = topCamera();
+  const glm::dvec2 head = project(camera, Vec3(6.5, 0, 1.5), kSize, kSize);
+  auto redAtHead = [&](const render::Image& img) {
+    const auto* q = img.at(int(head.x), int(head.y));
+    return int(q[0]) - std::max(int(q[1]), int(q[2])) > 60;
+  };
+  renderer.overlay().arrow(Vec3(-8, 0, 1.5), Vec3(8, 0, 1.5), {1.0f, 0.0f, 0.0f, 1.0f}, 0.25);
+  EXPECT_FALSE(redAtHead(render::renderImage(renderer, scene, camera, kSize, kSize, plain())));
+  renderer.overlay().clear();
+  renderer.overlayOnTop().arrow(Vec3(-8, 0, 1.5), Vec3(8, 0, 1.5), {1.0f, 0.0f, 0.0f, 1.0f}, 0.25);
+  EXPECT_TRUE(redAtHead(render::renderImage(renderer, scene, camera, kSize, kSize, plain())));
+  renderer.overlayOnTop().clear();
+}
+
 TEST(Camera, TargetProjectsToTheImageCentreAndFramingContainsTheBox) {
   render::OrbitCamera c;
   BBox box;

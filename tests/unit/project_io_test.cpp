@@ -336,7 +336,7 @@ TEST(ProjectIoErrors, MissingFields) {
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "box": {}}]})", "objects[0].name",
                "missing");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A"}]})", "objects[0]",
-               R"(no spec: expected one of "box", "extrusion", "masonry")");
+               R"(no spec: expected one of "box", "extrusion", "masonry", "kifs", "growth")");
 }
 
 TEST(ProjectIoErrors, NonFiniteNumbers) {
@@ -753,4 +753,104 @@ TEST(ProjectIoErrors, MasonryFaultsNameTheirPath) {
   EXPECT_FAULT_CONTAINS(withMasonry(R"("model": "tower", "friction": -0.1)"), "objects[0].masonry.friction", "-0.1");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "M", "masonry": {"model": "tower"}, "box": {"size": [1, 1, 1]}}]})",
                "objects[0]", "more than one spec: an object has exactly one");
+}
+
+// ---------------------------------------------------------------------------------------------
+// KIFS buildings: the numbers of kifs/params.h under the same names.
+
+namespace {
+
+// A project of one object whose spec is `key` with this body.
+std::string withSpec(const std::string& key, const std::string& body) {
+  return R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "O", ")" + key + R"(": {)" + body +
+         "}}]}";
+}
+std::string withKifs(const std::string& body) { return withSpec("kifs", body); }
+
+}  // namespace
+
+TEST(ProjectIo, KifsSpecsRoundTripEveryField) {
+  corbel::KifsSpec k;
+  k.preset = "h-building";
+  k.iterations = 4;
+  k.scale = 2.5;
+  k.centre = corbel::Vec3(0.9, 0.8, 0.3);
+  k.r1 = corbel::Vec3(1, 2, 3);
+  k.r2 = corbel::Vec3(0, 15, 0);
+  k.bailout = 500;
+  k.mass = {"H", 12, 10, 15, 3.5, 1.1};
+  k.facade = {5.5, corbel::Vec3(0.2, 0.1, 0.3), 0.5, 1.5, 0.2, -0.1};
+  k.floors = {3.2, 0.4, 0.9};
+  k.curvilinear = {true, 9, 0.1, 1.2, -12, 0.5};
+  k.trace = {250, 0.8, 1.3, 1.5};
+  k.meshResolution = 96;
+  k.material = "concrete";
+  corbel::Document d;
+  d.add("tower", k);
+  d.add("defaults", corbel::KifsSpec{});
+  const std::string text = corbel::serializeProject(d);
+  const corbel::LoadedProject back = corbel::parseProject(text);
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document), text);
+  // Every key is optional: an empty spec is the default building.
+  const auto minimal = corbel::parseProject(withKifs(""));
+  EXPECT_EQ(std::get<corbel::KifsSpec>(minimal.document.objects[0].spec), corbel::KifsSpec{});
+  const auto unknown = corbel::parseProject(withKifs(R"("mass": {"roof": 1}, "colour": 2)"));
+  ASSERT_EQ(unknown.warnings.size(), 2u);
+  EXPECT_EQ(unknown.warnings[0], "objects[0].kifs.colour: unknown key ignored");
+  EXPECT_EQ(unknown.warnings[1], "objects[0].kifs.mass.roof: unknown key ignored");
+}
+
+TEST(ProjectIoErrors, KifsFaultsNameTheirPath) {
+  EXPECT_FAULT_CONTAINS(withKifs(R"("scale": "3")"), "objects[0].kifs.scale", "number");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("iterations": 2.5)"), "objects[0].kifs.iterations", "integer");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("iterations": -1)"), "objects[0].kifs.iterations", "-1");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("centre": [1, 2])"), "objects[0].kifs.centre", "[x, y, z]");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("mass": [])"), "objects[0].kifs.mass", "object");
+  EXPECT_FAULT(withKifs(R"("mass": {"footprint": "L"})"), "objects[0].kifs.mass.footprint",
+               R"(expected "box", "T" or "H", found "L")");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("facade": {"r": [0, "x", 0]})"), "objects[0].kifs.facade.r", "[x, y, z]");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("curvilinear": {"enabled": 1})"), "objects[0].kifs.curvilinear.enabled", "true or false");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("trace": {"maxSteps": 0})"), "objects[0].kifs.trace.maxSteps", "0");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("meshResolution": 5000)"), "objects[0].kifs.meshResolution", "5000");
+  EXPECT_FAULT_CONTAINS(withKifs(R"("floors": {"sy": null})"), "objects[0].kifs.floors.sy", "number");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Growth sites: the site file's object embedded as it is, the seed and the steps.
+
+namespace {
+
+std::string withGrowth(const std::string& body) { return withSpec("growth", body); }
+
+}  // namespace
+
+TEST(ProjectIo, GrowthSpecsRoundTripWithTheSiteAsAnObject) {
+  corbel::GrowthSpec g;
+  g.site = R"({"envelope":{"origin":[0,0],"size":[30,20]},"seeds":[{"at":[1.5,2],"target_area":40}],"storeys":3})";
+  g.seed = 42;
+  g.steps = 17;
+  corbel::Document d;
+  d.add("site", g);
+  d.add("to the end", corbel::GrowthSpec{g.site, 1, -1});
+  const std::string text = corbel::serializeProject(d);
+  EXPECT_NE(text.find(R"("storeys": 3)"), std::string::npos) << "the site is an object in the file, not a string";
+  const corbel::LoadedProject back = corbel::parseProject(text);
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document), text);
+  const auto minimal = corbel::parseProject(withGrowth(R"("site": {})"));
+  EXPECT_EQ(std::get<corbel::GrowthSpec>(minimal.document.objects[0].spec), (corbel::GrowthSpec{"{}", 1, 0}));
+}
+
+TEST(ProjectIoErrors, GrowthFaultsNameTheirPath) {
+  EXPECT_FAULT(withGrowth(R"("seed": 1)"), "objects[0].growth.site", "missing");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": "alpha.json")"), "objects[0].growth.site", "object");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": {}, "seed": -1)"), "objects[0].growth.seed", "-1");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": {}, "steps": -2)"), "objects[0].growth.steps", "-2");
+  EXPECT_FAULT_CONTAINS(withGrowth(R"("site": {}, "steps": 1.5)"), "objects[0].growth.steps", "integer");
+  const auto w = corbel::parseProject(withGrowth(R"("site": {}, "speed": 2)"));
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_EQ(w.warnings[0], "objects[0].growth.speed: unknown key ignored");
 }

@@ -1,0 +1,35 @@
+#pragma once
+// The KIFS panel of a selected KIFS building (McGraw, Sec. 4), right of the 3D view: a preset
+// picker, the parameters of Sec. 4 as sliders (13 rectilinear, 17 curvilinear) and the
+// advanced ones (M, s, R1, bailout, steps), and "Mesh to Scene". Every change is committed as
+// a Document edit (editor/kifs_edits.h), so it is undoable, and the 3D view ray-marches the
+// new parameters at once (render::KifsPass). Meshing runs as the object's Scene build, off
+// the UI thread (core/live_sync.h), with a progress bar; Cancel (or dropping the mesh later)
+// returns to ray marching, and the superseded build is cancelled.
+#include "core/document.h"
+
+#include <functional>
+#include <string>
+
+namespace corbel::editor {
+
+struct KifsHost {
+  const Document* doc = nullptr;
+  ObjectId object = 0;
+  bool building = false;  // the Scene is being rebuilt (meshing)
+  double fraction = 0;    // of that build
+  std::string error;      // the kernel's message for the object ("" = fine)
+  std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
+  std::function<void()> endDrag;
+  std::function<void(const std::string&, bool)> log;
+};
+
+class KifsPanel {
+ public:
+  void draw(const KifsHost& host, float x, float y, float w, float h);
+
+ private:
+  int resolution_ = 128;  // for "Mesh to Scene"
+};
+
+}  // namespace corbel::editor

@@ -1,0 +1,52 @@
+#pragma once
+// The statics panel's changes to a masonry object (core/masonry_spec.h), as pure functions
+// on a Document: the panel commits what they return, so every change is one undo step and
+// the tests replay exactly what a click does. Each checks the result against the model
+// (statics::modelOf, statics::validateFreeParameters) and throws corbel::Error with the
+// model's reason, leaving the Document as it was.
+#include "core/document.h"
+#include "core/progress.h"
+#include "statics/search.h"
+
+#include <optional>
+#include <string>
+
+namespace corbel::editor {
+
+// The masonry spec of object `id`; throws corbel::Error when there is none.
+MasonrySpec& masonryOf(Document& doc, ObjectId id);
+
+// Sets parameter `name` of the object's model to `value` (kept in name order).
+void setMasonryParameter(Document& doc, ObjectId id, const std::string& name, double value);
+
+// Frees parameter `name` for the search within [lo, hi], or, with nullopt, fixes it again.
+void setMasonryFree(Document& doc, ObjectId id, const std::string& name,
+                    std::optional<std::pair<double, double>> bounds);
+
+// Bounds offered when the user frees `p`: the model's suggestion for it when there is one,
+// else its value ± 50 % (± 1 at zero), clipped into its valid range.
+std::pair<double, double> defaultBounds(const statics::Parameter& p,
+                                        const std::vector<statics::FreeParameter>& suggested);
+
+// The free parameters a search moves: the spec's, or the model's suggestion when it frees none.
+std::vector<statics::FreeParameter> searchFreeOf(const MasonrySpec& spec);
+
+// "Make it stand" (Sec. 4): the search from the spec's values over searchFreeOf(spec), with
+// the spec's friction and kern. Progress gets the evaluation count as a fraction of the cap
+// and the search stops (status Cancelled) when the progress is cancelled.
+statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress = nullptr, int maxEvaluations = 200);
+
+// Interactive editing (Sec. 5, Fig. 13): the user has just set the fixed parameter `name` (the
+// spec holds its new value); the free parameters are searched again from the spec's values,
+// which are usually close (statics::updateAfterEdit, without the strict LP check, for speed).
+// Throws corbel::Error when `name` is free or unknown. Apply the result with applySearch.
+statics::SearchResult resolveAfterEdit(const MasonrySpec& spec, const std::string& name, Progress* progress = nullptr);
+
+// Applies a search result to object `id` as one change: the free parameters take the
+// result's values. Nothing is applied (nullopt, with the reason in `why`) when the search was
+// cancelled or failed, or when the object's spec is no longer `started` (it was edited or
+// removed while the search ran: the result belongs to a structure that is gone).
+std::optional<Document> applySearch(const Document& doc, ObjectId id, const MasonrySpec& started,
+                                    const statics::SearchResult& result, std::string* why = nullptr);
+
+}  // namespace corbel::editor

@@ -1,0 +1,414 @@
+#include "editor/statics_panel.h"
+
+#include "editor/masonry_edits.h"
+#include "statics/tolerances.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace corbel::editor {
+
+namespace {
+
+constexpr int kLandscapeSamples = 41;
+const ImVec4 kGood(0.4f, 0.85f, 0.4f, 1), kBad(1, 0.45f, 0.35f, 1);
+const render::Rgba kCompression{0.85f, 0.25f, 0.12f, 1.0f}, kTension{0.1f, 0.35f, 1.0f, 1.0f};
+
+const DocObject* objectOf(const StaticsHost& host) { return host.doc ? host.doc->find(host.object) : nullptr; }
+
+// Finished work of a job: rethrows its exception; Cancelled counts as nothing to show.
+bool collect(std::unique_ptr<BackgroundJob>& job, bool wait, std::string* error) {
+  if (!job) return false;
+  if (wait) job->wait();
+  if (!job->finished()) return false;
+  job->wait();
+  bool ok = !job->progress().cancelled();
+  try {
+    job->rethrow();
+  } catch (const Cancelled&) {
+    ok = false;
+  } catch (const std::exception& e) {
+    if (error) *error = e.what();
+    ok = false;
+  }
+  job.reset();
+  return ok;
+}
+
+}  // namespace
+
+StaticsPanel::~StaticsPanel() {
+  for (auto* job : {&analysis_, &search_, &resolve_})
+    if (*job) {
+      (*job)->progress().cancel();
+      (*job)->wait();
+    }
+}
+
+void StaticsPanel::reset() {
+  if (analysis_) analysis_->progress().cancel();
+  analysing_.reset();
+  pendingResolve_.reset();
+  view_.reset();
+  landscape_.reset();
+  landscapeChoice_.clear();
+}
+
+void StaticsPanel::cancelSearch() {
+  if (search_) search_->progress().cancel();
+}
+
+std::optional<std::pair<std::string, std::pair<double, double>>> StaticsPanel::landscapeFor(
+    const MasonrySpec& spec) const {
+  auto chosen = landscapeChoice_;
+  if (chosen.empty()) {
+    if (!spec.free.empty())
+      chosen = spec.free.front().name;
+    else if (view_ && !view_->suggestedFree.empty())
+      chosen = view_->suggestedFree.front().name;
+  }
+  if (chosen.empty()) return std::nullopt;
+  for (const MasonryFree& f : spec.free)
+    if (f.name == chosen) return std::make_pair(chosen, std::make_pair(f.lo, f.hi));
+  if (view_)
+    for (const statics::Parameter& p : view_->parameters)
+      if (p.name == chosen) return std::make_pair(chosen, defaultBounds(p, view_->suggestedFree));
+  return std::nullopt;
+}
+
+void StaticsPanel::startAnalysis(const MasonrySpec& spec) {
+  auto work = std::make_shared<AnalysisWork>();
+  work->spec = spec;
+  const auto range = landscapeFor(spec);
+  work->range = range;
+  analysing_ = work;
+  analysis_ = std::make_unique<BackgroundJob>("Statics analysis", [work, range](Progress& progress) {
+    work->view = analyseMasonry(work->spec, &progress);
+    if (range && work->view.error.empty())
+      work->landscape = sampleLandscape(work->spec, range->first, range->second.first, range->second.second,
+                                        kLandscapeSamples, &progress);
+  });
+}
+
+void StaticsPanel::finishSearch(const StaticsHost& host) {
+  std::string error;
+  const bool cancelled = search_ && search_->progress().cancelled();
+  const bool ok = collect(search_, host.wait, &error);
+  if (search_) return;  // still running
+  if (!ok) {
+    host.log(cancelled ? "Make it stand: cancelled, nothing changed" : "Make it stand failed: " + error, !cancelled);
+    return;
+  }
+  lastSearch_ = *searchResult_;
+  std::string why;
+  if (auto next = applySearch(*host.doc, searchObject_, searchStart_, *searchResult_, &why)) {
+    const DocObject* o = host.doc->find(searchObject_);
+    host.commit(std::move(*next), "Make " + o->name + " stand", "");
+    host.endDrag();
+    host.log("Make it stand: " + searchResult_->message, searchResult_->status != statics::SearchStatus::Feasible);
+  } else {
+    host.log("Make it stand: " + searchResult_->message + "; not applied: " + why, true);
+  }
+}
+
+void StaticsPanel::updateResolve(const StaticsHost& host) {
+  if (resolve_) {
+    std::string error;
+    const bool ok = collect(resolve_, host.wait, &error);
+    if (resolve_) return;  // still running
+    if (ok) {
+      // Into the drag's undo step (same merge key); dropped if the spec moved on meanwhile, and
+      // the newest value is re-solved next.
+      if (auto next = applySearch(*host.doc, resolveObject_, resolveStart_, *resolveResult_))
+        host.commit(std::move(*next), "Edit " + resolveParameter_,
+                    "masonry" + std::to_string(resolveObject_) + ".value." + resolveParameter_);
+    } else if (!error.empty()) {
+      host.log("Keeping it standing: " + error, true);
+    }
+  }
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!pendingResolve_ || !spec || search_) return;
+  resolveObject_ = o->id;
+  resolveStart_ = *spec;
+  resolveParameter_ = *pendingResolve_;
+  pendingResolve_.reset();
+  auto result = std::make_shared<statics::SearchResult>();
+  resolveResult_ = result;
+  const MasonrySpec start = *spec;
+  const std::string name = resolveParameter_;
+  resolve_ = std::make_unique<BackgroundJob>("Keep it standing", [result, start, name](Progress& progress) {
+    *result = resolveAfterEdit(start, name, &progress);
+    if (result->status == statics::SearchStatus::Cancelled) progress.cancel();
+  });
+  if (host.wait) updateResolve(host);
+}
+
+void StaticsPanel::update(const StaticsHost& host) {
+  updateResolve(host);
+  if (search_) finishSearch(host);
+  if (analysis_) {
+    std::string error;
+    if (collect(analysis_, host.wait, &error)) {
+      view_ = std::move(analysing_->view);
+      if (analysing_->landscape) landscape_ = std::move(*analysing_->landscape);
+    } else if (!analysis_ && !error.empty()) {
+      host.log("Statics analysis: " + error, true);
+    }
+  }
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec || analysis_) return;
+  const auto range = landscapeFor(*spec);
+  const bool viewStale = !view_ || !(view_->spec == *spec);
+  const bool landscapeStale =
+      range && (!landscape_ || landscape_->parameter != range->first || landscape_->lo != range->second.first ||
+                landscape_->hi != range->second.second);
+  if (!viewStale && !landscapeStale) return;
+  if (analysing_ && analysing_->spec == *spec && analysing_->range == range) return;  // done; it failed
+  startAnalysis(*spec);
+  if (host.wait) update(host);
+}
+
+void StaticsPanel::makeItStand(const StaticsHost& host) {
+  if (search_) return;
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec) return;
+  searchObject_ = o->id;
+  searchStart_ = *spec;
+  auto result = std::make_shared<statics::SearchResult>();
+  searchResult_ = result;
+  const MasonrySpec start = *spec;
+  host.log("Make " + o->name + " stand…", false);
+  search_ = std::make_unique<BackgroundJob>("Make it stand", [result, start](Progress& progress) {
+    *result = searchMasonry(start, &progress);
+    if (result->status == statics::SearchStatus::Cancelled) progress.cancel();
+  });
+  if (host.wait) finishSearch(host);
+}
+
+void StaticsPanel::drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const {
+  if (!view_ || !(view_->spec == spec) || !view_->error.empty()) return;
+  if (colours_)
+    for (std::size_t b = 0; b < view_->blockFaces.size(); ++b) {
+      if (view_->fixed[b]) continue;
+      const auto colour = tensionColor(view_->tensionShare[b]);
+      for (const auto& face : view_->blockFaces[b]) overlay.polygon(face, colour);
+    }
+  if (arrows_)
+    for (const ForceArrow& a : forceArrows(view_->result, 0.2 * view_->modelSize))
+      onTop.arrow(a.from, a.to, a.tension ? kTension : kCompression, 0.25);
+}
+
+void StaticsPanel::drawParameters(const StaticsHost& host, const MasonrySpec& spec) {
+  if (!view_) return;
+  const std::string key = "masonry" + std::to_string(host.object) + ".";
+  auto apply = [&](const std::function<void(Document&)>& change, const std::string& label, const std::string& merge) {
+    Document d = *host.doc;
+    try {
+      change(d);
+      host.commit(std::move(d), label, merge.empty() ? std::string() : key + merge);
+    } catch (const std::exception& e) {
+      host.log(e.what(), true);
+    }
+  };
+  if (!ImGui::BeginTable("parameters", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
+  ImGui::TableSetupColumn("parameter", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("free in [lo, hi]", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+  ImGui::TableHeadersRow();
+  for (const statics::Parameter& p : view_->parameters) {
+    ImGui::PushID(p.name.c_str());
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(p.name.c_str());
+    if (ImGui::IsItemHovered() && !p.description.empty()) ImGui::SetTooltip("%s", p.description.c_str());
+    ImGui::TableNextColumn();
+    ImGui::SetNextItemWidth(-1);
+    // The value as the spec has it (the view may lag behind by a frame).
+    double value = p.value;
+    for (const MasonryParameter& q : spec.parameters)
+      if (q.name == p.name) value = q.value;
+    if (p.continuous) {
+      float v = float(value);
+      const float lo = std::isfinite(p.lo) ? float(p.lo) : -1e4f, hi = std::isfinite(p.hi) ? float(p.hi) : 1e4f;
+      if (ImGui::DragFloat("##value", &v, 0.002f, lo, hi, "%.4f", ImGuiSliderFlags_AlwaysClamp)) {
+        apply([&](Document& d) { setMasonryParameter(d, host.object, p.name, v); }, "Edit " + p.name,
+              "value." + p.name);
+        const bool isFree =
+            std::any_of(spec.free.begin(), spec.free.end(), [&](const MasonryFree& f) { return f.name == p.name; });
+        if (interactive_ && !isFree && !spec.free.empty()) pendingResolve_ = p.name;
+      }
+    } else {
+      int v = int(std::lround(value));
+      const int lo = std::isfinite(p.lo) ? int(p.lo) : 0, hi = std::isfinite(p.hi) ? int(std::min(p.hi, 1e6)) : 1000;
+      if (ImGui::DragInt("##value", &v, 0.1f, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp))
+        apply([&](Document& d) { setMasonryParameter(d, host.object, p.name, v); }, "Edit " + p.name,
+              "value." + p.name);
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+    ImGui::TableNextColumn();
+    if (!p.continuous) {
+      ImGui::TextDisabled("(a count)");
+      ImGui::PopID();
+      continue;
+    }
+    const auto f =
+        std::find_if(spec.free.begin(), spec.free.end(), [&](const MasonryFree& x) { return x.name == p.name; });
+    bool isFree = f != spec.free.end();
+    if (ImGui::Checkbox("##free", &isFree)) {
+      std::optional<std::pair<double, double>> bounds;
+      if (isFree) bounds = defaultBounds(p, view_->suggestedFree);
+      apply([&](Document& d) { setMasonryFree(d, host.object, p.name, bounds); }, (isFree ? "Free " : "Fix ") + p.name,
+            "");
+      host.endDrag();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Free: \"Make it stand\" may change it within the bounds");
+    if (f != spec.free.end()) {
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(-1);
+      float lo = float(f->lo), hi = float(f->hi);
+      const float min = std::isfinite(p.lo) ? float(p.lo) : -1e4f, max = std::isfinite(p.hi) ? float(p.hi) : 1e4f;
+      if (ImGui::DragFloatRange2("##bounds", &lo, &hi, 0.002f, min, max, "%.3f", "%.3f", ImGuiSliderFlags_AlwaysClamp))
+        apply([&](Document& d) { setMasonryFree(d, host.object, p.name, std::make_pair(double(lo), double(hi))); },
+              "Edit the bounds of " + p.name, "bounds." + p.name);
+      if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+    }
+    ImGui::PopID();
+  }
+  ImGui::EndTable();
+}
+
+void StaticsPanel::drawAnalysis(const MasonrySpec& spec) {
+  ImGui::Separator();
+  ImGui::TextDisabled("Analysis (penalty QP, Sec. 3.2)");
+  if (!view_) {
+    ImGui::TextDisabled("analysing...");
+    return;
+  }
+  if (!(view_->spec == spec)) ImGui::TextDisabled("(updating: showing the previous state)");
+  if (!view_->error.empty()) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored(kBad, "%s", view_->error.c_str());
+    ImGui::PopTextWrapPos();
+    return;
+  }
+  const statics::AnalysisResult& r = view_->result;
+  if (r.feasible)
+    ImGui::TextColored(kGood, "stands: a compression-only force field exists");
+  else
+    ImGui::TextColored(kBad, "does not stand: it needs tension (glue) to hold");
+  ImGui::Text("y = %.4g N²    y/W² = %.4g", r.y, r.yNormalised);
+  ImGui::Text("W = %.4g N, %zu blocks, %zu interfaces", r.totalWeight, view_->blockFaces.size(), r.interfaces.size());
+  ImGui::Text("solver: %s, %d iterations, residual %.2g", statics::toString(r.status).c_str(), r.iterations,
+              r.equilibriumResidual);
+  ImGui::Text("tension sites: %zu", r.tensionSites.size());
+  if (!r.tensionSites.empty())
+    ImGui::Text("largest tension %.4g N (%.3g W)", r.tensionSites.front().tension,
+                r.tensionSites.front().tension / std::max(r.totalWeight, 1e-300));
+  ImGui::Checkbox("Colour blocks by tension", &colours_);
+  ImGui::SameLine();
+  ImGui::Checkbox("Force arrows", &arrows_);
+  // Legend: stone (no tension) to blue (the block with the most tension).
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float w = 160, h = 12;
+  for (int i = 0; i < 32; ++i) {
+    const auto c = tensionColor(i / 31.0);
+    dl->AddRectFilled(ImVec2(at.x + w * i / 32, at.y), ImVec2(at.x + w * (i + 1) / 32 + 1, at.y + h),
+                      ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], 1)));
+  }
+  ImGui::Dummy(ImVec2(w, h));
+  ImGui::SameLine();
+  ImGui::TextDisabled("share of tension, 0 to 1");
+  ImGui::TextDisabled("arrows: interface forces in compression (red), tension (blue)");
+}
+
+void StaticsPanel::drawSearch(const StaticsHost& host) {
+  ImGui::Separator();
+  ImGui::TextDisabled("Parameter search (Sec. 4)");
+  if (search_) {
+    ImGui::ProgressBar(float(search_->progress().fraction()), ImVec2(-80, 0),
+                       ("evaluating " + search_->progress().stage()).c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) cancelSearch();
+  } else {
+    if (ImGui::Button("Make it stand")) makeItStand(host);
+    ImGui::SameLine();
+    ImGui::Checkbox("Keep it standing while I drag", &interactive_);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Fig. 13: after each change to a fixed parameter, the free ones are searched again from where "
+          "they are, in the background, into the same undo step");
+    if (resolve_) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("re-solving...");
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Move the free parameters within their bounds to minimise y (the model's suggested ones when "
+          "none is free); one undo step");
+  }
+  if (lastSearch_) {
+    const statics::SearchResult& s = *lastSearch_;
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored(s.status == statics::SearchStatus::Feasible ? kGood : kBad, "%s: %s",
+                       statics::toString(s.status).c_str(), s.message.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::Text("%d evaluations, %.2f s, y/W² %.3g -> %.3g", s.evaluations, s.seconds, s.initialMeasure, s.measure);
+    if (!s.history.empty()) {
+      std::vector<float> h(s.history.begin(), s.history.end());
+      ImGui::PlotLines("##history", h.data(), int(h.size()), 0, "y/W² per evaluation", 0.0f, FLT_MAX,
+                       ImVec2(ImGui::GetContentRegionAvail().x, 60));
+    }
+  }
+}
+
+void StaticsPanel::drawLandscape(const MasonrySpec& spec) {
+  ImGui::Separator();
+  ImGui::TextDisabled("Energy landscape (Fig. 8)");
+  if (!view_) return;
+  const auto range = landscapeFor(spec);
+  if (ImGui::BeginCombo("over", range ? range->first.c_str() : "(choose)")) {
+    for (const statics::Parameter& p : view_->parameters)
+      if (p.continuous && ImGui::Selectable(p.name.c_str(), range && range->first == p.name)) landscapeChoice_ = p.name;
+    ImGui::EndCombo();
+  }
+  if (!range) return;
+  if (!landscape_ || landscape_->parameter != range->first) {
+    ImGui::TextDisabled("sampling...");
+    return;
+  }
+  std::vector<float> m;
+  for (double v : landscape_->measure) m.push_back(std::isfinite(v) ? float(v) : 0.0f);
+  char caption[96];
+  std::snprintf(caption, sizeof caption, "y/W² over %s in [%.3g, %.3g]", landscape_->parameter.c_str(), landscape_->lo,
+                landscape_->hi);
+  ImGui::PlotLines("##landscape", m.data(), int(m.size()), 0, caption, 0.0f, FLT_MAX,
+                   ImVec2(ImGui::GetContentRegionAvail().x, 110));
+  std::size_t standing = 0;
+  for (double v : landscape_->measure) standing += v <= statics::kFeasibleMeasure;
+  ImGui::Text("stands at %zu of %zu samples", standing, landscape_->measure.size());
+}
+
+void StaticsPanel::draw(const StaticsHost& host, float x, float y, float w, float h) {
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec) return;
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Statics", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Text("%s: masonry model \"%s\"", o->name.c_str(), spec->model.c_str());
+  drawParameters(host, *spec);
+  drawAnalysis(*spec);
+  drawSearch(host);
+  drawLandscape(*spec);
+  ImGui::End();
+}
+
+}  // namespace corbel::editor

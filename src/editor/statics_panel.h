@@ -1,0 +1,93 @@
+#pragma once
+// The statics panel of a selected masonry object (Whiting et al. 2009), right of the 3D view:
+// the model's parameters, which are free for the search and within what bounds, the analysis
+// (y, y/W², status, iterations, tension sites), "Make it stand" (Sec. 4) with progress and
+// Cancel, keeping it standing while a fixed parameter is dragged (Fig. 13), and the energy
+// landscape over one parameter (Fig. 8). The analysis, the landscape
+// and the search run on worker threads (core/progress.h); the panel only reads their results
+// and commits Document changes (editor/masonry_edits.h), so every edit is undoable. The
+// viewport shows blocks coloured by their share of tension and the interface forces.
+#include "core/document.h"
+#include "core/progress.h"
+#include "editor/masonry_view.h"
+#include "render/overlay.h"
+#include "statics/search.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace corbel::editor {
+
+struct StaticsHost {
+  const Document* doc = nullptr;
+  ObjectId object = 0;
+  bool wait = false;  // scripted runs: wait for the workers so every frame shows the current state
+  std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
+  std::function<void()> endDrag;
+  std::function<void(const std::string&, bool)> log;
+};
+
+class StaticsPanel {
+ public:
+  StaticsPanel() = default;
+  ~StaticsPanel();  // cancels and joins the workers
+  StaticsPanel(const StaticsPanel&) = delete;
+  StaticsPanel& operator=(const StaticsPanel&) = delete;
+
+  // Once per frame while a masonry object is selected: collects finished work (a finished
+  // search is applied as one undoable change) and starts the analysis of a changed spec.
+  void update(const StaticsHost& host);
+  void draw(const StaticsHost& host, float x, float y, float w, float h);
+  // Block colours (into `overlay`, depth-tested) and force arrows (into `onTop`, seen through
+  // the blocks: they act inside them, on the interfaces) of the analysis, when it is of `spec`.
+  void drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const;
+  // "Make it stand" for the host's object; ignored while a search runs.
+  void makeItStand(const StaticsHost& host);
+  void cancelSearch();
+  bool searching() const { return search_ != nullptr; }
+  void reset();  // another object was selected
+
+ private:
+  void startAnalysis(const MasonrySpec& spec);
+  void finishSearch(const StaticsHost& host);
+  // Interactive editing (Fig. 13): re-solves the free parameters after a fixed one was dragged.
+  void updateResolve(const StaticsHost& host);
+  void drawParameters(const StaticsHost& host, const MasonrySpec& spec);
+  void drawAnalysis(const MasonrySpec& spec);
+  void drawSearch(const StaticsHost& host);
+  void drawLandscape(const MasonrySpec& spec);
+  // The landscape's parameter and range for a spec: the chosen one, else the first free one.
+  std::optional<std::pair<std::string, std::pair<double, double>>> landscapeFor(const MasonrySpec& spec) const;
+
+  struct AnalysisWork {
+    MasonrySpec spec;
+    std::optional<std::pair<std::string, std::pair<double, double>>> range;  // of the landscape
+    MasonryView view;
+    std::optional<Landscape> landscape;
+  };
+  std::unique_ptr<BackgroundJob> analysis_;
+  std::shared_ptr<AnalysisWork> analysing_;
+  std::optional<MasonryView> view_;
+  std::optional<Landscape> landscape_;
+  std::string landscapeChoice_;  // "" = the first free parameter
+
+  std::unique_ptr<BackgroundJob> search_;
+  ObjectId searchObject_ = 0;
+  MasonrySpec searchStart_;
+  std::shared_ptr<statics::SearchResult> searchResult_;
+  std::optional<statics::SearchResult> lastSearch_;
+
+  bool interactive_ = false;
+  std::optional<std::string> pendingResolve_;  // a fixed parameter dragged since the last re-solve
+  std::unique_ptr<BackgroundJob> resolve_;
+  ObjectId resolveObject_ = 0;
+  MasonrySpec resolveStart_;
+  std::string resolveParameter_;
+  std::shared_ptr<statics::SearchResult> resolveResult_;
+
+  bool colours_ = true, arrows_ = true;
+};
+
+}  // namespace corbel::editor

@@ -1,0 +1,84 @@
+// growth/kernel.h: a growth site of the Document is grown into the Scene as the engine grows it
+// on its own, every unit a closed shell of its boxes' volume, every constraint holding; a bad
+// site is the object's error, named by its path in the project file.
+#include "growth/kernel.h"
+
+#include "core/project_io.h"
+#include "core/scene.h"
+#include "growth/engine.h"
+#include "support.h"
+#include "../common/one_object.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace corbel::growth {
+namespace {
+
+std::string alphaSite() {
+  std::ifstream in(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-alpha.json");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Grown : corbel::test::OneObject {
+  explicit Grown(const GrowthSpec& spec) : OneObject(spec, registerKernel) {}
+};
+
+TEST(GrowthKernel, GrowsWhatTheEngineGrowsAndTheShellsHoldTheUnitsVolume) {
+  const std::string text = alphaSite();
+  for (int steps : {0, 5}) {
+    SCOPED_TRACE(steps);
+    GrowthSpec spec{text, 3, steps};
+    const Grown g(spec);
+    ASSERT_EQ(g.error(), "");
+    EXPECT_EQ(stoppedAfter(g.status().warnings), -1);  // a few steps do not finish Alpha
+    const Site site = parseSite(text);
+    GrowthOptions o;
+    o.seed = 3;
+    GrowthEngine engine(site, o);
+    for (int i = 0; i < steps; ++i) engine.step();
+    double volume = 0;
+    for (const Unit& u : engine.units()) volume += u.volume();
+    for (std::size_t i = 0; i < site.cores.size(); ++i) volume += site.coreBox(i).volume();
+    for (const Box& c : site.circulation) volume += c.volume();
+    const ValidityReport r = g.scene.validate(g.id);
+    EXPECT_TRUE(r.closedManifold()) << ::testing::PrintToString(r.problems());
+    EXPECT_EQ(r.components, engine.units().size() + site.cores.size() + site.circulation.size());
+    EXPECT_NEAR(r.volume, volume, 1e-6 * volume);
+  }
+}
+
+TEST(GrowthKernel, GrowingToTheEndSaysWhenEveryUnitStoppedAndKeepsTheConstraints) {
+  const std::string text = alphaSite();
+  const Grown g(GrowthSpec{text, 1, -1});
+  ASSERT_EQ(g.error(), "");
+  const int stopped = stoppedAfter(g.status().warnings);
+  ASSERT_GT(stopped, 0);
+  const Site site = parseSite(text);
+  GrowthEngine engine(site);
+  EXPECT_EQ(engine.run(100000), stopped);
+  EXPECT_TRUE(test::independentViolations(site, engine.units()).empty());
+  // The same count of steps gives the same growth, now finished too.
+  const Grown again(GrowthSpec{text, 1, stopped});
+  EXPECT_EQ(again.scene.validate(again.id).volume, g.scene.validate(g.id).volume);
+  EXPECT_EQ(stoppedAfter(again.status().warnings), stopped);
+}
+
+TEST(GrowthKernel, ABadSiteIsTheObjectsErrorNamedByItsPath) {
+  const LoadedProject p = parseProject(
+      R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "G", "growth": {"site": )"
+      R"({"envelope": {"origin": [0, 0], "size": [20, 20]}, "storeys": 2, "seeds": [{"at": [50, 5], "target_area": 30}]}}}]})");
+  Scene scene;
+  SceneSync sync;
+  registerKernel(sync);
+  sync.update(p.document, scene);
+  const std::string& error = sync.status().at(1).error;
+  EXPECT_EQ(error.rfind("growth.site.seeds[0]", 0), 0u) << error;
+}
+
+}  // namespace
+}  // namespace corbel::growth
