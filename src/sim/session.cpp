@@ -1,0 +1,277 @@
+#include "sim/session.h"
+
+#include "core/error.h"
+#include "statics/tolerances.h"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace corbel::sim {
+namespace {
+
+btVector3 bt(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
+Vec3 vec(const btVector3& v) { return Vec3(v.x(), v.y(), v.z()); }
+
+// The principal frame of a block: origin at its centroid, axes its principal axes.
+btTransform principalFrame(const MassProperties& m) {
+  const auto& a = m.principalAxes;
+  const btMatrix3x3 basis(a[0][0], a[1][0], a[2][0], a[0][1], a[1][1], a[2][1], a[0][2], a[1][2], a[2][2]);
+  return btTransform(basis, bt(m.centroid));
+}
+
+void checkSettings(const SimSettings& s) {
+  if (!(s.timeStep > 0) || !(s.timeStep <= 0.1)) throw Error("simulation: the time step must be in (0, 0.1] s");
+  if (s.solverIterations < 1 || s.solverIterations > 10000) throw Error("simulation: solver iterations must be in 1..10000");
+  if (!(s.friction >= 0) || !std::isfinite(s.friction)) throw Error("simulation: friction must be a finite number ≥ 0");
+  if (!(s.restitution >= 0 && s.restitution <= 1)) throw Error("simulation: restitution must be in [0, 1]");
+  if (!(s.loadDensity > 0) || !std::isfinite(s.loadDensity)) throw Error("simulation: the load density must be positive");
+}
+
+}  // namespace
+
+Vec3 Pose::apply(const Vec3& p) const {
+  const auto& r = rotation;
+  return Vec3(r[0] * p[0] + r[1] * p[1] + r[2] * p[2], r[3] * p[0] + r[4] * p[1] + r[5] * p[2],
+              r[6] * p[0] + r[7] * p[1] + r[8] * p[2]) +
+         translation;
+}
+
+// One Bullet world. Rebuilt from scratch by reset(), so no cached contact, warm-start impulse
+// or broad-phase pair order survives into a new run.
+struct Session::World {
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  std::vector<std::unique_ptr<btConvexHullShape>> shapes;
+  std::vector<std::unique_ptr<btRigidBody>> bodies;  // per design block, then per load
+  std::vector<btTransform> designFrames;              // each body's principal frame as built
+  std::vector<Vec3> baseGravity;                      // per body: gravity plus its live load / mass
+
+  ~World() {
+    for (auto& b : bodies)
+      if (b && b->isInWorld()) world.removeRigidBody(b.get());
+  }
+
+  // A body for a closed convex block: its hull in the principal frame, mass from its volume.
+  btRigidBody* add(const statics::Block& block, const MassProperties& m, double density, bool fixed,
+                   const SimSettings& s) {
+    const btTransform frame = principalFrame(m);
+    const btTransform toLocal = frame.inverse();
+    auto shape = std::make_unique<btConvexHullShape>();
+    for (const Vec3& v : block.vertices) shape->addPoint(toLocal(bt(v)), false);
+    shape->recalcLocalAabb();
+    shape->setMargin(kCollisionMargin);
+    shape->initializePolyhedralFeatures();  // the faces polyhedral clipping uses (settings.h)
+    const double mass = fixed ? 0.0 : density * m.volume;
+    const btVector3 inertia = fixed ? btVector3(0, 0, 0) : bt(m.principalMoments * density);
+    btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, shape.get(), inertia);
+    info.m_startWorldTransform = frame;
+    info.m_friction = std::sqrt(s.friction);  // Bullet multiplies the two coefficients
+    info.m_restitution = s.restitution;
+    info.m_linearDamping = info.m_angularDamping = 0;
+    auto body = std::make_unique<btRigidBody>(info);
+    if (!fixed) {
+      body->setFlags(body->getFlags() | BT_DISABLE_WORLD_GRAVITY);
+      // Never put to sleep: Bullet's sleeping thresholds (0.8 m/s, 1 rad/s held for 2 s) would
+      // freeze a slow collapse, and smaller ones (1 cm/s) never trigger on a standing arch,
+      // whose blocks jitter faster than they creep.
+      body->setActivationState(DISABLE_DEACTIVATION);
+    }
+    world.addRigidBody(body.get());
+    shapes.push_back(std::move(shape));
+    bodies.push_back(std::move(body));
+    designFrames.push_back(frame);
+    return bodies.back().get();
+  }
+};
+
+Session::Session(statics::Assembly design, SimSettings settings) : design_(std::move(design)), settings_(settings) {
+  checkSettings(settings_);
+  BBox box;
+  for (const statics::Block& b : design_.blocks)
+    for (const Vec3& v : b.vertices) box.add(v);
+  statics::validateAssembly(design_, statics::lengthTolerance(box));
+  for (const statics::Block& b : design_.blocks) mass_.push_back(sim::massProperties(b));
+  reset();
+}
+
+Session::~Session() = default;
+
+void Session::reset() {
+  world_.reset();
+  steps_ = 0;
+  pendingWall_ = 0;
+  shakeUntil_ = 0;
+  shakeAcceleration_ = Vec3(0.0);
+  loads_.clear();
+  loadPoses_.clear();
+  const std::size_t n = design_.blocks.size();
+  poses_.assign(n, Pose{});
+  displacement_.assign(n, 0.0);
+  maxDisplacement_.assign(n, 0.0);
+  removed_.assign(n, false);
+  build();
+}
+
+void Session::build() {
+  world_ = std::make_unique<World>();
+  World& w = *world_;
+  w.world.getDispatchInfo().m_deterministicOverlappingPairs = true;
+  btContactSolverInfo& info = w.world.getSolverInfo();
+  info.m_numIterations = settings_.solverIterations;
+  // Two friction directions per contact, fixed by the contact normal rather than by the
+  // sliding velocity: Bullet's default gives one, along the velocity, so a contact at rest
+  // resists sliding in one arbitrary direction only and an arch's feet creep outwards.
+  info.m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_SIMD | SOLVER_USE_2_FRICTION_DIRECTIONS |
+                      SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
+  if (settings_.randomOrder) info.m_solverMode |= SOLVER_RANDMIZE_ORDER;
+  w.solver.setRandSeed(settings_.seed);
+  const Vec3 g = design_.gravity * design_.g;
+  for (std::size_t i = 0; i < design_.blocks.size(); ++i) {
+    const statics::Block& b = design_.blocks[i];
+    w.add(b, mass_[i], b.density, b.fixed, settings_);
+    w.baseGravity.push_back(b.fixed ? Vec3(0.0) : g + b.liveLoad / (b.density * mass_[i].volume));
+  }
+  applyGravity();
+}
+
+void Session::applyGravity() {
+  const bool shaking = steps_ < shakeUntil_;
+  for (std::size_t i = 0; i < world_->bodies.size(); ++i) {
+    btRigidBody* b = world_->bodies[i].get();
+    if (b->isStaticObject()) continue;
+    b->setGravity(bt(world_->baseGravity[i] + (shaking ? shakeAcceleration_ : Vec3(0.0))));
+  }
+}
+
+void Session::step(int steps) {
+  for (int k = 0; k < steps; ++k) {
+    applyGravity();
+    // maxSubSteps = 0: exactly one internal step of the given length, no interpolation.
+    world_->world.stepSimulation(settings_.timeStep, 0, settings_.timeStep);
+    ++steps_;
+    readPoses();
+  }
+}
+
+void Session::runUntil(double seconds) {
+  if (!std::isfinite(seconds)) throw Error("simulation: the end time must be finite");
+  const long target = long(std::ceil(seconds / settings_.timeStep - 1e-9));
+  if (target > steps_) step(int(target - steps_));
+}
+
+int Session::advance(double wallSeconds, int maxSteps) {
+  if (!playing_ || !(wallSeconds > 0)) return 0;
+  pendingWall_ += wallSeconds;
+  int n = int(std::floor(pendingWall_ / settings_.timeStep));
+  if (n > maxSteps) {
+    n = maxSteps;
+    pendingWall_ = 0;  // drop the backlog rather than catch up
+  } else {
+    pendingWall_ -= n * settings_.timeStep;
+  }
+  step(n);
+  return n;
+}
+
+void Session::readPoses() {
+  auto poseOf = [](const btRigidBody& body, const btTransform& designFrame) {
+    // current = T_now · T_design⁻¹ applied to a design point.
+    const btTransform motion = body.getWorldTransform() * designFrame.inverse();
+    Pose p;
+    const btMatrix3x3& r = motion.getBasis();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) p.rotation[3 * i + j] = r[i][j];
+    p.translation = vec(motion.getOrigin());
+    return p;
+  };
+  for (std::size_t i = 0; i < design_.blocks.size(); ++i) {
+    if (removed_[i] || design_.blocks[i].fixed) continue;
+    poses_[i] = poseOf(*world_->bodies[i], world_->designFrames[i]);
+    double d = 0;
+    for (const Vec3& v : design_.blocks[i].vertices) d = std::max(d, (poses_[i].apply(v) - v).norm());
+    displacement_[i] = d;
+    maxDisplacement_[i] = std::max(maxDisplacement_[i], d);
+  }
+  for (std::size_t k = 0; k < loads_.size(); ++k) {
+    const std::size_t body = design_.blocks.size() + k;
+    loadPoses_[k] = poseOf(*world_->bodies[body], world_->designFrames[body]);
+  }
+}
+
+void Session::shake(const Vec3& velocityChange, double duration) {
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(velocityChange[i])) throw Error("shake: the velocity change must be finite");
+  if (!(duration > 0) || !std::isfinite(duration)) throw Error("shake: the duration must be positive");
+  const long n = std::max(1L, std::lround(duration / settings_.timeStep));
+  // The ground gains velocityChange over n steps; in its frame every body is pushed the other way.
+  shakeAcceleration_ = -velocityChange / (double(n) * settings_.timeStep);
+  shakeUntil_ = steps_ + n;
+}
+
+void Session::removeBlock(int block) {
+  if (block < 0 || block >= int(design_.blocks.size())) throw Error("remove: no block " + std::to_string(block));
+  const statics::Block& b = design_.blocks[block];
+  if (b.fixed) throw Error("remove: block \"" + b.name + "\" is fixed (ground or abutment) and cannot be removed");
+  if (removed_[block]) throw Error("remove: block \"" + b.name + "\" was already removed");
+  world_->world.removeRigidBody(world_->bodies[block].get());
+  removed_[block] = true;
+}
+
+int Session::dropLoad(int block, double mass, double height) {
+  if (block < 0 || block >= int(design_.blocks.size())) throw Error("drop: no block " + std::to_string(block));
+  const statics::Block& target = design_.blocks[block];
+  if (removed_[block]) throw Error("drop: block \"" + target.name + "\" was removed");
+  if (!(mass > 0) || !std::isfinite(mass)) throw Error("drop: the load's mass must be a positive number of kg");
+  if (!(height >= 0) || !std::isfinite(height)) throw Error("drop: the drop height must be a finite number ≥ 0 m");
+  // "Above" is against gravity; the cube's base is `height` over the block's highest point now.
+  const Vec3 up = -design_.gravity / design_.gravity.norm();
+  const Pose& now = poses_[block];
+  const Vec3 centre = now.apply(mass_[block].centroid);
+  double top = 0;
+  for (const Vec3& v : target.vertices) top = std::max(top, dot(now.apply(v) - centre, up));
+  const double side = std::cbrt(mass / settings_.loadDensity);
+  const Vec3 at = centre + up * (top + height + side / 2);
+  DroppedLoad load;
+  load.block = block;
+  load.mass = mass;
+  load.height = height;
+  load.cube = statics::boxBlock("load " + std::to_string(loads_.size() + 1), at - Vec3(side / 2), at + Vec3(side / 2),
+                                settings_.loadDensity);
+  const MassProperties m = sim::massProperties(load.cube);
+  world_->add(load.cube, m, settings_.loadDensity, false, settings_);
+  world_->baseGravity.push_back(design_.gravity * design_.g);
+  applyGravity();
+  loads_.push_back(std::move(load));
+  loadPoses_.push_back(Pose{});
+  return int(loads_.size()) - 1;
+}
+
+int Session::blockIndex(const std::string& name) const {
+  for (std::size_t i = 0; i < design_.blocks.size(); ++i)
+    if (design_.blocks[i].name == name) return int(i);
+  std::string some;
+  const std::size_t shown = std::min<std::size_t>(design_.blocks.size(), 5);
+  for (std::size_t i = 0; i < shown; ++i) some += (i ? ", \"" : "\"") + design_.blocks[i].name + "\"";
+  throw Error("no block named \"" + name + "\" (blocks: " + some +
+              (design_.blocks.size() > shown ? ", … " + std::to_string(design_.blocks.size()) + " in all" : "") + ")");
+}
+
+bool Session::fallen(int block) const {
+  if (removed_[block] || design_.blocks[block].fixed) return false;
+  const Vec3& c = mass_[block].centroid;
+  return (poses_[block].apply(c) - c).norm() > kFallenFraction * mass_[block].leastWidth;
+}
+
+std::vector<int> Session::fallenBlocks() const {
+  std::vector<int> out;
+  for (int i = 0; i < int(design_.blocks.size()); ++i)
+    if (fallen(i)) out.push_back(i);
+  return out;
+}
+
+}  // namespace corbel::sim
