@@ -1,4 +1,4 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs, grow). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, simulate, kifs, grow). Thin: parse, call, report.
 #include "cli/grow.h"
 #include "cli/kifs_command.h"
 #include "cli/number_list.h"
@@ -13,6 +13,7 @@
 #include "statics/kernel.h"
 #include "render/headless_context.h"
 #include "cli/statics_cli.h"
+#include "cli/simulate_cli.h"
 
 #include <nlohmann/json.hpp>
 
@@ -391,7 +392,7 @@ int cmdCheck(const Args& a) {
 
 int main(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    std::cout << kUsage << corbel::cli::kKifsUsage << kUsageEnd;
+    std::cout << kUsage << corbel::cli::kKifsUsage << corbel::cli::kSimulateUsage << kUsageEnd;
     return argc < 2 ? 2 : 0;
   }
   if (!std::strcmp(argv[1], "--version")) {
@@ -411,6 +412,7 @@ int main(int argc, char** argv) {
                                                {"--merge-coplanar", false}}));
     if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics") return cli::runStatics(argc, argv);
+    if (cmd == "simulate") return cli::runSimulate(argc, argv);
     if (cmd == "grow") return corbel::cli::grow(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
