@@ -148,14 +148,6 @@ Model modelFrom(const Request& r) {
   return m;
 }
 
-BBox movingBounds(const statics::Assembly& as) {
-  BBox box;
-  for (const statics::Block& b : as.blocks)
-    if (!b.fixed)
-      for (const Vec3& v : b.vertices) box.add(v);
-  return box;
-}
-
 // Renders the session's current state into DIR/frame-NNNN.png.
 class FrameWriter {
  public:
@@ -206,7 +198,7 @@ int simulate(const Request& r) {
   sim::SimSettings settings;
   settings.friction = option(r, "--friction", model.friction, 0, 100, "a friction coefficient in [0, 100]");
   sim::Session session(model.assembly, settings);
-  const BBox moving = movingBounds(model.assembly);
+  const BBox moving = sim::movingBounds(model.assembly);
 
   // Check every block name before any work, so a typo fails at once.
   std::vector<int> removes;
@@ -220,10 +212,9 @@ int simulate(const Request& r) {
   double shakeVelocity = 0, shakeDuration = sim::kPaperShakeDuration;
   if (r.values.count("--shake")) {
     if (r.values.at("--shake") == "paper") {
-      // Froude similarity: for the same motion under gravity, velocities and times scale with √L.
-      const double scale = std::sqrt(std::max(moving.size()[0], moving.size()[1]) / sim::kPaperModelWidth);
-      shakeVelocity = sim::kPaperShakeVelocity * scale;
-      shakeDuration *= scale;
+      const sim::ShakeSpec paper = sim::paperShake(model.assembly);
+      shakeVelocity = paper.velocity;
+      shakeDuration = paper.duration;
     } else {
       shakeVelocity = numberOf("--shake", r.values.at("--shake"), -1e3, 1e3, "a velocity in m/s or 'paper'");
     }

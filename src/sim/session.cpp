@@ -38,6 +38,20 @@ Vec3 Pose::apply(const Vec3& p) const {
          translation;
 }
 
+BBox movingBounds(const statics::Assembly& design) {
+  BBox box;
+  for (const statics::Block& b : design.blocks)
+    if (!b.fixed)
+      for (const Vec3& v : b.vertices) box.add(v);
+  return box;
+}
+
+ShakeSpec paperShake(const statics::Assembly& design) {
+  const BBox box = movingBounds(design);
+  const double scale = std::sqrt(std::max(box.size()[0], box.size()[1]) / kPaperModelWidth);
+  return {kPaperShakeVelocity * scale, kPaperShakeDuration * scale};
+}
+
 // One Bullet world. Rebuilt from scratch by reset(), so no cached contact, warm-start impulse
 // or broad-phase pair order survives into a new run.
 struct Session::World {

@@ -31,6 +31,19 @@ struct DroppedLoad {
   statics::Block cube;  // as released, in model coordinates
 };
 
+// The paper's shake (4 m/s within 1/60 s on a model about 10 m wide) scaled to `design` by
+// Froude similarity: under gravity, velocities and times scale with the square root of the
+// size, here the larger horizontal extent w of the blocks that are not fixed, so the velocity
+// is 4 m/s · √(w / 10 m) and the duration 1/60 s · √(w / 10 m).
+struct ShakeSpec {
+  double velocity = 0;  // m/s, along x
+  double duration = 0;  // s
+};
+ShakeSpec paperShake(const statics::Assembly& design);
+
+// The bounding box of the blocks that are not fixed.
+BBox movingBounds(const statics::Assembly& design);
+
 class Session {
  public:
   // Checks the assembly (statics::validateAssembly) and builds the world. Throws corbel::Error

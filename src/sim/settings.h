@@ -7,16 +7,15 @@
 namespace corbel::sim {
 
 // The fixed step, s: four steps per 1/60 s frame of the paper's shake, so the shake lasts
-// exactly four steps. Resting contacts settle by a fraction of a millimetre at this step
-// (a box on the ground: 0.01 mm; docs/sim.md); the drift of a standing arch per second
-// grows with the step.
+// exactly four steps. A box resting on the ground settles by 0.01 mm at this step; the creep
+// of a standing arch grows with the step (docs/sim.md).
 inline constexpr double kTimeStep = 1.0 / 240.0;
 
 // Sequential-impulse iterations per step. The solver never fully converges on a statically
 // indeterminate structure, and what it leaves each step becomes creep: an 8-voussoir arch at
-// 1.5 times its middle-third thickness moves 4 mm in 5 s with Bullet's default of 10, 1.9 mm
-// with 100 and 0.25 mm with 200 (halving the step at 100 iterations: 1.0 mm). Time per step
-// grows about linearly with the iterations.
+// 1.5 times its middle-third thickness moves 1.9 mm in 5 s with 100 iterations and 0.25 mm
+// with 200 (halving the step at 100 iterations: 1.0 mm). Time per step grows about linearly
+// with the iterations.
 inline constexpr int kSolverIterations = 200;
 
 // Bullet's collision margin, m. Its GJK test rounds every hull by the margin, which would

@@ -127,6 +127,19 @@ TEST(Session, ShakenBoxSlidesAsFarAsFrictionAllows) {
   EXPECT_NEAR(s.poses()[0].translation[2], 0, 1e-4);
 }
 
+// Froude similarity: a model a quarter the paper's width gets half its velocity and duration.
+TEST(Session, PaperShakeScalesWithTheSquareRootOfTheSize) {
+  statics::Assembly wide;
+  wide.blocks = {statics::boxBlock("wall", Vec3(0, 0, 0), Vec3(10, 0.5, 2)), ground()};
+  const ShakeSpec paper = paperShake(wide);
+  EXPECT_NEAR(paper.velocity, 4.0, 1e-12);
+  EXPECT_NEAR(paper.duration, 1.0 / 60, 1e-12);
+  statics::Assembly narrow;
+  narrow.blocks = {statics::boxBlock("pier", Vec3(0, 0, 0), Vec3(1, 2.5, 2)), ground()};
+  EXPECT_NEAR(paperShake(narrow).velocity, 2.0, 1e-12) << "the ground is fixed and does not count";
+  EXPECT_NEAR(paperShake(narrow).duration, 1.0 / 120, 1e-12);
+}
+
 // Three cubes; without the middle one the top one falls onto the bottom one, a cube lower.
 TEST(Session, RemovingASupportDropsWhatItCarried) {
   const double a = 0.3;
