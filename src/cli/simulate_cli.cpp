@@ -110,6 +110,7 @@ Model modelFrom(const Request& r) {
   Model m;
   if (r.values.count("--example")) {
     if (!r.positional.empty()) throw UsageError("simulate: give a PROJECT or --example NAME, not both");
+    if (r.values.count("--object")) throw UsageError("simulate: --object names an object of a PROJECT, not of an example");
     const statics::ParametricModel model = statics::exampleByName(r.values.at("--example"));
     statics::ParameterSet values = model.parameters;
     applySets(r, values);

@@ -86,6 +86,18 @@ TEST(SimulateCli, ShakeAndDropAreReported) {
   EXPECT_GT(j["largest_displacement"].get<double>(), 1e-3) << "a 0.5 m/s jolt moves the arch";
 }
 
+// Two processes, the same command: the same numbers to the last bit (JSON doubles round-trip).
+TEST(SimulateCli, RunsRepeatAcrossProcesses) {
+  const std::string args = "simulate " + kArch + " --seconds 0.6 --shake paper --at 0.1";
+  const Outcome a = corbel(args), b = corbel(args);
+  ASSERT_EQ(a.exit, 0) << a.stderrText;
+  ASSERT_EQ(b.exit, 0) << b.stderrText;
+  const auto ja = nlohmann::json::parse(a.stdoutText), jb = nlohmann::json::parse(b.stdoutText);
+  EXPECT_EQ(ja["max_displacement"], jb["max_displacement"]);
+  EXPECT_EQ(ja["fallen"], jb["fallen"]);
+  EXPECT_GT(ja["largest_displacement"].get<double>(), 0.01);
+}
+
 TEST(SimulateCli, ProjectsWithAMasonryObjectRun) {
   const Outcome run = corbel(std::string("simulate '") + CORBEL_SOURCE_DIR + "/assets/examples/masonry-arch.corbel' --seconds 0.2");
   ASSERT_EQ(run.exit, 0) << run.stderrText;
@@ -112,6 +124,10 @@ TEST(SimulateCli, BadInputIsRefusedWithTheReason) {
   EXPECT_EQ(corbel("simulate " + kArch + " --shake fast").exit, 2);
   EXPECT_EQ(corbel("simulate " + kArch + " --bounce").exit, 2);
   EXPECT_EQ(corbel("simulate").exit, 2);
+  EXPECT_EQ(corbel("simulate " + kArch + " --object arch").exit, 2);
+  o = corbel("simulate " + kArch + " --set height=3");
+  EXPECT_EQ(o.exit, 1);
+  EXPECT_NE(o.stderrText.find("height"), std::string::npos) << o.stderrText;
 }
 
 }  // namespace
