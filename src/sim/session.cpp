@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace corbel::sim {
 namespace {
@@ -64,10 +65,13 @@ struct Session::World {
   std::vector<std::unique_ptr<btRigidBody>> bodies;  // per design block, then per load
   std::vector<btTransform> designFrames;              // each body's principal frame as built
   std::vector<Vec3> baseGravity;                      // per body: gravity plus its live load / mass
+  std::unique_ptr<btStaticPlaneShape> floorShape;
+  std::unique_ptr<btRigidBody> floor;
 
   ~World() {
     for (auto& b : bodies)
       if (b && b->isInWorld()) world.removeRigidBody(b.get());
+    if (floor) world.removeRigidBody(floor.get());
   }
 
   // A body for a closed convex block: its hull in the principal frame, mass from its volume.
@@ -149,6 +153,28 @@ void Session::build() {
     const statics::Block& b = design_.blocks[i];
     w.add(b, mass_[i], b.density, b.fixed, settings_);
     w.baseGravity.push_back(b.fixed ? Vec3(0.0) : g + b.liveLoad / (b.density * mass_[i].volume));
+  }
+  if (settings_.floor) {
+    // An endless plane across gravity, level with the bottom of the fixed blocks (the model's
+    // ground slab, which then stands on it like a plinth; the bottom of everything when nothing
+    // is fixed), so what is thrown off the slab comes to rest. Not level with the slab's top:
+    // a block on the slab would then touch both, and Bullet's friction from two coincident
+    // supports exceeds what one gives (a shaken box slid 4 % short).
+    const Vec3 up = -design_.gravity / design_.gravity.norm();
+    bool anyFixed = false;
+    for (const statics::Block& b : design_.blocks) anyFixed = anyFixed || b.fixed;
+    double level = std::numeric_limits<double>::infinity();
+    for (const statics::Block& b : design_.blocks)
+      if (b.fixed || !anyFixed)
+        for (const Vec3& v : b.vertices) level = std::min(level, dot(v, up));
+    // Convex-against-plane contacts, unlike hull-against-hull ones, keep the hull's margin: the
+    // plane lies a margin lower, so a block on it rests at the floor's level.
+    w.floorShape = std::make_unique<btStaticPlaneShape>(bt(up), level - kCollisionMargin);
+    btRigidBody::btRigidBodyConstructionInfo floorInfo(0.0, nullptr, w.floorShape.get());
+    floorInfo.m_friction = std::sqrt(settings_.friction);
+    floorInfo.m_restitution = settings_.restitution;
+    w.floor = std::make_unique<btRigidBody>(floorInfo);
+    w.world.addRigidBody(w.floor.get());
   }
   applyGravity();
 }

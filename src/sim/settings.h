@@ -47,6 +47,9 @@ struct SimSettings {
   // when `randomOrder` is on; a fixed seed and step give bitwise-equal runs either way.
   std::uint32_t seed = 1;
   bool randomOrder = false;
+  // An endless floor level with the bottom of the model's fixed blocks (under its ground slab),
+  // so a block thrown past the slab's edge lands instead of falling for ever.
+  bool floor = true;
   // Density of dropped loads, kg/m³ (stone).
   double loadDensity = 2400.0;
 };

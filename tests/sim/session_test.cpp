@@ -140,6 +140,25 @@ TEST(Session, PaperShakeScalesWithTheSquareRootOfTheSize) {
   EXPECT_NEAR(paperShake(narrow).duration, 1.0 / 120, 1e-12);
 }
 
+// A box thrown off the edge of a 1 m thick ground slab lands on the floor under the slab.
+TEST(Session, WhatLeavesTheGroundSlabLandsOnTheFloor) {
+  statics::Assembly as;
+  as.blocks = {statics::boxBlock("box", Vec3(0.9, -0.1, 0), Vec3(1.1, 0.1, 0.2)),
+               statics::boxBlock("slab", Vec3(-1, -1, -1), Vec3(1, 1, 0), 1.0, true)};
+  Session s(as);
+  s.shake(Vec3(-3, 0, 0));  // the ground jumps back: the box flies off towards +x
+  s.runUntil(3.0);
+  const Vec3 centre = s.poses()[0].apply(Vec3(1.0, 0, 0.1));
+  EXPECT_GT(centre[0], 1.1) << "off the slab";
+  EXPECT_NEAR(centre[2], -1.0 + 0.1, 2e-3) << "its centre a half-side above the floor";
+  SimSettings noFloor;
+  noFloor.floor = false;
+  Session falling(as, noFloor);
+  falling.shake(Vec3(-3, 0, 0));
+  falling.runUntil(3.0);
+  EXPECT_LT(falling.poses()[0].translation[2], -10.0) << "without the floor it falls on";
+}
+
 // Three cubes; without the middle one the top one falls onto the bottom one, a cube lower.
 TEST(Session, RemovingASupportDropsWhatItCarried) {
   const double a = 0.3;
