@@ -7,7 +7,7 @@
 namespace corbel::sim {
 
 // The fixed step, s: four steps per 1/60 s frame of the paper's shake, so the shake lasts
-// exactly four steps. A box resting on the ground settles by 0.01 mm at this step; the creep
+// exactly four steps. A box resting on the ground settles by 0.02 mm at this step; the creep
 // of a standing arch grows with the step (docs/sim.md).
 inline constexpr double kTimeStep = 1.0 / 240.0;
 
@@ -21,7 +21,7 @@ inline constexpr int kSolverIterations = 200;
 // Bullet's collision margin, m. Its GJK test rounds every hull by the margin, which would
 // lift each stacked block by twice the margin; here GJK only picks the contact normal and
 // the contact points come from clipping the hulls' true faces against each other (Bullet's
-// polyhedral clipping, which ignores the margin): a box rests within 0.01 mm of where it was
+// polyhedral clipping, which ignores the margin): a box rests within 0.03 mm of where it was
 // built. The margin then pads the broad phase's boxes, and is kept small for thin blocks.
 inline constexpr double kCollisionMargin = 0.001;
 
