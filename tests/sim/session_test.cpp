@@ -80,6 +80,24 @@ TEST(Session, ArchAtEightyPercentOfItsLeastThicknessCollapses) {
   EXPECT_GE(s.fallenBlocks().size(), 10u) << "at least half the voussoirs out of place";
 }
 
+// Ochsendorf's tilting test (Sec. 3.3): the statics kernel's critical ground tilt for an arch
+// (15.84° for t/R = 0.2 on 100 voussoirs) parts an arch that stays up from one that falls.
+TEST(Session, ArchStaysBelowItsCriticalTiltAndFallsAboveIt) {
+  const statics::ArchSpec spec = archOf(20, 0.2);
+  const double critical = statics::criticalArchTilt(spec, {}, 1e-3);
+  EXPECT_NEAR(critical, 15.8, 0.5);
+  statics::ArchSpec tilted = spec;
+  tilted.tiltDeg = critical - 6;
+  Session below(statics::semicircularArch(tilted));
+  below.runUntil(3.0);
+  EXPECT_TRUE(below.fallenBlocks().empty());
+  EXPECT_LT(largest(below.maxDisplacement()), 5e-3) << "it settles by millimetres at most";
+  tilted.tiltDeg = critical + 6;
+  Session above(statics::semicircularArch(tilted));
+  above.runUntil(3.0);
+  EXPECT_GE(above.fallenBlocks().size(), 10u);
+}
+
 // Two cubes of side a: the top one tips when its centroid passes the lower cube's edge, at an
 // overhang of a/2. Three cubes (the harmonic stack): the top may overhang the middle by a/2 and
 // the top two the bottom by a/4, the pair's centroid then over the bottom's edge.
