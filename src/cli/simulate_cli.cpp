@@ -46,7 +46,7 @@ struct UsageError : Error {
 
 struct Request {
   std::vector<std::string> positional;
-  std::map<std::string, std::string> values;             // the last value of each option
+  std::map<std::string, std::string> values;              // the last value of each option
   std::map<std::string, std::vector<std::string>> lists;  // every value of --set and --remove
   const std::vector<std::string>& list(const std::string& name) const {
     static const std::vector<std::string> none;
@@ -57,8 +57,9 @@ struct Request {
 
 // Every option takes a value; --set and --remove may repeat.
 Request parse(int argc, char** argv) {
-  static const std::set<std::string> kSingle = {"--object", "--example", "--seconds", "--shake", "--drop", "--drop-mass",
-                                                "--drop-height", "--at", "--friction", "--frames", "--fps", "--size"};
+  static const std::set<std::string> kSingle = {"--object",   "--example",   "--seconds",     "--shake",
+                                                "--drop",     "--drop-mass", "--drop-height", "--at",
+                                                "--friction", "--frames",    "--fps",         "--size"};
   static const std::set<std::string> kRepeated = {"--set", "--remove"};
   Request r;
   int i = 2;
@@ -110,7 +111,8 @@ Model modelFrom(const Request& r) {
   Model m;
   if (r.values.count("--example")) {
     if (!r.positional.empty()) throw UsageError("simulate: give a PROJECT or --example NAME, not both");
-    if (r.values.count("--object")) throw UsageError("simulate: --object names an object of a PROJECT, not of an example");
+    if (r.values.count("--object"))
+      throw UsageError("simulate: --object names an object of a PROJECT, not of an example");
     const statics::ParametricModel model = statics::exampleByName(r.values.at("--example"));
     statics::ParameterSet values = model.parameters;
     applySets(r, values);
@@ -166,7 +168,8 @@ class FrameWriter {
     render::RenderSettings settings;
     char name[32];
     std::snprintf(name, sizeof name, "frame-%04d.png", count_++);
-    render::writePng(render::renderImage(renderer_, scene_, camera_, width_, height_, settings), (dir_ / name).string());
+    render::writePng(render::renderImage(renderer_, scene_, camera_, width_, height_, settings),
+                     (dir_ / name).string());
   }
   int count() const { return count_; }
 
@@ -205,7 +208,8 @@ int simulate(const Request& r) {
   std::vector<int> removes;
   for (const std::string& name : r.list("--remove")) {
     removes.push_back(session.blockIndex(name));
-    if (model.assembly.blocks[removes.back()].fixed) throw Error("--remove: block \"" + name + "\" is fixed (the ground) and stays");
+    if (model.assembly.blocks[removes.back()].fixed)
+      throw Error("--remove: block \"" + name + "\" is fixed (the ground) and stays");
   }
   const int dropOn = r.values.count("--drop") ? session.blockIndex(r.values.at("--drop")) : -1;
   const double dropMass = option(r, "--drop-mass", 100, 1e-6, 1e9, "a mass in kg > 0");

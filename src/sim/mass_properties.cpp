@@ -16,7 +16,9 @@ MassProperties massProperties(const statics::Block& block) {
   // volumes, first and second moments add up to the solid's. For a tetrahedron with corners
   // 0, a, b, c (relative to the reference), ∫ x xᵀ dV = V/20 (a aᵀ + b bᵀ + c cᵀ + s sᵀ), s = a + b + c.
   const Eigen::Vector3d ref(block.vertices[0][0], block.vertices[0][1], block.vertices[0][2]);
-  auto at = [&](int i) -> Eigen::Vector3d { return Eigen::Vector3d(block.vertices[i][0], block.vertices[i][1], block.vertices[i][2]) - ref; };
+  auto at = [&](int i) -> Eigen::Vector3d {
+    return Eigen::Vector3d(block.vertices[i][0], block.vertices[i][1], block.vertices[i][2]) - ref;
+  };
   double volume = 0;
   Eigen::Vector3d first = Eigen::Vector3d::Zero();
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();

@@ -22,7 +22,8 @@ MeshData posedMesh(const Session& session, const std::string& material) {
   const int block = mesh.addTag("block"), ground = mesh.addTag("ground"), load = mesh.addTag("load");
   const auto& blocks = session.design().blocks;
   for (std::size_t i = 0; i < blocks.size(); ++i)
-    if (!session.removed(int(i))) addBlock(mesh, blocks[i], session.poses()[i], blocks[i].fixed ? ground : block, stone);
+    if (!session.removed(int(i)))
+      addBlock(mesh, blocks[i], session.poses()[i], blocks[i].fixed ? ground : block, stone);
   for (std::size_t k = 0; k < session.loads().size(); ++k)
     addBlock(mesh, session.loads()[k].cube, session.loadPoses()[k], load, stone);
   return mesh;

@@ -24,10 +24,12 @@ btTransform principalFrame(const MassProperties& m) {
 
 void checkSettings(const SimSettings& s) {
   if (!(s.timeStep > 0) || !(s.timeStep <= 0.1)) throw Error("simulation: the time step must be in (0, 0.1] s");
-  if (s.solverIterations < 1 || s.solverIterations > 10000) throw Error("simulation: solver iterations must be in 1..10000");
+  if (s.solverIterations < 1 || s.solverIterations > 10000)
+    throw Error("simulation: solver iterations must be in 1..10000");
   if (!(s.friction >= 0) || !std::isfinite(s.friction)) throw Error("simulation: friction must be a finite number ≥ 0");
   if (!(s.restitution >= 0 && s.restitution <= 1)) throw Error("simulation: restitution must be in [0, 1]");
-  if (!(s.loadDensity > 0) || !std::isfinite(s.loadDensity)) throw Error("simulation: the load density must be positive");
+  if (!(s.loadDensity > 0) || !std::isfinite(s.loadDensity))
+    throw Error("simulation: the load density must be positive");
 }
 
 }  // namespace
@@ -63,8 +65,8 @@ struct Session::World {
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
   std::vector<std::unique_ptr<btConvexHullShape>> shapes;
   std::vector<std::unique_ptr<btRigidBody>> bodies;  // per design block, then per load
-  std::vector<btTransform> designFrames;              // each body's principal frame as built
-  std::vector<Vec3> baseGravity;                      // per body: gravity plus its live load / mass
+  std::vector<btTransform> designFrames;             // each body's principal frame as built
+  std::vector<Vec3> baseGravity;                     // per body: gravity plus its live load / mass
   std::unique_ptr<btStaticPlaneShape> floorShape;
   std::unique_ptr<btRigidBody> floor;
 

@@ -26,8 +26,8 @@ struct Pose {
 // block's centroid with its base `height` above the block's highest point.
 struct DroppedLoad {
   int block = -1;
-  double mass = 0;    // kg
-  double height = 0;  // m
+  double mass = 0;      // kg
+  double height = 0;    // m
   statics::Block cube;  // as released, in model coordinates
 };
 

@@ -27,9 +27,9 @@ inline constexpr double kCollisionMargin = 0.001;
 
 // The paper's shake: a lateral change of the ground's velocity of 4 m/s within 1/60 s, on a
 // model about 10 m wide (Sec. 5).
-inline constexpr double kPaperShakeVelocity = 4.0;   // m/s
+inline constexpr double kPaperShakeVelocity = 4.0;         // m/s
 inline constexpr double kPaperShakeDuration = 1.0 / 60.0;  // s
-inline constexpr double kPaperModelWidth = 10.0;     // m
+inline constexpr double kPaperModelWidth = 10.0;           // m
 
 // A block has fallen when its centroid ends farther than this fraction of the block's least
 // width (its thinnest extent across any of its faces) from where it was built: half a

@@ -42,7 +42,8 @@ const std::string kArch = "--example arch-on-columns --set thickness=0.35 --set 
 
 TEST(SimulateCli, WhatStaticsCallsStandingStaysPut) {
   // The oracle: the statics command, with every joint's force in its middle third.
-  const Outcome statics = corbel("statics example arch-on-columns --set thickness=0.35 --set columnWidth=0.8 --kern 0.6667 --json");
+  const Outcome statics =
+      corbel("statics example arch-on-columns --set thickness=0.35 --set columnWidth=0.8 --kern 0.6667 --json");
   ASSERT_EQ(statics.exit, 0) << statics.stderrText;
   ASSERT_TRUE(nlohmann::json::parse(statics.stdoutText)["stands"].get<bool>());
 
@@ -58,7 +59,8 @@ TEST(SimulateCli, WhatStaticsCallsStandingStaysPut) {
 TEST(SimulateCli, ArchWithoutItsKeystoneFallsAndFramesAreWritten) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "corbel-sim-cli-frames";
   std::filesystem::remove_all(dir);
-  const Outcome run = corbel("simulate " + kArch + " --seconds 1.5 --at 0.2 --remove 'arch/voussoir 4' --fps 2 --size 160x120 --frames '" +
+  const Outcome run = corbel("simulate " + kArch +
+                             " --seconds 1.5 --at 0.2 --remove 'arch/voussoir 4' --fps 2 --size 160x120 --frames '" +
                              dir.string() + "'");
   ASSERT_EQ(run.exit, 0) << run.stderrText;
   const auto j = nlohmann::json::parse(run.stdoutText);
@@ -78,7 +80,8 @@ TEST(SimulateCli, ArchWithoutItsKeystoneFallsAndFramesAreWritten) {
 }
 
 TEST(SimulateCli, ShakeAndDropAreReported) {
-  const Outcome run = corbel("simulate " + kArch + " --seconds 0.5 --shake 0.5 --drop 'arch/voussoir 4' --drop-mass 20");
+  const Outcome run =
+      corbel("simulate " + kArch + " --seconds 0.5 --shake 0.5 --drop 'arch/voussoir 4' --drop-mass 20");
   ASSERT_EQ(run.exit, 0) << run.stderrText;
   const auto j = nlohmann::json::parse(run.stdoutText);
   EXPECT_EQ(j["shake"]["velocity"], 0.5);
@@ -99,7 +102,8 @@ TEST(SimulateCli, RunsRepeatAcrossProcesses) {
 }
 
 TEST(SimulateCli, ProjectsWithAMasonryObjectRun) {
-  const Outcome run = corbel(std::string("simulate '") + CORBEL_SOURCE_DIR + "/assets/examples/masonry-arch.corbel' --seconds 0.2");
+  const Outcome run =
+      corbel(std::string("simulate '") + CORBEL_SOURCE_DIR + "/assets/examples/masonry-arch.corbel' --seconds 0.2");
   ASSERT_EQ(run.exit, 0) << run.stderrText;
   EXPECT_EQ(nlohmann::json::parse(run.stdoutText)["model"], "Arch on columns");
 }

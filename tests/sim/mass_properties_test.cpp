@@ -33,7 +33,8 @@ TEST(MassProperties, TurnedBoxTurnsItsAxes) {
   // A 1 × 2 × 3 box turned 30° about z: its longest horizontal side lies along (cos 30°, sin 30°).
   statics::Block box = statics::boxBlock("box", Vec3(-1, -0.5, -1.5), Vec3(1, 0.5, 1.5));
   const double t = std::acos(-1.0) / 6;
-  for (Vec3& p : box.vertices) p = Vec3(std::cos(t) * p[0] - std::sin(t) * p[1], std::sin(t) * p[0] + std::cos(t) * p[1], p[2]);
+  for (Vec3& p : box.vertices)
+    p = Vec3(std::cos(t) * p[0] - std::sin(t) * p[1], std::sin(t) * p[0] + std::cos(t) * p[1], p[2]);
   const auto m = massProperties(box);
   const double v = 6;
   // Smallest moment about the 3 m axis (z): V (2² + 1²)/12; the largest about the 1 m side.

@@ -18,7 +18,7 @@
 namespace corbel::sim {
 namespace {
 
-constexpr double kStandsWithin = 1e-3;  // the "standing": no block moves 1 mm in 5 s
+constexpr double kStandsWithin = 1e-3;      // the "standing": no block moves 1 mm in 5 s
 constexpr double kMiddleThird = 2.0 / 3.0;  // kern shrink leaving a rectangle's middle third (Sec. 3.4)
 
 double largest(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
