@@ -28,14 +28,15 @@
 namespace corbel::cli {
 
 const char* const kSimulateUsage = R"(  corbel-cli simulate PROJECT [--object NAME] | --example NAME [--set NAME=V ...]
-                    [--seconds S] [--shake V|paper] [--remove BLOCK ...] [--drop BLOCK
-                    [--drop-mass KG] [--drop-height M]] [--at T] [--friction A]
+                    [--seconds S] [--shake V|paper] [--remove BLOCK ...] [--break BLOCK ...]
+                    [--drop BLOCK [--drop-mass KG] [--drop-height M]] [--at T] [--friction A]
                     [--frames DIR [--fps N] [--size WxH]]
                     Rigid-body simulation of a masonry model (Bullet; docs/sim.md) for S
                     seconds (default 5). At time T (default 0): a ground shake of V m/s along
                     x within 1/60 s ("paper": the paper's 4 m/s on 10 m, scaled to the
-                    model), blocks removed, a stone dropped on a block. Prints a JSON summary
-                    (largest displacement per block, fallen blocks); --frames writes PNGs.
+                    model), blocks removed or broken along a 45° crack, a stone dropped on a
+                    block. Prints a JSON summary (largest displacement per block, fallen
+                    blocks); --frames writes PNGs.
 )";
 
 namespace {
@@ -47,7 +48,7 @@ struct UsageError : Error {
 struct Request {
   std::vector<std::string> positional;
   std::map<std::string, std::string> values;              // the last value of each option
-  std::map<std::string, std::vector<std::string>> lists;  // every value of --set and --remove
+  std::map<std::string, std::vector<std::string>> lists;  // every value of --set, --remove and --break
   const std::vector<std::string>& list(const std::string& name) const {
     static const std::vector<std::string> none;
     const auto it = lists.find(name);
@@ -55,12 +56,12 @@ struct Request {
   }
 };
 
-// Every option takes a value; --set and --remove may repeat.
+// Every option takes a value; --set, --remove and --break may repeat.
 Request parse(int argc, char** argv) {
   static const std::set<std::string> kSingle = {"--object",   "--example",   "--seconds",     "--shake",
                                                 "--drop",     "--drop-mass", "--drop-height", "--at",
                                                 "--friction", "--frames",    "--fps",         "--size"};
-  static const std::set<std::string> kRepeated = {"--set", "--remove"};
+  static const std::set<std::string> kRepeated = {"--set", "--remove", "--break"};
   Request r;
   int i = 2;
   while (i < argc) {
@@ -206,11 +207,13 @@ int simulate(const Request& r) {
 
   // Check every block name before any work, so a typo fails at once.
   std::vector<int> removes;
-  for (const std::string& name : r.list("--remove")) {
-    removes.push_back(session.blockIndex(name));
-    if (model.assembly.blocks[removes.back()].fixed)
-      throw Error("--remove: block \"" + name + "\" is fixed (the ground) and stays");
-  }
+  std::vector<int> breaks;
+  for (const char* option : {"--remove", "--break"})
+    for (const std::string& name : r.list(option)) {
+      (std::string(option) == "--remove" ? removes : breaks).push_back(session.blockIndex(name));
+      if (model.assembly.blocks[session.blockIndex(name)].fixed)
+        throw Error(std::string(option) + ": block \"" + name + "\" is fixed (the ground) and stays");
+    }
   const int dropOn = r.values.count("--drop") ? session.blockIndex(r.values.at("--drop")) : -1;
   const double dropMass = option(r, "--drop-mass", 100, 1e-6, 1e9, "a mass in kg > 0");
   const double dropHeight = option(r, "--drop-height", 0.5, 0, 1e4, "a height in m ≥ 0");
@@ -242,6 +245,7 @@ int simulate(const Request& r) {
   auto perturb = [&] {
     if (shakeVelocity != 0) session.shake(Vec3(shakeVelocity, 0, 0), shakeDuration);
     for (int b : removes) session.removeBlock(b);
+    for (int b : breaks) session.breakBlock(b);
     if (dropOn >= 0) session.dropLoad(dropOn, dropMass, dropHeight);
     perturbed = true;
   };
@@ -275,6 +279,9 @@ int simulate(const Request& r) {
   nlohmann::ordered_json removed = nlohmann::json::array(), fallen = nlohmann::json::array();
   for (int b : removes) removed.push_back(blocks[b].name);
   out["removed"] = removed;
+  nlohmann::ordered_json broken = nlohmann::json::array();
+  for (int b : breaks) broken.push_back(blocks[b].name);
+  out["broken"] = broken;
   if (dropOn >= 0) out["drop"] = {{"block", blocks[dropOn].name}, {"mass", dropMass}, {"height", dropHeight}};
   for (int b : session.fallenBlocks()) fallen.push_back(blocks[b].name);
   out["fallen_count"] = fallen.size();

@@ -24,6 +24,10 @@ MeshData posedMesh(const Session& session, const std::string& material) {
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!session.removed(int(i)))
       addBlock(mesh, blocks[i], session.poses()[i], blocks[i].fixed ? ground : block, stone);
+  for (std::size_t k = 0; k < session.pieces().size(); ++k) {
+    const statics::Block& whole = blocks[session.pieces()[k].block];
+    addBlock(mesh, session.pieces()[k].shape, session.piecePoses()[k], whole.fixed ? ground : block, stone);
+  }
   for (std::size_t k = 0; k < session.loads().size(); ++k)
     addBlock(mesh, session.loads()[k].cube, session.loadPoses()[k], load, stone);
   return mesh;

@@ -1,11 +1,13 @@
 #include "sim/session.h"
 
 #include "core/error.h"
+#include "sim/split.h"
 #include "statics/tolerances.h"
 
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -77,8 +79,9 @@ struct Session::World {
   }
 
   // A body for a closed convex block: its hull in the principal frame, mass from its volume.
+  // `motion` places it: the identity for a block where it was built.
   btRigidBody* add(const statics::Block& block, const MassProperties& m, double density, bool fixed,
-                   const SimSettings& s) {
+                   const SimSettings& s, const btTransform& motion = btTransform::getIdentity()) {
     const btTransform frame = principalFrame(m);
     const btTransform toLocal = frame.inverse();
     auto shape = std::make_unique<btConvexHullShape>();
@@ -89,7 +92,7 @@ struct Session::World {
     const double mass = fixed ? 0.0 : density * m.volume;
     const btVector3 inertia = fixed ? btVector3(0, 0, 0) : bt(m.principalMoments * density);
     btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, shape.get(), inertia);
-    info.m_startWorldTransform = frame;
+    info.m_startWorldTransform = motion * frame;
     info.m_friction = std::sqrt(s.friction);  // Bullet multiplies the two coefficients
     info.m_restitution = s.restitution;
     info.m_linearDamping = info.m_angularDamping = 0;
@@ -129,6 +132,9 @@ void Session::reset() {
   shakeAcceleration_ = Vec3(0.0);
   loads_.clear();
   loadPoses_.clear();
+  pieces_.clear();
+  piecePoses_.clear();
+  extras_.clear();
   const std::size_t n = design_.blocks.size();
   poses_.assign(n, Pose{});
   displacement_.assign(n, 0.0);
@@ -239,9 +245,10 @@ void Session::readPoses() {
     displacement_[i] = d;
     maxDisplacement_[i] = std::max(maxDisplacement_[i], d);
   }
-  for (std::size_t k = 0; k < loads_.size(); ++k) {
+  for (std::size_t k = 0; k < extras_.size(); ++k) {
     const std::size_t body = design_.blocks.size() + k;
-    loadPoses_[k] = poseOf(*world_->bodies[body], world_->designFrames[body]);
+    (extras_[k].load ? loadPoses_ : piecePoses_)[extras_[k].index] =
+        poseOf(*world_->bodies[body], world_->designFrames[body]);
   }
 }
 
@@ -255,13 +262,49 @@ void Session::shake(const Vec3& velocityChange, double duration) {
   shakeUntil_ = steps_ + n;
 }
 
-void Session::removeBlock(int block) {
-  if (block < 0 || block >= int(design_.blocks.size())) throw Error("remove: no block " + std::to_string(block));
+void Session::removeBlock(int block) { takeOut(block, "remove"); }
+
+void Session::takeOut(int block, const char* what) {
+  const std::string w = what;
+  if (block < 0 || block >= int(design_.blocks.size())) throw Error(w + ": no block " + std::to_string(block));
   const statics::Block& b = design_.blocks[block];
-  if (b.fixed) throw Error("remove: block \"" + b.name + "\" is fixed (ground or abutment) and cannot be removed");
-  if (removed_[block]) throw Error("remove: block \"" + b.name + "\" was already removed");
+  if (b.fixed) throw Error(w + ": block \"" + b.name + "\" is fixed (ground or abutment) and stays");
+  if (removed_[block]) throw Error(w + ": block \"" + b.name + "\" was already removed or broken");
   world_->world.removeRigidBody(world_->bodies[block].get());
   removed_[block] = true;
+}
+
+int Session::breakBlock(int block) {
+  if (block >= 0 && block < int(design_.blocks.size()) && !design_.blocks[block].fixed && !removed_[block]) {
+    const statics::Block& b = design_.blocks[block];
+    const std::array<statics::Block, 2> parts = splitBlock(b, mass_[block].centroid, shearCrackNormal(b));
+    const btRigidBody& whole = *world_->bodies[block];
+    const btTransform motion = whole.getWorldTransform() * world_->designFrames[block].inverse();
+    const btVector3 v = whole.getLinearVelocity(), w = whole.getAngularVelocity();
+    takeOut(block, "break");
+    const int first = int(pieces_.size());
+    for (const statics::Block& p : parts) {
+      const MassProperties m = sim::massProperties(p);
+      btRigidBody* body = world_->add(p, m, p.density, false, settings_, motion);
+      // Each part keeps the velocity its material had: v + ω × (its centroid − the block's).
+      body->setLinearVelocity(v + w.cross(body->getCenterOfMassPosition() - whole.getCenterOfMassPosition()));
+      body->setAngularVelocity(w);
+      world_->baseGravity.push_back(world_->baseGravity[block]);
+      extras_.push_back({false, int(pieces_.size())});
+      pieces_.push_back({block, p});
+      piecePoses_.push_back(poses_[block]);
+    }
+    applyGravity();
+    return first;
+  }
+  takeOut(block, "break");  // says what is wrong
+  return -1;
+}
+
+bool Session::broken(int block) const {
+  for (const Piece& p : pieces_)
+    if (p.block == block) return true;
+  return false;
 }
 
 int Session::dropLoad(int block, double mass, double height) {
@@ -288,6 +331,7 @@ int Session::dropLoad(int block, double mass, double height) {
   world_->add(load.cube, m, settings_.loadDensity, false, settings_);
   world_->baseGravity.push_back(design_.gravity * design_.g);
   applyGravity();
+  extras_.push_back({true, int(loads_.size())});
   loads_.push_back(std::move(load));
   loadPoses_.push_back(Pose{});
   return int(loads_.size()) - 1;

@@ -79,6 +79,10 @@ class Session {
   // Takes a block out of the world (Fig. 14b). Throws for a fixed block, a bad index or a block
   // already removed.
   void removeBlock(int block);
+  // Breaks a block (Fig. 14b): the block leaves the world and its two parts either side of a
+  // shear crack (split.h: shearCrackNormal, through its centroid) take its place, moving as it
+  // moved. Returns the index of the first part in pieces(). Throws like removeBlock.
+  int breakBlock(int block);
   // Drops a stone cube of `mass` kg from `height` m above `block` (see DroppedLoad). Returns
   // its index in loads(). Throws for a bad block, non-positive mass or negative height.
   int dropLoad(int block, double mass, double height);
@@ -102,6 +106,16 @@ class Session {
   bool fallen(int block) const;
   std::vector<int> fallenBlocks() const;
 
+  // The parts of broken blocks, in the block's design coordinates (so a part's pose maps it
+  // like its block's), and where they are now.
+  struct Piece {
+    int block = -1;
+    statics::Block shape;
+  };
+  const std::vector<Piece>& pieces() const { return pieces_; }
+  const std::vector<Pose>& piecePoses() const { return piecePoses_; }
+  bool broken(int block) const;
+
   const std::vector<DroppedLoad>& loads() const { return loads_; }
   const std::vector<Pose>& loadPoses() const { return loadPoses_; }
 
@@ -110,6 +124,7 @@ class Session {
   void build();
   void applyGravity();
   void readPoses();
+  void takeOut(int block, const char* what);
 
   statics::Assembly design_;
   SimSettings settings_;
@@ -124,6 +139,14 @@ class Session {
   std::vector<double> displacement_, maxDisplacement_;
   std::vector<bool> removed_;
   std::vector<DroppedLoad> loads_;
+  std::vector<Piece> pieces_;
+  std::vector<Pose> piecePoses_;
+  // Extra bodies in world order after the design's: each a load (index into loads_) or a piece.
+  struct Extra {
+    bool load = true;
+    int index = 0;
+  };
+  std::vector<Extra> extras_;
 };
 
 }  // namespace corbel::sim

@@ -79,6 +79,15 @@ TEST(SimulateCli, ArchWithoutItsKeystoneFallsAndFramesAreWritten) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(SimulateCli, BrokenColumnIsReported) {
+  const Outcome run = corbel("simulate " + kArch + " --seconds 0.3 --break 'left column/drum 0'");
+  ASSERT_EQ(run.exit, 0) << run.stderrText;
+  const auto j = nlohmann::json::parse(run.stdoutText);
+  EXPECT_EQ(j["broken"][0], "left column/drum 0");
+  EXPECT_EQ(j["removed"].size(), 0u);
+  EXPECT_EQ(corbel("simulate " + kArch + " --break ground").exit, 1);
+}
+
 TEST(SimulateCli, ShakeAndDropAreReported) {
   const Outcome run =
       corbel("simulate " + kArch + " --seconds 0.5 --shake 0.5 --drop 'arch/voussoir 4' --drop-mass 20");

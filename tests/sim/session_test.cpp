@@ -190,6 +190,38 @@ TEST(Session, RemovingASupportDropsWhatItCarried) {
   EXPECT_TRUE(s.fallen(2));
 }
 
+// A pier broken along a 45° shear crack under a capstone: the wedges can hold each other only
+// with friction above tan 45° = 1. The statics kernel, given the parts, says so both ways.
+TEST(Session, BrokenPierHoldsOnlyWithFrictionAboveOne) {
+  statics::Assembly as;
+  as.blocks = {statics::boxBlock("pier", Vec3(-0.15, -0.2, 0), Vec3(0.15, 0.2, 1.2)),
+               statics::boxBlock("cap", Vec3(-0.3, -0.3, 1.2), Vec3(0.3, 0.3, 1.4)), ground()};
+  for (double friction : {0.7, 1.5}) {
+    SimSettings settings;
+    settings.friction = friction;
+    Session s(as, settings);
+    const int first = s.breakBlock(0);
+    EXPECT_TRUE(s.removed(0));
+    EXPECT_TRUE(s.broken(0));
+    ASSERT_EQ(s.pieces().size(), 2u);
+    statics::Assembly cracked;
+    cracked.blocks = {s.pieces()[first].shape, s.pieces()[first + 1].shape, as.blocks[1], as.blocks[2]};
+    statics::AnalysisOptions options;
+    options.friction = friction;
+    const bool stands = statics::checkFeasibility(cracked, options).feasible;
+    EXPECT_EQ(stands, friction > 1) << friction;
+    s.runUntil(2.0);
+    if (stands)
+      EXPECT_LT(s.maxDisplacement()[1], 5e-3) << "the cap stays";
+    else
+      EXPECT_TRUE(s.fallen(1)) << "the cap comes down";
+  }
+  Session s(as);
+  EXPECT_THROW(s.breakBlock(2), Error) << "the ground";
+  s.breakBlock(0);
+  EXPECT_THROW(s.breakBlock(0), Error) << "already broken";
+}
+
 // A load released from rest falls freely until it meets the block: at time t above the block
 // its base is h − g t²/2 over the block's top (the integrator's first-order error is g·dt·t/2).
 TEST(Session, DroppedLoadFallsFreelyThenRestsOnTheBlock) {
