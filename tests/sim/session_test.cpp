@@ -245,14 +245,16 @@ TEST(Session, DroppedLoadFallsFreelyThenRestsOnTheBlock) {
 
 std::vector<double> flatten(const Session& s) {
   std::vector<double> out;
-  for (const Pose& p : s.poses()) {
-    out.insert(out.end(), p.rotation.begin(), p.rotation.end());
-    for (int i = 0; i < 3; ++i) out.push_back(p.translation[i]);
-  }
+  for (const auto* poses : {&s.poses(), &s.piecePoses(), &s.loadPoses()})
+    for (const Pose& p : *poses) {
+      out.insert(out.end(), p.rotation.begin(), p.rotation.end());
+      for (int i = 0; i < 3; ++i) out.push_back(p.translation[i]);
+    }
   return out;
 }
 
-// The same step and seed give bitwise-equal runs, in a new session or after reset().
+// The same step and seed give bitwise-equal runs, in a new session or after reset(), with every
+// perturbation in play.
 TEST(Session, RunsAreBitwiseRepeatable) {
   const statics::Assembly arch = statics::semicircularArch(archOf(12, 0.15));
   for (bool random : {false, true}) {
@@ -264,6 +266,7 @@ TEST(Session, RunsAreBitwiseRepeatable) {
       s.runUntil(0.5);
       s.dropLoad(6, 20, 0.2);
       s.removeBlock(2);
+      s.breakBlock(9);
       s.runUntil(1.5);
       return flatten(s);
     };
@@ -275,6 +278,7 @@ TEST(Session, RunsAreBitwiseRepeatable) {
     EXPECT_EQ(a.time(), 0.0);
     EXPECT_FALSE(a.removed(2));
     EXPECT_TRUE(a.loads().empty());
+    EXPECT_TRUE(a.pieces().empty());
     const std::vector<double> again = run(a);
     EXPECT_EQ(0, std::memcmp(first.data(), again.data(), first.size() * sizeof(double)));
     EXPECT_GT(largest(a.maxDisplacement()), 0.01) << "the perturbations did move it";
