@@ -1,6 +1,8 @@
 // corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
 #include "cli/grow.h"
 
+#include "cli/scene_png.h"
+
 #include "core/error.h"
 #include "core/export.h"
 #include "core/scene.h"
@@ -185,14 +187,7 @@ int grow(int argc, char** argv) {
     }
     if (!png.empty()) {
       if (!context) context = std::make_unique<render::HeadlessContext>();
-      render::Renderer renderer;
-      render::OrbitCamera camera;
-      camera.frame(scene.bounds(), 1200.0 / 800.0);
-      camera.azimuth_deg = -75;
-      camera.elevation_deg = 30;
-      camera.distance *= 0.95;
-      render::RenderSettings settings;
-      render::writePng(render::renderImage(renderer, scene, camera, 1200, 800, settings), png);
+      writeScenePng(scene, {-75, 30, 0.95}, png);
       j["render"] = png;
     }
   }

@@ -1,4 +1,5 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics, simulate, kifs, grow). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, simulate, kifs, grow, complete). Thin: parse, call, report.
+#include "cli/complete.h"
 #include "cli/grow.h"
 #include "cli/kifs_command.h"
 #include "cli/number_list.h"
@@ -58,13 +59,18 @@ usage:
                     [--algorithm mma|slsqp|lbfgs] [--max-evaluations N] [--max-seconds S]
                     [--kern S] [--friction A] [--friction-sides 4|8] [--json]
                     NAME: tower (Fig. 11), arch-on-columns (Fig. 8), barrel-vault (Fig. 13),
-                    flying-buttresses (Fig. 13 with flyers), bezier-arch (Fig. 12).
+                    flying-buttresses (Fig. 13 with flyers), bezier-arch (Fig. 12), chapel
+                    (Fig. 9, 480 blocks), abbey (Fig. 1, 988 blocks).
                     Prints y/W² and the solver status; --optimize searches the free
                     parameters (the example's own when no --free) until it stands (Sec. 4)
                     and prints the status (feasible or local minimum), iterations, values.
   corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
                     [--view-maps exact|raster|gl] [--pixel M]
                     Grows housing units on a site (docs/growth.md); prints one JSON line.
+  corbel-cli complete --seeds N --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S]
+                    [--out FILE] [--render PNG]
+                    Completes forms from N seed units with F_q in [LO, HI] (docs/growth.md),
+                    fitted and sized into the region; prints one JSON line.
 )";
 constexpr const char* kUsageEnd = R"(  corbel-cli --version | --help
 
@@ -414,6 +420,7 @@ int main(int argc, char** argv) {
     if (cmd == "statics") return cli::runStatics(argc, argv);
     if (cmd == "simulate") return cli::runSimulate(argc, argv);
     if (cmd == "grow") return corbel::cli::grow(argc, argv);
+    if (cmd == "complete") return corbel::cli::complete(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";

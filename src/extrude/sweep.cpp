@@ -116,6 +116,7 @@ class Sweeper {
  private:
   // Geometry.
   Vec2 cornerAt(int c, double z) const;
+  Vec2 nearestOnPath(int c, const Vec2& p, double z) const;
   void setCornerMotion(int c, const Vec2& at, double z);
   void setEdgePlane(Edge& e, const Vec2& d, const Vec2& pointOnLine, double z, double angle);
   int addVertex(const Vec2& p, double z);
@@ -201,6 +202,27 @@ Vec2 Sweeper::cornerAt(int ci, double z) const {
   const double det = cross2(a.n, b.n);
   const double ra = a.c + a.k * z, rb = b.c + b.k * z;
   return Vec2((ra * b.n[1] - rb * a.n[1]) / det, (a.n[0] * rb - b.n[0] * ra) / det);
+}
+
+// Events within δ1 of height are one event (Sec. 4.4), so a corner arrives at p if its path
+// passes within δ2 of p somewhere within δ1 of z. For most corners this is where it is at z;
+// a corner racing along a near-flat ridge (between almost antiparallel edges) moves thousands
+// of metres per metre of rise, and the rounding of two predictions of one event in height
+// alone would put it microns away.
+constexpr double kRaceReach = 100;
+
+Vec2 Sweeper::nearestOnPath(int ci, const Vec2& p, double z) const {
+  const Vec2 at = cornerAt(ci, z);
+  const Vec2& v = corners_[ci].v;
+  const double vv = OpenMesh::dot(v, v);
+  // Slower corners move less than δ2 in δ1 of height: their place at z decides, so the
+  // clustering of ordinary events stays exactly δ2.
+  if (!(vv * tol_.height * tol_.height > tol_.cluster * tol_.cluster)) return at;
+  // ... but never further along its path than kRaceReach δ2, so a corner racing at 1e8 m/m
+  // cannot skip past the ends of its own edges into an unrelated event on its line.
+  const double window = std::min(tol_.height, kRaceReach * tol_.cluster / std::sqrt(vv));
+  const double t = std::clamp(OpenMesh::dot(v, p - at) / vv, -window, window);
+  return at + v * t;
 }
 
 void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
@@ -497,7 +519,7 @@ void Sweeper::predictAgainst(int ei) {
 bool Sweeper::handleIntersection(const Candidate& cand) {
   const double z = cand.z;
   if (!corners_[cand.corner].alive) return false;
-  if ((cornerAt(cand.corner, z) - cand.p).norm() > tol_.cluster) return false;
+  if ((nearestOnPath(cand.corner, cand.p, z) - cand.p).norm() > tol_.cluster) return false;
 
   // Corners that arrive at the point.
   std::vector<int> K;
@@ -508,10 +530,10 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     // bound is loose by 2 δ2 plus a relative margin far above rounding, so no corner within δ2
     // of the point is ever skipped.
     const Corner& c = corners_[ci];
-    const double travel = c.speed * std::abs(z - c.z0);
+    const double travel = c.speed * (std::abs(z - c.z0) + tol_.height);
     const double reach = travel + 2 * tol_.cluster + 1e-12 * (c.base.norm() + travel);
     if ((c.base - cand.p).sqrnorm() > reach * reach) continue;
-    const Vec2 p = cornerAt(ci, z);
+    const Vec2 p = nearestOnPath(ci, cand.p, z);
     if ((p - cand.p).norm() <= tol_.cluster) {
       K.push_back(ci);
       l += p;
@@ -980,6 +1002,7 @@ SweepOutput Sweeper::run() {
     h.pop_back();
     if (!h.empty()) queue_.push(h.front());
     if (cand.z < z_ - tol_.height) continue;  // predicted before an earlier change
+    SWEEP_TRACE(" candidate of corner %d at (%.12g, %.12g, %.12g)", cand.corner, cand.p[0], cand.p[1], cand.z);
     if (handleIntersection(cand)) {
       z_ = std::max(z_, cand.z);
       // An event can cost far more than a pop (hundreds of edges through one point in a

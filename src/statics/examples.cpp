@@ -7,7 +7,9 @@
 #include "statics/column.h"
 #include "statics/shapes.h"
 #include "statics/vault.h"
+#include "statics/wall.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -200,7 +202,97 @@ ParametricModel flyingButtressVaultExample() {
   return m;
 }
 
-std::vector<std::string> exampleNames() { return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch"}; }
+// The wall template runs along x with its thickness along y; a side wall of a nave runs
+// along y. Swapping x and y is a mirror, so faces are reversed to keep them outward.
+std::vector<Block> alongY(std::vector<Block> blocks) {
+  for (Block& b : blocks) {
+    for (Vec3& v : b.vertices) std::swap(v[0], v[1]);
+    for (auto& f : b.faces) std::reverse(f.begin(), f.end());
+    std::swap(b.liveLoad[0], b.liveLoad[1]);
+  }
+  return blocks;
+}
+
+ParametricModel chapelExample() {
+  ParametricModel m;
+  m.name = "chapel";
+  m.description =
+      "Fig. 9 (after the Sainte Chapelle): a barrel-vaulted hall of bays, each side wall pierced by a tall window, "
+      "buttress piers between the bays";
+  m.parameters.add(param("radius", 3.0, 0.5, 30.0, "centreline radius of the vault (half the span), m"));
+  m.parameters.add(param("thickness", 0.45, 0.05, 3.0, "thickness of the vault (a semicircle needs t/R > 0.1075), m"));
+  m.parameters.add(param("bays", 6, 1, 60, "bays along the hall", false));
+  m.parameters.add(param("bayLength", 3.0, 1.0, 20.0, "length of a bay along the hall, m"));
+  m.parameters.add(param("wallHeight", 6.0, 1.0, 60.0, "height of the side walls (the vault springs from their top), m"));
+  m.parameters.add(param("wallThickness", 0.6, 0.1, 5.0, "thickness of the side walls, m"));
+  m.parameters.add(param("courses", 6, 3, 100, "courses of the walls and piers", false));
+  m.parameters.add(param("windowWidth", 1.5, 0.2, 19.0, "width of each bay's window (centred in the bay), m"));
+  m.parameters.add(param("buttressWidth", 0.4, 0.05, 10.0, "how far the piers between the bays stand out from the walls, m"));
+  m.parameters.add(param("buttressDepth", 0.75, 0.1, 10.0, "depth of the piers along the hall, m"));
+  m.parameters.add(param("voussoirs", 14, 2, 400, "voussoirs per ring of the vault", false));
+  m.suggestedFree = {{"buttressWidth", 0.1, 3.0}, {"buttressDepth", 0.3, 1.5}, {"wallThickness", 0.3, 1.5}, {"wallHeight", 3.0, 6.0}};
+  m.build = [](const ParameterSet& p) {
+    const int bays = count(p, "bays"), courses = count(p, "courses");
+    const double bay = p["bayLength"], h = p["wallHeight"], wt = p["wallThickness"];
+    BarrelVaultSpec vault;
+    vault.blocks = count(p, "voussoirs");
+    vault.rings = 2 * bays;
+    vault.radius = p["radius"];
+    vault.thickness = p["thickness"];
+    vault.length = bays * bay;
+    const double inner = vault.radius - vault.thickness / 2;
+    if (wt < vault.thickness) throw Error("chapel: the walls (" + std::to_string(wt) + " m) are thinner than the vault they carry");
+    // One wall segment a bay, in courses of about square blocks, its window from the second
+    // course to the one under the top (the top course holds the lintel).
+    WallSpec wall;
+    wall.length = bay;
+    wall.thickness = wt;
+    wall.height = h;
+    wall.courses = courses;
+    const double ww = p["windowWidth"], pierWall = (bay - ww) / 2;  // wall each side of a window
+    if (!(pierWall >= 0.1))
+      throw Error("chapel: a window of " + std::to_string(ww) + " m leaves less than 0.1 m of wall each side in a bay of " +
+                  std::to_string(bay) + " m");
+    // The wall each side of the window is a whole number of blocks about a course high.
+    wall.blockLength = pierWall / std::max(1.0, std::round(pierWall / (h / courses)));
+    wall.windows.push_back({(bay - ww) / 2, ww, 1, courses - 1});
+    const double bw = p["buttressWidth"], bd = p["buttressDepth"];
+    std::vector<Block> side;  // the +x side
+    for (int k = 0; k < bays; ++k)
+      for (Block& blk : placed(alongY(wallBlocks(wall)), Vec3(inner, k * bay, 0.0), "wall " + std::to_string(k))) side.push_back(blk);
+    for (int k = 0; k <= bays; ++k) {
+      // A pier centred on the joint between two bays, cut back to the hall at its ends.
+      const double y0 = std::max(0.0, k * bay - bd / 2), y1 = std::min(bays * bay, k * bay + bd / 2);
+      ButtressSpec pier{h, bw, bw, y1 - y0, courses, 2400.0};
+      for (Block& blk : placed(buttressBlocks(pier), Vec3(inner + wt, y0, 0.0), "pier " + std::to_string(k))) side.push_back(blk);
+    }
+    StructureBuilder b;
+    b.add("vault", barrelVaultBlocks(vault), Vec3(0.0, 0.0, h));
+    b.add("right", side);
+    b.add("left", mirroredX(side));
+    b.groundUnder(1.0);
+    return b.build();
+  };
+  return m;
+}
+
+ParametricModel abbeyExample() {
+  // Fig. 1 (after Cluny): a long nave of the flying-buttress vault, with its four free
+  // parameters (Table 1's first row): wall thickness, pier width, flyer thickness, reach.
+  ParametricModel m = flyingButtressVaultExample();
+  m.name = "abbey";
+  m.description = "Fig. 1 (after Cluny Abbey): a nave of 26 bays, its barrel vault on walls propped by flying buttresses on piers";
+  for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double>>{
+           {"radius", 4.0}, {"thickness", 0.6}, {"length", 26.0}, {"rings", 26}, {"wallHeight", 8.0},
+           {"wallThickness", 0.8}, {"courses", 5}, {"reach", 2.0}, {"flyerThickness", 0.4}, {"pierWidth", 0.6}})
+    m.parameters.set(name, value);
+  m.suggestedFree = {{"wallThickness", 0.6, 2.0}, {"pierWidth", 0.3, 1.5}, {"flyerThickness", 0.2, 1.0}, {"reach", 1.5, 4.0}};
+  return m;
+}
+
+std::vector<std::string> exampleNames() {
+  return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch", "chapel", "abbey"};
+}
 
 ParametricModel exampleByName(const std::string& name) {
   if (name == "tower") return towerExample();
@@ -208,6 +300,8 @@ ParametricModel exampleByName(const std::string& name) {
   if (name == "barrel-vault") return barrelVaultExample();
   if (name == "bezier-arch") return bezierArchExample();
   if (name == "flying-buttresses") return flyingButtressVaultExample();
+  if (name == "chapel") return chapelExample();
+  if (name == "abbey") return abbeyExample();
   std::string known;
   for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown example '" + name + "' (examples: " + known + ")");

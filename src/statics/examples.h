@@ -35,6 +35,19 @@ ParametricModel flyingButtressVaultExample();
 // stand). Free by default: x1 in [−1.5, 0.5], x2 in [−0.5, 1.5].
 ParametricModel bezierArchExample();
 
+// Fig. 9 (after the Sainte Chapelle, 486 blocks in Table 1): a hall of `bays` bays under a
+// barrel vault (two rings a bay), each side wall a bay of courses with a window (lintel in the
+// top course), piers of `buttressWidth` × `buttressDepth` standing out at the joints between
+// bays. 480 blocks by default. Free by default: buttressWidth, buttressDepth, wallThickness and
+// wallHeight (the paper's column dimensions and overall height). The paper's groined vault is
+// a barrel vault here.
+ParametricModel chapelExample();
+
+// Fig. 1 (after Cluny, 986 blocks in Table 1): flyingButtressVaultExample as a nave of 26
+// bays, 8 m walls and an 8 m span (988 blocks). Free by default: wallThickness, pierWidth,
+// flyerThickness and reach (Table 1's four parameters).
+ParametricModel abbeyExample();
+
 std::vector<std::string> exampleNames();
 // Throws corbel::Error for an unknown name, listing the known ones.
 ParametricModel exampleByName(const std::string& name);

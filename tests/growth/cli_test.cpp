@@ -116,3 +116,43 @@ TEST(GrowCli, GlViewMapsGrowTheSameModelAsTheCpuRasterizer) {
 }
 
 }  // namespace
+
+// corbel-cli complete (Ch. 7): every form reported lies in the range and its units tile
+// what the sizing left them; bad arguments are refused with the flag named.
+TEST(CompleteCli, FormsInRangeAndClearErrors) {
+  const std::string obj = testing::TempDir() + "complete.obj";
+  const CliRun r = cli("complete --seeds 4 --complexity 0.30:0.36 --count 3 --region 0,0,20,12 --out " + obj);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["found"].get<int>(), 3);
+  for (const auto& f : j["forms"]) {
+    EXPECT_GE(f["value"].get<double>(), 0.30);
+    EXPECT_LE(f["value"].get<double>(), 0.36);
+    EXPECT_DOUBLE_EQ(f["value"].get<double>(), f["incidences"].get<double>() / f["faces"].get<double>());
+    EXPECT_EQ(f["units"].size(), 4u);
+    EXPECT_LE(f["area_error_after"].get<double>(), f["area_error_before"].get<double>());
+    double area = 0;
+    for (const auto& u : f["units"]) area += u["area"].get<double>();
+    EXPECT_LT(area, 20.0 * 12.0 + 1e-9);  // the units fit in the region (the sea takes the rest)
+  }
+  std::ifstream in(obj);
+  std::string line;
+  int units = 0;
+  while (std::getline(in, line)) units += line.rfind("o form ", 0) == 0 && line.find(" unit ") != std::string::npos;
+  EXPECT_EQ(units, 3 * 4);
+
+  for (const auto& [args, flag] : std::vector<std::pair<std::string, std::string>>{
+           {"--complexity 0.2:0.3", "--seeds"},
+           {"--seeds 13 --complexity 0.2:0.3", "--seeds"},
+           {"--seeds 3 --complexity 0.3:0.2", "--complexity"},
+           {"--seeds 3 --complexity 0.2:0.5", "--complexity"},
+           {"--seeds 3 --complexity abc", "--complexity"},
+           {"--seeds 3 --complexity 0.2:0.3 --count 0", "--count"},
+           {"--seeds 3 --complexity 0.2:0.3 --region 0,0,10", "--region"},
+           {"--seeds 3 --complexity 0.2:0.3 --region 0,0,1,1", "--region"},
+           {"--seeds 3 --complexity 0.2:0.3 --wat", "--wat"}}) {
+    const CliRun bad = cli("complete " + args);
+    EXPECT_EQ(bad.code, 2) << args;
+    EXPECT_NE(bad.out.find(flag), std::string::npos) << args << ": " << bad.out;
+  }
+}

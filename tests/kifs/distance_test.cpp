@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace corbel::kifs::test {
 namespace {
@@ -270,6 +271,32 @@ TEST(KifsDistance, UnknownPresetListsTheNames) {
     EXPECT_NE(std::string(e.what()).find("box"), std::string::npos) << e.what();
   }
   for (const auto& n : presetNames()) EXPECT_NO_THROW(Building{preset(n)}) << n;
+}
+
+// The polar preset closes into a ring of whole facade periods (2π s_θ = 12 periods), so it
+// has the 12-fold symmetry of a rotation by one period about the ring's axis, and nothing
+// jumps where atan2 wraps from π to −π: the bound and the estimate at a point equal those at
+// the point turned by 30°, including pairs on either side of the wrap.
+TEST(KifsDistance, ClosedRingHasNoSeamWhereTheAngleWraps) {
+  const KifsParams p = preset("polar");
+  const Building b(p);
+  ASSERT_TRUE(b.closedRing());
+  const double step = p.facade.period / p.curvilinear.sTheta;  // one period in angle
+  ASSERT_NEAR(2 * std::numbers::pi / step, 12.0, 1e-12);
+  const double y0 = p.curvilinear.z0;
+  int straddling = 0;
+  for (int i = 0; i < 400; ++i) {
+    const double r = 7.0 + 6.0 * ((i * 37) % 101) / 100.0, h = 0.5 + 29.0 * ((i * 53) % 97) / 96.0;
+    // Angles crowd the wrap: half the samples lie within one step of π.
+    const double a = i % 2 ? std::numbers::pi - step * ((i * 17) % 89) / 88.0 : -std::numbers::pi + 2 * std::numbers::pi * i / 400.0;
+    const double a2 = a + step;  // past π for the crowded half: atan2 gives a2 − 2π there
+    straddling += a2 > std::numbers::pi;
+    const glm::dvec3 p1(r * std::cos(a), y0 + r * std::sin(a), h), p2(r * std::cos(a2), y0 + r * std::sin(a2), h);
+    const Sample s1 = b.evaluate(p1), s2 = b.evaluate(p2);
+    EXPECT_NEAR(s1.bound, s2.bound, 1e-9) << "r " << r << " angle " << a;
+    EXPECT_NEAR(s1.surface, s2.surface, 1e-9) << "r " << r << " angle " << a;
+  }
+  EXPECT_GT(straddling, 150);
 }
 
 }  // namespace

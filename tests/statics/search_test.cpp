@@ -181,6 +181,19 @@ TEST(ParameterSearch, TowerOfThirtyTwoParametersIsMadeToStand) {
   }
 }
 
+// Fig. 9 and Table 1: the chapel (480 blocks) does not stand with its slender piers and thin
+// walls, and its four-parameter search (pier width and depth, wall thickness, wall height)
+// ends standing, inside the bounds.
+TEST(ParameterSearch, ChapelOfFourParametersIsMadeToStand) {
+  const ParametricModel m = chapelExample();
+  ASSERT_EQ(m.suggestedFree.size(), 4u);
+  const SearchResult r = expectMadeToStand(m);
+  for (const FreeParameter& f : m.suggestedFree) {
+    EXPECT_GE(r.values[f.name], f.lo);
+    EXPECT_LE(r.values[f.name], f.hi);
+  }
+}
+
 // Fig. 13: as the span of the vault grows, the buttress width is searched again from the last
 // result. Every update ends standing (LP oracle); a wider span never needs a narrower buttress
 // than the last (the search starts there and only moves while the vault does not stand). Once

@@ -10,6 +10,7 @@
 #include "statics/examples.h"
 #include "statics/thresholds.h"
 #include "statics/tolerances.h"
+#include "statics/wall.h"
 #include "statics/vault.h"
 #include "statics/wall.h"
 
@@ -337,6 +338,18 @@ TEST(Templates, ExamplesHaveThePapersBlockCounts) {
   EXPECT_EQ(archOnColumnsExample().build(archOnColumnsExample().parameters).blocks.size(), 10u + 1);  // Table 1: 10
   // 60 vault blocks; per ring and side 4 wall courses, 5 flyer voussoirs, 3 pier courses.
   EXPECT_EQ(flyingButtressVaultExample().build(flyingButtressVaultExample().parameters).blocks.size(), 60u + 2 * 5 * 12 + 1);
+  // Fig. 9 (Table 1: 486): 12 rings of 14 voussoirs, 7 piers of 6 courses a side, and 12 bays
+  // of wall, each of the wall template's blocks for one bay with its window.
+  {
+    const ParametricModel c = chapelExample();
+    WallSpec bay{3.0, 0.6, 6.0, 6, 0.75, {{0.75, 1.5, 1, 5}}, 2400.0};
+    const std::size_t wall = wallBlocks(bay).size();
+    EXPECT_EQ(c.build(c.parameters).blocks.size(), 12u * 14 + 2 * 7 * 6 + 12 * wall + 1);
+    EXPECT_NEAR(double(c.build(c.parameters).blocks.size()), 486.0, 20.0);
+  }
+  // Fig. 1 (Table 1: 986): 26 rings of 12 voussoirs, 5 wall courses, 5 flyer voussoirs and 3
+  // pier courses a side.
+  EXPECT_EQ(abbeyExample().build(abbeyExample().parameters).blocks.size(), 26u * (12 + 2 * (5 + 5 + 3)) + 1);
   EXPECT_THROW(exampleByName("cathedral"), Error);
 }
 
