@@ -1,7 +1,12 @@
 // Collapse-simulation speed (docs/benchmarks.md): simulated seconds per wall-clock second on
-// the barrel vault of Fig. 13 lengthened to about 500 and 1,000 blocks, standing and shaken.
+// the chapel (Fig. 9, 480 blocks) and abbey nave (Fig. 1, 988 blocks) at the parameters their
+// searches found (assets/examples/masonry-{chapel,abbey}.corbel), and on the barrel vault of
+// Fig. 13 lengthened to about 500 and 1,000 blocks, standing and shaken.
+#include "core/error.h"
+#include "core/project_io.h"
 #include "sim/session.h"
 #include "statics/examples.h"
+#include "statics/kernel.h"
 
 #include <benchmark/benchmark.h>
 
@@ -22,6 +27,49 @@ statics::Assembly vault(int rings) {
   p.set("buttressWidth", 0.8);
   return m.build(p);
 }
+
+// The one masonry object of an example project, as the project sets it.
+statics::Assembly projectModel(const std::string& name) {
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/masonry-" + name + ".corbel");
+  for (const DocObject& o : p.document.objects)
+    if (const auto* spec = std::get_if<MasonrySpec>(&o.spec)) {
+      const statics::ParametricModel m = statics::modelOf(*spec);
+      return m.build(m.parameters);
+    }
+  throw Error(name + ": no masonry object");
+}
+
+// 0.1 s (24 steps) an iteration, standing (argument 1 = 0) or after the paper's shake scaled
+// to the model (1).
+void BM_SimulatePaperModel(benchmark::State& state, const std::string& name) {
+  const statics::Assembly as = projectModel(name);
+  sim::Session session(as);
+  if (state.range(0)) {
+    const sim::ShakeSpec paper = sim::paperShake(as);
+    session.shake(Vec3(paper.velocity, 0, 0), paper.duration);
+  }
+  double simulated = 0;
+  for (auto _ : state) {
+    session.step(24);
+    simulated += 24 * session.settings().timeStep;
+  }
+  state.counters["blocks"] = double(as.blocks.size());
+  state.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+}
+BENCHMARK_CAPTURE(BM_SimulatePaperModel, chapel, std::string("chapel"))
+    ->ArgName("shake")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(3);
+BENCHMARK_CAPTURE(BM_SimulatePaperModel, abbey, std::string("abbey"))
+    ->ArgName("shake")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(3);
 
 // Each iteration simulates 0.1 s (24 steps); the counter is simulated seconds per second of
 // real time. Argument 1 is 1 for the paper's shake scaled to the vault (sim::paperShake: 5.4 m/s
