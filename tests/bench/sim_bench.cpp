@@ -39,48 +39,11 @@ statics::Assembly projectModel(const std::string& name) {
   throw Error(name + ": no masonry object");
 }
 
-// 0.1 s (24 steps) an iteration, standing (argument 1 = 0) or after the paper's shake scaled
-// to the model (1).
-void BM_SimulatePaperModel(benchmark::State& state, const std::string& name) {
-  const statics::Assembly as = projectModel(name);
-  sim::Session session(as);
-  if (state.range(0)) {
-    const sim::ShakeSpec paper = sim::paperShake(as);
-    session.shake(Vec3(paper.velocity, 0, 0), paper.duration);
-  }
-  double simulated = 0;
-  for (auto _ : state) {
-    session.step(24);
-    simulated += 24 * session.settings().timeStep;
-  }
-  state.counters["blocks"] = double(as.blocks.size());
-  state.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
-}
-BENCHMARK_CAPTURE(BM_SimulatePaperModel, chapel, std::string("chapel"))
-    ->ArgName("shake")
-    ->Arg(0)
-    ->Arg(1)
-    ->Unit(benchmark::kSecond)
-    ->UseRealTime()
-    ->Iterations(3);
-BENCHMARK_CAPTURE(BM_SimulatePaperModel, abbey, std::string("abbey"))
-    ->ArgName("shake")
-    ->Arg(0)
-    ->Arg(1)
-    ->Unit(benchmark::kSecond)
-    ->UseRealTime()
-    ->Iterations(3);
-
-// Each iteration simulates 0.1 s (24 steps); the counter is simulated seconds per second of
-// real time. Argument 1 is 1 for the paper's shake scaled to the vault (sim::paperShake: 5.4 m/s
-// within 1/45 s on 18 rings, 7.6 m/s within 1/32 s on 36) at the start; argument 2 the solver's
-// iterations.
-void BM_SimulateVault(benchmark::State& state) {
-  const statics::Assembly as = vault(int(state.range(0)));
-  sim::SimSettings settings;
-  settings.solverIterations = int(state.range(2));
+// Simulates 0.1 s (24 steps) an iteration, from the design or after the paper's shake scaled
+// to the model; the counter is simulated seconds per second of real time.
+void simulate(benchmark::State& state, const statics::Assembly& as, const sim::SimSettings& settings, bool shaken) {
   sim::Session session(as, settings);
-  if (state.range(1)) {
+  if (shaken) {
     const sim::ShakeSpec paper = sim::paperShake(as);
     session.shake(Vec3(paper.velocity, 0, 0), paper.duration);
   }
@@ -91,6 +54,24 @@ void BM_SimulateVault(benchmark::State& state) {
   }
   state.counters["blocks"] = double(as.blocks.size());
   state.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+}
+
+// Argument: 1 for the shake.
+void BM_SimulatePaperModel(benchmark::State& state, const std::string& name) {
+  simulate(state, projectModel(name), {}, state.range(0) != 0);
+}
+void paperModelRuns(benchmark::internal::Benchmark* b) {
+  b->ArgName("shake")->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(3);
+}
+BENCHMARK_CAPTURE(BM_SimulatePaperModel, chapel, std::string("chapel"))->Apply(paperModelRuns);
+BENCHMARK_CAPTURE(BM_SimulatePaperModel, abbey, std::string("abbey"))->Apply(paperModelRuns);
+
+// Arguments: rings, 1 for the shake (sim::paperShake: 5.4 m/s within 1/45 s on 18 rings,
+// 7.6 m/s within 1/32 s on 36), the solver's iterations.
+void BM_SimulateVault(benchmark::State& state) {
+  sim::SimSettings settings;
+  settings.solverIterations = int(state.range(2));
+  simulate(state, vault(int(state.range(0))), settings, state.range(1) != 0);
 }
 BENCHMARK(BM_SimulateVault)
     ->ArgNames({"rings", "shake", "iterations"})
