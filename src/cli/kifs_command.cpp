@@ -1,5 +1,6 @@
 #include "cli/kifs_command.h"
 
+#include "cli/guarded.h"
 #include "cli/number_list.h"
 
 #include "core/error.h"
@@ -167,15 +168,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int kifsCommand(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const Usage& e) {
-    std::cerr << "corbel-cli: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "corbel-cli: error: " << e.what() << "\n";
-    return 1;
-  }
+  return guarded<Usage>([&] { return run(argc, argv); });
 }
 
 }  // namespace corbel::cli

@@ -1,4 +1,4 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics, kifs, grow, complete). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, simulate, kifs, grow, complete). Thin: parse, call, report.
 #include "cli/complete.h"
 #include "cli/grow.h"
 #include "cli/kifs_command.h"
@@ -17,6 +17,7 @@
 #include "render/headless_context.h"
 #include "render/kifs_pass.h"
 #include "cli/statics_cli.h"
+#include "cli/simulate_cli.h"
 
 #include <nlohmann/json.hpp>
 
@@ -410,7 +411,7 @@ int cmdCheck(const Args& a) {
 
 int main(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    std::cout << kUsage << corbel::cli::kKifsUsage << kUsageEnd;
+    std::cout << kUsage << corbel::cli::kKifsUsage << corbel::cli::kSimulateUsage << kUsageEnd;
     return argc < 2 ? 2 : 0;
   }
   if (!std::strcmp(argv[1], "--version")) {
@@ -430,6 +431,7 @@ int main(int argc, char** argv) {
                                                {"--merge-coplanar", false}}));
     if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics") return cli::runStatics(argc, argv);
+    if (cmd == "simulate") return cli::runSimulate(argc, argv);
     if (cmd == "grow") return corbel::cli::grow(argc, argv);
     if (cmd == "complete") return corbel::cli::complete(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");

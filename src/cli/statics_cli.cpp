@@ -1,6 +1,7 @@
 // corbel-cli statics arch | example: parse, call the statics kernel, print.
 #include "cli/statics_cli.h"
 
+#include "cli/guarded.h"
 #include "core/error.h"
 #include "statics/analysis.h"
 #include "statics/arch.h"
@@ -220,7 +221,7 @@ int projectCommand(const Options& a) {
 }  // namespace
 
 int runStatics(int argc, char** argv) {
-  try {
+  return guarded<UsageError>([&] {
     const Options a = parse(argc, argv,
                             {{"--blocks", true}, {"--thickness", true}, {"--tilt", true}, {"--friction", true},
                              {"--kern", true}, {"--min-thickness", false}, {"--critical-tilt", false},
@@ -233,13 +234,7 @@ int runStatics(int argc, char** argv) {
         a.positional[0].compare(a.positional[0].size() - 7, 7, ".corbel") == 0)
       return projectCommand(a);
     throw UsageError("statics: expected 'arch' (statics arch --blocks N --thickness T ...), 'example NAME' or a PROJECT.corbel");
-  } catch (const UsageError& e) {
-    std::cerr << "corbel-cli: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "corbel-cli: error: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }
 
 }  // namespace corbel::cli

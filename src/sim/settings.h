@@ -1,0 +1,57 @@
+#pragma once
+// The collapse simulation's settings and every constant it depends on, with the reason for
+// each (Whiting et al. 2009, Sec. 5 "Dynamic simulations"). docs/sim.md has the measurements
+// behind the choices.
+#include <cstdint>
+
+namespace corbel::sim {
+
+// The fixed step, s: four steps per 1/60 s frame of the paper's shake, so the shake lasts
+// exactly four steps. A box resting on the ground settles by 0.02 mm at this step; the creep
+// of a standing arch grows with the step (docs/sim.md).
+inline constexpr double kTimeStep = 1.0 / 240.0;
+
+// Sequential-impulse iterations per step. The solver never fully converges on a statically
+// indeterminate structure, and what it leaves each step becomes creep: an 8-voussoir arch at
+// 1.5 times its middle-third thickness moves 1.9 mm in 5 s with 100 iterations and 0.25 mm
+// with 200 (halving the step at 100 iterations: 1.0 mm). Time per step grows about linearly
+// with the iterations.
+inline constexpr int kSolverIterations = 200;
+
+// Bullet's collision margin, m. Its GJK test rounds every hull by the margin, which would
+// lift each stacked block by twice the margin; here GJK only picks the contact normal and
+// the contact points come from clipping the hulls' true faces against each other (Bullet's
+// polyhedral clipping, which ignores the margin): a box rests within 0.03 mm of where it was
+// built. The margin then pads the broad phase's boxes, and is kept small for thin blocks.
+inline constexpr double kCollisionMargin = 0.001;
+
+// The paper's shake: a lateral change of the ground's velocity of 4 m/s within 1/60 s, on a
+// model about 10 m wide (Sec. 5).
+inline constexpr double kPaperShakeVelocity = 4.0;         // m/s
+inline constexpr double kPaperShakeDuration = 1.0 / 60.0;  // s
+inline constexpr double kPaperModelWidth = 10.0;           // m
+
+// A block has fallen when its centroid ends farther than this fraction of the block's least
+// width (its thinnest extent across any of its faces) from where it was built: half a
+// voussoir's thickness out of place, a drum half off its seat.
+inline constexpr double kFallenFraction = 0.5;
+
+struct SimSettings {
+  double timeStep = kTimeStep;
+  int solverIterations = kSolverIterations;
+  // α, the friction coefficient of the statics analysis (MasonrySpec::friction). Bullet
+  // multiplies the two bodies' coefficients of a contact, so each body gets √α.
+  double friction = 0.7;
+  double restitution = 0.0;  // the paper's value (Bullet's default)
+  // Bullet's sequential-impulse solver visits constraints in a random order from this seed
+  // when `randomOrder` is on; a fixed seed and step give bitwise-equal runs either way.
+  std::uint32_t seed = 1;
+  bool randomOrder = false;
+  // An endless floor level with the bottom of the model's fixed blocks (under its ground slab),
+  // so a block thrown past the slab's edge lands instead of falling for ever.
+  bool floor = true;
+  // Density of dropped loads, kg/m³ (stone).
+  double loadDensity = 2400.0;
+};
+
+}  // namespace corbel::sim

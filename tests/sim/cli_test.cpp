@@ -1,0 +1,146 @@
+// corbel-cli simulate: a model the statics command calls standing (with a middle-third margin)
+// stays, one robbed of its keystone falls, frames are written, and bad input is refused with
+// a message that names the fault.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct Outcome {
+  int exit = -1;
+  std::string stdoutText, stderrText;
+};
+
+// Runs corbel-cli with `args`, stdout through a pipe and stderr into a scratch file.
+Outcome corbel(const std::string& args) {
+  const std::filesystem::path err = std::filesystem::temp_directory_path() / "corbel-sim-cli-stderr.txt";
+  const std::string command = std::string("'") + CORBEL_CLI + "' " + args + " 2>'" + err.string() + "'";
+  Outcome o;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char chunk[4096];
+    std::size_t n;
+    while ((n = std::fread(chunk, 1, sizeof chunk, pipe)) > 0) o.stdoutText.append(chunk, n);
+    const int status = pclose(pipe);
+    o.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  o.stderrText = text.str();
+  return o;
+}
+
+const std::string kArch = "--example arch-on-columns --set thickness=0.35 --set columnWidth=0.8";
+
+TEST(SimulateCli, WhatStaticsCallsStandingStaysPut) {
+  // The oracle: the statics command, with every joint's force in its middle third.
+  const Outcome statics =
+      corbel("statics example arch-on-columns --set thickness=0.35 --set columnWidth=0.8 --kern 0.6667 --json");
+  ASSERT_EQ(statics.exit, 0) << statics.stderrText;
+  ASSERT_TRUE(nlohmann::json::parse(statics.stdoutText)["stands"].get<bool>());
+
+  const Outcome run = corbel("simulate " + kArch + " --seconds 5");
+  ASSERT_EQ(run.exit, 0) << run.stderrText;
+  const auto j = nlohmann::json::parse(run.stdoutText);
+  EXPECT_EQ(j["fallen_count"], 0);
+  EXPECT_LT(j["largest_displacement"].get<double>(), 1e-3);
+  EXPECT_EQ(j["steps"], 1200);
+  EXPECT_EQ(j["max_displacement"].size(), 10u) << "every block but the ground";
+}
+
+TEST(SimulateCli, ArchWithoutItsKeystoneFallsAndFramesAreWritten) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "corbel-sim-cli-frames";
+  std::filesystem::remove_all(dir);
+  const Outcome run = corbel("simulate " + kArch +
+                             " --seconds 1.5 --at 0.2 --remove 'arch/voussoir 4' --fps 2 --size 160x120 --frames '" +
+                             dir.string() + "'");
+  ASSERT_EQ(run.exit, 0) << run.stderrText;
+  const auto j = nlohmann::json::parse(run.stdoutText);
+  EXPECT_EQ(j["removed"][0], "arch/voussoir 4");
+  EXPECT_GE(j["fallen_count"].get<int>(), 2) << "the voussoirs either side of the gap come down";
+  // Frames at 0, 0.5, 1.0 and 1.5 s.
+  EXPECT_EQ(j["frames"], 4);
+  for (int k = 0; k < 4; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04d.png", k);
+    std::ifstream png(dir / name, std::ios::binary);
+    char magic[8] = {};
+    png.read(magic, 8);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG") << name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SimulateCli, BrokenColumnIsReported) {
+  const Outcome run = corbel("simulate " + kArch + " --seconds 0.3 --break 'left column/drum 0'");
+  ASSERT_EQ(run.exit, 0) << run.stderrText;
+  const auto j = nlohmann::json::parse(run.stdoutText);
+  EXPECT_EQ(j["broken"][0], "left column/drum 0");
+  EXPECT_EQ(j["removed"].size(), 0u);
+  EXPECT_EQ(corbel("simulate " + kArch + " --break ground").exit, 1);
+}
+
+TEST(SimulateCli, ShakeAndDropAreReported) {
+  const Outcome run =
+      corbel("simulate " + kArch + " --seconds 0.5 --shake 0.5 --drop 'arch/voussoir 4' --drop-mass 20");
+  ASSERT_EQ(run.exit, 0) << run.stderrText;
+  const auto j = nlohmann::json::parse(run.stdoutText);
+  EXPECT_EQ(j["shake"]["velocity"], 0.5);
+  EXPECT_EQ(j["drop"]["block"], "arch/voussoir 4");
+  EXPECT_GT(j["largest_displacement"].get<double>(), 1e-3) << "a 0.5 m/s jolt moves the arch";
+}
+
+// Two processes, the same command: the same numbers to the last bit (JSON doubles round-trip).
+TEST(SimulateCli, RunsRepeatAcrossProcesses) {
+  const std::string args = "simulate " + kArch + " --seconds 0.6 --shake paper --at 0.1";
+  const Outcome a = corbel(args), b = corbel(args);
+  ASSERT_EQ(a.exit, 0) << a.stderrText;
+  ASSERT_EQ(b.exit, 0) << b.stderrText;
+  const auto ja = nlohmann::json::parse(a.stdoutText), jb = nlohmann::json::parse(b.stdoutText);
+  EXPECT_EQ(ja["max_displacement"], jb["max_displacement"]);
+  EXPECT_EQ(ja["fallen"], jb["fallen"]);
+  EXPECT_GT(ja["largest_displacement"].get<double>(), 0.01);
+}
+
+TEST(SimulateCli, ProjectsWithAMasonryObjectRun) {
+  const Outcome run =
+      corbel(std::string("simulate '") + CORBEL_SOURCE_DIR + "/assets/examples/masonry-arch.corbel' --seconds 0.2");
+  ASSERT_EQ(run.exit, 0) << run.stderrText;
+  EXPECT_EQ(nlohmann::json::parse(run.stdoutText)["model"], "Arch on columns");
+}
+
+TEST(SimulateCli, BadInputIsRefusedWithTheReason) {
+  Outcome o = corbel("simulate " + kArch + " --remove keystone");
+  EXPECT_EQ(o.exit, 1);
+  EXPECT_NE(o.stderrText.find("no block named \"keystone\""), std::string::npos) << o.stderrText;
+  o = corbel("simulate " + kArch + " --remove ground");
+  EXPECT_EQ(o.exit, 1);
+  EXPECT_NE(o.stderrText.find("fixed"), std::string::npos) << o.stderrText;
+  o = corbel("simulate " + kArch + " --seconds -1");
+  EXPECT_EQ(o.exit, 2);
+  EXPECT_NE(o.stderrText.find("--seconds"), std::string::npos) << o.stderrText;
+  o = corbel(std::string("simulate '") + CORBEL_SOURCE_DIR + "/assets/examples/house.corbel'");
+  EXPECT_EQ(o.exit, 1);
+  EXPECT_NE(o.stderrText.find("not a masonry project"), std::string::npos) << o.stderrText;
+  o = corbel("simulate --example cathedral");
+  EXPECT_EQ(o.exit, 1);
+  EXPECT_NE(o.stderrText.find("cathedral"), std::string::npos) << o.stderrText;
+  EXPECT_EQ(corbel("simulate " + kArch + " --drop-mass 10").exit, 2) << "--drop-mass without --drop";
+  EXPECT_EQ(corbel("simulate " + kArch + " --shake fast").exit, 2);
+  EXPECT_EQ(corbel("simulate " + kArch + " --bounce").exit, 2);
+  EXPECT_EQ(corbel("simulate").exit, 2);
+  EXPECT_EQ(corbel("simulate " + kArch + " --object arch").exit, 2);
+  o = corbel("simulate " + kArch + " --set height=3");
+  EXPECT_EQ(o.exit, 1);
+  EXPECT_NE(o.stderrText.find("height"), std::string::npos) << o.stderrText;
+}
+
+}  // namespace
