@@ -1,5 +1,5 @@
-// Golden images of KIFS buildings (McGraw): the box preset shaded (the look of Fig. 7, left)
-// and the H preset with its facade ids (Fig. 6, 8), raymarched by shaders/kifs.frag.glsl over
+// Golden images of KIFS buildings (McGraw): every preset shaded (the box is the look of Fig. 7,
+// left) and with its facade ids (Fig. 6, 8), raymarched by shaders/kifs.frag.glsl over
 // the renderer's sky and grid. Same conventions as golden_test.cpp (scripts/update-goldens).
 #include "golden_support.h"
 #include "render/kifs_pass.h"
@@ -35,9 +35,17 @@ TEST_P(KifsGolden, MatchesReferenceImage) { expectMatchesGolden(renderPreset(Get
 // The march is deterministic: two renders in a row are byte-identical.
 TEST_P(KifsGolden, TwoRendersInARowAreIdentical) { EXPECT_EQ(renderPreset(GetParam()).rgba, renderPreset(GetParam()).rgba); }
 
-INSTANTIATE_TEST_SUITE_P(KifsPresets, KifsGolden,
-                         ::testing::Values(Case{"box", render::KifsMode::Shaded, "kifs-box"},
-                                           Case{"h", render::KifsMode::Facades, "kifs-h-facades"}),
+// Every preset shaded and with its facade ids (the "shaded and ids modes").
+std::vector<Case> allCases() {
+  std::vector<Case> out;
+  for (const std::string& name : kifs::presetNames()) {
+    out.push_back({name, render::KifsMode::Shaded, "kifs-preset-" + name});
+    out.push_back({name, render::KifsMode::Facades, "kifs-preset-" + name + "-facades"});
+  }
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(KifsPresets, KifsGolden, ::testing::ValuesIn(allCases()),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            std::string n = info.param.golden;
                            for (char& ch : n)
