@@ -115,15 +115,7 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
   JsonReader r(root, "");
   r.expectObject();
   rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "assign"});
-  if (auto n = r.find("name")) s.name = n->string(200);
-  if (auto l = r.find("labels")) {
-    l->expectObject();
-    rejectUnknown(*l, {"short_below", "long_from", "street_degrees"});
-    if (auto v = l->find("short_below")) s.labels.shortBelow = v->number(0, 1000);
-    if (auto v = l->find("long_from")) s.labels.longFrom = v->number(0, 1000);
-    if (auto v = l->find("street_degrees")) s.labels.streetDegrees = v->number(0, 90);
-    if (s.labels.longFrom < s.labels.shortBelow) l->fail("long_from is less than short_below");
-  }
+  // The styles this one uses first, so its own name and labels win.
   if (auto u = r.find("use")) {
     if (depth > 8) u->fail("styles use each other more than 8 deep (a cycle?)");
     for (const auto& e : u->array(100)) {
@@ -137,6 +129,15 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
         e.fail(err.what());
       }
     }
+  }
+  if (auto n = r.find("name")) s.name = n->string(200);
+  if (auto l = r.find("labels")) {
+    l->expectObject();
+    rejectUnknown(*l, {"short_below", "long_from", "street_degrees"});
+    if (auto v = l->find("short_below")) s.labels.shortBelow = v->number(0, 1000);
+    if (auto v = l->find("long_from")) s.labels.longFrom = v->number(0, 1000);
+    if (auto v = l->find("street_degrees")) s.labels.streetDegrees = v->number(0, 90);
+    if (s.labels.longFrom < s.labels.shortBelow) l->fail("long_from is less than short_below");
   }
   std::map<std::string, int> profileNames, typeNames;
   for (std::size_t i = 0; i < s.profiles.size(); ++i) profileNames[s.profiles[i].name] = static_cast<int>(i);

@@ -1,5 +1,5 @@
 // corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] --out town.glb
-//   [--tiles DIR] [--tile-size M] [--render PNG] [--render-around X,Y,R] [--street X,Y;X,Y;...]
+//   [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R] [--street X,Y;X,Y;...]
 //   [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]
 #include "cli/city_command.h"
 
@@ -33,7 +33,7 @@ namespace {
 
 constexpr const char* kCityUsage =
     "usage: corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] [--out FILE.glb]\n"
-    "         [--tiles DIR] [--tile-size M] [--render PNG] [--render-around X,Y,R]\n"
+    "         [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]\n"
     "         [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]\n"
     "       corbel-cli city --street X,Y;X,Y;... --style STYLE.json [...]   (town houses along a spline)\n";
 
@@ -57,7 +57,7 @@ int city(int argc, char** argv) {
   std::map<std::string, std::string> opt;
   std::vector<std::string> positional;
   const std::set<std::string> known = {"--style", "--seed", "--jobs", "--out", "--tiles", "--tile-size", "--render",
-                                       "--render-around", "--street", "--coordinates", "--report", "--detail"};
+                                       "--around", "--street", "--coordinates", "--report", "--detail"};
   for (int i = 2; i < argc; ++i) {
     const std::string s = argv[i];
     if (s.rfind("--", 0) == 0) {
@@ -103,9 +103,9 @@ int city(int argc, char** argv) {
     }
   }
   std::optional<std::array<double, 3>> around;
-  if (auto it = opt.find("--render-around"); it != opt.end()) {
+  if (auto it = opt.find("--around"); it != opt.end()) {
     const auto v = numberList(it->second, ',');
-    if (!v || v->size() != 3 || !((*v)[2] > 0)) return usage("--render-around: expected X,Y,R (metres, R > 0)");
+    if (!v || v->size() != 3 || !((*v)[2] > 0)) return usage("--around: expected X,Y,R (metres, R > 0)");
     around = std::array<double, 3>{(*v)[0], (*v)[1], (*v)[2]};
   }
   city::Coordinates coordinates = city::Coordinates::Auto;
@@ -158,6 +158,8 @@ int city(int argc, char** argv) {
       centres[i] = centroidOf(town.buildings[i].loops[0]);
       tileOf[i] = {static_cast<long>(std::floor(centres[i][0] / *tileSize)), static_cast<long>(std::floor(centres[i][1] / *tileSize))};
     }
+  if (around)  // only the buildings whose corners' mean lies within R of (X, Y)
+    std::erase_if(order, [&](std::size_t i) { return (centres[i] - Vec2((*around)[0], (*around)[1])).norm() > (*around)[2]; });
   if (tiled) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tileOf[a] < tileOf[b]; });
     std::filesystem::create_directories(opt["--tiles"]);
@@ -210,8 +212,7 @@ int city(int argc, char** argv) {
       tile = std::make_unique<Scene>();
       tileId = 1;
     }
-    if (view && (!around || (centres[r.index] - Vec2((*around)[0], (*around)[1])).norm() <= (*around)[2]))
-      view->replaceObject(viewId++, Kind::Shell, r.id, *mesh);
+    if (view) view->replaceObject(viewId++, Kind::Shell, r.id, *mesh);
     if (tile) tile->replaceObject(tileId++, Kind::Shell, r.id, *mesh);
     if (whole) whole->replaceObject(wholeId++, Kind::Shell, r.id, *mesh);
   };
@@ -227,7 +228,7 @@ int city(int argc, char** argv) {
   whole.reset();
   if (view) {
     render::HeadlessContext context;
-    writeScenePng(*view, {-60, 35, 0.8}, opt["--render"]);
+    writeScenePng(*view, {-60, 35, 0.75}, opt["--render"]);
   }
 
   nlohmann::ordered_json j;

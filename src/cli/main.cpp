@@ -71,7 +71,7 @@ usage:
                     Completes forms from N seed units with F_q in [LO, HI] (docs/growth.md),
                     fitted and sized into the region; prints one JSON line.
   corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] [--out FILE.glb]
-                    [--tiles DIR] [--tile-size M] [--render PNG] [--render-around X,Y,R]
+                    [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]
                     [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]
                     | --street X,Y;X,Y;...
                     A styled town (docs/city.md); prints one JSON line, skipped buildings on stderr.
