@@ -39,7 +39,7 @@ struct LabelOptions {
   double shortBelow = 4.0;   // m
   double longFrom = 12.0;    // m
   double streetDegrees = 45; // |angle| up to this: street; from 180 - this: back; else side
-  double gapReach = 60.0;    // m: how far the gap search looks for neighbours
+  double gapReach = 40.0;    // m: how far the gap search looks for neighbours
   double streetReach = 200;  // m: farther streets are ignored (then the gap decides)
 };
 

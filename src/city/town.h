@@ -24,7 +24,7 @@ struct TownOptions {
   std::uint64_t seed = 1;
   unsigned jobs = 0;               // 0 = all cores
   std::size_t chunk = 1024;        // buildings extruded per round before their meshes are handed on
-  bool mergeCoplanar = true;       // export meshes: coplanar neighbours merged
+  bool mergeCoplanar = false;      // export meshes: coplanar neighbours merged (builds each mesh twice)
   double timeLimitSeconds = 10.0;  // per building
 };
 
