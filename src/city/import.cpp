@@ -47,7 +47,8 @@ std::string describe(double v) {
 }
 
 // Drops corners of one ring as `drop(prev, p, next)` says, until none is dropped; returns how many.
-std::size_t dropCorners(std::vector<Vec2>& ring, const std::function<bool(const Vec2&, const Vec2&, const Vec2&)>& drop) {
+std::size_t dropCorners(std::vector<Vec2>& ring,
+                        const std::function<bool(const Vec2&, const Vec2&, const Vec2&)>& drop) {
   std::size_t removed = 0;
   for (bool changed = true; changed && ring.size() > 3;) {
     changed = false;
@@ -71,7 +72,8 @@ std::size_t dropCorners(std::vector<Vec2>& ring, const std::function<bool(const 
 double haversine(double lon1, double lat1, double lon2, double lat2, double radius) {
   const double p1 = lat1 * kDeg, p2 = lat2 * kDeg;
   const double dp = p2 - p1, dl = (lon2 - lon1) * kDeg;
-  const double h = std::sin(dp / 2) * std::sin(dp / 2) + std::cos(p1) * std::cos(p2) * std::sin(dl / 2) * std::sin(dl / 2);
+  const double h =
+      std::sin(dp / 2) * std::sin(dp / 2) + std::cos(p1) * std::cos(p2) * std::sin(dl / 2) * std::sin(dl / 2);
   return 2 * radius * std::asin(std::min(1.0, std::sqrt(h)));
 }
 
@@ -101,8 +103,9 @@ void cleanBuilding(Building& b, const CleanupOptions& o) {
       const double nu = u.norm(), nv = v.norm();
       return nu > 0 && nv > 0 && u.dot(v) / (nu * nv) > spikeCos;
     });
-    if (spikes) b.notes.push_back(where + std::to_string(spikes) + " spike corner(s) sharper than " +
-                                  describe(o.spikeDegrees) + "° removed");
+    if (spikes)
+      b.notes.push_back(where + std::to_string(spikes) + " spike corner(s) sharper than " + describe(o.spikeDegrees) +
+                        "° removed");
     // Colinear corners: within `colinear` of the chord between their neighbours, and between them.
     const std::size_t straight = dropCorners(ring, [&](const Vec2& a, const Vec2& p, const Vec2& c) {
       const Vec2 d = c - a;
@@ -112,8 +115,9 @@ void cleanBuilding(Building& b, const CleanupOptions& o) {
       const double off = std::abs(d[0] * (p[1] - a[1]) - d[1] * (p[0] - a[0])) / len;
       return t > 0 && t < 1 && off < o.colinear;
     });
-    if (straight) b.notes.push_back(where + std::to_string(straight) + " colinear corner(s) within " +
-                                    describe(o.colinear) + " m of their neighbours' line removed");
+    if (straight)
+      b.notes.push_back(where + std::to_string(straight) + " colinear corner(s) within " + describe(o.colinear) +
+                        " m of their neighbours' line removed");
     const double area = std::abs(signedArea(ring));
     if (ring.size() < 3 || area == 0) {
       if (li == 0) {
@@ -150,8 +154,7 @@ Town readTown(const std::string& text, Coordinates coordinates, const CleanupOpt
   JsonReader r(root, "");
   r.expectObject();
   const std::string type = r.at("type").string(64);
-  if (type != "FeatureCollection")
-    r.at("type").fail("expected \"FeatureCollection\", found \"" + type + "\"");
+  if (type != "FeatureCollection") r.at("type").fail("expected \"FeatureCollection\", found \"" + type + "\"");
   r.at("features").array(10000000);  // checks it is an array within the limit
   Town town;
   nlohmann::json& features = root["features"];
@@ -185,7 +188,8 @@ Town readTown(const std::string& text, Coordinates coordinates, const CleanupOpt
     const auto fm = root.find("frame");
     if (fm != root.end() && fm->is_object() && fm->value("units", std::string()) == "m") {
       coordinates = Coordinates::Metric;
-      frame.how = "the file's \"frame\" member gives metres (" + fm->value("projection", std::string("a projection")) + ")";
+      frame.how =
+          "the file's \"frame\" member gives metres (" + fm->value("projection", std::string("a projection")) + ")";
     } else if (count && lo[0] >= -180 && hi[0] <= 180 && lo[1] >= -90 && hi[1] <= 90 && hi[0] - lo[0] <= 5 &&
                hi[1] - lo[1] <= 5) {
       coordinates = Coordinates::Geographic;
@@ -193,8 +197,7 @@ Town readTown(const std::string& text, Coordinates coordinates, const CleanupOpt
                   "° × " + describe(hi[1] - lo[1]) + "°: taken as RFC 7946 lon/lat";
     } else {
       coordinates = Coordinates::Metric;
-      frame.how = count ? "positions beyond lon/lat bounds or spanning more than 5°: taken as metres"
-                        : "no positions";
+      frame.how = count ? "positions beyond lon/lat bounds or spanning more than 5°: taken as metres" : "no positions";
     }
   } else {
     frame.how = coordinates == Coordinates::Geographic ? "lon/lat, as asked" : "metres, as asked";
@@ -224,11 +227,13 @@ Town readTown(const std::string& text, Coordinates coordinates, const CleanupOpt
     const std::string id = features[i].contains("id") ? features[i]["id"].dump() : "street " + std::to_string(i);
     auto line = [&](const nlohmann::json& pts, const std::string& where) {
       Street s{id, {}};
-      for (std::size_t k = 0; k < pts.size(); ++k) s.points.push_back(JsonReader(pts[k], where + "[" + std::to_string(k) + "]").vec2());
+      for (std::size_t k = 0; k < pts.size(); ++k)
+        s.points.push_back(JsonReader(pts[k], where + "[" + std::to_string(k) + "]").vec2());
       if (s.points.size() >= 2) town.streets.push_back(std::move(s));
     };
     JsonReader c(g.at("coordinates"), path);
-    if (g["type"] == "LineString") line(g["coordinates"], path);
+    if (g["type"] == "LineString")
+      line(g["coordinates"], path);
     else
       for (const JsonReader& part : c.array(100000)) line(part.raw(), part.path());
   }

@@ -34,9 +34,9 @@ struct Building {
   std::string id;
   std::vector<std::vector<Vec2>> loops;  // metres; outer counter-clockwise, holes clockwise
   nlohmann::json properties;
-  std::vector<std::string> notes;        // what the reader and the clean-up changed, with why
-  std::string problem;                   // why it is not built ("" = usable)
-  double area = 0;                       // outer minus holes, m², after clean-up
+  std::vector<std::string> notes;  // what the reader and the clean-up changed, with why
+  std::string problem;             // why it is not built ("" = usable)
+  double area = 0;                 // outer minus holes, m², after clean-up
 };
 
 struct Street {
@@ -66,8 +66,7 @@ void cleanBuilding(Building& b, const CleanupOptions& options = {});
 // MultiLineString features streets. Geographic coordinates are projected (see Frame); the file
 // as a whole failing throws InputError naming the path, one bad feature is that building's
 // problem. Every building is cleaned.
-Town readTown(const std::string& text, Coordinates coordinates = Coordinates::Auto,
-              const CleanupOptions& options = {});
+Town readTown(const std::string& text, Coordinates coordinates = Coordinates::Auto, const CleanupOptions& options = {});
 Town readTownFile(const std::string& path, Coordinates coordinates = Coordinates::Auto,
                   const CleanupOptions& options = {});
 

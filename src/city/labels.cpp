@@ -88,7 +88,7 @@ std::vector<EdgeLabel> labelEdges(const std::vector<std::vector<Vec2>>& loops, c
       e.loop = static_cast<int>(li);
       e.edge = static_cast<int>(i);
       e.length = (q - p).norm();
-      e.length_class = e.length < o.shortBelow ? LengthClass::Short
+      e.length_class = e.length < o.shortBelow  ? LengthClass::Short
                        : e.length >= o.longFrom ? LengthClass::Long
                                                 : LengthClass::Medium;
       const Vec2 n = outwardNormal(p, q);
@@ -97,7 +97,9 @@ std::vector<EdgeLabel> labelEdges(const std::vector<std::vector<Vec2>>& loops, c
       e.angle = std::atan2(s, c) * 180 / std::numbers::pi;
       if (e.angle <= -180) e.angle += 360;
       e.disk = {s, c};
-      e.orientation = c >= streetCos - 1e-12 ? Orientation::Street : c <= -streetCos + 1e-12 ? Orientation::Back : Orientation::Side;
+      e.orientation = c >= streetCos - 1e-12    ? Orientation::Street
+                      : c <= -streetCos + 1e-12 ? Orientation::Back
+                                                : Orientation::Side;
       out.push_back(e);
     }
   }
@@ -157,8 +159,8 @@ std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o) {
         const Vec2 &p = ring[k], &q = ring[(k + 1) % ring.size()];
         const Vec2 m = (p + q) / 2, n = outwardNormal(p, q);
         const double c30 = std::cos(std::numbers::pi / 6), s30 = 0.5;
-        const Vec2 rays[3] = {n, {c30 * n[0] - s30 * n[1], s30 * n[0] + c30 * n[1]},
-                              {c30 * n[0] + s30 * n[1], -s30 * n[0] + c30 * n[1]}};
+        const Vec2 rays[3] = {
+            n, {c30 * n[0] - s30 * n[1], s30 * n[0] + c30 * n[1]}, {c30 * n[0] + s30 * n[1], -s30 * n[0] + c30 * n[1]}};
         double clear = o.gapReach;
         walls.near(m, o.gapReach, [&](const Segment& w) {
           if (w.building == i) return;

@@ -29,18 +29,18 @@ struct EdgeLabel {
 };
 
 struct BuildingLabels {
-  Vec2 front{0, 1};           // unit, from the building towards its street
-  bool fromStreet = false;    // true: a street centreline; false: the widest gap to neighbours
+  Vec2 front{0, 1};         // unit, from the building towards its street
+  bool fromStreet = false;  // true: a street centreline; false: the widest gap to neighbours
   std::vector<EdgeLabel> edges;
   std::size_t longestStreetEdge = 0;  // index into edges (the building's main front)
 };
 
 struct LabelOptions {
-  double shortBelow = 4.0;   // m
-  double longFrom = 12.0;    // m
-  double streetDegrees = 45; // |angle| up to this: street; from 180 - this: back; else side
-  double gapReach = 40.0;    // m: how far the gap search looks for neighbours
-  double streetReach = 200;  // m: farther streets are ignored (then the gap decides)
+  double shortBelow = 4.0;    // m
+  double longFrom = 12.0;     // m
+  double streetDegrees = 45;  // |angle| up to this: street; from 180 - this: back; else side
+  double gapReach = 40.0;     // m: how far the gap search looks for neighbours
+  double streetReach = 200;   // m: farther streets are ignored (then the gap decides)
 };
 
 // Labels every usable building of the town (unusable ones get empty labels).

@@ -17,7 +17,8 @@ std::vector<Vec2> catmullRom(const std::vector<Vec2>& c, int perSpan) {
     const Vec2& p3 = c[std::min(i + 2, c.size() - 1)];
     for (int k = 0; k < perSpan; ++k) {
       const double t = double(k) / perSpan, t2 = t * t, t3 = t2 * t;
-      out.push_back(0.5 * (2 * p1 + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t2 + (3 * p1 - p0 - 3 * p2 + p3) * t3));
+      out.push_back(0.5 *
+                    (2 * p1 + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t2 + (3 * p1 - p0 - 3 * p2 + p3) * t3));
     }
   }
   out.push_back(c.back());

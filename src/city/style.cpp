@@ -168,7 +168,8 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
   if (auto ts = r.find("types"))
     for (const auto& tr : ts->array(1000)) {
       tr.expectObject();
-      rejectUnknown(tr, {"name", "when", "weight", "material", "roof_material", "edges", "windows", "door", "steps", "parapet"});
+      rejectUnknown(
+          tr, {"name", "when", "weight", "material", "roof_material", "edges", "windows", "door", "steps", "parapet"});
       BuildingType t;
       t.name = tr.at("name").string(200);
       if (typeNames.count(t.name)) tr.at("name").fail("a second building type named \"" + t.name + "\"");
@@ -208,8 +209,8 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
       if (auto ss = tr.find("steps"))
         for (const auto& sr : ss->array(100)) {
           sr.expectObject();
-          rejectUnknown(sr, {"when", "chance", "height", "width", "depth", "min_length", "margin", "spacing", "along", "row",
-                             "front_profile", "side_profile"});
+          rejectUnknown(sr, {"when", "chance", "height", "width", "depth", "min_length", "margin", "spacing", "along",
+                             "row", "front_profile", "side_profile"});
           StepRule st;
           st.when = edgeCondition(sr.find("when"));
           if (auto v = sr.find("chance")) st.chance = v->number(0, 1);
@@ -268,7 +269,9 @@ bool BuildingCondition::matches(const Building& b) const {
 }
 
 bool EdgeCondition::matches(const EdgeLabel& e) const {
-  auto in = [](const auto& list, auto v) { return list.empty() || std::find(list.begin(), list.end(), v) != list.end(); };
+  auto in = [](const auto& list, auto v) {
+    return list.empty() || std::find(list.begin(), list.end(), v) != list.end();
+  };
   return in(orientation, e.orientation) && in(length, e.length_class) && e.angle >= minAngle && e.angle <= maxAngle;
 }
 
@@ -353,8 +356,9 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
       }
     if (!rule) {
       out.problem = "loops[" + std::to_string(e.loop) + "] edge " + std::to_string(e.edge) + " (" +
-                    std::string(orientationName(e.orientation)) + ", " + std::string(lengthName(e.length_class)) + ", " +
-                    std::to_string(static_cast<int>(std::lround(e.angle))) + "°): no edge rule of type \"" + t.name + "\" applies";
+                    std::string(orientationName(e.orientation)) + ", " + std::string(lengthName(e.length_class)) +
+                    ", " + std::to_string(static_cast<int>(std::lround(e.angle))) + "°): no edge rule of type \"" +
+                    t.name + "\" applies";
       return out;
     }
     const int p = rule->profiles[random.pick(rule->profiles)].index;
@@ -365,7 +369,8 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
     extrude::OffsetEvent ev;
     ev.height = t.parapet->height;
     ev.sideProfile = t.parapet->insideProfile;
-    for (int p : used) ev.edges.push_back({p, -t.parapet->thickness, -1000.0, t.parapet->insideProfile, t.parapet->insideProfile});
+    for (int p : used)
+      ev.edges.push_back({p, -t.parapet->thickness, -1000.0, t.parapet->insideProfile, t.parapet->insideProfile});
     spec.offsets.push_back(ev);
   }
 
@@ -378,7 +383,8 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
       doorEdge = &e;
       const double at = std::min(1.0 + t.door->width / 2, e.length / 2);
       doorEnd = at + t.door->width / 2;
-      spec.anchors.emplace_back("door", extrude::Anchor{e.loop, e.edge, true, at, 0.0}, extrude::FeatureKind::Door, *t.door);
+      spec.anchors.emplace_back("door", extrude::Anchor{e.loop, e.edge, true, at, 0.0}, extrude::FeatureKind::Door,
+                                *t.door);
     }
   }
   for (std::size_t wi = 0; wi < t.windows.size(); ++wi) {
@@ -399,7 +405,8 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
       rep.rowSpacing = w.floorHeight;
       if (last == first && w.floors == 1) rep.kind = extrude::RepeatKind::None;
       spec.anchors.emplace_back("windows " + std::to_string(wi) + " on edge " + std::to_string(e.edge),
-                                extrude::Anchor{e.loop, e.edge, true, first, w.sill}, extrude::FeatureKind::Window, w.size, rep);
+                                extrude::Anchor{e.loop, e.edge, true, first, w.sill}, extrude::FeatureKind::Window,
+                                w.size, rep);
     }
   }
   for (std::size_t si = 0; si < t.steps.size(); ++si) {
@@ -416,8 +423,10 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
         step.depth = st.depth;
         step.frontProfile = st.frontProfile;
         step.sideProfile = st.sideProfile;
-        if (e.length - 2 * st.margin > st.spacing) step.repeat = {extrude::RepeatKind::Row, e.length - st.margin, 0, st.spacing, 3};
-        else step.anchor = {e.loop, e.edge, false, 0.5, st.height};
+        if (e.length - 2 * st.margin > st.spacing)
+          step.repeat = {extrude::RepeatKind::Row, e.length - st.margin, 0, st.spacing, 3};
+        else
+          step.anchor = {e.loop, e.edge, false, 0.5, st.height};
         spec.steps.push_back(step);
       } else if (!longest || e.length > longest->length) {
         longest = &e;

@@ -17,7 +17,7 @@ namespace corbel::city {
 
 // A condition on a footprint (all given parts must hold).
 struct BuildingCondition {
-  double minArea = 0, maxArea = INFINITY;                      // m²
+  double minArea = 0, maxArea = INFINITY;                       // m²
   std::map<std::string, std::vector<nlohmann::json>> property;  // key → accepted values
   bool matches(const Building& b) const;
 };
@@ -113,9 +113,9 @@ class BuildingRandom {
 std::optional<std::size_t> assignType(const Style& style, const Building& b, BuildingRandom& random);
 
 struct StyledBuilding {
-  std::string type;          // "" when it could not be styled
+  std::string type;  // "" when it could not be styled
   extrude::ExtrusionSpec spec;
-  std::string problem;       // why not
+  std::string problem;  // why not
 };
 StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed);
 

@@ -74,8 +74,10 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
       r.ok = res.ok;
       r.error = res.error;
       r.warnings = std::move(res.warnings);
-      if (!items[k].problem.empty()) ++sum.refused;
-      else if (!res.ok) ++sum.failed;
+      if (!items[k].problem.empty())
+        ++sum.refused;
+      else if (!res.ok)
+        ++sum.failed;
       else {
         ++sum.ok;
         ++sum.types[r.type];

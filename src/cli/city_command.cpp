@@ -3,13 +3,13 @@
 //   [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]
 #include "cli/city_command.h"
 
-#include "cli/number_list.h"
-#include "cli/scene_png.h"
 #include "city/import.h"
 #include "city/labels.h"
 #include "city/street.h"
 #include "city/style.h"
 #include "city/town.h"
+#include "cli/number_list.h"
+#include "cli/scene_png.h"
 #include "core/error.h"
 #include "core/export.h"
 #include "core/scene.h"
@@ -56,8 +56,8 @@ void drawBar(std::size_t done, std::size_t total, double seconds) {
 int city(int argc, char** argv) {
   std::map<std::string, std::string> opt;
   std::vector<std::string> positional;
-  const std::set<std::string> known = {"--style", "--seed", "--jobs", "--out", "--tiles", "--tile-size", "--render",
-                                       "--around", "--street", "--coordinates", "--report", "--detail"};
+  const std::set<std::string> known = {"--style",  "--seed",   "--jobs",   "--out",         "--tiles",  "--tile-size",
+                                       "--render", "--around", "--street", "--coordinates", "--report", "--detail"};
   for (int i = 2; i < argc; ++i) {
     const std::string s = argv[i];
     if (s.rfind("--", 0) == 0) {
@@ -86,7 +86,8 @@ int city(int argc, char** argv) {
     auto it = opt.find(name);
     if (it == opt.end()) return def;
     const auto v = numberList(it->second, ',');
-    if (!v || v->size() != 1 || (*v)[0] < lo || (*v)[0] > hi || (whole && std::floor((*v)[0]) != (*v)[0])) return std::nullopt;
+    if (!v || v->size() != 1 || (*v)[0] < lo || (*v)[0] > hi || (whole && std::floor((*v)[0]) != (*v)[0]))
+      return std::nullopt;
     return (*v)[0];
   };
   const auto seed = number("--seed", 1, 0, 9007199254740992.0, true);
@@ -110,16 +111,22 @@ int city(int argc, char** argv) {
   }
   city::Coordinates coordinates = city::Coordinates::Auto;
   if (auto it = opt.find("--coordinates"); it != opt.end()) {
-    if (it->second == "lonlat") coordinates = city::Coordinates::Geographic;
-    else if (it->second == "metric") coordinates = city::Coordinates::Metric;
-    else if (it->second != "auto") return usage("--coordinates: expected auto, lonlat or metric");
+    if (it->second == "lonlat")
+      coordinates = city::Coordinates::Geographic;
+    else if (it->second == "metric")
+      coordinates = city::Coordinates::Metric;
+    else if (it->second != "auto")
+      return usage("--coordinates: expected auto, lonlat or metric");
   }
 
   city::Detail detail = city::Detail::Full;
   if (auto it = opt.find("--detail"); it != opt.end()) {
-    if (it->second == "massing") detail = city::Detail::Massing;
-    else if (it->second == "steps") detail = city::Detail::Steps;
-    else if (it->second != "full") return usage("--detail: expected massing, steps or full");
+    if (it->second == "massing")
+      detail = city::Detail::Massing;
+    else if (it->second == "steps")
+      detail = city::Detail::Steps;
+    else if (it->second != "full")
+      return usage("--detail: expected massing, steps or full");
   }
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -156,10 +163,12 @@ int city(int argc, char** argv) {
   for (std::size_t i = 0; i < town.buildings.size(); ++i)
     if (!town.buildings[i].loops.empty()) {
       centres[i] = centroidOf(town.buildings[i].loops[0]);
-      tileOf[i] = {static_cast<long>(std::floor(centres[i][0] / *tileSize)), static_cast<long>(std::floor(centres[i][1] / *tileSize))};
+      tileOf[i] = {static_cast<long>(std::floor(centres[i][0] / *tileSize)),
+                   static_cast<long>(std::floor(centres[i][1] / *tileSize))};
     }
   if (around)  // only the buildings whose corners' mean lies within R of (X, Y)
-    std::erase_if(order, [&](std::size_t i) { return (centres[i] - Vec2((*around)[0], (*around)[1])).norm() > (*around)[2]; });
+    std::erase_if(order,
+                  [&](std::size_t i) { return (centres[i] - Vec2((*around)[0], (*around)[1])).norm() > (*around)[2]; });
   if (tiled) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tileOf[a] < tileOf[b]; });
     std::filesystem::create_directories(opt["--tiles"]);
@@ -220,8 +229,8 @@ int city(int argc, char** argv) {
   options.seed = static_cast<std::uint64_t>(*seed);
   options.jobs = static_cast<unsigned>(*jobs);
   options.detail = detail;
-  const city::TownSummary sum =
-      city::buildTown(town, labels, style, options, sink, order, [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
+  const city::TownSummary sum = city::buildTown(town, labels, style, options, sink, order,
+                                                [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
   flushTile();
   const double buildS = seconds();
   if (whole) exportScene(*whole, opt["--out"]);

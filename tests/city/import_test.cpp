@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 
 using namespace corbel;
@@ -15,9 +16,10 @@ namespace {
 // A square building with its south-west corner at (lon, lat), `d` degrees a side.
 std::string square(double lon, double lat, double d, const std::string& id) {
   char buf[512];
-  std::snprintf(buf, sizeof buf,
-                R"({"type":"Feature","id":"%s","properties":{"name":"%s"},"geometry":{"type":"Polygon","coordinates":[[[%.9f,%.9f],[%.9f,%.9f],[%.9f,%.9f],[%.9f,%.9f],[%.9f,%.9f]]]}})",
-                id.c_str(), id.c_str(), lon, lat, lon + d, lat, lon + d, lat + d, lon, lat + d, lon, lat);
+  std::snprintf(
+      buf, sizeof buf,
+      R"({"type":"Feature","id":"%s","properties":{"name":"%s"},"geometry":{"type":"Polygon","coordinates":[[[%.9f,%.9f],[%.9f,%.9f],[%.9f,%.9f],[%.9f,%.9f],[%.9f,%.9f]]]}})",
+      id.c_str(), id.c_str(), lon, lat, lon + d, lat, lon + d, lat + d, lon, lat + d, lon, lat);
   return buf;
 }
 
@@ -28,7 +30,8 @@ std::string collection(const std::vector<std::string>& features) {
 }
 
 std::string polygon(const std::string& id, const std::vector<Vec2>& ring) {
-  std::string s = R"({"type":"Feature","id":")" + id + R"(","properties":{},"geometry":{"type":"Polygon","coordinates":[[)";
+  std::string s =
+      R"({"type":"Feature","id":")" + id + R"(","properties":{},"geometry":{"type":"Polygon","coordinates":[[)";
   for (std::size_t i = 0; i <= ring.size(); ++i) {
     const Vec2& p = ring[i % ring.size()];
     s += (i ? "," : "") + ("[" + std::to_string(p[0]) + "," + std::to_string(p[1]) + "]");
@@ -101,7 +104,8 @@ TEST(Import, TheRealDataSaysItIsProjected) {
 }
 
 TEST(Import, StreetsAreReadAsCentrelinesNotBuildings) {
-  const std::string street = R"({"type":"Feature","properties":{"highway":"residential"},"geometry":{"type":"LineString","coordinates":[[0,-10],[50,-10],[80,0]]}})";
+  const std::string street =
+      R"({"type":"Feature","properties":{"highway":"residential"},"geometry":{"type":"LineString","coordinates":[[0,-10],[50,-10],[80,0]]}})";
   const Town t = readTown(collection({polygon("a", {{0, 0}, {10, 0}, {10, 6}, {0, 6}}), street}));
   ASSERT_EQ(t.streets.size(), 1u);
   EXPECT_EQ(t.streets[0].points.size(), 3u);
@@ -136,9 +140,43 @@ TEST(Cleanup, EveryFixAndRefusalHasItsReason) {
   // The spike's tip goes, then the two corners at its base are colinear with the wall.
   EXPECT_EQ(spike.loops[0].size(), 4u);
   EXPECT_NEAR(spike.area, 80, 0.1);
-  EXPECT_NE(byId(t, "sliver").problem.find("sliver: about 0.588 m wide"), std::string::npos) << byId(t, "sliver").problem;
+  EXPECT_NE(byId(t, "sliver").problem.find("sliver: about 0.588 m wide"), std::string::npos)
+      << byId(t, "sliver").problem;
   EXPECT_NE(byId(t, "tiny").problem.find("tiny building: 2.25 m²"), std::string::npos) << byId(t, "tiny").problem;
   const Building& good = byId(t, "good");
   EXPECT_EQ(good.problem, "");
   EXPECT_TRUE(good.notes.empty());
+}
+
+TEST(Import, RealFootprintsInLonLatKeepTheirAreas) {
+  // Moosburg back in lon/lat by the inverse of the file's own frame (its README: equirectangular
+  // about lon0/lat0 on R = 6371008.8 m), read again about our own centre: each area agrees with
+  // the file's area_m2 to within twice the stated scale error (areas scale in two directions)
+  // plus the file's 1 mm rounding.
+  const std::string path = std::string(CORBEL_FOOTPRINTS) + "/moosburg_de.geojson";
+  nlohmann::json data = nlohmann::json::parse(std::ifstream(path));
+  const double lon0 = data["frame"]["lon0"], lat0 = data["frame"]["lat0"], R = 6371008.8, deg = std::numbers::pi / 180;
+  nlohmann::json out = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < data["features"].size(); i += 10) {
+    nlohmann::json f = data["features"][i];
+    for (auto& ring : f["geometry"]["coordinates"])
+      for (auto& p : ring) {
+        const double x = p[0], y = p[1];
+        p[0] = lon0 + x / (R * std::cos(lat0 * deg)) / deg;
+        p[1] = lat0 + y / R / deg;
+      }
+    out["features"].push_back(f);
+  }
+  const Town t = readTown(out.dump());
+  ASSERT_EQ(t.frame.coordinates, Coordinates::Geographic) << t.frame.how;
+  EXPECT_GT(t.frame.scaleError, 0);
+  EXPECT_LT(t.frame.scaleError, 1e-3);
+  std::size_t checked = 0;
+  for (const auto& b : t.buildings) {
+    if (!b.problem.empty() || !b.notes.empty()) continue;  // clean-up changes the area a little
+    const double want = b.properties["area_m2"];
+    EXPECT_NEAR(b.area, want, want * 2 * t.frame.scaleError + 0.01) << b.id;
+    ++checked;
+  }
+  EXPECT_GT(checked, 300u);
 }

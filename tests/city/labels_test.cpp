@@ -64,8 +64,8 @@ TEST(Labels, ADiagonalEdgeIsLabelledByItsNormalsAngle) {
   EXPECT_EQ(L[0].edges[1].orientation, Orientation::Street);
   EXPECT_NEAR(L[0].edges[1].length, 10 * std::sqrt(2.0), 1e-12);
   EXPECT_EQ(L[0].edges[1].length_class, LengthClass::Long);
-  EXPECT_EQ(L[0].edges[0].orientation, Orientation::Back);   // faces south
-  EXPECT_EQ(L[0].edges[2].orientation, Orientation::Side);   // faces west: -90
+  EXPECT_EQ(L[0].edges[0].orientation, Orientation::Back);  // faces south
+  EXPECT_EQ(L[0].edges[2].orientation, Orientation::Side);  // faces west: -90
   EXPECT_NEAR(L[0].edges[2].angle, -90, 1e-9);
 }
 

@@ -32,7 +32,8 @@ TEST(RealData, EveryBuildingIsClosedOrReportedWithAReason) {
     EXPECT_EQ(s.ok + s.refused + s.failed, t.buildings.size());
     total += seen;
     ok += s.ok;
-    std::printf("%s: %zu buildings, %zu built, %zu refused, %zu failed\n", file, s.buildings, s.ok, s.refused, s.failed);
+    std::printf("%s: %zu buildings, %zu built, %zu refused, %zu failed\n", file, s.buildings, s.ok, s.refused,
+                s.failed);
   }
   EXPECT_EQ(total, 10524u);  // 3,544 + 6,980 (the data's README)
   EXPECT_GT(ok, 10524u * 98 / 100);
@@ -43,9 +44,9 @@ TEST(RealData, TheCliWritesTheTownAndItsTiles) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string cmd = std::string(CORBEL_CLI) + " city " + CORBEL_FOOTPRINTS + "/kathmandu_np.geojson --style " +
-                          CORBEL_SOURCE_DIR + "/assets/styles/suburban.json --jobs 2 --detail steps --out " + (dir / "town.glb").string() +
-                          " --tiles " + (dir / "tiles").string() + " --tile-size 400 > " + (dir / "out.json").string() +
-                          " 2> " + (dir / "err.txt").string();
+                          CORBEL_SOURCE_DIR + "/assets/styles/suburban.json --jobs 2 --detail steps --out " +
+                          (dir / "town.glb").string() + " --tiles " + (dir / "tiles").string() + " --tile-size 400 > " +
+                          (dir / "out.json").string() + " 2> " + (dir / "err.txt").string();
   const int rc = std::system(cmd.c_str());
   EXPECT_TRUE(WEXITSTATUS(rc) == 0 || WEXITSTATUS(rc) == 1) << rc;
   std::ifstream in(dir / "out.json");

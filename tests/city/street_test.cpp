@@ -14,7 +14,8 @@ namespace {
 
 double area(const std::vector<Vec2>& p) {
   double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) a += p[i][0] * p[(i + 1) % p.size()][1] - p[i][1] * p[(i + 1) % p.size()][0];
+  for (std::size_t i = 0; i < p.size(); ++i)
+    a += p[i][0] * p[(i + 1) % p.size()][1] - p[i][1] * p[(i + 1) % p.size()][0];
   return a / 2;
 }
 
@@ -25,7 +26,8 @@ double area(const std::vector<Vec2>& p) {
 // neighbours share their front corner, and the depths add up to less than the strip.
 void expectTiles(const Town& t, const PlotOptions& o, bool fullDepth = true) {
   double length = 0;
-  for (std::size_t i = 1; i < t.streets[0].points.size(); ++i) length += (t.streets[0].points[i] - t.streets[0].points[i - 1]).norm();
+  for (std::size_t i = 1; i < t.streets[0].points.size(); ++i)
+    length += (t.streets[0].points[i] - t.streets[0].points[i - 1]).norm();
   double total = 0;
   std::size_t perSide = t.buildings.size() / 2;
   for (const auto& b : t.buildings) {
@@ -33,8 +35,10 @@ void expectTiles(const Town& t, const PlotOptions& o, bool fullDepth = true) {
     ASSERT_GT(area(b.loops[0]), 0) << b.id;
     total += area(b.loops[0]);
   }
-  if (fullDepth) EXPECT_NEAR(total, 2 * length * o.depth, 2 * length * o.depth * 2e-3);
-  else EXPECT_LT(total, 2 * length * o.depth);
+  if (fullDepth)
+    EXPECT_NEAR(total, 2 * length * o.depth, 2 * length * o.depth * 2e-3);
+  else
+    EXPECT_LT(total, 2 * length * o.depth);
   // Widths: the frontage is cut evenly, within the wanted plot width.
   EXPECT_EQ(perSide, static_cast<std::size_t>(std::floor(length / o.plotWidth)));
   for (std::size_t side = 0; side < 2; ++side)
@@ -45,8 +49,9 @@ void expectTiles(const Town& t, const PlotOptions& o, bool fullDepth = true) {
       bool shared = false;
       for (std::size_t i = 0; i < a.size() && !shared; ++i)
         for (std::size_t j = 0; j < b.size() && !shared; ++j)
-          shared = fullDepth ? (a[i] - b[(j + 1) % b.size()]).norm() < 1e-9 && (a[(i + 1) % a.size()] - b[j]).norm() < 1e-9
-                             : (a[i] - b[j]).norm() < 1e-9;
+          shared = fullDepth
+                       ? (a[i] - b[(j + 1) % b.size()]).norm() < 1e-9 && (a[(i + 1) % a.size()] - b[j]).norm() < 1e-9
+                       : (a[i] - b[j]).norm() < 1e-9;
       EXPECT_TRUE(shared) << side << " " << k;
     }
 }

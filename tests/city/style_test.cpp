@@ -163,12 +163,14 @@ TEST(Style, FeaturesArePlacedOnTheStreetEdges) {
 }
 
 TEST(Style, FaultsNameTheirPath) {
-  EXPECT_EQ(parseError(withType(R"({"name": "a", "edgez": []})")), "types[0].edgez: unknown key (expected one of: door, edges, "
-                                                                    "material, name, parapet, roof_material, steps, weight, when, windows)");
+  EXPECT_EQ(parseError(withType(R"({"name": "a", "edgez": []})")),
+            "types[0].edgez: unknown key (expected one of: door, edges, "
+            "material, name, parapet, roof_material, steps, weight, when, windows)");
   EXPECT_EQ(parseError(withType(R"({"name": "a", "edges": [{"profiles": "gable"}]})")),
             "types[0].edges[0].profiles: no profile named \"gable\"");
-  EXPECT_EQ(parseError(withType(R"({"name": "a", "edges": [{"when": {"orientation": ["front"]}, "profiles": "hip"}]})")),
-            "types[0].edges[0].when.orientation[0]: expected \"street\", \"side\" or \"back\"");
+  EXPECT_EQ(
+      parseError(withType(R"({"name": "a", "edges": [{"when": {"orientation": ["front"]}, "profiles": "hip"}]})")),
+      "types[0].edges[0].when.orientation[0]: expected \"street\", \"side\" or \"back\"");
   EXPECT_EQ(parseError(withType(R"({"name": "a", "edges": [{"profiles": {"hip": -1}}]})")),
             "types[0].edges[0].profiles.hip: -1 is outside [0, 1e+09]");
   EXPECT_EQ(parseError(R"({"profiles": [{"name": "down", "points": [[0, 0], [0, 3], [1, 2]]}], "types": []})"),
