@@ -109,25 +109,27 @@ int city(int argc, char** argv) {
     if (!v || v->size() != 3 || !((*v)[2] > 0)) return usage("--around: expected X,Y,R (metres, R > 0)");
     around = std::array<double, 3>{(*v)[0], (*v)[1], (*v)[2]};
   }
+  // An option that names one of a few values; false when it names none of them.
+  auto pick = [&](const char* name, const auto& table, auto& value) {
+    auto it = opt.find(name);
+    if (it == opt.end()) return true;
+    for (const auto& [word, v] : table)
+      if (it->second == word) {
+        value = v;
+        return true;
+      }
+    return false;
+  };
   city::Coordinates coordinates = city::Coordinates::Auto;
-  if (auto it = opt.find("--coordinates"); it != opt.end()) {
-    if (it->second == "lonlat")
-      coordinates = city::Coordinates::Geographic;
-    else if (it->second == "metric")
-      coordinates = city::Coordinates::Metric;
-    else if (it->second != "auto")
-      return usage("--coordinates: expected auto, lonlat or metric");
-  }
-
+  const std::pair<const char*, city::Coordinates> coordinateNames[] = {{"auto", city::Coordinates::Auto},
+                                                                       {"lonlat", city::Coordinates::Geographic},
+                                                                       {"metric", city::Coordinates::Metric}};
+  if (!pick("--coordinates", coordinateNames, coordinates))
+    return usage("--coordinates: expected auto, lonlat or metric");
   city::Detail detail = city::Detail::Full;
-  if (auto it = opt.find("--detail"); it != opt.end()) {
-    if (it->second == "massing")
-      detail = city::Detail::Massing;
-    else if (it->second == "steps")
-      detail = city::Detail::Steps;
-    else if (it->second != "full")
-      return usage("--detail: expected massing, steps or full");
-  }
+  const std::pair<const char*, city::Detail> detailNames[] = {
+      {"massing", city::Detail::Massing}, {"steps", city::Detail::Steps}, {"full", city::Detail::Full}};
+  if (!pick("--detail", detailNames, detail)) return usage("--detail: expected massing, steps or full");
 
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
