@@ -178,7 +178,7 @@ int city(int argc, char** argv) {
 
   std::unique_ptr<Scene> whole, tile, view;
   if (opt.count("--out")) whole = std::make_unique<Scene>();
-  if (opt.count("--render")) view = std::make_unique<Scene>();
+  if (opt.count("--render") && !whole) view = std::make_unique<Scene>();  // else the output's Scene is rendered
   ObjectId wholeId = 1, tileId = 1, viewId = 1;
   std::optional<std::pair<long, long>> currentTile;
   std::size_t tilesWritten = 0;
@@ -236,11 +236,12 @@ int city(int argc, char** argv) {
   flushTile();
   const double buildS = seconds();
   if (whole) exportScene(*whole, opt["--out"]);
-  whole.reset();
-  if (view) {
+  if (opt.count("--render")) {
     render::HeadlessContext context;
-    writeScenePng(*view, {-60, 35, 0.75}, opt["--render"]);
+    writeScenePng(whole ? *whole : *view, {-60, 35, 0.75}, opt["--render"]);
   }
+  whole.reset();
+  view.reset();
 
   nlohmann::ordered_json j;
   j["source"] = source;
