@@ -107,3 +107,22 @@ TEST(Street, TownHousesFaceTheStreetAndBuildClosed) {
     EXPECT_EQ(built, t.buildings.size());
   }
 }
+
+TEST(Street, TheTownIsTheSameForAnyNumberOfJobsAndChunks) {
+  const Style style = loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/suburban.json");
+  const Town t = streetTown({{0, 0}, {60, 12}, {120, 4}, {180, 20}});
+  const auto labels = labelTown(t, style.labels);
+  auto build = [&](unsigned jobs, std::size_t chunk, std::uint64_t seed) {
+    TownOptions o;
+    o.jobs = jobs;
+    o.chunk = chunk;
+    o.seed = seed;
+    std::vector<std::vector<Vec3>> points;
+    buildTown(t, labels, style, o,
+              [&](const BuildingReport&, MeshData* m) { points.push_back(m ? m->points : std::vector<Vec3>{}); });
+    return points;
+  };
+  const auto a = build(1, 1024, 5), b = build(2, 3, 5), c = build(2, 1024, 6);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+}
