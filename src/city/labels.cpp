@@ -1,7 +1,9 @@
 #include "city/labels.h"
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
+#include <thread>
 #include <unordered_map>
 
 namespace corbel::city {
@@ -106,7 +108,7 @@ std::vector<EdgeLabel> labelEdges(const std::vector<std::vector<Vec2>>& loops, c
   return out;
 }
 
-std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o) {
+std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o, unsigned jobsWanted) {
   const auto& bs = town.buildings;
   std::vector<BuildingLabels> out(bs.size());
   struct Segment {
@@ -129,9 +131,11 @@ std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o) {
       streets.add(a.min(b), a.max(b), {0, a, b});
     }
 
-  for (std::size_t i = 0; i < bs.size(); ++i) {
+  // Each building's labels depend only on the grids, which are read-only from here: the
+  // buildings are shared out between threads.
+  auto labelOne = [&](std::size_t i) {
     const Building& b = bs[i];
-    if (!b.problem.empty()) continue;
+    if (!b.problem.empty()) return;
     BuildingLabels& L = out[i];
     const auto& ring = b.loops[0];
     // The nearest street, from the outline's centroid.
@@ -189,7 +193,17 @@ std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o) {
         longest = L.edges[k].length;
         L.longestStreetEdge = k;
       }
-  }
+  };
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < bs.size();) labelOne(i);
+  };
+  const unsigned jobs = static_cast<unsigned>(std::min<std::size_t>(
+      jobsWanted ? jobsWanted : std::max(1u, std::thread::hardware_concurrency()), bs.size() / 256 + 1));
+  std::vector<std::thread> pool;
+  for (unsigned j = 1; j < jobs; ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
   return out;
 }
 

@@ -43,8 +43,9 @@ struct LabelOptions {
   double streetReach = 200;   // m: farther streets are ignored (then the gap decides)
 };
 
-// Labels every usable building of the town (unusable ones get empty labels).
-std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& options = {});
+// Labels every usable building of the town (unusable ones get empty labels), on `jobs`
+// threads (0 = all cores).
+std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& options = {}, unsigned jobs = 0);
 
 // Labels of one footprint facing `front` (unit vector).
 std::vector<EdgeLabel> labelEdges(const std::vector<std::vector<Vec2>>& loops, const Vec2& front,

@@ -152,7 +152,7 @@ int city(int argc, char** argv) {
     source = positional[0];
     town = city::readTownFile(source, coordinates);
   }
-  const std::vector<city::BuildingLabels> labels = city::labelTown(town, style.labels);
+  const std::vector<city::BuildingLabels> labels = city::labelTown(town, style.labels, static_cast<unsigned>(*jobs));
   const double readS = seconds();
 
   // Tiles: buildings sorted by the tile of their first corner's centroid, so one tile is in

@@ -92,3 +92,14 @@ TEST(Labels, LengthClassesFollowTheThresholds) {
   EXPECT_EQ(e[0].length_class, LengthClass::Short);
   EXPECT_EQ(e[1].length_class, LengthClass::Long);  // 9 m: long from 9
 }
+
+TEST(Labels, ThreadsDoNotChangeTheLabels) {
+  const Town t = readTownFile(std::string(CORBEL_FOOTPRINTS) + "/kathmandu_np.geojson");
+  const auto one = labelTown(t, {}, 1), two = labelTown(t, {}, 2);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].front, two[i].front) << t.buildings[i].id;
+    ASSERT_EQ(one[i].edges.size(), two[i].edges.size());
+    for (std::size_t k = 0; k < one[i].edges.size(); ++k) EXPECT_EQ(one[i].edges[k].angle, two[i].edges[k].angle);
+  }
+}
