@@ -114,7 +114,7 @@ std::string checkProfile(const extrude::Profile& p) {
 void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, int depth) {
   JsonReader r(root, "");
   r.expectObject();
-  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "assign"});
+  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "assign", "tag_materials"});
   // The styles this one uses first, so its own name and labels win.
   if (auto u = r.find("use")) {
     if (depth > 8) u->fail("styles use each other more than 8 deep (a cycle?)");
@@ -138,6 +138,11 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
     if (auto v = l->find("long_from")) s.labels.longFrom = v->number(0, 1000);
     if (auto v = l->find("street_degrees")) s.labels.streetDegrees = v->number(0, 90);
     if (s.labels.longFrom < s.labels.shortBelow) l->fail("long_from is less than short_below");
+  }
+  if (auto m = r.find("tag_materials")) {
+    m->expectObject();
+    for (auto& [tag, value] : m->raw().items())
+      s.tagMaterials[tag] = JsonReader(value, m->path() + "." + tag).string(200);
   }
   std::map<std::string, int> profileNames, typeNames;
   for (std::size_t i = 0; i < s.profiles.size(); ++i) profileNames[s.profiles[i].name] = static_cast<int>(i);
@@ -273,6 +278,17 @@ bool EdgeCondition::matches(const EdgeLabel& e) const {
     return list.empty() || std::find(list.begin(), list.end(), v) != list.end();
   };
   return in(orientation, e.orientation) && in(length, e.length_class) && e.angle >= minAngle && e.angle <= maxAngle;
+}
+
+void applyTagMaterials(const Style& style, MeshData& mesh) {
+  if (style.tagMaterials.empty()) return;
+  std::vector<int> remap(mesh.tags.size(), -1);
+  for (std::size_t t = 0; t < mesh.tags.size(); ++t)
+    if (auto it = style.tagMaterials.find(mesh.tags[t]); it != style.tagMaterials.end())
+      remap[t] = mesh.addMaterial(it->second);
+  for (std::size_t f = 0; f < mesh.faceTag.size() && f < mesh.faceMaterial.size(); ++f)
+    if (const int t = mesh.faceTag[f]; t >= 0 && static_cast<std::size_t>(t) < remap.size() && remap[t] >= 0)
+      mesh.faceMaterial[f] = remap[t];
 }
 
 Style parseStyle(const std::string& text, const std::string& folder) {

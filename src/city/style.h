@@ -5,6 +5,7 @@
 // building's id, so a building looks the same whatever order or thread builds it.
 #include "city/import.h"
 #include "city/labels.h"
+#include "core/mesh_data.h"
 #include "extrude/spec.h"
 
 #include <cstdint>
@@ -90,7 +91,13 @@ struct Style {
   std::vector<extrude::Profile> profiles;
   std::vector<BuildingType> types;
   std::vector<AssignRule> assign;  // empty: any type whose own condition holds, by weight
+  // Faces with one of these tags take that material (chimneys of brick, copings of stone),
+  // so the glb's materials follow the tags.
+  std::map<std::string, std::string> tagMaterials;
 };
+
+// Gives the faces of `mesh` whose tag the style names their material.
+void applyTagMaterials(const Style& style, MeshData& mesh);
 
 // Parses a style; faults throw InputError naming the JSON path ("types[1].edges[0].profiles:
 // no profile named \"x\""). `folder` resolves the paths in "use".

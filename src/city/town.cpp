@@ -83,6 +83,7 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
         ++sum.types[r.type];
         sum.faces += res.mesh.faces.size();
         dropUnusedPoints(res.mesh);
+        applyTagMaterials(style, res.mesh);
       }
       sink(r, res.ok ? &res.mesh : nullptr);
       res.mesh = MeshData();  // handed on: drop it now

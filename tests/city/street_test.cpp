@@ -126,3 +126,31 @@ TEST(Street, TheTownIsTheSameForAnyNumberOfJobsAndChunks) {
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
 }
+
+TEST(Street, FacesTakeTheMaterialTheStyleGivesTheirTag) {
+  // suburban.json: chimneys of brick, their tops of stone; other faces keep their own.
+  const Style style = loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/suburban.json");
+  ASSERT_EQ(style.tagMaterials.at("chimney"), "brick");
+  const Town t = streetTown({{0, 0}, {120, 0}});
+  std::size_t chimneyFaces = 0, walls = 0;
+  buildTown(t, labelTown(t, style.labels), style, {}, [&](const BuildingReport&, MeshData* m) {
+    ASSERT_NE(m, nullptr);
+    for (std::size_t f = 0; f < m->faces.size(); ++f) {
+      const std::string& tag = m->tags[m->faceTag[f]];
+      const std::string& material = m->materials[m->faceMaterial[f]];
+      if (tag == "chimney") {
+        ++chimneyFaces;
+        EXPECT_EQ(material, "brick");
+      }
+      if (tag == "chimney top") {
+        EXPECT_EQ(material, "stone");
+      }
+      if (tag == "wall") {
+        ++walls;
+        EXPECT_EQ(material, "plaster");
+      }
+    }
+  });
+  EXPECT_GT(chimneyFaces, 0u);
+  EXPECT_GT(walls, 0u);
+}
