@@ -1,4 +1,5 @@
-// corbel-cli: headless entry points (render, export, check, extrude, statics, simulate, kifs, grow, complete). Thin: parse, call, report.
+// corbel-cli: headless entry points (render, export, check, extrude, statics, simulate, kifs, grow, complete, city). Thin: parse, call, report.
+#include "cli/city_command.h"
 #include "cli/complete.h"
 #include "cli/grow.h"
 #include "cli/kifs_command.h"
@@ -74,6 +75,11 @@ usage:
                     [--out FILE] [--render PNG]
                     Completes forms from N seed units with F_q in [LO, HI] (docs/growth.md),
                     fitted and sized into the region; prints one JSON line.
+  corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] [--out FILE.glb]
+                    [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]
+                    [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]
+                    | --street X,Y;X,Y;...
+                    A styled town (docs/city.md); prints one JSON line, skipped buildings on stderr.
 )";
 constexpr const char* kUsageEnd = R"(  corbel-cli --version | --help
 
@@ -434,6 +440,7 @@ int main(int argc, char** argv) {
     if (cmd == "simulate") return cli::runSimulate(argc, argv);
     if (cmd == "grow") return corbel::cli::grow(argc, argv);
     if (cmd == "complete") return corbel::cli::complete(argc, argv);
+    if (cmd == "city") return corbel::cli::city(argc, argv);
     throw UsageError("unknown command '" + cmd + "' (try --help)");
   } catch (const UsageError& e) {
     std::cerr << "corbel-cli: " << e.what() << "\n";

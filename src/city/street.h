@@ -1,0 +1,28 @@
+#pragma once
+// A street from a spline of a few points and the plots along it (Kelly & Wonka Fig. 26). The
+// paper grows the plots from seed points by a second application of the skeleton; here the
+// frontage is cut into plots of nearly equal width by lines along the street's normals, which
+// tiles it exactly and lets every plot follow a reshaped street (see docs/city.md).
+#include "city/import.h"
+
+#include <vector>
+
+namespace corbel::city {
+
+// A Catmull-Rom spline (uniform) through the control points, sampled `perSpan` times between
+// each two of them; the ends are held by repeating the first and last points.
+std::vector<Vec2> catmullRom(const std::vector<Vec2>& control, int perSpan = 16);
+
+struct PlotOptions {
+  double streetWidth = 10;  // m, kerb to kerb
+  double setback = 2;       // m, from the kerb to the plot's front
+  double depth = 12;        // m, front to back
+  double plotWidth = 7;     // m, wanted frontage of one plot (the frontage is cut evenly)
+  bool bothSides = true;
+};
+
+// The street as a Town: the centreline as its street and one building per plot (ids
+// "left/0", "left/1", …, "right/0", …; properties: side, index).
+Town streetTown(const std::vector<Vec2>& control, const PlotOptions& options = {});
+
+}  // namespace corbel::city

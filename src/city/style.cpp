@@ -1,0 +1,465 @@
+#include "city/style.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/json_reader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace corbel::city {
+
+namespace {
+
+void rejectUnknown(const JsonReader& r, const std::set<std::string>& known) {
+  if (const auto extra = r.unknownKeys(known); !extra.empty()) {
+    std::string names;
+    for (const auto& k : known) names += (names.empty() ? "" : ", ") + k;
+    throw InputError(extra.front(), "unknown key (expected one of: " + names + ")");
+  }
+}
+
+std::pair<double, double> range(const JsonReader& r, double lo, double hi) {
+  const auto v = r.array(2);
+  if (v.size() != 2) r.fail("expected [min, max]");
+  const double a = v[0].number(lo, hi), b = v[1].number(lo, hi);
+  if (a > b) r.fail("min is greater than max");
+  return {a, b};
+}
+
+extrude::FeatureSize featureSize(const JsonReader& r) {
+  const Vec3 v = r.vec3();
+  for (int k = 0; k < 3; ++k)
+    if (!(v[k] > 0 && v[k] <= 1000)) r.fail("each size must be greater than 0 and at most 1000 m");
+  return {v[0], v[1], v[2]};
+}
+
+BuildingCondition buildingCondition(const std::optional<JsonReader>& r) {
+  BuildingCondition c;
+  if (!r) return c;
+  r->expectObject();
+  rejectUnknown(*r, {"area", "property"});
+  if (auto a = r->find("area")) std::tie(c.minArea, c.maxArea) = range(*a, 0, 1e12);
+  if (auto p = r->find("property")) {
+    p->expectObject();
+    for (auto& [key, value] : p->raw().items()) {
+      JsonReader v(value, p->path() + "." + key);
+      if (value.is_array())
+        for (const auto& e : v.array(1000)) c.property[key].push_back(e.raw());
+      else
+        c.property[key].push_back(value);
+    }
+  }
+  return c;
+}
+
+EdgeCondition edgeCondition(const std::optional<JsonReader>& r) {
+  EdgeCondition c;
+  if (!r) return c;
+  r->expectObject();
+  rejectUnknown(*r, {"orientation", "length", "angle"});
+  if (auto o = r->find("orientation"))
+    for (const auto& e : o->array(3)) {
+      const auto v = orientationFromName(e.string(16));
+      if (!v) e.fail("expected \"street\", \"side\" or \"back\"");
+      c.orientation.push_back(*v);
+    }
+  if (auto l = r->find("length"))
+    for (const auto& e : l->array(3)) {
+      const auto v = lengthFromName(e.string(16));
+      if (!v) e.fail("expected \"short\", \"medium\" or \"long\"");
+      c.length.push_back(*v);
+    }
+  if (auto a = r->find("angle")) std::tie(c.minAngle, c.maxAngle) = range(*a, -180, 180);
+  return c;
+}
+
+// "name", or {"name": weight, ...}, against a name table.
+std::vector<Weighted> weighted(const JsonReader& r, const std::map<std::string, int>& names, const char* what) {
+  std::vector<Weighted> out;
+  auto lookup = [&](const std::string& name, const JsonReader& at) {
+    auto it = names.find(name);
+    if (it == names.end()) at.fail(std::string("no ") + what + " named \"" + name + "\"");
+    return it->second;
+  };
+  if (r.raw().is_string()) {
+    out.push_back({lookup(r.string(200), r), 1});
+  } else {
+    r.expectObject();
+    for (auto& [key, value] : r.raw().items()) {
+      JsonReader w(value, r.path() + "." + key);
+      out.push_back({lookup(key, r), w.number(0, 1e9)});
+    }
+    double total = 0;
+    for (const auto& w : out) total += w.weight;
+    if (out.empty() || total <= 0) r.fail("expected at least one entry with a weight above 0");
+  }
+  return out;
+}
+
+std::string checkProfile(const extrude::Profile& p) {
+  const auto& q = p.points;
+  if (q.size() < 2) return "a profile needs at least two points";
+  if (q[0] != Vec2(0, 0)) return "a profile starts at [0, 0]";
+  for (std::size_t i = 1; i < q.size(); ++i)
+    if (q[i][1] < q[i - 1][1]) return "points[" + std::to_string(i) + "]: a profile must not go down";
+  if (q[1][1] == q[0][1]) return "the first segment must rise";
+  if (q.back()[1] == q[q.size() - 2][1]) return "the last segment must rise";
+  if (q.back()[0] < q[q.size() - 2][0]) return "the last segment must not lean outward";
+  if (p.tags.size() > q.size() - 1) return "tags: more tags than segments";
+  return {};
+}
+
+void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, int depth) {
+  JsonReader r(root, "");
+  r.expectObject();
+  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "assign", "tag_materials"});
+  // The styles this one uses first, so its own name and labels win.
+  if (auto u = r.find("use")) {
+    if (depth > 8) u->fail("styles use each other more than 8 deep (a cycle?)");
+    for (const auto& e : u->array(100)) {
+      const std::string path = (std::filesystem::path(folder) / e.string(4096)).string();
+      try {
+        parseInto(s, parseJsonText(readFile(path, std::size_t(1) << 26)),
+                  std::filesystem::path(path).parent_path().string(), depth + 1);
+      } catch (const InputError& err) {
+        throw InputError(e.path() + ": " + path + (err.where.empty() ? "" : ": " + err.where), err.reason);
+      } catch (const Error& err) {
+        e.fail(err.what());
+      }
+    }
+  }
+  if (auto n = r.find("name")) s.name = n->string(200);
+  if (auto l = r.find("labels")) {
+    l->expectObject();
+    rejectUnknown(*l, {"short_below", "long_from", "street_degrees"});
+    if (auto v = l->find("short_below")) s.labels.shortBelow = v->number(0, 1000);
+    if (auto v = l->find("long_from")) s.labels.longFrom = v->number(0, 1000);
+    if (auto v = l->find("street_degrees")) s.labels.streetDegrees = v->number(0, 90);
+    if (s.labels.longFrom < s.labels.shortBelow) l->fail("long_from is less than short_below");
+  }
+  if (auto m = r.find("tag_materials")) {
+    m->expectObject();
+    for (auto& [tag, value] : m->raw().items())
+      s.tagMaterials[tag] = JsonReader(value, m->path() + "." + tag).string(200);
+  }
+  std::map<std::string, int> profileNames, typeNames;
+  for (std::size_t i = 0; i < s.profiles.size(); ++i) profileNames[s.profiles[i].name] = static_cast<int>(i);
+  for (std::size_t i = 0; i < s.types.size(); ++i) typeNames[s.types[i].name] = static_cast<int>(i);
+
+  if (auto ps = r.find("profiles"))
+    for (const auto& pr : ps->array(10000)) {
+      pr.expectObject();
+      rejectUnknown(pr, {"name", "points", "tags"});
+      extrude::Profile p;
+      p.name = pr.at("name").string(200);
+      for (const auto& q : pr.at("points").array(1000)) p.points.push_back(q.vec2());
+      if (auto t = pr.find("tags"))
+        for (const auto& e : t->array(1000)) p.tags.push_back(e.string(200));
+      if (const std::string why = checkProfile(p); !why.empty()) pr.fail(why);
+      if (profileNames.count(p.name)) pr.at("name").fail("a second profile named \"" + p.name + "\"");
+      profileNames[p.name] = static_cast<int>(s.profiles.size());
+      s.profiles.push_back(std::move(p));
+    }
+
+  auto profileIndex = [&](const JsonReader& at) {
+    const std::string name = at.string(200);
+    auto it = profileNames.find(name);
+    if (it == profileNames.end()) at.fail("no profile named \"" + name + "\"");
+    return it->second;
+  };
+
+  if (auto ts = r.find("types"))
+    for (const auto& tr : ts->array(1000)) {
+      tr.expectObject();
+      rejectUnknown(
+          tr, {"name", "when", "weight", "material", "roof_material", "edges", "windows", "door", "steps", "parapet"});
+      BuildingType t;
+      t.name = tr.at("name").string(200);
+      if (typeNames.count(t.name)) tr.at("name").fail("a second building type named \"" + t.name + "\"");
+      t.when = buildingCondition(tr.find("when"));
+      if (auto w = tr.find("weight")) t.weight = w->number(0, 1e9);
+      if (auto m = tr.find("material")) t.material = m->string(200);
+      if (auto m = tr.find("roof_material")) t.roofMaterial = m->string(200);
+      const auto edges = tr.at("edges").array(1000);
+      if (edges.empty()) tr.at("edges").fail("a building type needs at least one edge rule");
+      for (const auto& er : edges) {
+        er.expectObject();
+        rejectUnknown(er, {"when", "profiles"});
+        t.edges.push_back({edgeCondition(er.find("when")), weighted(er.at("profiles"), profileNames, "profile")});
+      }
+      if (auto ws = tr.find("windows"))
+        for (const auto& wr : ws->array(100)) {
+          wr.expectObject();
+          rejectUnknown(wr, {"when", "min_length", "margin", "spacing", "sill", "floors", "floor_height", "size"});
+          WindowRule w;
+          w.when = edgeCondition(wr.find("when"));
+          if (auto v = wr.find("min_length")) w.minLength = v->number(0, 1e4);
+          if (auto v = wr.find("margin")) w.margin = v->number(0, 1e4);
+          if (auto v = wr.find("spacing")) w.spacing = v->number(0.1, 1e4);
+          if (auto v = wr.find("sill")) w.sill = v->number(0, 1e4);
+          if (auto v = wr.find("floors")) w.floors = static_cast<int>(v->integer(1, 200));
+          if (auto v = wr.find("floor_height")) w.floorHeight = v->number(0.5, 100);
+          if (auto v = wr.find("size")) w.size = featureSize(*v);
+          t.windows.push_back(w);
+        }
+      if (auto d = tr.find("door")) {
+        if (d->raw().is_boolean()) {
+          if (d->boolean()) t.door = extrude::FeatureSize{1.0, 2.2, 0.15};
+        } else {
+          t.door = featureSize(*d);
+        }
+      }
+      if (auto ss = tr.find("steps"))
+        for (const auto& sr : ss->array(100)) {
+          sr.expectObject();
+          rejectUnknown(sr, {"when", "chance", "height", "width", "depth", "min_length", "margin", "spacing", "along",
+                             "row", "front_profile", "side_profile"});
+          StepRule st;
+          st.when = edgeCondition(sr.find("when"));
+          if (auto v = sr.find("chance")) st.chance = v->number(0, 1);
+          st.height = sr.at("height").number(0, 1e4);
+          if (auto v = sr.find("width")) st.width = v->number(0.01, 1e3);
+          if (auto v = sr.find("depth")) st.depth = v->number(-1e3, 1e3);
+          if (auto v = sr.find("min_length")) st.minLength = v->number(0, 1e4);
+          if (auto v = sr.find("margin")) st.margin = v->number(0, 1e4);
+          if (auto v = sr.find("spacing")) st.spacing = v->number(0.1, 1e4);
+          if (auto v = sr.find("along")) st.along = v->number(0, 1);
+          if (auto v = sr.find("row")) st.row = v->boolean();
+          st.frontProfile = profileIndex(sr.at("front_profile"));
+          st.sideProfile = sr.find("side_profile") ? profileIndex(sr.at("side_profile")) : st.frontProfile;
+          t.steps.push_back(st);
+        }
+      if (auto p = tr.find("parapet")) {
+        p->expectObject();
+        rejectUnknown(*p, {"height", "thickness", "inside_profile"});
+        ParapetRule pr;
+        pr.height = p->at("height").number(0.01, 1e4);
+        if (auto v = p->find("thickness")) pr.thickness = v->number(0.01, 100);
+        pr.insideProfile = profileIndex(p->at("inside_profile"));
+        t.parapet = pr;
+      }
+      typeNames[t.name] = static_cast<int>(s.types.size());
+      s.types.push_back(std::move(t));
+    }
+
+  if (auto as = r.find("assign")) {
+    s.assign.clear();  // the using style's assignment replaces those of the styles it uses
+    for (const auto& ar : as->array(1000)) {
+      ar.expectObject();
+      rejectUnknown(ar, {"when", "types"});
+      s.assign.push_back({buildingCondition(ar.find("when")), weighted(ar.at("types"), typeNames, "building type")});
+    }
+  }
+}
+
+bool sameValue(const nlohmann::json& a, const nlohmann::json& b) {
+  if (a.is_number() && b.is_number()) return a.get<double>() == b.get<double>();
+  return a == b;
+}
+
+}  // namespace
+
+bool BuildingCondition::matches(const Building& b) const {
+  if (b.area < minArea || b.area > maxArea) return false;
+  for (const auto& [key, values] : property) {
+    auto it = b.properties.find(key);
+    if (it == b.properties.end()) return false;
+    bool any = false;
+    for (const auto& v : values) any = any || sameValue(*it, v);
+    if (!any) return false;
+  }
+  return true;
+}
+
+bool EdgeCondition::matches(const EdgeLabel& e) const {
+  auto in = [](const auto& list, auto v) {
+    return list.empty() || std::find(list.begin(), list.end(), v) != list.end();
+  };
+  return in(orientation, e.orientation) && in(length, e.length_class) && e.angle >= minAngle && e.angle <= maxAngle;
+}
+
+void applyTagMaterials(const Style& style, MeshData& mesh) {
+  if (style.tagMaterials.empty()) return;
+  std::vector<int> remap(mesh.tags.size(), -1);
+  for (std::size_t t = 0; t < mesh.tags.size(); ++t)
+    if (auto it = style.tagMaterials.find(mesh.tags[t]); it != style.tagMaterials.end())
+      remap[t] = mesh.addMaterial(it->second);
+  for (std::size_t f = 0; f < mesh.faceTag.size() && f < mesh.faceMaterial.size(); ++f)
+    if (const int t = mesh.faceTag[f]; t >= 0 && static_cast<std::size_t>(t) < remap.size() && remap[t] >= 0)
+      mesh.faceMaterial[f] = remap[t];
+}
+
+Style parseStyle(const std::string& text, const std::string& folder) {
+  Style s;
+  parseInto(s, parseJsonText(text), folder, 0);
+  if (s.types.empty()) throw InputError("types", "a style needs at least one building type");
+  return s;
+}
+
+Style loadStyle(const std::string& path) {
+  try {
+    return parseStyle(readFile(path, std::size_t(1) << 26), std::filesystem::path(path).parent_path().string());
+  } catch (const InputError& e) {
+    throw InputError(e.where.empty() ? path : path + ": " + e.where, e.reason);
+  }
+}
+
+BuildingRandom::BuildingRandom(std::uint64_t seed, const std::string& id) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : id) h = (h ^ c) * 1099511628211ULL;
+  state_ = seed * 0x9E3779B97F4A7C15ULL ^ h;
+}
+
+double BuildingRandom::uniform() {
+  std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+std::size_t BuildingRandom::pick(const std::vector<Weighted>& choices) {
+  double total = 0;
+  for (const auto& c : choices) total += c.weight;
+  double u = uniform() * total;
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    if (u < choices[i].weight) return i;
+    u -= choices[i].weight;
+  }
+  for (std::size_t i = choices.size(); i-- > 0;)
+    if (choices[i].weight > 0) return i;
+  return 0;
+}
+
+std::optional<std::size_t> assignType(const Style& style, const Building& b, BuildingRandom& random) {
+  if (!style.assign.empty()) {
+    for (const auto& rule : style.assign)
+      if (rule.when.matches(b)) return static_cast<std::size_t>(rule.types[random.pick(rule.types)].index);
+    return std::nullopt;
+  }
+  std::vector<Weighted> candidates;
+  for (std::size_t i = 0; i < style.types.size(); ++i)
+    if (style.types[i].weight > 0 && style.types[i].when.matches(b))
+      candidates.push_back({static_cast<int>(i), style.types[i].weight});
+  if (candidates.empty()) return std::nullopt;
+  return static_cast<std::size_t>(candidates[random.pick(candidates)].index);
+}
+
+StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed) {
+  StyledBuilding out;
+  BuildingRandom random(seed, b.id);
+  const auto ti = assignType(style, b, random);
+  if (!ti) {
+    out.problem = "no building type of the style applies (area " + std::to_string(b.area) + " m²)";
+    return out;
+  }
+  const BuildingType& t = style.types[*ti];
+  out.type = t.name;
+  extrude::ExtrusionSpec& spec = out.spec;
+  spec.profiles = style.profiles;
+  spec.material = t.material;
+  spec.roofMaterial = t.roofMaterial;
+  for (const auto& ring : b.loops) spec.loops.push_back({ring, std::vector<int>(ring.size(), 0)});
+  std::set<int> used;
+  for (const EdgeLabel& e : labels.edges) {
+    const EdgeRule* rule = nullptr;
+    for (const auto& er : t.edges)
+      if (er.when.matches(e)) {
+        rule = &er;
+        break;
+      }
+    if (!rule) {
+      out.problem = "loops[" + std::to_string(e.loop) + "] edge " + std::to_string(e.edge) + " (" +
+                    std::string(orientationName(e.orientation)) + ", " + std::string(lengthName(e.length_class)) +
+                    ", " + std::to_string(static_cast<int>(std::lround(e.angle))) + "°): no edge rule of type \"" +
+                    t.name + "\" applies";
+      return out;
+    }
+    const int p = rule->profiles[random.pick(rule->profiles)].index;
+    spec.loops[e.loop].profile[e.edge] = p;
+    used.insert(p);
+  }
+  if (t.parapet) {
+    extrude::OffsetEvent ev;
+    ev.height = t.parapet->height;
+    ev.sideProfile = t.parapet->insideProfile;
+    for (int p : used)
+      ev.edges.push_back({p, -t.parapet->thickness, -1000.0, t.parapet->insideProfile, t.parapet->insideProfile});
+    spec.offsets.push_back(ev);
+  }
+
+  // The door: on the building's main front, near its start.
+  const EdgeLabel* doorEdge = nullptr;
+  double doorEnd = 0;
+  if (t.door && !labels.edges.empty()) {
+    const EdgeLabel& e = labels.edges[labels.longestStreetEdge];
+    if (e.length >= t.door->width + 1.0) {
+      doorEdge = &e;
+      const double at = std::min(1.0 + t.door->width / 2, e.length / 2);
+      doorEnd = at + t.door->width / 2;
+      spec.anchors.emplace_back("door", extrude::Anchor{e.loop, e.edge, true, at, 0.0}, extrude::FeatureKind::Door,
+                                *t.door);
+    }
+  }
+  for (std::size_t wi = 0; wi < t.windows.size(); ++wi) {
+    const WindowRule& w = t.windows[wi];
+    for (const EdgeLabel& e : labels.edges) {
+      if (!w.when.matches(e) || e.length < w.minLength) continue;
+      double first = w.margin, last = e.length - w.margin;
+      if (&e == doorEdge) first = std::max(first, doorEnd + w.spacing / 2 + w.size.width / 2);
+      if (last < first) {
+        if (&e == doorEdge) continue;
+        first = last = e.length / 2;
+      }
+      extrude::Repeat rep;
+      rep.kind = w.floors > 1 ? extrude::RepeatKind::Grid : extrude::RepeatKind::Row;
+      rep.along = last;
+      rep.spacing = w.spacing;
+      rep.height = w.sill + (w.floors - 1) * w.floorHeight;
+      rep.rowSpacing = w.floorHeight;
+      if (last == first && w.floors == 1) rep.kind = extrude::RepeatKind::None;
+      spec.anchors.emplace_back("windows " + std::to_string(wi) + " on edge " + std::to_string(e.edge),
+                                extrude::Anchor{e.loop, e.edge, true, first, w.sill}, extrude::FeatureKind::Window,
+                                w.size, rep);
+    }
+  }
+  for (std::size_t si = 0; si < t.steps.size(); ++si) {
+    const StepRule& st = t.steps[si];
+    if (random.uniform() >= st.chance) continue;
+    const EdgeLabel* longest = nullptr;
+    for (const EdgeLabel& e : labels.edges) {
+      if (!st.when.matches(e) || e.length < st.minLength || e.loop != 0) continue;
+      if (st.row) {
+        extrude::PlanStep step;
+        step.name = "step " + std::to_string(si) + " on edge " + std::to_string(e.edge);
+        step.anchor = {e.loop, e.edge, true, st.margin, st.height};
+        step.width = st.width;
+        step.depth = st.depth;
+        step.frontProfile = st.frontProfile;
+        step.sideProfile = st.sideProfile;
+        if (e.length - 2 * st.margin > st.spacing)
+          step.repeat = {extrude::RepeatKind::Row, e.length - st.margin, 0, st.spacing, 3};
+        else
+          step.anchor = {e.loop, e.edge, false, 0.5, st.height};
+        spec.steps.push_back(step);
+      } else if (!longest || e.length > longest->length) {
+        longest = &e;
+      }
+    }
+    if (longest) {
+      extrude::PlanStep step;
+      step.name = "step " + std::to_string(si);
+      step.anchor = {longest->loop, longest->edge, false, st.along, st.height};
+      step.width = st.width;
+      step.depth = st.depth;
+      step.frontProfile = st.frontProfile;
+      step.sideProfile = st.sideProfile;
+      spec.steps.push_back(step);
+    }
+  }
+  return out;
+}
+
+}  // namespace corbel::city

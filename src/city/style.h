@@ -1,0 +1,129 @@
+#pragma once
+// Styles of a town (Kelly & Wonka Sec. 3.7): building types chosen by rule or by chance, each
+// mapping edge labels to profiles with probabilities, plus anchored features. The file format
+// is described in docs/city.md. Everything drawn at random is drawn from the seed and the
+// building's id, so a building looks the same whatever order or thread builds it.
+#include "city/import.h"
+#include "city/labels.h"
+#include "core/mesh_data.h"
+#include "extrude/spec.h"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace corbel::city {
+
+// A condition on a footprint (all given parts must hold).
+struct BuildingCondition {
+  double minArea = 0, maxArea = INFINITY;                       // m²
+  std::map<std::string, std::vector<nlohmann::json>> property;  // key → accepted values
+  bool matches(const Building& b) const;
+};
+
+// A condition on an edge's labels (all given parts must hold; empty lists accept any).
+struct EdgeCondition {
+  std::vector<Orientation> orientation;
+  std::vector<LengthClass> length;
+  double minAngle = -180, maxAngle = 180;  // degrees, on the disk
+  bool matches(const EdgeLabel& e) const;
+};
+
+struct Weighted {
+  int index = 0;  // into the style's profiles (edge rules) or types (assignments)
+  double weight = 1;
+};
+
+struct EdgeRule {
+  EdgeCondition when;
+  std::vector<Weighted> profiles;
+};
+
+// Windows on the edges a condition picks: a grid from `margin` m after the edge's start to
+// `margin` m before its end, `spacing` apart, one row per floor.
+struct WindowRule {
+  EdgeCondition when;
+  double minLength = 3, margin = 1.5, spacing = 2.5, sill = 0.9, floorHeight = 3;
+  int floors = 1;
+  extrude::FeatureSize size{1.0, 1.3, 0.12};
+};
+
+// A row of natural steps (dormers) or one step (chimney) on edges a condition picks, at
+// `height` above the base, drawn with `chance` per building.
+struct StepRule {
+  EdgeCondition when;
+  double chance = 1, height = 0, width = 1.5, depth = 0.6, minLength = 6, margin = 2, spacing = 3;
+  double along = 0.5;  // single steps: where on the edge (fraction)
+  bool row = false;
+  int frontProfile = 0, sideProfile = 0;
+};
+
+// A parapet (Fig. 17 d): at `height` an inward offset of `thickness` cuts the roof from a
+// ring that rises by the inside profile.
+struct ParapetRule {
+  double height = 0, thickness = 0.3;
+  int insideProfile = 0;
+};
+
+struct BuildingType {
+  std::string name;
+  BuildingCondition when;
+  double weight = 1;
+  std::string material = "plaster", roofMaterial;
+  std::vector<EdgeRule> edges;
+  std::vector<WindowRule> windows;
+  std::optional<extrude::FeatureSize> door;
+  std::vector<StepRule> steps;
+  std::optional<ParapetRule> parapet;
+};
+
+// Explicit assignment: the first rule whose condition holds picks one of its types.
+struct AssignRule {
+  BuildingCondition when;
+  std::vector<Weighted> types;
+};
+
+struct Style {
+  std::string name;
+  LabelOptions labels;
+  std::vector<extrude::Profile> profiles;
+  std::vector<BuildingType> types;
+  std::vector<AssignRule> assign;  // empty: any type whose own condition holds, by weight
+  // Faces with one of these tags take that material (chimneys of brick, copings of stone),
+  // so the glb's materials follow the tags.
+  std::map<std::string, std::string> tagMaterials;
+};
+
+// Gives the faces of `mesh` whose tag the style names their material.
+void applyTagMaterials(const Style& style, MeshData& mesh);
+
+// Parses a style; faults throw InputError naming the JSON path ("types[1].edges[0].profiles:
+// no profile named \"x\""). `folder` resolves the paths in "use".
+Style parseStyle(const std::string& text, const std::string& folder = {});
+Style loadStyle(const std::string& path);
+
+// The random stream of one building: splitmix64 of the seed and the id's FNV-1a hash.
+class BuildingRandom {
+ public:
+  BuildingRandom(std::uint64_t seed, const std::string& id);
+  double uniform();  // [0, 1)
+  // Picks an entry by weight; returns its index in `choices`.
+  std::size_t pick(const std::vector<Weighted>& choices);
+
+ private:
+  std::uint64_t state_;
+};
+
+// The type a building gets (index into style.types), or nullopt when none applies.
+std::optional<std::size_t> assignType(const Style& style, const Building& b, BuildingRandom& random);
+
+struct StyledBuilding {
+  std::string type;  // "" when it could not be styled
+  extrude::ExtrusionSpec spec;
+  std::string problem;  // why not
+};
+StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed);
+
+}  // namespace corbel::city

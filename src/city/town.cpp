@@ -1,0 +1,96 @@
+#include "city/town.h"
+
+#include "extrude/batch.h"
+
+#include <numeric>
+
+namespace corbel::city {
+
+namespace {
+
+// Drops points no face uses (merging coplanar faces leaves some): a Scene removes such points
+// from the whole mesh after each insertion, which over a town would cost time quadratic in it.
+void dropUnusedPoints(MeshData& m) {
+  std::vector<int> remap(m.points.size(), -1);
+  for (const auto& f : m.faces)
+    for (int i : f) remap[i] = 0;
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < remap.size(); ++i)
+    if (remap[i] == 0) {
+      m.points[next] = m.points[i];
+      remap[i] = static_cast<int>(next++);
+    }
+  if (next == m.points.size()) return;
+  m.points.resize(next);
+  for (auto& f : m.faces)
+    for (int& i : f) i = remap[i];
+}
+
+}  // namespace
+
+TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& labels, const Style& style,
+                      const TownOptions& options, const BuildingSink& sink, const std::vector<std::size_t>& orderIn,
+                      const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<std::size_t> order = orderIn;
+  if (order.empty()) {
+    order.resize(town.buildings.size());
+    std::iota(order.begin(), order.end(), 0);
+  }
+  TownSummary sum;
+  sum.buildings = order.size();
+  extrude::BatchOptions batch;
+  batch.jobs = options.jobs;
+  batch.keepMeshes = true;
+  batch.mergeCoplanar = options.mergeCoplanar;
+  batch.timeLimitSeconds = options.timeLimitSeconds;
+  const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
+  for (std::size_t from = 0; from < order.size(); from += chunk) {
+    const std::size_t to = std::min(order.size(), from + chunk);
+    std::vector<BuildingReport> reports(to - from);
+    std::vector<extrude::BatchItem> items(to - from);
+    for (std::size_t k = from; k < to; ++k) {
+      const Building& b = town.buildings[order[k]];
+      BuildingReport& r = reports[k - from];
+      r.index = order[k];
+      r.id = b.id;
+      r.notes = b.notes;
+      extrude::BatchItem& item = items[k - from];
+      item.id = b.id;
+      if (!b.problem.empty()) {
+        item.problem = b.problem;
+        continue;
+      }
+      StyledBuilding s = styleBuilding(style, b, labels[order[k]], options.seed);
+      r.type = s.type;
+      item.spec = std::move(s.spec);
+      if (options.detail != Detail::Full) item.spec.anchors.clear();
+      if (options.detail == Detail::Massing) item.spec.steps.clear();
+      item.problem = s.problem;
+    }
+    std::vector<extrude::BatchResult> results = extrude::extrudeBatch(items, batch);
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      BuildingReport& r = reports[k];
+      extrude::BatchResult& res = results[k];
+      r.ok = res.ok;
+      r.error = res.error;
+      r.warnings = std::move(res.warnings);
+      if (!items[k].problem.empty())
+        ++sum.refused;
+      else if (!res.ok)
+        ++sum.failed;
+      else {
+        ++sum.ok;
+        ++sum.types[r.type];
+        sum.faces += res.mesh.faces.size();
+        dropUnusedPoints(res.mesh);
+        applyTagMaterials(style, res.mesh);
+      }
+      sink(r, res.ok ? &res.mesh : nullptr);
+      res.mesh = MeshData();  // handed on: drop it now
+    }
+    if (progress) progress(to, order.size());
+  }
+  return sum;
+}
+
+}  // namespace corbel::city

@@ -1,0 +1,204 @@
+// Styles: parse errors name their path, rules pick types, profile choices follow their weights
+// and depend only on the seed and the building.
+#include "city/style.h"
+
+#include "core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+using namespace corbel;
+using namespace corbel::city;
+
+namespace {
+
+const char* kStyle = R"({
+  "name": "test",
+  "profiles": [
+    {"name": "hip", "points": [[0, 0], [0, 3], [3, 6]], "tags": ["wall", "roof"]},
+    {"name": "gable", "points": [[0, 0], [0, 3], [0, 5]], "tags": ["wall", "gable"]},
+    {"name": "steep", "points": [[0, 0], [0, 3], [1, 6]]},
+    {"name": "dormer", "points": [[0, 0], [0, 1]]}
+  ],
+  "types": [
+    {"name": "shed", "when": {"area": [0, 50]}, "edges": [{"profiles": "hip"}]},
+    {"name": "house", "when": {"area": [50, 1e9]}, "weight": 1,
+     "edges": [{"when": {"orientation": ["side"]}, "profiles": {"gable": 3, "hip": 1}}, {"profiles": "steep"}],
+     "windows": [{"when": {"orientation": ["street"]}, "margin": 1, "spacing": 2, "floors": 2}],
+     "door": true,
+     "steps": [{"when": {"orientation": ["street"]}, "chance": 1, "height": 3, "row": true, "min_length": 6, "margin": 2,
+                "spacing": 3, "front_profile": "dormer"}]},
+    {"name": "shop", "when": {"property": {"use": ["shop", 7]}}, "weight": 5, "edges": [{"profiles": "hip"}]}
+  ]
+})";
+
+Building box(const std::string& id, double w, double h, nlohmann::json props = nlohmann::json::object()) {
+  Building b;
+  b.id = id;
+  b.loops = {{{0, 0}, {w, 0}, {w, h}, {0, h}}};
+  b.area = w * h;
+  b.properties = std::move(props);
+  return b;
+}
+
+std::string parseError(const std::string& text) {
+  try {
+    parseStyle(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string withType(const std::string& type) {
+  return R"({"profiles": [{"name": "hip", "points": [[0, 0], [0, 3], [3, 6]]}], "types": [)" + type + "]}";
+}
+
+}  // namespace
+
+TEST(Style, RulesPickTheTypeByAreaAndProperty) {
+  const Style s = parseStyle(kStyle);
+  const Building small = box("a", 5, 5), big = box("b", 10, 8), shop = box("c", 10, 8, {{"use", "shop"}}),
+                 coded = box("d", 4, 4, {{"use", 7.0}});
+  BuildingRandom r(1, "x");
+  EXPECT_EQ(s.types[*assignType(s, small, r)].name, "shed");
+  EXPECT_EQ(s.types[*assignType(s, big, r)].name, "house");
+  // A shop qualifies as house and shop; by weight 1 : 5 most draws are shops, some houses.
+  int shops = 0;
+  for (int i = 0; i < 600; ++i) {
+    BuildingRandom ri(i, "c");
+    shops += s.types[*assignType(s, shop, ri)].name == "shop";
+  }
+  EXPECT_GT(shops, 450);  // expected 500, σ ≈ 9
+  EXPECT_LT(shops, 550);
+  // A numeric property matches a number in the rule (7 = 7.0); the area (16 m²) also allows a shed.
+  std::set<std::string> got;
+  for (int i = 0; i < 50; ++i) {
+    BuildingRandom ri(i, "d");
+    got.insert(s.types[*assignType(s, coded, ri)].name);
+  }
+  EXPECT_EQ(got, (std::set<std::string>{"shed", "shop"}));
+}
+
+TEST(Style, ExplicitAssignmentUsesTheFirstRuleThatHolds) {
+  const std::string text = std::string(kStyle).substr(0, std::string(kStyle).rfind('}')) +
+                           R"(, "assign": [{"when": {"area": [0, 30]}, "types": "shop"}, {"types": {"house": 1}}]})";
+  const Style s = parseStyle(text);
+  BuildingRandom r(3, "a");
+  EXPECT_EQ(s.types[*assignType(s, box("a", 5, 5), r)].name, "shop");
+  EXPECT_EQ(s.types[*assignType(s, box("b", 6, 6), r)].name, "house");  // 36 m²: second rule
+}
+
+TEST(Style, ProfileChoicesFollowTheirWeights) {
+  const Style s = parseStyle(kStyle);
+  const Building b = box("house", 10, 8);
+  const std::vector<EdgeLabel> edges = labelEdges(b.loops, {0, -1});
+  BuildingLabels L;
+  L.front = {0, -1};
+  L.edges = edges;
+  int gables = 0, sides = 0;
+  for (int seed = 0; seed < 1000; ++seed) {
+    const StyledBuilding sb = styleBuilding(s, b, L, seed);
+    ASSERT_EQ(sb.problem, "");
+    for (const auto& e : edges) {
+      const int p = sb.spec.loops[0].profile[e.edge];
+      if (e.orientation == Orientation::Side) {
+        ++sides;
+        gables += s.profiles[p].name == "gable";
+      } else {
+        EXPECT_EQ(s.profiles[p].name, "steep");
+      }
+    }
+  }
+  // 3 : 1 over 2000 side edges: 1500 expected, σ ≈ 19.
+  EXPECT_EQ(sides, 2000);
+  EXPECT_GT(gables, 1420);
+  EXPECT_LT(gables, 1580);
+}
+
+TEST(Style, TheSameSeedGivesTheSameBuildingInAnyOrder) {
+  const Style s = parseStyle(kStyle);
+  std::vector<Building> bs;
+  for (int i = 0; i < 40; ++i) bs.push_back(box("b" + std::to_string(i), 8 + i % 7, 7 + i % 3));
+  auto styleAll = [&](std::uint64_t seed, bool reversed) {
+    std::vector<extrude::ExtrusionSpec> out(bs.size());
+    for (std::size_t k = 0; k < bs.size(); ++k) {
+      const std::size_t i = reversed ? bs.size() - 1 - k : k;
+      BuildingLabels L;
+      L.front = {0, -1};
+      L.edges = labelEdges(bs[i].loops, L.front);
+      out[i] = styleBuilding(s, bs[i], L, seed).spec;
+    }
+    return out;
+  };
+  const auto a = styleAll(7, false), b = styleAll(7, true), c = styleAll(8, false);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+}
+
+TEST(Style, FeaturesArePlacedOnTheStreetEdges) {
+  const Style s = parseStyle(kStyle);
+  const Building b = box("house", 12, 8);
+  BuildingLabels L;
+  L.front = {0, -1};
+  L.edges = labelEdges(b.loops, L.front);
+  const StyledBuilding sb = styleBuilding(s, b, L, 1);
+  ASSERT_EQ(sb.type, "house");
+  // The door near the start of the 12 m front (edge 0), the windows after it, two floors.
+  ASSERT_GE(sb.spec.anchors.size(), 2u);
+  EXPECT_EQ(sb.spec.anchors[0].feature, FeatureKind::Door);
+  EXPECT_EQ(sb.spec.anchors[0].anchor.edge, 0);
+  EXPECT_EQ(sb.spec.anchors[1].feature, FeatureKind::Window);
+  EXPECT_EQ(sb.spec.anchors[1].repeat.kind, RepeatKind::Grid);
+  EXPECT_GT(sb.spec.anchors[1].anchor.along, sb.spec.anchors[0].anchor.along + 1);
+  // Dormers from 2 m to 10 m along the front, at the eaves.
+  ASSERT_EQ(sb.spec.steps.size(), 1u);
+  EXPECT_EQ(sb.spec.steps[0].anchor.edge, 0);
+  EXPECT_DOUBLE_EQ(sb.spec.steps[0].anchor.along, 2);
+  EXPECT_DOUBLE_EQ(sb.spec.steps[0].repeat.along, 10);
+  EXPECT_DOUBLE_EQ(sb.spec.steps[0].anchor.height, 3);
+}
+
+TEST(Style, FaultsNameTheirPath) {
+  EXPECT_EQ(parseError(withType(R"({"name": "a", "edgez": []})")),
+            "types[0].edgez: unknown key (expected one of: door, edges, "
+            "material, name, parapet, roof_material, steps, weight, when, windows)");
+  EXPECT_EQ(parseError(withType(R"({"name": "a", "edges": [{"profiles": "gable"}]})")),
+            "types[0].edges[0].profiles: no profile named \"gable\"");
+  EXPECT_EQ(
+      parseError(withType(R"({"name": "a", "edges": [{"when": {"orientation": ["front"]}, "profiles": "hip"}]})")),
+      "types[0].edges[0].when.orientation[0]: expected \"street\", \"side\" or \"back\"");
+  EXPECT_EQ(parseError(withType(R"({"name": "a", "edges": [{"profiles": {"hip": -1}}]})")),
+            "types[0].edges[0].profiles.hip: -1 is outside [0, 1e+09]");
+  EXPECT_EQ(parseError(R"({"profiles": [{"name": "down", "points": [[0, 0], [0, 3], [1, 2]]}], "types": []})"),
+            "profiles[0]: points[2]: a profile must not go down");
+  EXPECT_EQ(parseError(R"({"profiles": [], "types": []})"), "types: a style needs at least one building type");
+  EXPECT_EQ(parseError(withType(R"({"name": "a", "when": {"area": [50, 10]}, "edges": [{"profiles": "hip"}]})")),
+            "types[0].when.area: min is greater than max");
+}
+
+TEST(Style, AFileFaultNamesTheFile) {
+  const auto dir = std::filesystem::temp_directory_path() / "corbel_city_style_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "bad.json") << withType(R"({"name": "a", "edges": []})");
+  std::ofstream(dir / "user.json") << R"({"use": ["bad.json"]})";
+  try {
+    loadStyle((dir / "user.json").string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("user.json: use[0]: "), std::string::npos) << m;
+    EXPECT_NE(m.find("bad.json: types[0].edges: a building type needs at least one edge rule"), std::string::npos) << m;
+  }
+}
+
+TEST(Style, TheShippedStylesLoad) {
+  for (const char* name : {"suburban", "oldtown", "modern", "mixed"}) {
+    const Style s = loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/" + name + ".json");
+    EXPECT_FALSE(s.types.empty()) << name;
+  }
+  EXPECT_EQ(loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/mixed.json").types.size(), 7u);
+}
