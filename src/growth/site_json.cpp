@@ -1,6 +1,7 @@
 // The site file of docs/growth.md → Site.
 #include "core/atomic_file.h"
 #include "core/json_reader.h"
+#include "growth/seeding.h"
 #include "growth/site.h"
 
 namespace corbel::growth {
@@ -26,7 +27,7 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
   root.expectObject();
   warnUnknown(root,
               {"format", "version", "envelope", "base", "storeys", "storey_height", "alpha", "cantilever", "clearance",
-               "cores", "circulation", "seeds", "name"},
+               "cores", "circulation", "seeds", "generate_seeds", "name"},
               warnings);
   if (auto f = root.find("format"); f && f->string(64) != "corbel-growth-site")
     f->fail("expected \"corbel-growth-site\"");
@@ -68,7 +69,10 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
       if (!(size[0] > 0 && size[1] > 0 && size[2] > 0)) c.at("size").fail("sizes must be positive");
       site.circulation.push_back({at, at + size});
     }
-  for (const JsonReader& s : root.at("seeds").array(100000)) {
+  const auto generate = root.find("generate_seeds");
+  if (!generate && !root.find("seeds")) root.at("seeds");  // names the missing key
+  if (auto list = root.find("seeds"))
+  for (const JsonReader& s : list->array(100000)) {
     warnUnknown(s, {"at", "size", "storey", "target_area", "target_volume", "locked", "behaviour", "name"}, warnings);
     Seed seed;
     seed.at = s.at("at").vec2();
@@ -84,6 +88,26 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
       }
     if (auto b = s.find("behaviour")) seed.behaviour = b->string(64);
     site.seeds.push_back(seed);
+  }
+  if (generate) {
+    // Seeds at exits along the circulation, within these controls (growth/seeding.h); the
+    // hand-placed ones above are kept and the generated ones placed clear of them.
+    const JsonReader& g = *generate;
+    warnUnknown(g, {"count", "size", "spacing", "target_area", "storeys", "seed", "behaviour"}, warnings);
+    SeedControls c;
+    c.count = int(g.at("count").integer(0, 100000));
+    if (auto z = g.find("size")) c.size = positiveSize(*z);
+    if (auto sp = g.find("spacing")) c.spacing = sp->number(0, 1e4);
+    if (auto t = g.find("target_area")) {
+      const Vec2 range = t->vec2();
+      c.areaLo = range[0];
+      c.areaHi = range[1];
+    }
+    if (auto st = g.find("storeys"))
+      for (const JsonReader& k : st->array(1000)) c.storeys.push_back(int(k.integer(0, 999)));
+    if (auto sd = g.find("seed")) c.seed = unsigned(sd->integer(0, 4294967295LL));
+    if (auto b = g.find("behaviour")) c.behaviour = b->string(64);
+    generateSeeds(site, c);
   }
   validateSite(site);
   return site;
