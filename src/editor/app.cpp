@@ -8,6 +8,7 @@
 #include "extrude/kernel.h"
 #include "growth/kernel.h"
 #include "kifs/kernel.h"
+#include "render/kifs_layer.h"
 #include "statics/kernel.h"
 #include "render/gl.h"
 #include "render/image.h"
@@ -18,6 +19,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -1067,9 +1070,29 @@ int App::run() {
     if (!raymarched.buildings.empty() && !kifsFailed_) {
       try {
         if (!kifsPass_) kifsPass_ = std::make_unique<render::KifsPass>();
-        for (const kifs::KifsParams& p : raymarched.buildings)
-          kifsPass_->draw(kifs::Building(render::kifsForView(p, camera_, ph)), camera_, px, py, pw, ph,
-                          render::KifsMode::Shaded);
+        if (!kifsLayer_) kifsLayer_ = std::make_unique<render::KifsLayer>();
+        // Progressive refinement: march again only when the buildings, the camera or the
+        // viewport changed; coarse (1/4 of the pixels each way) while they keep changing, full
+        // size once they have been still for a moment. Other frames reuse the cached layer.
+        std::vector<KifsSpec> specs;
+        for (const DocObject& o : doc.objects)
+          if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0 && settings_.visible(o.id))
+            specs.push_back(*k);
+        const std::array<double, 9> view{camera_.target[0], camera_.target[1], camera_.target[2], camera_.azimuth_deg,
+                                         camera_.elevation_deg, camera_.distance, camera_.fov_deg, double(pw), double(ph)};
+        const auto now = std::chrono::steady_clock::now();
+        if (specs != kifsSpecs_ || view != kifsView_) {
+          kifsSpecs_ = std::move(specs);
+          kifsView_ = view;
+          kifsChanged_ = now;
+          ++kifsGeneration_;
+        }
+        const bool still = now - kifsChanged_ > std::chrono::milliseconds(300);
+        std::vector<kifs::KifsParams> buildings;
+        for (const kifs::KifsParams& p : raymarched.buildings) buildings.push_back(render::kifsForView(p, camera_, ph));
+        kifsLayer_->update(*kifsPass_, buildings, camera_, pw, ph, still ? 1 : 4, render::KifsMode::Shaded,
+                           std::to_string(kifsGeneration_));
+        kifsLayer_->composite(px, py, pw, ph);
       } catch (const std::exception& e) {
         log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);
         kifsFailed_ = true;

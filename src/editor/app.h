@@ -3,6 +3,7 @@
 // renderer, and the ImGui shell (menu bar, left panel, status/log bar, 3D viewport).
 #include "core/app_state.h"
 #include "core/history.h"
+#include "core/kifs_spec.h"
 #include "core/live_sync.h"
 #include "core/progress.h"
 #include "core/scene.h"
@@ -14,9 +15,11 @@
 #include "editor/kifs_panel.h"
 #include "editor/statics_panel.h"
 #include "render/camera.h"
+#include "render/kifs_layer.h"
 #include "render/kifs_pass.h"
 #include "render/renderer.h"
 
+#include <array>
 #include <chrono>
 #include <deque>
 #include <map>
@@ -141,6 +144,11 @@ class App {
   GrowthPanel growthPanel_;
   std::optional<ObjectId> growthFor_;
   std::unique_ptr<render::KifsPass> kifsPass_;  // made when a KIFS building is first shown
+  std::unique_ptr<render::KifsLayer> kifsLayer_;  // the cached march (progressive refinement)
+  std::vector<KifsSpec> kifsSpecs_;              // what the layer shows, to see it change
+  std::array<double, 9> kifsView_{};
+  std::chrono::steady_clock::time_point kifsChanged_{};
+  unsigned long kifsGeneration_ = 0;
   bool kifsFailed_ = false;                      // its shader did not build (logged once)
   std::vector<std::string> scriptLines_;
   std::size_t scriptLine_ = 0;
