@@ -17,16 +17,19 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include "core/project_io.h"
+#include "kifs/kernel.h"
 #include <string>
 #include <vector>
 
 namespace corbel::cli {
 
 const char* const kKifsUsage =
-    R"(  corbel-cli kifs --out PNG [--preset NAME] [--size WxH] [--mode shaded|facades|floors|cost]
+    R"(  corbel-cli kifs [PRESET|PROJECT.corbel] --out PNG [--preset NAME] [--size WxH] [--mode shaded|facades|floors|cost]
                     [--camera AZ,EL] [--frames N]
                     A KIFS building (McGraw) raymarched on the GPU path (OSMesa). Presets: box,
-                    menger, t, h, polar, curved, sparse, crumbling, turned, star (default box).
+                    menger, t, h, polar, curved, sparse, crumbling, turned, star (default box);
+                    a project gives its first KIFS object (every form below takes it too).
                     --frames N renders N times after one untimed frame (the first draw
                     compiles the shader) and prints the mean milliseconds per frame.
                     --mode cost writes a heat map of distance evaluations per pixel and prints
@@ -93,15 +96,32 @@ int run(int argc, char** argv) {
   const std::map<std::string, bool> known = {{"--out", true},    {"--preset", true}, {"--size", true},
                                              {"--mode", true},   {"--camera", true}, {"--frames", true},
                                              {"--eval", true},   {"--mesh", true},   {"--resolution", true}};
+  std::string source;  // PRESET_OR_PROJECT, the optional first argument
   for (int i = 2; i < argc; ++i) {
     const std::string s = argv[i];
+    if (i == 2 && s.rfind("--", 0) != 0) {
+      source = s;
+      continue;
+    }
     auto it = known.find(s);
     if (it == known.end()) throw Usage("kifs: unknown argument " + s);
     if (i + 1 >= argc) throw Usage("kifs: " + s + " needs a value");
     opt[s] = argv[++i];
   }
-  const std::string presetName = opt.count("--preset") ? opt["--preset"] : "box";
-  kifs::KifsParams params = kifs::preset(presetName);
+  if (!source.empty() && opt.count("--preset")) throw Usage("kifs: give a preset or project, or --preset, not both");
+  std::string presetName = opt.count("--preset") ? opt["--preset"] : source.empty() ? "box" : source;
+  kifs::KifsParams params;
+  if (presetName.size() > 7 && presetName.substr(presetName.size() - 7) == ".corbel") {
+    // A project: its first KIFS object, with the parameters the project holds.
+    const LoadedProject project = loadProject(presetName);
+    const KifsSpec* spec = nullptr;
+    for (const DocObject& o : project.document.objects)
+      if ((spec = std::get_if<KifsSpec>(&o.spec))) break;
+    if (!spec) throw Error(presetName + ": the project has no KIFS object");
+    params = kifs::paramsOf(*spec);
+  } else {
+    params = kifs::preset(presetName);
+  }
   if (opt.count("--eval")) return evalPoints(kifs::Building(params), opt["--eval"]);
   if (opt.count("--mesh")) return meshToFile(kifs::Building(params), opt);
   if (!opt.count("--out")) throw Usage("kifs: --out PNG (or --mesh FILE, --eval POINTS) is required");

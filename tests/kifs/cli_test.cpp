@@ -79,6 +79,27 @@ TEST(KifsCli, MeshesAClosedManifoldToAFile) {
   EXPECT_EQ(cli("kifs --mesh x.ply --resolution 0").code, 2);   // bad resolution
 }
 
+// The first argument may name a preset or a project: a project's KIFS object evaluates as its
+// parameters do (the H example holds the h preset's values), and a project with none is refused.
+TEST(KifsCli, TakesAPresetOrAProjectAsItsFirstArgument) {
+  const fs::path points = fs::temp_directory_path() / ("corbel_kifs_points2_" + std::to_string(getpid()) + ".txt");
+  {
+    std::ofstream f(points);
+    f << "3 -11 7\n-12.5 4 1\n0 0 14\n";
+  }
+  const CliRun byPreset = cli("kifs --preset h --eval " + points.string());
+  const CliRun positional = cli("kifs h --eval " + points.string());
+  const CliRun project = cli(std::string("kifs '") + CORBEL_SOURCE_DIR + "/assets/examples/kifs-h.corbel' --eval " + points.string());
+  ASSERT_EQ(byPreset.code, 0) << byPreset.out;
+  EXPECT_EQ(positional.out, byPreset.out);
+  ASSERT_EQ(project.code, 0) << project.out;
+  EXPECT_EQ(project.out, byPreset.out);
+  const CliRun none = cli(std::string("kifs '") + CORBEL_SOURCE_DIR + "/assets/examples/house.corbel' --out x.png");
+  EXPECT_EQ(none.code, 1);
+  EXPECT_NE(none.out.find("no KIFS object"), std::string::npos) << none.out;
+  EXPECT_EQ(cli("kifs h --preset box --out x.png").code, 2);  // both
+}
+
 TEST(KifsCli, BadCommandLinesAreRefused) {
   EXPECT_EQ(cli("kifs").code, 2);                                  // no --out
   EXPECT_EQ(cli("kifs --out x.png --mode glossy").code, 2);        // unknown mode
