@@ -77,7 +77,6 @@ bool KifsLayer::update(KifsPass& pass, const std::vector<kifs::KifsParams>& buil
 
 void KifsLayer::composite(int x, int y, int width, int height) {
   if (!color_) return;
-  glViewport(x, y, width, height);
   glUseProgram(program_);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, color_);
@@ -87,13 +86,7 @@ void KifsLayer::composite(int x, int y, int width, int height) {
   glUniform1i(glGetUniformLocation(program_, "uDepth"), 1);
   glUniform4i(glGetUniformLocation(program_, "uViewport"), x, y, width, height);
   glUniform1i(glGetUniformLocation(program_, "uScale"), scale_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
-  glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  drawDepthWritingTriangle(vao_, x, y, width, height);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, 0);
   glActiveTexture(GL_TEXTURE0);

@@ -101,16 +101,20 @@ void KifsPass::draw(const kifs::Building& building, const OrbitCamera& camera, i
   w.v4("uViewport", x, y, width, height);
   w.i("uMode", static_cast<int>(mode));
   w.v3("uSunDir", glm::normalize(glm::dvec3(0.45, -0.35, 0.82)));  // the Renderer's sun
+  drawDepthWritingTriangle(vao_, x, y, width, height);
+  glUseProgram(0);
+  written_ = w.names;
+}
+
+void drawDepthWritingTriangle(unsigned vao, int x, int y, int width, int height) {
   glViewport(x, y, width, height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
-  glBindVertexArray(vao_);
+  glBindVertexArray(vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glUseProgram(0);
-  written_ = w.names;
 }
 
 kifs::KifsParams kifsForView(kifs::KifsParams params, const OrbitCamera& camera, int height) {

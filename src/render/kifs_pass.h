@@ -57,6 +57,10 @@ class KifsPass {
   std::vector<std::string> written_;
 };
 
+// Draws the full-screen triangle (background.vert.glsl) of the bound program into the viewport
+// (x, y, width, height), depth-tested (LEQUAL) and writing depth, blending off.
+void drawDepthWritingTriangle(unsigned vao, int x, int y, int width, int height);
+
 // `params` with the hit threshold's pixel angle for a camera seeing `height` pixels.
 kifs::KifsParams kifsForView(kifs::KifsParams params, const OrbitCamera& camera, int height);
 // A camera framing the building's outer shell.
