@@ -1,8 +1,9 @@
 #pragma once
 // The statics panel's "Simulate" section without GL or ImGui (Whiting et al. 2009, Sec. 5,
 // Fig. 14): a collapse simulation (sim::Session) of one masonry spec, played a bounded slice of
-// wall time per frame so the window stays responsive, shaken or robbed of a block, and drawn in
-// place of the design's blocks. It owns a copy of the design; the Document and its undo history
+// wall time per frame so the window stays responsive (on a worker thread once a single step
+// costs more than the slice), shaken or robbed of a block, and drawn in place of the design's
+// blocks. It owns a copy of the design; the Document and its undo history
 // are never touched, and reset() returns to the design state.
 #include "core/masonry_spec.h"
 #include "core/mesh_data.h"
@@ -11,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <string>
 #include <vector>
 
@@ -28,15 +30,22 @@ class Simulation {
   // Builds the spec's model (statics::modelOf) and a session with the spec's friction. Throws
   // corbel::Error (InputError for a bad spec) when the model cannot be built or simulated.
   explicit Simulation(const MasonrySpec& spec, Clock clock = {});
+  ~Simulation();  // waits for the worker's steps
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
 
   // The spec the simulation was made from: it shows only while the object still has it.
   const MasonrySpec& spec() const { return spec_; }
-  const sim::Session& session() const { return session_; }
+  const statics::Assembly& design() const { return session_.design(); }
+  const sim::SimSettings& settings() const { return session_.settings(); }
 
-  void play() { session_.play(); }
-  void pause() { session_.pause(); }
+  // Everything below waits for steps running on the worker first, except advance(), which
+  // collects them only once they are done, and the state readers, which show the last state
+  // collected.
+  void play();
+  void pause();
   void togglePlay() { playing() ? pause() : play(); }
-  bool playing() const { return session_.playing(); }
+  bool playing() const { return playing_; }
 
   // `steps` fixed steps at once, playing or not (the Step button, scripted runs).
   void step(int steps = 1);
@@ -44,8 +53,14 @@ class Simulation {
   // frame, one at a time, and stops once `budget` seconds of wall time have gone on stepping
   // (at least one step is taken when any is due). A backlog the budget could not cover is
   // dropped, so a slow model runs slower than real time instead of falling ever further behind.
-  // Returns the steps taken; none while paused.
+  // Once one step has taken longer than the whole budget, the frame's steps go to a worker
+  // thread instead and the frame returns at once; a later frame collects them when they are
+  // done (the view meanwhile shows the last state). Returns the steps that this call took or
+  // collected; none while paused.
   int advance(double wallSeconds, double budget = kSimFrameBudget);
+  // Waits for the worker's steps and collects them (scripted runs, tests).
+  void finish();
+  bool stepping() const { return batch_.valid(); }  // steps are running on the worker
 
   // The design state, paused; the perturbations are forgotten.
   void reset();
@@ -61,14 +76,16 @@ class Simulation {
   // highest (an arch's keystone), or "" when there is none.
   std::string topBlock() const;
 
-  double time() const { return session_.time(); }
+  // The state as of the last steps collected.
+  double time() const { return shown_.time; }
+  long steps() const { return shown_.steps; }
+  const std::vector<sim::Pose>& poses() const { return shown_.poses; }
   // The largest displacement of any block's farthest vertex since reset, m.
-  double largestDisplacement() const;
-  int fallenCount() const { return int(session_.fallenBlocks().size()); }
-
+  double largestDisplacement() const { return shown_.largest; }
+  int fallenCount() const { return shown_.fallen; }
   // What is drawn in place of the design's blocks: the blocks where they are now, without the
   // removed ones, in the spec's material.
-  MeshData mesh() const;
+  const MeshData& mesh() const { return shown_.mesh; }
   // Counts every change to what mesh() gives (a step, reset, a removal), for redrawing.
   std::uint64_t revision() const { return revision_; }
 
@@ -78,11 +95,28 @@ class Simulation {
   int blockAt(const Vec3& origin, const Vec3& direction) const;
 
  private:
+  // What the readers show, taken from the session between steps.
+  struct State {
+    double time = 0;
+    long steps = 0;
+    std::vector<sim::Pose> poses;
+    std::vector<bool> removed;
+    double largest = 0;
+    int fallen = 0;
+    MeshData mesh;
+  };
+  State capture() const;
+  void show(State state);  // the readers' state from now on
+
   MasonrySpec spec_;
-  sim::Session session_;
+  sim::Session session_;  // touched by the worker while batch_ runs, by nobody else
   Clock clock_;
+  bool playing_ = false;
+  State shown_;
   std::uint64_t revision_ = 0;
-  double pending_ = 0;  // wall time not yet turned into steps (under one step)
+  double pending_ = 0;    // wall time not yet turned into steps (under one step)
+  double stepCost_ = 0;   // wall time of the last step timed, s
+  std::future<State> batch_;  // steps on the worker, with the state they end in
 };
 
 // Draws the simulation in `scene` (the viewport's copy of the Scene, never the one that follows

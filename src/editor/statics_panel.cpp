@@ -241,7 +241,7 @@ void StaticsPanel::simulateReset(const StaticsHost& host) {
 void StaticsPanel::simulateShake(const StaticsHost& host) {
   if (Simulation* s = simulationFor(host)) {
     s->shake();
-    const sim::ShakeSpec k = sim::paperShake(s->session().design());
+    const sim::ShakeSpec k = sim::paperShake(s->design());
     char line[128];
     std::snprintf(line, sizeof line, "Shake: the ground moves %.2f m/s along x within %.1f ms at t = %.2f s", k.velocity,
                   1000 * k.duration, s->time());
@@ -270,7 +270,7 @@ bool StaticsPanel::pickBlock(const StaticsHost& host, const Vec3& origin, const 
   if (!sim_) return false;
   const int b = sim_->blockAt(origin, direction);
   if (b < 0) return false;
-  const statics::Block& block = sim_->session().design().blocks[b];
+  const statics::Block& block = sim_->design().blocks[b];
   if (block.fixed) return false;
   removeChoice_ = block.name;
   if (removeOnClick_) simulateRemove(host);
@@ -321,7 +321,7 @@ void StaticsPanel::drawSimulation(const StaticsHost& host) {
   ImGui::Text("t = %.2f s, largest displacement %.1f mm", sim_->time(), 1000 * sim_->largestDisplacement());
   const int fallen = sim_->fallenCount();
   int moving = 0;
-  for (const statics::Block& b : sim_->session().design().blocks) moving += !b.fixed;
+  for (const statics::Block& b : sim_->design().blocks) moving += !b.fixed;
   ImGui::TextColored(fallen ? kBad : kGood, "%d of %d blocks fallen%s", fallen, moving,
                      sim_->playing() ? "" : " (paused)");
 }
