@@ -274,6 +274,7 @@ bool StaticsPanel::pickBlock(const StaticsHost& host, const Vec3& origin, const 
   if (block.fixed) return false;
   removeChoice_ = block.name;
   if (removeOnClick_) simulateRemove(host);
+  else host.log("Chose block \"" + block.name + "\": Remove block takes it out of the simulation", false);
   return true;
 }
 
