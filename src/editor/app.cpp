@@ -432,6 +432,28 @@ void App::registerActions() {
        [this] { return selectedMasonry() && !statics_.searching(); }});
   add({"statics.cancel", "Statics", "Cancel Search", "Stop the running search; nothing changes.", {}, false,
        [this] { statics_.cancelSearch(); }, [this] { return statics_.searching(); }});
+  // The collapse simulation (Sec. 5): never a Document change, so none is undoable.
+  auto masonrySelected = [this] { return selectedMasonry() != nullptr; };
+  add({"statics.sim_play", "Statics", "Simulate: Play / Pause",
+       "Play the selected masonry object's collapse simulation in real time (as fast as the frame budget "
+       "allows); again to pause.",
+       {}, false, [this] { statics_.simulatePlay(staticsHost()); }, masonrySelected,
+       [this] { return statics_.simulationPlaying(); }, true});
+  add({"statics.sim_step", "Statics", "Simulate: Step", "Advance the simulation by one fixed step (1/240 s).", {},
+       false, [this] { statics_.simulateStep(staticsHost()); }, masonrySelected});
+  add({"statics.simulate", "Statics", "Simulate: Run 1 s",
+       "Advance the simulation by one simulated second at once (240 steps; the window waits for it).", {}, false,
+       [this] { statics_.simulateStep(staticsHost(), 240); }, masonrySelected});
+  add({"statics.sim_reset", "Statics", "Simulate: Reset", "Return the simulation to the design state, paused.", {},
+       false, [this] { statics_.simulateReset(staticsHost()); }, masonrySelected});
+  add({"statics.sim_shake", "Statics", "Simulate: Shake",
+       "Shake the ground as in the paper (4 m/s within 1/60 s on a 10 m model, scaled to this one).", {}, false,
+       [this] { statics_.simulateShake(staticsHost()); }, masonrySelected});
+  add({"statics.sim_remove", "Statics", "Simulate: Remove Block",
+       "Take the block chosen in the Simulate section (at first the top one) out of the simulation.", {}, false,
+       [this] { statics_.simulateRemove(staticsHost()); }, masonrySelected});
+  add({"statics.sim_close", "Statics", "Simulate: Close", "Stop simulating and show the design again.", {}, false,
+       [this] { statics_.closeSimulation(); }, [this] { return statics_.simulating(); }});
   auto growthSelected = [this] {
     const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
     return o && std::holds_alternative<GrowthSpec>(o->spec);
@@ -814,18 +836,43 @@ void App::handleViewportInput() {
     const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
     const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
     const auto* spec = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
-    if (spec && std::hypot(drag.x, drag.y) < 3.0f) {
-      const double x = 2.0 * (m.x - vpX_) / vpW_ - 1.0, y = 1.0 - 2.0 * (m.y - vpY_) / vpH_;
-      const glm::dmat4 inv = glm::inverse(camera_.projection(vpW_ / std::max(vpH_, 1.0f)) * camera_.view());
-      glm::dvec4 a = inv * glm::dvec4(x, y, -1.0, 1.0), b = inv * glm::dvec4(x, y, 1.0, 1.0);
-      a /= a.w;
-      b /= b.w;
-      Vec3 dir(b.x - a.x, b.y - a.y, b.z - a.z);
-      dir.normalize();
-      const std::string what = panes_.pick(*spec, Vec3(a.x, a.y, a.z), dir);
+    const bool click = std::hypot(drag.x, drag.y) < 3.0f;
+    if (spec && click) {
+      const auto [origin, dir] = viewRay(m.x, m.y);
+      const std::string what = panes_.pick(*spec, origin, dir);
       if (!what.empty()) log(o->name + ": picked " + what);
     }
+    // A click on a simulated block chooses it for the remove-block tool.
+    if (const DocObject* masonry = selectedMasonry(); masonry && click && statics_.simulating()) {
+      const auto [origin, dir] = viewRay(m.x, m.y);
+      statics_.pickBlock(staticsHost(), origin, dir);
+    }
   }
+}
+
+std::pair<Vec3, Vec3> App::viewRay(float px, float py) const {
+  const double x = 2.0 * (px - vpX_) / vpW_ - 1.0, y = 1.0 - 2.0 * (py - vpY_) / vpH_;
+  const glm::dmat4 inv = glm::inverse(camera_.projection(vpW_ / std::max(vpH_, 1.0f)) * camera_.view());
+  glm::dvec4 a = inv * glm::dvec4(x, y, -1.0, 1.0), b = inv * glm::dvec4(x, y, 1.0, 1.0);
+  a /= a.w;
+  b /= b.w;
+  Vec3 dir(b.x - a.x, b.y - a.y, b.z - a.z);
+  dir.normalize();
+  return {Vec3(a.x, a.y, a.z), dir};
+}
+
+const Scene& App::shownScene() {
+  const DocObject* m = selectedMasonry();
+  const Simulation* sim = m && m->visible ? statics_.shownSimulation(std::get<MasonrySpec>(m->spec)) : nullptr;
+  if (!sim) return scene_;
+  if (simSceneOf_ != scene_.revision() || simRevisionOf_ != sim->revision() || simObjectOf_ != m->id) {
+    simScene_ = scene_;
+    showSimulation(simScene_, m->id, *sim);
+    simSceneOf_ = scene_.revision();
+    simRevisionOf_ = sim->revision();
+    simObjectOf_ = m->id;
+  }
+  return simScene_;
 }
 
 // One line of the edit script: an edit (extrude/edit.h) committed like a user's, its object
@@ -889,6 +936,7 @@ StaticsHost App::staticsHost() {
   host.doc = &history_.current();
   host.object = selected_.value_or(0);
   host.wait = scripted();
+  host.frameSeconds = frameSeconds_;
   host.commit = deferredCommit();
   host.endDrag = deferredEndDrag();
   host.log = [this](const std::string& line, bool error) { log(line, error); };
@@ -938,9 +986,13 @@ int App::run() {
     }
     if (quitRequested_) break;
     // Sleep until input arrives unless something is moving or scripted.
-    if (job_ || live_.building() || growthPanel_.running() || options_.quitAfterFrames > 0 || frame_ < 3)
+    if (job_ || live_.building() || growthPanel_.running() || statics_.simulationPlaying() ||
+        options_.quitAfterFrames > 0 || frame_ < 3)
       glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
+    const auto now = std::chrono::steady_clock::now();
+    frameSeconds_ = frame_ == 0 ? 0.0 : std::chrono::duration<double>(now - lastFrame_).count();
+    lastFrame_ = now;
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -1062,7 +1114,7 @@ int App::run() {
     renderer_->overlayOnTop().clear();
     if (const DocObject* m = selectedMasonry(); m && m->visible)
       statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
-    renderer_->setScene(scene_, settings_);
+    renderer_->setScene(shownScene(), settings_);
     const int px = int(vpX_ * sx), py = int((vp->Size.y - vpY_ - vpH_) * sy), pw = int(vpW_ * sx), ph = int(vpH_ * sy);
     renderer_->draw(camera_, px, py, pw, ph, settings_);
     // KIFS buildings that are not meshed: ray-marched over the Scene, depth-tested against it.

@@ -69,6 +69,8 @@ class App {
   void registerActions();
   void handleShortcuts();
   void handleViewportInput();
+  // The ray under window point (x, y) of the 3D view, as an origin and a unit direction.
+  std::pair<Vec3, Vec3> viewRay(float x, float y) const;
   void drawMenuBar();
   void drawLeftPanel();
   void drawObjectProperties(const DocObject& object);
@@ -140,6 +142,14 @@ class App {
   std::vector<std::function<void()>> deferred_;  // the panels' commits of this frame (deferredCommit)
   StaticsPanel statics_;
   std::optional<ObjectId> staticsFor_;
+  double frameSeconds_ = 0;  // wall time since the last frame began
+  std::chrono::steady_clock::time_point lastFrame_;
+  // What the viewport draws while a simulation is shown: the Scene with the simulated object's
+  // blocks where the simulation has them, remade when either changes.
+  Scene simScene_;
+  std::uint64_t simSceneOf_ = 0, simRevisionOf_ = 0;
+  ObjectId simObjectOf_ = 0;
+  const Scene& shownScene();
   KifsPanel kifsPanel_;
   GrowthPanel growthPanel_;
   std::optional<ObjectId> growthFor_;

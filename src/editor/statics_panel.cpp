@@ -56,6 +56,8 @@ void StaticsPanel::reset() {
   view_.reset();
   landscape_.reset();
   landscapeChoice_.clear();
+  sim_.reset();
+  removeChoice_.clear();
 }
 
 void StaticsPanel::cancelSearch() {
@@ -149,6 +151,16 @@ void StaticsPanel::updateResolve(const StaticsHost& host) {
 }
 
 void StaticsPanel::update(const StaticsHost& host) {
+  if (sim_) {
+    const DocObject* o = objectOf(host);
+    const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+    if (!spec || !(*spec == sim_->spec())) {
+      sim_.reset();
+      host.log("Simulation closed: the model changed", false);
+    } else {
+      sim_->advance(host.frameSeconds);
+    }
+  }
   updateResolve(host);
   if (search_) finishSearch(host);
   if (analysis_) {
@@ -171,7 +183,11 @@ void StaticsPanel::update(const StaticsHost& host) {
   if (!viewStale && !landscapeStale) return;
   if (analysing_ && analysing_->spec == *spec && analysing_->range == range) return;  // done; it failed
   startAnalysis(*spec);
-  if (host.wait) update(host);
+  if (host.wait) {
+    StaticsHost again = host;
+    again.frameSeconds = 0;  // this frame's simulation steps are taken
+    update(again);
+  }
 }
 
 void StaticsPanel::makeItStand(const StaticsHost& host) {
@@ -192,8 +208,128 @@ void StaticsPanel::makeItStand(const StaticsHost& host) {
   if (host.wait) finishSearch(host);
 }
 
+Simulation* StaticsPanel::simulationFor(const StaticsHost& host) {
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec) return nullptr;
+  if (sim_ && sim_->spec() == *spec) return sim_.get();
+  try {
+    sim_ = std::make_unique<Simulation>(*spec);
+  } catch (const std::exception& e) {
+    sim_.reset();
+    host.log("Simulate " + o->name + ": " + e.what(), true);
+  }
+  return sim_.get();
+}
+
+const Simulation* StaticsPanel::shownSimulation(const MasonrySpec& spec) const {
+  return sim_ && sim_->spec() == spec ? sim_.get() : nullptr;
+}
+
+void StaticsPanel::simulatePlay(const StaticsHost& host) {
+  if (Simulation* s = simulationFor(host)) s->togglePlay();
+}
+
+void StaticsPanel::simulateStep(const StaticsHost& host, int steps) {
+  if (Simulation* s = simulationFor(host)) s->step(steps);
+}
+
+void StaticsPanel::simulateReset(const StaticsHost& host) {
+  if (Simulation* s = simulationFor(host)) s->reset();
+}
+
+void StaticsPanel::simulateShake(const StaticsHost& host) {
+  if (Simulation* s = simulationFor(host)) {
+    s->shake();
+    const sim::ShakeSpec k = sim::paperShake(s->design());
+    char line[128];
+    std::snprintf(line, sizeof line, "Shake: the ground moves %.2f m/s along x within %.1f ms at t = %.2f s", k.velocity,
+                  1000 * k.duration, s->time());
+    host.log(line, false);
+  }
+}
+
+void StaticsPanel::simulateRemove(const StaticsHost& host) {
+  Simulation* s = simulationFor(host);
+  if (!s) return;
+  const std::string name = removeChoice_.empty() ? s->topBlock() : removeChoice_;
+  if (name.empty()) {
+    host.log("Remove block: no block left to remove", true);
+    return;
+  }
+  try {
+    s->removeBlock(name);
+    host.log("Removed block \"" + name + "\" from the simulation", false);
+  } catch (const std::exception& e) {
+    host.log(std::string("Remove block: ") + e.what(), true);
+  }
+  removeChoice_.clear();
+}
+
+bool StaticsPanel::pickBlock(const StaticsHost& host, const Vec3& origin, const Vec3& direction) {
+  if (!sim_) return false;
+  const int b = sim_->blockAt(origin, direction);
+  if (b < 0) return false;
+  const statics::Block& block = sim_->design().blocks[b];
+  if (block.fixed) return false;
+  removeChoice_ = block.name;
+  if (removeOnClick_) simulateRemove(host);
+  else host.log("Chose block \"" + block.name + "\": Remove block takes it out of the simulation", false);
+  return true;
+}
+
+void StaticsPanel::drawSimulation(const StaticsHost& host) {
+  ImGui::Separator();
+  ImGui::TextDisabled("Simulate (Sec. 5, Fig. 14)");
+  if (ImGui::Button(sim_ && sim_->playing() ? "Pause" : "Play")) simulatePlay(host);
+  ImGui::SameLine();
+  if (ImGui::Button("Step")) simulateStep(host);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("One fixed step (1/240 s)");
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) simulateReset(host);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the design state, paused");
+  ImGui::SameLine();
+  if (ImGui::Button("Shake")) simulateShake(host);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The paper's ground shake: 4 m/s within 1/60 s on a 10 m model, scaled to this one");
+  if (sim_) {
+    ImGui::SameLine();
+    if (ImGui::Button("Close")) {
+      sim_.reset();
+      return;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the design again");
+  }
+  // The remove-block tool: a block chosen from the list or by a click in the 3D view.
+  const std::vector<std::string> names = sim_ ? sim_->removableBlocks() : std::vector<std::string>{};
+  const std::string shown = removeChoice_.empty() ? (sim_ ? sim_->topBlock() : std::string("(top block)")) : removeChoice_;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  if (ImGui::BeginCombo("##block", shown.c_str())) {
+    for (const std::string& n : names)
+      if (ImGui::Selectable(n.c_str(), n == shown)) removeChoice_ = n;
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Remove block")) simulateRemove(host);
+  ImGui::SameLine();
+  ImGui::Checkbox("on click", &removeOnClick_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A click on a block in the 3D view chooses it; with this on, removes it at once");
+  if (!sim_) {
+    ImGui::TextDisabled("The design as built; the Document never changes.");
+    return;
+  }
+  ImGui::Text("t = %.2f s, largest displacement %.1f mm", sim_->time(), 1000 * sim_->largestDisplacement());
+  const int fallen = sim_->fallenCount();
+  int moving = 0;
+  for (const statics::Block& b : sim_->design().blocks) moving += !b.fixed;
+  ImGui::TextColored(fallen ? kBad : kGood, "%d of %d blocks fallen%s", fallen, moving,
+                     sim_->playing() ? "" : " (paused)");
+}
+
 void StaticsPanel::drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const {
   if (!view_ || !(view_->spec == spec) || !view_->error.empty()) return;
+  if (shownSimulation(spec)) return;  // the analysis is of the design, not of the moving blocks
   if (colours_)
     for (std::size_t b = 0; b < view_->blockFaces.size(); ++b) {
       if (view_->fixed[b]) continue;
@@ -407,6 +543,7 @@ void StaticsPanel::draw(const StaticsHost& host, float x, float y, float w, floa
   drawParameters(host, *spec);
   drawAnalysis(*spec);
   drawSearch(host);
+  drawSimulation(host);
   drawLandscape(*spec);
   ImGui::End();
 }

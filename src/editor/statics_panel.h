@@ -3,13 +3,16 @@
 // the model's parameters, which are free for the search and within what bounds, the analysis
 // (y, y/W², status, iterations, tension sites), "Make it stand" (Sec. 4) with progress and
 // Cancel, keeping it standing while a fixed parameter is dragged (Fig. 13), and the energy
-// landscape over one parameter (Fig. 8). The analysis, the landscape
+// landscape over one parameter (Fig. 8), and the collapse simulation (Sec. 5, Fig. 14: Play,
+// Step, Reset, a shake, removing a block; editor/simulation.h), drawn in place of the design
+// while it is shown and never written to the Document. The analysis, the landscape
 // and the search run on worker threads (core/progress.h); the panel only reads their results
 // and commits Document changes (editor/masonry_edits.h), so every edit is undoable. The
 // viewport shows blocks coloured by their share of tension and the interface forces.
 #include "core/document.h"
 #include "core/progress.h"
 #include "editor/masonry_view.h"
+#include "editor/simulation.h"
 #include "render/overlay.h"
 #include "statics/search.h"
 
@@ -24,6 +27,7 @@ struct StaticsHost {
   const Document* doc = nullptr;
   ObjectId object = 0;
   bool wait = false;  // scripted runs: wait for the workers so every frame shows the current state
+  double frameSeconds = 0;  // wall time since the last frame (the simulation plays by it)
   std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
   std::function<void()> endDrag;
   std::function<void(const std::string&, bool)> log;
@@ -49,6 +53,23 @@ class StaticsPanel {
   bool searching() const { return search_ != nullptr; }
   void reset();  // another object was selected
 
+  // The Simulate section. Each makes the simulation of the host's object first if there is
+  // none (an error goes to the log). update() plays it within kSimFrameBudget per frame and
+  // closes it when the object's spec changes.
+  void simulatePlay(const StaticsHost& host);  // Play / Pause
+  void simulateStep(const StaticsHost& host, int steps = 1);
+  void simulateReset(const StaticsHost& host);
+  void simulateShake(const StaticsHost& host);
+  void simulateRemove(const StaticsHost& host);  // the block chosen in the list (the top one at first)
+  void closeSimulation() { sim_.reset(); }
+  bool simulating() const { return sim_ != nullptr; }
+  bool simulationPlaying() const { return sim_ && sim_->playing(); }
+  // The simulation to draw in place of the object's design, when there is one of `spec`.
+  const Simulation* shownSimulation(const MasonrySpec& spec) const;
+  // A click in the 3D view at a ray: chooses the simulated block it hits for removal, or
+  // removes it at once with "remove on click". Returns whether a block was hit.
+  bool pickBlock(const StaticsHost& host, const Vec3& origin, const Vec3& direction);
+
  private:
   void startAnalysis(const MasonrySpec& spec);
   void finishSearch(const StaticsHost& host);
@@ -58,6 +79,8 @@ class StaticsPanel {
   void drawAnalysis(const MasonrySpec& spec);
   void drawSearch(const StaticsHost& host);
   void drawLandscape(const MasonrySpec& spec);
+  void drawSimulation(const StaticsHost& host);
+  Simulation* simulationFor(const StaticsHost& host);  // made on first use; null when it cannot be
   // The landscape's parameter and range for a spec: the chosen one, else the first free one.
   std::optional<std::pair<std::string, std::pair<double, double>>> landscapeFor(const MasonrySpec& spec) const;
 
@@ -86,6 +109,10 @@ class StaticsPanel {
   MasonrySpec resolveStart_;
   std::string resolveParameter_;
   std::shared_ptr<statics::SearchResult> resolveResult_;
+
+  std::unique_ptr<Simulation> sim_;
+  std::string removeChoice_;  // the block the remove tool takes ("" = the top one)
+  bool removeOnClick_ = false;
 
   bool colours_ = true, arrows_ = true;
 };

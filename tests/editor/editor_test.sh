@@ -9,7 +9,9 @@
 #     pane (the shot differs from the same plan without it) and stays one closed shell; a
 #     missing image is reported in the log and the editor carries on;
 #  5. the masonry arch opens with its statics panel, and Make It Stand (a scripted action)
-#     changes it into an arch that the CLI's analysis calls standing;
+#     changes it into an arch that the CLI's analysis calls standing; simulated for a second
+#     without its keystone (scripted actions), the arch in the 3D view is no longer the design,
+#     and the Document is unchanged (nothing to recover);
 #  6. a KIFS building is ray-marched in the 3D view: with its panel open, the shot differs from
 #     the same project with the building hidden;
 #  7. two growth.step actions on the Alpha site grown 10 steps save it grown 12, and the saved
@@ -81,6 +83,16 @@ test -f "$work/state/recovery.corbel" || { echo "Make It Stand changed nothing (
 stood=$("$cli" statics "$work/state/recovery.corbel" --json)
 echo "after Make It Stand: $stood"
 grep -q '"stands":true' <<<"$stood" || { echo "the arch should stand after Make It Stand"; exit 1; }
+echo "== the collapse simulation: the arch without its keystone, a second on"
+rm -rf "$work/state"
+run --recover no --select "Arch on columns" --actions statics.sim_remove --autosave-seconds 0 \
+  --screenshot "$work/collapse-0s.png" --quit-after-frames 8 "$masonry"
+run --recover no --select "Arch on columns" --actions statics.sim_remove,statics.simulate --autosave-seconds 0 \
+  --screenshot "$work/collapse-1s.png" --quit-after-frames 8 "$masonry"
+test ! -e "$work/state/recovery.corbel" || { echo "a simulation must not change the Document (it was autosaved)"; exit 1; }
+# Only the 3D view counts (the statics panel's numbers change too): the falling voussoirs and the
+# gap they leave differ from the arch as built.
+"$check" "$work/collapse-1s.png" "$work/collapse-0s.png" 0.01 460
 echo "== a KIFS building, ray-marched in the 3D view"
 kifs=$(dirname "$example")/kifs-h.corbel
 sed '0,/"visible": true/s//"visible": false/' "$kifs" > "$work/kifs-hidden.corbel"

@@ -1,6 +1,7 @@
 // Compares an editor screenshot of a project with one of an empty project (same window size
 // and layout): the 3D viewport must show the model — enough of its pixels differ from the
-// empty scene — and the screenshot must not be blank.
+// empty scene — and the screenshot must not be blank. An optional RIGHT_PANE width leaves a
+// panel right of the viewport out of the comparison, so only the 3D view counts.
 #include "render/image.h"
 
 #include <cmath>
@@ -9,14 +10,15 @@
 #include <exception>
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: corbel_screenshot_check MODEL.png EMPTY.png MIN_FRACTION\n");
+  if (argc != 4 && argc != 5) {
+    std::fprintf(stderr, "usage: corbel_screenshot_check MODEL.png EMPTY.png MIN_FRACTION [RIGHT_PANE]\n");
     return 2;
   }
   try {
     const auto model = corbel::render::readPng(argv[1]);
     const auto empty = corbel::render::readPng(argv[2]);
     const double minFraction = std::atof(argv[3]);
+    const int rightPane = argc == 5 ? std::atoi(argv[4]) : 0;
     if (model.width != empty.width || model.height != empty.height) {
       std::fprintf(stderr, "screenshots differ in size\n");
       return 1;
@@ -32,8 +34,9 @@ int main(int argc, char** argv) {
         sum2 += l * l;
       }
     const double stddev = std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
-    // The viewport: right of the 320-pixel panel, between the menu bar and the status bar.
-    const int x0 = 330, y0 = 30, x1 = model.width - 10, y1 = model.height - 130;
+    // The viewport: right of the 320-pixel panel (and left of a right pane), between the menu bar
+    // and the status bar.
+    const int x0 = 330, y0 = 30, x1 = model.width - 10 - rightPane, y1 = model.height - 130;
     std::size_t changed = 0, total = 0;
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x, ++total) {
