@@ -73,7 +73,9 @@ void BlockLdlt::analyze(int n, const std::vector<std::pair<int, int>>& pairs) {
   }
   updStart_[std::size_t(n)] = int(updTarget_.size());
   values_.assign(rows_.size(), Block::Zero());
-  dfac_.assign(std::size_t(n), Eigen::LDLT<Block>());
+  // Copies of a factorised LDLT: Eigen 3.4 leaves a default-constructed one's status
+  // uninitialised, and copying that is undefined behaviour (UBSan reports it).
+  dfac_.assign(std::size_t(n), Eigen::LDLT<Block>(Block::Identity()));
 }
 
 BlockLdlt::Slot BlockLdlt::slot(int i, int j) const {
