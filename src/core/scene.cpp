@@ -3,6 +3,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <atomic>
+#include <mutex>
 #include <cmath>
 #include <numeric>
 
@@ -50,7 +51,10 @@ void Scene::touch() {
 Scene::Scene() {
   touch();
   // Kernels never print: OpenMesh reports refused faces on omerr, we count them instead.
-  omerr().disable();
+  // omerr() is one global stream whose disable() edits a target list without a lock, so
+  // Scenes built at once on several threads (the batch extruder) must disable it only once.
+  static std::once_flag quiet;
+  std::call_once(quiet, [] { omerr().disable(); });
   bindProperties();
 }
 

@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <set>
+#include <thread>
 #include <tuple>
 
 namespace {
@@ -441,6 +443,26 @@ TEST(MeshData, SplitPinchedVerticesGivesEachFanItsOwnVertex) {
   EXPECT_EQ(r.components, 2u);
   EXPECT_NEAR(r.volume, 2.0, 1e-12);
   EXPECT_EQ(corbel::splitPinchedVertices(m), 0u) << "nothing left to split";
+}
+
+// The batch extruder builds a Scene per job on every worker thread at once. The first Scene
+// quietens OpenMesh's one global error stream, whose set-up is not thread-safe; this test runs
+// in its own process (one test per ctest entry), so the threads here make the first Scenes.
+TEST(Scene, ScenesMayBeBuiltOnManyThreadsAtOnce) {
+  constexpr int kThreads = 16;
+  std::atomic<int> ready{0};
+  std::vector<double> volumes(kThreads, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      ++ready;
+      while (ready.load() < kThreads) std::this_thread::yield();
+      Scene s;
+      s.replaceObject(1, Kind::Mass, "cube", handBox(Vec3(0, 0, 0), Vec3(1, 1, t + 1.0)));
+      volumes[t] = s.validate(1).volume;
+    });
+  for (auto& th : threads) th.join();
+  for (int t = 0; t < kThreads; ++t) EXPECT_DOUBLE_EQ(volumes[t], t + 1.0);
 }
 
 }  // namespace
