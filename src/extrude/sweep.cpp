@@ -116,6 +116,7 @@ class Sweeper {
  private:
   // Geometry.
   Vec2 cornerAt(int c, double z) const;
+  Vec2 liveAt(int c, double z) const;  // at z, or where it was made if that is above z
   Vec2 nearestOnPath(int c, const Vec2& p, double z) const;
   void setCornerMotion(int c, const Vec2& at, double z);
   void setEdgePlane(Edge& e, const Vec2& d, const Vec2& pointOnLine, double z, double angle);
@@ -180,6 +181,13 @@ class Sweeper {
   Vec2 lastEventPoint_{std::numeric_limits<double>::infinity(), 0.0};
   double lastEventZ_ = 0;
   int repeats_ = 0;
+  // The edges of the last two events, sorted: two chains that swap back and forth between
+  // the same four edges (a plan that overlaps itself along a line) repeat them alternately.
+  std::vector<int> lastInvolved_[2];
+  double lastInvolvedZ_[2] = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  int swaps_ = 0;
+  double burstZ_ = -std::numeric_limits<double>::infinity();  // where the current burst of events began
+  std::size_t burst_ = 0;                                     // events since then
   double recentZ_ = std::numeric_limits<double>::quiet_NaN();
   std::size_t overlaps_ = 0;  // events after which the plan overlapped itself
   Vec3 firstOverlap_;
@@ -204,6 +212,8 @@ Vec2 Sweeper::cornerAt(int ci, double z) const {
   return Vec2((ra * b.n[1] - rb * a.n[1]) / det, (a.n[0] * rb - b.n[0] * ra) / det);
 }
 
+Vec2 Sweeper::liveAt(int ci, double z) const { return cornerAt(ci, std::max(z, corners_[ci].z0)); }
+
 // Events within δ1 of height are one event (Sec. 4.4), so a corner arrives at p if its path
 // passes within δ2 of p somewhere within δ1 of z. For most corners this is where it is at z;
 // a corner racing along a near-flat ridge (between almost antiparallel edges) moves thousands
@@ -212,6 +222,11 @@ Vec2 Sweeper::cornerAt(int ci, double z) const {
 constexpr double kRaceReach = 100;
 
 Vec2 Sweeper::nearestOnPath(int ci, const Vec2& p, double z) const {
+  // A corner does not exist below the height it was made at: events clustered within δ1 may
+  // come a little below an event already handled, and a racing corner made there, taken back
+  // along its path, would sweep the whole ridge it is about to zip in no height at all.
+  const double z0 = corners_[ci].z0;
+  z = std::max(z, z0);
   const Vec2 at = cornerAt(ci, z);
   const Vec2& v = corners_[ci].v;
   const double vv = OpenMesh::dot(v, v);
@@ -221,7 +236,7 @@ Vec2 Sweeper::nearestOnPath(int ci, const Vec2& p, double z) const {
   // ... but never further along its path than kRaceReach δ2, so a corner racing at 1e8 m/m
   // cannot skip past the ends of its own edges into an unrelated event on its line.
   const double window = std::min(tol_.height, kRaceReach * tol_.cluster / std::sqrt(vv));
-  const double t = std::clamp(OpenMesh::dot(v, p - at) / vv, -window, window);
+  const double t = std::clamp(OpenMesh::dot(v, p - at) / vv, std::max(-window, z0 - z), window);
   return at + v * t;
 }
 
@@ -236,7 +251,16 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
     c.parallel = false;
     c.v = Vec2((a.k * b.n[1] - b.k * a.n[1]) / det, (a.n[0] * b.k - b.n[0] * a.k) / det);
     c.speed = c.v.norm();
-    c.base = cornerAt(ci, z);
+    if (c.speed * tol_.height > tol_.cluster) {
+      // A racing corner (see nearestOnPath): its lines meet so obliquely that the rounding of
+      // the event's height (1e-9 relative) moves their meeting point by decimetres along the
+      // ridge. It is made where its lines pass through the event point, which may be a little
+      // above the event; below that it does not exist yet (liveAt), and cannot reach back
+      // along its ridge into events below.
+      const double later = OpenMesh::dot(c.v, at - cornerAt(ci, z)) / (c.speed * c.speed);
+      if (later > 0 && later <= tol_.height) c.z0 = z + later;
+    }
+    c.base = cornerAt(ci, c.z0);
     return;
   }
   // Parallel neighbours: colinear edges of one plane move the corner with them; an
@@ -564,7 +588,7 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     const Edge& e = edges_[ei];
     if (!e.alive || isInvolved[ei]) continue;
     if (std::abs(OpenMesh::dot(e.n, l) - (e.c + e.k * z)) > tol_.cluster) continue;
-    const Vec2 s = cornerAt(e.start, z), t = cornerAt(e.end, z);
+    const Vec2 s = liveAt(e.start, z), t = liveAt(e.end, z);
     const double along = OpenMesh::dot(e.d, l - s), length = OpenMesh::dot(e.d, t - s);
     if (along < -tol_.edgeMargin || along > length + tol_.edgeMargin) continue;
     involve(ei);
@@ -608,6 +632,40 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     repeats_ = 0;
     lastEventPoint_ = l;
     lastEventZ_ = z;
+  }
+  {
+    // However degenerate, a plan of n edges has no more than a few n events at one height
+    // (each ends an edge or splits one, and splits are used up by the ends they cause). Far
+    // more within a sliver of height means the events feed themselves: stop with a reason.
+    if (z - burstZ_ > 1e3 * tol_.cluster) {
+      burstZ_ = z;
+      burst_ = 0;
+    }
+    if (++burst_ > 4 * inputs_.size() + 64) {
+      std::ostringstream m;
+      m << "degenerate event cascade at (" << l[0] << ", " << l[1] << ", " << z << "): " << burst_
+        << " events without rising, from a plan of " << inputs_.size() << " edges (an earlier configuration was degenerate)";
+      throw Error(m.str());
+    }
+  }
+  {
+    // Relinking the same edges again and again, each time a sliver higher, never ends the
+    // sweep (it would crawl up at 1e-7 m per event): stop with a reason after 64 rounds.
+    std::vector<int> sig = involved;
+    std::sort(sig.begin(), sig.end());
+    bool again = false;
+    for (int k = 0; k < 2; ++k) again = again || (sig == lastInvolved_[k] && z - lastInvolvedZ_[k] <= 1e3 * tol_.cluster);
+    swaps_ = again ? swaps_ + 1 : 0;
+    if (swaps_ > 64) {
+      std::ostringstream m;
+      m << "degenerate event cycle at (" << l[0] << ", " << l[1] << ", " << z << "): the same " << sig.size()
+        << " edges are relinked back and forth (the active plan overlaps itself along a line there)";
+      throw Error(m.str());
+    }
+    lastInvolved_[1] = std::move(lastInvolved_[0]);
+    lastInvolvedZ_[1] = lastInvolvedZ_[0];
+    lastInvolved_[0] = std::move(sig);
+    lastInvolvedZ_[0] = z;
   }
   ++events_;
   const int vl = addVertex(l, z);
