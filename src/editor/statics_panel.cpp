@@ -64,6 +64,27 @@ void StaticsPanel::reset() {
   removeChoice_.clear();
 }
 
+void StaticsPanel::toggleLandscapeGrid(const StaticsHost& host) {
+  if (!landscapeChoice2_.empty()) {
+    landscapeChoice2_.clear();
+    return;
+  }
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec) return;
+  std::vector<std::string> names;
+  for (const MasonryFree& f : spec->free) names.push_back(f.name);
+  if (view_)
+    for (const statics::FreeParameter& f : view_->suggestedFree)
+      if (std::find(names.begin(), names.end(), f.name) == names.end()) names.push_back(f.name);
+  if (names.size() < 2) {
+    host.log("Energy landscape: the model has fewer than two parameters to free", true);
+    return;
+  }
+  landscapeChoice_ = names[0];
+  landscapeChoice2_ = names[1];
+}
+
 void StaticsPanel::cancelSearch() {
   if (search_) search_->progress().cancel();
 }
@@ -489,7 +510,9 @@ void StaticsPanel::drawAnalysis(const MasonrySpec& spec) {
   ImGui::Dummy(ImVec2(w, h));
   ImGui::SameLine();
   ImGui::TextDisabled("share of tension, 0 to 1");
+  ImGui::PushTextWrapPos(0);
   ImGui::TextDisabled("arrows: interface forces in compression (red), tension (blue), ground reactions (green)");
+  ImGui::PopTextWrapPos();
 }
 
 void StaticsPanel::drawSearch(const StaticsHost& host) {
@@ -580,15 +603,20 @@ void StaticsPanel::drawLandscape(const MasonrySpec& spec) {
   if (!view_) return;
   const auto range = landscapeFor(spec);
   const auto range2 = landscape2For(spec);
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.35f);
-  if (ImGui::BeginCombo("over", range ? range->first.c_str() : "(choose)")) {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("over");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
+  if (ImGui::BeginCombo("##over", range ? range->first.c_str() : "(choose)")) {
     for (const statics::Parameter& p : view_->parameters)
       if (p.continuous && ImGui::Selectable(p.name.c_str(), range && range->first == p.name)) landscapeChoice_ = p.name;
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-  if (ImGui::BeginCombo("and", range2 ? range2->first.c_str() : "(none)")) {
+  ImGui::TextUnformatted("and");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##and", range2 ? range2->first.c_str() : "(none)")) {
     if (ImGui::Selectable("(none)", !range2)) landscapeChoice2_.clear();
     for (const statics::Parameter& p : view_->parameters)
       if (p.continuous && (!range || p.name != range->first) &&

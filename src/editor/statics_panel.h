@@ -51,6 +51,10 @@ class StaticsPanel {
   // "Make it stand" for the host's object; ignored while a search runs.
   void makeItStand(const StaticsHost& host);
   void cancelSearch();
+  // The landscape over two parameters: the spec's first two free ones (the model's suggested
+  // ones when fewer are free), or back to one parameter when two are chosen.
+  void toggleLandscapeGrid(const StaticsHost& host);
+  bool landscapeGridChosen() const { return !landscapeChoice2_.empty(); }
   bool searching() const { return search_ != nullptr; }
   void reset();  // another object was selected
 
