@@ -306,7 +306,9 @@ TEST(SampleLandscapeGrid, EachSampleIsTheAnalysisAtItsGridPoint) {
 // the columns wide enough, rising towards narrow columns, and a ridge along the column-width
 // axis: however wide the columns (ground, in effect), the arch thinner than its own limit
 // needs tension. So the least y lies in the thick-arch, wide-column part of the grid, the
-// thinnest arch never stands, and for a standing arch widening its columns keeps it standing.
+// thinnest arch never stands, a standing arch keeps standing on wider columns or made thicker,
+// and on columns wide enough the arch's own limit (between t = 0.05 and 0.1 for 8 voussoirs)
+// no longer moves with their width: the ridge.
 TEST(SampleLandscapeGrid, TheArchOnColumnsStandsWhereFigureEightSays) {
   const MasonrySpec spec = exampleArch();
   const LandscapeAxis x{"thickness", 0.05, 0.5, 10}, y{"columnWidth", 0.1, 1.5, 8};
@@ -321,22 +323,31 @@ TEST(SampleLandscapeGrid, TheArchOnColumnsStandsWhereFigureEightSays) {
       if (g.standsAt(i, j) && j + 1 < y.samples) {
         EXPECT_TRUE(g.standsAt(i, j + 1)) << i << ", " << j;
       }
+      if (g.standsAt(i, j) && i + 1 < x.samples) {
+        EXPECT_TRUE(g.standsAt(i + 1, j)) << i << ", " << j;
+      }
     }
   }
+  for (int j = 0; j < y.samples; ++j)
+    if (y.valueAt(j) >= 0.7) {
+      EXPECT_TRUE(g.standsAt(1, j)) << "t = 0.1 on columns " << y.valueAt(j) << " wide";
+    }
   EXPECT_GT(standing, 0);
   EXPECT_TRUE(g.standsAt(x.samples - 1, y.samples - 1));  // thick arch, wide columns
-  EXPECT_FALSE(g.standsAt(x.samples - 1, 0));              // the thick arch pushes narrow columns over
+  EXPECT_FALSE(g.standsAt(x.samples - 1, 0));              // no arch stands on the narrowest columns
   const auto [mi, mj] = g.minimum();
   EXPECT_TRUE(g.standsAt(mi, mj));
-  // The worst corner is the narrow columns.
+  // The worst is the thinnest arch on the narrowest columns.
   double worst = 0;
-  int worstJ = -1;
+  int worstI = -1, worstJ = -1;
   for (int j = 0; j < y.samples; ++j)
     for (int i = 0; i < x.samples; ++i)
       if (g.at(i, j) > worst) {
         worst = g.at(i, j);
+        worstI = i;
         worstJ = j;
       }
+  EXPECT_EQ(worstI, 0);
   EXPECT_EQ(worstJ, 0);
 }
 
