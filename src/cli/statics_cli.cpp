@@ -194,9 +194,12 @@ editor::LandscapeAxis axisOf(const std::string& text, const statics::ParameterSe
 }
 
 // The pictures of the model at `values` (after the search when there was one), into `out`.
+// `path`: the search's evaluations (values of `free`, in order), drawn over the landscape when
+// the search moved exactly its two parameters.
 void drawPictures(const Pictures& pictures, const MasonrySpec& base, const statics::ParametricModel& model,
                   const statics::ParameterSet& values, const std::vector<statics::FreeParameter>& free,
-                  const statics::AnalysisOptions& options, nlohmann::ordered_json& out) {
+                  const statics::AnalysisOptions& options, nlohmann::ordered_json& out,
+                  const std::vector<std::vector<double>>& path = {}) {
   MasonrySpec spec = base;
   spec.parameters.clear();
   for (const statics::Parameter& p : values.all()) spec.parameters.push_back({p.name, p.value});
@@ -215,8 +218,15 @@ void drawPictures(const Pictures& pictures, const MasonrySpec& base, const stati
     statics::ParametricModel at = model;
     at.parameters = values;
     const editor::LandscapeGrid grid = editor::sampleLandscapeGrid(at, options, x, y);
+    std::vector<std::pair<double, double>> drawn;
+    if (free.size() == 2 && !path.empty()) {
+      const int ix = free[0].name == x.parameter ? 0 : free[1].name == x.parameter ? 1 : -1;
+      const int iy = free[0].name == y.parameter ? 0 : free[1].name == y.parameter ? 1 : -1;
+      if (ix >= 0 && iy >= 0 && ix != iy)
+        for (const std::vector<double>& p : path) drawn.emplace_back(p[ix], p[iy]);
+    }
     const int side = std::max(x.samples, y.samples);
-    render::writePng(landscapeImage(grid, std::max(1, 480 / side)), pictures.landscape[2]);
+    render::writePng(landscapeImage(grid, std::max(1, 480 / side), drawn), pictures.landscape[2]);
     nlohmann::ordered_json l;
     l["png"] = pictures.landscape[2];
     l["x"] = {{"parameter", x.parameter}, {"lo", x.lo}, {"hi", x.hi}, {"samples", x.samples}};
@@ -231,6 +241,11 @@ void drawPictures(const Pictures& pictures, const MasonrySpec& base, const stati
     for (double m : grid.measure)
       if (std::isfinite(m)) largest = std::max(largest, m);
     l["largest_measure"] = largest;
+    if (!drawn.empty()) {
+      nlohmann::ordered_json p = nlohmann::json::array();
+      for (const auto& [px, py] : drawn) p.push_back({px, py});
+      l["path"] = p;
+    }
     out["landscape"] = l;
   }
 }
@@ -282,6 +297,12 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
     if (!a.frees.empty()) free.clear();
     for (const std::string& f : a.frees) free.push_back(statics::parseFreeParameter(f));
     if (free.empty()) free = model.suggestedFree;
+    std::vector<std::vector<double>> path;  // the evaluations, for the landscape (Fig. 8's path)
+    if (!pictures.landscape.empty())
+      options.progress = [&path](const statics::SearchProgress& p) {
+        path.push_back(p.values);
+        return true;
+      };
     const statics::SearchResult r = statics::searchParameters(model, free, options, &values);
     out["measure"] = r.measure;
     out["initial_measure"] = r.initialMeasure;
@@ -296,7 +317,7 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
     for (const statics::FreeParameter& f : free) params[f.name] = r.values[f.name];
     out["parameters"] = params;
     if (r.status == statics::SearchStatus::Failed && !json) std::cerr << "corbel-cli: " << r.message << "\n";
-    drawPictures(pictures, base, model, r.values.all().empty() ? values : r.values, free, options.analysis, out);
+    drawPictures(pictures, base, model, r.values.all().empty() ? values : r.values, free, options.analysis, out, path);
   }
   if (json) {
     std::cout << out.dump() << "\n";

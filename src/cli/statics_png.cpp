@@ -48,7 +48,23 @@ render::Image renderMasonryView(const editor::MasonryView& view, int width, int 
   return render::renderImage(renderer, scene, camera, width, height, settings);
 }
 
-render::Image landscapeImage(const editor::LandscapeGrid& grid, int cell) {
+namespace {
+
+void disc(render::Image& image, double cx, double cy, double radius, std::uint8_t shade) {
+  for (int y = int(std::floor(cy - radius)); y <= int(std::ceil(cy + radius)); ++y)
+    for (int x = int(std::floor(cx - radius)); x <= int(std::ceil(cx + radius)); ++x) {
+      if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+      if ((x + 0.5 - cx) * (x + 0.5 - cx) + (y + 0.5 - cy) * (y + 0.5 - cy) > radius * radius) continue;
+      std::uint8_t* px = image.at(x, y);
+      px[0] = px[1] = px[2] = shade;
+      px[3] = 255;
+    }
+}
+
+}  // namespace
+
+render::Image landscapeImage(const editor::LandscapeGrid& grid, int cell,
+                             const std::vector<std::pair<double, double>>& path) {
   cell = std::max(cell, 1);
   const std::vector<std::array<float, 4>> colours = editor::landscapeColors(grid);
   render::Image image(grid.x.samples * cell, grid.y.samples * cell);
@@ -61,6 +77,31 @@ render::Image landscapeImage(const editor::LandscapeGrid& grid, int cell) {
           std::uint8_t* px = image.at(x, y);
           for (int k = 0; k < 4; ++k) px[k] = static_cast<std::uint8_t>(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255));
         }
+    }
+  // A parameter value to the pixel of its place: sample centres at cell centres.
+  const auto place = [&](const editor::LandscapeAxis& a, double v) {
+    return a.hi > a.lo ? (v - a.lo) / (a.hi - a.lo) * (a.samples - 1) : 0.0;
+  };
+  const auto pixel = [&](const std::pair<double, double>& p) {
+    return std::make_pair((place(grid.x, p.first) + 0.5) * cell,
+                          (grid.y.samples - 1 - place(grid.y, p.second) + 0.5) * cell);
+  };
+  const double r = std::max(2.0, cell * 0.3);
+  for (int pass = 0; pass < 2; ++pass)  // black rings, then white lines and dots over them
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      const auto [x1, y1] = pixel(path[k]);
+      const double radius = (k + 1 == path.size() ? 1.6 : 1.0) * r;
+      if (pass == 0) {
+        disc(image, x1, y1, radius + 1.5, 0);
+        continue;
+      }
+      if (k > 0) {
+        const auto [x0, y0] = pixel(path[k - 1]);
+        const int steps = int(std::ceil(std::hypot(x1 - x0, y1 - y0))) + 1;
+        for (int s = 0; s <= steps; ++s)
+          disc(image, x0 + (x1 - x0) * s / steps, y0 + (y1 - y0) * s / steps, 1.0, 255);
+      }
+      disc(image, x1, y1, radius, 255);
     }
   return image;
 }

@@ -7,6 +7,9 @@
 #include "editor/masonry_view.h"
 #include "render/image.h"
 
+#include <utility>
+#include <vector>
+
 namespace corbel::cli {
 
 // The view's blocks (the Scene of view.spec, as SceneSync builds it) with the view's picture,
@@ -16,7 +19,10 @@ namespace corbel::cli {
 render::Image renderMasonryView(const editor::MasonryView& view, int width, int height);
 
 // The grid's colours (editor::landscapeColors) as an image, `cell` pixels a sample, the first
-// parameter left to right and the second bottom to top (as a plot's axes).
-render::Image landscapeImage(const editor::LandscapeGrid& grid, int cell);
+// parameter left to right and the second bottom to top (as a plot's axes). `path` (values of
+// the two parameters, in order: a search's evaluations, Fig. 8's optimisation path) is drawn
+// over it in white, each point a dot ringed in black, the last one larger.
+render::Image landscapeImage(const editor::LandscapeGrid& grid, int cell,
+                             const std::vector<std::pair<double, double>>& path = {});
 
 }  // namespace corbel::cli

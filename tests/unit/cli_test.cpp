@@ -381,6 +381,25 @@ TEST(Cli, StaticsLandscapeMarksWhereTheArchStands) {
   }
 }
 
+// With --optimize the search's path over the landscape (Fig. 8): from the project's values to
+// the result, drawn in white.
+TEST(Cli, StaticsLandscapeDrawsTheSearchPath) {
+  TempDir dir;
+  const std::string png = dir.file("path.png");
+  const CliRun r = cli(dir, "statics " + quote(kMasonryArch) + " --optimize --landscape thickness columnWidth " +
+                                quote(png) + " --samples 9 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& path = j["landscape"]["path"];
+  ASSERT_GE(path.size(), 2u) << r.out;
+  EXPECT_EQ(path[0][0].get<double>(), 0.12);  // thickness as saved
+  EXPECT_EQ(path[0][1].get<double>(), 0.3);   // columnWidth as saved
+  EXPECT_NEAR(path.back()[0].get<double>(), j["parameters"]["thickness"].get<double>(), 1e-12);
+  EXPECT_NEAR(path.back()[1].get<double>(), j["parameters"]["columnWidth"].get<double>(), 1e-12);
+  const corbel::render::Image image = corbel::render::readPng(png);
+  EXPECT_GT(pixels(image, [](int r, int g, int b) { return r == 255 && g == 255 && b == 255; }).count, 20u);
+}
+
 TEST(Cli, StaticsPicturesRefuseBadArgumentsAndWriteNothing) {
   TempDir dir;
   const std::string arch = quote(kMasonryArch), png = quote(dir.file("a.png"));
