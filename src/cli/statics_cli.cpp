@@ -6,12 +6,12 @@
 #include "cli/number_list.h"
 #include "cli/statics_png.h"
 #include "core/error.h"
+#include "core/project_io.h"
 #include "editor/masonry_edits.h"
 #include "editor/masonry_view.h"
 #include "render/headless_context.h"
 #include "statics/analysis.h"
 #include "statics/arch.h"
-#include "core/project_io.h"
 #include "statics/examples.h"
 #include "statics/kernel.h"
 #include "statics/search.h"
@@ -188,7 +188,8 @@ editor::LandscapeAxis axisOf(const std::string& text, const statics::ParameterSe
   const statics::Parameter& p = values.find(text);  // throws naming the known parameters
   if (!p.continuous) throw Error("--landscape: " + text + " is a count, not a continuous parameter");
   axis.parameter = text;
-  const auto it = std::find_if(free.begin(), free.end(), [&](const statics::FreeParameter& f) { return f.name == text; });
+  const auto it =
+      std::find_if(free.begin(), free.end(), [&](const statics::FreeParameter& f) { return f.name == text; });
   std::tie(axis.lo, axis.hi) = it != free.end() ? std::make_pair(it->lo, it->hi) : editor::defaultBounds(p, suggested);
   return axis;
 }
@@ -235,8 +236,7 @@ void drawPictures(const Pictures& pictures, const MasonrySpec& base, const stati
     for (char c : grid.stands) standing += c != 0;
     l["standing"] = standing;
     const auto [i, j] = grid.minimum();
-    if (i >= 0)
-      l["minimum"] = {{x.parameter, x.valueAt(i)}, {y.parameter, y.valueAt(j)}, {"measure", grid.at(i, j)}};
+    if (i >= 0) l["minimum"] = {{x.parameter, x.valueAt(i)}, {y.parameter, y.valueAt(j)}, {"measure", grid.at(i, j)}};
     double largest = 0;
     for (double m : grid.measure)
       if (std::isfinite(m)) largest = std::max(largest, m);
@@ -341,8 +341,8 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
     const auto& l = out["landscape"];
     std::cout << "landscape: " << l["png"].get<std::string>() << " (" << l["x"]["parameter"].get<std::string>()
               << " across, " << l["y"]["parameter"].get<std::string>() << " up; stands at "
-              << l["standing"].get<std::size_t>() << " of " << l["x"]["samples"].get<int>() * l["y"]["samples"].get<int>()
-              << " samples)\n";
+              << l["standing"].get<std::size_t>() << " of "
+              << l["x"]["samples"].get<int>() * l["y"]["samples"].get<int>() << " samples)\n";
   }
   return 0;
 }

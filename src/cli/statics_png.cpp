@@ -75,7 +75,8 @@ render::Image landscapeImage(const editor::LandscapeGrid& grid, int cell,
       for (int y = top; y < top + cell; ++y)
         for (int x = i * cell; x < (i + 1) * cell; ++x) {
           std::uint8_t* px = image.at(x, y);
-          for (int k = 0; k < 4; ++k) px[k] = static_cast<std::uint8_t>(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255));
+          for (int k = 0; k < 4; ++k)
+            px[k] = static_cast<std::uint8_t>(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255));
         }
     }
   // A parameter value to the pixel of its place: sample centres at cell centres.
@@ -98,8 +99,7 @@ render::Image landscapeImage(const editor::LandscapeGrid& grid, int cell,
       if (k > 0) {
         const auto [x0, y0] = pixel(path[k - 1]);
         const int steps = int(std::ceil(std::hypot(x1 - x0, y1 - y0))) + 1;
-        for (int s = 0; s <= steps; ++s)
-          disc(image, x0 + (x1 - x0) * s / steps, y0 + (y1 - y0) * s / steps, 1.0, 255);
+        for (int s = 0; s <= steps; ++s) disc(image, x0 + (x1 - x0) * s / steps, y0 + (y1 - y0) * s / steps, 1.0, 255);
       }
       disc(image, x1, y1, radius, 255);
     }

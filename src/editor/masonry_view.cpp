@@ -163,7 +163,6 @@ Landscape sampleLandscape(const MasonrySpec& spec, const std::string& parameter,
   return sampleLandscape(statics::modelOf(spec), analysisOptionsOf(spec), parameter, lo, hi, samples, progress);
 }
 
-
 double LandscapeAxis::valueAt(int i) const {
   if (samples < 2) return lo;
   return lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(samples - 1);
@@ -191,7 +190,8 @@ LandscapeGrid sampleLandscapeGrid(const statics::ParametricModel& model, const s
     if (!std::isfinite(a->lo) || !std::isfinite(a->hi))
       throw Error("energy landscape: the range of " + a->parameter + " must be finite");
   }
-  if (x.parameter == y.parameter) throw Error("energy landscape: two different parameters are needed, not " + x.parameter + " twice");
+  if (x.parameter == y.parameter)
+    throw Error("energy landscape: two different parameters are needed, not " + x.parameter + " twice");
   LandscapeGrid g;
   g.x = x;
   g.y = y;
@@ -253,11 +253,8 @@ LandscapeGrid sampleLandscapeGrid(const MasonrySpec& spec, const LandscapeAxis& 
 
 std::array<float, 4> landscapeRampColor(double t) {
   // Dark blue, teal, green, yellow (viridis-like stops): ordered in lightness, no red.
-  constexpr std::array<std::array<double, 3>, 5> stops{{{0.27, 0.00, 0.33},
-                                                        {0.23, 0.32, 0.55},
-                                                        {0.13, 0.57, 0.55},
-                                                        {0.37, 0.79, 0.38},
-                                                        {0.99, 0.91, 0.14}}};
+  constexpr std::array<std::array<double, 3>, 5> stops{
+      {{0.27, 0.00, 0.33}, {0.23, 0.32, 0.55}, {0.13, 0.57, 0.55}, {0.37, 0.79, 0.38}, {0.99, 0.91, 0.14}}};
   const double s = (std::isnan(t) ? 0.0 : std::clamp(t, 0.0, 1.0)) * double(stops.size() - 1);
   const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(s), stops.size() - 2);
   const double f = s - double(k);

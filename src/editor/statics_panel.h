@@ -6,10 +6,11 @@
 // landscape over one parameter (Fig. 8), and the collapse simulation (Sec. 5, Fig. 14: Play,
 // Step, Reset, a shake, removing a block; editor/simulation.h), drawn in place of the design
 // while it is shown and never written to the Document. With a second parameter chosen, the
-// landscape is a grid over both, drawn as coloured cells (the feasible ones red, as Fig. 8). The analysis, the landscape
-// and the search run on worker threads (core/progress.h); the panel only reads their results
-// and commits Document changes (editor/masonry_edits.h), so every edit is undoable. The
-// viewport shows blocks coloured by their share of tension and the interface forces.
+// landscape is a grid over both, drawn as coloured cells (the standing ones red, as Fig. 8).
+// The analysis, the landscape and the search run on worker threads (core/progress.h); the
+// panel only reads their results and commits Document changes (editor/masonry_edits.h), so
+// every edit is undoable. The viewport shows blocks coloured by their share of tension, the
+// interface forces and the ground reactions.
 #include "core/document.h"
 #include "core/progress.h"
 #include "editor/masonry_view.h"

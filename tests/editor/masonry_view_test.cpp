@@ -294,7 +294,7 @@ TEST(SampleLandscapeGrid, EachSampleIsTheAnalysisAtItsGridPoint) {
       EXPECT_EQ(g.standsAt(i, j), r.yNormalised <= statics::kFeasibleMeasure);
       standing += g.standsAt(i, j);
     }
-  EXPECT_GT(standing, 0);   // both kinds occur, so the comparison means something
+  EXPECT_GT(standing, 0);  // both kinds occur, so the comparison means something
   EXPECT_LT(standing, 12);
   const LandscapeGrid one = sampleLandscapeGrid(model, {}, x, y, nullptr, 1);
   EXPECT_EQ(one.measure, g.measure);
@@ -334,7 +334,7 @@ TEST(SampleLandscapeGrid, TheArchOnColumnsStandsWhereFigureEightSays) {
     }
   EXPECT_GT(standing, 0);
   EXPECT_TRUE(g.standsAt(x.samples - 1, y.samples - 1));  // thick arch, wide columns
-  EXPECT_FALSE(g.standsAt(x.samples - 1, 0));              // no arch stands on the narrowest columns
+  EXPECT_FALSE(g.standsAt(x.samples - 1, 0));             // no arch stands on the narrowest columns
   const auto [mi, mj] = g.minimum();
   EXPECT_TRUE(g.standsAt(mi, mj));
   // The worst is the thinnest arch on the narrowest columns.

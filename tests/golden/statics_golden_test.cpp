@@ -24,8 +24,9 @@ render::Image cliPicture(const std::string& args, const std::string& png) {
   fs::create_directories(CORBEL_GOLDEN_OUT);
   const std::string path = std::string(CORBEL_GOLDEN_OUT) + "/" + png;
   fs::remove(path);
-  const std::string command = quote(CORBEL_CLI) + " statics " + quote(std::string(CORBEL_SOURCE_DIR) +
-                              "/assets/examples/masonry-arch.corbel") + " " + args + " " + quote(path) + " >/dev/null";
+  const std::string command = quote(CORBEL_CLI) + " statics " +
+                              quote(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/masonry-arch.corbel") + " " +
+                              args + " " + quote(path) + " >/dev/null";
   const int status = std::system(command.c_str());
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command;
   return render::readPng(path);
