@@ -348,6 +348,7 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
 }
 
 int exampleCommand(const Options& a) {
+  picturesOf(a);
   if (a.positional.size() != 2) {
     std::string names;
     for (const std::string& n : statics::exampleNames()) names += " " + n;
@@ -361,10 +362,10 @@ int exampleCommand(const Options& a) {
 // statics PROJECT: every masonry object of the project (or the one --object names), with its
 // own parameters, free bounds, friction and kern (core/masonry_spec.h).
 int projectCommand(const Options& a) {
+  picturesOf(a);  // a bad --render, --size or --landscape before any work
   const LoadedProject p = loadProject(a.positional[0]);
   for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << a.positional[0] << ": " << w << "\n";
   const std::string only = a.values.count("--object") ? a.values.at("--object") : "";
-  picturesOf(a);  // a bad --render, --size or --landscape before any work
   if (a.values.count("--render") || a.values.count("--landscape")) {
     int matching = 0;
     for (const DocObject& o : p.document.objects)

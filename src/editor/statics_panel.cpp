@@ -630,8 +630,11 @@ void StaticsPanel::drawLandscape(const MasonrySpec& spec) {
   if (sampling) {
     if (analysis_) {
       ImGui::ProgressBar(float(analysis_->progress().fraction()), ImVec2(-80, 0), "sampling");
-      ImGui::SameLine();
-      if (ImGui::Button("Cancel##landscape")) analysis_->progress().cancel();
+      // Cancel stops the sampling only: the analysis before it is kept (and shown).
+      if (analysing_ && analysing_->viewDone) {
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel##landscape")) analysis_->progress().cancel();
+      }
     } else {
       ImGui::TextDisabled("not sampled (cancelled): change the range or the model to sample again");
     }

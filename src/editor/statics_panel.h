@@ -18,6 +18,7 @@
 #include "render/overlay.h"
 #include "statics/search.h"
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -101,7 +102,7 @@ class StaticsPanel {
     MasonrySpec spec;
     std::optional<Range> range, range2;  // of the landscape
     MasonryView view;
-    bool viewDone = false;  // the view is computed (the landscape may have been cancelled after it)
+    std::atomic<bool> viewDone{false};  // the view is computed (the landscape may be cancelled after it)
     std::optional<Landscape> landscape;
     std::optional<LandscapeGrid> grid;
   };
