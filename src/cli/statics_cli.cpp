@@ -268,6 +268,13 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
   }
   const bool optimize = a.values.count("--optimize") > 0, json = a.values.count("--json") > 0;
   if (!optimize && !a.frees.empty()) throw UsageError("statics: --free needs --optimize");
+  if (!pictures.landscape.empty()) {
+    // The landscape's parameters before any work: known, continuous, two different ones.
+    const auto x = axisOf(pictures.landscape[0], values, free, model.suggestedFree, pictures.samples);
+    const auto y = axisOf(pictures.landscape[1], values, free, model.suggestedFree, pictures.samples);
+    if (x.parameter == y.parameter)
+      throw Error("--landscape: two different parameters are needed, not " + x.parameter + " twice");
+  }
   statics::SearchOptions options;
   options.analysis.kernShrink = number(a, "--kern", kern, 0, 0.99);
   options.analysis.friction = number(a, "--friction", friction, 0, 100);

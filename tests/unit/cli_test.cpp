@@ -427,7 +427,9 @@ TEST(Cli, StaticsPicturesRefuseBadArgumentsAndWriteNothing) {
   const CliRun missing = cli(dir, "statics " + quote(dir.file("nothing.corbel")) + " --render " + png);
   EXPECT_EQ(missing.code, 1);
   EXPECT_NE(missing.err.find("no such file"), std::string::npos) << missing.err;
-  const CliRun unknown = cli(dir, "statics " + arch + " --landscape radius columnWidth " + png);
+  // Checked before any work: the render is not written either.
+  const CliRun unknown =
+      cli(dir, "statics " + arch + " --render " + quote(dir.file("b.png")) + " --landscape radius columnWidth " + png);
   EXPECT_EQ(unknown.code, 1);
   EXPECT_NE(unknown.err.find("radius"), std::string::npos) << unknown.err;
   const CliRun twice = cli(dir, "statics " + arch + " --landscape thickness thickness " + png);
