@@ -68,6 +68,13 @@ usage:
                     Prints y/W² and the solver status; --optimize searches the free
                     parameters (the example's own when no --free) until it stands (Sec. 4)
                     and prints the status (feasible or local minimum), iterations, values.
+  corbel-cli statics PROJECT.corbel [--object NAME] [the example command's options]
+                    [--render PNG [--size WxH]] [--landscape NAME1 NAME2 PNG [--samples N]]
+                    A project's masonry objects, each with its own parameters and bounds, as
+                    the example command. --render (also for example NAME) draws the model after
+                    the analysis or search: blocks by their share of tension, compression red,
+                    tension blue, ground reactions green. --landscape samples y/W² on an N x N
+                    grid of two parameters (Fig. 8; NAME=LO:HI sets a range): red stands.
   corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
                     [--view-maps exact|raster|gl] [--pixel M]
                     Grows housing units on a site (docs/growth.md); prints one JSON line.

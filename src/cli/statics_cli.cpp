@@ -1,11 +1,17 @@
-// corbel-cli statics arch | example: parse, call the statics kernel, print.
+// corbel-cli statics arch | example | PROJECT: parse, call the statics kernel, print; --render
+// and --landscape draw the editor's statics pictures headless (cli/statics_png.h).
 #include "cli/statics_cli.h"
 
 #include "cli/guarded.h"
+#include "cli/number_list.h"
+#include "cli/statics_png.h"
 #include "core/error.h"
+#include "core/project_io.h"
+#include "editor/masonry_edits.h"
+#include "editor/masonry_view.h"
+#include "render/headless_context.h"
 #include "statics/analysis.h"
 #include "statics/arch.h"
-#include "core/project_io.h"
 #include "statics/examples.h"
 #include "statics/kernel.h"
 #include "statics/search.h"
@@ -14,12 +20,15 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <map>
 #include <string>
+#include <tuple>
+#include <variant>
 #include <vector>
 
 namespace corbel::cli {
@@ -33,6 +42,7 @@ struct Options {
   std::vector<std::string> positional;
   std::map<std::string, std::string> values;  // last value of each single option; flags map to ""
   std::vector<std::string> frees, sets;       // --free and --set, repeatable
+  std::vector<std::string> landscape;         // --landscape NAME1 NAME2 PNG
 };
 
 Options parse(int argc, char** argv, const std::map<std::string, bool>& known) {
@@ -45,6 +55,13 @@ Options parse(int argc, char** argv, const std::map<std::string, bool>& known) {
     }
     const auto it = known.find(s);
     if (it == known.end()) throw UsageError("statics: unknown option " + s);
+    if (s == "--landscape") {
+      if (i + 3 >= argc) throw UsageError("statics: --landscape needs NAME1 NAME2 PNG");
+      o.landscape.assign(argv + i + 1, argv + i + 4);
+      o.values[s] = "";
+      i += 3;
+      continue;
+    }
     if (!it->second) {
       o.values[s] = "";
       continue;
@@ -81,6 +98,9 @@ int archCommand(const Options& a) {
   const bool minThickness = a.values.count("--min-thickness") > 0, criticalTilt = a.values.count("--critical-tilt") > 0;
   if (minThickness && criticalTilt) throw UsageError("statics: --min-thickness and --critical-tilt exclude each other");
   if (!a.values.count("--blocks")) throw UsageError("statics arch: --blocks N is required");
+  for (const char* o : {"--render", "--size", "--landscape", "--samples"})
+    if (a.values.count(o))
+      throw UsageError(std::string("statics arch: ") + o + " is for 'statics example NAME' and 'statics PROJECT'");
   if (!minThickness && !a.values.count("--thickness")) throw UsageError("statics arch: --thickness T is required");
   statics::ArchSpec spec;
   const double blocks = number(a, "--blocks", 100, 1, 100000);
@@ -107,10 +127,136 @@ int archCommand(const Options& a) {
   return 0;
 }
 
+bool endsWithPng(const std::string& path) {
+  if (path.size() < 5) return false;
+  std::string ext = path.substr(path.size() - 4);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
+}
+
+// What --render, --size, --landscape and --samples ask for, checked before any work.
+struct Pictures {
+  std::string render;  // PNG of the model after the analysis (or the search)
+  int width = 1200, height = 800;
+  std::vector<std::string> landscape;  // NAME1[=LO:HI] NAME2[=LO:HI] PNG
+  int samples = 41;
+};
+
+Pictures picturesOf(const Options& a) {
+  Pictures p;
+  if (a.values.count("--render")) {
+    p.render = a.values.at("--render");
+    if (!endsWithPng(p.render)) throw UsageError("--render: expected a .png file, got '" + p.render + "'");
+  }
+  if (a.values.count("--size")) {
+    if (p.render.empty()) throw UsageError("statics: --size needs --render");
+    const auto v = numberList(a.values.at("--size"), 'x');
+    if (!v || v->size() != 2 || (*v)[0] < 16 || (*v)[1] < 16 || (*v)[0] > 8192 || (*v)[1] > 8192 ||
+        (*v)[0] != std::floor((*v)[0]) || (*v)[1] != std::floor((*v)[1]))
+      throw UsageError("--size: expected WxH with whole numbers in 16..8192, like 800x600, got '" +
+                       a.values.at("--size") + "'");
+    p.width = int((*v)[0]);
+    p.height = int((*v)[1]);
+  }
+  p.landscape = a.landscape;
+  if (!p.landscape.empty() && !endsWithPng(p.landscape[2]))
+    throw UsageError("--landscape: expected NAME1 NAME2 PNG, and '" + p.landscape[2] + "' is not a .png file");
+  if (a.values.count("--samples")) {
+    if (p.landscape.empty()) throw UsageError("statics: --samples needs --landscape");
+    const double n = number(a, "--samples", 41, 2, 1024);
+    if (n != std::floor(n)) throw UsageError("--samples: expected a whole number");
+    p.samples = int(n);
+  }
+  return p;
+}
+
+// A landscape axis: NAME (its free bounds, else the model's suggested ones, else its value
+// ± 50 %) or NAME=LO:HI.
+editor::LandscapeAxis axisOf(const std::string& text, const statics::ParameterSet& values,
+                             const std::vector<statics::FreeParameter>& free,
+                             const std::vector<statics::FreeParameter>& suggested, int samples) {
+  editor::LandscapeAxis axis;
+  axis.samples = samples;
+  if (text.find('=') != std::string::npos) {
+    const statics::FreeParameter f = statics::parseFreeParameter(text);
+    statics::validateFreeParameters(values, {f});
+    axis.parameter = f.name;
+    axis.lo = f.lo;
+    axis.hi = f.hi;
+    return axis;
+  }
+  const statics::Parameter& p = values.find(text);  // throws naming the known parameters
+  if (!p.continuous) throw Error("--landscape: " + text + " is a count, not a continuous parameter");
+  axis.parameter = text;
+  const auto it =
+      std::find_if(free.begin(), free.end(), [&](const statics::FreeParameter& f) { return f.name == text; });
+  std::tie(axis.lo, axis.hi) = it != free.end() ? std::make_pair(it->lo, it->hi) : editor::defaultBounds(p, suggested);
+  return axis;
+}
+
+// The pictures of the model at `values` (after the search when there was one), into `out`.
+// `path`: the search's evaluations (values of `free`, in order), drawn over the landscape when
+// the search moved exactly its two parameters.
+void drawPictures(const Pictures& pictures, const MasonrySpec& base, const statics::ParametricModel& model,
+                  const statics::ParameterSet& values, const std::vector<statics::FreeParameter>& free,
+                  const statics::AnalysisOptions& options, nlohmann::ordered_json& out,
+                  const std::vector<std::vector<double>>& path = {}) {
+  MasonrySpec spec = base;
+  spec.parameters.clear();
+  for (const statics::Parameter& p : values.all()) spec.parameters.push_back({p.name, p.value});
+  spec.friction = options.friction;
+  spec.kern = options.kernShrink;
+  if (!pictures.render.empty()) {
+    const editor::MasonryView view = editor::analyseMasonry(spec, options);
+    if (!view.error.empty()) throw Error(view.error);
+    render::HeadlessContext context;
+    render::writePng(renderMasonryView(view, pictures.width, pictures.height), pictures.render);
+    out["render"] = pictures.render;
+  }
+  if (!pictures.landscape.empty()) {
+    const editor::LandscapeAxis x = axisOf(pictures.landscape[0], values, free, model.suggestedFree, pictures.samples);
+    const editor::LandscapeAxis y = axisOf(pictures.landscape[1], values, free, model.suggestedFree, pictures.samples);
+    statics::ParametricModel at = model;
+    at.parameters = values;
+    const editor::LandscapeGrid grid = editor::sampleLandscapeGrid(at, options, x, y);
+    std::vector<std::pair<double, double>> drawn;
+    if (free.size() == 2 && !path.empty()) {
+      const int ix = free[0].name == x.parameter ? 0 : free[1].name == x.parameter ? 1 : -1;
+      const int iy = free[0].name == y.parameter ? 0 : free[1].name == y.parameter ? 1 : -1;
+      if (ix >= 0 && iy >= 0 && ix != iy)
+        for (const std::vector<double>& p : path) drawn.emplace_back(p[ix], p[iy]);
+    }
+    const int side = std::max(x.samples, y.samples);
+    render::writePng(landscapeImage(grid, std::max(1, 480 / side), drawn), pictures.landscape[2]);
+    nlohmann::ordered_json l;
+    l["png"] = pictures.landscape[2];
+    l["x"] = {{"parameter", x.parameter}, {"lo", x.lo}, {"hi", x.hi}, {"samples", x.samples}};
+    l["y"] = {{"parameter", y.parameter}, {"lo", y.lo}, {"hi", y.hi}, {"samples", y.samples}};
+    std::size_t standing = 0;
+    for (char c : grid.stands) standing += c != 0;
+    l["standing"] = standing;
+    const auto [i, j] = grid.minimum();
+    if (i >= 0) l["minimum"] = {{x.parameter, x.valueAt(i)}, {y.parameter, y.valueAt(j)}, {"measure", grid.at(i, j)}};
+    double largest = 0;
+    for (double m : grid.measure)
+      if (std::isfinite(m)) largest = std::max(largest, m);
+    l["largest_measure"] = largest;
+    if (!drawn.empty()) {
+      nlohmann::ordered_json p = nlohmann::json::array();
+      for (const auto& [px, py] : drawn) p.push_back({px, py});
+      l["path"] = p;
+    }
+    out["landscape"] = l;
+  }
+}
+
 // Analyses (or, with --optimize, searches) one model: an example by name, or a project's
-// masonry object. `free` and the analysis settings are the defaults the command line overrides.
+// masonry object (`base`: its spec, for the pictures). `free` and the analysis settings are
+// the defaults the command line overrides.
 int runModel(const Options& a, const statics::ParametricModel& model, std::vector<statics::FreeParameter> free,
-             double friction, double kern, const std::string& object) {
+             const MasonrySpec& base, const std::string& object) {
+  const double friction = base.friction, kern = base.kern;
+  const Pictures pictures = picturesOf(a);
   statics::ParameterSet values = model.parameters;
   for (const std::string& s : a.sets) {
     const auto eq = s.find('=');
@@ -122,6 +268,13 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
   }
   const bool optimize = a.values.count("--optimize") > 0, json = a.values.count("--json") > 0;
   if (!optimize && !a.frees.empty()) throw UsageError("statics: --free needs --optimize");
+  if (!pictures.landscape.empty()) {
+    // The landscape's parameters before any work: known, continuous, two different ones.
+    const auto x = axisOf(pictures.landscape[0], values, free, model.suggestedFree, pictures.samples);
+    const auto y = axisOf(pictures.landscape[1], values, free, model.suggestedFree, pictures.samples);
+    if (x.parameter == y.parameter)
+      throw Error("--landscape: two different parameters are needed, not " + x.parameter + " twice");
+  }
   statics::SearchOptions options;
   options.analysis.kernShrink = number(a, "--kern", kern, 0, 0.99);
   options.analysis.friction = number(a, "--friction", friction, 0, 100);
@@ -146,10 +299,17 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
     double gauge = 0;
     for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
     out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
+    drawPictures(pictures, base, model, values, free, options.analysis, out);
   } else {
     if (!a.frees.empty()) free.clear();
     for (const std::string& f : a.frees) free.push_back(statics::parseFreeParameter(f));
     if (free.empty()) free = model.suggestedFree;
+    std::vector<std::vector<double>> path;  // the evaluations, for the landscape (Fig. 8's path)
+    if (!pictures.landscape.empty())
+      options.progress = [&path](const statics::SearchProgress& p) {
+        path.push_back(p.values);
+        return true;
+      };
     const statics::SearchResult r = statics::searchParameters(model, free, options, &values);
     out["measure"] = r.measure;
     out["initial_measure"] = r.initialMeasure;
@@ -164,6 +324,7 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
     for (const statics::FreeParameter& f : free) params[f.name] = r.values[f.name];
     out["parameters"] = params;
     if (r.status == statics::SearchStatus::Failed && !json) std::cerr << "corbel-cli: " << r.message << "\n";
+    drawPictures(pictures, base, model, r.values.all().empty() ? values : r.values, free, options.analysis, out, path);
   }
   if (json) {
     std::cout << out.dump() << "\n";
@@ -182,24 +343,44 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
       std::cout << name << " = " << text << "\n";
     }
   }
+  if (out.contains("render")) std::cout << "render: " << out["render"].get<std::string>() << "\n";
+  if (out.contains("landscape")) {
+    const auto& l = out["landscape"];
+    std::cout << "landscape: " << l["png"].get<std::string>() << " (" << l["x"]["parameter"].get<std::string>()
+              << " across, " << l["y"]["parameter"].get<std::string>() << " up; stands at "
+              << l["standing"].get<std::size_t>() << " of "
+              << l["x"]["samples"].get<int>() * l["y"]["samples"].get<int>() << " samples)\n";
+  }
   return 0;
 }
 
 int exampleCommand(const Options& a) {
+  picturesOf(a);
   if (a.positional.size() != 2) {
     std::string names;
     for (const std::string& n : statics::exampleNames()) names += " " + n;
     throw UsageError("statics example: expected one example name (" + names.substr(1) + ")");
   }
-  return runModel(a, statics::exampleByName(a.positional[1]), {}, 0.7, 0.0, "");
+  MasonrySpec base;
+  base.model = a.positional[1];
+  return runModel(a, statics::exampleByName(a.positional[1]), {}, base, "");
 }
 
 // statics PROJECT: every masonry object of the project (or the one --object names), with its
 // own parameters, free bounds, friction and kern (core/masonry_spec.h).
 int projectCommand(const Options& a) {
+  picturesOf(a);  // a bad --render, --size or --landscape before any work
   const LoadedProject p = loadProject(a.positional[0]);
   for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << a.positional[0] << ": " << w << "\n";
   const std::string only = a.values.count("--object") ? a.values.at("--object") : "";
+  if (a.values.count("--render") || a.values.count("--landscape")) {
+    int matching = 0;
+    for (const DocObject& o : p.document.objects)
+      matching += std::holds_alternative<MasonrySpec>(o.spec) && (only.empty() || o.name == only);
+    if (matching > 1)
+      throw UsageError("statics: --render and --landscape draw one masonry object and the project has " +
+                       std::to_string(matching) + "; name one with --object");
+  }
   int ran = 0, code = 0;
   for (const DocObject& o : p.document.objects) {
     const auto* spec = std::get_if<MasonrySpec>(&o.spec);
@@ -207,7 +388,7 @@ int projectCommand(const Options& a) {
     std::vector<statics::FreeParameter> free;
     for (const MasonryFree& f : spec->free) free.push_back({f.name, f.lo, f.hi});
     try {
-      code = std::max(code, runModel(a, statics::modelOf(*spec), free, spec->friction, spec->kern, o.name));
+      code = std::max(code, runModel(a, statics::modelOf(*spec), free, *spec, o.name));
     } catch (const InputError& e) {
       throw InputError(o.name + ": " + e.where, e.reason);
     }
@@ -227,7 +408,8 @@ int runStatics(int argc, char** argv) {
                              {"--kern", true}, {"--min-thickness", false}, {"--critical-tilt", false},
                              {"--optimize", false}, {"--free", true}, {"--set", true}, {"--json", false},
                              {"--algorithm", true}, {"--max-evaluations", true}, {"--max-seconds", true},
-                             {"--friction-sides", true}, {"--object", true}});
+                             {"--friction-sides", true}, {"--object", true}, {"--render", true}, {"--size", true},
+                             {"--landscape", false}, {"--samples", true}});
     if (!a.positional.empty() && a.positional[0] == "arch" && a.positional.size() == 1) return archCommand(a);
     if (!a.positional.empty() && a.positional[0] == "example") return exampleCommand(a);
     if (a.positional.size() == 1 && a.positional[0].size() > 7 &&

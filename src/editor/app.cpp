@@ -452,6 +452,11 @@ void App::registerActions() {
   add({"statics.sim_remove", "Statics", "Simulate: Remove Block",
        "Take the block chosen in the Simulate section (at first the top one) out of the simulation.", {}, false,
        [this] { statics_.simulateRemove(staticsHost()); }, masonrySelected});
+  add({"statics.landscape_grid", "Statics", "Energy Landscape over Two Parameters",
+       "Sample y/W² over a grid of the selected masonry object's first two free parameters (Fig. 8) in the "
+       "statics panel; again for the landscape over one parameter.",
+       {}, false, [this] { statics_.toggleLandscapeGrid(staticsHost()); }, masonrySelected,
+       [this] { return statics_.landscapeGridChosen(); }});
   add({"statics.sim_close", "Statics", "Simulate: Close", "Stop simulating and show the design again.", {}, false,
        [this] { statics_.closeSimulation(); }, [this] { return statics_.simulating(); }});
   auto growthSelected = [this] {

@@ -3,9 +3,15 @@
 #include "statics/kernel.h"
 #include "statics/tolerances.h"
 
+#include "core/error.h"
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <mutex>
+#include <thread>
 
 namespace corbel::editor {
 
@@ -17,6 +23,10 @@ statics::AnalysisOptions analysisOptionsOf(const MasonrySpec& spec) {
 }
 
 MasonryView analyseMasonry(const MasonrySpec& spec, Progress* progress) {
+  return analyseMasonry(spec, analysisOptionsOf(spec), progress);
+}
+
+MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptions& options, Progress* progress) {
   MasonryView view;
   view.spec = spec;
   try {
@@ -38,7 +48,7 @@ MasonryView analyseMasonry(const MasonrySpec& spec, Progress* progress) {
     }
     view.modelSize = box.empty() ? 1.0 : std::max(box.diagonal(), 1e-9);
     if (progress && progress->cancelled()) throw Cancelled();
-    view.result = statics::analyse(assembly, analysisOptionsOf(spec));
+    view.result = statics::analyse(assembly, options);
     view.tensionShare = blockTensionShares(assembly.blocks.size(), view.result);
   } catch (const Cancelled&) {
     throw;
@@ -73,22 +83,51 @@ std::array<float, 4> tensionColor(double share) {
   return c;
 }
 
-std::vector<ForceArrow> forceArrows(const statics::AnalysisResult& result, double longest) {
-  double compression = 0, tension = 0;
+std::vector<ForceArrow> forceArrows(const statics::AnalysisResult& result, double longest,
+                                    const std::vector<bool>& fixed) {
+  const auto isFixed = [&](int b) { return b >= 0 && static_cast<std::size_t>(b) < fixed.size() && fixed[b]; };
+  const auto isReaction = [&](const statics::InterfaceForces& f) { return isFixed(f.a) != isFixed(f.b); };
+  double compression = 0, reaction = 0, tension = 0;
   for (const statics::InterfaceForces& f : result.interfaces)
-    if (f.normalForce > 0) compression = std::max(compression, f.resultant.norm());
+    if (f.normalForce > 0) {
+      double& largest = isReaction(f) ? reaction : compression;
+      largest = std::max(largest, f.resultant.norm());
+    }
   for (const statics::TensionSite& t : result.tensionSites) tension = std::max(tension, t.tension);
   std::vector<ForceArrow> arrows;
-  if (compression > 0)
-    for (const statics::InterfaceForces& f : result.interfaces)
-      if (f.normalForce > 0 && f.resultant.norm() > 0)
-        arrows.push_back({f.centreOfPressure - f.resultant * (longest / compression), f.centreOfPressure, false});
+  for (const statics::InterfaceForces& f : result.interfaces) {
+    if (!(f.normalForce > 0) || !(f.resultant.norm() > 0)) continue;
+    if (isReaction(f)) {
+      // The force on the structure's block: +resultant on b, its opposite on a.
+      const Vec3 onStructure = isFixed(f.b) ? -f.resultant : f.resultant;
+      arrows.push_back({f.centreOfPressure - onStructure * (longest / reaction), f.centreOfPressure, false, true});
+    } else {
+      arrows.push_back({f.centreOfPressure - f.resultant * (longest / compression), f.centreOfPressure, false, false});
+    }
+  }
   for (const statics::TensionSite& t : result.tensionSites) {
     if (t.interface < 0 || static_cast<std::size_t>(t.interface) >= result.interfaces.size()) continue;
     const Vec3& n = result.interfaces[static_cast<std::size_t>(t.interface)].normal;
-    arrows.push_back({t.point, t.point - n * (t.tension * 0.5 * longest / tension), true});
+    arrows.push_back({t.point, t.point - n * (t.tension * 0.5 * longest / tension), true, false});
   }
   return arrows;
+}
+
+std::array<float, 4> arrowColor(const ForceArrow& arrow) {
+  return arrow.tension ? kTensionColor : arrow.reaction ? kReactionColor : kCompressionColor;
+}
+
+MasonryPicture masonryPicture(const MasonryView& view, bool colours, bool arrows) {
+  MasonryPicture picture;
+  if (!view.error.empty()) return picture;
+  if (colours)
+    for (std::size_t b = 0; b < view.blockFaces.size(); ++b) {
+      if (b < view.fixed.size() && view.fixed[b]) continue;
+      const auto colour = tensionColor(b < view.tensionShare.size() ? view.tensionShare[b] : 0.0);
+      for (const auto& face : view.blockFaces[b]) picture.polygons.push_back({face, colour});
+    }
+  if (arrows) picture.arrows = forceArrows(view.result, kLongestArrowOfModel * view.modelSize, view.fixed);
+  return picture;
 }
 
 double Landscape::valueAt(std::size_t i) const {
@@ -122,6 +161,125 @@ Landscape sampleLandscape(const statics::ParametricModel& model, const statics::
 Landscape sampleLandscape(const MasonrySpec& spec, const std::string& parameter, double lo, double hi, int samples,
                           Progress* progress) {
   return sampleLandscape(statics::modelOf(spec), analysisOptionsOf(spec), parameter, lo, hi, samples, progress);
+}
+
+double LandscapeAxis::valueAt(int i) const {
+  if (samples < 2) return lo;
+  return lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(samples - 1);
+}
+
+std::pair<int, int> LandscapeGrid::minimum() const {
+  std::pair<int, int> best{-1, -1};
+  double least = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < y.samples; ++j)
+    for (int i = 0; i < x.samples; ++i)
+      if (at(i, j) < least) {
+        least = at(i, j);
+        best = {i, j};
+      }
+  return best;
+}
+
+// Fig. 8: y(θ) over two parameters, one analysis per grid point.
+LandscapeGrid sampleLandscapeGrid(const statics::ParametricModel& model, const statics::AnalysisOptions& options,
+                                  const LandscapeAxis& x, const LandscapeAxis& y, Progress* progress, int threads) {
+  for (const LandscapeAxis* a : {&x, &y}) {
+    model.parameters.find(a->parameter);  // throws for an unknown name, naming the known ones
+    if (a->samples < 2 || a->samples > 4096)
+      throw Error("energy landscape: " + a->parameter + " needs 2 to 4096 samples, not " + std::to_string(a->samples));
+    if (!std::isfinite(a->lo) || !std::isfinite(a->hi))
+      throw Error("energy landscape: the range of " + a->parameter + " must be finite");
+  }
+  if (x.parameter == y.parameter)
+    throw Error("energy landscape: two different parameters are needed, not " + x.parameter + " twice");
+  LandscapeGrid g;
+  g.x = x;
+  g.y = y;
+  const std::size_t total = static_cast<std::size_t>(x.samples) * static_cast<std::size_t>(y.samples);
+  g.measure.assign(total, std::numeric_limits<double>::quiet_NaN());
+  g.stands.assign(total, 0);
+  std::atomic<int> nextRow{0};
+  std::atomic<bool> stop{false};
+  std::mutex reportMutex;
+  std::size_t done = 0;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    statics::ParameterSet values = model.parameters;  // this thread's own copy
+    while (!stop.load()) {
+      const int j = nextRow.fetch_add(1);
+      if (j >= y.samples) return;
+      for (int i = 0; i < x.samples; ++i) {
+        if (progress && progress->cancelled()) {
+          stop = true;
+          return;
+        }
+        const std::size_t k = static_cast<std::size_t>(j) * x.samples + i;
+        try {
+          values.set(x.parameter, x.valueAt(i));
+          values.set(y.parameter, y.valueAt(j));
+          const statics::AnalysisResult r = statics::analyse(model.build(values), options);
+          g.measure[k] = r.yNormalised;
+          g.stands[k] = r.feasible;
+        } catch (const std::exception&) {
+          // NaN, does not stand (as assigned)
+        } catch (...) {
+          std::lock_guard<std::mutex> lock(reportMutex);
+          if (!failure) failure = std::current_exception();
+          stop = true;
+          return;
+        }
+        std::lock_guard<std::mutex> lock(reportMutex);
+        ++done;
+        if (progress) progress->report(double(done) / double(total), "energy landscape");
+      }
+    }
+  };
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const int wanted = threads > 0 ? threads : static_cast<int>(cores);
+  const int n = std::clamp(wanted, 1, y.samples);
+  std::vector<std::thread> pool;
+  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  if (progress && progress->cancelled()) throw Cancelled();
+  return g;
+}
+
+LandscapeGrid sampleLandscapeGrid(const MasonrySpec& spec, const LandscapeAxis& x, const LandscapeAxis& y,
+                                  Progress* progress, int threads) {
+  return sampleLandscapeGrid(statics::modelOf(spec), analysisOptionsOf(spec), x, y, progress, threads);
+}
+
+std::array<float, 4> landscapeRampColor(double t) {
+  // Dark blue, teal, green, yellow (viridis-like stops): ordered in lightness, no red.
+  constexpr std::array<std::array<double, 3>, 5> stops{
+      {{0.27, 0.00, 0.33}, {0.23, 0.32, 0.55}, {0.13, 0.57, 0.55}, {0.37, 0.79, 0.38}, {0.99, 0.91, 0.14}}};
+  const double s = (std::isnan(t) ? 0.0 : std::clamp(t, 0.0, 1.0)) * double(stops.size() - 1);
+  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(s), stops.size() - 2);
+  const double f = s - double(k);
+  std::array<float, 4> c{0, 0, 0, 1};
+  for (int q = 0; q < 3; ++q) c[q] = static_cast<float>(stops[k][q] + f * (stops[k + 1][q] - stops[k][q]));
+  return c;
+}
+
+std::vector<std::array<float, 4>> landscapeColors(const LandscapeGrid& grid) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < grid.measure.size(); ++k) {
+    const double m = grid.measure[k];
+    if (grid.stands[k] || !(m > 0) || !std::isfinite(m)) continue;
+    lo = std::min(lo, std::log10(m));
+    hi = std::max(hi, std::log10(m));
+  }
+  std::vector<std::array<float, 4>> out(grid.measure.size(), kLandscapeMissingColor);
+  for (std::size_t k = 0; k < grid.measure.size(); ++k) {
+    const double m = grid.measure[k];
+    if (grid.stands[k])
+      out[k] = kLandscapeStandsColor;
+    else if (std::isfinite(m))
+      out[k] = landscapeRampColor(hi > lo ? (std::log10(std::max(m, 1e-300)) - lo) / (hi - lo) : 0.5);
+  }
+  return out;
 }
 
 }  // namespace corbel::editor

@@ -15,8 +15,10 @@ namespace corbel::editor {
 namespace {
 
 constexpr int kLandscapeSamples = 41;
+constexpr int kGridSamples = 21;  // per axis: 441 analyses, on every core
 const ImVec4 kGood(0.4f, 0.85f, 0.4f, 1), kBad(1, 0.45f, 0.35f, 1);
-const render::Rgba kCompression{0.85f, 0.25f, 0.12f, 1.0f}, kTension{0.1f, 0.35f, 1.0f, 1.0f};
+
+ImU32 colorU32(const std::array<float, 4>& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], c[3])); }
 
 const DocObject* objectOf(const StaticsHost& host) { return host.doc ? host.doc->find(host.object) : nullptr; }
 
@@ -55,17 +57,48 @@ void StaticsPanel::reset() {
   pendingResolve_.reset();
   view_.reset();
   landscape_.reset();
+  grid_.reset();
   landscapeChoice_.clear();
+  landscapeChoice2_.clear();
   sim_.reset();
   removeChoice_.clear();
+}
+
+void StaticsPanel::toggleLandscapeGrid(const StaticsHost& host) {
+  if (!landscapeChoice2_.empty()) {
+    landscapeChoice2_.clear();
+    return;
+  }
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec) return;
+  std::vector<std::string> names;
+  for (const MasonryFree& f : spec->free) names.push_back(f.name);
+  if (view_)
+    for (const statics::FreeParameter& f : view_->suggestedFree)
+      if (std::find(names.begin(), names.end(), f.name) == names.end()) names.push_back(f.name);
+  if (names.size() < 2) {
+    host.log("Energy landscape: the model has fewer than two parameters to free", true);
+    return;
+  }
+  landscapeChoice_ = names[0];
+  landscapeChoice2_ = names[1];
 }
 
 void StaticsPanel::cancelSearch() {
   if (search_) search_->progress().cancel();
 }
 
-std::optional<std::pair<std::string, std::pair<double, double>>> StaticsPanel::landscapeFor(
-    const MasonrySpec& spec) const {
+std::optional<StaticsPanel::Range> StaticsPanel::rangeOf(const MasonrySpec& spec, const std::string& name) const {
+  for (const MasonryFree& f : spec.free)
+    if (f.name == name) return std::make_pair(name, std::make_pair(f.lo, f.hi));
+  if (view_)
+    for (const statics::Parameter& p : view_->parameters)
+      if (p.name == name && p.continuous) return std::make_pair(name, defaultBounds(p, view_->suggestedFree));
+  return std::nullopt;
+}
+
+std::optional<StaticsPanel::Range> StaticsPanel::landscapeFor(const MasonrySpec& spec) const {
   auto chosen = landscapeChoice_;
   if (chosen.empty()) {
     if (!spec.free.empty())
@@ -74,25 +107,41 @@ std::optional<std::pair<std::string, std::pair<double, double>>> StaticsPanel::l
       chosen = view_->suggestedFree.front().name;
   }
   if (chosen.empty()) return std::nullopt;
-  for (const MasonryFree& f : spec.free)
-    if (f.name == chosen) return std::make_pair(chosen, std::make_pair(f.lo, f.hi));
-  if (view_)
-    for (const statics::Parameter& p : view_->parameters)
-      if (p.name == chosen) return std::make_pair(chosen, defaultBounds(p, view_->suggestedFree));
-  return std::nullopt;
+  return rangeOf(spec, chosen);
+}
+
+std::optional<StaticsPanel::Range> StaticsPanel::landscape2For(const MasonrySpec& spec) const {
+  const auto first = landscapeFor(spec);
+  if (!first || landscapeChoice2_.empty() || landscapeChoice2_ == first->first) return std::nullopt;
+  return rangeOf(spec, landscapeChoice2_);
+}
+
+bool StaticsPanel::gridMatches(const std::optional<Range>& x, const std::optional<Range>& y) const {
+  const auto same = [](const LandscapeAxis& a, const Range& r) {
+    return a.parameter == r.first && a.lo == r.second.first && a.hi == r.second.second;
+  };
+  return grid_ && x && y && same(grid_->x, *x) && same(grid_->y, *y);
 }
 
 void StaticsPanel::startAnalysis(const MasonrySpec& spec) {
   auto work = std::make_shared<AnalysisWork>();
   work->spec = spec;
-  const auto range = landscapeFor(spec);
+  const auto range = landscapeFor(spec), range2 = landscape2For(spec);
   work->range = range;
+  work->range2 = range2;
   analysing_ = work;
-  analysis_ = std::make_unique<BackgroundJob>("Statics analysis", [work, range](Progress& progress) {
+  analysis_ = std::make_unique<BackgroundJob>("Statics analysis", [work, range, range2](Progress& progress) {
     work->view = analyseMasonry(work->spec, &progress);
-    if (range && work->view.error.empty())
+    work->viewDone = true;
+    if (!range || !work->view.error.empty()) return;
+    if (range2) {
+      const LandscapeAxis x{range->first, range->second.first, range->second.second, kGridSamples};
+      const LandscapeAxis y{range2->first, range2->second.first, range2->second.second, kGridSamples};
+      work->grid = sampleLandscapeGrid(work->spec, x, y, &progress);
+    } else {
       work->landscape = sampleLandscape(work->spec, range->first, range->second.first, range->second.second,
                                         kLandscapeSamples, &progress);
+    }
   });
 }
 
@@ -168,20 +217,25 @@ void StaticsPanel::update(const StaticsHost& host) {
     if (collect(analysis_, host.wait, &error)) {
       view_ = std::move(analysing_->view);
       if (analysing_->landscape) landscape_ = std::move(*analysing_->landscape);
-    } else if (!analysis_ && !error.empty()) {
-      host.log("Statics analysis: " + error, true);
+      if (analysing_->grid) grid_ = std::move(*analysing_->grid);
+    } else if (!analysis_) {
+      // Cancelled or failed while sampling the landscape: the analysis itself still shows.
+      if (analysing_ && analysing_->viewDone) view_ = std::move(analysing_->view);
+      if (!error.empty()) host.log("Statics analysis: " + error, true);
     }
   }
   const DocObject* o = objectOf(host);
   const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
   if (!spec || analysis_) return;
-  const auto range = landscapeFor(*spec);
+  const auto range = landscapeFor(*spec), range2 = landscape2For(*spec);
   const bool viewStale = !view_ || !(view_->spec == *spec);
   const bool landscapeStale =
-      range && (!landscape_ || landscape_->parameter != range->first || landscape_->lo != range->second.first ||
-                landscape_->hi != range->second.second);
+      range && (range2 ? !gridMatches(range, range2)
+                       : (!landscape_ || landscape_->parameter != range->first ||
+                          landscape_->lo != range->second.first || landscape_->hi != range->second.second));
   if (!viewStale && !landscapeStale) return;
-  if (analysing_ && analysing_->spec == *spec && analysing_->range == range) return;  // done; it failed
+  if (analysing_ && analysing_->spec == *spec && analysing_->range == range && analysing_->range2 == range2)
+    return;  // done; it failed or was cancelled
   startAnalysis(*spec);
   if (host.wait) {
     StaticsHost again = host;
@@ -330,15 +384,9 @@ void StaticsPanel::drawSimulation(const StaticsHost& host) {
 void StaticsPanel::drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const {
   if (!view_ || !(view_->spec == spec) || !view_->error.empty()) return;
   if (shownSimulation(spec)) return;  // the analysis is of the design, not of the moving blocks
-  if (colours_)
-    for (std::size_t b = 0; b < view_->blockFaces.size(); ++b) {
-      if (view_->fixed[b]) continue;
-      const auto colour = tensionColor(view_->tensionShare[b]);
-      for (const auto& face : view_->blockFaces[b]) overlay.polygon(face, colour);
-    }
-  if (arrows_)
-    for (const ForceArrow& a : forceArrows(view_->result, 0.2 * view_->modelSize))
-      onTop.arrow(a.from, a.to, a.tension ? kTension : kCompression, 0.25);
+  const MasonryPicture picture = masonryPicture(*view_, colours_, arrows_);
+  for (const ColouredPolygon& p : picture.polygons) overlay.polygon(p.corners, p.color);
+  for (const ForceArrow& a : picture.arrows) onTop.arrow(a.from, a.to, arrowColor(a), 0.25);
 }
 
 void StaticsPanel::drawParameters(const StaticsHost& host, const MasonrySpec& spec) {
@@ -462,7 +510,9 @@ void StaticsPanel::drawAnalysis(const MasonrySpec& spec) {
   ImGui::Dummy(ImVec2(w, h));
   ImGui::SameLine();
   ImGui::TextDisabled("share of tension, 0 to 1");
-  ImGui::TextDisabled("arrows: interface forces in compression (red), tension (blue)");
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextDisabled("arrows: interface forces in compression (red), tension (blue), ground reactions (green)");
+  ImGui::PopTextWrapPos();
 }
 
 void StaticsPanel::drawSearch(const StaticsHost& host) {
@@ -505,19 +555,93 @@ void StaticsPanel::drawSearch(const StaticsHost& host) {
   }
 }
 
+void StaticsPanel::drawGrid(const LandscapeGrid& g) {
+  const std::vector<std::array<float, 4>> colours = landscapeColors(g);
+  const float side = std::min(ImGui::GetContentRegionAvail().x, 260.0f);
+  const float cw = side / float(g.x.samples), ch = side / float(g.y.samples);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  for (int j = 0; j < g.y.samples; ++j)
+    for (int i = 0; i < g.x.samples; ++i) {
+      // The second parameter grows upwards, as on a plot.
+      const ImVec2 a(at.x + cw * float(i), at.y + ch * float(g.y.samples - 1 - j));
+      dl->AddRectFilled(a, ImVec2(a.x + cw + 0.5f, a.y + ch + 0.5f),
+                        colorU32(colours[static_cast<std::size_t>(j) * g.x.samples + i]));
+    }
+  ImGui::InvisibleButton("##grid", ImVec2(side, side));
+  if (ImGui::IsItemHovered()) {
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const int i = std::clamp(int((m.x - at.x) / cw), 0, g.x.samples - 1);
+    const int j = std::clamp(g.y.samples - 1 - int((m.y - at.y) / ch), 0, g.y.samples - 1);
+    ImGui::SetTooltip("%s = %.4g, %s = %.4g\ny/W² = %.4g%s", g.x.parameter.c_str(), g.x.valueAt(i),
+                      g.y.parameter.c_str(), g.y.valueAt(j), g.at(i, j), g.standsAt(i, j) ? " (stands)" : "");
+  }
+  ImGui::TextDisabled("%s in [%.3g, %.3g] across, %s in [%.3g, %.3g] up", g.x.parameter.c_str(), g.x.lo, g.x.hi,
+                      g.y.parameter.c_str(), g.y.lo, g.y.hi);
+  // Legend: red stands (y = 0); the ramp is log10 y/W² from the grid's least to its largest.
+  const ImVec2 l = ImGui::GetCursorScreenPos();
+  const float w = 120, h = 10;
+  dl->AddRectFilled(l, ImVec2(l.x + h, l.y + h), colorU32(kLandscapeStandsColor));
+  for (int k = 0; k < 24; ++k)
+    dl->AddRectFilled(ImVec2(l.x + 2 * h + w * k / 24, l.y), ImVec2(l.x + 2 * h + w * (k + 1) / 24 + 1, l.y + h),
+                      colorU32(landscapeRampColor(k / 23.0)));
+  ImGui::Dummy(ImVec2(2 * h + w, h));
+  ImGui::SameLine();
+  ImGui::TextDisabled("stands; log y/W², low to high");
+  std::size_t standing = 0;
+  for (char c : g.stands) standing += c != 0;
+  ImGui::Text("stands at %zu of %zu samples", standing, g.stands.size());
+  const auto [mi, mj] = g.minimum();
+  if (mi >= 0 && !g.standsAt(mi, mj))
+    ImGui::Text("least y/W² %.3g at %s = %.3g, %s = %.3g", g.at(mi, mj), g.x.parameter.c_str(), g.x.valueAt(mi),
+                g.y.parameter.c_str(), g.y.valueAt(mj));
+}
+
 void StaticsPanel::drawLandscape(const MasonrySpec& spec) {
   ImGui::Separator();
   ImGui::TextDisabled("Energy landscape (Fig. 8)");
   if (!view_) return;
   const auto range = landscapeFor(spec);
-  if (ImGui::BeginCombo("over", range ? range->first.c_str() : "(choose)")) {
+  const auto range2 = landscape2For(spec);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("over");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
+  if (ImGui::BeginCombo("##over", range ? range->first.c_str() : "(choose)")) {
     for (const statics::Parameter& p : view_->parameters)
       if (p.continuous && ImGui::Selectable(p.name.c_str(), range && range->first == p.name)) landscapeChoice_ = p.name;
     ImGui::EndCombo();
   }
+  ImGui::SameLine();
+  ImGui::TextUnformatted("and");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##and", range2 ? range2->first.c_str() : "(none)")) {
+    if (ImGui::Selectable("(none)", !range2)) landscapeChoice2_.clear();
+    for (const statics::Parameter& p : view_->parameters)
+      if (p.continuous && (!range || p.name != range->first) &&
+          ImGui::Selectable(p.name.c_str(), range2 && range2->first == p.name))
+        landscapeChoice2_ = p.name;
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A second parameter: y/W² over a grid of both (Fig. 8)");
   if (!range) return;
-  if (!landscape_ || landscape_->parameter != range->first) {
-    ImGui::TextDisabled("sampling...");
+  const bool sampling = range2 ? !gridMatches(range, range2) : (!landscape_ || landscape_->parameter != range->first);
+  if (sampling) {
+    if (analysis_) {
+      ImGui::ProgressBar(float(analysis_->progress().fraction()), ImVec2(-80, 0), "sampling");
+      // Cancel stops the sampling only: the analysis before it is kept (and shown).
+      if (analysing_ && analysing_->viewDone) {
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel##landscape")) analysis_->progress().cancel();
+      }
+    } else {
+      ImGui::TextDisabled("not sampled (cancelled): change the range or the model to sample again");
+    }
+    return;
+  }
+  if (range2) {
+    drawGrid(*grid_);
     return;
   }
   std::vector<float> m;

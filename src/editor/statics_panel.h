@@ -5,10 +5,12 @@
 // Cancel, keeping it standing while a fixed parameter is dragged (Fig. 13), and the energy
 // landscape over one parameter (Fig. 8), and the collapse simulation (Sec. 5, Fig. 14: Play,
 // Step, Reset, a shake, removing a block; editor/simulation.h), drawn in place of the design
-// while it is shown and never written to the Document. The analysis, the landscape
-// and the search run on worker threads (core/progress.h); the panel only reads their results
-// and commits Document changes (editor/masonry_edits.h), so every edit is undoable. The
-// viewport shows blocks coloured by their share of tension and the interface forces.
+// while it is shown and never written to the Document. With a second parameter chosen, the
+// landscape is a grid over both, drawn as coloured cells (the standing ones red, as Fig. 8).
+// The analysis, the landscape and the search run on worker threads (core/progress.h); the
+// panel only reads their results and commits Document changes (editor/masonry_edits.h), so
+// every edit is undoable. The viewport shows blocks coloured by their share of tension, the
+// interface forces and the ground reactions.
 #include "core/document.h"
 #include "core/progress.h"
 #include "editor/masonry_view.h"
@@ -16,6 +18,7 @@
 #include "render/overlay.h"
 #include "statics/search.h"
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -50,6 +53,10 @@ class StaticsPanel {
   // "Make it stand" for the host's object; ignored while a search runs.
   void makeItStand(const StaticsHost& host);
   void cancelSearch();
+  // The landscape over two parameters: the spec's first two free ones (the model's suggested
+  // ones when fewer are free), or back to one parameter when two are chosen.
+  void toggleLandscapeGrid(const StaticsHost& host);
+  bool landscapeGridChosen() const { return !landscapeChoice2_.empty(); }
   bool searching() const { return search_ != nullptr; }
   void reset();  // another object was selected
 
@@ -81,20 +88,31 @@ class StaticsPanel {
   void drawLandscape(const MasonrySpec& spec);
   void drawSimulation(const StaticsHost& host);
   Simulation* simulationFor(const StaticsHost& host);  // made on first use; null when it cannot be
+  using Range = std::pair<std::string, std::pair<double, double>>;  // a parameter and its bounds
   // The landscape's parameter and range for a spec: the chosen one, else the first free one.
-  std::optional<std::pair<std::string, std::pair<double, double>>> landscapeFor(const MasonrySpec& spec) const;
+  std::optional<Range> landscapeFor(const MasonrySpec& spec) const;
+  // The second parameter of a two-parameter landscape: the one chosen, when it is continuous
+  // and not the first.
+  std::optional<Range> landscape2For(const MasonrySpec& spec) const;
+  std::optional<Range> rangeOf(const MasonrySpec& spec, const std::string& name) const;
+  bool gridMatches(const std::optional<Range>& x, const std::optional<Range>& y) const;
+  void drawGrid(const LandscapeGrid& grid);
 
   struct AnalysisWork {
     MasonrySpec spec;
-    std::optional<std::pair<std::string, std::pair<double, double>>> range;  // of the landscape
+    std::optional<Range> range, range2;  // of the landscape
     MasonryView view;
+    std::atomic<bool> viewDone{false};  // the view is computed (the landscape may be cancelled after it)
     std::optional<Landscape> landscape;
+    std::optional<LandscapeGrid> grid;
   };
   std::unique_ptr<BackgroundJob> analysis_;
   std::shared_ptr<AnalysisWork> analysing_;
   std::optional<MasonryView> view_;
   std::optional<Landscape> landscape_;
-  std::string landscapeChoice_;  // "" = the first free parameter
+  std::optional<LandscapeGrid> grid_;
+  std::string landscapeChoice_;   // "" = the first free parameter
+  std::string landscapeChoice2_;  // "" = none: the landscape is over one parameter
 
   std::unique_ptr<BackgroundJob> search_;
   ObjectId searchObject_ = 0;

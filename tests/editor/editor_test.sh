@@ -83,6 +83,13 @@ test -f "$work/state/recovery.corbel" || { echo "Make It Stand changed nothing (
 stood=$("$cli" statics "$work/state/recovery.corbel" --json)
 echo "after Make It Stand: $stood"
 grep -q '"stands":true' <<<"$stood" || { echo "the arch should stand after Make It Stand"; exit 1; }
+echo "== the energy landscape over the arch's two free parameters (Fig. 8)"
+rm -rf "$work/state"
+run --recover no --select "Arch on columns" --actions statics.landscape_grid --autosave-seconds 0 \
+  --screenshot "$work/masonry-grid.png" --quit-after-frames 8 "$masonry"
+test ! -e "$work/state/recovery.corbel" || { echo "choosing the landscape's parameters must not change the Document"; exit 1; }
+# The grid of coloured cells replaces the one-parameter plot in the panel.
+"$check" "$work/masonry-grid.png" "$work/masonry.png" 0.005
 echo "== the collapse simulation: the arch without its keystone, a second on"
 rm -rf "$work/state"
 run --recover no --select "Arch on columns" --actions statics.sim_remove --autosave-seconds 0 \

@@ -2,8 +2,10 @@
 // known thresholds of the semicircular arch.
 #include "editor/masonry_view.h"
 
+#include "core/error.h"
 #include "core/project_io.h"
 #include "statics/arch.h"
+#include "statics/kernel.h"
 #include "statics/tolerances.h"
 
 #include <gtest/gtest.h>
@@ -202,6 +204,205 @@ TEST(SampleLandscape, ACancelledJobStopsBeforeSamplingEverything) {
   EXPECT_LT(job.progress().fraction(), 1.0);
   EXPECT_THROW(job.rethrow(), Cancelled);
   EXPECT_LT(waited, 30.0);  // one analysis at most, not the remaining thousands
+}
+
+// Ground reactions (Fig. 1 right): the resultants of interfaces with a fixed block, as the force
+// on the structure, scaled among themselves; the others keep their own scale.
+TEST(ForceArrows, GroundReactionsAreTheirOwnKindPointingIntoTheStructure) {
+  statics::AnalysisResult r;
+  statics::InterfaceForces onGround, between, groundAbove;
+  onGround.a = 0;  // the ground
+  onGround.b = 1;
+  onGround.normalForce = 4;
+  onGround.resultant = Vec3(0, 0, 4);  // the ground pushes block 1 up
+  onGround.centreOfPressure = Vec3(0, 0, 0);
+  between.a = 1;
+  between.b = 2;
+  between.normalForce = 1;
+  between.resultant = Vec3(0, 0, 1);
+  between.centreOfPressure = Vec3(0, 0, 1);
+  groundAbove.a = 2;  // block 2 pushes up on a fixed block 3 above it: the reaction on 2 is down
+  groundAbove.b = 3;
+  groundAbove.normalForce = 2;
+  groundAbove.resultant = Vec3(0, 0, 2);
+  groundAbove.centreOfPressure = Vec3(0, 0, 2);
+  r.interfaces = {onGround, between, groundAbove};
+  const std::vector<ForceArrow> arrows = forceArrows(r, 1.0, {true, false, false, true});
+  ASSERT_EQ(arrows.size(), 3u);
+  EXPECT_TRUE(arrows[0].reaction);
+  EXPECT_FALSE(arrows[0].tension);
+  // The largest reaction (4 N) is 1 m long and ends at its centre of pressure, pointing up.
+  EXPECT_NEAR((arrows[0].from - Vec3(0, 0, -1)).norm(), 0, 1e-12);
+  EXPECT_NEAR((arrows[0].to - Vec3(0, 0, 0)).norm(), 0, 1e-12);
+  // Between two free blocks: compression, the only one of its kind, so 1 m long too.
+  EXPECT_FALSE(arrows[1].reaction);
+  EXPECT_NEAR((arrows[1].to - arrows[1].from).norm(), 1.0, 1e-12);
+  // The fixed block is b: the force on the structure (block a) is the opposite of the resultant.
+  EXPECT_TRUE(arrows[2].reaction);
+  EXPECT_NEAR((arrows[2].to - Vec3(0, 0, 2)).norm(), 0, 1e-12);
+  EXPECT_NEAR((arrows[2].from - Vec3(0, 0, 2.5)).norm(), 0, 1e-12);
+  // Without the fixed flags every resultant is compression, as before.
+  for (const ForceArrow& a : forceArrows(r, 1.0)) EXPECT_FALSE(a.reaction);
+  // Three kinds, three colours.
+  const ForceArrow t{Vec3(0, 0, 0), Vec3(0, 0, 1), true, false};
+  EXPECT_NE(arrowColor(arrows[0]), arrowColor(arrows[1]));
+  EXPECT_NE(arrowColor(arrows[0]), arrowColor(t));
+  EXPECT_NE(arrowColor(arrows[1]), arrowColor(t));
+  EXPECT_EQ(arrowColor(t), kTensionColor);
+}
+
+TEST(MasonryPicture, ColoursTheBlocksThatAreNotFixedAndDrawsTheArrows) {
+  const MasonryView v = analyseMasonry(exampleArch());
+  ASSERT_TRUE(v.error.empty()) << v.error;
+  const MasonryPicture p = masonryPicture(v);
+  std::size_t faces = 0;
+  for (std::size_t b = 0; b < v.blockFaces.size(); ++b)
+    if (!v.fixed[b]) faces += v.blockFaces[b].size();
+  EXPECT_EQ(p.polygons.size(), faces);
+  const std::vector<ForceArrow> arrows = forceArrows(v.result, kLongestArrowOfModel * v.modelSize, v.fixed);
+  ASSERT_EQ(p.arrows.size(), arrows.size());
+  // The example stands on two columns on the ground: two reactions, and tension somewhere.
+  EXPECT_EQ(std::count_if(arrows.begin(), arrows.end(), [](const ForceArrow& a) { return a.reaction; }), 2);
+  EXPECT_GT(std::count_if(arrows.begin(), arrows.end(), [](const ForceArrow& a) { return a.tension; }), 0);
+  EXPECT_TRUE(masonryPicture(v, false, false).polygons.empty());
+  MasonryView broken = v;
+  broken.error = "no";
+  EXPECT_TRUE(masonryPicture(broken).arrows.empty());
+  EXPECT_TRUE(masonryPicture(broken).polygons.empty());
+}
+
+// The grid's values against the analysis called directly at each grid point (the oracle shares
+// nothing with the sampler but the model), on two threads and on one.
+TEST(SampleLandscapeGrid, EachSampleIsTheAnalysisAtItsGridPoint) {
+  const statics::ParametricModel model = statics::modelOf(exampleArch());
+  const LandscapeAxis x{"thickness", 0.05, 0.5, 4}, y{"columnWidth", 0.1, 1.5, 3};
+  const LandscapeGrid g = sampleLandscapeGrid(model, {}, x, y, nullptr, 2);
+  ASSERT_EQ(g.measure.size(), 12u);
+  ASSERT_EQ(g.stands.size(), 12u);
+  int standing = 0;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i) {
+      statics::ParameterSet values = model.parameters;
+      const double t = 0.05 + 0.15 * i, w = 0.1 + 0.7 * j;
+      EXPECT_NEAR(x.valueAt(i), t, 1e-12);
+      EXPECT_NEAR(y.valueAt(j), w, 1e-12);
+      values.set("thickness", t);
+      values.set("columnWidth", w);
+      const statics::AnalysisResult r = statics::analyse(model.build(values), {});
+      EXPECT_EQ(g.at(i, j), r.yNormalised) << "t = " << t << ", w = " << w;
+      EXPECT_EQ(g.standsAt(i, j), r.feasible) << "t = " << t << ", w = " << w;
+      EXPECT_EQ(g.standsAt(i, j), r.yNormalised <= statics::kFeasibleMeasure);
+      standing += g.standsAt(i, j);
+    }
+  EXPECT_GT(standing, 0);  // both kinds occur, so the comparison means something
+  EXPECT_LT(standing, 12);
+  const LandscapeGrid one = sampleLandscapeGrid(model, {}, x, y, nullptr, 1);
+  EXPECT_EQ(one.measure, g.measure);
+  EXPECT_EQ(one.stands, g.stands);
+}
+
+// Fig. 8 (Sec. 3.2): the arch of the example (8 voussoirs) on its two columns, over its free
+// bounds. The paper's surface: y = 0 (its red zero plane) where the arch is thick enough and
+// the columns wide enough, rising towards narrow columns, and a ridge along the column-width
+// axis: however wide the columns (ground, in effect), the arch thinner than its own limit
+// needs tension. So the least y lies in the thick-arch, wide-column part of the grid, the
+// thinnest arch never stands, a standing arch keeps standing on wider columns or made thicker,
+// and on columns wide enough the arch's own limit (between t = 0.05 and 0.1 for 8 voussoirs)
+// no longer moves with their width: the ridge.
+TEST(SampleLandscapeGrid, TheArchOnColumnsStandsWhereFigureEightSays) {
+  const MasonrySpec spec = exampleArch();
+  const LandscapeAxis x{"thickness", 0.05, 0.5, 10}, y{"columnWidth", 0.1, 1.5, 8};
+  const LandscapeGrid g = sampleLandscapeGrid(spec, x, y);
+  for (double m : g.measure) ASSERT_TRUE(std::isfinite(m));
+  int standing = 0;
+  for (int j = 0; j < y.samples; ++j) {
+    EXPECT_FALSE(g.standsAt(0, j)) << "the thinnest arch on columns " << y.valueAt(j) << " wide";
+    EXPECT_GT(g.at(0, j), statics::kFeasibleMeasure);
+    for (int i = 0; i < x.samples; ++i) {
+      standing += g.standsAt(i, j);
+      if (g.standsAt(i, j) && j + 1 < y.samples) {
+        EXPECT_TRUE(g.standsAt(i, j + 1)) << i << ", " << j;
+      }
+      if (g.standsAt(i, j) && i + 1 < x.samples) {
+        EXPECT_TRUE(g.standsAt(i + 1, j)) << i << ", " << j;
+      }
+    }
+  }
+  for (int j = 0; j < y.samples; ++j)
+    if (y.valueAt(j) >= 0.7) {
+      EXPECT_TRUE(g.standsAt(1, j)) << "t = 0.1 on columns " << y.valueAt(j) << " wide";
+    }
+  EXPECT_GT(standing, 0);
+  EXPECT_TRUE(g.standsAt(x.samples - 1, y.samples - 1));  // thick arch, wide columns
+  EXPECT_FALSE(g.standsAt(x.samples - 1, 0));             // no arch stands on the narrowest columns
+  const auto [mi, mj] = g.minimum();
+  EXPECT_TRUE(g.standsAt(mi, mj));
+  // The worst is the thinnest arch on the narrowest columns.
+  double worst = 0;
+  int worstI = -1, worstJ = -1;
+  for (int j = 0; j < y.samples; ++j)
+    for (int i = 0; i < x.samples; ++i)
+      if (g.at(i, j) > worst) {
+        worst = g.at(i, j);
+        worstI = i;
+        worstJ = j;
+      }
+  EXPECT_EQ(worstI, 0);
+  EXPECT_EQ(worstJ, 0);
+}
+
+TEST(SampleLandscapeGrid, RefusesUnknownOrRepeatedParametersAndTooFewSamples) {
+  const statics::ParametricModel model = statics::modelOf(exampleArch());
+  const LandscapeAxis t{"thickness", 0.05, 0.5, 3}, w{"columnWidth", 0.1, 1.5, 3};
+  EXPECT_THROW(sampleLandscapeGrid(model, {}, t, LandscapeAxis{"radius", 0, 1, 3}), Error);
+  EXPECT_THROW(sampleLandscapeGrid(model, {}, t, t), Error);
+  EXPECT_THROW(sampleLandscapeGrid(model, {}, t, LandscapeAxis{"columnWidth", 0.1, 1.5, 1}), Error);
+  // A value the model refuses is a NaN sample that does not stand, not an error.
+  const LandscapeGrid g = sampleLandscapeGrid(model, {}, t, LandscapeAxis{"columnWidth", -1.0, 1.0, 3});
+  EXPECT_TRUE(std::isnan(g.at(0, 0)));
+  EXPECT_FALSE(g.standsAt(0, 0));
+  EXPECT_EQ(landscapeColors(g)[0], kLandscapeMissingColor);
+  (void)w;
+}
+
+TEST(SampleLandscapeGrid, ACancelledJobStopsEveryThreadEarly) {
+  const statics::ParametricModel model = archModel(100);
+  statics::ParametricModel two = model;
+  two.parameters.add({"unused", 0.0, -1.0, 1.0, true, "moves nothing"});
+  BackgroundJob job("landscape", [&two](Progress& p) {
+    sampleLandscapeGrid(two, {}, {"thickness", 0.05, 0.3, 100}, {"unused", -1, 1, 100}, &p, 2);
+  });
+  while (job.progress().fraction() == 0 && !job.finished()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  job.progress().cancel();
+  const auto t0 = std::chrono::steady_clock::now();
+  job.wait();
+  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_LT(job.progress().fraction(), 1.0);
+  EXPECT_THROW(job.rethrow(), Cancelled);
+  EXPECT_LT(waited, 30.0);
+}
+
+TEST(LandscapeColors, StandingIsRedMissingGreyAndTheRampRisesWithoutRed) {
+  LandscapeGrid g;
+  g.x = {"a", 0, 1, 4};
+  g.y = {"b", 0, 1, 1};
+  g.measure = {0.0, 1e-6, 1e-2, std::nan("")};
+  g.stands = {1, 0, 0, 0};
+  const auto c = landscapeColors(g);
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_EQ(c[0], kLandscapeStandsColor);
+  EXPECT_EQ(c[1], landscapeRampColor(0.0));  // the least positive measure
+  EXPECT_EQ(c[2], landscapeRampColor(1.0));  // the largest
+  EXPECT_EQ(c[3], kLandscapeMissingColor);
+  double lastLight = -1;
+  for (int k = 0; k <= 20; ++k) {
+    const auto r = landscapeRampColor(k / 20.0);
+    const double light = 0.3 * r[0] + 0.59 * r[1] + 0.11 * r[2];
+    EXPECT_GT(light, lastLight);  // ordered from dark to light
+    lastLight = light;
+    // Never the stands red: red is never far above both green and blue.
+    EXPECT_LT(r[0] - std::max(r[1], r[2]), 0.3f) << k;
+  }
 }
 
 }  // namespace

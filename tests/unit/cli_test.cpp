@@ -1,6 +1,7 @@
 // corbel-cli: exit codes and messages for bad project files and bad command lines, and the
 // output of check, export and render on the example.
 #include "core/project_io.h"
+#include "render/image.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -267,6 +268,182 @@ TEST(Cli, RenderWritesAPng) {
   const std::string png = readText(out);
   ASSERT_GE(png.size(), 8u);
   EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
+// statics PROJECT --render / --landscape: the editor's statics pictures, headless.
+const std::string kMasonryArch = corbel::test::sourcePath("assets/examples/masonry-arch.corbel");
+
+struct Pixels {
+  std::size_t count = 0;
+  double meanY = 0;  // 0 at the top row
+};
+
+// The pixels of an image that a predicate picks, and where they lie.
+template <class Pick>
+Pixels pixels(const corbel::render::Image& image, Pick pick) {
+  Pixels p;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* c = image.at(x, y);
+      if (!pick(int(c[0]), int(c[1]), int(c[2]))) continue;
+      ++p.count;
+      p.meanY += y;
+    }
+  if (p.count) p.meanY /= double(p.count);
+  return p;
+}
+
+// Tension blue (arrows and the blocks that carry the most tension), far from the pale sky.
+bool tensionBlue(int r, int g, int b) { return b >= 190 && b - r >= 120 && b - g >= 60; }
+// Ground reactions green.
+bool reactionGreen(int r, int g, int b) { return g >= 110 && g - r >= 50 && g - b >= 40; }
+// Compression red.
+bool compressionRed(int r, int g, int b) { return r >= 150 && r - g >= 60 && r - b >= 60; }
+
+TEST(Cli, StaticsRenderShowsTensionBlueOnlyWhereTheArchNeedsIt) {
+  TempDir dir;
+  // As set, the example's arch is too thin for its columns: it needs tension (glue).
+  const std::string thin = dir.file("thin.png");
+  CliRun r = cli(dir, "statics " + quote(kMasonryArch) + " --render " + quote(thin) + " --size 320x240 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["stands"].get<bool>());
+  EXPECT_EQ(j["render"], thin);
+  const corbel::render::Image a = corbel::render::readPng(thin);
+  EXPECT_EQ(a.width, 320);
+  EXPECT_EQ(a.height, 240);
+  const Pixels blue = pixels(a, tensionBlue), green = pixels(a, reactionGreen), red = pixels(a, compressionRed);
+  EXPECT_GT(blue.count, 200u);
+  EXPECT_GT(green.count, 20u);
+  EXPECT_GT(red.count, 50u);
+  // The reactions stand on the ground, below the arch and its tension.
+  EXPECT_GT(green.meanY, 0.55 * a.height);
+  EXPECT_LT(blue.meanY, green.meanY);
+  EXPECT_LT(red.meanY, green.meanY);
+
+  // Made to stand first (--optimize), it needs none: no blue, the reactions still there.
+  const std::string stands = dir.file("stands.png");
+  r = cli(dir, "statics " + quote(kMasonryArch) + " --optimize --render " + quote(stands) + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["stands"].get<bool>());
+  const corbel::render::Image b = corbel::render::readPng(stands);
+  EXPECT_EQ(b.width, 1200);  // the default size
+  EXPECT_EQ(b.height, 800);
+  EXPECT_EQ(pixels(b, tensionBlue).count, 0u);
+  EXPECT_GT(pixels(b, reactionGreen).count, 50u);
+  EXPECT_GT(pixels(b, compressionRed).count, 100u);
+  // A thick arch on wide columns set by hand stands too, and shows no blue.
+  const std::string set = dir.file("set.png");
+  r = cli(dir, "statics " + quote(kMasonryArch) + " --set thickness=0.25 --set columnWidth=0.9 --render " + quote(set) +
+                   " --size 160x120");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("render: " + set), std::string::npos) << r.out;
+  EXPECT_EQ(pixels(corbel::render::readPng(set), tensionBlue).count, 0u);
+}
+
+TEST(Cli, StaticsLandscapeMarksWhereTheArchStands) {
+  TempDir dir;
+  const std::string png = dir.file("landscape.png");
+  const CliRun r = cli(dir, "statics " + quote(kMasonryArch) + " --landscape thickness columnWidth " + quote(png) +
+                                " --samples 9 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json l = nlohmann::json::parse(r.out)["landscape"];
+  EXPECT_EQ(l["x"]["parameter"], "thickness");
+  EXPECT_EQ(l["y"]["parameter"], "columnWidth");
+  // The project's free bounds.
+  EXPECT_EQ(l["x"]["lo"].get<double>(), 0.05);
+  EXPECT_EQ(l["x"]["hi"].get<double>(), 0.5);
+  EXPECT_EQ(l["y"]["lo"].get<double>(), 0.1);
+  EXPECT_EQ(l["y"]["hi"].get<double>(), 1.5);
+  const std::size_t standing = l["standing"];
+  EXPECT_GT(standing, 0u);
+  EXPECT_LT(standing, 81u);
+  EXPECT_LE(l["minimum"]["measure"].get<double>(), 1e-10);
+  const corbel::render::Image image = corbel::render::readPng(png);
+  EXPECT_EQ(image.width, image.height);
+  EXPECT_EQ(image.width % 9, 0);
+  const int cell = image.width / 9;
+  // Standing samples are red and none other is: the count of red cells is the count standing.
+  std::size_t redCells = 0;
+  for (int j = 0; j < 9; ++j)
+    for (int i = 0; i < 9; ++i) {
+      const std::uint8_t* c = image.at(i * cell + cell / 2, (8 - j) * cell + cell / 2);
+      redCells += c[0] > 200 && c[1] < 60 && c[2] < 60;
+    }
+  EXPECT_EQ(redCells, standing);
+  // Thick arch on wide columns (top right) stands; the thinnest arch (left column) never does.
+  const std::uint8_t* topRight = image.at(image.width - 1, 0);
+  EXPECT_TRUE(topRight[0] > 200 && topRight[1] < 60) << int(topRight[0]) << " " << int(topRight[1]);
+  for (int j = 0; j < 9; ++j) {
+    const std::uint8_t* c = image.at(cell / 2, j * cell + cell / 2);
+    EXPECT_FALSE(c[0] > 200 && c[1] < 60) << "row " << j;
+  }
+}
+
+// With --optimize the search's path over the landscape (Fig. 8): from the project's values to
+// the result, drawn in white.
+TEST(Cli, StaticsLandscapeDrawsTheSearchPath) {
+  TempDir dir;
+  const std::string png = dir.file("path.png");
+  const CliRun r = cli(dir, "statics " + quote(kMasonryArch) + " --optimize --landscape thickness columnWidth " +
+                                quote(png) + " --samples 9 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& path = j["landscape"]["path"];
+  ASSERT_GE(path.size(), 2u) << r.out;
+  EXPECT_EQ(path[0][0].get<double>(), 0.12);  // thickness as saved
+  EXPECT_EQ(path[0][1].get<double>(), 0.3);   // columnWidth as saved
+  EXPECT_NEAR(path.back()[0].get<double>(), j["parameters"]["thickness"].get<double>(), 1e-12);
+  EXPECT_NEAR(path.back()[1].get<double>(), j["parameters"]["columnWidth"].get<double>(), 1e-12);
+  const corbel::render::Image image = corbel::render::readPng(png);
+  EXPECT_GT(pixels(image, [](int r, int g, int b) { return r == 255 && g == 255 && b == 255; }).count, 20u);
+}
+
+TEST(Cli, StaticsPicturesRefuseBadArgumentsAndWriteNothing) {
+  TempDir dir;
+  const std::string arch = quote(kMasonryArch), png = quote(dir.file("a.png"));
+  for (const std::string& args : {
+           "statics " + arch + " --render " + png + " --size 0x10",
+           "statics " + arch + " --render " + png + " --size 10",
+           "statics " + arch + " --render " + png + " --size 640x",
+           "statics " + arch + " --render " + png + " --size 12.5x40",
+           "statics " + arch + " --render " + png + " --size 99999x100",
+           "statics " + arch + " --render " + quote(dir.file("a.jpg")),
+           "statics " + arch + " --render",
+           "statics " + arch + " --size 64x64",
+           "statics " + arch + " --landscape thickness " + png,
+           "statics " + arch + " --landscape thickness columnWidth " + quote(dir.file("a.txt")),
+           "statics " + arch + " --samples 9",
+           "statics " + arch + " --landscape thickness columnWidth " + png + " --samples 1",
+           "statics " + arch + " --landscape thickness columnWidth " + png + " --samples 2.5",
+           "statics arch --blocks 10 --thickness 0.2 --render " + png,
+       }) {
+    const CliRun r = cli(dir, args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(r.err.rfind("corbel-cli: ", 0), 0u) << args << "\n" << r.err;
+  }
+  // Bad input: exit 1 with the reason.
+  const CliRun missing = cli(dir, "statics " + quote(dir.file("nothing.corbel")) + " --render " + png);
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_NE(missing.err.find("no such file"), std::string::npos) << missing.err;
+  // Checked before any work: the render is not written either.
+  const CliRun unknown =
+      cli(dir, "statics " + arch + " --render " + quote(dir.file("b.png")) + " --landscape radius columnWidth " + png);
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.err.find("radius"), std::string::npos) << unknown.err;
+  const CliRun twice = cli(dir, "statics " + arch + " --landscape thickness thickness " + png);
+  EXPECT_EQ(twice.code, 1);
+  const CliRun count = cli(dir, "statics " + arch + " --landscape voussoirs thickness " + png);
+  EXPECT_EQ(count.code, 1);
+  EXPECT_NE(count.err.find("count"), std::string::npos) << count.err;
+  EXPECT_TRUE(dir.entries().empty());
+  // A folder that does not exist: the atomic write fails naming the path, and leaves nothing.
+  const std::string nowhere = dir.file("no/such/folder/a.png");
+  const CliRun folder = cli(dir, "statics " + arch + " --render " + quote(nowhere));
+  EXPECT_EQ(folder.code, 1);
+  EXPECT_NE(folder.err.find(nowhere), std::string::npos) << folder.err;
+  EXPECT_TRUE(dir.entries().empty());
 }
 
 }  // namespace
