@@ -32,7 +32,7 @@ namespace {
 constexpr float kLeftPanelWidth = 320.0f;
 constexpr float kStatusBarHeight = 118.0f;
 constexpr float kPaneWidth = 460.0f;  // the plan and profile panes, right of the 3D view
-constexpr float kGrowthPanelHeight = 215.0f;  // over the form completion panel
+constexpr float kGrowthPanelHeight = 235.0f;  // over the form completion panel
 
 std::string stateDirOr(const std::string& dir) { return dir.empty() ? defaultStateDir() : dir; }
 
@@ -317,6 +317,11 @@ void App::registerActions() {
        },
        [this] { return history_.canUndo(); }});
   add({"edit.redo", "Edit", "Redo", "Redo the change undone last.", {GLFW_KEY_Z, true, true}, false,
+       [this] {
+         if (history_.redo()) log("Redo");
+       },
+       [this] { return history_.canRedo(); }});
+  add({"edit.redo_y", "", "Redo", "Redo the change undone last (Ctrl+Y, as on Windows).", {GLFW_KEY_Y, true}, false,
        [this] {
          if (history_.redo()) log("Redo");
        },
@@ -641,6 +646,20 @@ void App::drawObjectProperties(const DocObject& object) {
     }
     for (const Profile& p : e->profiles) ImGui::BulletText("%s: %zu segment%s", p.name.c_str(), p.points.size() - 1,
                                                             p.points.size() == 2 ? "" : "s");
+  } else if (auto* u = std::get_if<UnitSpec>(&o->spec)) {
+    ImGui::Separator();
+    ImGui::TextDisabled("Housing unit (a completed form's, Ng Ch. 7)");
+    double floor = 0;
+    for (const UnitPart& p : u->parts) floor += (p.hi[0] - p.lo[0]) * (p.hi[1] - p.lo[1]);
+    ImGui::Text("%zu part%s, floor area %.1f m²", u->parts.size(), u->parts.size() == 1 ? "" : "s", floor);
+    if (ImGui::BeginCombo("Material", u->material.c_str())) {
+      for (const auto& m : builtinMaterials())
+        if (ImGui::Selectable(std::string(m.name).c_str(), u->material == m.name)) {
+          u->material = m.name;
+          edited("material", "material");
+        }
+      ImGui::EndCombo();
+    }
   }
   if (changed) commit(std::move(d), label, key + field);
 

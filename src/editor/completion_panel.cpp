@@ -73,7 +73,7 @@ void CompletionPanel::gapRegion() {
   for (std::size_t i = 0; i < site.cores.size(); ++i) obstacles.push_back(site.coreBox(i));
   const growth::Box b = site.bounds();
   growth::PlanRect gap;
-  if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, 8, 20, gap)) {
+  if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, 5, 16, gap)) {
     region_ = gap;
     regionSet_ = true;
   }
@@ -219,6 +219,8 @@ void CompletionPanel::extrude(const CompletionHost& host) {
     const std::vector<ObjectId> ids = extrudeUnits(d, fitted_->units, how);
     host.commit(std::move(d), "Extrude " + how.name + " into " + std::to_string(ids.size()) + " units", "");
     host.log("Form completion: " + how.name + " extruded into " + std::to_string(ids.size()) + " unit objects", false);
+    fitted_.reset();  // the 3D view shows the units themselves now
+    status_ = how.name + " extruded: " + std::to_string(ids.size()) + " unit objects (Ctrl+Z removes them)";
   } catch (const std::exception& e) {
     host.log(std::string("Extrude to units: ") + e.what(), true);
   }
@@ -351,8 +353,8 @@ void CompletionPanel::drawThumbnails(float w) {
     if (sel) dl->AddRect(p, ImVec2(p.x + cw, p.y + ch), IM_COL32(255, 215, 50, 255), 0, 0, 2.0f);
     const growth::Fraction v = f.complexity.value();
     char text[48];
-    std::snprintf(text, sizeof text, "%lld/%lld %.3f", static_cast<long long>(v.num), static_cast<long long>(v.den),
-                  v.value());
+    std::snprintf(text, sizeof text, "F_q %lld/%lld %.3f", static_cast<long long>(v.num),
+                  static_cast<long long>(v.den), v.value());
     dl->AddText(ImVec2(p.x + 2, p.y + ch + 2), IM_COL32(220, 220, 220, 255), text);
     ImGui::PopID();
   }
