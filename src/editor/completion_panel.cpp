@@ -189,6 +189,7 @@ void CompletionPanel::fit(const CompletionHost& host) {
     fitted_ = growth::fitForm(forms_.forms[std::size_t(picked_)].plan, region_, at, fo);
     fittedForm_ = picked_;
     fittedZ_ = fo.z0;
+    fittedRegion_ = region_;
     char text[160];
     std::snprintf(text, sizeof text, "form %d fitted: orientation %d, sizing error %.2f -> %.2f", picked_ + 1,
                   fitted_->orientation, fitted_->sizing.before, fitted_->sizing.after);
@@ -214,7 +215,17 @@ void CompletionPanel::extrude(const CompletionHost& host) {
   UnitExtrusion how;
   how.storeys = storeys_;
   how.storeyHeight = model_ ? model_->grown.site.storeyHeight : 3.0;
-  how.name = (site ? site->name + " " : std::string()) + "form " + std::to_string(++extruded_);
+  // "<site> form k": the first k no object's name starts with.
+  const std::string prefix = (site ? site->name + " " : std::string()) + "form ";
+  for (int k = 1;; ++k) {
+    const std::string name = prefix + std::to_string(k);
+    const bool used = std::any_of(d.objects.begin(), d.objects.end(),
+                                  [&](const DocObject& o) { return o.name.rfind(name + " ", 0) == 0; });
+    if (!used) {
+      how.name = name;
+      break;
+    }
+  }
   try {
     const std::vector<ObjectId> ids = extrudeUnits(d, fitted_->units, how);
     host.commit(std::move(d), "Extrude " + how.name + " into " + std::to_string(ids.size()) + " units", "");
@@ -434,6 +445,10 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
   std::snprintf(label, sizeof label, "Extrude to units (%d storey%s)", storeys_, storeys_ == 1 ? "" : "s");
   if (ImGui::Button(label)) extrude(host);
   ImGui::EndDisabled();
+  // A fitted form follows the region as it is typed or dragged.
+  if (fitted_ && (fittedRegion_.x0 != region_.x0 || fittedRegion_.y0 != region_.y0 || fittedRegion_.x1 != region_.x1 ||
+                  fittedRegion_.y1 != region_.y1) && canFit())
+    fit(host);
   if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
   ImGui::Separator();
   ImGui::BeginChild("forms", ImVec2(0, 0), false);

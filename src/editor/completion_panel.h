@@ -89,7 +89,7 @@ class CompletionPanel {
   std::optional<growth::FittedForm> fitted_;
   int fittedForm_ = -1;
   double fittedZ_ = 0;
-  int extruded_ = 0;  // forms extruded so far (names them)
+  growth::PlanRect fittedRegion_{};
   std::string status_;
 };
 
