@@ -270,12 +270,20 @@ void CompletionPanel::drawPlan(const CompletionHost& host, float w, float h) {
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   const Cell cell{p0.x, p0.y, w, h};
   dl->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), IM_COL32(30, 32, 36, 255));
-  growth::PlanRect bounds = region_;
-  if (model_) {
-    const growth::Box b = model_->grown.site.bounds();
-    bounds = {b.lo[0], b.lo[1], b.hi[0], b.hi[1]};
+  // The whole site, or the region and its surroundings; kept while a corner is dragged, so the
+  // view does not move under the mouse.
+  if (!dragging_) {
+    mapBounds_ = region_;
+    if (zoom_) {
+      const double pad = std::max(6.0, 0.6 * std::max(region_.x1 - region_.x0, region_.y1 - region_.y0));
+      mapBounds_ = {region_.x0 - pad, region_.y0 - pad, region_.x1 + pad, region_.y1 + pad};
+    } else if (model_) {
+      const growth::Box b = model_->grown.site.bounds();
+      mapBounds_ = {b.lo[0], b.lo[1], b.hi[0], b.hi[1]};
+    }
   }
-  const CellMap m = fitInCell(bounds, cell, 8.0f);
+  const CellMap m = fitInCell(mapBounds_, cell, 8.0f);
+  dl->PushClipRect(p0, ImVec2(p0.x + w, p0.y + h), true);
   auto rect = [&](double x0, double y0, double x1, double y1, ImU32 fill, ImU32 line) {
     float ax, ay, bx, by;
     m.apply(x0, y1, ax, ay);
@@ -309,7 +317,9 @@ void CompletionPanel::drawPlan(const CompletionHost& host, float w, float h) {
     m.apply(e.at[0], e.at[1], px, py);
     dl->AddCircleFilled(ImVec2(px, py), 3.5f, IM_COL32(80, 230, 100, 255));
   }
+  dl->PopClipRect();
   // The region's corners are handles: drag one to move that corner (0.5 m steps).
+  bool anyActive = false;
   double* xs[4] = {&region_.x0, &region_.x1, &region_.x1, &region_.x0};
   double* ys[4] = {&region_.y0, &region_.y0, &region_.y1, &region_.y1};
   for (int k = 0; k < 4; ++k) {
@@ -319,6 +329,7 @@ void CompletionPanel::drawPlan(const CompletionHost& host, float w, float h) {
     ImGui::PushID(k);
     ImGui::InvisibleButton("corner", ImVec2(10, 10));
     const bool active = ImGui::IsItemActive(), hovered = ImGui::IsItemHovered();
+    anyActive |= active;
     if (active && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
       regionChosen_ = true;
       double x, y;
@@ -334,13 +345,14 @@ void CompletionPanel::drawPlan(const CompletionHost& host, float w, float h) {
     dl->AddRectFilled(ImVec2(px - 4, py - 4), ImVec2(px + 4, py + 4),
                       active || hovered ? IM_COL32(255, 255, 255, 255) : IM_COL32(255, 215, 50, 255));
   }
+  dragging_ = anyActive;
   ImGui::SetCursorScreenPos(ImVec2(p0.x, p0.y + h + 4));
   ImGui::Dummy(ImVec2(w, 0));
 }
 
 void CompletionPanel::drawThumbnails(float w) {
-  const int perRow = 4;
-  const float gap = 6.0f, cw = std::floor((w - gap * (perRow - 1)) / perRow), ch = cw * 0.6f;
+  const int perRow = 5;
+  const float gap = 5.0f, cw = std::floor((w - gap * (perRow - 1)) / perRow), ch = cw * 0.55f;
   const float textH = ImGui::GetTextLineHeight();
   ImDrawList* dl = ImGui::GetWindowDrawList();
   for (int i = 0; i < int(forms_.forms.size()); ++i) {
@@ -364,8 +376,7 @@ void CompletionPanel::drawThumbnails(float w) {
     if (sel) dl->AddRect(p, ImVec2(p.x + cw, p.y + ch), IM_COL32(255, 215, 50, 255), 0, 0, 2.0f);
     const growth::Fraction v = f.complexity.value();
     char text[48];
-    std::snprintf(text, sizeof text, "F_q %lld/%lld %.3f", static_cast<long long>(v.num),
-                  static_cast<long long>(v.den), v.value());
+    std::snprintf(text, sizeof text, "F_q %lld/%lld", static_cast<long long>(v.num), static_cast<long long>(v.den));
     dl->AddText(ImVec2(p.x + 2, p.y + ch + 2), IM_COL32(220, 220, 220, 255), text);
     ImGui::PopID();
   }
@@ -398,12 +409,15 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
       region_ = {r[0], r[1], r[2], r[3]}, regionChosen_ = true;
   }
   const int storeys = model_ ? model_->grown.site.storeys : 1;
+  ImGui::SetNextItemWidth(w * 0.3f);
   if (ImGui::SliderInt("Storey", &storey_, 0, std::max(0, storeys - 1))) {
     fitted_.reset();
     if (!regionChosen_) gapRegion();
   }
+  ImGui::SameLine();
+  ImGui::Checkbox("Zoom to region", &zoom_);
   ImGui::PopItemWidth();
-  drawPlan(host, w - 16, std::min(150.0f, 0.4f * (w - 16)));
+  drawPlan(host, w - 16, std::min(140.0f, 0.4f * (w - 16)));
 
   int mode = fromModel_ ? 0 : 1;
   ImGui::RadioButton("Seeds from the model's entrances", &mode, 0);
