@@ -99,3 +99,26 @@ std::optional<std::string> checkPlanBackground(const PlanBackground& b) {
 }
 
 }  // namespace corbel
+
+namespace corbel {
+
+std::optional<std::string> checkUnitSpec(const UnitSpec& s) {
+  if (s.parts.empty()) return "parts: a unit needs at least one part";
+  if (s.parts.size() > limits::kMaxUnitParts)
+    return "parts: " + std::to_string(s.parts.size()) + " parts exceeds the limit of " +
+           std::to_string(limits::kMaxUnitParts);
+  for (std::size_t i = 0; i < s.parts.size(); ++i) {
+    const UnitPart& p = s.parts[i];
+    const std::string at = "parts[" + std::to_string(i) + "]: ";
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(p.lo[k]) || !std::isfinite(p.hi[k]) || std::abs(p.lo[k]) > limits::kMaxCoordinate ||
+          std::abs(p.hi[k]) > limits::kMaxCoordinate)
+        return at + "coordinates must be finite and within 1e+07 m";
+      if (p.hi[k] - p.lo[k] < limits::kMinSize) return at + "hi must exceed lo on every axis";
+    }
+  }
+  if (s.material.size() > limits::kMaxNameLength) return "material: name too long";
+  return std::nullopt;
+}
+
+}  // namespace corbel

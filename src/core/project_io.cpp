@@ -240,6 +240,35 @@ GrowthSpec growthFromJson(const JsonReader& r, std::vector<std::string>& warning
   return g;
 }
 
+// A unit's parts as [x0, y0, z0, x1, y1, z1] rows.
+ojson unitToJson(const UnitSpec& u) {
+  ojson j;
+  ojson parts = ojson::array();
+  for (const UnitPart& p : u.parts) parts.push_back(ojson::array({p.lo[0], p.lo[1], p.lo[2], p.hi[0], p.hi[1], p.hi[2]}));
+  j["parts"] = std::move(parts);
+  j["material"] = u.material;
+  return j;
+}
+
+UnitSpec unitFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"parts", "material"})) warnings.push_back(k + ": unknown key ignored");
+  UnitSpec u;
+  for (const JsonReader& p : r.at("parts").array(limits::kMaxUnitParts)) {
+    const std::vector<JsonReader> v = p.array(6);
+    if (v.size() != 6) p.fail("expected [x0, y0, z0, x1, y1, z1]");
+    UnitPart part;
+    for (int k = 0; k < 3; ++k) part.lo[k] = v[std::size_t(k)].number(), part.hi[k] = v[std::size_t(k + 3)].number();
+    u.parts.push_back(part);
+  }
+  if (auto v = r.find("material")) u.material = v->string(limits::kMaxNameLength);
+  if (auto problem = checkUnitSpec(u)) {
+    const auto colon = problem->find(": ");
+    throw InputError(r.path() + "." + problem->substr(0, colon), problem->substr(colon + 2));
+  }
+  return u;
+}
+
 ojson extrusionToJson(const ExtrusionSpec& e) {
   ojson j;
   j["material"] = e.material;
@@ -631,20 +660,21 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
       if (obj.name.empty()) nameReader.fail("name must not be empty");
       if (!names.insert(obj.name).second) nameReader.fail("name \"" + obj.name + "\" is used twice");
       if (auto v = o.find("visible")) obj.visible = v->boolean();
-      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry", "kifs", "growth"};
+      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry", "kifs", "growth", "unit"};
       int specCount = 0;
       for (const auto& key : specKeys) specCount += o.find(key) ? 1 : 0;
       if (specCount == 0)
-        o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\", \"kifs\", \"growth\"");
+        o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\", \"kifs\", \"growth\", \"unit\"");
       if (specCount > 1) o.fail("more than one spec: an object has exactly one");
       if (auto b = o.find("box")) obj.spec = boxFromJson(*b, out.warnings);
       else if (auto m = o.find("masonry")) obj.spec = masonryFromJson(*m, out.warnings);
       else if (auto k = o.find("kifs")) obj.spec = kifsFromJson(*k, out.warnings);
       else if (auto g = o.find("growth")) obj.spec = growthFromJson(*g, out.warnings);
+      else if (auto u = o.find("unit")) obj.spec = unitFromJson(*u, out.warnings);
       else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
       if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
       for (auto& k :
-           o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "plan_background"}))
+           o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "unit", "plan_background"}))
         out.warnings.push_back(k + ": unknown key ignored");
       doc.objects.push_back(std::move(obj));
     }
@@ -676,6 +706,7 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     else if (const auto* m = std::get_if<MasonrySpec>(&o.spec)) j["masonry"] = masonryToJson(*m);
     else if (const auto* k = std::get_if<KifsSpec>(&o.spec)) j["kifs"] = kifsToJson(*k);
     else if (const auto* g = std::get_if<GrowthSpec>(&o.spec)) j["growth"] = growthToJson(*g);
+    else if (const auto* u = std::get_if<UnitSpec>(&o.spec)) j["unit"] = unitToJson(*u);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
     objects.push_back(std::move(j));

@@ -32,6 +32,7 @@ namespace {
 constexpr float kLeftPanelWidth = 320.0f;
 constexpr float kStatusBarHeight = 118.0f;
 constexpr float kPaneWidth = 460.0f;  // the plan and profile panes, right of the 3D view
+constexpr float kGrowthPanelHeight = 235.0f;  // over the form completion panel
 
 std::string stateDirOr(const std::string& dir) { return dir.empty() ? defaultStateDir() : dir; }
 
@@ -320,6 +321,11 @@ void App::registerActions() {
          if (history_.redo()) log("Redo");
        },
        [this] { return history_.canRedo(); }});
+  add({"edit.redo_y", "", "Redo", "Redo the change undone last (Ctrl+Y, as on Windows).", {GLFW_KEY_Y, true}, false,
+       [this] {
+         if (history_.redo()) log("Redo");
+       },
+       [this] { return history_.canRedo(); }});
 
   add({"object.add_box", "Object", "Add Box", "Add a mass-model box next to the existing objects.", {GLFW_KEY_B, true},
        true, [this, doc] {
@@ -469,6 +475,21 @@ void App::registerActions() {
        "Grow the selected site step by step as the view catches up, until every unit stops; again to pause.", {},
        true, [this] { growthPanel_.toggleRun(growthHost()); }, growthSelected,
        [this] { return growthPanel_.running(); }});
+  // Form completion (Ch. 7, Fig. 8.6) in a region of the selected growth site.
+  add({"completion.seeds", "Growth", "Completion: Seeds From the Model",
+       "Grow the selected site's model (in the background) and take the entrances its units open onto the "
+       "completion region as the seeds.",
+       {}, false, [this] { completion_.takeSeeds(completionHost()); }, growthSelected});
+  add({"completion.generate", "Growth", "Completion: Generate Forms",
+       "Generate forms of the chosen complexity range from the seeds (in the background, with Cancel).", {}, false,
+       [this] { completion_.generate(completionHost()); }, [this, growthSelected] { return growthSelected() && !job_; }});
+  add({"completion.fit", "Growth", "Completion: Fit to Region",
+       "Fit the picked form into the completion region and size it (Fig. 8.6).", {}, false,
+       [this] { completion_.fit(completionHost()); }, [this, growthSelected] { return growthSelected() && completion_.canFit(); }});
+  add({"completion.extrude", "Growth", "Completion: Extrude to Units",
+       "Add the fitted form's units to the model as unit objects (one undo step).", {}, true,
+       [this] { completion_.extrude(completionHost()); },
+       [this, growthSelected] { return growthSelected() && completion_.canExtrude(); }});
   add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
        [this] { showHelp_ = true; }});
 }
@@ -630,6 +651,20 @@ void App::drawObjectProperties(const DocObject& object) {
     }
     for (const Profile& p : e->profiles) ImGui::BulletText("%s: %zu segment%s", p.name.c_str(), p.points.size() - 1,
                                                             p.points.size() == 2 ? "" : "s");
+  } else if (auto* u = std::get_if<UnitSpec>(&o->spec)) {
+    ImGui::Separator();
+    ImGui::TextDisabled("Housing unit (a completed form's, Ng Ch. 7)");
+    double floor = 0;
+    for (const UnitPart& p : u->parts) floor += (p.hi[0] - p.lo[0]) * (p.hi[1] - p.lo[1]);
+    ImGui::Text("%zu part%s, floor area %.1f m²", u->parts.size(), u->parts.size() == 1 ? "" : "s", floor);
+    if (ImGui::BeginCombo("Material", u->material.c_str())) {
+      for (const auto& m : builtinMaterials())
+        if (ImGui::Selectable(std::string(m.name).c_str(), u->material == m.name)) {
+          u->material = m.name;
+          edited("material", "material");
+        }
+      ImGui::EndCombo();
+    }
   }
   if (changed) commit(std::move(d), label, key + field);
 
@@ -963,6 +998,21 @@ GrowthHost App::growthHost() {
   return host;
 }
 
+CompletionHost App::completionHost() {
+  CompletionHost host;
+  host.doc = &history_.current();
+  host.object = selected_.value_or(0);
+  host.wait = scripted();
+  host.busy = job_ != nullptr;
+  host.settled = live_.current() && !growthPanel_.running();
+  host.startJob = [this](std::string title, BackgroundJob::Work work, std::function<void()> done) {
+    startJob(std::move(title), std::move(work), std::move(done));
+  };
+  host.commit = deferredCommit();
+  host.log = [this](const std::string& line, bool error) { log(line, error); };
+  return host;
+}
+
 // The panels right of the 3D view commit through these: the change is applied after they are
 // drawn, so nothing they still read of the current document moves under them (a commit may
 // reallocate the history), and in the order they made it.
@@ -1058,14 +1108,18 @@ int App::run() {
     const bool growthPane =
         sel && std::holds_alternative<GrowthSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
     if (growthPane) {
-      if (growthFor_ != sel->id) growthPanel_.reset();
+      if (growthFor_ != sel->id) growthPanel_.reset(), completion_.reset();
       growthFor_ = sel->id;
       const GrowthHost host = growthHost();
       growthPanel_.update(host);
       const float top = ImGui::GetFrameHeight();
-      growthPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
-                        vp->Size.y - top - kStatusBarHeight);
+      // The growth panel on top, the form completion panel under it.
+      const float paneH = vp->Size.y - top - kStatusBarHeight, growthH = std::min(kGrowthPanelHeight, 0.4f * paneH);
+      growthPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth, growthH);
+      completion_.draw(completionHost(), vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top + growthH, kPaneWidth,
+                       paneH - growthH);
     } else {
+      if (growthFor_) completion_.reset();
       growthFor_.reset();
       growthPanel_.reset();
     }
@@ -1119,6 +1173,7 @@ int App::run() {
     renderer_->overlayOnTop().clear();
     if (const DocObject* m = selectedMasonry(); m && m->visible)
       statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
+    if (growthFor_ && selected_ == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
     renderer_->setScene(shownScene(), settings_);
     const int px = int(vpX_ * sx), py = int((vp->Size.y - vpY_ - vpH_) * sy), pw = int(vpW_ * sx), ph = int(vpH_ * sy);
     renderer_->draw(camera_, px, py, pw, ph, settings_);

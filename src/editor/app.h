@@ -9,6 +9,7 @@
 #include "core/scene.h"
 #include "core/scene_sync.h"
 #include "editor/actions.h"
+#include "editor/completion_panel.h"
 #include "editor/extrusion_panes.h"
 #include "editor/file_dialog.h"
 #include "editor/growth_panel.h"
@@ -91,6 +92,7 @@ class App {
   const DocObject* selectedMasonry() const;
   StaticsHost staticsHost();
   GrowthHost growthHost();
+  CompletionHost completionHost();
   std::function<void(Document, const std::string&, const std::string&)> deferredCommit();
   std::function<void()> deferredEndDrag();
   std::string windowTitle() const;
@@ -152,6 +154,7 @@ class App {
   const Scene& shownScene();
   KifsPanel kifsPanel_;
   GrowthPanel growthPanel_;
+  CompletionPanel completion_;  // under the growth panel
   std::optional<ObjectId> growthFor_;
   std::unique_ptr<render::KifsPass> kifsPass_;  // made when a KIFS building is first shown
   std::unique_ptr<render::KifsLayer> kifsLayer_;  // the cached march (progressive refinement)

@@ -2,6 +2,7 @@
 #include "growth/completion.h"
 
 #include "core/error.h"
+#include "core/progress.h"
 
 #include <algorithm>
 #include <map>
@@ -101,7 +102,7 @@ std::string topologySignature(const Floorplan& plan) {
   return s;
 }
 
-FormSet generateForms(const FormRequest& rq) {
+FormSet generateForms(const FormRequest& rq, Progress* progress) {
   if (rq.seeds < 1 || rq.seeds > 12) throw InputError("seeds", "expected 1 to 12 units");
   if (rq.count < 1 || rq.count > 64) throw InputError("count", "expected 1 to 64 forms");
   if (rq.hi < rq.lo) throw InputError("complexity", "the range is empty (low > high)");
@@ -112,6 +113,12 @@ FormSet generateForms(const FormRequest& rq) {
   std::set<std::string> seen;
   std::mt19937_64 rng(rq.seed);
   for (out.attempts = 0; out.attempts < rq.attempts && int(out.forms.size()) < rq.count; ++out.attempts) {
+    if (progress) {
+      if (progress->cancelled()) throw Cancelled();
+      progress->report(std::max(double(out.forms.size()) / rq.count, double(out.attempts) / rq.attempts),
+                       "attempt " + std::to_string(out.attempts + 1) + ", " + std::to_string(out.forms.size()) +
+                           " forms");
+    }
     // A different initial arrangement each attempt: the row, each unit shifted up or down
     // against the one before by a third or a half, so contacts end inside faces.
     Floorplan plan;

@@ -17,6 +17,10 @@
 #include <string>
 #include <vector>
 
+namespace corbel {
+class Progress;
+}
+
 namespace corbel::growth {
 
 struct FormRequest {
@@ -43,8 +47,9 @@ struct FormSet {
   std::string note;  // why fewer than `count` came back, if so
 };
 
-// Throws InputError on an unusable request (bad counts, lo > hi, hi ≥ 1).
-FormSet generateForms(const FormRequest& request);
+// Throws InputError on an unusable request (bad counts, lo > hi, hi ≥ 1). With a progress,
+// reports after each attempt and throws Cancelled between attempts once it is cancelled.
+FormSet generateForms(const FormRequest& request, Progress* progress = nullptr);
 
 // n canonical squares of side `size` in a row, touching (F_q = (n−1)/(4n)).
 Floorplan canonicalRow(int n, GridCoord size);

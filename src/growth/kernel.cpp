@@ -26,24 +26,11 @@ void addSolid(MeshData& out, const Box& b, const std::string& material) {
 void registerKernel(SceneSync& sync) {
   sync.setBuilder<GrowthSpec>([](const DocObject& o, Progress* progress) {
     const auto& spec = std::get<GrowthSpec>(o.spec);
-    Site site;
-    try {
-      site = parseSite(spec.site);
-    } catch (const InputError& e) {
-      throw InputError(e.where.empty() ? "growth.site" : "growth.site." + e.where, e.reason);
-    }
-    GrowthOptions options;
-    options.seed = spec.seed;
-    GrowthEngine engine(site, options);
-    const int limit = spec.steps < 0 ? static_cast<int>(limits::kMaxGrowthSteps) : spec.steps;
-    while (engine.steps() < limit && !engine.done()) {
-      if (progress && progress->cancelled()) throw Cancelled();
-      if (!engine.step()) break;
-      if (progress && spec.steps > 0) progress->report(double(engine.steps()) / spec.steps, "growing");
-    }
+    GrownModel grown = grow(spec, progress);
+    const Site& site = grown.site;
     BuildResult b;
     b.kind = Kind::Unit;
-    for (const Unit& u : engine.units()) {
+    for (const Unit& u : grown.units) {
       MeshData m = unitMesh(u);
       const int mat = m.addMaterial("plaster");
       for (int& f : m.faceMaterial) f = mat;
@@ -51,9 +38,47 @@ void registerKernel(SceneSync& sync) {
     }
     for (std::size_t i = 0; i < site.cores.size(); ++i) addSolid(b.mesh, site.coreBox(i), "concrete");
     for (const Box& c : site.circulation) addSolid(b.mesh, c, "slate");
-    if (engine.done()) b.warnings.push_back(kStopped + std::to_string(engine.steps()) + " steps");
+    if (grown.stopped) b.warnings.push_back(kStopped + std::to_string(grown.steps) + " steps");
     return b;
   });
+  sync.setBuilder<UnitSpec>([](const DocObject& o, Progress*) {
+    const auto& spec = std::get<UnitSpec>(o.spec);
+    if (auto problem = checkUnitSpec(spec)) {
+      const auto colon = problem->find(": ");
+      throw InputError("unit." + problem->substr(0, colon), problem->substr(colon + 2));
+    }
+    Unit u;
+    u.id = 1;
+    for (const UnitPart& p : spec.parts) u.parts.push_back({p.lo, p.hi});
+    BuildResult b;
+    b.kind = Kind::Unit;
+    b.mesh = unitMesh(u);
+    const int mat = b.mesh.addMaterial(spec.material);
+    for (int& f : b.mesh.faceMaterial) f = mat;
+    return b;
+  });
+}
+
+GrownModel grow(const GrowthSpec& spec, Progress* progress) {
+  GrownModel out;
+  try {
+    out.site = parseSite(spec.site);
+  } catch (const InputError& e) {
+    throw InputError(e.where.empty() ? "growth.site" : "growth.site." + e.where, e.reason);
+  }
+  GrowthOptions options;
+  options.seed = spec.seed;
+  GrowthEngine engine(out.site, options);
+  const int limit = spec.steps < 0 ? static_cast<int>(limits::kMaxGrowthSteps) : spec.steps;
+  while (engine.steps() < limit && !engine.done()) {
+    if (progress && progress->cancelled()) throw Cancelled();
+    if (!engine.step()) break;
+    if (progress && spec.steps > 0) progress->report(double(engine.steps()) / spec.steps, "growing");
+  }
+  out.units = engine.units();
+  out.steps = engine.steps();
+  out.stopped = engine.done();
+  return out;
 }
 
 int stoppedAfter(const std::vector<std::string>& warnings) {

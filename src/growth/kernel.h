@@ -2,6 +2,9 @@
 // Growth sites in the Document (core/growth_spec.h) become grown units in the Scene.
 #include "core/growth_spec.h"
 #include "core/scene_sync.h"
+#include "core/unit_spec.h"
+#include "growth/site.h"
+#include "growth/unit.h"
 
 namespace corbel::growth {
 
@@ -11,7 +14,20 @@ namespace corbel::growth {
 // mapper. The object's faces are every unit (kind Unit, material plaster), the cores (concrete)
 // and the circulation (slate), each a closed box complex. When every unit has stopped it says
 // so in the build's warnings ("every unit stopped after N steps"), which the editor's Run reads.
+// Unit objects (core/unit_spec.h) are built the same way: one closed shell of their parts, of
+// kind Unit, in the spec's material.
 void registerKernel(SceneSync& sync);
+
+// What a growth object's build grows: the parsed site, and the units after the spec's steps
+// (or once every unit stopped). The builder and the editor's form completion share it, so the
+// completion sees the model the 3D view shows.
+struct GrownModel {
+  Site site;
+  std::vector<Unit> units;
+  int steps = 0;
+  bool stopped = false;  // every unit stopped
+};
+GrownModel grow(const GrowthSpec& spec, Progress* progress = nullptr);
 
 // The words of that note, for the editor: the steps after which every unit stopped, or -1.
 int stoppedAfter(const std::vector<std::string>& warnings);

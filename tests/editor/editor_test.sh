@@ -15,7 +15,10 @@
 #  6. a KIFS building is ray-marched in the 3D view: with its panel open, the shot differs from
 #     the same project with the building hidden;
 #  7. two growth.step actions on the Alpha site grown 10 steps save it grown 12, and the saved
-#     site builds as closed shells.
+#     site builds as closed shells;
+#  8. form completion on the grown Alpha site: seeds from the model, Generate, Fit, Extrude adds
+#     unit objects that build as closed shells (the shot differs from the site alone); undone, the
+#     document is the untouched example (nothing to recover); redone (Ctrl+Y), the same units.
 set -euo pipefail
 editor=$1 cli=$2 check=$3 example=$4 work=$5 script=${6:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -117,4 +120,24 @@ test -f "$work/state/recovery.corbel" || { echo "Step changed nothing (no recove
 grep -q '"steps": 12' "$work/state/recovery.corbel" || { echo "two steps should make 12"; exit 1; }
 summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
 [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the grown site should be closed shells: $summary"; exit 1; }
+echo "== form completion: seeds from the model, generate, fit, extrude, undo, redo"
+completing=(completion.seeds,completion.generate,completion.fit,completion.extrude)
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions "${completing[0]}" --autosave-seconds 0 \
+  --screenshot "$work/completion.png" --quit-after-frames 12 "$alpha"
+test -f "$work/state/recovery.corbel" || { echo "Extrude to units changed nothing (no recovery file)"; exit 1; }
+cp "$work/state/recovery.corbel" "$work/completed.corbel"
+summary=$("$cli" check "$work/completed.corbel" 2>/dev/null | tail -1)
+echo "completed: $summary"
+units=$(sed -E 's/.*"objects":([0-9]+).*/\1/' <<<"$summary")
+[[ $units -ge 2 && $summary == *'"failed":0}' ]] || { echo "the extruded units should be closed shells: $summary"; exit 1; }
+grep -q '"unit": {' "$work/completed.corbel" || { echo "no unit objects were saved"; exit 1; }
+run --recover no --select "Alpha" --screenshot "$work/site.png" --quit-after-frames 6 "$alpha"
+"$check" "$work/completion.png" "$work/site.png" 0.01
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions "${completing[0]},edit.undo" --autosave-seconds 0 --quit-after-frames 12 "$alpha"
+test -f "$work/state/recovery.corbel" && { echo "undo should leave the example untouched (a recovery file was written)"; exit 1; }
+run --recover no --select "Alpha" --actions "${completing[0]},edit.undo,edit.redo_y" --autosave-seconds 0 \
+  --quit-after-frames 14 "$alpha"
+cmp -s "$work/state/recovery.corbel" "$work/completed.corbel" || { echo "redo should bring back the same units"; exit 1; }
 echo "editor test passed"

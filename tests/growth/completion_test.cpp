@@ -3,6 +3,7 @@
 #include "growth/completion.h"
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "grid_oracle.h"
 
 #include <gtest/gtest.h>
@@ -60,6 +61,23 @@ TEST(TopologyGeneration, RefusesUnusableRequests) {
   rq.seeds = 3;
   rq.count = 0;
   EXPECT_THROW(generateForms(rq), InputError);
+}
+
+// The editor runs the generation as a background job: it reports its progress and stops at
+// Cancel; with a progress that is never cancelled it gives the same forms as without one.
+TEST(TopologyGeneration, ReportsProgressAndStopsWhenCancelled) {
+  FormRequest rq;
+  rq.count = 3;
+  Progress p;
+  const FormSet with = generateForms(rq, &p);
+  const FormSet without = generateForms(rq);
+  ASSERT_EQ(with.forms.size(), without.forms.size());
+  for (std::size_t i = 0; i < with.forms.size(); ++i) EXPECT_EQ(with.forms[i].topology, without.forms[i].topology);
+  EXPECT_GT(p.fraction(), 0.0);
+  EXPECT_NE(p.stage().find("attempt"), std::string::npos);
+  Progress cancelled;
+  cancelled.cancel();
+  EXPECT_THROW(generateForms(rq, &cancelled), Cancelled);
 }
 
 }  // namespace

@@ -336,7 +336,7 @@ TEST(ProjectIoErrors, MissingFields) {
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "box": {}}]})", "objects[0].name",
                "missing");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A"}]})", "objects[0]",
-               R"(no spec: expected one of "box", "extrusion", "masonry", "kifs", "growth")");
+               R"(no spec: expected one of "box", "extrusion", "masonry", "kifs", "growth", "unit")");
 }
 
 TEST(ProjectIoErrors, NonFiniteNumbers) {
@@ -853,4 +853,27 @@ TEST(ProjectIoErrors, GrowthFaultsNameTheirPath) {
   const auto w = corbel::parseProject(withGrowth(R"("site": {}, "speed": 2)"));
   ASSERT_EQ(w.warnings.size(), 1u);
   EXPECT_EQ(w.warnings[0], "objects[0].growth.speed: unknown key ignored");
+}
+
+TEST(ProjectIo, UnitSpecsRoundTripAsRowsOfBoxes) {
+  corbel::UnitSpec u;
+  u.parts = {{{36, 13, 0}, {42, 20, 3}}, {{42, 13, 0}, {45.25, 17, 3}}};
+  u.material = "glass";
+  corbel::Document d;
+  d.add("form unit 1", u);
+  const std::string text = corbel::serializeProject(d);
+  const corbel::LoadedProject back = corbel::parseProject(text);
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document), text);
+  const auto minimal = corbel::parseProject(withSpec("unit", R"("parts": [[0, 0, 0, 3, 3, 3]])"));
+  EXPECT_EQ(std::get<corbel::UnitSpec>(minimal.document.objects[0].spec).material, "plaster");
+}
+
+TEST(ProjectIoErrors, UnitFaultsNameTheirPath) {
+  EXPECT_FAULT(withSpec("unit", R"("material": "glass")"), "objects[0].unit.parts", "missing");
+  EXPECT_FAULT_CONTAINS(withSpec("unit", R"("parts": [])"), "objects[0].unit.parts", "at least one");
+  EXPECT_FAULT_CONTAINS(withSpec("unit", R"("parts": [[0, 0, 0, 3, 3]])"), "objects[0].unit.parts[0]", "x0, y0");
+  EXPECT_FAULT_CONTAINS(withSpec("unit", R"("parts": [[0, 0, 0, 3, 3, 3], [5, 0, 0, 4, 3, 3]])"),
+                        "objects[0].unit.parts[1]", "hi must exceed lo");
 }
