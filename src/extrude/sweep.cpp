@@ -312,6 +312,7 @@ int Sweeper::newCorner(int prev, int next, int vertex, const Vec2& at, double z)
   edges_[prev].end = ci;
   edges_[next].start = ci;
   setCornerMotion(ci, at, z);
+  SWEEP_TRACE("    v=(%g, %g), sine %g", corners_[ci].v[0], corners_[ci].v[1], cross2(edges_[prev].n, edges_[next].n));
   return ci;
 }
 
@@ -543,7 +544,10 @@ void Sweeper::predictAgainst(int ei) {
 bool Sweeper::handleIntersection(const Candidate& cand) {
   const double z = cand.z;
   if (!corners_[cand.corner].alive) return false;
-  if ((nearestOnPath(cand.corner, cand.p, z) - cand.p).norm() > tol_.cluster) return false;
+  if ((nearestOnPath(cand.corner, cand.p, z) - cand.p).norm() > tol_.cluster) {
+    SWEEP_TRACE("   its corner is no longer there");
+    return false;
+  }
 
   // Corners that arrive at the point.
   std::vector<int> K;
@@ -599,7 +603,10 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     // two-edge sliver whose corners arrive together).
     bool closed = true;
     for (int ei : involved) closed = closed && inK[edges_[ei].start] && inK[edges_[ei].end];
-    if (!closed) return false;
+    if (!closed) {
+      SWEEP_TRACE("   only %zu planes meet there", involved.size());
+      return false;
+    }
   }
 
   // The event point: the least-squares meeting point of all involved lines at this height
@@ -881,8 +888,13 @@ void Sweeper::handleDirectionChanges(double h) {
   for (int ei : changing) {
     Edge next = edges_[ei];
     const auto& st = inputs_[next.src]->steps[next.step + 1];
+    // The new plane holds the old one's line at h exactly (n·x = c + k h), rather than passing
+    // through a corner computed on it: between almost colinear neighbours that corner is a
+    // badly conditioned intersection whose residual off the line, ~1e-8 m, would move the
+    // new corner metres along it (the lines' offsets divided by their sine).
     const Vec2 on = cornerPos[edges_[ei].start];
     setEdgePlane(next, edges_[ei].d, on, h, st.angle);
+    next.c = edges_[ei].c + edges_[ei].k * h - next.k * h;
     next.step = edges_[ei].step + 1;
     next.face = addFace(next.src, st.segment, st.angle, next);
     edges_.push_back(next);
