@@ -274,5 +274,25 @@ TEST(GroinVault, LeastThicknessIsSaneAndFallsWithFriction) {
   std::printf("the 8-voussoir semicircular arch: least t/R %.4f\n", minimumArchThickness(arch, {}, 1e-4));
 }
 
+// The example (12 voussoirs, 3 courses): rows 4 and 7 have one straight course, rows 5 and 6
+// two, so a web is 12 + 2 (1 + 2) = 18 blocks; 4 webs and 4 piers of 2 drums make 80. On its
+// 2 m piers it stands with piers 1.2 m wide (assets/examples/masonry-groin.corbel) and not
+// with 0.5 m ones: the webs' thrust at the corners overturns them.
+TEST(GroinVault, ExampleCountsAndStandsOnWidePiers) {
+  ParametricModel m = exampleByName("groin-vault");
+  EXPECT_EQ(m.build(m.parameters).blocks.size(), 80u + 1);
+  m.parameters.set("pierWidth", 1.2);
+  EXPECT_TRUE(checkFeasibility(m.build(m.parameters)).feasible);
+  m.parameters.set("pierWidth", 0.5);
+  EXPECT_FALSE(checkFeasibility(m.build(m.parameters)).feasible);
+  GroinVaultSpec bad;
+  bad.thickness = -1;
+  EXPECT_THROW(groinVaultBlocks(bad), Error);
+  bad.thickness = 0.3;
+  bad.pierHeight = 1.0;
+  bad.pierWidth = 0.1;  // narrower than the vault is thick
+  EXPECT_THROW(groinVault(bad), Error);
+}
+
 }  // namespace
 }  // namespace corbel::statics
