@@ -366,6 +366,9 @@ ParametricModel groinVaultExample() {
   m.parameters.add(param("pierHeight", 2.0, 0.0, 50.0, "height of the corner piers (0: the vault springs from the ground), m"));
   m.parameters.add(param("pierWidth", 1.0, 0.05, 10.0, "side of the square corner piers (at least the thickness), m"));
   m.parameters.add(param("drums", 2, 1, 100, "courses of each pier", false));
+  m.parameters.add(param("ribs", 0, 0, 1, "diagonal ribs under the groins (1) or none (0); they need an even number of voussoirs", false));
+  m.parameters.add(param("ribWidth", 0.2, 0.01, 3.0, "width of the ribs across the diagonal (at most thickness·√2/2), m"));
+  m.parameters.add(param("ribDepth", 0.2, 0.01, 5.0, "depth of the ribs below the intrados, m"));
   m.suggestedFree = {{"thickness", 0.1, 0.6}, {"pierWidth", 0.3, 2.0}};
   m.build = [](const ParameterSet& p) {
     GroinVaultSpec s;
@@ -377,6 +380,9 @@ ParametricModel groinVaultExample() {
     s.pierHeight = p["pierHeight"];
     s.pierWidth = p["pierWidth"];
     s.pierDrums = count(p, "drums");
+    s.ribs = count(p, "ribs") != 0;
+    s.ribWidth = p["ribWidth"];
+    s.ribDepth = p["ribDepth"];
     StructureBuilder b;
     b.add("vault", groinVaultBlocks(s), Vec3(0.0, 0.0, s.pierHeight));
     if (s.pierHeight > 0) b.add("piers", groinVaultPiers(s));

@@ -23,6 +23,15 @@ void validateSpec(const GroinVaultSpec& s) {
     throw Error("groin vault: the piers must be at least as wide as the vault is thick");
   if (s.pierHeight > 0 && (s.pierDrums < 1 || s.pierDrums > 1000)) throw Error("groin vault: the piers' drums must be in 1..1000");
   if (!positive(s.density)) throw Error("groin vault: the density must be a positive number");
+  if (s.ribs) {
+    const double c = std::cos(std::numbers::pi / (2 * s.voussoirs)), ri = s.radius - s.thickness / 2;
+    if (s.voussoirs % 2) throw Error("groin vault: ribs need an even number of voussoirs");
+    if (!positive(s.ribWidth) || s.ribWidth > s.thickness * std::sqrt(0.5) * (1 + 1e-12))
+      throw Error("groin vault: the rib width must be positive and at most thickness·√2/2");
+    if (!positive(s.ribDepth) || s.ribDepth >= 0.5 * ri * c) throw Error("groin vault: the rib depth must be positive and below half the intrados radius");
+    if (s.pierHeight > 0 && s.pierWidth < s.thickness + 2 * s.ribDepth / c)
+      throw Error("groin vault: the piers must be at least thickness + 2·ribDepth/cos(π/2N) wide to carry the ribs");
+  }
 }
 
 // Turns (x, y) by a quarter turn q times, exactly.
@@ -83,18 +92,54 @@ std::vector<Block> groinVaultBlocks(const GroinVaultSpec& spec) {
       web.push_back(halfspaceBlock(row + " course " + std::to_string(j - first + 1), straight, spec.density));
     }
   }
-  static const char* names[4] = {"web +x", "web +y", "web -x", "web -y"};
-  std::vector<Block> out;
-  for (int q = 0; q < 4; ++q)
-    for (Block b : web) {
-      for (Vec3& v : b.vertices) {
-        v = quarterTurn(v, q);
-        v[0] *= spec.stretch;
-      }
-      b.name = std::string(names[q]) + " " + b.name;
-      out.push_back(std::move(b));
+  // The rib of the quadrant x, y > 0: halves under the web of +x (a) and their mirrors in
+  // x = y (b), rows 0 .. N/2 − 1.
+  std::vector<Block> rib;
+  if (spec.ribs) {
+    const double c = std::cos(dth / 2), delta = spec.ribWidth * std::sqrt(0.5);
+    for (int k = 0; 2 * k < n; ++k) {
+      const double a0 = k * dth, a1 = (k + 1) * dth, mid = (a0 + a1) / 2;
+      const Vec2 e0 = k == 0 ? Vec2(1.0, 0.0) : Vec2(std::cos(a0), std::sin(a0));
+      const Vec2 e1 = 2 * (k + 1) == n ? Vec2(0.0, 1.0) : Vec2(std::cos(a1), std::sin(a1));
+      const std::vector<HalfSpace> hs = {{Vec3(0.0, e0[1], -e0[0]), 0.0},
+                                         {Vec3(0.0, -e1[1], e1[0]), 0.0},
+                                         {Vec3(0.0, std::cos(mid), std::sin(mid)), ri * c},
+                                         {Vec3(0.0, -std::cos(mid), -std::sin(mid)), -(ri * c - spec.ribDepth)},
+                                         {Vec3(-1.0, 1.0, 0.0), 0.0},
+                                         {Vec3(1.0, -1.0, 0.0), delta}};
+      Block a = halfspaceBlock("row " + std::to_string(k) + " a", hs, spec.density);
+      Block b = a;
+      b.name = "row " + std::to_string(k) + " b";
+      for (Vec3& v : b.vertices) std::swap(v[0], v[1]);
+      for (auto& f : b.faces) std::reverse(f.begin(), f.end());
+      rib.push_back(std::move(a));
+      rib.push_back(std::move(b));
     }
+  }
+  static const char* names[4] = {"web +x", "web +y", "web -x", "web -y"};
+  static const char* ribNames[4] = {"rib +x+y", "rib -x+y", "rib -x-y", "rib +x-y"};
+  std::vector<Block> out;
+  auto add = [&](Block b, int q, const std::string& prefix) {
+    for (Vec3& v : b.vertices) {
+      v = quarterTurn(v, q);
+      v[0] *= spec.stretch;
+    }
+    b.name = prefix + " " + b.name;
+    out.push_back(std::move(b));
+  };
+  for (int q = 0; q < 4; ++q)
+    for (const Block& b : web) add(b, q, names[q]);
+  for (int q = 0; q < 4; ++q)
+    for (const Block& b : rib) add(b, q, ribNames[q]);
   return out;
+}
+
+double groinVaultRibVolume(const GroinVaultSpec& spec) {
+  if (!spec.ribs) return 0;
+  const int n = spec.voussoirs;
+  const double c = std::cos(std::numbers::pi / (2 * n)), ri = spec.radius - spec.thickness / 2;
+  const double h1 = ri * c, h0 = h1 - spec.ribDepth;
+  return spec.stretch * 4 * n * spec.ribWidth * std::sqrt(0.5) * std::tan(std::numbers::pi / (2 * n)) * (h1 * h1 - h0 * h0);
 }
 
 std::vector<Block> groinVaultPiers(const GroinVaultSpec& spec) {
