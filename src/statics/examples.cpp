@@ -6,6 +6,7 @@
 #include "statics/buttress.h"
 #include "statics/column.h"
 #include "statics/dome.h"
+#include "statics/groin.h"
 #include "statics/shapes.h"
 #include "statics/vault.h"
 #include "statics/wall.h"
@@ -353,8 +354,46 @@ ParametricModel mosqueExample() {
   return m;
 }
 
+ParametricModel groinVaultExample() {
+  ParametricModel m;
+  m.name = "groin-vault";
+  m.description = "A groin vault: two barrels of the same rise crossing over a bay, on four corner piers";
+  m.parameters.add(param("radius", 2.0, 0.3, 30.0, "centreline radius of both barrels (their rise; half the span along y), m"));
+  m.parameters.add(param("thickness", 0.3, 0.02, 3.0, "thickness of the webs, m"));
+  m.parameters.add(param("stretch", 1.0, 0.5, 2.0, "the bay's length along x over its length along y (1: square)"));
+  m.parameters.add(param("voussoirs", 12, 2, 400, "voussoirs per arch of each web", false));
+  m.parameters.add(param("courses", 3, 1, 400, "transverse courses of each web from the centre to the bay's face", false));
+  m.parameters.add(param("pierHeight", 2.0, 0.0, 50.0, "height of the corner piers (0: the vault springs from the ground), m"));
+  m.parameters.add(param("pierWidth", 1.0, 0.05, 10.0, "side of the square corner piers (at least the thickness), m"));
+  m.parameters.add(param("drums", 2, 1, 100, "courses of each pier", false));
+  m.parameters.add(param("ribs", 0, 0, 1, "diagonal ribs under the groins (1) or none (0); they need an even number of voussoirs", false));
+  m.parameters.add(param("ribWidth", 0.2, 0.01, 3.0, "width of the ribs across the diagonal (at most thickness·√2/2), m"));
+  m.parameters.add(param("ribDepth", 0.2, 0.01, 5.0, "depth of the ribs below the intrados, m"));
+  m.suggestedFree = {{"thickness", 0.1, 0.6}, {"pierWidth", 0.3, 2.0}};
+  m.build = [](const ParameterSet& p) {
+    GroinVaultSpec s;
+    s.radius = p["radius"];
+    s.thickness = p["thickness"];
+    s.stretch = p["stretch"];
+    s.voussoirs = count(p, "voussoirs");
+    s.courses = count(p, "courses");
+    s.pierHeight = p["pierHeight"];
+    s.pierWidth = p["pierWidth"];
+    s.pierDrums = count(p, "drums");
+    s.ribs = count(p, "ribs") != 0;
+    s.ribWidth = p["ribWidth"];
+    s.ribDepth = p["ribDepth"];
+    StructureBuilder b;
+    b.add("vault", groinVaultBlocks(s), Vec3(0.0, 0.0, s.pierHeight));
+    if (s.pierHeight > 0) b.add("piers", groinVaultPiers(s));
+    b.groundUnder(1.0);
+    return b.build();
+  };
+  return m;
+}
+
 std::vector<std::string> exampleNames() {
-  return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch", "chapel", "abbey", "mosque"};
+  return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch", "chapel", "abbey", "mosque", "groin-vault"};
 }
 
 ParametricModel exampleByName(const std::string& name) {
@@ -366,6 +405,7 @@ ParametricModel exampleByName(const std::string& name) {
   if (name == "chapel") return chapelExample();
   if (name == "abbey") return abbeyExample();
   if (name == "mosque") return mosqueExample();
+  if (name == "groin-vault") return groinVaultExample();
   std::string known;
   for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown example '" + name + "' (examples: " + known + ")");

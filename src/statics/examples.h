@@ -54,6 +54,13 @@ ParametricModel abbeyExample();
 // blocks by default). Free by default: drumThickness and reach.
 ParametricModel mosqueExample();
 
+// A groin vault (groin.h) of `voussoirs` rows per web and `courses` along each web's axis on
+// four square corner piers of `pierWidth` and `pierHeight` in `drums` courses (12 voussoirs,
+// 3 courses, 2 drums: 4 webs of 18 blocks and 8 drums, 80 blocks), with diagonal ribs when
+// `ribs` is 1 (4 ribs of 6 voussoirs in halves: 48 blocks more). Free by default: thickness
+// and pierWidth.
+ParametricModel groinVaultExample();
+
 std::vector<std::string> exampleNames();
 // Throws corbel::Error for an unknown name, listing the known ones.
 ParametricModel exampleByName(const std::string& name);

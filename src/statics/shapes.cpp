@@ -1,5 +1,7 @@
 #include "statics/shapes.h"
 
+#include "core/error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -39,6 +41,75 @@ Block prismBlock(std::string name, const std::vector<Vec3>& base, const Vec3& ex
     faces.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
   }
   return convexBlock(std::move(name), std::move(v), std::move(faces), density);
+}
+
+Block halfspaceBlock(std::string name, const std::vector<HalfSpace>& halfspaces, double density) {
+  // Unit normals; planes repeated (same normal and offset) count once.
+  std::vector<HalfSpace> hs;
+  double scale = 1.0;
+  for (const HalfSpace& h : halfspaces) {
+    const double len = h.n.norm();
+    if (!(len > 0) || !std::isfinite(h.d)) throw Error("halfspaceBlock: " + name + ": a half-space has no normal");
+    scale = std::max(scale, std::abs(h.d / len));
+  }
+  const double tol = 1e-9 * scale;
+  for (const HalfSpace& h : halfspaces) {
+    const HalfSpace u{h.n / h.n.norm(), h.d / h.n.norm()};
+    bool repeated = false;
+    for (const HalfSpace& q : hs) repeated = repeated || ((q.n - u.n).norm() < 1e-12 && std::abs(q.d - u.d) <= tol);
+    if (!repeated) hs.push_back(u);
+  }
+  const std::size_t m = hs.size();
+  std::vector<Vec3> verts;
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 1; j < m; ++j)
+      for (std::size_t k = j + 1; k < m; ++k) {
+        const Vec3 jk = cross(hs[j].n, hs[k].n), ki = cross(hs[k].n, hs[i].n), ij = cross(hs[i].n, hs[j].n);
+        const double det = dot(hs[i].n, jk);
+        if (std::abs(det) < 1e-10) continue;
+        const Vec3 p = (jk * hs[i].d + ki * hs[j].d + ij * hs[k].d) / det;
+        bool inside = true;
+        for (const HalfSpace& h : hs) inside = inside && dot(h.n, p) <= h.d + tol;
+        if (!inside) continue;
+        bool known = false;
+        for (const Vec3& v : verts) known = known || (v - p).norm() <= 4 * tol;
+        if (!known) verts.push_back(p);
+      }
+  Block b;
+  b.name = std::move(name);
+  b.density = density;
+  b.vertices = verts;
+  for (const HalfSpace& h : hs) {
+    std::vector<int> on;
+    Vec3 c(0.0);
+    for (std::size_t i = 0; i < verts.size(); ++i)
+      if (std::abs(dot(h.n, verts[i]) - h.d) <= 4 * tol) {
+        on.push_back(int(i));
+        c += verts[i];
+      }
+    if (on.size() < 3) continue;
+    c /= double(on.size());
+    Vec3 u = verts[std::size_t(on[0])] - c;
+    u -= h.n * dot(u, h.n);
+    if (!(u.norm() > 0)) continue;
+    u.normalize();
+    const Vec3 v = cross(h.n, u);
+    std::vector<std::pair<double, int>> ring;
+    for (int i : on) {
+      const Vec3 d = verts[std::size_t(i)] - c;
+      ring.emplace_back(std::atan2(dot(d, v), dot(d, u)), i);
+    }
+    std::sort(ring.begin(), ring.end());
+    std::vector<int> face;
+    std::vector<Vec3> poly;
+    for (const auto& [angle, i] : ring) {
+      face.push_back(i);
+      poly.push_back(verts[std::size_t(i)]);
+    }
+    if (newellNormal(poly).norm() <= tol * tol) continue;  // an edge or a point: no face
+    b.faces.push_back(std::move(face));
+  }
+  return b;
 }
 
 std::vector<Block> placed(std::vector<Block> blocks, const Vec3& offset, const std::string& prefix) {

@@ -14,6 +14,17 @@ Block convexBlock(std::string name, std::vector<Vec3> vertices, std::vector<std:
 // The prism swept by the planar convex polygon `base` along `extent`.
 Block prismBlock(std::string name, const std::vector<Vec3>& base, const Vec3& extent, double density);
 
+// A half-space n·p ≤ d.
+struct HalfSpace {
+  Vec3 n;
+  double d = 0;
+};
+
+// The convex block bounded by the half-spaces (their intersection must be bounded and have
+// volume): vertices where three planes meet inside all the others, one face per plane that
+// touches the block in an area, counter-clockwise about its outward normal.
+Block halfspaceBlock(std::string name, const std::vector<HalfSpace>& halfspaces, double density);
+
 // Blocks moved by `offset`, their names prefixed by "prefix/" when the prefix is not empty.
 std::vector<Block> placed(std::vector<Block> blocks, const Vec3& offset, const std::string& prefix = "");
 
