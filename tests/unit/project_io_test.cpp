@@ -928,7 +928,7 @@ TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
   EXPECT_FAULT(withTown(R"("footprints": "", "style": "s.json")"), "objects[0].town.footprints",
                "the path must not be empty");
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "seed": -1)"), "objects[0].town.seed",
-               "expected an integer in [0, 9007199254740992], found -1");
+               "-1 is outside [0, 9007199254740992]");
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "detail": "high")"), "objects[0].town.detail",
                R"(expected "massing", "steps" or "full", found "high")");
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": [])"),
