@@ -1244,7 +1244,8 @@ int App::run() {
       const DocObject* o = doc.find(id);
       return o && o->visible;
     };
-    settings_.highlight = selected_;
+    // A selected town is not tinted as a whole: its picked building is outlined instead.
+    settings_.highlight = selectedTown() ? std::nullopt : selected_;
     // Tension colours and force arrows of the selected masonry object, when it is shown.
     renderer_->overlay().clear();
     renderer_->overlayOnTop().clear();
