@@ -34,6 +34,10 @@ TEST(TownEdits, AnOverrideIsOneUndoStepAndRebuildsOneBuilding) {
   sync.update(doc, scene);
   const std::size_t first = cache->extrusions();
   EXPECT_EQ(first, 32u);
+  // The town in the Scene: one closed shell per building (feature meshes are closed too).
+  const ValidityReport v = scene.validate(id);
+  EXPECT_TRUE(v.closedManifold()) << (v.problems().empty() ? "" : v.problems()[0]);
+  EXPECT_GE(v.components, 32u);
   const auto list = cache->buildings(id);
   const std::string target = list[3].id;
 
