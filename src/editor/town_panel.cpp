@@ -191,14 +191,23 @@ void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
   ImGui::TextUnformatted("Buildings (click one here or in the 3D view)");
   const float listH = std::max(80.0f, ImGui::GetContentRegionAvail().y - 8 * ImGui::GetFrameHeightWithSpacing());
   ImGui::BeginChild("buildings", ImVec2(0, listH), true);
-  for (const auto& b : list) {
-    const bool overridden = current->overrides.count(b.id) > 0;
-    const std::string row = b.id + "  " + (b.error.empty() ? b.type : "(not built)") + (overridden ? "  *" : "");
-    const bool isSelected = b.id == selected_;
-    if (ImGui::Selectable(row.c_str(), isSelected)) selected_ = b.id;
-    if (isSelected && scrollToSelected_) ImGui::SetScrollHereY(0.5f), scrollToSelected_ = false;
-    if (!b.error.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.error.c_str());
+  // Only the visible rows are drawn (a real town has thousands of buildings).
+  const float rowH = ImGui::GetTextLineHeightWithSpacing();
+  if (scrollToSelected_) {
+    for (std::size_t i = 0; i < list.size(); ++i)
+      if (list[i].id == selected_) ImGui::SetScrollY(std::max(0.0f, float(i) * rowH - 0.5f * listH));
+    scrollToSelected_ = false;
   }
+  ImGuiListClipper clipper;
+  clipper.Begin(static_cast<int>(list.size()), rowH);
+  while (clipper.Step())
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const city::BuiltBuilding& b = list[std::size_t(i)];
+      const bool overridden = current->overrides.count(b.id) > 0;
+      const std::string row = b.id + "  " + (b.error.empty() ? b.type : "(not built)") + (overridden ? "  *" : "");
+      if (ImGui::Selectable(row.c_str(), b.id == selected_)) selected_ = b.id;
+      if (!b.error.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.error.c_str());
+    }
   ImGui::EndChild();
 
   // The selected building: its type and profiles, overridable.
