@@ -347,10 +347,12 @@ std::optional<std::size_t> assignType(const Style& style, const Building& b, Bui
   return static_cast<std::size_t>(candidates[random.pick(candidates)].index);
 }
 
-StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed) {
+StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed,
+                             const BuildingOverride* override) {
   StyledBuilding out;
   BuildingRandom random(seed, b.id);
-  const auto ti = assignType(style, b, random);
+  auto ti = assignType(style, b, random);
+  if (override && override->type) ti = override->type;
   if (!ti) {
     out.problem = "no building type of the style applies (area " + std::to_string(b.area) + " m²)";
     return out;
@@ -377,7 +379,9 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
                     t.name + "\" applies";
       return out;
     }
-    const int p = rule->profiles[random.pick(rule->profiles)].index;
+    int p = rule->profiles[random.pick(rule->profiles)].index;
+    if (override)
+      if (auto it = override->profiles.find(e.orientation); it != override->profiles.end()) p = it->second;
     spec.loops[e.loop].profile[e.edge] = p;
     used.insert(p);
   }

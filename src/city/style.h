@@ -119,11 +119,20 @@ class BuildingRandom {
 // The type a building gets (index into style.types), or nullopt when none applies.
 std::optional<std::size_t> assignType(const Style& style, const Building& b, BuildingRandom& random);
 
+// A user's override of one building (core/town_spec.h, resolved against a style): its type
+// (index into style.types) and, per edge orientation, the profile (index into style.profiles).
+// The building's random draws are made as without it, so nothing else about it changes.
+struct BuildingOverride {
+  std::optional<std::size_t> type;
+  std::map<Orientation, int> profiles;
+};
+
 struct StyledBuilding {
   std::string type;  // "" when it could not be styled
   extrude::ExtrusionSpec spec;
   std::string problem;  // why not
 };
-StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed);
+StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed,
+                             const BuildingOverride* override = nullptr);
 
 }  // namespace corbel::city

@@ -60,7 +60,10 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
         item.problem = b.problem;
         continue;
       }
-      StyledBuilding s = styleBuilding(style, b, labels[order[k]], options.seed);
+      const BuildingOverride* over = nullptr;
+      if (options.overrides)
+        if (auto it = options.overrides->find(b.id); it != options.overrides->end()) over = &it->second;
+      StyledBuilding s = styleBuilding(style, b, labels[order[k]], options.seed, over);
       r.type = s.type;
       item.spec = std::move(s.spec);
       if (options.detail != Detail::Full) item.spec.anchors.clear();

@@ -26,6 +26,7 @@ struct TownOptions {
   std::size_t chunk = 1024;        // buildings extruded per round before their meshes are handed on
   bool mergeCoplanar = false;      // export meshes: coplanar neighbours merged (builds each mesh twice)
   double timeLimitSeconds = 10.0;  // per building
+  const std::map<std::string, BuildingOverride>* overrides = nullptr;  // by building id
 };
 
 struct BuildingReport {

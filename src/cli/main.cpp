@@ -13,6 +13,7 @@
 #include "extrude/footprints.h"
 #include "extrude/kernel.h"
 #include "statics/kernel.h"
+#include "city/kernel.h"
 #include "growth/kernel.h"
 #include "kifs/kernel.h"
 #include "render/headless_context.h"
@@ -146,6 +147,7 @@ Loaded load(const std::string& path) {
   statics::registerKernel(sync);
   kifs::registerKernel(sync);
   growth::registerKernel(sync);
+  city::registerKernel(sync);
   sync.update(l.doc, l.scene);
   for (const auto& [id, st] : sync.status()) {
     const DocObject* o = l.doc.find(id);

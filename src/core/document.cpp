@@ -121,4 +121,23 @@ std::optional<std::string> checkUnitSpec(const UnitSpec& s) {
   return std::nullopt;
 }
 
+std::optional<std::string> checkTownSpec(const TownSpec& s) {
+  if (s.footprints.empty() && s.footprintsJson.empty()) return "footprints: a footprint file or embedded GeoJSON is needed";
+  if (s.style.empty() && s.styleJson.empty()) return "style: a style file or an embedded style is needed";
+  if (s.detail != "massing" && s.detail != "steps" && s.detail != "full")
+    return "detail: expected \"massing\", \"steps\" or \"full\", found \"" + s.detail + "\"";
+  if (s.overrides.size() > limits::kMaxTownOverrides) return "overrides: too many";
+  for (const auto& [id, o] : s.overrides) {
+    const std::string at = "overrides[\"" + id + "\"]";
+    if (id.empty()) return "overrides: a footprint id must not be empty";
+    if (o.empty()) return at + ": overrides nothing";
+    for (const auto& [side, profile] : o.profiles) {
+      if (side != "street" && side != "side" && side != "back")
+        return at + ".profiles: expected \"street\", \"side\" or \"back\", found \"" + side + "\"";
+      if (profile.empty()) return at + ".profiles." + side + ": the profile name must not be empty";
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace corbel

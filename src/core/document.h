@@ -7,6 +7,7 @@
 #include "core/masonry_spec.h"
 #include "core/geometry.h"
 #include "core/scene_properties.h"
+#include "core/town_spec.h"
 #include "core/unit_spec.h"
 
 #include <optional>
@@ -31,7 +32,7 @@ struct BoxSpec {
 };
 
 // One spec type per kernel; extrude, statics, growth and kifs add theirs.
-using Spec = std::variant<BoxSpec, ExtrusionSpec, MasonrySpec, KifsSpec, GrowthSpec, UnitSpec>;
+using Spec = std::variant<BoxSpec, ExtrusionSpec, MasonrySpec, KifsSpec, GrowthSpec, UnitSpec, TownSpec>;
 
 // An image laid under an object's plan in the plan pane, to trace a drawing or a map from.
 // It belongs to the object but no kernel sees it, so changing it never rebuilds geometry.

@@ -55,12 +55,19 @@ bool LiveSync::update(const Document& doc, std::uint64_t state, Scene& scene) {
     if (running_->state != wanted_ && age > options_.cancelAfterSeconds) running_->progress->cancel();
     return applied;
   }
-  if (shown_ == wanted_) return applied;
+  if (shown_ == wanted_ || abandoned_ == wanted_) return applied;
   if (!start(doc, state, scene)) return true;
   return finishIfDone(scene, options_.waitSeconds) || applied;
 }
 
+void LiveSync::cancel() {
+  if (!running_) return;
+  abandoned_ = running_->state;
+  running_->progress->cancel();
+}
+
 void LiveSync::settle(const Document& doc, std::uint64_t state, Scene& scene) {
+  abandoned_.reset();
   for (;;) {
     update(doc, state, scene);
     if (current()) return;

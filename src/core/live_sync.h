@@ -35,6 +35,12 @@ class LiveSync {
   // Blocks until the Scene shows `state` (file operations, scripted runs, screenshots).
   void settle(const Document& doc, std::uint64_t state, Scene& scene);
 
+  // Stops the running build (the Scene keeps what it showed; a kernel may keep what it finished,
+  // as the town kernel does); the state it was building is not built again until retry() or
+  // an edit makes a newer one.
+  void cancel();
+  void retry() { abandoned_.reset(); }
+  bool cancelled() const { return abandoned_ && *abandoned_ == wanted_ && !running_; }
   bool current() const { return !running_ && shown_ == wanted_; }  // the Scene shows the latest state given
   bool building() const { return static_cast<bool>(running_); }
   double fraction() const;       // of the running build
@@ -58,6 +64,7 @@ class LiveSync {
   std::uint64_t wanted_ = 0;
   std::optional<std::uint64_t> shown_;  // the state the Scene shows (none before the first)
   std::size_t started_ = 0;
+  std::optional<std::uint64_t> abandoned_;  // cancelled by the user
 };
 
 }  // namespace corbel

@@ -269,6 +269,106 @@ UnitSpec unitFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   return u;
 }
 
+// A path written relative to `folder` where it lies under it or near it (as background images).
+std::string relativeTo(const std::string& path, const std::string& folder) {
+  if (folder.empty() || !std::filesystem::path(path).is_absolute()) return path;
+  const std::filesystem::path rel =
+      std::filesystem::path(path).lexically_relative(std::filesystem::path(folder).lexically_normal());
+  return rel.empty() ? path : rel.generic_string();
+}
+
+std::string resolvedPath(const JsonReader& r, const std::string& folder) {
+  std::string path = r.string(limits::kMaxPathLength);
+  if (path.empty()) r.fail("the path must not be empty");
+  if (path.find('\0') != std::string::npos) r.fail("a path cannot hold a NUL character");
+  if (!folder.empty() && std::filesystem::path(path).is_relative())
+    path = (std::filesystem::path(folder) / path).lexically_normal().string();
+  return path;
+}
+
+// Footprints and style: a path (a string) or the JSON itself (an object), kept as compact text.
+ojson pathOrJson(const std::string& path, const std::string& text, const std::string& folder) {
+  if (!path.empty()) return relativeTo(path, folder);
+  return ojson::parse(text);
+}
+
+ojson townToJson(const TownSpec& t, const std::string& folder) {
+  ojson j;
+  j["footprints"] = pathOrJson(t.footprints, t.footprintsJson, folder);
+  j["style"] = pathOrJson(t.style, t.styleJson, folder);
+  j["seed"] = t.seed;
+  j["detail"] = t.detail;
+  if (!t.overrides.empty()) {
+    ojson overrides = ojson::object();
+    for (const auto& [id, o] : t.overrides) {
+      ojson oj;
+      if (!o.type.empty()) oj["type"] = o.type;
+      if (!o.profiles.empty()) {
+        ojson profiles = ojson::object();
+        for (const auto& [side, name] : o.profiles) profiles[side] = name;
+        oj["profiles"] = std::move(profiles);
+      }
+      overrides[id] = std::move(oj);
+    }
+    j["overrides"] = std::move(overrides);
+  }
+  return j;
+}
+
+// The footprints' and the style's own keys are checked by the city kernel when it builds the object.
+TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"footprints", "style", "seed", "detail", "overrides"}))
+    warnings.push_back(k + ": unknown key ignored");
+  TownSpec t;
+  const auto pathOrText = [&](const JsonReader& v, std::string& path, std::string& text) {
+    if (v.raw().is_string()) path = resolvedPath(v, folder);
+    else if (v.raw().is_object()) {
+      text = v.raw().dump();
+      if (text.size() > limits::kMaxEmbeddedBytes) v.fail("embedded JSON is too large");
+    } else
+      v.fail("expected a file path (a string) or the JSON itself (an object), found " + std::string(v.raw().is_array() ? "an array" : v.raw().is_null() ? "null" : std::string("a ") + v.raw().type_name()));
+  };
+  pathOrText(r.at("footprints"), t.footprints, t.footprintsJson);
+  pathOrText(r.at("style"), t.style, t.styleJson);
+  if (auto v = r.find("seed")) t.seed = static_cast<std::uint64_t>(v->integer(0, (1L << 53)));
+  if (auto v = r.find("detail")) {
+    t.detail = v->string(16);
+    if (t.detail != "massing" && t.detail != "steps" && t.detail != "full")
+      v->fail("expected \"massing\", \"steps\" or \"full\", found \"" + t.detail + "\"");
+  }
+  if (auto ov = r.find("overrides")) {
+    ov->expectObject();
+    if (ov->raw().size() > limits::kMaxTownOverrides) ov->fail("too many overrides");
+    for (const auto& [id, value] : ov->raw().items()) {
+      const JsonReader o(value, ov->path() + "[\"" + id + "\"]");
+      o.expectObject();
+      if (id.empty()) o.fail("a footprint id must not be empty");
+      if (id.size() > limits::kMaxNameLength) o.fail("the footprint id is too long");
+      for (auto& k : o.unknownKeys({"type", "profiles"})) warnings.push_back(k + ": unknown key ignored");
+      TownOverride over;
+      if (auto ty = o.find("type")) {
+        over.type = ty->string(limits::kMaxNameLength);
+        if (over.type.empty()) ty->fail("the type name must not be empty");
+      }
+      if (auto pr = o.find("profiles")) {
+        pr->expectObject();
+        for (const auto& [side, name] : pr->raw().items()) {
+          const JsonReader n(name, pr->path() + "." + side);
+          if (side != "street" && side != "side" && side != "back")
+            n.fail("expected \"street\", \"side\" or \"back\", found \"" + side + "\"");
+          const std::string profile = n.string(limits::kMaxNameLength);
+          if (profile.empty()) n.fail("the profile name must not be empty");
+          over.profiles[side] = profile;
+        }
+      }
+      if (over.empty()) o.fail("overrides nothing: expected \"type\" or \"profiles\"");
+      t.overrides[id] = std::move(over);
+    }
+  }
+  return t;
+}
+
 ojson extrusionToJson(const ExtrusionSpec& e) {
   ojson j;
   j["material"] = e.material;
@@ -660,21 +760,22 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
       if (obj.name.empty()) nameReader.fail("name must not be empty");
       if (!names.insert(obj.name).second) nameReader.fail("name \"" + obj.name + "\" is used twice");
       if (auto v = o.find("visible")) obj.visible = v->boolean();
-      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry", "kifs", "growth", "unit"};
+      static const std::set<std::string> specKeys = {"box", "extrusion", "masonry", "kifs", "growth", "unit", "town"};
       int specCount = 0;
       for (const auto& key : specKeys) specCount += o.find(key) ? 1 : 0;
       if (specCount == 0)
-        o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\", \"kifs\", \"growth\", \"unit\"");
+        o.fail("no spec: expected one of \"box\", \"extrusion\", \"masonry\", \"kifs\", \"growth\", \"unit\", \"town\"");
       if (specCount > 1) o.fail("more than one spec: an object has exactly one");
       if (auto b = o.find("box")) obj.spec = boxFromJson(*b, out.warnings);
       else if (auto m = o.find("masonry")) obj.spec = masonryFromJson(*m, out.warnings);
       else if (auto k = o.find("kifs")) obj.spec = kifsFromJson(*k, out.warnings);
       else if (auto g = o.find("growth")) obj.spec = growthFromJson(*g, out.warnings);
       else if (auto u = o.find("unit")) obj.spec = unitFromJson(*u, out.warnings);
+      else if (auto t = o.find("town")) obj.spec = townFromJson(*t, folder, out.warnings);
       else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
       if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
       for (auto& k :
-           o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "unit", "plan_background"}))
+           o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "unit", "town", "plan_background"}))
         out.warnings.push_back(k + ": unknown key ignored");
       doc.objects.push_back(std::move(obj));
     }
@@ -707,6 +808,7 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     else if (const auto* k = std::get_if<KifsSpec>(&o.spec)) j["kifs"] = kifsToJson(*k);
     else if (const auto* g = std::get_if<GrowthSpec>(&o.spec)) j["growth"] = growthToJson(*g);
     else if (const auto* u = std::get_if<UnitSpec>(&o.spec)) j["unit"] = unitToJson(*u);
+    else if (const auto* t = std::get_if<TownSpec>(&o.spec)) j["town"] = townToJson(*t, folder);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
     objects.push_back(std::move(j));

@@ -47,6 +47,7 @@ App::App(GLFWwindow* window, EditorOptions options)
   statics::registerKernel(sync_);
   kifs::registerKernel(sync_);
   growth::registerKernel(sync_);
+  townCache_ = city::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());
   registerActions();
@@ -362,6 +363,22 @@ void App::registerActions() {
          selected_ = id;
          firstFrame_ = true;
        }});
+  add({"object.add_town", "Object", "Add Town...",
+       "Add a town (Kelly & Wonka Sec. 3.7): choose a GeoJSON footprint file; it is styled with "
+       "assets/styles/mixed.json until another style is picked in the Town panel.",
+       {}, false, [this, doc] {
+         fileDialog_.open(FileDialog::Mode::Open, "Open footprints", {".geojson", ".json"}, path_,
+                          [this, doc](const std::string& path) {
+                            Document d = doc();
+                            TownSpec t;
+                            t.footprints = path;
+                            t.style = std::string(CORBEL_ASSETS_DIR) + "/styles/mixed.json";
+                            const ObjectId id = d.add("Town", t);
+                            commit(std::move(d), "Add town");
+                            selected_ = id;
+                            firstFrame_ = true;
+                          });
+       }});
   add({"object.duplicate", "Object", "Duplicate", "Copy the selected object beside itself.", {GLFW_KEY_D, true}, true,
        [this, doc] {
          Document d = doc();
@@ -490,6 +507,13 @@ void App::registerActions() {
        "Add the fitted form's units to the model as unit objects (one undo step).", {}, true,
        [this] { completion_.extrude(completionHost()); },
        [this, growthSelected] { return growthSelected() && completion_.canExtrude(); }});
+  // The Town panel (Kelly & Wonka Sec. 3.7): its building list and override, for scripts.
+  const auto townSelected = [this] { return selectedTown() != nullptr; };
+  add({"town.next", "Town", "Select Next Building", "Select the next building of the selected town.", {}, false,
+       [this] { townPanel_.selectNext(townHost()); }, townSelected});
+  add({"town.next_type", "Town", "Override: Next Type",
+       "Give the selected building the style's next building type (an undoable override).", {}, false,
+       [this] { townPanel_.overrideNextType(townHost()); }, townSelected});
   add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
        [this] { showHelp_ = true; }});
 }
@@ -651,6 +675,11 @@ void App::drawObjectProperties(const DocObject& object) {
     }
     for (const Profile& p : e->profiles) ImGui::BulletText("%s: %zu segment%s", p.name.c_str(), p.points.size() - 1,
                                                             p.points.size() == 2 ? "" : "s");
+  } else if (auto* t = std::get_if<TownSpec>(&o->spec)) {
+    ImGui::Separator();
+    ImGui::TextDisabled("Town from footprints (Kelly & Wonka Sec. 3.7); edit it in the Town panel");
+    ImGui::Text("seed %llu, %s detail, %zu override%s", static_cast<unsigned long long>(t->seed), t->detail.c_str(),
+                t->overrides.size(), t->overrides.size() == 1 ? "" : "s");
   } else if (auto* u = std::get_if<UnitSpec>(&o->spec)) {
     ImGui::Separator();
     ImGui::TextDisabled("Housing unit (a completed form's, Ng Ch. 7)");
@@ -731,7 +760,10 @@ void App::drawStatusBar() {
     if (ImGui::Button("Cancel")) job_->progress().cancel();
     ImGui::SameLine();
   }
-  if (!live_.current()) {
+  if (live_.cancelled()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Build cancelled (the view shows the previous result)");
+    ImGui::SameLine();
+  } else if (!live_.current()) {
     // A build longer than a frame runs off the UI thread; the 3D view keeps the last result.
     ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Updating geometry... (the view shows the previous result)");
     if (ImGui::IsItemHovered())
@@ -882,6 +914,11 @@ void App::handleViewportInput() {
       const std::string what = panes_.pick(*spec, origin, dir);
       if (!what.empty()) log(o->name + ": picked " + what);
     }
+    // A click on a town picks one of its buildings for the Town panel.
+    if (selectedTown() && click) {
+      const auto [origin, dir] = viewRay(m.x, m.y);
+      townPanel_.pick(townHost(), origin, dir);
+    }
     // A click on a simulated block chooses it for the remove-block tool.
     if (const DocObject* masonry = selectedMasonry(); masonry && click && statics_.simulating()) {
       const auto [origin, dir] = viewRay(m.x, m.y);
@@ -994,6 +1031,36 @@ GrowthHost App::growthHost() {
   }
   host.commit = deferredCommit();
   host.endDrag = deferredEndDrag();
+  host.log = [this](const std::string& line, bool error) { log(line, error); };
+  return host;
+}
+
+const DocObject* App::selectedTown() const {
+  const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+  return o && std::holds_alternative<TownSpec>(o->spec) ? o : nullptr;
+}
+
+TownHost App::townHost() {
+  TownHost host;
+  host.doc = &history_.current();
+  host.object = selected_.value_or(0);
+  host.cache = townCache_.get();
+  host.building = live_.building();
+  host.current = live_.current();
+  host.cancelled = live_.cancelled();
+  host.fraction = live_.fraction();
+  if (auto it = sync_.status().find(host.object); it != sync_.status().end()) host.error = it->second.error;
+  host.stylesFolder = std::string(CORBEL_ASSETS_DIR) + "/styles";
+  host.cancel = [this] {
+    live_.cancel();
+    log("town build cancelled: the buildings extruded so far are kept for the next build");
+  };
+  host.retry = [this] { live_.retry(); };
+  host.openFile = [this](const std::string& title, std::vector<std::string> extensions, const std::string& start,
+                         std::function<void(const std::string&)> then) {
+    fileDialog_.open(FileDialog::Mode::Open, title, std::move(extensions), start, std::move(then));
+  };
+  host.commit = deferredCommit();
   host.log = [this](const std::string& line, bool error) { log(line, error); };
   return host;
 }
@@ -1123,6 +1190,16 @@ int App::run() {
       growthFor_.reset();
       growthPanel_.reset();
     }
+    // The Town panel of a selected town, in the same place.
+    if (const DocObject* town = selectedTown(); town && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200) {
+      if (townFor_ != town->id) townPanel_.reset();
+      townFor_ = town->id;
+      const float top = ImGui::GetFrameHeight();
+      townPanel_.draw(townHost(), vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                      vp->Size.y - top - kStatusBarHeight);
+    } else {
+      townFor_.reset();
+    }
     // The statics panel of a selected masonry object, in the same place.
     const DocObject* masonry = selectedMasonry();
     const bool staticsPane = masonry && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
@@ -1167,13 +1244,15 @@ int App::run() {
       const DocObject* o = doc.find(id);
       return o && o->visible;
     };
-    settings_.highlight = selected_;
+    // A selected town is not tinted as a whole: its picked building is outlined instead.
+    settings_.highlight = selectedTown() ? std::nullopt : selected_;
     // Tension colours and force arrows of the selected masonry object, when it is shown.
     renderer_->overlay().clear();
     renderer_->overlayOnTop().clear();
     if (const DocObject* m = selectedMasonry(); m && m->visible)
       statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
     if (growthFor_ && selected_ == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
+    if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
     renderer_->setScene(shownScene(), settings_);
     const int px = int(vpX_ * sx), py = int((vp->Size.y - vpY_ - vpH_) * sy), pw = int(vpW_ * sx), ph = int(vpH_ * sy);
     renderer_->draw(camera_, px, py, pw, ph, settings_);

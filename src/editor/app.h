@@ -1,6 +1,7 @@
 #pragma once
 // The editor application: one Document with undo history, the Scene derived from it, the
 // renderer, and the ImGui shell (menu bar, left panel, status/log bar, 3D viewport).
+#include "city/kernel.h"
 #include "core/app_state.h"
 #include "core/history.h"
 #include "core/kifs_spec.h"
@@ -15,6 +16,7 @@
 #include "editor/growth_panel.h"
 #include "editor/kifs_panel.h"
 #include "editor/statics_panel.h"
+#include "editor/town_panel.h"
 #include "render/camera.h"
 #include "render/kifs_layer.h"
 #include "render/kifs_pass.h"
@@ -93,6 +95,8 @@ class App {
   StaticsHost staticsHost();
   GrowthHost growthHost();
   CompletionHost completionHost();
+  TownHost townHost();
+  const DocObject* selectedTown() const;
   std::function<void(Document, const std::string&, const std::string&)> deferredCommit();
   std::function<void()> deferredEndDrag();
   std::string windowTitle() const;
@@ -156,6 +160,9 @@ class App {
   GrowthPanel growthPanel_;
   CompletionPanel completion_;  // under the growth panel
   std::optional<ObjectId> growthFor_;
+  std::shared_ptr<city::TownCache> townCache_;  // the town kernel's per-building results
+  TownPanel townPanel_;
+  std::optional<ObjectId> townFor_;
   std::unique_ptr<render::KifsPass> kifsPass_;  // made when a KIFS building is first shown
   std::unique_ptr<render::KifsLayer> kifsLayer_;  // the cached march (progressive refinement)
   std::vector<KifsSpec> kifsSpecs_;              // what the layer shows, to see it change

@@ -45,6 +45,11 @@ std::vector<std::string> seeds() {
      "repeat": {"count": [2, 3], "offset": 1}}}]})");
   out.push_back(R"({"format":"corbel","version":1,"objects":[{"id":1,"name":"a","box":{"size":[1,1,1]}},)"
                 R"({"id":2,"name":"b","box":{"size":[2,2,2],"rotation":45.5}}]})");
+  out.push_back(R"({"format":"corbel","version":1,"objects":[{"id":1,"name":"T","town":{)"
+                R"("footprints":{"type":"FeatureCollection","features":[{"type":"Feature","id":"a",)"
+                R"("geometry":{"type":"Polygon","coordinates":[[[0,0],[9,0],[9,7],[0,7],[0,0]]]}}]},)"
+                R"("style":"../styles/oldtown.json","seed":3,"detail":"steps",)"
+                R"("overrides":{"a":{"type":"town house","profiles":{"street":"oldtown gable","back":"x"}}}}}]})");
   return out;
 }
 

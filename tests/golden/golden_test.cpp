@@ -4,6 +4,7 @@
 // <build>/tests/golden/out/. Regenerate after an intended change with scripts/update-goldens
 // (CORBEL_UPDATE_GOLDENS=1), then look at the new images before committing them.
 #include "extrude/kernel.h"
+#include "city/kernel.h"
 #include "growth/kernel.h"
 #include "kifs/kernel.h"
 #include "render/kifs_pass.h"
@@ -39,6 +40,7 @@ render::Image renderExample(const std::string& name) {
   statics::registerKernel(sync);
   kifs::registerKernel(sync);
   growth::registerKernel(sync);
+  city::registerKernel(sync);
   sync.update(p.document, scene);
   for (const auto& [id, st] : sync.status()) EXPECT_EQ(st.error, "") << name;
   render::RenderSettings settings;

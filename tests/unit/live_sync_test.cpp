@@ -243,3 +243,40 @@ TEST(LiveSync, AFailedBuildKeepsTheLastGoodGeometryAndReportsIt) {
 }
 
 }  // namespace
+
+namespace {
+
+// The user's Cancel (the Town panel's): the running build stops, the Scene keeps the last
+// result, and that state is not built again by itself; retry() or a newer edit builds again.
+TEST(LiveSync, ACancelledStateIsNotRebuiltUntilRetriedOrEdited) {
+  SceneSync sync;
+  Gate gate;
+  gatedKernel(sync, gate, /*honourCancel=*/true);
+  LiveSync live(sync, {.waitSeconds = 0.0, .cancelAfterSeconds = 10.0});
+  Document d;
+  const ObjectId id = d.add("shell", tagged("ab"));
+  Scene scene;
+  live.settle(d, 1, scene);
+  gate.set(false);
+  std::get<ExtrusionSpec>(d.find(id)->spec).material = "abcd";
+  live.update(d, 2, scene);
+  waitUntilBlocked(gate);
+  live.cancel();
+  for (int i = 0; i < 5000 && live.building(); ++i) {
+    live.update(d, 2, scene);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_TRUE(live.cancelled());
+  EXPECT_FALSE(live.current());
+  EXPECT_EQ(shownWidth(scene, id), 2.0);
+  const std::size_t started = live.buildsStarted();
+  for (int i = 0; i < 5; ++i) live.update(d, 2, scene);
+  EXPECT_EQ(live.buildsStarted(), started) << "a cancelled state must not restart by itself";
+  gate.set(true);
+  live.retry();
+  untilCurrent(live, d, 2, scene);
+  EXPECT_EQ(shownWidth(scene, id), 4.0);
+  EXPECT_FALSE(live.cancelled());
+}
+
+}  // namespace

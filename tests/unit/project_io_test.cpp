@@ -172,7 +172,7 @@ TEST(ProjectIo, ExamplesSaveLoadSaveIsByteIdentical) {
     const std::string a = readText(dir.file("a.corbel")), b = readText(dir.file("b.corbel"));
     EXPECT_FALSE(a.empty());
     EXPECT_EQ(a, b);
-    EXPECT_EQ(a, corbel::serializeProject(loaded.document));
+    EXPECT_EQ(a, corbel::serializeProject(loaded.document, dir.path()));  // file paths relative to it
   }
 }
 
@@ -336,7 +336,7 @@ TEST(ProjectIoErrors, MissingFields) {
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "box": {}}]})", "objects[0].name",
                "missing");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "A"}]})", "objects[0]",
-               R"(no spec: expected one of "box", "extrusion", "masonry", "kifs", "growth", "unit")");
+               R"(no spec: expected one of "box", "extrusion", "masonry", "kifs", "growth", "unit", "town")");
 }
 
 TEST(ProjectIoErrors, NonFiniteNumbers) {
@@ -876,4 +876,72 @@ TEST(ProjectIoErrors, UnitFaultsNameTheirPath) {
   EXPECT_FAULT_CONTAINS(withSpec("unit", R"("parts": [[0, 0, 0, 3, 3]])"), "objects[0].unit.parts[0]", "x0, y0");
   EXPECT_FAULT_CONTAINS(withSpec("unit", R"("parts": [[0, 0, 0, 3, 3, 3], [5, 0, 0, 4, 3, 3]])"),
                         "objects[0].unit.parts[1]", "hi must exceed lo");
+}
+
+namespace {
+std::string withTown(const std::string& body) { return withSpec("town", body); }
+}  // namespace
+
+TEST(ProjectIo, TownSpecsRoundTripWithPathsRelativeToTheProject) {
+  corbel::TownSpec t;
+  t.footprints = "/data/p/town.geojson";
+  t.style = "/data/styles/oldtown.json";
+  t.seed = 7;
+  t.detail = "steps";
+  t.overrides["w12"].type = "garage";
+  t.overrides["w13"].profiles = {{"street", "gable"}, {"back", "hip"}};
+  corbel::Document d;
+  d.add("town", t);
+  const std::string text = corbel::serializeProject(d, "/data/p");
+  EXPECT_NE(text.find(R"("footprints": "town.geojson")"), std::string::npos) << text;
+  EXPECT_NE(text.find(R"("style": "../styles/oldtown.json")"), std::string::npos) << text;
+  const corbel::LoadedProject back = corbel::parseProject(text, "/data/p");
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document, "/data/p"), text);
+  // Saved elsewhere, the paths follow the new folder and still name the same files.
+  const std::string moved = corbel::serializeProject(back.document, "/data/q");
+  EXPECT_EQ(corbel::parseProject(moved, "/data/q").document, d);
+}
+
+TEST(ProjectIo, TownSpecsCanEmbedTheirFootprintsAndStyle) {
+  const auto p = corbel::parseProject(withTown(
+      R"("footprints": {"type": "FeatureCollection", "features": []}, "style": {"name": "s", "profiles": [], "types": []})"));
+  const auto& t = std::get<corbel::TownSpec>(p.document.objects[0].spec);
+  EXPECT_TRUE(t.footprints.empty());
+  EXPECT_EQ(t.footprintsJson, R"({"features":[],"type":"FeatureCollection"})");
+  EXPECT_EQ(t.styleJson, R"({"name":"s","profiles":[],"types":[]})");
+  EXPECT_EQ(t.seed, 1u);
+  EXPECT_EQ(t.detail, "full");
+  const std::string text = corbel::serializeProject(p.document);
+  EXPECT_EQ(corbel::parseProject(text).document, p.document);
+  EXPECT_EQ(corbel::serializeProject(corbel::parseProject(text).document), text);
+}
+
+TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
+  EXPECT_FAULT(withTown(R"("style": "s.json")"), "objects[0].town.footprints", "missing");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson")"), "objects[0].town.style", "missing");
+  EXPECT_FAULT(withTown(R"("footprints": 3, "style": "s.json")"), "objects[0].town.footprints",
+               "expected a file path (a string) or the JSON itself (an object), found a number");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": ["s.json"])"), "objects[0].town.style",
+               "expected a file path (a string) or the JSON itself (an object), found an array");
+  EXPECT_FAULT(withTown(R"("footprints": "", "style": "s.json")"), "objects[0].town.footprints",
+               "the path must not be empty");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "seed": -1)"), "objects[0].town.seed",
+               "-1 is outside [0, 9007199254740992]");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "detail": "high")"), "objects[0].town.detail",
+               R"(expected "massing", "steps" or "full", found "high")");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": [])"),
+               "objects[0].town.overrides", "expected an object, found an array");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {}})"),
+               R"(objects[0].town.overrides["w1"])", R"(overrides nothing: expected "type" or "profiles")");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {"type": 2}})"),
+               R"(objects[0].town.overrides["w1"].type)", "expected a string, found a number");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {"profiles": {"roof": "x"}}})"),
+               R"(objects[0].town.overrides["w1"].profiles.roof)", R"(expected "street", "side" or "back", found "roof")");
+  EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {"profiles": {"side": ""}}})"),
+               R"(objects[0].town.overrides["w1"].profiles.side)", "the profile name must not be empty");
+  const auto w = corbel::parseProject(withTown(R"("footprints": "f.geojson", "style": "s.json", "colour": 1)"));
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_EQ(w.warnings[0], "objects[0].town.colour: unknown key ignored");
 }

@@ -1,0 +1,224 @@
+#include "city/kernel.h"
+
+#include "core/error.h"
+#include "core/project_io.h"
+#include "extrude/kernel.h"
+
+#include <filesystem>
+#include <numeric>
+
+namespace corbel::city {
+
+namespace {
+
+std::uint64_t fnv1a(const std::string& text, std::uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+// A building's inputs as one hash: its styled extrusion spec (footprint, labels, type,
+// profiles, features) written as the project format writes specs, and the detail.
+std::uint64_t inputHash(const extrude::ExtrusionSpec& spec, const std::string& type, Detail detail) {
+  Document d;
+  d.objects.push_back({1, "b", true, spec, std::nullopt});
+  return fnv1a(serializeProject(d) + type + std::to_string(static_cast<int>(detail)));
+}
+
+std::string fileStamp(const std::string& path) {
+  std::error_code ec;
+  const auto t = std::filesystem::last_write_time(path, ec);
+  const auto size = std::filesystem::file_size(path, ec);
+  return path + "@" + std::to_string(t.time_since_epoch().count()) + ":" + std::to_string(size);
+}
+
+// Rethrows a fault of the footprints or the style under the spec's key.
+template <class F>
+auto under(const std::string& key, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    throw InputError(key, e.what());
+  } catch (const Error& e) {
+    throw InputError(key, e.what());
+  }
+}
+
+}  // namespace
+
+Detail detailFromName(const std::string& name) {
+  if (name == "massing") return Detail::Massing;
+  if (name == "steps") return Detail::Steps;
+  if (name == "full") return Detail::Full;
+  throw InputError("town.detail", "expected \"massing\", \"steps\" or \"full\", found \"" + name + "\"");
+}
+
+TownInputs readTownInputs(const TownSpec& spec) {
+  if (auto problem = checkTownSpec(spec)) {
+    const auto colon = problem->find(": ");
+    throw InputError("town." + problem->substr(0, colon), problem->substr(colon + 2));
+  }
+  TownInputs in;
+  in.style = under("town.style", [&] { return spec.style.empty() ? parseStyle(spec.styleJson) : loadStyle(spec.style); });
+  in.town = under("town.footprints",
+                  [&] { return spec.footprints.empty() ? readTown(spec.footprintsJson) : readTownFile(spec.footprints); });
+  in.labels = labelTown(in.town, in.style.labels);
+  return in;
+}
+
+std::map<std::string, BuildingOverride> resolveOverrides(const Style& style, const TownSpec& spec) {
+  std::map<std::string, BuildingOverride> out;
+  for (const auto& [id, o] : spec.overrides) {
+    const std::string at = "town.overrides[\"" + id + "\"]";
+    BuildingOverride r;
+    if (!o.type.empty()) {
+      for (std::size_t i = 0; i < style.types.size(); ++i)
+        if (style.types[i].name == o.type) r.type = i;
+      if (!r.type) throw InputError(at + ".type", "the style \"" + style.name + "\" has no type named \"" + o.type + "\"");
+    }
+    for (const auto& [side, name] : o.profiles) {
+      const auto orientation = orientationFromName(side);
+      if (!orientation) throw InputError(at + ".profiles", "expected \"street\", \"side\" or \"back\", found \"" + side + "\"");
+      int index = -1;
+      for (std::size_t i = 0; i < style.profiles.size(); ++i)
+        if (style.profiles[i].name == name) index = static_cast<int>(i);
+      if (index < 0)
+        throw InputError(at + ".profiles." + side, "the style \"" + style.name + "\" has no profile named \"" + name + "\"");
+      r.profiles[*orientation] = index;
+    }
+    out[id] = std::move(r);
+  }
+  return out;
+}
+
+std::shared_ptr<const TownInputs> TownCache::inputsFor(ObjectId object, const TownSpec& spec) {
+  const std::string key = (spec.footprints.empty() ? spec.footprintsJson : fileStamp(spec.footprints)) + "\n" +
+                          (spec.style.empty() ? spec.styleJson : fileStamp(spec.style));
+  {
+    std::lock_guard lock(mutex_);
+    auto it = inputs_.find(object);
+    if (it != inputs_.end() && it->second.key == key) return it->second.inputs;
+  }
+  auto inputs = std::make_shared<const TownInputs>(readTownInputs(spec));
+  std::lock_guard lock(mutex_);
+  inputs_[object] = {key, inputs};
+  return inputs;
+}
+
+BuildResult TownCache::build(const DocObject& object, Progress* progress, std::size_t chunk) {
+  const TownSpec& spec = std::get<TownSpec>(object.spec);
+  if (progress) progress->report(0, "reading footprints");
+  const std::shared_ptr<const TownInputs> in = inputsFor(object.id, spec);
+  const Detail detail = detailFromName(spec.detail);
+  const std::map<std::string, BuildingOverride> overrides = resolveOverrides(in->style, spec);
+  for (const auto& [id, o] : spec.overrides) {
+    bool found = false;
+    for (const Building& b : in->town.buildings) found = found || b.id == id;
+    if (!found) throw InputError("town.overrides[\"" + id + "\"]", "no footprint has this id");
+  }
+
+  // Style every building (cheap) to learn its inputs' hash; extrude only the ones not cached.
+  const std::size_t n = in->town.buildings.size();
+  std::vector<std::uint64_t> hashes(n, 0);
+  std::vector<std::size_t> misses;
+  std::vector<char> extruded(n, 0);  // styled without a problem: the batch extrudes it
+  {
+    std::lock_guard lock(mutex_);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Building& b = in->town.buildings[i];
+      std::string problem = b.problem, type;
+      if (problem.empty()) {
+        auto it = overrides.find(b.id);
+        StyledBuilding s = styleBuilding(in->style, b, in->labels[i], spec.seed, it == overrides.end() ? nullptr : &it->second);
+        type = s.type;
+        problem = s.problem;
+        if (problem.empty()) hashes[i] = inputHash(s.spec, s.type, detail), extruded[i] = 1;
+      }
+      if (!problem.empty()) hashes[i] = fnv1a(problem + type);
+      auto e = entries_.find({object.id, b.id});
+      if (e == entries_.end() || e->second.hash != hashes[i]) misses.push_back(i);
+    }
+  }
+  TownOptions options;
+  options.detail = detail;
+  options.seed = spec.seed;
+  options.chunk = chunk;
+  options.overrides = &overrides;
+  options.timeLimitSeconds = extrude::kEditTimeLimitSeconds;
+  if (!misses.empty()) {
+    const auto sink = [&](const BuildingReport& r, MeshData* mesh) {
+      Entry e;
+      e.hash = hashes[r.index];
+      e.ok = mesh != nullptr;
+      e.type = r.type;
+      e.error = r.error;
+      if (mesh) e.mesh = std::move(*mesh);
+      if (extruded[r.index]) ++extrusions_;
+      std::lock_guard lock(mutex_);
+      entries_[{object.id, r.id}] = std::move(e);
+    };
+    const auto onChunk = [&](std::size_t done, std::size_t total) {
+      if (progress) {
+        progress->report(double(done) / double(total),
+                         "extruded " + std::to_string(done) + " of " + std::to_string(total) + " buildings");
+        if (progress->cancelled()) throw Cancelled();
+      }
+    };
+    if (progress && progress->cancelled()) throw Cancelled();
+    buildTown(in->town, in->labels, in->style, options, sink, misses, onChunk);
+  }
+
+  // The object's mesh: every built building in footprint order.
+  BuildResult out;
+  out.kind = Kind::Shell;
+  std::vector<BuiltBuilding> list;
+  std::lock_guard lock(mutex_);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Building& b = in->town.buildings[i];
+    const Entry& e = entries_.at({object.id, b.id});
+    BuiltBuilding bb;
+    bb.id = b.id;
+    bb.type = e.type;
+    bb.hash = e.hash;
+    bb.error = e.ok ? std::string() : (e.error.empty() ? b.problem : e.error);
+    if (e.ok) {
+      bb.firstFace = out.mesh.faces.size();
+      bb.faceCount = e.mesh.faces.size();
+      for (const Vec3& p : e.mesh.points) bb.bounds.add(p);
+      out.mesh.append(e.mesh);
+    } else {
+      out.warnings.push_back("building " + b.id + ": " + bb.error);
+    }
+    list.push_back(std::move(bb));
+  }
+  last_[object.id] = std::move(list);
+  return out;
+}
+
+std::vector<BuiltBuilding> TownCache::buildings(ObjectId object) const {
+  std::lock_guard lock(mutex_);
+  auto it = last_.find(object);
+  return it == last_.end() ? std::vector<BuiltBuilding>{} : it->second;
+}
+
+MeshData TownCache::mesh(ObjectId object, const std::string& id) const {
+  std::lock_guard lock(mutex_);
+  auto it = entries_.find({object, id});
+  return it == entries_.end() ? MeshData{} : it->second.mesh;
+}
+
+std::shared_ptr<const TownInputs> TownCache::inputs(ObjectId object) const {
+  std::lock_guard lock(mutex_);
+  auto it = inputs_.find(object);
+  return it == inputs_.end() ? nullptr : it->second.inputs;
+}
+
+std::shared_ptr<TownCache> registerKernel(SceneSync& sync, std::shared_ptr<TownCache> cache) {
+  if (!cache) cache = std::make_shared<TownCache>();
+  sync.setBuilder<TownSpec>([cache](const DocObject& o, Progress* p) { return cache->build(o, p); });
+  return cache;
+}
+
+}  // namespace corbel::city

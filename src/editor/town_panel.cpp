@@ -1,0 +1,258 @@
+#include "editor/town_panel.h"
+
+#include "core/error.h"
+#include "editor/town_edits.h"
+
+#include <imgui.h>
+
+#include <filesystem>
+#include <map>
+
+namespace corbel::editor {
+
+namespace {
+
+const TownSpec* townOf(const TownHost& host) {
+  const DocObject* o = host.doc ? host.doc->find(host.object) : nullptr;
+  return o ? std::get_if<TownSpec>(&o->spec) : nullptr;
+}
+
+std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+const city::BuiltBuilding* findBuilding(const std::vector<city::BuiltBuilding>& list, const std::string& id) {
+  for (const auto& b : list)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
+}  // namespace
+
+void TownPanel::commitOverride(const TownHost& host, const TownOverride& o, const std::string& what) {
+  Document doc = *host.doc;
+  try {
+    setTownOverride(doc, host.object, selected_, o);
+  } catch (const Error& e) {
+    host.log(e.what(), true);
+    return;
+  }
+  host.commit(std::move(doc), what + " of building " + selected_, {});
+}
+
+void TownPanel::selectNext(const TownHost& host) {
+  const auto list = host.cache->buildings(host.object);
+  if (list.empty()) return;
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    if (list[i].id == selected_) next = (i + 1) % list.size();
+  selected_ = list[next].id;
+  scrollToSelected_ = true;
+}
+
+void TownPanel::overrideNextType(const TownHost& host) {
+  const TownSpec* spec = townOf(host);
+  const auto inputs = host.cache->inputs(host.object);
+  const auto list = host.cache->buildings(host.object);
+  const city::BuiltBuilding* b = findBuilding(list, selected_);
+  if (!spec || !inputs || !b || inputs->style.types.empty()) return;
+  const auto& types = inputs->style.types;
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < types.size(); ++i)
+    if (types[i].name == b->type) at = (i + 1) % types.size();
+  TownOverride o;
+  if (auto it = spec->overrides.find(selected_); it != spec->overrides.end()) o = it->second;
+  o.type = types[at].name;
+  commitOverride(host, o, "Set the type to " + o.type);
+}
+
+void TownPanel::pick(const TownHost& host, const Vec3& origin, const Vec3& dir) {
+  if (auto id = pickBuilding(*host.cache, host.object, origin, dir)) {
+    selected_ = *id;
+    scrollToSelected_ = true;
+    host.log("picked building " + *id, false);
+  }
+}
+
+void TownPanel::drawOverlay(const TownHost& host, render::Overlay& overlay) const {
+  if (selected_.empty()) return;
+  const auto list = host.cache->buildings(host.object);
+  const city::BuiltBuilding* b = findBuilding(list, selected_);
+  if (!b || b->bounds.empty()) return;
+  const Vec3 lo = b->bounds.lo, hi = b->bounds.hi;
+  const render::Rgba c{1.0f, 0.55f, 0.1f, 1.0f};
+  Vec3 p[8];
+  for (int k = 0; k < 8; ++k) p[k] = Vec3(k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]);
+  const int edges[12][2] = {{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7}, {7, 6}, {6, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  for (const auto& e : edges) overlay.line(p[e[0]], p[e[1]], c);
+}
+
+void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
+  const TownSpec* current = townOf(host);
+  if (!current) return;
+  const DocObject* o = host.doc->find(host.object);
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Town", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushItemWidth(-110.0f);
+  ImGui::Text("%s: town from footprints (Kelly & Wonka 3.7)", o->name.c_str());
+  const ObjectId id = host.object;
+  const auto commitSpec = [&host, id](TownSpec s, const std::string& label, const std::string& merge) {
+    Document doc = *host.doc;
+    try {
+      setTownSpec(doc, id, s);
+    } catch (const Error& e) {
+      host.log(e.what(), true);
+      return;
+    }
+    host.commit(std::move(doc), label, merge);
+  };
+
+  // Inputs: footprints, style, seed, detail.
+  ImGui::TextUnformatted("Footprints");
+  ImGui::SameLine(110);
+  ImGui::TextUnformatted(current->footprints.empty() ? "(embedded GeoJSON)" : fileName(current->footprints).c_str());
+  if (ImGui::IsItemHovered() && !current->footprints.empty()) ImGui::SetTooltip("%s", current->footprints.c_str());
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Open...")) {
+    const TownSpec s = *current;
+    host.openFile("Open footprints", {".geojson", ".json"}, s.footprints, [commitSpec, s](const std::string& path) {
+      TownSpec t = s;
+      t.footprints = path;
+      t.footprintsJson.clear();
+      t.overrides.clear();  // other footprints: the ids mean other buildings
+      commitSpec(t, "Open footprints " + fileName(path), {});
+    });
+  }
+  const std::vector<std::string> styles = stylesIn(host.stylesFolder);
+  const std::string styleLabel = current->style.empty() ? "(embedded)" : fileName(current->style);
+  if (ImGui::BeginCombo("Style", styleLabel.c_str())) {
+    for (const std::string& path : styles)
+      if (ImGui::Selectable(fileName(path).c_str(), fileName(path) == styleLabel && !current->style.empty())) {
+        TownSpec t = *current;
+        t.style = path;
+        t.styleJson.clear();
+        commitSpec(t, "Style the town " + fileName(path), {});
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("File...")) {
+    const TownSpec s = *current;
+    host.openFile("Open a style", {".json"}, s.style.empty() ? host.stylesFolder + "/" : s.style,
+                  [commitSpec, s](const std::string& path) {
+                    TownSpec t = s;
+                    t.style = path;
+                    t.styleJson.clear();
+                    commitSpec(t, "Style the town " + fileName(path), {});
+                  });
+  }
+  int seed = static_cast<int>(current->seed);
+  if (ImGui::InputInt("Seed", &seed) && seed >= 0) {
+    TownSpec t = *current;
+    t.seed = static_cast<std::uint64_t>(seed);
+    commitSpec(t, "Seed the town " + std::to_string(seed), "town.seed." + std::to_string(id));
+  }
+  const char* details[] = {"massing", "steps", "full"};
+  if (ImGui::BeginCombo("Detail", current->detail.c_str())) {
+    for (const char* d : details)
+      if (ImGui::Selectable(d, current->detail == d)) {
+        TownSpec t = *current;
+        t.detail = d;
+        commitSpec(t, std::string("Town detail ") + d, {});
+      }
+    ImGui::EndCombo();
+  }
+
+  // The build.
+  if (host.building) {
+    ImGui::ProgressBar(static_cast<float>(host.fraction), ImVec2(-70, 0), "Building the town...");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) host.cancel();
+  } else if (host.cancelled) {
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Cancelled: the view shows the last build.");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Build")) host.retry();
+  }
+  if (!host.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", host.error.c_str());
+
+  const auto list = host.cache->buildings(host.object);
+  const auto inputs = host.cache->inputs(host.object);
+  std::map<std::string, int> types;
+  std::size_t built = 0;
+  for (const auto& b : list) {
+    if (b.error.empty()) ++built, ++types[b.type];
+  }
+  ImGui::Text("%zu buildings, %zu built, %zu overridden", list.size(), built, current->overrides.size());
+  std::string byType;
+  for (const auto& [t, n] : types) byType += (byType.empty() ? "" : ", ") + std::to_string(n) + " " + t;
+  if (!byType.empty()) ImGui::TextWrapped("%s", byType.c_str());
+
+  // The buildings, by footprint id.
+  ImGui::Separator();
+  ImGui::TextUnformatted("Buildings (click one here or in the 3D view)");
+  const float listH = std::max(80.0f, ImGui::GetContentRegionAvail().y - 8 * ImGui::GetFrameHeightWithSpacing());
+  ImGui::BeginChild("buildings", ImVec2(0, listH), true);
+  // Only the visible rows are drawn (a real town has thousands of buildings).
+  const float rowH = ImGui::GetTextLineHeightWithSpacing();
+  if (scrollToSelected_) {
+    for (std::size_t i = 0; i < list.size(); ++i)
+      if (list[i].id == selected_) ImGui::SetScrollY(std::max(0.0f, float(i) * rowH - 0.5f * listH));
+    scrollToSelected_ = false;
+  }
+  ImGuiListClipper clipper;
+  clipper.Begin(static_cast<int>(list.size()), rowH);
+  while (clipper.Step())
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const city::BuiltBuilding& b = list[std::size_t(i)];
+      const bool overridden = current->overrides.count(b.id) > 0;
+      const std::string row = b.id + "  " + (b.error.empty() ? b.type : "(not built)") + (overridden ? "  *" : "");
+      if (ImGui::Selectable(row.c_str(), b.id == selected_)) selected_ = b.id;
+      if (!b.error.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.error.c_str());
+    }
+  ImGui::EndChild();
+
+  // The selected building: its type and profiles, overridable.
+  const city::BuiltBuilding* b = findBuilding(list, selected_);
+  if (b && inputs) {
+    TownOverride over;
+    if (auto it = current->overrides.find(b->id); it != current->overrides.end()) over = it->second;
+    ImGui::Text("Building %s: %s", b->id.c_str(), b->type.empty() ? "no type" : b->type.c_str());
+    if (!b->error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", b->error.c_str());
+    if (ImGui::BeginCombo("Type", over.type.empty() ? "(the style's choice)" : over.type.c_str())) {
+      if (ImGui::Selectable("(the style's choice)", over.type.empty())) {
+        TownOverride n = over;
+        n.type.clear();
+        commitOverride(host, n, "Give back the style's type");
+      }
+      for (const auto& t : inputs->style.types)
+        if (ImGui::Selectable(t.name.c_str(), t.name == over.type)) {
+          TownOverride n = over;
+          n.type = t.name;
+          commitOverride(host, n, "Set the type to " + t.name);
+        }
+      ImGui::EndCombo();
+    }
+    for (const char* side : {"street", "side", "back"}) {
+      auto it = over.profiles.find(side);
+      const std::string shown = it == over.profiles.end() ? "(the style's choice)" : it->second;
+      if (ImGui::BeginCombo((std::string(side) + " edges").c_str(), shown.c_str())) {
+        if (ImGui::Selectable("(the style's choice)", it == over.profiles.end())) {
+          TownOverride n = over;
+          n.profiles.erase(side);
+          commitOverride(host, n, std::string("Give back the style's ") + side + " profiles");
+        }
+        for (const auto& p : inputs->style.profiles)
+          if (ImGui::Selectable(p.name.c_str(), it != over.profiles.end() && it->second == p.name)) {
+            TownOverride n = over;
+            n.profiles[side] = p.name;
+            commitOverride(host, n, std::string("Set the ") + side + " profiles to " + p.name);
+          }
+        ImGui::EndCombo();
+      }
+    }
+    if (!over.empty() && ImGui::Button("Clear override")) commitOverride(host, TownOverride{}, "Clear the override");
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace corbel::editor
