@@ -51,6 +51,26 @@ double maxStep(const VectorXd& v, const VectorXd& dv) {
 
 bool allFinite(const VectorXd& v) { return v.allFinite(); }
 
+// H⁻¹ of a block's Hessian (its leading size × size corner; zeros elsewhere) by a pivoted
+// LDLᵀ of fixed size: the dynamic-size one spent most of its time in Eigen's generic
+// triangular-solve and GEMM dispatch (about 8 % of a QP on the barrel vault).
+template <int N>
+Mat4 fixedInverse(const Mat4& H) {
+  using M = Eigen::Matrix<double, N, N>;
+  const M h = H.topLeftCorner<N, N>();
+  Mat4 inv = Mat4::Zero();
+  inv.topLeftCorner<N, N>() = Eigen::LDLT<M>(h).solve(M::Identity());
+  return inv;
+}
+Mat4 blockInverse(const Mat4& H, int size) {
+  switch (size) {
+    case 1: return fixedInverse<1>(H);
+    case 2: return fixedInverse<2>(H);
+    case 3: return fixedInverse<3>(H);
+    default: return fixedInverse<4>(H);
+  }
+}
+
 // One interface to the factorisations of S (IpmOptions::schurSolver). S arrives as the lower
 // triangle of a scalar sparse matrix; the block factorisation scatters it into 6×6 blocks
 // through a map built once.
@@ -112,6 +132,12 @@ class SchurFactor {
       if (!(D[i] > 1e-15 * dmax)) return false;
     return true;
   }
+  // The 6×6-block path without a scalar S: the caller sums its blocks into values() at the
+  // slots it asked for, then calls factorizeBlocks().
+  bool blockwise() const { return kind_ == SchurSolver::BlockLdlt; }
+  void analyzeBlocks(int n, const std::vector<std::pair<int, int>>& pairs) { blocks_.analyze(n, pairs); }
+  BlockLdlt& blocks() { return blocks_; }
+  bool factorizeBlocks() { return blocks_.factorize(); }
   VectorXd solve(const VectorXd& b) {
     if (kind_ == SchurSolver::Cholmod) return cholmod_.solve(b);
     if (kind_ == SchurSolver::BlockLdlt) return blocks_.solve(b);
@@ -215,6 +241,94 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   SchurFactor ldlt(options.schurSolver, qp.rowGroup);
   bool analysed = false;
   std::vector<Mat4> hinv(nb), hess(nb);
+  // The block path (BlockLdlt): every variable block touches at most two 6-row groups (a
+  // contact vertex: the two blocks it joins; an artificial: one), so its A columns are a
+  // fixed 12×4 matrix (zero-padded) and its contribution A_j H_j⁻¹ A_jᵀ is at most three
+  // 6×6 blocks of S, summed straight into the factorisation's slots: no scalar S, no
+  // triplets, no scatter, fixed-size kernels.
+  struct BlockCols12 {
+    Eigen::Matrix<double, 12, 4> vals = Eigen::Matrix<double, 12, 4>::Zero();
+    int groups = 0;      // 1 or 2
+    int slot00 = -1, slot11 = -1, slot10 = -1;  // S blocks (g0, g0), (g1, g1), (g1, g0)
+    bool transposed10 = false;                  // (g1, g0) stored as its transpose
+  };
+  std::vector<BlockCols12> cols12;
+  std::vector<int> diagBlockSlot;
+  bool blockwise = ldlt.blockwise() && m % 6 == 0 && m > 0;
+  std::vector<std::array<int, 2>> blockGroups(std::size_t(nb), {-1, -1});
+  if (blockwise) {
+    for (int j = 0; j < nb && blockwise; ++j) {
+      for (int r : cols[j].rows) {
+        const int g = r / 6;
+        auto& gr = blockGroups[std::size_t(j)];
+        if (gr[0] == g || gr[1] == g) continue;
+        if (gr[0] < 0) gr[0] = g;
+        else if (gr[1] < 0) gr[1] = g;
+        else blockwise = false;  // more than two groups: the scalar path
+      }
+    }
+  }
+  if (blockwise) {
+    std::vector<std::pair<int, int>> pairs;
+    for (int g = 0; g < m / 6; ++g) pairs.emplace_back(g, g);
+    for (int j = 0; j < nb; ++j) {
+      const auto& gr = blockGroups[std::size_t(j)];
+      if (gr[1] >= 0) pairs.emplace_back(std::max(gr[0], gr[1]), std::min(gr[0], gr[1]));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    ldlt.analyzeBlocks(m / 6, pairs);
+    const BlockLdlt& bl = ldlt.blocks();
+    diagBlockSlot.resize(std::size_t(m / 6));
+    for (int g = 0; g < m / 6; ++g) diagBlockSlot[std::size_t(g)] = bl.slot(g, g).index;
+    cols12.resize(std::size_t(nb));
+    for (int j = 0; j < nb; ++j) {
+      BlockCols12& bc = cols12[std::size_t(j)];
+      auto gr = blockGroups[std::size_t(j)];
+      if (gr[0] < 0) continue;  // touches no equation
+      if (gr[1] >= 0 && gr[1] < gr[0]) std::swap(gr[0], gr[1]);
+      bc.groups = gr[1] >= 0 ? 2 : 1;
+      const auto& rows = cols[j].rows;
+      for (std::size_t p = 0; p < rows.size(); ++p) {
+        const int local = (rows[p] / 6 == gr[0] ? 0 : 6) + rows[p] % 6;
+        for (int k = 0; k < qp.blocks[j].size; ++k) bc.vals(local, k) = cols[j].vals(Eigen::Index(p), k);
+      }
+      bc.slot00 = bl.slot(gr[0], gr[0]).index;
+      if (bc.groups == 2) {
+        bc.slot11 = bl.slot(gr[1], gr[1]).index;
+        const BlockLdlt::Slot sl = bl.slot(gr[1], gr[0]);
+        bc.slot10 = sl.index;
+        bc.transposed10 = sl.transposed;
+      }
+    }
+    analysed = true;
+  }
+  // Sums A H⁻¹ Aᵀ + regularisation·I into the block factorisation and factors it.
+  auto factorBlockwise = [&](double shift) {
+    std::vector<BlockLdlt::Block>& v = ldlt.blocks().values();
+    for (BlockLdlt::Block& b : v) b.setZero();
+    for (int j = 0; j < nb; ++j) {
+      const BlockCols12& bc = cols12[std::size_t(j)];
+      if (bc.groups == 0) continue;
+      const Eigen::Matrix<double, 12, 4> AH = bc.vals * hinv[std::size_t(j)];
+      v[std::size_t(bc.slot00)].noalias() += AH.topRows<6>() * bc.vals.topRows<6>().transpose();
+      if (bc.groups == 2) {
+        v[std::size_t(bc.slot11)].noalias() += AH.bottomRows<6>() * bc.vals.bottomRows<6>().transpose();
+        if (bc.transposed10)
+          v[std::size_t(bc.slot10)].noalias() += (AH.bottomRows<6>() * bc.vals.topRows<6>().transpose()).transpose();
+        else
+          v[std::size_t(bc.slot10)].noalias() += AH.bottomRows<6>() * bc.vals.topRows<6>().transpose();
+      }
+    }
+    // The diagonal blocks as the scalar path had them: exactly symmetric (the lower triangle
+    // mirrored), plus the shift.
+    for (const int sl : diagBlockSlot) {
+      BlockLdlt::Block& b = v[std::size_t(sl)];
+      b.triangularView<Eigen::StrictlyUpper>() = b.transpose();
+      b.diagonal().array() += shift;
+    }
+    return ldlt.factorizeBlocks();
+  };
   std::vector<Eigen::Triplet<double>> trips;
   Eigen::SparseMatrix<double> S;
   std::vector<int> diagSlot;
@@ -284,12 +398,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         const Eigen::Vector4d g(blk.rows[r][0], blk.rows[r][1], blk.rows[r][2], blk.rows[r][3]);
         H += d[rowStart[j] + int(r)] * g * g.transpose();
       }
-      const int sz = blk.size;
-      Mat4 inv = Mat4::Zero();
-      using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
-      const Small Hs = H.topLeftCorner(sz, sz);
-      inv.topLeftCorner(sz, sz) = Hs.ldlt().solve(Small::Identity(sz, sz));
-      hinv[j] = inv;
+      hinv[j] = blockInverse(H, blk.size);
       hess[j] = H;
     }
     // Schur complement A H⁻¹ Aᵀ (lower triangle), with a diagonal entry on every row. The
@@ -319,6 +428,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       analysed = true;
     }
     auto factor = [&]() {
+      if (blockwise) return factorBlockwise(regularisation);
       double* val = S.valuePtr();
       std::fill(val, val + S.nonZeros(), 0.0);
       for (int r = 0; r < m; ++r) val[diagSlot[std::size_t(r)]] += regularisation;
