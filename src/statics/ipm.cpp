@@ -54,12 +54,26 @@ bool allFinite(const VectorXd& v) { return v.allFinite(); }
 // H⁻¹ of a block's Hessian (its leading size × size corner; zeros elsewhere) by a pivoted
 // LDLᵀ of fixed size: the dynamic-size one spent most of its time in Eigen's generic
 // triangular-solve and GEMM dispatch (about 8 % of a QP on the barrel vault).
+// The solve is LDLT::solve's steps written out (Eigen sends a matrix right-hand side, even a
+// fixed 4×4 one, through its generic blocked triangular solve).
 template <int N>
 Mat4 fixedInverse(const Mat4& H) {
   using M = Eigen::Matrix<double, N, N>;
-  const M h = H.topLeftCorner<N, N>();
+  const Eigen::LDLT<M> f(H.topLeftCorner<N, N>());
+  M X = f.transpositionsP() * M::Identity();
+  const M& L = f.matrixLDLT();  // unit lower triangle below the diagonal
+  const auto dv = f.vectorD();
+  for (int i = 1; i < N; ++i)
+    for (int k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
+  constexpr double tiny = (std::numeric_limits<double>::min)();
+  for (int i = 0; i < N; ++i) {
+    if (std::abs(dv[i]) > tiny) X.row(i) /= dv[i];
+    else X.row(i).setZero();
+  }
+  for (int i = N - 2; i >= 0; --i)
+    for (int k = i + 1; k < N; ++k) X.row(i) -= L(k, i) * X.row(k);
   Mat4 inv = Mat4::Zero();
-  inv.topLeftCorner<N, N>() = Eigen::LDLT<M>(h).solve(M::Identity());
+  inv.topLeftCorner<N, N>() = f.transpositionsP().transpose() * X;
   return inv;
 }
 Mat4 blockInverse(const Mat4& H, int size) {
