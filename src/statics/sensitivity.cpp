@@ -27,6 +27,10 @@ std::optional<double> lagrangianTerm(const ParametricModel& model, const Paramet
 
 }  // namespace
 
+// The envelope gradient at `values` whose system `base` ev.analysis solved.
+void gradientAt(const ParametricModel& model, const ParameterSet& values, const std::vector<FreeParameter>& free,
+                const AnalysisOptions& options, const EquilibriumSystem& base, MeasureEvaluation& ev);
+
 MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterSet& values,
                                   const std::vector<FreeParameter>& free, const AnalysisOptions& options,
                                   bool withGradient) {
@@ -36,7 +40,19 @@ MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterS
   const EquilibriumSystem base = prepareEquilibrium(assembly, options);
   ev.analysis = analyseSystem(base, options);
   ev.measure = ev.analysis.yNormalised;
-  if (!withGradient) return ev;
+  if (withGradient) gradientAt(model, values, free, options, base, ev);
+  return ev;
+}
+
+void addGradient(const ParametricModel& model, const ParameterSet& values, const std::vector<FreeParameter>& free,
+                 const AnalysisOptions& options, MeasureEvaluation& ev) {
+  if (!model.build) throw Error("statics: the model '" + model.name + "' has no builder");
+  gradientAt(model, values, free, options, prepareEquilibrium(model.build(values), options), ev);
+}
+
+void gradientAt(const ParametricModel& model, const ParameterSet& values, const std::vector<FreeParameter>& free,
+                const AnalysisOptions& options, const EquilibriumSystem& base, MeasureEvaluation& ev) {
+  ev.notes.clear();
   const Eigen::VectorXd& x = ev.analysis.solution;
   const Eigen::VectorXd& lambda = ev.analysis.multipliers;
   if (x.size() == 0 || lambda.size() != base.rows)
@@ -73,7 +89,6 @@ MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterS
     // L = ½xᵀQx − λᵀ(A x − b) with b = −w: ∂L/∂θ = −λᵀ(∂A x + ∂w).
     ev.gradient[k] = -slope;
   }
-  return ev;
 }
 
 }  // namespace corbel::statics
