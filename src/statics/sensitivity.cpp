@@ -21,8 +21,7 @@ std::optional<double> lagrangianTerm(const ParametricModel& model, const Paramet
                                      const Eigen::VectorXd& lambda, const AnalysisOptions& options) {
   const EquilibriumSystem sys = prepareEquilibrium(model.build(values), options);
   if (!sameLayout(sys, base)) return std::nullopt;
-  const BlockQP qp = penaltyQP(sys);
-  return lambda.dot(qp.A * x - qp.b);
+  return penaltyLagrangianTerm(sys, x, lambda);
 }
 
 }  // namespace
@@ -58,8 +57,7 @@ void gradientAt(const ParametricModel& model, const ParameterSet& values, const 
   if (x.size() == 0 || lambda.size() != base.rows)
     throw Error("statics: the solver returned no solution to differentiate (" + toString(ev.analysis.status) + ")");
   // The term at θ itself, from the system already built (used by one-sided differences).
-  const BlockQP baseQP = penaltyQP(base);
-  const std::optional<double> at = lambda.dot(baseQP.A * x - baseQP.b);
+  const std::optional<double> at = penaltyLagrangianTerm(base, x, lambda);
   ev.gradient.assign(free.size(), 0.0);
   for (std::size_t k = 0; k < free.size(); ++k) {
     const Parameter& p = values.find(free[k].name);
