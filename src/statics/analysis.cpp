@@ -204,7 +204,8 @@ double penaltyLagrangianTerm(const EquilibriumSystem& p, const Eigen::VectorXd& 
         for (int c = 0; c < 4; ++c) {
           const Vec3 tq = cross(arm, dirs[c]);
           const double xc = x[col + c];
-          for (int k = 0; k < 3; ++k) acc += lambda[r + k] * (sgn * dirs[c][k]) * xc + lambda[r + 3 + k] * (sgn * tq[k]) * xc;
+          for (int k = 0; k < 3; ++k)
+            acc += lambda[r + k] * (sgn * dirs[c][k]) * xc + lambda[r + 3 + k] * (sgn * tq[k]) * xc;
         }
       }
       col += 4;

@@ -23,8 +23,10 @@ BlockLdlt::Block pivotSolve(const Eigen::LDLT<BlockLdlt::Block>& f, const BlockL
     for (int k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
   constexpr double tiny = (std::numeric_limits<double>::min)();
   for (int i = 0; i < 6; ++i) {
-    if (std::abs(d[i]) > tiny) X.row(i) /= d[i];
-    else X.row(i).setZero();
+    if (std::abs(d[i]) > tiny)
+      X.row(i) /= d[i];
+    else
+      X.row(i).setZero();
   }
   for (int i = 4; i >= 0; --i)
     for (int k = i + 1; k < 6; ++k) X.row(i) -= L(k, i) * X.row(k);
@@ -128,7 +130,8 @@ bool BlockLdlt::factorize(double minPivot) {
     // L_qp = S_qp D_p⁺, then S_ab −= L_ap S_bpᵀ for the column's rows a ≥ b.
     const int m = end - start - 1;
     L.resize(std::size_t(m));
-    for (int a = 0; a < m; ++a) L[std::size_t(a)] = pivotSolve(f, values_[std::size_t(start + 1 + a)].transpose()).transpose();
+    for (int a = 0; a < m; ++a)
+      L[std::size_t(a)] = pivotSolve(f, values_[std::size_t(start + 1 + a)].transpose()).transpose();
     int u = updStart_[std::size_t(p)];
     for (int a = 0; a < m; ++a)
       for (int b = 0; b <= a; ++b) values_[std::size_t(updTarget_[std::size_t(u++)])].noalias() -=

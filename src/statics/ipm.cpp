@@ -67,8 +67,10 @@ Mat4 fixedInverse(const Mat4& H) {
     for (int k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
   constexpr double tiny = (std::numeric_limits<double>::min)();
   for (int i = 0; i < N; ++i) {
-    if (std::abs(dv[i]) > tiny) X.row(i) /= dv[i];
-    else X.row(i).setZero();
+    if (std::abs(dv[i]) > tiny)
+      X.row(i) /= dv[i];
+    else
+      X.row(i).setZero();
   }
   for (int i = N - 2; i >= 0; --i)
     for (int k = i + 1; k < N; ++k) X.row(i) -= L(k, i) * X.row(k);
@@ -78,10 +80,14 @@ Mat4 fixedInverse(const Mat4& H) {
 }
 Mat4 blockInverse(const Mat4& H, int size) {
   switch (size) {
-    case 1: return fixedInverse<1>(H);
-    case 2: return fixedInverse<2>(H);
-    case 3: return fixedInverse<3>(H);
-    default: return fixedInverse<4>(H);
+    case 1:
+      return fixedInverse<1>(H);
+    case 2:
+      return fixedInverse<2>(H);
+    case 3:
+      return fixedInverse<3>(H);
+    default:
+      return fixedInverse<4>(H);
   }
 }
 
@@ -262,8 +268,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // triplets, no scatter, fixed-size kernels.
   struct BlockCols12 {
     Eigen::Matrix<double, 12, 4> vals = Eigen::Matrix<double, 12, 4>::Zero();
-    int groups = 0;      // 1 or 2
-    int row0 = 0, row1 = 0;  // the first equation row of groups g0 and g1
+    int groups = 0;                             // 1 or 2
+    int row0 = 0, row1 = 0;                     // the first equation row of groups g0 and g1
     int slot00 = -1, slot11 = -1, slot10 = -1;  // S blocks (g0, g0), (g1, g1), (g1, g0)
     bool transposed10 = false;                  // (g1, g0) stored as its transpose
   };
@@ -277,9 +283,12 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         const int g = r / 6;
         auto& gr = blockGroups[std::size_t(j)];
         if (gr[0] == g || gr[1] == g) continue;
-        if (gr[0] < 0) gr[0] = g;
-        else if (gr[1] < 0) gr[1] = g;
-        else blockwise = false;  // more than two groups: the scalar path
+        if (gr[0] < 0)
+          gr[0] = g;
+        else if (gr[1] < 0)
+          gr[1] = g;
+        else
+          blockwise = false;  // more than two groups: the scalar path
       }
     }
   }
@@ -460,14 +469,16 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
           const Square block = AH.lazyProduct(bc.vals.leftCols(sz).transpose());
           std::size_t k = 0;
           for (std::size_t p = 0; p < bc.rows.size(); ++p)
-            for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+            for (std::size_t q = 0; q <= p; ++q)
+              val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
           continue;
         }
         const Eigen::MatrixXd AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
         const Eigen::MatrixXd block = AH * bc.vals.leftCols(sz).transpose();
         std::size_t k = 0;
         for (std::size_t p = 0; p < bc.rows.size(); ++p)
-          for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+          for (std::size_t q = 0; q <= p; ++q)
+            val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
       }
       return ldlt.factorize(S);
     };
@@ -505,8 +516,10 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     auto gather = [&](const BlockCols12& bc, const VectorXd& v) {
       V12 g;
       g.head<6>() = v.segment<6>(bc.row0);
-      if (bc.groups == 2) g.tail<6>() = v.segment<6>(bc.row1);
-      else g.tail<6>().setZero();
+      if (bc.groups == 2)
+        g.tail<6>() = v.segment<6>(bc.row1);
+      else
+        g.tail<6>().setZero();
       return g;
     };
     auto scatterAdd = [&](const BlockCols12& bc, const V12& o, VectorXd& out) {
@@ -554,7 +567,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     };
     auto solveSchur = [&](const VectorXd& rhs) {
       VectorXd dy = ldlt.solve(rhs);
-      const VectorXd r = rhs - applySchur(dy) - (regularisation) * dy;
+      const VectorXd r = rhs - applySchur(dy) - (regularisation)*dy;
       dy += ldlt.solve(r);
       return dy;
     };
