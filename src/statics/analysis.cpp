@@ -188,6 +188,31 @@ BlockQP penaltyQP(const EquilibriumSystem& p) {
   return qp;
 }
 
+double penaltyLagrangianTerm(const EquilibriumSystem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& lambda) {
+  // Column by column as addForceColumn lays them out: λ_r·(A_rc x_c) summed.
+  double acc = lambda.dot(p.w);
+  int col = 0;
+  for (const Interface& itf : p.contacts.interfaces)
+    for (const Vec3& pt : itf.points) {
+      const Vec3 dirs[4] = {itf.normal, -itf.normal, itf.t1, itf.t2};
+      for (int side = 0; side < 2; ++side) {
+        const int blk = side == 0 ? itf.b : itf.a;
+        const int r = p.rowOf[std::size_t(blk)];
+        if (r < 0) continue;
+        const double sgn = side == 0 ? 1.0 : -1.0;
+        const Vec3 arm = pt - p.props[std::size_t(blk)].centroid;
+        for (int c = 0; c < 4; ++c) {
+          const Vec3 tq = cross(arm, dirs[c]);
+          const double xc = x[col + c];
+          for (int k = 0; k < 3; ++k)
+            acc += lambda[r + k] * (sgn * dirs[c][k]) * xc + lambda[r + 3 + k] * (sgn * tq[k]) * xc;
+        }
+      }
+      col += 4;
+    }
+  return acc;
+}
+
 AnalysisResult analyse(const Assembly& as, const AnalysisOptions& opt) {
   return analyseSystem(prepareEquilibrium(as, opt), opt);
 }

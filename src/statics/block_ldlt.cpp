@@ -5,8 +5,35 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace corbel::statics {
+namespace {
+
+// X = D⁺ B for a pivot block factored as D = Pᵀ L diag(d) Lᵀ P (Eigen's LDLT), the same steps
+// as LDLT::solve (zero pivots give zero rows) written out for 6×6 right-hand sides: Eigen
+// sends a matrix right-hand side through its generic blocked triangular solve and GEMM, which
+// cost more than the arithmetic here.
+BlockLdlt::Block pivotSolve(const Eigen::LDLT<BlockLdlt::Block>& f, const BlockLdlt::Block& B) {
+  BlockLdlt::Block X = f.transpositionsP() * B;
+  const BlockLdlt::Block& L = f.matrixLDLT();  // unit lower triangle below the diagonal
+  const auto d = f.vectorD();
+  for (int i = 1; i < 6; ++i)
+    for (int k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
+  constexpr double tiny = (std::numeric_limits<double>::min)();
+  for (int i = 0; i < 6; ++i) {
+    if (std::abs(d[i]) > tiny)
+      X.row(i) /= d[i];
+    else
+      X.row(i).setZero();
+  }
+  for (int i = 4; i >= 0; --i)
+    for (int k = i + 1; k < 6; ++k) X.row(i) -= L(k, i) * X.row(k);
+  return f.transpositionsP().transpose() * X;
+}
+
+}  // namespace
 
 void BlockLdlt::analyze(int n, const std::vector<std::pair<int, int>>& pairs) {
   n_ = n;
@@ -103,7 +130,8 @@ bool BlockLdlt::factorize(double minPivot) {
     // L_qp = S_qp D_p⁺, then S_ab −= L_ap S_bpᵀ for the column's rows a ≥ b.
     const int m = end - start - 1;
     L.resize(std::size_t(m));
-    for (int a = 0; a < m; ++a) L[std::size_t(a)] = f.solve(values_[std::size_t(start + 1 + a)].transpose()).transpose();
+    for (int a = 0; a < m; ++a)
+      L[std::size_t(a)] = pivotSolve(f, values_[std::size_t(start + 1 + a)].transpose()).transpose();
     int u = updStart_[std::size_t(p)];
     for (int a = 0; a < m; ++a)
       for (int b = 0; b <= a; ++b) values_[std::size_t(updTarget_[std::size_t(u++)])].noalias() -=

@@ -32,6 +32,11 @@ EquilibriumSystem prepareEquilibrium(const Assembly& assembly, const AnalysisOpt
 // vertex, interfaces in the order of `system.contacts`, vertices in polygon order. A x = −w.
 BlockQP penaltyQP(const EquilibriumSystem& system);
 
+// λᵀ(A x + w) for the penalty QP's A (x laid out as `penaltyQP`'s variables, λ one per
+// equilibrium row) without building A: the envelope gradient evaluates it at nearby
+// parameters, where assembling the sparse matrix cost as much as the geometry.
+double penaltyLagrangianTerm(const EquilibriumSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& lambda);
+
 // Solves the penalty QP of a prepared system (what `analyse` does after preparing it).
 AnalysisResult analyseSystem(const EquilibriumSystem& system, const AnalysisOptions& options);
 

@@ -51,6 +51,46 @@ double maxStep(const VectorXd& v, const VectorXd& dv) {
 
 bool allFinite(const VectorXd& v) { return v.allFinite(); }
 
+// H⁻¹ of a block's Hessian (its leading size × size corner; zeros elsewhere) by a pivoted
+// LDLᵀ of fixed size: the dynamic-size one spent most of its time in Eigen's generic
+// triangular-solve and GEMM dispatch (about 8 % of a QP on the barrel vault).
+// The solve is LDLT::solve's steps written out (Eigen sends a matrix right-hand side, even a
+// fixed 4×4 one, through its generic blocked triangular solve).
+template <int N>
+Mat4 fixedInverse(const Mat4& H) {
+  using M = Eigen::Matrix<double, N, N>;
+  const Eigen::LDLT<M> f(H.topLeftCorner<N, N>());
+  M X = f.transpositionsP() * M::Identity();
+  const M& L = f.matrixLDLT();  // unit lower triangle below the diagonal
+  const auto dv = f.vectorD();
+  for (int i = 1; i < N; ++i)
+    for (int k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
+  constexpr double tiny = (std::numeric_limits<double>::min)();
+  for (int i = 0; i < N; ++i) {
+    if (std::abs(dv[i]) > tiny)
+      X.row(i) /= dv[i];
+    else
+      X.row(i).setZero();
+  }
+  for (int i = N - 2; i >= 0; --i)
+    for (int k = i + 1; k < N; ++k) X.row(i) -= L(k, i) * X.row(k);
+  Mat4 inv = Mat4::Zero();
+  inv.topLeftCorner<N, N>() = f.transpositionsP().transpose() * X;
+  return inv;
+}
+Mat4 blockInverse(const Mat4& H, int size) {
+  switch (size) {
+    case 1:
+      return fixedInverse<1>(H);
+    case 2:
+      return fixedInverse<2>(H);
+    case 3:
+      return fixedInverse<3>(H);
+    default:
+      return fixedInverse<4>(H);
+  }
+}
+
 // One interface to the factorisations of S (IpmOptions::schurSolver). S arrives as the lower
 // triangle of a scalar sparse matrix; the block factorisation scatters it into 6×6 blocks
 // through a map built once.
@@ -112,6 +152,12 @@ class SchurFactor {
       if (!(D[i] > 1e-15 * dmax)) return false;
     return true;
   }
+  // The 6×6-block path without a scalar S: the caller sums its blocks into values() at the
+  // slots it asked for, then calls factorizeBlocks().
+  bool blockwise() const { return kind_ == SchurSolver::BlockLdlt; }
+  void analyzeBlocks(int n, const std::vector<std::pair<int, int>>& pairs) { blocks_.analyze(n, pairs); }
+  BlockLdlt& blocks() { return blocks_; }
+  bool factorizeBlocks() { return blocks_.factorize(); }
   VectorXd solve(const VectorXd& b) {
     if (kind_ == SchurSolver::Cholmod) return cholmod_.solve(b);
     if (kind_ == SchurSolver::BlockLdlt) return blocks_.solve(b);
@@ -215,6 +261,100 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   SchurFactor ldlt(options.schurSolver, qp.rowGroup);
   bool analysed = false;
   std::vector<Mat4> hinv(nb), hess(nb);
+  // The block path (BlockLdlt): every variable block touches at most two 6-row groups (a
+  // contact vertex: the two blocks it joins; an artificial: one), so its A columns are a
+  // fixed 12×4 matrix (zero-padded) and its contribution A_j H_j⁻¹ A_jᵀ is at most three
+  // 6×6 blocks of S, summed straight into the factorisation's slots: no scalar S, no
+  // triplets, no scatter, fixed-size kernels.
+  struct BlockCols12 {
+    Eigen::Matrix<double, 12, 4> vals = Eigen::Matrix<double, 12, 4>::Zero();
+    int groups = 0;                             // 1 or 2
+    int row0 = 0, row1 = 0;                     // the first equation row of groups g0 and g1
+    int slot00 = -1, slot11 = -1, slot10 = -1;  // S blocks (g0, g0), (g1, g1), (g1, g0)
+    bool transposed10 = false;                  // (g1, g0) stored as its transpose
+  };
+  std::vector<BlockCols12> cols12;
+  std::vector<int> diagBlockSlot;
+  bool blockwise = ldlt.blockwise() && m % 6 == 0 && m > 0;
+  std::vector<std::array<int, 2>> blockGroups(std::size_t(nb), {-1, -1});
+  if (blockwise) {
+    for (int j = 0; j < nb && blockwise; ++j) {
+      for (int r : cols[j].rows) {
+        const int g = r / 6;
+        auto& gr = blockGroups[std::size_t(j)];
+        if (gr[0] == g || gr[1] == g) continue;
+        if (gr[0] < 0)
+          gr[0] = g;
+        else if (gr[1] < 0)
+          gr[1] = g;
+        else
+          blockwise = false;  // more than two groups: the scalar path
+      }
+    }
+  }
+  if (blockwise) {
+    std::vector<std::pair<int, int>> pairs;
+    for (int g = 0; g < m / 6; ++g) pairs.emplace_back(g, g);
+    for (int j = 0; j < nb; ++j) {
+      const auto& gr = blockGroups[std::size_t(j)];
+      if (gr[1] >= 0) pairs.emplace_back(std::max(gr[0], gr[1]), std::min(gr[0], gr[1]));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    ldlt.analyzeBlocks(m / 6, pairs);
+    const BlockLdlt& bl = ldlt.blocks();
+    diagBlockSlot.resize(std::size_t(m / 6));
+    for (int g = 0; g < m / 6; ++g) diagBlockSlot[std::size_t(g)] = bl.slot(g, g).index;
+    cols12.resize(std::size_t(nb));
+    for (int j = 0; j < nb; ++j) {
+      BlockCols12& bc = cols12[std::size_t(j)];
+      auto gr = blockGroups[std::size_t(j)];
+      if (gr[0] < 0) continue;  // touches no equation
+      if (gr[1] >= 0 && gr[1] < gr[0]) std::swap(gr[0], gr[1]);
+      bc.groups = gr[1] >= 0 ? 2 : 1;
+      bc.row0 = 6 * gr[0];
+      bc.row1 = bc.groups == 2 ? 6 * gr[1] : 0;
+      const auto& rows = cols[j].rows;
+      for (std::size_t p = 0; p < rows.size(); ++p) {
+        const int local = (rows[p] / 6 == gr[0] ? 0 : 6) + rows[p] % 6;
+        for (int k = 0; k < qp.blocks[j].size; ++k) bc.vals(local, k) = cols[j].vals(Eigen::Index(p), k);
+      }
+      bc.slot00 = bl.slot(gr[0], gr[0]).index;
+      if (bc.groups == 2) {
+        bc.slot11 = bl.slot(gr[1], gr[1]).index;
+        const BlockLdlt::Slot sl = bl.slot(gr[1], gr[0]);
+        bc.slot10 = sl.index;
+        bc.transposed10 = sl.transposed;
+      }
+    }
+    analysed = true;
+  }
+  // Sums A H⁻¹ Aᵀ + regularisation·I into the block factorisation and factors it.
+  auto factorBlockwise = [&](double shift) {
+    std::vector<BlockLdlt::Block>& v = ldlt.blocks().values();
+    for (BlockLdlt::Block& b : v) b.setZero();
+    for (int j = 0; j < nb; ++j) {
+      const BlockCols12& bc = cols12[std::size_t(j)];
+      if (bc.groups == 0) continue;
+      const Eigen::Matrix<double, 12, 4> AH = bc.vals * hinv[std::size_t(j)];
+      v[std::size_t(bc.slot00)].noalias() += AH.topRows<6>() * bc.vals.topRows<6>().transpose();
+      if (bc.groups == 2) {
+        v[std::size_t(bc.slot11)].noalias() += AH.bottomRows<6>() * bc.vals.bottomRows<6>().transpose();
+        if (bc.transposed10)
+          v[std::size_t(bc.slot10)].noalias() += (AH.bottomRows<6>() * bc.vals.topRows<6>().transpose()).transpose();
+        else
+          v[std::size_t(bc.slot10)].noalias() += AH.bottomRows<6>() * bc.vals.topRows<6>().transpose();
+      }
+    }
+    // The diagonal blocks as the scalar path had them: exactly symmetric (the lower triangle
+    // mirrored), plus the shift.
+    for (const int sl : diagBlockSlot) {
+      BlockLdlt::Block& b = v[std::size_t(sl)];
+      b.triangularView<Eigen::StrictlyUpper>() = b.transpose();
+      b.diagonal().array() += shift;
+    }
+    return ldlt.factorizeBlocks();
+  };
   std::vector<Eigen::Triplet<double>> trips;
   Eigen::SparseMatrix<double> S;
   std::vector<int> diagSlot;
@@ -284,12 +424,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         const Eigen::Vector4d g(blk.rows[r][0], blk.rows[r][1], blk.rows[r][2], blk.rows[r][3]);
         H += d[rowStart[j] + int(r)] * g * g.transpose();
       }
-      const int sz = blk.size;
-      Mat4 inv = Mat4::Zero();
-      using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
-      const Small Hs = H.topLeftCorner(sz, sz);
-      inv.topLeftCorner(sz, sz) = Hs.ldlt().solve(Small::Identity(sz, sz));
-      hinv[j] = inv;
+      hinv[j] = blockInverse(H, blk.size);
       hess[j] = H;
     }
     // Schur complement A H⁻¹ Aᵀ (lower triangle), with a diagonal entry on every row. The
@@ -319,6 +454,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       analysed = true;
     }
     auto factor = [&]() {
+      if (blockwise) return factorBlockwise(regularisation);
       double* val = S.valuePtr();
       std::fill(val, val + S.nonZeros(), 0.0);
       for (int r = 0; r < m; ++r) val[diagSlot[std::size_t(r)]] += regularisation;
@@ -333,14 +469,16 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
           const Square block = AH.lazyProduct(bc.vals.leftCols(sz).transpose());
           std::size_t k = 0;
           for (std::size_t p = 0; p < bc.rows.size(); ++p)
-            for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+            for (std::size_t q = 0; q <= p; ++q)
+              val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
           continue;
         }
         const Eigen::MatrixXd AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
         const Eigen::MatrixXd block = AH * bc.vals.leftCols(sz).transpose();
         std::size_t k = 0;
         for (std::size_t p = 0; p < bc.rows.size(); ++p)
-          for (std::size_t q = 0; q <= p; ++q) val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+          for (std::size_t q = 0; q <= p; ++q)
+            val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
       }
       return ldlt.factorize(S);
     };
@@ -372,18 +510,73 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     auto applyH = [&](const VectorXd& v) { return applyBlocks(hess, v); };
     // S dy = rhs with one step of iterative refinement against S applied as A H⁻¹ Aᵀ (near the
     // optimum S mixes entries of very different sizes, z/s → 0 or ∞).
+    // On the block path, A H⁻¹ u, A H⁻¹ Aᵀ v and H⁻¹(u + Aᵀ v) in one pass over the blocks'
+    // dense 12×4 columns each, instead of two or three sparse products with temporaries.
+    using V12 = Eigen::Matrix<double, 12, 1>;
+    auto gather = [&](const BlockCols12& bc, const VectorXd& v) {
+      V12 g;
+      g.head<6>() = v.segment<6>(bc.row0);
+      if (bc.groups == 2)
+        g.tail<6>() = v.segment<6>(bc.row1);
+      else
+        g.tail<6>().setZero();
+      return g;
+    };
+    auto scatterAdd = [&](const BlockCols12& bc, const V12& o, VectorXd& out) {
+      out.segment<6>(bc.row0) += o.head<6>();
+      if (bc.groups == 2) out.segment<6>(bc.row1) += o.tail<6>();
+    };
+    auto blockIn = [&](int j, const VectorXd& u) {
+      const VarBlock& blk = qp.blocks[std::size_t(j)];
+      Eigen::Vector4d in = Eigen::Vector4d::Zero();
+      for (int k = 0; k < blk.size; ++k) in[k] = u[blk.offset + k];
+      return in;
+    };
+    auto applyAHinv = [&](const VectorXd& u) {
+      if (!blockwise) return VectorXd(qp.A * applyHinv(u));
+      VectorXd out = VectorXd::Zero(m);
+      for (int j = 0; j < nb; ++j) {
+        const BlockCols12& bc = cols12[std::size_t(j)];
+        if (bc.groups == 0) continue;
+        scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * blockIn(j, u)), out);
+      }
+      return out;
+    };
+    auto applySchur = [&](const VectorXd& v) {
+      if (!blockwise) return VectorXd(qp.A * applyHinv(qp.A.transpose() * v));
+      VectorXd out = VectorXd::Zero(m);
+      for (int j = 0; j < nb; ++j) {
+        const BlockCols12& bc = cols12[std::size_t(j)];
+        if (bc.groups == 0) continue;
+        scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * (bc.vals.transpose() * gather(bc, v))), out);
+      }
+      return out;
+    };
+    auto hinvPlusAT = [&](const VectorXd& u, const VectorXd& v) {
+      if (!blockwise) return applyHinv(u + qp.A.transpose() * v);
+      VectorXd out(n);
+      for (int j = 0; j < nb; ++j) {
+        const BlockCols12& bc = cols12[std::size_t(j)];
+        Eigen::Vector4d in = blockIn(j, u);
+        if (bc.groups != 0) in.noalias() += bc.vals.transpose() * gather(bc, v);
+        const Eigen::Vector4d o = hinv[std::size_t(j)] * in;
+        const VarBlock& blk = qp.blocks[std::size_t(j)];
+        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
+      }
+      return out;
+    };
     auto solveSchur = [&](const VectorXd& rhs) {
       VectorXd dy = ldlt.solve(rhs);
-      const VectorXd r = rhs - qp.A * applyHinv(qp.A.transpose() * dy) - (regularisation) * dy;
+      const VectorXd r = rhs - applySchur(dy) - (regularisation)*dy;
       dy += ldlt.solve(r);
       return dy;
     };
     auto newton = [&](const VectorXd& rc, VectorXd& dx, VectorXd& dy, VectorXd& dz, VectorXd& ds) {
       const VectorXd w = rc.cwiseQuotient(s) + d.cwiseProduct(rg);
       const VectorXd rho = -rd - GTv(w);
-      const VectorXd rhs = -rp - qp.A * applyHinv(rho);
+      const VectorXd rhs = -rp - applyAHinv(rho);
       dy = solveSchur(rhs);
-      dx = applyHinv(rho + qp.A.transpose() * dy);
+      dx = hinvPlusAT(rho, dy);
       // Refinement on the unreduced system H dx − Aᵀ dy = rho, A dx = −rp: forming the Schur
       // right-hand side cancels large terms (H⁻¹ reaches 1/μ), which leaves A dx + rp at
       // 1e-11..1e-10 near the optimum of strongly infeasible models; one correction solved
@@ -391,8 +584,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int step = 0; mu < kRefineBelowMu && step < options.newtonRefinement; ++step) {
         const VectorXd r1 = rho + qp.A.transpose() * dy - applyH(dx);
         const VectorXd r2 = -rp - qp.A * dx;
-        const VectorXd ddy = solveSchur(r2 - qp.A * applyHinv(r1));
-        dx += applyHinv(r1 + qp.A.transpose() * ddy);
+        const VectorXd ddy = solveSchur(r2 - applyAHinv(r1));
+        dx += hinvPlusAT(r1, ddy);
         dy += ddy;
       }
       const VectorXd gdx = Gx(dx);

@@ -51,6 +51,10 @@ struct Search {
   std::string failure;
   bool cancelled = false;
   nlopt_opt opt = nullptr;
+  // The scaling evaluation at the start: the optimizer's first call is usually at the same
+  // point, and then reuses its QP (only the gradient's geometry is added).
+  std::vector<double> start;
+  const MeasureEvaluation* first = nullptr;
 
   ParameterSet at(const double* x) const {
     ParameterSet s = values;
@@ -62,7 +66,14 @@ struct Search {
 double objective(unsigned n, const double* x, double* grad, void* data) {
   Search& s = *static_cast<Search*>(data);
   try {
-    const MeasureEvaluation ev = evaluateMeasure(*s.model, s.at(x), *s.free, s.options->analysis, grad != nullptr);
+    MeasureEvaluation ev;
+    if (s.first && std::equal(x, x + n, s.start.begin())) {
+      ev = *s.first;
+      if (grad) addGradient(*s.model, s.at(x), *s.free, s.options->analysis, ev);
+      s.first = nullptr;  // once: a later call at the start again solves afresh (NLopt rarely does)
+    } else {
+      ev = evaluateMeasure(*s.model, s.at(x), *s.free, s.options->analysis, grad != nullptr);
+    }
     // The solver's best iterate serves when it is in equilibrium (its y is then an upper
     // bound within the iterate's gap); anything worse stops the search.
     if (ev.analysis.status != SolveStatus::Optimal && !(ev.analysis.equilibriumResidual <= kUsableResidual))
@@ -159,6 +170,8 @@ SearchResult searchParameters(const ParametricModel& model, const std::vector<Fr
     std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(nlopt_create(algorithm, n), &nlopt_destroy);
     if (!opt) throw Error("parameter search: NLopt could not create the optimizer");
     s.opt = opt.get();
+    s.start = x;
+    s.first = &first;
     nlopt_set_lower_bounds(s.opt, lo.data());
     nlopt_set_upper_bounds(s.opt, hi.data());
     nlopt_set_min_objective(s.opt, objective, &s);

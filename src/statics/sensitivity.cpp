@@ -21,11 +21,14 @@ std::optional<double> lagrangianTerm(const ParametricModel& model, const Paramet
                                      const Eigen::VectorXd& lambda, const AnalysisOptions& options) {
   const EquilibriumSystem sys = prepareEquilibrium(model.build(values), options);
   if (!sameLayout(sys, base)) return std::nullopt;
-  const BlockQP qp = penaltyQP(sys);
-  return lambda.dot(qp.A * x - qp.b);
+  return penaltyLagrangianTerm(sys, x, lambda);
 }
 
 }  // namespace
+
+// The envelope gradient at `values` whose system `base` ev.analysis solved.
+void gradientAt(const ParametricModel& model, const ParameterSet& values, const std::vector<FreeParameter>& free,
+                const AnalysisOptions& options, const EquilibriumSystem& base, MeasureEvaluation& ev);
 
 MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterSet& values,
                                   const std::vector<FreeParameter>& free, const AnalysisOptions& options,
@@ -36,14 +39,25 @@ MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterS
   const EquilibriumSystem base = prepareEquilibrium(assembly, options);
   ev.analysis = analyseSystem(base, options);
   ev.measure = ev.analysis.yNormalised;
-  if (!withGradient) return ev;
+  if (withGradient) gradientAt(model, values, free, options, base, ev);
+  return ev;
+}
+
+void addGradient(const ParametricModel& model, const ParameterSet& values, const std::vector<FreeParameter>& free,
+                 const AnalysisOptions& options, MeasureEvaluation& ev) {
+  if (!model.build) throw Error("statics: the model '" + model.name + "' has no builder");
+  gradientAt(model, values, free, options, prepareEquilibrium(model.build(values), options), ev);
+}
+
+void gradientAt(const ParametricModel& model, const ParameterSet& values, const std::vector<FreeParameter>& free,
+                const AnalysisOptions& options, const EquilibriumSystem& base, MeasureEvaluation& ev) {
+  ev.notes.clear();
   const Eigen::VectorXd& x = ev.analysis.solution;
   const Eigen::VectorXd& lambda = ev.analysis.multipliers;
   if (x.size() == 0 || lambda.size() != base.rows)
     throw Error("statics: the solver returned no solution to differentiate (" + toString(ev.analysis.status) + ")");
   // The term at θ itself, from the system already built (used by one-sided differences).
-  const BlockQP baseQP = penaltyQP(base);
-  const std::optional<double> at = lambda.dot(baseQP.A * x - baseQP.b);
+  const std::optional<double> at = penaltyLagrangianTerm(base, x, lambda);
   ev.gradient.assign(free.size(), 0.0);
   for (std::size_t k = 0; k < free.size(); ++k) {
     const Parameter& p = values.find(free[k].name);
@@ -73,7 +87,6 @@ MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterS
     // L = ½xᵀQx − λᵀ(A x − b) with b = −w: ∂L/∂θ = −λᵀ(∂A x + ∂w).
     ev.gradient[k] = -slope;
   }
-  return ev;
 }
 
 }  // namespace corbel::statics

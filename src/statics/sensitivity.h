@@ -29,4 +29,10 @@ MeasureEvaluation evaluateMeasure(const ParametricModel& model, const ParameterS
                                   const std::vector<FreeParameter>& free, const AnalysisOptions& options,
                                   bool withGradient);
 
+// The gradient for an evaluation made at `values` without one (fills ev.gradient and
+// ev.notes; the model is rebuilt at `values` for its layout, no QP is solved). Lets a search
+// reuse the QP of its scaling evaluation when the optimizer asks for the same point again.
+void addGradient(const ParametricModel& model, const ParameterSet& values, const std::vector<FreeParameter>& free,
+                 const AnalysisOptions& options, MeasureEvaluation& ev);
+
 }  // namespace corbel::statics
