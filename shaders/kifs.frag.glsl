@@ -53,7 +53,8 @@ uniform vec3 uBoundsHi;
 
 // Shading: 0 shaded, 1 facade ids, 2 floors (Fig. 5-6), 3 data for render/kifs_pass: the
 // pixel's evaluations 255·(r + 256·g), and at a hit id_x + 4·id_z as 255·b and the storey
-// + 128 as 255·a.
+// + 128 as 255·a; 4 preview: shaded without the soft shadow and the occlusion (the coarse
+// frames of render/kifs_layer).
 uniform int uMode;
 uniform vec3 uSunDir;
 
@@ -76,7 +77,8 @@ float kifs(vec3 p) {
   float s = uScale, h = 0.5 * uCentre.z * (s - 1.0);
   float scl = 1.0;
   for (int i = 0; i <= uIterations; ++i) {
-    p = abs(uR1Identity != 0 ? p : uR1 * p);
+    if (uR1Identity == 0) p = uR1 * p;
+    p = abs(p);
     if (p.x < p.y) p.xy = p.yx;
     if (p.x < p.z) p.xz = p.zx;
     if (p.y < p.z) p.yz = p.zy;
@@ -277,8 +279,9 @@ void main() {
   if (uMode == 1) base = palette(s.ids.x + 4.0 * s.ids.y);
   if (uMode == 2) base = palette(3.0 * s.floorIndex);
   float sun = max(dot(n, uSunDir), 0.0);
-  if (sun > 0.0) sun *= softShadow(p + 2.0 * footprint * n, uSunDir, 2.0 * footprint);
-  float ao = occlusion(p, n);
+  bool preview = uMode == 4;
+  if (sun > 0.0 && !preview) sun *= softShadow(p + 2.0 * footprint * n, uSunDir, 2.0 * footprint);
+  float ao = preview ? 1.0 : occlusion(p, n);
   float sky = 0.5 + 0.5 * n.z;
   vec3 light = vec3(1.0, 0.96, 0.88) * sun * 0.85 + ao * mix(vec3(0.22, 0.21, 0.2), vec3(0.40, 0.45, 0.52), sky);
   vec3 c = base * light;
