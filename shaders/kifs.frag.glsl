@@ -53,7 +53,8 @@ uniform vec3 uBoundsHi;
 
 // Shading: 0 shaded, 1 facade ids, 2 floors (Fig. 5-6), 3 data for render/kifs_pass: the
 // pixel's evaluations 255·(r + 256·g), and at a hit id_x + 4·id_z as 255·b and the storey
-// + 128 as 255·a.
+// + 128 as 255·a; 4 preview: shaded without the soft shadow and the occlusion (the coarse
+// frames of render/kifs_layer).
 uniform int uMode;
 uniform vec3 uSunDir;
 
@@ -76,7 +77,8 @@ float kifs(vec3 p) {
   float s = uScale, h = 0.5 * uCentre.z * (s - 1.0);
   float scl = 1.0;
   for (int i = 0; i <= uIterations; ++i) {
-    p = abs(uR1Identity != 0 ? p : uR1 * p);
+    if (uR1Identity == 0) p = uR1 * p;
+    p = abs(p);
     if (p.x < p.y) p.xy = p.yx;
     if (p.x < p.z) p.xz = p.zx;
     if (p.y < p.z) p.yz = p.zy;
@@ -123,7 +125,9 @@ vec3 facadeFold(float x) {
 
 float polarStretch(float r) { return max(max(1.0, uPolar.z), uPolar.x / max(r, kMinRadius)); }
 
-Sample evaluate(vec3 world) {
+// withBound false: only the estimate (normals, occlusion); o.bound is then not a bound. It
+// skips the neighbouring storey's second Algorithm 1 and the id caps, which only the bound uses.
+Sample evaluateFor(vec3 world, bool withBound) {
   ++gEvaluations;
   vec3 b = world.xzy;  // building coordinates, y up
   vec3 m = b;
@@ -150,12 +154,12 @@ Sample evaluate(vec3 world) {
   float gapNear = below ? my : fh - my, gapFar = fh - gapNear;
   float di = massModel(m, uShell), d0 = massModel(m, 0.0);
   float cell = min(dk, gapFar);
-  if (gapNear < cell && d0 < cell) {
+  if (withBound && gapNear < cell && d0 < cell) {
     vec3 qn = q;
     qn.y = uFloors.z * (below ? my + fh : my - fh) / fh;
     cell = min(cell, max(gapNear, kifs(qn) / uStretch));
   }
-  if (uIdsCut != 0) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
+  if (withBound && uIdsCut != 0) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
   float surface = min(di, max(d0, dk));
   float bound = min(di, max(d0, cell));
   if (uCurvilinear == 0) {
@@ -169,6 +173,9 @@ Sample evaluate(vec3 world) {
   o.bound = max(ring, min(safe, cut));
   return o;
 }
+
+Sample evaluate(vec3 world) { return evaluateFor(world, true); }
+float surfaceAt(vec3 world) { return evaluateFor(world, false).surface; }
 
 bool rayBox(vec3 ro, vec3 rd, out float t0, out float t1) {
   vec3 inv = 1.0 / rd;
@@ -208,8 +215,8 @@ float trace(vec3 ro, vec3 rd, out Sample hit) {
 
 vec3 normalAt(vec3 p, float h) {
   vec3 k0 = vec3(1, -1, -1), k1 = vec3(-1, -1, 1), k2 = vec3(-1, 1, -1), k3 = vec3(1, 1, 1);
-  return normalize(k0 * evaluate(p + h * k0).surface + k1 * evaluate(p + h * k1).surface +
-                   k2 * evaluate(p + h * k2).surface + k3 * evaluate(p + h * k3).surface);
+  return normalize(k0 * surfaceAt(p + h * k0) + k1 * surfaceAt(p + h * k1) + k2 * surfaceAt(p + h * k2) +
+                   k3 * surfaceAt(p + h * k3));
 }
 
 // Penumbra from the closest approach of the shadow ray (Quilez), stepping by the bound.
@@ -226,13 +233,15 @@ float softShadow(vec3 ro, vec3 rd, float tmin) {
   return clamp(res, 0.0, 1.0);
 }
 
-// Ambient occlusion from five probes along the normal, a storey's fraction apart.
+// Ambient occlusion from three probes along the normal at 1, 3 and 5 steps of 4 % of a storey:
+// the former five probes at 1..5 steps (weights 0.6^(i−1)) with each even probe's weight split
+// between its neighbours, so the total weight and the reach are the same (docs/kifs.md).
 float occlusion(vec3 p, vec3 n) {
-  float occ = 0.0, w = 1.0, step = 0.04 * uFloors.x;
-  for (int i = 1; i <= 5; ++i) {
-    float h = step * float(i);
-    occ += w * max(h - evaluate(p + h * n).surface, 0.0) / h;
-    w *= 0.6;
+  float occ = 0.0, step = 0.04 * uFloors.x;
+  const vec3 weight = vec3(1.3, 0.768, 0.2376);
+  for (int i = 0; i < 3; ++i) {
+    float h = step * float(2 * i + 1);
+    occ += weight[i] * max(h - surfaceAt(p + h * n), 0.0) / h;
   }
   return clamp(1.0 - 0.45 * occ, 0.0, 1.0);
 }
@@ -270,8 +279,9 @@ void main() {
   if (uMode == 1) base = palette(s.ids.x + 4.0 * s.ids.y);
   if (uMode == 2) base = palette(3.0 * s.floorIndex);
   float sun = max(dot(n, uSunDir), 0.0);
-  if (sun > 0.0) sun *= softShadow(p + 2.0 * footprint * n, uSunDir, 2.0 * footprint);
-  float ao = occlusion(p, n);
+  bool preview = uMode == 4;
+  if (sun > 0.0 && !preview) sun *= softShadow(p + 2.0 * footprint * n, uSunDir, 2.0 * footprint);
+  float ao = preview ? 1.0 : occlusion(p, n);
   float sky = 0.5 + 0.5 * n.z;
   vec3 light = vec3(1.0, 0.96, 0.88) * sun * 0.85 + ao * mix(vec3(0.22, 0.21, 0.2), vec3(0.40, 0.45, 0.52), sky);
   vec3 c = base * light;

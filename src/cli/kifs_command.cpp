@@ -25,14 +25,16 @@
 namespace corbel::cli {
 
 const char* const kKifsUsage =
-    R"(  corbel-cli kifs [PRESET|PROJECT.corbel] --out PNG [--preset NAME] [--size WxH] [--mode shaded|facades|floors|cost]
+    R"(  corbel-cli kifs [PRESET|PROJECT.corbel] --out PNG [--preset NAME] [--size WxH] [--mode shaded|preview|facades|floors|cost]
                     [--camera AZ,EL] [--frames N]
-                    A KIFS building (McGraw) raymarched on the GPU path (OSMesa). Presets: box,
-                    menger, t, h, polar, curved, sparse, crumbling, turned, star (default box);
+                    A KIFS building (McGraw) raymarched on the GPU path (OSMesa). Presets: the files
+                    assets/kifs/NAME.json (box, menger, t, h, polar, curved, sparse, crumbling,
+                    turned, star; default box);
                     a project gives its first KIFS object (every form below takes it too).
                     --frames N renders N times after one untimed frame (the first draw
                     compiles the shader) and prints the mean milliseconds per frame.
-                    --mode cost writes a heat map of distance evaluations per pixel and prints
+                    --mode preview shades without soft shadow and occlusion, as the
+                    editor's coarse frames do; --mode cost writes a heat map of distance evaluations per pixel and prints
                     their means (JSON).
   corbel-cli kifs --mesh FILE.{obj,ply,off,glb} [--preset NAME] [--resolution N]
                     Meshes the building (marching tetrahedra, N cells along the longest side,
@@ -140,7 +142,8 @@ int run(int argc, char** argv) {
     else if (m == "facades" || m == "ids") mode = render::KifsMode::Facades;
     else if (m == "floors") mode = render::KifsMode::Floors;
     else if (m == "cost") mode = render::KifsMode::Cost;
-    else throw Usage("--mode: expected shaded, facades, floors or cost, got '" + m + "'");
+    else if (m == "preview") mode = render::KifsMode::Preview;  // the editor's coarse frames' shading
+    else throw Usage("--mode: expected shaded, preview, facades, floors or cost, got '" + m + "'");
   }
   double az = -60.0, el = 22.0;
   if (opt.count("--camera")) {

@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/json_reader.h"
+#include "core/kifs_json.h"
 
 #include <cmath>
 #include <filesystem>
@@ -118,6 +119,8 @@ BoxSpec boxFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
 
 ojson vec2(const Vec2& v) { return ojson::array({v[0], v[1]}); }
 
+}  // namespace
+
 // KIFS keys are the field names of core/kifs_spec.h (and kifs/params.h), so the kernel's
 // messages ("kifs.mass.shell: ...") name the place in the file.
 ojson kifsToJson(const KifsSpec& k) {
@@ -217,6 +220,8 @@ KifsSpec kifsFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   if (auto v = r.find("material")) k.material = v->string(limits::kMaxNameLength);
   return k;
 }
+
+namespace {
 
 // The site is written as the JSON object it holds, so a project embeds a site file verbatim.
 ojson growthToJson(const GrowthSpec& g) {

@@ -87,9 +87,17 @@ double escapeRadius(const KifsParams& p);
 // Throws corbel::Error naming the first bad field ("kifs.scale: must be > 1, got 0.5").
 void validate(const KifsParams& p);
 
-// Named presets reproducing the looks of the paper's figures (docs/kifs.md lists them).
+// Named presets reproducing the looks of the paper's figures (docs/kifs.md lists them): the
+// files assets/kifs/NAME.json (core/assets.h finds assets/), each a KIFS spec in the project
+// file's format (core/kifs_json.h), read at every call.
+std::string presetDir();
+// The stems of the folder's .json files, sorted.
 std::vector<std::string> presetNames();
 // Throws corbel::Error listing the names when `name` is unknown.
 KifsParams preset(const std::string& name);
+// Reads one preset file: its values validated (kifs::paramsOf), unknown keys refused. Throws
+// corbel::Error beginning with the file's path and naming the JSON path of the fault
+// ("…/box.json: kifs.mass.shell: must be …").
+KifsParams loadPreset(const std::string& file);
 
 }  // namespace corbel::kifs

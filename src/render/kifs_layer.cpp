@@ -66,7 +66,9 @@ bool KifsLayer::update(KifsPass& pass, const std::vector<kifs::KifsParams>& buil
   for (const kifs::KifsParams& p : buildings) {
     kifs::KifsParams coarse = p;
     coarse.trace.pixelAngle *= scale;  // a texel spans `scale` pixels: a hit within it is enough
-    pass.draw(kifs::Building(coarse), camera, 0, 0, w, h, mode);
+    // While the view keeps changing, the coarse frames skip shadows and occlusion.
+    const KifsMode drawn = scale > 1 && mode == KifsMode::Shaded ? KifsMode::Preview : mode;
+    pass.draw(kifs::Building(coarse), camera, 0, 0, w, h, drawn);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);

@@ -23,7 +23,8 @@ class KifsLayer {
   // layer at ceil(width / scale) × ceil(height / scale) texels, unless the layer already holds
   // the same `key` at the same size and scale. `key` must change whenever the buildings, the
   // camera or the mode do (the caller knows what it draws). Returns whether it marched. The
-  // bound framebuffer and the viewport are as they were afterwards.
+  // bound framebuffer and the viewport are as they were afterwards. At scale > 1 a Shaded
+  // layer is drawn as KifsMode::Preview (no soft shadow, no occlusion: a cheaper coarse frame).
   bool update(KifsPass& pass, const std::vector<kifs::KifsParams>& buildings, const OrbitCamera& camera, int width,
               int height, int scale, KifsMode mode, const std::string& key);
   // Draws the layer into the bound framebuffer's viewport (x, y, width, height), depth-tested

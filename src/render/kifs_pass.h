@@ -16,7 +16,9 @@ namespace corbel::render {
 
 // Display modes of Fig. 5-6, and the cost of each pixel (evaluations of the distance function,
 // march and shading together; decode with kifsCost).
-enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2, Cost = 3 };
+// Preview is Shaded without the soft shadow and the ambient occlusion (about half the
+// evaluations of a hit pixel): render/kifs_layer's coarse frames.
+enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2, Cost = 3, Preview = 4 };
 
 // Evaluations of the distance function per pixel (march and shading), drawn in KifsMode::Cost.
 struct KifsCost {
