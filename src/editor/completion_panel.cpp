@@ -62,8 +62,7 @@ void CompletionPanel::defaultRegion(const growth::Site& site) {
   regionSet_ = true;
 }
 
-void CompletionPanel::gapRegion() {
-  if (!model_) return;
+std::pair<growth::EntranceOptions, std::vector<growth::Box>> CompletionPanel::entranceSetup() const {
   const growth::Site& site = model_->grown.site;
   growth::EntranceOptions eo;
   eo.storey = storey_;
@@ -71,7 +70,13 @@ void CompletionPanel::gapRegion() {
   eo.storeyHeight = site.storeyHeight;
   std::vector<growth::Box> obstacles = site.circulation;
   for (std::size_t i = 0; i < site.cores.size(); ++i) obstacles.push_back(site.coreBox(i));
-  const growth::Box b = site.bounds();
+  return {eo, obstacles};
+}
+
+void CompletionPanel::gapRegion() {
+  if (!model_) return;
+  const auto [eo, obstacles] = entranceSetup();
+  const growth::Box b = model_->grown.site.bounds();
   growth::PlanRect gap;
   if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, 5, 16, gap)) {
     region_ = gap;
@@ -88,13 +93,7 @@ void CompletionPanel::updateEntrances() {
   if (entrancesModel_ == model_.get() && entrancesStorey_ == storey_ && entrancesFor_.x0 == r.x0 &&
       entrancesFor_.y0 == r.y0 && entrancesFor_.x1 == r.x1 && entrancesFor_.y1 == r.y1)
     return;
-  const growth::Site& site = model_->grown.site;
-  growth::EntranceOptions eo;
-  eo.storey = storey_;
-  eo.base = site.base;
-  eo.storeyHeight = site.storeyHeight;
-  std::vector<growth::Box> obstacles = site.circulation;
-  for (std::size_t i = 0; i < site.cores.size(); ++i) obstacles.push_back(site.coreBox(i));
+  const auto [eo, obstacles] = entranceSetup();
   entrances_ = growth::entrancesInRegion(model_->grown.units, region_, eo, obstacles);
   entrancesModel_ = model_.get();
   entrancesStorey_ = storey_;

@@ -19,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace corbel::editor {
@@ -61,6 +62,8 @@ class CompletionPanel {
   void defaultRegion(const growth::Site& site);
   void gapRegion();  // the region becomes the model's most enclosed gap on the storey (growth::findGap)
   void updateEntrances();
+  // The storey's entrance options and what blocks an entrance (circulation and cores).
+  std::pair<growth::EntranceOptions, std::vector<growth::Box>> entranceSetup() const;
   double storeyZ() const;
   void drawPlan(const CompletionHost& host, float w, float h);
   void drawThumbnails(float w);
