@@ -1,18 +1,25 @@
-// corbel-cli complete --seeds N --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1]
-//                     [--seed S] [--out FILE] [--render PNG]
+// corbel-cli complete (--seeds N [--entrance X,Y ...] | --from PROJECT [--object NAME] [--storey K])
+//                     --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S] [--out FILE]
+//                     [--render PNG]
 #include "cli/complete.h"
 
+#include "cli/grow.h"
 #include "cli/scene_png.h"
 
 #include "core/error.h"
 #include "core/export.h"
+#include "core/project_io.h"
 #include "core/scene.h"
 #include "growth/completion.h"
+#include "growth/entrances.h"
+#include "growth/form_fit.h"
+#include "growth/kernel.h"
 #include "growth/sizing.h"
 #include "render/headless_context.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -25,8 +32,9 @@ namespace corbel::cli {
 namespace {
 
 constexpr const char* kCompleteUsage =
-    "usage: corbel-cli complete --seeds N --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S] "
-    "[--out FILE.{obj,ply,off,glb}] [--render PNG]\n";
+    "usage: corbel-cli complete (--seeds N [--entrance X,Y ...] | --from PROJECT [--object NAME] [--storey K])\n"
+    "                           --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S]\n"
+    "                           [--out FILE.{obj,ply,off,glb}] [--render PNG]\n";
 
 struct BadArgument {
   std::string message;
@@ -70,7 +78,11 @@ int complete(int argc, char** argv) {
   rq.count = 4;
   bool haveSeeds = false, haveRange = false;
   growth::PlanRect region{0, 0, 24, 16};
-  std::string out, png;
+  bool haveRegion = false;
+  std::string out, png, from, objectName;
+  int storey = 0;
+  bool haveStorey = false;
+  std::vector<Vec2> doors;  // --entrance points, or the grown model's entrances
   try {
     for (int i = 2; i < argc; ++i) {
       const std::string a = argv[i];
@@ -104,6 +116,19 @@ int complete(int argc, char** argv) {
                   number("--region", parts[3])};
         if (region.x1 - region.x0 < 3 || region.y1 - region.y0 < 3)
           throw BadArgument{"--region: expected X1 >= X0 + 3 and Y1 >= Y0 + 3 (meters), not '" + v + "'"};
+        haveRegion = true;
+      } else if (a == "--from") {
+        from = value();
+      } else if (a == "--object") {
+        objectName = value();
+      } else if (a == "--storey") {
+        storey = int(whole(a, value(), 0, 1000));
+        haveStorey = true;
+      } else if (a == "--entrance") {
+        const std::string v = value();
+        const auto parts = splitOn(v, ',');
+        if (parts.size() != 2) throw BadArgument{"--entrance: expected X,Y, not '" + v + "'"};
+        doors.push_back(Vec2(number("--entrance", parts[0]), number("--entrance", parts[1])));
       } else if (a == "--out") {
         out = value();
         exportFormatFor(out);
@@ -113,7 +138,17 @@ int complete(int argc, char** argv) {
         throw BadArgument{"unexpected argument " + a};
       }
     }
-    if (!haveSeeds) throw BadArgument{"--seeds N is required"};
+    if (!from.empty()) {
+      if (haveSeeds) throw BadArgument{"--seeds: with --from the seeds are the grown model's entrances"};
+      if (!doors.empty()) throw BadArgument{"--entrance: with --from the entrances are the grown model's"};
+    } else {
+      if (!objectName.empty()) throw BadArgument{"--object names a growth object of a --from PROJECT"};
+      if (haveStorey) throw BadArgument{"--storey is a storey of a --from PROJECT"};
+      if (!haveSeeds) throw BadArgument{"--seeds N (or --from PROJECT) is required"};
+      if (doors.size() > std::size_t(rq.seeds))
+        throw BadArgument{"--entrance: " + std::to_string(doors.size()) + " entrances for " + std::to_string(rq.seeds) +
+                          " seeds (each entrance goes to a different unit)"};
+    }
     if (!haveRange) throw BadArgument{"--complexity LO:HI is required"};
   } catch (const BadArgument& e) {
     std::cerr << "corbel-cli: complete: " << e.message << "\n" << kCompleteUsage;
@@ -121,6 +156,58 @@ int complete(int argc, char** argv) {
   } catch (const Error& e) {
     std::cerr << "corbel-cli: complete: " << e.what() << "\n";
     return 2;
+  }
+
+  // From a grown model: its growth object grown as the editor grows it, the region (default: the
+  // most enclosed gap of the storey, as the editor's completion panel chooses it) and the
+  // entrances that open onto the region, one seed each.
+  growth::GrownModel model;
+  double z0 = 0, storeyHeight = 3.0;
+  if (!from.empty()) {
+    try {
+      const LoadedProject p = loadProject(from);
+      for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << from << ": " << w << "\n";
+      std::vector<const DocObject*> growths;
+      for (const DocObject& o : p.document.objects)
+        if (std::holds_alternative<GrowthSpec>(o.spec) && (objectName.empty() || o.name == objectName))
+          growths.push_back(&o);
+      if (growths.empty())
+        throw Error(from + (objectName.empty() ? ": no growth object to complete"
+                                               : ": no growth object named \"" + objectName + "\""));
+      if (growths.size() > 1) throw Error(from + ": several growth objects; choose one with --object NAME");
+      model = growth::grow(std::get<GrowthSpec>(growths[0]->spec));
+    } catch (const Error& e) {
+      std::cerr << "corbel-cli: complete: " << e.what() << "\n";
+      return 1;
+    }
+    const growth::Site& site = model.site;
+    if (storey >= site.storeys) {
+      std::cerr << "corbel-cli: complete: --storey: the site has storeys 0 to " << site.storeys - 1 << "\n";
+      return 2;
+    }
+    growth::EntranceOptions eo;
+    eo.storey = storey;
+    eo.base = site.base;
+    eo.storeyHeight = site.storeyHeight;
+    std::vector<growth::Box> obstacles = site.circulation;
+    for (std::size_t i = 0; i < site.cores.size(); ++i) obstacles.push_back(site.coreBox(i));
+    if (!haveRegion) {
+      const growth::Box b = site.bounds();
+      if (!growth::findGap(model.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, 5, 16, region)) {
+        std::cerr << "corbel-cli: complete: no empty region of 5 to 16 m on storey " << storey
+                  << " of the grown model; give one with --region\n";
+        return 1;
+      }
+    }
+    const std::vector<growth::Entrance> entrances = growth::entrancesInRegion(model.units, region, eo, obstacles);
+    if (entrances.empty()) {
+      std::cerr << "corbel-cli: complete: no grown unit opens onto the region on storey " << storey << "\n";
+      return 1;
+    }
+    for (const growth::Entrance& e : entrances) doors.push_back(e.at);
+    rq.seeds = int(doors.size());
+    z0 = site.base + storey * site.storeyHeight;
+    storeyHeight = site.storeyHeight;
   }
 
   growth::FormSet set;
@@ -140,21 +227,34 @@ int complete(int argc, char** argv) {
   if (!set.note.empty()) j["note"] = set.note;
   j["region"] = {region.x0, region.y0, region.x1, region.y1};
 
-  // Each form is fitted into the region and sized; side by side (four to a row) in the scene.
+  if (!from.empty()) {
+    j["from"] = from;
+    j["storey"] = storey;
+  }
+  if (!doors.empty()) {
+    j["entrances"] = nlohmann::ordered_json::array();
+    for (const Vec2& d : doors) j["entrances"].push_back({d[0], d[1]});
+  }
+
+  // Each form is fitted into the region (in the orientation that suits its entrances best), sized,
+  // and its entrances realized. Without a model the forms stand side by side (four to a row) in
+  // the scene; with one, the form that meets the most doors stands in its region in the model.
   Scene scene;
   ObjectId id = 1;
   const double w = region.x1 - region.x0, h = region.y1 - region.y0, gap = 0.25 * std::min(w, h);
   j["forms"] = nlohmann::ordered_json::array();
+  std::vector<growth::FittedForm> fitted;
+  int best = -1;
   for (std::size_t k = 0; k < set.forms.size(); ++k) {
     const growth::Form& f = set.forms[k];
-    growth::Cartogram c = growth::Cartogram::of(f.plan);
-    growth::fitToRegion(c, region);
-    growth::SizingOptions so;
-    so.minWidth = std::min(0.5, 0.05 * std::min(w, h));
-    growth::Layout layout = growth::Layout::of(c);
-    const growth::SizingResult sized = growth::sizeGeometry(layout, so);
-    const int n = int(f.plan.units().size());
-    std::vector<growth::Unit> units = growth::sizedUnits(layout, n, 0.0, 3.0);
+    const growth::Cartogram c = growth::Cartogram::of(f.plan);
+    growth::FitOptions fo;
+    fo.z0 = z0;
+    fo.storeyHeight = storeyHeight;
+    fitted.push_back(growth::fitForm(f.plan, region, doors, fo));
+    const growth::FittedForm& fit = fitted.back();
+    int met = 0;
+    for (const growth::EntranceFit& e : fit.entranceFits) met += e.realized;
 
     nlohmann::ordered_json fj;
     const growth::Fraction v = f.complexity.value();
@@ -165,17 +265,38 @@ int complete(int argc, char** argv) {
     fj["moves"] = f.moves;
     fj["sub_units"] = c.subUnits();
     fj["sea_rectangles"] = int(c.rects.size()) - c.subUnits();
-    fj["area_error_before"] = sized.before;
-    fj["area_error_after"] = sized.after;
-    fj["sizing_passes"] = sized.passes;
+    fj["orientation"] = fit.orientation;
+    fj["area_error_before"] = fit.sizing.before;
+    fj["area_error_after"] = fit.sizing.after;
+    fj["sizing_passes"] = fit.sizing.passes;
+    if (!doors.empty()) {
+      fj["doors_met"] = met;
+      fj["area_error_final"] = fit.areaError;
+      nlohmann::ordered_json dj = nlohmann::ordered_json::array();
+      for (const growth::EntranceFit& e : fit.entranceFits) {
+        nlohmann::ordered_json one{{"entrance", e.entrance}, {"unit", e.unit + 1},     {"side", e.side},
+                                   {"door", {e.from, e.to}}, {"realized", e.realized}, {"moved", e.moved}};
+        if (!e.realized) one["why"] = e.why;
+        dj.push_back(one);
+      }
+      fj["doors"] = dj;
+    }
     nlohmann::ordered_json uj = nlohmann::ordered_json::array();
-    for (const growth::Unit& u : units)
+    for (const growth::Unit& u : fit.units)
       uj.push_back({{"id", u.id}, {"area", u.floorArea()}, {"parts", u.parts.size()}});
     fj["units"] = uj;
     j["forms"].push_back(fj);
+    if (best < 0) {
+      best = int(k);
+    } else {
+      int bestMet = 0;
+      for (const growth::EntranceFit& e : fitted[std::size_t(best)].entranceFits) bestMet += e.realized;
+      if (met > bestMet || (met == bestMet && fit.areaError < fitted[std::size_t(best)].areaError)) best = int(k);
+    }
+  }
+  if (best >= 0) j["best"] = best + 1;
 
-    if (out.empty() && png.empty()) continue;
-    const double dx = double(k % 4) * (w + gap), dy = -double(k / 4) * (h + gap);
+  auto place = [&](std::vector<growth::Unit> units, std::size_t k, double dx, double dy) {
     for (growth::Unit& u : units) {
       for (growth::Box& b : u.parts) b.lo[0] += dx, b.hi[0] += dx, b.lo[1] += dy, b.hi[1] += dy;
       MeshData m = growth::unitMesh(u);
@@ -183,12 +304,35 @@ int complete(int argc, char** argv) {
       for (int& fm : m.faceMaterial) fm = mat;
       scene.replaceObject(id++, Kind::Unit, "form " + std::to_string(k + 1) + " unit " + std::to_string(u.id), m);
     }
-    growth::Unit ground;
-    ground.parts = {{{region.x0 + dx, region.y0 + dy, -0.2}, {region.x1 + dx, region.y1 + dy, 0.0}}};
-    MeshData g = growth::unitMesh(ground);
-    const int mat = g.addMaterial("concrete");
-    for (int& fm : g.faceMaterial) fm = mat;
-    scene.replaceObject(id++, Kind::Site, "form " + std::to_string(k + 1) + " region", g);
+  };
+  if ((!out.empty() || !png.empty()) && !from.empty() && best >= 0) {
+    // The model sliced at the storey's top (Fig. 8.3), so the completed storey shows.
+    growth::Site sliced = model.site;
+    sliced.storeys = storey + 1;
+    const double top = sliced.top();
+    for (growth::Box& c : sliced.circulation) c.hi[2] = std::min(c.hi[2], top);
+    std::vector<growth::Unit> below;
+    for (const growth::Unit& u : model.units) {
+      growth::Unit b = u;
+      b.parts.clear();
+      for (growth::Box p : u.parts)
+        if (p.lo[2] < top - 1e-9) p.hi[2] = std::min(p.hi[2], top), b.parts.push_back(p);
+      if (!b.parts.empty()) below.push_back(b);
+    }
+    scene = modelScene(sliced, below);
+    id = scene.objects().empty() ? 1 : scene.objects().rbegin()->first + 1;
+    place(fitted[std::size_t(best)].units, std::size_t(best), 0, 0);
+  } else if (!out.empty() || !png.empty()) {
+    for (std::size_t k = 0; k < fitted.size(); ++k) {
+      const double dx = double(k % 4) * (w + gap), dy = -double(k / 4) * (h + gap);
+      place(fitted[k].units, k, dx, dy);
+      growth::Unit ground;
+      ground.parts = {{{region.x0 + dx, region.y0 + dy, -0.2}, {region.x1 + dx, region.y1 + dy, 0.0}}};
+      MeshData g = growth::unitMesh(ground);
+      const int mat = g.addMaterial("concrete");
+      for (int& fm : g.faceMaterial) fm = mat;
+      scene.replaceObject(id++, Kind::Site, "form " + std::to_string(k + 1) + " region", g);
+    }
   }
   if (!out.empty() && !set.forms.empty()) {
     exportScene(scene, out);
@@ -196,7 +340,7 @@ int complete(int argc, char** argv) {
   }
   if (!png.empty() && !set.forms.empty()) {
     render::HeadlessContext context;
-    writeScenePng(scene, {-90, 55, 0.92}, png);
+    writeScenePng(scene, from.empty() ? SceneView{-90, 55, 0.92} : SceneView{-75, 30, 0.95}, png);
     j["render"] = png;
   }
   std::cout << j.dump() << "\n";

@@ -33,27 +33,6 @@ bool wholeNumber(const std::string& s, long long lo, long long hi, long long& ou
   return !s.empty() && *end == '\0' && out >= lo && out <= hi;
 }
 
-// Units (kind unit), cores and circulation (kind mass) as Scene objects.
-Scene modelScene(const growth::Site& site, const std::vector<growth::Unit>& units) {
-  Scene scene;
-  ObjectId id = 1;
-  for (const growth::Unit& u : units)
-    scene.replaceObject(id++, Kind::Unit, "unit " + std::to_string(u.id), growth::unitMesh(u));
-  auto solid = [&](const growth::Box& b, const std::string& name, const std::string& material) {
-    growth::Unit u;
-    u.parts = {b};
-    MeshData m = growth::unitMesh(u);
-    const int mat = m.addMaterial(material);
-    for (int& f : m.faceMaterial) f = mat;
-    scene.replaceObject(id++, Kind::Mass, name, m);
-  };
-  for (std::size_t i = 0; i < site.cores.size(); ++i)
-    solid(site.coreBox(i), "core " + std::to_string(i + 1), "concrete");
-  for (std::size_t i = 0; i < site.circulation.size(); ++i)
-    solid(site.circulation[i], "circulation " + std::to_string(i + 1), "slate");
-  return scene;
-}
-
 nlohmann::ordered_json statisticsJson(const growth::Statistics& st) {
   nlohmann::ordered_json j;
   j["site_area"] = st.siteArea;
@@ -76,6 +55,27 @@ nlohmann::ordered_json statisticsJson(const growth::Statistics& st) {
 }
 
 }  // namespace
+
+// Units (kind unit), cores and circulation (kind mass) as Scene objects.
+Scene modelScene(const growth::Site& site, const std::vector<growth::Unit>& units) {
+  Scene scene;
+  ObjectId id = 1;
+  for (const growth::Unit& u : units)
+    scene.replaceObject(id++, Kind::Unit, "unit " + std::to_string(u.id), growth::unitMesh(u));
+  auto solid = [&](const growth::Box& b, const std::string& name, const std::string& material) {
+    growth::Unit u;
+    u.parts = {b};
+    MeshData m = growth::unitMesh(u);
+    const int mat = m.addMaterial(material);
+    for (int& f : m.faceMaterial) f = mat;
+    scene.replaceObject(id++, Kind::Mass, name, m);
+  };
+  for (std::size_t i = 0; i < site.cores.size(); ++i)
+    solid(site.coreBox(i), "core " + std::to_string(i + 1), "concrete");
+  for (std::size_t i = 0; i < site.circulation.size(); ++i)
+    solid(site.circulation[i], "circulation " + std::to_string(i + 1), "slate");
+  return scene;
+}
 
 int grow(int argc, char** argv) {
   std::string sitePath, out, png, maps = "exact";

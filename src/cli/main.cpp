@@ -80,10 +80,12 @@ usage:
   corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
                     [--view-maps exact|raster|gl] [--pixel M]
                     Grows housing units on a site (docs/growth.md); prints one JSON line.
-  corbel-cli complete --seeds N --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S]
+  corbel-cli complete (--seeds N [--entrance X,Y ...] | --from PROJECT [--object NAME] [--storey K])
+                    --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S]
                     [--out FILE] [--render PNG]
                     Completes forms from N seed units with F_q in [LO, HI] (docs/growth.md),
-                    fitted and sized into the region; prints one JSON line.
+                    fitted and sized into the region, entrances realized (--from: a grown
+                    model's gap and its entrances); prints one JSON line.
   corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] [--out FILE.glb]
                     [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]
                     [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]

@@ -193,6 +193,14 @@ void CompletionPanel::fit(const CompletionHost& host) {
     std::snprintf(text, sizeof text, "form %d fitted: orientation %d, sizing error %.2f -> %.2f", picked_ + 1,
                   fitted_->orientation, fitted_->sizing.before, fitted_->sizing.after);
     status_ = text;
+    if (!fitted_->entranceFits.empty()) {
+      const auto met = std::count_if(fitted_->entranceFits.begin(), fitted_->entranceFits.end(),
+                                     [](const growth::EntranceFit& e) { return e.realized; });
+      status_ += "; doors met " + std::to_string(met) + " of " + std::to_string(fitted_->entranceFits.size());
+      for (const growth::EntranceFit& e : fitted_->entranceFits)
+        if (!e.realized)
+          host.log("Fit to region: entrance " + std::to_string(e.entrance + 1) + " not met: " + e.why, false);
+    }
     // The fit fills the region: say when grown units stand in it.
     if (model_) {
       int clashes = 0;
@@ -248,6 +256,15 @@ void CompletionPanel::drawOverlay(render::Overlay& overlay) const {
                                                   e.at[1] + sideSign(e.facing) * (sideAxis(e.facing) == 1 ? 1.5 : 0), z),
                   {0.3f, 0.9f, 0.4f, 1.0f}, 0.4);
   if (!fitted_) return;
+  // The doors the fit was asked to meet: green where the unit opens onto its entrance, red where not.
+  for (const growth::EntranceFit& e : fitted_->entranceFits) {
+    const growth::PlanRect& r = fittedRegion_;
+    const bool alongX = e.side == 0 || e.side == 2;
+    const double at = e.side == 0 ? r.y0 : e.side == 1 ? r.x1 : e.side == 2 ? r.y1 : r.x0;
+    const Vec3 a = alongX ? Vec3(e.from, at, z + 0.1) : Vec3(at, e.from, z + 0.1);
+    const Vec3 b = alongX ? Vec3(e.to, at, z + 0.1) : Vec3(at, e.to, z + 0.1);
+    overlay.line(a, b, e.realized ? render::Rgba{0.2f, 0.95f, 0.3f, 1.0f} : render::Rgba{0.95f, 0.2f, 0.2f, 1.0f});
+  }
   for (const growth::Unit& u : fitted_->units) {
     const Rgb rgb = materialColor(unitMaterial(u.id), Kind::Unit);
     const render::Rgba col{rgb[0], rgb[1], rgb[2], 1.0f};

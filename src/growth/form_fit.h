@@ -3,21 +3,37 @@
 // rectangular cartogram (sub-units and sea) is laid in one of the eight orientations of the
 // square, its bounding box mapped exactly onto the region (corners onto corners, lines in
 // between proportionally, so ≺x and ≺z are kept), and sized (growth/sizing.h). With entrances
-// (growth/entrances.h) the orientation is the one whose units lie nearest them, each entrance
-// taken by a different unit (nearest pairs first).
+// (growth/entrances.h) the orientation is the one whose units lie nearest them along the region's
+// sides, each entrance taken by a different unit (cheapest pairs first). After sizing, each taken entrance is realized
+// (Sec. 7.3.3): its unit is made to open onto it over a door's width, by the cascading and
+// staircase edge moves of realizeBySegments, keeping the entrances realized before it in place.
 #include "growth/cartogram.h"
 #include "growth/floorplan.h"
 #include "growth/sizing.h"
 #include "growth/unit.h"
 
+#include <string>
 #include <vector>
 
 namespace corbel::growth {
 
 struct FitOptions {
   double z0 = 0, storeyHeight = 3.0;
-  bool size = true;    // run the sizing heuristic after the fit
-  int orientation = -1;  // 0 .. 7 to force one (bit 2: mirror x; bits 0-1: quarter turns); -1: choose
+  bool size = true;              // run the sizing heuristic after the fit
+  int orientation = -1;          // 0 .. 7 to force one (bit 2: mirror x; bits 0-1: quarter turns); -1: choose
+  bool realizeEntrances = true;  // move the layout's segments so each unit opens onto its entrance
+  double doorWidth = 1.0;        // how much of the region's side a unit must share at its entrance (m)
+};
+
+// What became of one taken entrance.
+struct EntranceFit {
+  int unit = -1;            // the form's unit (index) that takes it
+  int entrance = -1;        // index into the entrances given to fitForm
+  int side = -1;            // the region's side it is on: 0 south (y0), 1 east (x1), 2 north (y1), 3 west (x0)
+  double from = 0, to = 0;  // the door: the stretch of that side the unit must cover
+  bool realized = false;    // the unit covers the door
+  bool moved = false;       // segments were moved to make it so
+  std::string why;          // when not realized
 };
 
 struct FittedForm {
@@ -25,8 +41,14 @@ struct FittedForm {
   std::vector<Unit> units;  // id = form unit + 1, one storey from z0
   int orientation = 0;
   std::vector<int> entranceOf;  // per unit: the entrance it takes (-1: none)
-  double entranceDistance = 0;  // Σ distance from each taken entrance to its unit
+  // Before realization (after sizing): Σ distance from each taken entrance to its unit, and Σ
+  // cost, the distance along the region's side from each door to its unit's nearest stretch of
+  // that side, a unit that does not reach the side costing the region's perimeter more. The
+  // orientation and the assignment are chosen for the least cost.
+  double entranceDistance = 0, entranceCost = 0;
+  std::vector<EntranceFit> entranceFits;  // per taken entrance, in the order they were realized
   SizingResult sizing;
+  double areaError = 0;  // the largest relative area error of a sub-unit rectangle at the end
 };
 
 // The orientation applied to a point (for tests: a quarter turn is (x, y) → (−y, x)).

@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace {
 
@@ -141,18 +145,130 @@ TEST(CompleteCli, FormsInRangeAndClearErrors) {
   while (std::getline(in, line)) units += line.rfind("o form ", 0) == 0 && line.find(" unit ") != std::string::npos;
   EXPECT_EQ(units, 3 * 4);
 
-  for (const auto& [args, flag] : std::vector<std::pair<std::string, std::string>>{
-           {"--complexity 0.2:0.3", "--seeds"},
-           {"--seeds 13 --complexity 0.2:0.3", "--seeds"},
-           {"--seeds 3 --complexity 0.3:0.2", "--complexity"},
-           {"--seeds 3 --complexity 0.2:0.5", "--complexity"},
-           {"--seeds 3 --complexity abc", "--complexity"},
-           {"--seeds 3 --complexity 0.2:0.3 --count 0", "--count"},
-           {"--seeds 3 --complexity 0.2:0.3 --region 0,0,10", "--region"},
-           {"--seeds 3 --complexity 0.2:0.3 --region 0,0,1,1", "--region"},
-           {"--seeds 3 --complexity 0.2:0.3 --wat", "--wat"}}) {
+  for (const auto& [args, flag] :
+       std::vector<std::pair<std::string, std::string>>{{"--complexity 0.2:0.3", "--seeds"},
+                                                        {"--seeds 13 --complexity 0.2:0.3", "--seeds"},
+                                                        {"--seeds 3 --complexity 0.3:0.2", "--complexity"},
+                                                        {"--seeds 3 --complexity 0.2:0.5", "--complexity"},
+                                                        {"--seeds 3 --complexity abc", "--complexity"},
+                                                        {"--seeds 3 --complexity 0.2:0.3 --count 0", "--count"},
+                                                        {"--seeds 3 --complexity 0.2:0.3 --region 0,0,10", "--region"},
+                                                        {"--seeds 3 --complexity 0.2:0.3 --region 0,0,1,1", "--region"},
+                                                        {"--seeds 3 --complexity 0.2:0.3 --wat", "--wat"}}) {
     const CliRun bad = cli("complete " + args);
     EXPECT_EQ(bad.code, 2) << args;
     EXPECT_NE(bad.out.find(flag), std::string::npos) << args << ": " << bad.out;
   }
+}
+
+namespace {
+
+// Vertices per object of an OBJ file ("o NAME" starts an object; vertex indices are global).
+std::map<std::string, std::vector<std::array<double, 3>>> objVertices(const std::string& path) {
+  std::map<std::string, std::vector<std::array<double, 3>>> out;
+  std::ifstream in(path);
+  std::string line, current;
+  while (std::getline(in, line)) {
+    if (line.rfind("o ", 0) == 0) current = line.substr(2);
+    if (line.rfind("v ", 0) == 0) {
+      std::array<double, 3> v{};
+      std::sscanf(line.c_str(), "v %lf %lf %lf", &v[0], &v[1], &v[2]);
+      out[current].push_back(v);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+// corbel-cli complete --from: the Alpha example grown as the editor grows it, its most enclosed gap
+// on storey 1, one seed per entrance opening onto the gap. Every entrance lies on the region's
+// boundary; each form has one unit per entrance; every door called met is covered, in the
+// exported model, by the unit's vertices on that side of the region (an independent reading of
+// the geometry); the grown model is exported with the form.
+TEST(CompleteCli, FromAGrownModelMeetsTheDoorsOfItsEntrances) {
+  const std::string project = std::string(CORBEL_SOURCE_DIR) + "/assets/examples/housing-alpha.corbel";
+  const std::string obj = testing::TempDir() + "complete-alpha.obj";
+  const CliRun r = cli("complete --from " + project + " --storey 1 --complexity 0.25:0.40 --count 3 --out " + obj);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& region = j["region"];
+  const double x0 = region[0], y0 = region[1], x1 = region[2], y1 = region[3];
+  const std::size_t seeds = j["entrances"].size();
+  ASSERT_GE(seeds, 2u);
+  EXPECT_EQ(j["seeds"].get<std::size_t>(), seeds);
+  for (const auto& e : j["entrances"]) {
+    const double x = e[0], y = e[1];
+    const bool onX = (std::abs(x - x0) < 1e-6 || std::abs(x - x1) < 1e-6) && y >= y0 && y <= y1;
+    const bool onY = (std::abs(y - y0) < 1e-6 || std::abs(y - y1) < 1e-6) && x >= x0 && x <= x1;
+    EXPECT_TRUE(onX || onY) << x << ", " << y;
+  }
+  const auto objects = objVertices(obj);
+  const int best = j["best"];
+  int met = 0, forms = 0;
+  for (const auto& f : j["forms"]) {
+    ++forms;
+    EXPECT_EQ(f["units"].size(), seeds);
+    EXPECT_EQ(f["doors"].size(), seeds);
+    int count = 0;
+    for (const auto& d : f["doors"]) {
+      count += d["realized"].get<bool>();
+      if (!d["realized"].get<bool>()) {
+        EXPECT_FALSE(d["why"].get<std::string>().empty());
+      }
+    }
+    EXPECT_EQ(f["doors_met"].get<int>(), count);
+    if (forms != best) continue;
+    met = count;
+    for (const auto& d : f["doors"]) {
+      if (!d["realized"].get<bool>()) continue;
+      const int side = d["side"];
+      const double from = d["door"][0], to = d["door"][1];
+      const double at = side == 0 ? y0 : side == 1 ? x1 : side == 2 ? y1 : x0;
+      const auto it = objects.find("form " + std::to_string(best) + " unit " + std::to_string(d["unit"].get<int>()));
+      ASSERT_NE(it, objects.end());
+      double lo = INFINITY, hi = -INFINITY;
+      for (const auto& v : it->second) {
+        const double across = side == 0 || side == 2 ? v[1] : v[0], along = side == 0 || side == 2 ? v[0] : v[1];
+        if (std::abs(across - at) < 1e-6) lo = std::min(lo, along), hi = std::max(hi, along);
+      }
+      EXPECT_LE(lo, from + 1e-6);
+      EXPECT_GE(hi, to - 1e-6);
+    }
+  }
+  EXPECT_GE(met, 1);
+  int grown = 0, formUnits = 0;
+  for (const auto& [name, v] : objects) {
+    grown += name.rfind("unit ", 0) == 0;
+    formUnits += name.rfind("form ", 0) == 0;
+  }
+  EXPECT_GT(grown, 10);
+  EXPECT_EQ(formUnits, int(seeds));
+}
+
+TEST(CompleteCli, EntrancesAndModelsAreCheckedBeforeAnythingRuns) {
+  const std::string project = std::string(CORBEL_SOURCE_DIR) + "/assets/examples/housing-alpha.corbel";
+  const std::string house = std::string(CORBEL_SOURCE_DIR) + "/assets/examples/house.corbel";
+  for (const auto& [args, code, says] : std::vector<std::tuple<std::string, int, std::string>>{
+           {"--from " + project + " --seeds 3 --complexity 0.2:0.3", 2, "--seeds"},
+           {"--seeds 3 --object Alpha --complexity 0.2:0.3", 2, "--object"},
+           {"--seeds 3 --storey 1 --complexity 0.2:0.3", 2, "--storey"},
+           {"--seeds 2 --entrance 0,1 --entrance 1,0 --entrance 2,0 --complexity 0.2:0.3", 2, "3 entrances for 2"},
+           {"--seeds 2 --entrance '0;1' --complexity 0.2:0.3", 2, "--entrance"},
+           {"--from " + project + " --storey 99 --complexity 0.2:0.3", 2, "--storey"},
+           {"--from " + house + " --complexity 0.2:0.3", 1, "no growth object"},
+           {"--from " + project + " --object Nope --complexity 0.2:0.3", 1, "Nope"},
+           {"--from /nonexistent.corbel --complexity 0.2:0.3", 1, "nonexistent"}}) {
+    const CliRun bad = cli("complete " + args);
+    EXPECT_EQ(bad.code, code) << args << ": " << bad.out;
+    EXPECT_NE(bad.out.find(says), std::string::npos) << args << ": " << bad.out;
+  }
+  // Doors given by hand on the region's sides are reported per form.
+  const CliRun r =
+      cli("complete --seeds 3 --complexity 0.25:0.40 --count 2 --region 0,0,20,12 --entrance 0,6 "
+          "--entrance 20,6");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["entrances"].size(), 2u);
+  for (const auto& f : j["forms"]) EXPECT_EQ(f["doors"].size(), 2u);
 }
