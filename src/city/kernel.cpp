@@ -1,9 +1,12 @@
 #include "city/kernel.h"
 
+#include "city/street.h"
+
 #include "core/error.h"
 #include "core/project_io.h"
 #include "extrude/kernel.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <numeric>
 
@@ -64,6 +67,11 @@ TownInputs readTownInputs(const TownSpec& spec) {
   in.style = under("town.style", [&] { return spec.style.empty() ? parseStyle(spec.styleJson) : loadStyle(spec.style); });
   in.town = under("town.footprints",
                   [&] { return spec.footprints.empty() ? readTown(spec.footprintsJson) : readTownFile(spec.footprints); });
+  try {
+    addStreets(in.town, spec.streets);
+  } catch (const InputError& e) {
+    throw InputError("town." + e.where, e.reason);
+  }
   in.labels = labelTown(in.town, in.style.labels);
   return in;
 }
@@ -94,8 +102,18 @@ std::map<std::string, BuildingOverride> resolveOverrides(const Style& style, con
 }
 
 std::shared_ptr<const TownInputs> TownCache::inputsFor(ObjectId object, const TownSpec& spec) {
-  const std::string key = (spec.footprints.empty() ? spec.footprintsJson : fileStamp(spec.footprints)) + "\n" +
-                          (spec.style.empty() ? spec.styleJson : fileStamp(spec.style));
+  std::string key = (spec.footprints.empty() ? spec.footprintsJson : fileStamp(spec.footprints)) + "\n" +
+                    (spec.style.empty() ? spec.styleJson : fileStamp(spec.style));
+  // The streets make plots and change labels: they are inputs too (every number, exactly).
+  char number[32];
+  for (const TownStreet& st : spec.streets) {
+    key += "\nstreet";
+    for (const auto& p : st.points)
+      for (double v : p) std::snprintf(number, sizeof number, " %a", v), key += number;
+    for (double v : {st.width, st.setback, st.depth, st.plotWidth})
+      std::snprintf(number, sizeof number, " %a", v), key += number;
+    key += st.bothSides ? " both" : " left";
+  }
   {
     std::lock_guard lock(mutex_);
     auto it = inputs_.find(object);

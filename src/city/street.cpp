@@ -1,5 +1,8 @@
 #include "city/street.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include "core/error.h"
 
 #include <algorithm>
@@ -102,6 +105,146 @@ Town streetTown(const std::vector<Vec2>& control, const PlotOptions& o) {
     }
   }
   return town;
+}
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+K::Point_2 pt(const Vec2& v) { return {v[0], v[1]}; }
+
+struct Box2 {
+  Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  void add(const Vec2& p) { lo = lo.minimize(p), hi = hi.maximize(p); }
+  bool meets(const Box2& o) const {
+    return lo[0] < o.hi[0] && o.lo[0] < hi[0] && lo[1] < o.hi[1] && o.lo[1] < hi[1];
+  }
+};
+
+Box2 boxOf(const std::vector<Vec2>& ring) {
+  Box2 b;
+  for (const Vec2& p : ring) b.add(p);
+  return b;
+}
+
+// Whether segments ab and cd cross properly (each strictly on both sides of the other's line).
+bool crosses(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const auto o1 = CGAL::orientation(pt(a), pt(b), pt(c)), o2 = CGAL::orientation(pt(a), pt(b), pt(d));
+  const auto o3 = CGAL::orientation(pt(c), pt(d), pt(a)), o4 = CGAL::orientation(pt(c), pt(d), pt(b));
+  return o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o1 != o2 && o3 != CGAL::COLLINEAR &&
+         o4 != CGAL::COLLINEAR && o3 != o4;
+}
+
+// Whether p lies strictly inside the simple ring.
+bool inside(const std::vector<Vec2>& ring, const Vec2& p) {
+  std::vector<K::Point_2> r;
+  for (const Vec2& v : ring) r.push_back(pt(v));
+  return CGAL::bounded_side_2(r.begin(), r.end(), pt(p), K()) == CGAL::ON_BOUNDED_SIDE;
+}
+
+// Whether two simple rings' interiors overlap: their edges cross, or a corner (or the middle
+// of an edge, for rings that share corners) of one lies strictly inside the other. Touching
+// along an edge or at a corner is not an overlap. Exact predicates (CGAL).
+bool overlaps(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j)
+      if (crosses(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
+  for (const auto* pair : {&a, &b}) {
+    const auto& from = *pair;
+    const auto& into = pair == &a ? b : a;
+    for (std::size_t i = 0; i < from.size(); ++i)
+      if (inside(into, from[i]) || inside(into, (from[i] + from[(i + 1) % from.size()]) * 0.5)) return true;
+  }
+  return false;
+}
+
+// Whether a polyline crosses a ring or runs inside it.
+bool crossesLine(const std::vector<Vec2>& ring, const std::vector<Vec2>& line) {
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    if (inside(ring, line[i])) return true;
+    for (std::size_t j = 0; j < ring.size(); ++j)
+      if (crosses(line[i], line[i + 1], ring[j], ring[(j + 1) % ring.size()])) return true;
+  }
+  return !line.empty() && inside(ring, line.back());
+}
+
+// The least distance from p to a polyline.
+double distanceToLine(const std::vector<Vec2>& line, const Vec2& p) {
+  double best = INFINITY;
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    const Vec2 d = line[i + 1] - line[i];
+    const double len2 = d.sqrnorm();
+    const double t = len2 > 0 ? std::clamp(((p - line[i]) | d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (line[i] + d * t - p).norm());
+  }
+  return best;
+}
+
+// Whether a plot lies on a street's roadway: the centreline runs into it, or a corner or the
+// middle of an edge of it is nearer the centreline than half the street's width.
+bool onRoad(const std::vector<Vec2>& ring, const std::vector<Vec2>& line, double halfWidth) {
+  if (crossesLine(ring, line)) return true;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    for (const Vec2& q : {ring[i], (ring[i] + ring[(i + 1) % ring.size()]) * 0.5})
+      if (distanceToLine(line, q) < halfWidth - 1e-9) return true;
+  return false;
+}
+
+}  // namespace
+
+void addStreets(Town& town, const std::vector<TownStreet>& streets) {
+  const std::size_t footprints = town.buildings.size();
+  std::vector<Box2> boxes;
+  for (const Building& b : town.buildings) boxes.push_back(b.loops.empty() ? Box2{} : boxOf(b.loops[0]));
+  std::vector<std::vector<Vec2>> lines;  // the streets' centrelines, in order
+  std::vector<std::size_t> firstPlot;
+  for (std::size_t k = 0; k < streets.size(); ++k) {
+    const TownStreet& st = streets[k];
+    std::vector<Vec2> control;
+    for (const auto& p : st.points) control.emplace_back(p[0], p[1]);
+    for (std::size_t i = 1; i < control.size(); ++i)
+      if (control[i] == control[i - 1])
+        throw InputError("streets[" + std::to_string(k) + "].points[" + std::to_string(i) + "]",
+                         "repeats the point before it");
+    PlotOptions o;
+    o.streetWidth = st.width;
+    o.setback = st.setback;
+    o.depth = st.depth;
+    o.plotWidth = st.plotWidth;
+    o.bothSides = st.bothSides;
+    Town one = streetTown(control, o);
+    const std::string name = "street " + std::to_string(k + 1);
+    lines.push_back(one.streets.front().points);
+    town.streets.push_back({name, one.streets.front().points});
+    firstPlot.push_back(town.buildings.size());
+    for (Building& b : one.buildings) {
+      b.id = name + "/" + b.id;
+      b.properties["street"] = name;
+      boxes.push_back(b.loops.empty() ? Box2{} : boxOf(b.loops[0]));
+      town.buildings.push_back(std::move(b));
+    }
+  }
+  firstPlot.push_back(town.buildings.size());
+  // Conflicts: against every footprint and every plot of an earlier street, and every other
+  // street's centreline.
+  for (std::size_t k = 0; k < streets.size(); ++k)
+    for (std::size_t i = firstPlot[k]; i < firstPlot[k + 1]; ++i) {
+      Building& plot = town.buildings[i];
+      if (!plot.problem.empty() || plot.loops.empty()) continue;
+      const auto& ring = plot.loops[0];
+      for (std::size_t j = 0; j < firstPlot[k] && plot.problem.empty(); ++j) {
+        const Building& other = town.buildings[j];
+        if (other.loops.empty() || !boxes[i].meets(boxes[j]) || !overlaps(ring, other.loops[0])) continue;
+        plot.problem = (j < footprints ? "the plot overlaps footprint " : "the plot overlaps plot ") + other.id;
+      }
+      for (std::size_t m = 0; m < lines.size() && plot.problem.empty(); ++m) {
+        if (m == k) continue;
+        Box2 road = boxOf(lines[m]);
+        road.lo -= Vec2(streets[m].width / 2), road.hi += Vec2(streets[m].width / 2);
+        if (boxes[i].meets(road) && onRoad(ring, lines[m], streets[m].width / 2))
+          plot.problem = "the plot lies across street " + std::to_string(m + 1);
+      }
+    }
 }
 
 }  // namespace corbel::city

@@ -4,6 +4,7 @@
 // frontage is cut into plots of nearly equal width by lines along the street's normals, which
 // tiles it exactly and lets every plot follow a reshaped street (see docs/city.md).
 #include "city/import.h"
+#include "core/town_spec.h"
 
 #include <vector>
 
@@ -24,5 +25,13 @@ struct PlotOptions {
 // The street as a Town: the centreline as its street and one building per plot (ids
 // "left/0", "left/1", …, "right/0", …; properties: side, index).
 Town streetTown(const std::vector<Vec2>& control, const PlotOptions& options = {});
+
+// The streets of a town object (core/town_spec.h) added to a town read from footprints: each
+// street's centreline joins town.streets (id "street K", K from 1), and its plots join the
+// buildings (ids "street K/left/I", "street K/right/I"). A plot that overlaps a footprint, a plot
+// of an earlier street, or another street's centreline is kept with a problem naming what it
+// overlaps, so the town reports it instead of building one house into another. Bad control
+// points throw InputError at "streets[k].points[i]".
+void addStreets(Town& town, const std::vector<TownStreet>& streets);
 
 }  // namespace corbel::city

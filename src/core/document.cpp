@@ -137,6 +137,29 @@ std::optional<std::string> checkTownSpec(const TownSpec& s) {
       if (profile.empty()) return at + ".profiles." + side + ": the profile name must not be empty";
     }
   }
+  if (s.streets.size() > limits::kMaxTownStreets) return "streets: too many (at most 256)";
+  for (std::size_t k = 0; k < s.streets.size(); ++k) {
+    const TownStreet& st = s.streets[k];
+    const std::string at = "streets[" + std::to_string(k) + "]";
+    if (st.points.size() < 2 || st.points.size() > limits::kMaxStreetPoints)
+      return at + ".points: expected 2 to 64 control points, found " + std::to_string(st.points.size());
+    for (std::size_t i = 0; i < st.points.size(); ++i) {
+      for (double v : st.points[i])
+        if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
+          return at + ".points[" + std::to_string(i) + "]: coordinates must be finite and within 1e+07 m";
+      if (i > 0 && st.points[i] == st.points[i - 1])
+        return at + ".points[" + std::to_string(i) + "]: repeats the point before it";
+    }
+    const auto range = [&](const char* name, double v, double lo, double hi) -> std::optional<std::string> {
+      if (!(v >= lo && v <= hi))
+        return at + "." + name + ": expected " + std::to_string(int(lo)) + " to " + std::to_string(int(hi)) + " m";
+      return std::nullopt;
+    };
+    if (auto e = range("width", st.width, 1, 100)) return e;
+    if (auto e = range("setback", st.setback, 0, 50)) return e;
+    if (auto e = range("depth", st.depth, 3, 200)) return e;
+    if (auto e = range("plot_width", st.plotWidth, 3, 200)) return e;
+  }
   return std::nullopt;
 }
 

@@ -317,13 +317,29 @@ ojson townToJson(const TownSpec& t, const std::string& folder) {
     }
     j["overrides"] = std::move(overrides);
   }
+  if (!t.streets.empty()) {
+    ojson streets = ojson::array();
+    for (const TownStreet& st : t.streets) {
+      ojson sj;
+      ojson points = ojson::array();
+      for (const auto& p : st.points) points.push_back({p[0], p[1]});
+      sj["points"] = std::move(points);
+      sj["width"] = st.width;
+      sj["setback"] = st.setback;
+      sj["depth"] = st.depth;
+      sj["plot_width"] = st.plotWidth;
+      sj["both_sides"] = st.bothSides;
+      streets.push_back(std::move(sj));
+    }
+    j["streets"] = std::move(streets);
+  }
   return j;
 }
 
 // The footprints' and the style's own keys are checked by the city kernel when it builds the object.
 TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"footprints", "style", "seed", "detail", "overrides"}))
+  for (auto& k : r.unknownKeys({"footprints", "style", "seed", "detail", "overrides", "streets"}))
     warnings.push_back(k + ": unknown key ignored");
   TownSpec t;
   const auto pathOrText = [&](const JsonReader& v, std::string& path, std::string& text) {
@@ -369,6 +385,37 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
       }
       if (over.empty()) o.fail("overrides nothing: expected \"type\" or \"profiles\"");
       t.overrides[id] = std::move(over);
+    }
+  }
+  if (auto sv = r.find("streets")) {
+    if (!sv->raw().is_array()) sv->fail("expected an array of streets");
+    if (sv->raw().size() > limits::kMaxTownStreets) sv->fail("too many streets (at most 256)");
+    for (std::size_t k = 0; k < sv->raw().size(); ++k) {
+      const JsonReader st(sv->raw()[k], sv->path() + "[" + std::to_string(k) + "]");
+      st.expectObject();
+      for (auto& key : st.unknownKeys({"points", "width", "setback", "depth", "plot_width", "both_sides"}))
+        warnings.push_back(key + ": unknown key ignored");
+      TownStreet street;
+      const JsonReader pts = st.at("points");
+      if (!pts.raw().is_array()) pts.fail("expected an array of [x, y] points");
+      if (pts.raw().size() < 2 || pts.raw().size() > limits::kMaxStreetPoints)
+        pts.fail("expected 2 to 64 control points, found " + std::to_string(pts.raw().size()));
+      for (std::size_t i = 0; i < pts.raw().size(); ++i) {
+        const JsonReader p(pts.raw()[i], pts.path() + "[" + std::to_string(i) + "]");
+        if (!p.raw().is_array() || p.raw().size() != 2) p.fail("expected [x, y]");
+        std::array<double, 2> xy{};
+        for (int c = 0; c < 2; ++c)
+          xy[std::size_t(c)] = JsonReader(p.raw()[std::size_t(c)], p.path() + "[" + std::to_string(c) + "]")
+                                   .number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
+        if (!street.points.empty() && street.points.back() == xy) p.fail("repeats the point before it");
+        street.points.push_back(xy);
+      }
+      if (auto v = st.find("width")) street.width = v->number(1, 100);
+      if (auto v = st.find("setback")) street.setback = v->number(0, 50);
+      if (auto v = st.find("depth")) street.depth = v->number(3, 200);
+      if (auto v = st.find("plot_width")) street.plotWidth = v->number(3, 200);
+      if (auto v = st.find("both_sides")) street.bothSides = v->boolean();
+      t.streets.push_back(std::move(street));
     }
   }
   return t;

@@ -4,10 +4,12 @@
 // per-building overrides of the type or of the profiles, keyed by footprint id. The city
 // kernel owns the meaning of the footprints and the style: it reads and checks them when it
 // builds the object and names a bad override by its path ("town.overrides[\"w12\"].type").
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace corbel {
 
@@ -20,6 +22,19 @@ struct TownOverride {
   bool operator==(const TownOverride&) const = default;
 };
 
+// A street of the town (Fig. 26): a spline through a few control points in the town's metric
+// frame, and the plots cut along it on one or both sides, which the style builds as town
+// houses facing it. Reshaping it re-cuts its plots; footprints within reach orient to it too.
+struct TownStreet {
+  std::vector<std::array<double, 2>> points;  // control points, metres
+  double width = 10;      // kerb to kerb
+  double setback = 2;     // kerb to the plots' fronts
+  double depth = 12;      // plot depth, front to back
+  double plotWidth = 7;   // wanted frontage of one plot (the frontage is cut evenly)
+  bool bothSides = true;
+  bool operator==(const TownStreet&) const = default;
+};
+
 struct TownSpec {
   // The footprints: a GeoJSON file (in memory as chosen or resolved, in a project file relative
   // to that file where possible), or, when that is empty, the GeoJSON text held in the project.
@@ -30,13 +45,16 @@ struct TownSpec {
   std::string styleJson;
   std::uint64_t seed = 1;
   std::string detail = "full";  // "massing", "steps" or "full" (city::Detail)
-  std::map<std::string, TownOverride> overrides;  // by footprint id
+  std::map<std::string, TownOverride> overrides;  // by footprint id (street plots: "street K/left/I")
+  std::vector<TownStreet> streets;
   bool operator==(const TownSpec&) const = default;
 };
 
 namespace limits {
 inline constexpr std::size_t kMaxTownOverrides = 100000;
 inline constexpr std::size_t kMaxEmbeddedBytes = 32u << 20;  // embedded footprints or style text
+inline constexpr std::size_t kMaxTownStreets = 256;
+inline constexpr std::size_t kMaxStreetPoints = 64;
 }  // namespace limits
 
 // "detail: ...", "overrides[\"id\"].profiles: ..." and the like for a bad spec; nullopt when fine.

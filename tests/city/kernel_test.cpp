@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <array>
 #include <set>
 #include <thread>
 
@@ -155,6 +158,164 @@ TEST(TownKernel, CancelKeepsTheBuildingsAlreadyExtruded) {
   cache.build(town, nullptr);
   EXPECT_EQ(cache.extrusions(), 32u);
   EXPECT_EQ(builtCount(cache, town.id), 32u);
+}
+
+}  // namespace
+}  // namespace corbel::city
+
+namespace corbel::city {
+namespace {
+
+// A town of hand-placed square footprints in metres ("frame": units m) in the old-town style.
+DocObject squareTown(const std::vector<std::array<double, 4>>& squares) {
+  nlohmann::json fc = {{"type", "FeatureCollection"}, {"frame", {{"units", "m"}}}, {"features", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < squares.size(); ++i) {
+    const auto [x0, y0, x1, y1] = squares[i];
+    fc["features"].push_back({{"type", "Feature"},
+                              {"id", "f" + std::to_string(i)},
+                              {"properties", nlohmann::json::object()},
+                              {"geometry",
+                               {{"type", "Polygon"},
+                                {"coordinates", {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}}}}}}});
+  }
+  DocObject o;
+  o.id = 7;
+  o.name = "Town";
+  TownSpec t;
+  t.footprintsJson = fc.dump();
+  t.style = std::string(CORBEL_SOURCE_DIR) + "/assets/styles/oldtown.json";
+  t.detail = "massing";
+  o.spec = t;
+  return o;
+}
+
+const BuiltBuilding* find(const std::vector<BuiltBuilding>& list, const std::string& id) {
+  for (const BuiltBuilding& b : list)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
+// A straight street from (0, 0) to (70, 0), 10 m wide, 2 m setback, 12 m deep, 7 m plots: by hand
+// ten plots a side, the left ones x in [7k, 7k + 7], y in [7, 19]. A footprint at x 20..24,
+// y 10..14 overlaps left/2 (x 14..21) and left/3 (21..28) and nothing else; one behind the plots
+// (y 19.5..25) and one across the street's far side beyond its plots overlap nothing.
+TEST(TownStreets, PlotsThatOverlapAFootprintAreReportedByName) {
+  DocObject town = squareTown({{20, 10, 24, 14}, {30, 19.5, 36, 25}, {40, -40, 46, -34}});
+  TownStreet st;
+  st.points = {{0, 0}, {70, 0}};
+  std::get<TownSpec>(town.spec).streets = {st};
+  TownCache cache;
+  cache.build(town, nullptr);
+  const auto list = cache.buildings(town.id);
+  ASSERT_EQ(list.size(), 3u + 20u);
+  for (const std::string side : {"left", "right"})
+    for (int k = 0; k < 10; ++k) {
+      const std::string id = "street 1/" + side + "/" + std::to_string(k);
+      const BuiltBuilding* b = find(list, id);
+      ASSERT_NE(b, nullptr) << id;
+      if (side == "left" && (k == 2 || k == 3)) {
+        EXPECT_EQ(b->error, "the plot overlaps footprint f0") << id;
+      } else {
+        EXPECT_EQ(b->error, "") << id;
+      }
+    }
+  for (const std::string id : {"f0", "f1", "f2"}) EXPECT_EQ(find(list, id)->error, "") << id;
+  // A built plot stands where the hand computation puts it: left/5's base spans x 35..42, y 7..19.
+  const MeshData m = cache.mesh(town.id, "street 1/left/5");
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const Vec3& q : m.points)
+    if (std::abs(q[2]) < 1e-9) x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]), y0 = std::min(y0, q[1]), y1 = std::max(y1, q[1]);
+  EXPECT_NEAR(x0, 35, 1e-9);
+  EXPECT_NEAR(x1, 42, 1e-9);
+  EXPECT_NEAR(y0, 7, 1e-9);
+  EXPECT_NEAR(y1, 19, 1e-9);
+}
+
+// Reshaping a street far (more than the 200 m street reach) from every footprint re-extrudes its
+// plots only; the example's 32 footprints are not extruded again and keep their meshes.
+TEST(TownStreets, ReshapingAStreetReExtrudesItsPlotsAndNothingElse) {
+  DocObject town = exampleTown();
+  TownCache cache;
+  const BuildResult plain = cache.build(town, nullptr);
+  ASSERT_EQ(cache.extrusions(), 32u);
+  TownStreet st;
+  st.points = {{400, 0}, {435, 10}, {470, 0}};
+  auto& spec = std::get<TownSpec>(town.spec);
+  spec.streets = {st};
+  cache.build(town, nullptr);
+  const auto list = cache.buildings(town.id);
+  std::size_t plots = 0;
+  for (const BuiltBuilding& b : list) plots += b.id.rfind("street 1/", 0) == 0 && b.error.empty();
+  ASSERT_GE(plots, 16u);
+  EXPECT_EQ(cache.extrusions(), 32u + plots);
+  spec.streets[0].points[1] = {435, 20};  // the middle point moves
+  const BuildResult reshaped = cache.build(town, nullptr);
+  std::size_t plots2 = 0;
+  for (const BuiltBuilding& b : cache.buildings(town.id)) plots2 += b.id.rfind("street 1/", 0) == 0 && b.error.empty();
+  EXPECT_EQ(cache.extrusions(), 32u + plots + plots2);
+  // The footprints' faces come first and are unchanged.
+  ASSERT_GE(reshaped.mesh.faces.size(), plain.mesh.faces.size());
+  for (std::size_t f = 0; f < plain.mesh.faces.size(); ++f) ASSERT_EQ(reshaped.mesh.faces[f], plain.mesh.faces[f]);
+  // Without the street the town is the plain one again, without extruding.
+  spec.streets.clear();
+  const BuildResult back = cache.build(town, nullptr);
+  EXPECT_EQ(cache.extrusions(), 32u + plots + plots2);
+  EXPECT_EQ(back.mesh.points, plain.mesh.points);
+}
+
+// Two streets crossing at right angles, A along y = 0 (x 0..70) and B along x = 35 (y −35..35),
+// both 10 m wide with plots 7..19 m from their centrelines. By hand: B's plots 4 and 5 on each
+// side (y −7..0 and 0..7) touch A's centreline and lie on A's roadway; B's plots 2, 3, 6 and 7
+// (y −21..−7, 7..21) overlap A's plots, which come first; A's plots 4 and 5 (x 28..42) touch B's
+// centreline and lie on B's roadway. Everything else builds.
+TEST(TownStreets, CrossingStreetsDoNotBuildIntoEachOther) {
+  DocObject town = squareTown({});
+  TownStreet a, b;
+  a.points = {{0, 0}, {70, 0}};
+  b.points = {{35, -35}, {35, 35}};
+  std::get<TownSpec>(town.spec).streets = {a, b};
+  TownCache cache;
+  cache.build(town, nullptr);
+  const auto list = cache.buildings(town.id);
+  ASSERT_EQ(list.size(), 40u);
+  for (const std::string side : {"left", "right"})
+    for (int k = 0; k < 10; ++k) {
+      const BuiltBuilding* pa = find(list, "street 1/" + side + "/" + std::to_string(k));
+      const BuiltBuilding* pb = find(list, "street 2/" + side + "/" + std::to_string(k));
+      ASSERT_TRUE(pa && pb);
+      EXPECT_EQ(pa->error, k == 4 || k == 5 ? "the plot lies across street 2" : "") << side << k;
+      if (k == 4 || k == 5) {
+        EXPECT_EQ(pb->error, "the plot lies across street 1") << side << k;
+      } else if (k == 2 || k == 3 || k == 6 || k == 7) {
+        EXPECT_EQ(pb->error.rfind("the plot overlaps plot street 1/", 0), 0u) << side << k << ": " << pb->error;
+      } else {
+        EXPECT_EQ(pb->error, "") << side << k;
+      }
+    }
+}
+
+TEST(TownStreets, BadStreetsAreNamedByTheirPath) {
+  DocObject town = squareTown({});
+  TownStreet st;
+  st.points = {{0, 0}};
+  std::get<TownSpec>(town.spec).streets = {st};
+  TownCache cache;
+  try {
+    cache.build(town, nullptr);
+    FAIL() << "a street of one point should be refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where, "town.streets[0].points");
+  }
+  std::get<TownSpec>(town.spec).streets[0].points = {{0, 0}, {0, 0}};
+  EXPECT_THROW(cache.build(town, nullptr), InputError);
+  std::get<TownSpec>(town.spec).streets[0].points = {{0, 0}, {10, 0}};
+  std::get<TownSpec>(town.spec).streets[0].depth = 1;
+  try {
+    cache.build(town, nullptr);
+    FAIL() << "a 1 m deep plot should be refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where, "town.streets[0].depth");
+  }
 }
 
 }  // namespace

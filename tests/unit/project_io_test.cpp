@@ -890,6 +890,15 @@ TEST(ProjectIo, TownSpecsRoundTripWithPathsRelativeToTheProject) {
   t.detail = "steps";
   t.overrides["w12"].type = "garage";
   t.overrides["w13"].profiles = {{"street", "gable"}, {"back", "hip"}};
+  corbel::TownStreet st;
+  st.points = {{0.5, -3}, {40.25, 12}, {80, 0}};
+  st.width = 8;
+  st.setback = 0;
+  st.depth = 15.5;
+  st.plotWidth = 6;
+  st.bothSides = false;
+  t.streets = {st, corbel::TownStreet{{{{1, 2}, {3, 4}}}}};
+  t.overrides["street 1/left/0"].type = "garage";
   corbel::Document d;
   d.add("town", t);
   const std::string text = corbel::serializeProject(d, "/data/p");
@@ -941,6 +950,21 @@ TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
                R"(objects[0].town.overrides["w1"].profiles.roof)", R"(expected "street", "side" or "back", found "roof")");
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {"profiles": {"side": ""}}})"),
                R"(objects[0].town.overrides["w1"].profiles.side)", "the profile name must not be empty");
+  const std::string fs = R"("footprints": "f.geojson", "style": "s.json", )";
+  EXPECT_FAULT(withTown(fs + R"("streets": {})"), "objects[0].town.streets", "expected an array of streets");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"width": 8}])"), "objects[0].town.streets[0].points", "missing");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0]]}])"), "objects[0].town.streets[0].points",
+               "expected 2 to 64 control points, found 1");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0], [1]]}])"), "objects[0].town.streets[0].points[1]",
+               "expected [x, y]");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0], [1, "a"]]}])"),
+               "objects[0].town.streets[0].points[1][1]", "expected a number, found a string");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0], [0, 0]]}])"), "objects[0].town.streets[0].points[1]",
+               "repeats the point before it");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0], [9, 0]], "depth": 1}])"),
+               "objects[0].town.streets[0].depth", "1 is outside [3, 200]");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0], [9, 0]], "both_sides": 1}])"),
+               "objects[0].town.streets[0].both_sides", "expected true or false, found a number");
   const auto w = corbel::parseProject(withTown(R"("footprints": "f.geojson", "style": "s.json", "colour": 1)"));
   ASSERT_EQ(w.warnings.size(), 1u);
   EXPECT_EQ(w.warnings[0], "objects[0].town.colour: unknown key ignored");
