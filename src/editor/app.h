@@ -155,6 +155,11 @@ class App {
   Scene simScene_;
   std::uint64_t simSceneOf_ = 0, simRevisionOf_ = 0;
   ObjectId simObjectOf_ = 0;
+  // The shown scene with the selected growth site sliced (Fig. 8.3), cached by what it shows.
+  Scene sliceScene_;
+  std::uint64_t sliceSceneOf_ = 0;
+  double sliceHeightOf_ = 0;
+  ObjectId sliceObjectOf_ = 0;
   const Scene& shownScene();
   KifsPanel kifsPanel_;
   GrowthPanel growthPanel_;
