@@ -1222,7 +1222,8 @@ int App::run() {
       // The growth panel on top, the form completion panel under it.
       const float paneH = vp->Size.y - top - kStatusBarHeight, growthH = std::min(kGrowthPanelHeight, 0.6f * paneH);
       growthPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth, growthH);
-      growthPanel_.drawViewMaps(host, vp->Pos.x + kLeftPanelWidth + 10, vp->Pos.y + top + 10);
+      growthPanel_.drawViewMaps(host, vp->Pos.x + kLeftPanelWidth + 10, vp->Pos.y + top + 10,
+                                vp->Size.x - kLeftPanelWidth - kPaneWidth - 20);
       completion_.draw(completionHost(), vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top + growthH, kPaneWidth,
                        paneH - growthH);
     } else {

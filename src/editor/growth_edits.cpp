@@ -23,9 +23,12 @@ using nlohmann::json;
 
 const char* listKey(SiteItem item) {
   switch (item) {
-    case SiteItem::Core: return "cores";
-    case SiteItem::Circulation: return "circulation";
-    case SiteItem::Seed: return "seeds";
+    case SiteItem::Core:
+      return "cores";
+    case SiteItem::Circulation:
+      return "circulation";
+    case SiteItem::Seed:
+      return "seeds";
   }
   return "";
 }
@@ -112,7 +115,8 @@ std::string checkSite(const std::string& siteText) {
 }
 
 SiteEditResult setCore(const GrowthSpec& spec, int index, const growth::Rect& c) {
-  if (!finite({c.u0, c.v0, c.u1, c.v1})) return {std::nullopt, "growth.site." + where(SiteItem::Core, index) + ": is not a finite number"};
+  if (!finite({c.u0, c.v0, c.u1, c.v1}))
+    return {std::nullopt, "growth.site." + where(SiteItem::Core, index) + ": is not a finite number"};
   if (!(c.u1 > c.u0 && c.v1 > c.v0))
     return {std::nullopt, "growth.site." + where(SiteItem::Core, index) + ".size: must be positive"};
   return editList(spec, SiteItem::Core, index, true, [&](json& list, int i) {

@@ -62,22 +62,38 @@ std::array<std::uint8_t, 3> idColour(std::uint32_t id) {
   const double f = h - k, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
   double r = v, g = t, b = p;
   switch (k % 6) {
-    case 0: r = v, g = t, b = p; break;
-    case 1: r = q, g = v, b = p; break;
-    case 2: r = p, g = v, b = t; break;
-    case 3: r = p, g = q, b = v; break;
-    case 4: r = t, g = p, b = v; break;
-    default: r = v, g = p, b = q; break;
+    case 0:
+      r = v, g = t, b = p;
+      break;
+    case 1:
+      r = q, g = v, b = p;
+      break;
+    case 2:
+      r = p, g = v, b = t;
+      break;
+    case 3:
+      r = p, g = q, b = v;
+      break;
+    case 4:
+      r = t, g = p, b = v;
+      break;
+    default:
+      r = v, g = p, b = q;
+      break;
   }
   return {std::uint8_t(std::lround(r * 255)), std::uint8_t(std::lround(g * 255)), std::uint8_t(std::lround(b * 255))};
 }
 
 const char* viewDirectionName(growth::ViewDirection d) {
   switch (d) {
-    case growth::ViewDirection::PosX: return "+x";
-    case growth::ViewDirection::NegX: return "-x";
-    case growth::ViewDirection::PosY: return "+y";
-    case growth::ViewDirection::NegY: return "-y";
+    case growth::ViewDirection::PosX:
+      return "+x";
+    case growth::ViewDirection::NegX:
+      return "-x";
+    case growth::ViewDirection::PosY:
+      return "+y";
+    case growth::ViewDirection::NegY:
+      return "-y";
   }
   return "";
 }

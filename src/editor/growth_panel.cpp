@@ -25,18 +25,24 @@ const GrowthSpec* specOf(const GrowthHost& host) {
 
 const char* itemName(SiteItem k) {
   switch (k) {
-    case SiteItem::Core: return "core";
-    case SiteItem::Circulation: return "circulation";
-    case SiteItem::Seed: return "seed";
+    case SiteItem::Core:
+      return "core";
+    case SiteItem::Circulation:
+      return "circulation";
+    case SiteItem::Seed:
+      return "seed";
   }
   return "";
 }
 
 int itemCount(const HandPlaced& h, SiteItem k) {
   switch (k) {
-    case SiteItem::Core: return int(h.cores.size());
-    case SiteItem::Circulation: return int(h.circulation.size());
-    case SiteItem::Seed: return int(h.seeds.size());
+    case SiteItem::Core:
+      return int(h.cores.size());
+    case SiteItem::Circulation:
+      return int(h.circulation.size());
+    case SiteItem::Seed:
+      return int(h.seeds.size());
   }
   return 0;
 }
@@ -169,9 +175,9 @@ void GrowthPanel::add(const GrowthHost& host, SiteItem item) {
     like.targetArea = 60;
     const auto spot = freeSeedSpot(*site_, like);
     if (!spot)
-      return host.log("Add a seed to " + name + ": no free, supported 3 x 3 m place on storey " +
-                          std::to_string(planStorey_),
-                      true);
+      return host.log(
+          "Add a seed to " + name + ": no free, supported 3 x 3 m place on storey " + std::to_string(planStorey_),
+          true);
     r = setSeed(*spec, index, *spot);
   }
   if (commitSite(host, r, "Add a " + std::string(itemName(item)) + " to " + name, "", true)) {
@@ -328,7 +334,8 @@ void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float
     }
   for (std::size_t i = 0; i < hand_.circulation.size(); ++i) {
     const growth::Box& c = hand_.circulation[i];
-    if (c.lo[2] < z1 - 1e-9 && c.hi[2] > z0 + 1e-9) rect(c.lo[0], c.lo[1], c.hi[0], c.hi[1], IM_COL32(80, 90, 110, 255), 0);
+    if (c.lo[2] < z1 - 1e-9 && c.hi[2] > z0 + 1e-9)
+      rect(c.lo[0], c.lo[1], c.hi[0], c.hi[1], IM_COL32(80, 90, 110, 255), 0);
   }
   for (const growth::Rect& c : hand_.cores) rect(c.u0, c.v0, c.u1, c.v1, IM_COL32(120, 120, 125, 255), 0);
   for (std::size_t i = 0; i < hand_.seeds.size(); ++i)
@@ -356,7 +363,9 @@ void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float
   const ImVec2 mp = ImGui::GetIO().MousePos;
   double mx, my;
   m.invert(mp.x, mp.y, mx, my);
-  auto inside = [&](double x0, double y0, double x1, double y1) { return mx >= x0 && mx <= x1 && my >= y0 && my <= y1; };
+  auto inside = [&](double x0, double y0, double x1, double y1) {
+    return mx >= x0 && mx <= x1 && my >= y0 && my <= y1;
+  };
   if (ImGui::IsItemActivated()) {
     dragging_ = false;
     int pick = -1;
@@ -422,13 +431,16 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
   ImGui::SliderInt("Plan storey", &planStorey_, 0, site.storeys - 1);
   ImGui::SameLine();
   ImGui::TextDisabled("drag to move");
-  drawPlan(host, spec, ImGui::GetContentRegionAvail().x, 150);
+  drawPlan(host, spec, ImGui::GetContentRegionAvail().x, 120);
 
   int kind = static_cast<int>(kind_);
   for (int k = 0; k < 3; ++k) {
     if (k) ImGui::SameLine();
     char label[40];
-    std::snprintf(label, sizeof label, "%s (%d)", k == 0 ? "Cores" : k == 1 ? "Circulation" : "Seeds",
+    std::snprintf(label, sizeof label, "%s (%d)",
+                  k == 0   ? "Cores"
+                  : k == 1 ? "Circulation"
+                           : "Seeds",
                   itemCount(hand_, SiteItem(k)));
     if (ImGui::RadioButton(label, &kind, k)) {
       kind_ = SiteItem(k);
@@ -439,31 +451,6 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
     ImGui::TextDisabled("%zu more seeds generated at exits (generate_seeds; not editable here)",
                         site.seeds.size() - hand_.seeds.size());
   const int count = itemCount(hand_, kind_);
-  if (ImGui::BeginListBox("##items", ImVec2(-1, 4.5f * ImGui::GetTextLineHeightWithSpacing()))) {
-    for (int i = 0; i < count; ++i) {
-      char text[120];
-      if (kind_ == SiteItem::Core) {
-        const growth::Rect& c = hand_.cores[i];
-        std::snprintf(text, sizeof text, "core %d: at (%.1f, %.1f), %.1f x %.1f m", i + 1, c.u0, c.v0, c.u1 - c.u0,
-                      c.v1 - c.v0);
-      } else if (kind_ == SiteItem::Circulation) {
-        const growth::Box& c = hand_.circulation[i];
-        std::snprintf(text, sizeof text, "circulation %d: at (%.1f, %.1f, %.1f), %.1f x %.1f x %.1f m", i + 1, c.lo[0],
-                      c.lo[1], c.lo[2], c.size(0), c.size(1), c.size(2));
-      } else {
-        const growth::Seed& s = hand_.seeds[i];
-        std::snprintf(text, sizeof text, "seed %d: storey %d at (%.1f, %.1f), %s %.0f", i + 1, s.storey, s.at[0],
-                      s.at[1], s.targetArea > 0 ? "area" : "volume", s.targetArea > 0 ? s.targetArea : s.targetVolume);
-      }
-      ImGui::PushID(i);
-      if (ImGui::Selectable(text, selected_ == i)) {
-        selected_ = i;
-        if (kind_ == SiteItem::Seed) planStorey_ = hand_.seeds[i].storey;
-      }
-      ImGui::PopID();
-    }
-    ImGui::EndListBox();
-  }
   if (ImGui::Button("Add")) add(host, kind_);
   ImGui::SameLine();
   ImGui::BeginDisabled(selected_ < 0);
@@ -490,7 +477,8 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
       changed |= ImGui::DragScalarN("at (m)", ImGuiDataType_Double, at, 3, 0.1f, &lo, &hi, "%.2f");
       changed |= ImGui::DragScalarN("size (m)", ImGuiDataType_Double, size, 3, 0.1f, &smin, &hi, "%.2f");
       if (changed)
-        r = setCirculation(spec, selected_, {{at[0], at[1], at[2]}, {at[0] + size[0], at[1] + size[1], at[2] + size[2]}});
+        r = setCirculation(spec, selected_,
+                           {{at[0], at[1], at[2]}, {at[0] + size[0], at[1] + size[1], at[2] + size[2]}});
     } else {
       growth::Seed s = hand_.seeds[selected_];
       double at[2] = {s.at[0], s.at[1]}, size[2] = {s.size[0], s.size[1]};
@@ -538,6 +526,31 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
       commitSite(host, r, label, merge, false);
       siteEditOpen_ = true;
     }
+  }
+  if (ImGui::BeginListBox("##items", ImVec2(-1, 4.5f * ImGui::GetTextLineHeightWithSpacing()))) {
+    for (int i = 0; i < count; ++i) {
+      char text[120];
+      if (kind_ == SiteItem::Core) {
+        const growth::Rect& c = hand_.cores[i];
+        std::snprintf(text, sizeof text, "core %d: at (%.1f, %.1f), %.1f x %.1f m", i + 1, c.u0, c.v0, c.u1 - c.u0,
+                      c.v1 - c.v0);
+      } else if (kind_ == SiteItem::Circulation) {
+        const growth::Box& c = hand_.circulation[i];
+        std::snprintf(text, sizeof text, "circulation %d: at (%.1f, %.1f, %.1f), %.1f x %.1f x %.1f m", i + 1, c.lo[0],
+                      c.lo[1], c.lo[2], c.size(0), c.size(1), c.size(2));
+      } else {
+        const growth::Seed& s = hand_.seeds[i];
+        std::snprintf(text, sizeof text, "seed %d: storey %d at (%.1f, %.1f), %s %.0f", i + 1, s.storey, s.at[0],
+                      s.at[1], s.targetArea > 0 ? "area" : "volume", s.targetArea > 0 ? s.targetArea : s.targetVolume);
+      }
+      ImGui::PushID(i);
+      if (ImGui::Selectable(text, selected_ == i)) {
+        selected_ = i;
+        if (kind_ == SiteItem::Seed) planStorey_ = hand_.seeds[i].storey;
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndListBox();
   }
   // A drag (or a run of edits of one field) is one undo step, closed when the field is let go;
   // a refused value is logged then, once.
@@ -643,11 +656,13 @@ void GrowthPanel::uploadViewMaps() {
   texturesOf_ = inspection_.get();
 }
 
-void GrowthPanel::drawViewMaps(const GrowthHost& host, float x, float y) {
+void GrowthPanel::drawViewMaps(const GrowthHost& host, float x, float y, float w) {
   if (!showViewMaps_ || !specOf(host)) return;
   uploadViewMaps();
+  // Two maps a row, as wide as the 3D view allows (at most 320 pixels each).
+  const float iw = std::clamp(std::floor((w - 40) / 2), 120.0f, 320.0f);
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(ImVec2(2 * 330.0f + 24, 0), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(2 * iw + 30, 0), ImGuiCond_Appearing);
   if (!ImGui::Begin("View maps (Sec. 5.2)", &showViewMaps_)) {
     ImGui::End();
     return;
@@ -667,7 +682,7 @@ void GrowthPanel::drawViewMaps(const GrowthHost& host, float x, float y) {
     for (const auto& [id, a] : map.areas())
       if (id != growth::kEmptyId && id != growth::kObstacleId && a > 0) ++seen;
     ImGui::Text("from %s: %d units seen", viewDirectionName(d), seen);
-    const float iw = 320.0f, ih = iw * float(images_[k].height) / float(std::max(images_[k].width, 1));
+    const float ih = iw * float(images_[k].height) / float(std::max(images_[k].width, 1));
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(textures_[k])), ImVec2(iw, ih));
     if (ImGui::IsItemHovered()) {
       const ImVec2 mp = ImGui::GetIO().MousePos, ip = ImGui::GetItemRectMin();

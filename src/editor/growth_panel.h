@@ -42,8 +42,8 @@ class GrowthPanel {
   // Advances a running growth by one step once the Scene has caught up with the last one.
   void update(const GrowthHost& host);
   void draw(const GrowthHost& host, float x, float y, float w, float h);
-  // The view-map inspector, a window of its own over the 3D view at (x, y) when first shown.
-  void drawViewMaps(const GrowthHost& host, float x, float y);
+  // The view-map inspector, a window of its own over the 3D view at (x, y), w wide, when first shown.
+  void drawViewMaps(const GrowthHost& host, float x, float y, float w);
   void reset();
   // The buttons, also the actions growth.step and growth.run.
   void step(const GrowthHost& host);
@@ -79,7 +79,7 @@ class GrowthPanel {
   void uploadViewMaps();
 
   bool running_ = false;
-  std::string summaryOf_, summary_;  // the site text summarised, and the summary
+  std::string summaryOf_, summary_;   // the site text summarised, and the summary
   std::optional<growth::Site> site_;  // of summaryOf_, when it parses
   HandPlaced hand_;                   // the site file's own entries (of summaryOf_)
 
@@ -89,7 +89,7 @@ class GrowthPanel {
   std::string siteError_;
   int planStorey_ = 0;
   bool dragging_ = false;
-  bool siteEditOpen_ = false;  // a site edit's merge is open (a field or the plan is held)
+  bool siteEditOpen_ = false;     // a site edit's merge is open (a field or the plan is held)
   double dragX_ = 0, dragY_ = 0;  // where the drag started, meters
   growth::Rect dragCore_{};
   growth::Box dragBox_{};

@@ -46,11 +46,10 @@ namespace {
 
 GrowthSpec smallSite() {
   GrowthSpec s;
-  s.site =
-      R"({"envelope": {"origin": [0, 0], "size": [20, 10]}, "storeys": 2, "storey_height": 3,)"
-      R"( "cores": [{"name": "lift", "at": [10, 4], "size": [2, 2]}],)"
-      R"( "circulation": [{"at": [13, 4, 0], "size": [2, 2, 3]}],)"
-      R"( "seeds": [{"at": [1, 1], "target_area": 40}]})";
+  s.site = R"({"envelope": {"origin": [0, 0], "size": [20, 10]}, "storeys": 2, "storey_height": 3,)"
+           R"( "cores": [{"name": "lift", "at": [10, 4], "size": [2, 2]}],)"
+           R"( "circulation": [{"at": [13, 4, 0], "size": [2, 2, 3]}],)"
+           R"( "seeds": [{"at": [1, 1], "target_area": 40}]})";
   return s;
 }
 

@@ -30,8 +30,8 @@ TEST(GrowthInspect, TheStatisticsTableOfTwoBoxesInTheOpen) {
   for (auto& [k, v] : statisticsRows(in.stats)) rows[k] = v;
   EXPECT_EQ(rows["site area"], "400 m², 1 storey");
   EXPECT_EQ(rows["units"], "2");
-  EXPECT_EQ(rows["occupants"], "8");                // five in A, three in B
-  EXPECT_EQ(rows["occupancy ratio"], "0.0200");     // 8 / (400 m² × 1)
+  EXPECT_EQ(rows["occupants"], "8");             // five in A, three in B
+  EXPECT_EQ(rows["occupancy ratio"], "0.0200");  // 8 / (400 m² × 1)
   EXPECT_EQ(rows["type A / B / C"], "1 / 1 / 0");
   // A: 9 × 3 m seen along ±x, 10 × 3 m along ±y: 114 m²; B: 8 × 3 m four times: 96 m².
   EXPECT_EQ(rows["average view"], "105.0 m²");
