@@ -424,6 +424,15 @@ void App::registerActions() {
        {}, [this] { return settings_.edges; }});
   add({"view.grid", "View", "Ground Grid", "Show the ground grid at z = 0.", {}, false,
        [this] { settings_.grid = !settings_.grid; }, {}, [this] { return settings_.grid; }});
+  // Shadows from a movable sun (Ng, Fig. 8.5); the growth panel's Grow tab has the sun's sliders.
+  add({"view.shadows", "View", "Shadows", "Cast shadows from the sun onto the model and the ground.", {}, false,
+       [this] { settings_.shadows = !settings_.shadows; }, {}, [this] { return settings_.shadows; }, true});
+  add({"view.sun_later", "View", "Sun Later", "Move the sun 15° on (its azimuth, towards +Y).", {}, false,
+       [this] { sunAzimuth_ = std::remainder(sunAzimuth_ + 15.0, 360.0); }});
+  add({"view.sun_earlier", "View", "Sun Earlier", "Move the sun 15° back.", {}, false,
+       [this] { sunAzimuth_ = std::remainder(sunAzimuth_ - 15.0, 360.0); }});
+  add({"view.sun_lower", "View", "Sun Lower", "Lower the sun by 10° (at least 5° above the ground).", {}, false,
+       [this] { sunElevation_ = std::max(5.0, sunElevation_ - 10.0); }});
 
   add({"tools.validate", "Tools", "Validate All Objects",
        "Check every object's shell (closed, 2-manifold, Euler characteristic), in the background.", {}, false, [this] {
@@ -1064,6 +1073,9 @@ GrowthHost App::growthHost() {
   host.object = selected_.value_or(0);
   host.current = live_.current();
   host.wait = scripted();
+  host.shadows = &settings_.shadows;
+  host.sunAzimuth = &sunAzimuth_;
+  host.sunElevation = &sunElevation_;
   if (auto it = sync_.status().find(host.object); it != sync_.status().end()) {
     host.error = it->second.error;
     host.warnings = it->second.warnings;
@@ -1285,6 +1297,9 @@ int App::run() {
       const DocObject* o = doc.find(id);
       return o && o->visible;
     };
+    // The sun of the shadows; without them the studio sun, so the model looks as it always did.
+    settings_.sun = settings_.shadows ? std::optional<Vec3>(render::sunDirection(sunAzimuth_, sunElevation_))
+                                      : std::nullopt;
     // A selected town is not tinted as a whole: its picked building is outlined instead.
     settings_.highlight = selectedTown() ? std::nullopt : selected_;
     // Tension colours and force arrows of the selected masonry object, when it is shown.

@@ -110,6 +110,8 @@ class App {
   std::unique_ptr<render::Renderer> renderer_;
   render::OrbitCamera camera_;
   render::RenderSettings settings_;
+  // The sun of the shadows (degrees; azimuth from +X towards +Y): the studio sun's direction.
+  double sunAzimuth_ = -37.9, sunElevation_ = 55.2;
   ActionRegistry actions_;
   FileDialog fileDialog_;
   Recovery recovery_;

@@ -300,6 +300,18 @@ void GrowthPanel::drawGrow(const GrowthHost& host, const GrowthSpec& spec) {
       ImGui::TextDisabled("storeys below the cut: %.1f of %d (plans seen from above)", storeys, site_->storeys);
     }
   }
+  if (host.shadows && host.sunAzimuth && host.sunElevation) {
+    // Shadows from a movable sun (Fig. 8.5): the 3D view's setting, for every object.
+    ImGui::Separator();
+    ImGui::Checkbox("Shadows", host.shadows);
+    ImGui::BeginDisabled(!*host.shadows);
+    float az = float(*host.sunAzimuth), el = float(*host.sunElevation);
+    ImGui::SetNextItemWidth(-120);
+    if (ImGui::SliderFloat("sun azimuth", &az, -180.0f, 180.0f, "%.0f°")) *host.sunAzimuth = az;
+    ImGui::SetNextItemWidth(-120);
+    if (ImGui::SliderFloat("sun elevation", &el, 5.0f, 90.0f, "%.0f°")) *host.sunElevation = el;
+    ImGui::EndDisabled();
+  }
 }
 
 void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float w, float h) {

@@ -2,7 +2,8 @@
 // The growth panel of a selected growth site (Ng, Ch. 4), right of the 3D view, in three tabs:
 //  - Grow: the site's summary, the run's seed, Step, Run, Pause, Grow to the end and Reset, and
 //    the slice (Fig. 8.3): everything at or above a height is hidden in the 3D view, a view
-//    setting that never changes the Document;
+//    setting that never changes the Document; and the 3D view's shadows with the sun's azimuth
+//    and elevation (Fig. 8.5), view settings too;
 //  - Site: the hand-placed cores, circulation and seeds, listed, typed or dragged in a plan view,
 //    added and deleted; a seed's target, behaviour and locked faces (editor/growth_edits.h);
 //  - Statistics: Table 8.1 for the model as grown (editor/growth_inspect.h), and the view-map
@@ -35,6 +36,10 @@ struct GrowthHost {
   std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
   std::function<void()> endDrag;
   std::function<void(const std::string&, bool)> log;
+  // The 3D view's shadows and sun (Fig. 8.5), view settings the Grow tab changes; may be null.
+  bool* shadows = nullptr;
+  double* sunAzimuth = nullptr;
+  double* sunElevation = nullptr;
 };
 
 class GrowthPanel {

@@ -160,6 +160,12 @@ summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.add_core,edit.undo --autosave-seconds 0 --quit-after-frames 8 "$alpha"
 test -f "$work/state/recovery.corbel" && { echo "undoing Add Core should leave the example untouched"; exit 1; }
+echo "== shadows from a lowered sun (a view setting: nothing to recover)"
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions view.shadows,view.sun_lower,view.sun_lower --autosave-seconds 0 \
+  --screenshot "$work/growth-shadows.png" --quit-after-frames 8 "$alpha"
+test -f "$work/state/recovery.corbel" && { echo "shadows should not change the document"; exit 1; }
+"$check" "$work/growth-shadows.png" "$work/site.png" 0.05
 echo "== a town: pick a building, override its type, undo"
 town=$(dirname "$example")/town-oldtown.corbel
 rm -rf "$work/state"
