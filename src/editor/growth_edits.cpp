@@ -75,6 +75,18 @@ SiteEditResult editList(const GrowthSpec& spec, SiteItem item, int index, bool a
   return r;
 }
 
+int itemCount(const HandPlaced& h, SiteItem k) {
+  switch (k) {
+    case SiteItem::Core:
+      return int(h.cores.size());
+    case SiteItem::Circulation:
+      return int(h.circulation.size());
+    case SiteItem::Seed:
+      return int(h.seeds.size());
+  }
+  return 0;
+}
+
 bool finite(std::initializer_list<double> values) {
   for (double v : values)
     if (!std::isfinite(v)) return false;
@@ -173,6 +185,55 @@ SiteEditResult setSeed(const GrowthSpec& spec, int index, const growth::Seed& s)
 
 SiteEditResult removeItem(const GrowthSpec& spec, SiteItem item, int index) {
   return editList(spec, item, index, false, [](json& list, int i) { list.erase(list.begin() + i); });
+}
+
+std::optional<SiteEditResult> dragItem(const GrowthSpec& spec, const HandPlaced& from, const HandPlaced& now,
+                                       SiteItem item, int index, double dx, double dy) {
+  dx = std::round(dx * 2) / 2;
+  dy = std::round(dy * 2) / 2;
+  if (index < 0 || index >= itemCount(from, item) || index >= itemCount(now, item)) return std::nullopt;
+  switch (item) {
+    case SiteItem::Core: {
+      const growth::Rect& c = from.cores[index];
+      const growth::Rect to{c.u0 + dx, c.v0 + dy, c.u1 + dx, c.v1 + dy};
+      if (to == now.cores[index]) return std::nullopt;
+      return setCore(spec, index, to);
+    }
+    case SiteItem::Circulation: {
+      growth::Box to = from.circulation[index];
+      to.lo[0] += dx, to.hi[0] += dx, to.lo[1] += dy, to.hi[1] += dy;
+      if (to == now.circulation[index]) return std::nullopt;
+      return setCirculation(spec, index, to);
+    }
+    case SiteItem::Seed: {
+      growth::Seed to = from.seeds[index];
+      to.at = Vec2(to.at[0] + dx, to.at[1] + dy);
+      if (to.at == now.seeds[index].at) return std::nullopt;
+      return setSeed(spec, index, to);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::pair<SiteItem, int>> pickItem(const HandPlaced& h, const growth::Site& site, int storey, double x,
+                                                 double y) {
+  auto inside = [&](double x0, double y0, double x1, double y1) { return x >= x0 && x <= x1 && y >= y0 && y <= y1; };
+  for (int i = 0; i < int(h.seeds.size()); ++i) {
+    const growth::Seed& s = h.seeds[i];
+    if (s.storey == storey && inside(s.at[0], s.at[1], s.at[0] + s.size[0], s.at[1] + s.size[1]))
+      return std::pair{SiteItem::Seed, i};
+  }
+  const double z0 = site.base + storey * site.storeyHeight, z1 = z0 + site.storeyHeight;
+  for (int i = 0; i < int(h.circulation.size()); ++i) {
+    const growth::Box& c = h.circulation[i];
+    if (c.lo[2] < z1 - 1e-9 && c.hi[2] > z0 + 1e-9 && inside(c.lo[0], c.lo[1], c.hi[0], c.hi[1]))
+      return std::pair{SiteItem::Circulation, i};
+  }
+  for (int i = 0; i < int(h.cores.size()); ++i) {
+    const growth::Rect& c = h.cores[i];
+    if (inside(c.u0, c.v0, c.u1, c.v1)) return std::pair{SiteItem::Core, i};
+  }
+  return std::nullopt;
 }
 
 std::optional<growth::Rect> freeCoreSpot(const growth::Site& site, Vec2 size) {

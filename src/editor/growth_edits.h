@@ -53,6 +53,18 @@ SiteEditResult setSeed(const GrowthSpec& spec, int index, const growth::Seed& se
 // `spec` without entry `index` of the list.
 SiteEditResult removeItem(const GrowthSpec& spec, SiteItem item, int index);
 
+// The plan view's drag: entry `index` as `from` has it (the entry when the drag started) moved by
+// (dx, dy) rounded to 0.5 m steps, in plan only (circulation and seeds keep their height and
+// storey). nullopt when the rounded move is nil or leaves `from`'s entry where `now` has it
+// (nothing to commit); else the edit, refused as setCore/setCirculation/setSeed refuse.
+std::optional<SiteEditResult> dragItem(const GrowthSpec& spec, const HandPlaced& from, const HandPlaced& now,
+                                       SiteItem item, int index, double dx, double dy);
+// What a click at (x, y) on the plan of `storey` picks: a seed on that storey, else circulation
+// spanning part of it, else a core (the first of each list that holds the point, boundary
+// included); nullopt for none.
+std::optional<std::pair<SiteItem, int>> pickItem(const HandPlaced& h, const growth::Site& site, int storey, double x,
+                                                 double y);
+
 // Where Add puts a new core of `size` or a new seed: the first place on a 1 m grid over the
 // envelope's bounds (rows from the least y, each from the least x; seeds on `storey`) at which
 // the site stays valid, or nullopt if there is none.

@@ -47,8 +47,6 @@ int itemCount(const HandPlaced& h, SiteItem k) {
   return 0;
 }
 
-double snap(double v) { return std::round(v * 2) / 2; }  // 0.5 m steps when dragging in the plan
-
 ImU32 colourOf(std::uint32_t id, float alpha) {
   const auto c = idColour(id);
   return IM_COL32(c[0], c[1], c[2], int(alpha * 255));
@@ -375,57 +373,22 @@ void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float
   const ImVec2 mp = ImGui::GetIO().MousePos;
   double mx, my;
   m.invert(mp.x, mp.y, mx, my);
-  auto inside = [&](double x0, double y0, double x1, double y1) {
-    return mx >= x0 && mx <= x1 && my >= y0 && my <= y1;
-  };
   if (ImGui::IsItemActivated()) {
     dragging_ = false;
-    int pick = -1;
-    SiteItem kind = kind_;
-    for (int i = 0; i < int(hand_.seeds.size()) && pick < 0; ++i) {
-      const growth::Seed& s = hand_.seeds[i];
-      if (s.storey == planStorey_ && inside(s.at[0], s.at[1], s.at[0] + s.size[0], s.at[1] + s.size[1]))
-        pick = i, kind = SiteItem::Seed;
-    }
-    for (int i = 0; i < int(hand_.circulation.size()) && pick < 0; ++i) {
-      const growth::Box& c = hand_.circulation[i];
-      if (c.lo[2] < z1 - 1e-9 && c.hi[2] > z0 + 1e-9 && inside(c.lo[0], c.lo[1], c.hi[0], c.hi[1]))
-        pick = i, kind = SiteItem::Circulation;
-    }
-    for (int i = 0; i < int(hand_.cores.size()) && pick < 0; ++i) {
-      const growth::Rect& c = hand_.cores[i];
-      if (inside(c.u0, c.v0, c.u1, c.v1)) pick = i, kind = SiteItem::Core;
-    }
-    selected_ = pick;
-    if (pick >= 0) {
-      kind_ = kind;
+    selected_ = -1;
+    if (const auto pick = pickItem(hand_, site, planStorey_, mx, my)) {
+      kind_ = pick->first;
+      selected_ = pick->second;
       dragging_ = true;
       dragX_ = mx, dragY_ = my;
-      if (kind == SiteItem::Core) dragCore_ = hand_.cores[pick];
-      if (kind == SiteItem::Circulation) dragBox_ = hand_.circulation[pick];
-      if (kind == SiteItem::Seed) dragSeed_ = hand_.seeds[pick];
+      dragFrom_ = hand_;
     }
   }
   if (dragging_ && ImGui::IsItemActive() && selected_ >= 0) {
-    const double dx = snap(mx - dragX_), dy = snap(my - dragY_);
     const std::string merge = "site" + std::to_string(host.object) + itemName(kind_) + std::to_string(selected_);
     const std::string label = "Move " + std::string(itemName(kind_)) + " " + std::to_string(selected_ + 1);
-    SiteEditResult r;
-    bool moved = false;
-    if (kind_ == SiteItem::Core) {
-      const growth::Rect c{dragCore_.u0 + dx, dragCore_.v0 + dy, dragCore_.u1 + dx, dragCore_.v1 + dy};
-      if (!(c == hand_.cores[selected_])) r = setCore(spec, selected_, c), moved = true;
-    } else if (kind_ == SiteItem::Circulation) {
-      growth::Box c = dragBox_;
-      c.lo[0] += dx, c.hi[0] += dx, c.lo[1] += dy, c.hi[1] += dy;
-      if (!(c == hand_.circulation[selected_])) r = setCirculation(spec, selected_, c), moved = true;
-    } else {
-      growth::Seed s = dragSeed_;
-      s.at = Vec2(dragSeed_.at[0] + dx, dragSeed_.at[1] + dy);
-      if (s.at != hand_.seeds[selected_].at) r = setSeed(spec, selected_, s), moved = true;
-    }
-    if (moved) {
-      commitSite(host, r, label, merge, false);
+    if (const auto r = dragItem(spec, dragFrom_, hand_, kind_, selected_, mx - dragX_, my - dragY_)) {
+      commitSite(host, *r, label, merge, false);
       siteEditOpen_ = true;
     }
   }

@@ -96,9 +96,7 @@ class GrowthPanel {
   bool dragging_ = false;
   bool siteEditOpen_ = false;     // a site edit's merge is open (a field or the plan is held)
   double dragX_ = 0, dragY_ = 0;  // where the drag started, meters
-  growth::Rect dragCore_{};
-  growth::Box dragBox_{};
-  growth::Seed dragSeed_{};
+  HandPlaced dragFrom_;           // the entries when the drag started
 
   bool slicing_ = false;
   double slice_ = 0;

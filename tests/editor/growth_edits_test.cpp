@@ -196,5 +196,46 @@ TEST(SiteEdits, AddFindsTheFirstFreePlaceOnTheGrid) {
   EXPECT_EQ(seed->at, Vec2(4, 0));
 }
 
+TEST(SiteEdits, DraggingInThePlanMovesInHalfMetreStepsAndIsRefusedLikeTyping) {
+  const GrowthSpec spec = smallSite();
+  const HandPlaced start = handPlaced(spec.site);
+  // The seed [1, 4] × [1, 4] dragged by (2.3, -0.2): 2.5 m in x, nothing in y.
+  const auto r = dragItem(spec, start, start, SiteItem::Seed, 0, 2.3, -0.2);
+  ASSERT_TRUE(r && r->spec) << (r ? r->error : "no edit");
+  EXPECT_EQ(handPlaced(r->spec->site).seeds[0].at, Vec2(3.5, 1));
+  EXPECT_EQ(handPlaced(r->spec->site).seeds[0].storey, 0);
+  // Further along the same drag, from the same start: (4.1, 1.8) rounds to (4, 2).
+  const HandPlaced now = handPlaced(r->spec->site);
+  const auto r2 = dragItem(*r->spec, start, now, SiteItem::Seed, 0, 4.1, 1.8);
+  ASSERT_TRUE(r2 && r2->spec);
+  EXPECT_EQ(handPlaced(r2->spec->site).seeds[0].at, Vec2(5, 3));
+  // A move that rounds to where the entry already is: nothing to commit.
+  EXPECT_FALSE(dragItem(spec, start, start, SiteItem::Seed, 0, 0.2, -0.24));
+  EXPECT_FALSE(dragItem(*r->spec, start, now, SiteItem::Seed, 0, 2.6, 0.1));
+  // The landing [13, 15] × [4, 6] keeps its height; the lift dragged onto it is not compared by
+  // the validator, but onto the seed's clearance it is refused with the validator's message.
+  const auto landing = dragItem(spec, start, start, SiteItem::Circulation, 0, 2, 2);
+  ASSERT_TRUE(landing && landing->spec);
+  EXPECT_EQ(handPlaced(landing->spec->site).circulation[0], (growth::Box{{15, 6, 0}, {17, 8, 3}}));
+  const auto core = dragItem(spec, start, start, SiteItem::Core, 0, -5.5, -2);  // to [4.5, 6.5] × [2, 4]
+  ASSERT_TRUE(core);
+  EXPECT_FALSE(core->spec);
+  EXPECT_EQ(core->error, "growth.site.seeds[0]: lies within the clearance of cores[0]");
+  EXPECT_FALSE(dragItem(spec, start, start, SiteItem::Core, 3, 1, 1));  // no such entry
+}
+
+TEST(SiteEdits, AClickPicksTheSeedThenTheCirculationThenTheCoreUnderIt) {
+  const GrowthSpec spec = smallSite();
+  const growth::Site site = growth::parseSite(spec.site);
+  const HandPlaced h = handPlaced(spec.site);
+  using Pick = std::optional<std::pair<SiteItem, int>>;
+  EXPECT_EQ(pickItem(h, site, 0, 2, 2), (Pick{{SiteItem::Seed, 0}}));
+  EXPECT_EQ(pickItem(h, site, 1, 2, 2), Pick{});  // the seed is on storey 0
+  EXPECT_EQ(pickItem(h, site, 0, 14, 5), (Pick{{SiteItem::Circulation, 0}}));
+  EXPECT_EQ(pickItem(h, site, 1, 14, 5), Pick{});                       // the landing is 3 m high: storey 0 only
+  EXPECT_EQ(pickItem(h, site, 1, 12, 6), (Pick{{SiteItem::Core, 0}}));  // cores run the full height; a corner
+  EXPECT_EQ(pickItem(h, site, 0, 8, 8), Pick{});
+}
+
 }  // namespace
 }  // namespace corbel::editor
