@@ -32,7 +32,7 @@ namespace {
 constexpr float kLeftPanelWidth = 320.0f;
 constexpr float kStatusBarHeight = 118.0f;
 constexpr float kPaneWidth = 460.0f;  // the plan and profile panes, right of the 3D view
-constexpr float kGrowthPanelHeight = 235.0f;  // over the form completion panel
+constexpr float kGrowthPanelHeight = 470.0f;  // over the form completion panel
 
 std::string stateDirOr(const std::string& dir) { return dir.empty() ? defaultStateDir() : dir; }
 
@@ -424,6 +424,15 @@ void App::registerActions() {
        {}, [this] { return settings_.edges; }});
   add({"view.grid", "View", "Ground Grid", "Show the ground grid at z = 0.", {}, false,
        [this] { settings_.grid = !settings_.grid; }, {}, [this] { return settings_.grid; }});
+  // Shadows from a movable sun (Ng, Fig. 8.5); the growth panel's Grow tab has the sun's sliders.
+  add({"view.shadows", "View", "Shadows", "Cast shadows from the sun onto the model and the ground.", {}, false,
+       [this] { settings_.shadows = !settings_.shadows; }, {}, [this] { return settings_.shadows; }, true});
+  add({"view.sun_later", "View", "Sun Later", "Move the sun 15° on (its azimuth, towards +Y).", {}, false,
+       [this] { sunAzimuth_ = std::remainder(sunAzimuth_ + 15.0, 360.0); }});
+  add({"view.sun_earlier", "View", "Sun Earlier", "Move the sun 15° back.", {}, false,
+       [this] { sunAzimuth_ = std::remainder(sunAzimuth_ - 15.0, 360.0); }});
+  add({"view.sun_lower", "View", "Sun Lower", "Lower the sun by 10° (at least 5° above the ground).", {}, false,
+       [this] { sunElevation_ = std::max(5.0, sunElevation_ - 10.0); }});
 
   add({"tools.validate", "Tools", "Validate All Objects",
        "Check every object's shell (closed, 2-manifold, Euler characteristic), in the background.", {}, false, [this] {
@@ -492,6 +501,31 @@ void App::registerActions() {
        "Grow the selected site step by step as the view catches up, until every unit stops; again to pause.", {},
        true, [this] { growthPanel_.toggleRun(growthHost()); }, growthSelected,
        [this] { return growthPanel_.running(); }});
+  // The site editor, the slice, the statistics and the view maps of the selected growth site.
+  add({"growth.add_core", "Growth", "Add Core",
+       "Add a 3 x 3 m core at the first free place of the selected site (one undo step).", {}, true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Core); }, growthSelected, {}, true});
+  add({"growth.add_circulation", "Growth", "Add Circulation",
+       "Add a 3 x 3 m landing, one storey high, on the Site tab's plan storey (one undo step).", {}, true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Circulation); }, growthSelected});
+  add({"growth.add_seed", "Growth", "Add Seed",
+       "Add a 3 x 3 m seed of 60 m² at the first free, supported place on the plan storey (one undo step).", {},
+       true, [this] { growthPanel_.add(growthHost(), SiteItem::Seed); }, growthSelected});
+  add({"growth.delete", "Growth", "Delete Site Entry", "Delete the core, circulation or seed picked in the Site tab.",
+       {}, true, [this] { growthPanel_.removeSelected(growthHost()); },
+       [this, growthSelected] { return growthSelected() && growthPanel_.hasSelection(); }});
+  add({"growth.site", "Growth", "Show the Site", "Show the Site tab: cores, circulation and seeds.", {}, false,
+       [this] { growthPanel_.showTab(1); }, growthSelected});
+  add({"growth.slice_down", "Growth", "Slice a Storey Lower",
+       "Hide one storey more of the selected site in the 3D view (Fig. 8.3; a view setting).", {}, false,
+       [this] { growthPanel_.sliceStorey(growthHost(), -1); }, growthSelected, {}, true});
+  add({"growth.slice_up", "Growth", "Slice a Storey Higher", "Show one storey more; past the top, no slice.", {},
+       false, [this] { growthPanel_.sliceStorey(growthHost(), 1); }, growthSelected});
+  add({"growth.statistics", "Growth", "Statistics", "Show Table 8.1 for the model as grown.", {}, false,
+       [this] { growthPanel_.showTab(2); }, growthSelected});
+  add({"growth.view_maps", "Growth", "View Maps",
+       "Show the four view maps (Sec. 5.2) of the model as grown, unit ids in false colour.", {}, false,
+       [this] { growthPanel_.toggleViewMaps(); }, growthSelected, [this] { return growthPanel_.viewMapsShown(); }});
   // Form completion (Ch. 7, Fig. 8.6) in a region of the selected growth site.
   add({"completion.seeds", "Growth", "Completion: Seeds From the Model",
        "Grow the selected site's model (in the background) and take the entrances its units open onto the "
@@ -939,6 +973,19 @@ std::pair<Vec3, Vec3> App::viewRay(float px, float py) const {
 }
 
 const Scene& App::shownScene() {
+  // The selected growth site sliced at a height (Fig. 8.3): its faces below the cut only.
+  if (const auto h = growthFor_ && selected_ == growthFor_ ? growthPanel_.sliceHeight() : std::nullopt;
+      h && scene_.hasObject(*growthFor_)) {
+    if (sliceSceneOf_ != scene_.revision() || sliceHeightOf_ != *h || sliceObjectOf_ != *growthFor_) {
+      sliceScene_ = scene_;
+      const Scene::ObjectInfo& info = scene_.objects().at(*growthFor_);
+      sliceScene_.replaceObject(*growthFor_, info.kind, info.name, sliceBelow(objectMesh(scene_, *growthFor_), *h));
+      sliceSceneOf_ = scene_.revision();
+      sliceHeightOf_ = *h;
+      sliceObjectOf_ = *growthFor_;
+    }
+    return sliceScene_;
+  }
   const DocObject* m = selectedMasonry();
   const Simulation* sim = m && m->visible ? statics_.shownSimulation(std::get<MasonrySpec>(m->spec)) : nullptr;
   if (!sim) return scene_;
@@ -1025,6 +1072,10 @@ GrowthHost App::growthHost() {
   host.doc = &history_.current();
   host.object = selected_.value_or(0);
   host.current = live_.current();
+  host.wait = scripted();
+  host.shadows = &settings_.shadows;
+  host.sunAzimuth = &sunAzimuth_;
+  host.sunElevation = &sunElevation_;
   if (auto it = sync_.status().find(host.object); it != sync_.status().end()) {
     host.error = it->second.error;
     host.warnings = it->second.warnings;
@@ -1181,8 +1232,10 @@ int App::run() {
       growthPanel_.update(host);
       const float top = ImGui::GetFrameHeight();
       // The growth panel on top, the form completion panel under it.
-      const float paneH = vp->Size.y - top - kStatusBarHeight, growthH = std::min(kGrowthPanelHeight, 0.4f * paneH);
+      const float paneH = vp->Size.y - top - kStatusBarHeight, growthH = std::min(kGrowthPanelHeight, 0.6f * paneH);
       growthPanel_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth, growthH);
+      growthPanel_.drawViewMaps(host, vp->Pos.x + kLeftPanelWidth + 10, vp->Pos.y + top + 10,
+                                vp->Size.x - kLeftPanelWidth - kPaneWidth - 20);
       completion_.draw(completionHost(), vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top + growthH, kPaneWidth,
                        paneH - growthH);
     } else {
@@ -1244,6 +1297,9 @@ int App::run() {
       const DocObject* o = doc.find(id);
       return o && o->visible;
     };
+    // The sun of the shadows; without them the studio sun, so the model looks as it always did.
+    settings_.sun = settings_.shadows ? std::optional<Vec3>(render::sunDirection(sunAzimuth_, sunElevation_))
+                                      : std::nullopt;
     // A selected town is not tinted as a whole: its picked building is outlined instead.
     settings_.highlight = selectedTown() ? std::nullopt : selected_;
     // Tension colours and force arrows of the selected masonry object, when it is shown.

@@ -110,6 +110,8 @@ class App {
   std::unique_ptr<render::Renderer> renderer_;
   render::OrbitCamera camera_;
   render::RenderSettings settings_;
+  // The sun of the shadows (degrees; azimuth from +X towards +Y): the studio sun's direction.
+  double sunAzimuth_ = -37.9, sunElevation_ = 55.2;
   ActionRegistry actions_;
   FileDialog fileDialog_;
   Recovery recovery_;
@@ -155,6 +157,11 @@ class App {
   Scene simScene_;
   std::uint64_t simSceneOf_ = 0, simRevisionOf_ = 0;
   ObjectId simObjectOf_ = 0;
+  // The shown scene with the selected growth site sliced (Fig. 8.3), cached by what it shows.
+  Scene sliceScene_;
+  std::uint64_t sliceSceneOf_ = 0;
+  double sliceHeightOf_ = 0;
+  ObjectId sliceObjectOf_ = 0;
   const Scene& shownScene();
   KifsPanel kifsPanel_;
   GrowthPanel growthPanel_;

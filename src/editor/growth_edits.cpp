@@ -1,5 +1,12 @@
 #include "editor/growth_edits.h"
 
+#include "core/error.h"
+#include "growth/engine.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
 namespace corbel::editor {
 
 std::optional<GrowthSpec> nextStep(const GrowthSpec& spec, int stoppedAfter) {
@@ -8,6 +15,262 @@ std::optional<GrowthSpec> nextStep(const GrowthSpec& spec, int stoppedAfter) {
   GrowthSpec next = spec;
   ++next.steps;
   return next;
+}
+
+namespace {
+
+using nlohmann::json;
+
+const char* listKey(SiteItem item) {
+  switch (item) {
+    case SiteItem::Core:
+      return "cores";
+    case SiteItem::Circulation:
+      return "circulation";
+    case SiteItem::Seed:
+      return "seeds";
+  }
+  return "";
+}
+
+std::string where(SiteItem item, int index) { return std::string(listKey(item)) + "[" + std::to_string(index) + "]"; }
+
+json pair(double a, double b) { return json::array({a, b}); }
+
+// The site file as JSON, with `edit` applied to the list of `item` (created when missing);
+// the edited site is checked and the spec returned with its compact text (keys sorted, as a
+// project written and read back has it).
+template <class Edit>
+SiteEditResult editList(const GrowthSpec& spec, SiteItem item, int index, bool appendAllowed, Edit edit) {
+  SiteEditResult r;
+  json site;
+  try {
+    site = json::parse(spec.site);
+  } catch (const json::exception&) {
+    r.error = "growth.site: is not JSON";
+    return r;
+  }
+  if (!site.is_object()) {
+    r.error = "growth.site: must be an object";
+    return r;
+  }
+  json& list = site[listKey(item)];
+  if (list.is_null()) list = json::array();
+  if (!list.is_array()) {
+    r.error = "growth.site." + std::string(listKey(item)) + ": must be a list";
+    return r;
+  }
+  const int size = static_cast<int>(list.size());
+  if (index < 0 || index > size || (index == size && !appendAllowed)) {
+    r.error = "growth.site." + where(item, index) + ": no such entry";
+    return r;
+  }
+  if (index == size) list.push_back(json::object());
+  edit(list, index);
+  if (list.empty()) site.erase(listKey(item));
+  GrowthSpec next = spec;
+  next.site = site.dump();
+  r.error = checkSite(next.site);
+  if (r.error.empty()) r.spec = std::move(next);
+  return r;
+}
+
+int itemCount(const HandPlaced& h, SiteItem k) {
+  switch (k) {
+    case SiteItem::Core:
+      return int(h.cores.size());
+    case SiteItem::Circulation:
+      return int(h.circulation.size());
+    case SiteItem::Seed:
+      return int(h.seeds.size());
+  }
+  return 0;
+}
+
+bool finite(std::initializer_list<double> values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace
+
+HandPlaced handPlaced(const std::string& siteText) {
+  // Only the file's own lists: parse the text without generating seeds.
+  json site = json::parse(siteText, nullptr, false);
+  if (site.is_object()) site.erase("generate_seeds");
+  HandPlaced out;
+  if (!site.is_object()) return out;
+  if (!site.contains("seeds")) site["seeds"] = json::array();
+  growth::Site parsed;
+  try {
+    parsed = growth::parseSite(site.dump());
+  } catch (const InputError&) {
+    return out;  // the build names the fault
+  }
+  out.cores = parsed.cores;
+  out.circulation = parsed.circulation;
+  out.seeds = parsed.seeds;
+  return out;
+}
+
+std::string checkSite(const std::string& siteText) {
+  try {
+    const growth::Site site = growth::parseSite(siteText);
+    growth::GrowthEngine engine(site);  // unknown behaviours, unsupported seeds
+  } catch (const InputError& e) {
+    return e.where.empty() ? "growth.site: " + e.reason : "growth.site." + e.where + ": " + e.reason;
+  } catch (const std::exception& e) {
+    return std::string("growth.site: ") + e.what();
+  }
+  return {};
+}
+
+SiteEditResult setCore(const GrowthSpec& spec, int index, const growth::Rect& c) {
+  if (!finite({c.u0, c.v0, c.u1, c.v1}))
+    return {std::nullopt, "growth.site." + where(SiteItem::Core, index) + ": is not a finite number"};
+  if (!(c.u1 > c.u0 && c.v1 > c.v0))
+    return {std::nullopt, "growth.site." + where(SiteItem::Core, index) + ".size: must be positive"};
+  return editList(spec, SiteItem::Core, index, true, [&](json& list, int i) {
+    json& e = list[i];
+    if (!e.contains("name")) e["name"] = "core " + std::to_string(i + 1);
+    e["at"] = pair(c.u0, c.v0);
+    e["size"] = pair(c.u1 - c.u0, c.v1 - c.v0);
+  });
+}
+
+SiteEditResult setCirculation(const GrowthSpec& spec, int index, const growth::Box& b) {
+  if (!finite({b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]}))
+    return {std::nullopt, "growth.site." + where(SiteItem::Circulation, index) + ": is not a finite number"};
+  if (!(b.size(0) > 0 && b.size(1) > 0 && b.size(2) > 0))
+    return {std::nullopt, "growth.site." + where(SiteItem::Circulation, index) + ".size: sizes must be positive"};
+  return editList(spec, SiteItem::Circulation, index, true, [&](json& list, int i) {
+    json& e = list[i];
+    if (!e.contains("name")) e["name"] = "circulation " + std::to_string(i + 1);
+    e["at"] = json::array({b.lo[0], b.lo[1], b.lo[2]});
+    e["size"] = json::array({b.size(0), b.size(1), b.size(2)});
+  });
+}
+
+SiteEditResult setSeed(const GrowthSpec& spec, int index, const growth::Seed& s) {
+  const std::string at = "growth.site." + where(SiteItem::Seed, index);
+  if (!finite({s.at[0], s.at[1]})) return {std::nullopt, at + ".at: is not a finite number"};
+  if (!finite({s.size[0], s.size[1]}) || !(s.size[0] > 0 && s.size[1] > 0))
+    return {std::nullopt, at + ".size: sizes must be positive"};
+  if (!finite({s.targetArea, s.targetVolume}) || s.targetArea < 0 || s.targetVolume < 0 ||
+      (s.targetArea > 0) == (s.targetVolume > 0))
+    return {std::nullopt, at + ": needs exactly one of target_area and target_volume"};
+  if (s.behaviour.empty()) return {std::nullopt, at + ".behaviour: must not be empty"};
+  return editList(spec, SiteItem::Seed, index, true, [&](json& list, int i) {
+    json& e = list[i];
+    e["at"] = pair(s.at[0], s.at[1]);
+    e["size"] = pair(s.size[0], s.size[1]);
+    e["storey"] = s.storey;
+    e.erase("target_area");
+    e.erase("target_volume");
+    if (s.targetArea > 0)
+      e["target_area"] = s.targetArea;
+    else
+      e["target_volume"] = s.targetVolume;
+    json locked = json::array();
+    for (growth::Side side : growth::kAllSides)
+      if (s.locked[static_cast<int>(side)]) locked.push_back(std::string(growth::sideName(side)));
+    if (locked.empty())
+      e.erase("locked");
+    else
+      e["locked"] = locked;
+    e["behaviour"] = s.behaviour;
+  });
+}
+
+SiteEditResult removeItem(const GrowthSpec& spec, SiteItem item, int index) {
+  return editList(spec, item, index, false, [](json& list, int i) { list.erase(list.begin() + i); });
+}
+
+std::optional<SiteEditResult> dragItem(const GrowthSpec& spec, const HandPlaced& from, const HandPlaced& now,
+                                       SiteItem item, int index, double dx, double dy) {
+  dx = std::round(dx * 2) / 2;
+  dy = std::round(dy * 2) / 2;
+  if (index < 0 || index >= itemCount(from, item) || index >= itemCount(now, item)) return std::nullopt;
+  switch (item) {
+    case SiteItem::Core: {
+      const growth::Rect& c = from.cores[index];
+      const growth::Rect to{c.u0 + dx, c.v0 + dy, c.u1 + dx, c.v1 + dy};
+      if (to == now.cores[index]) return std::nullopt;
+      return setCore(spec, index, to);
+    }
+    case SiteItem::Circulation: {
+      growth::Box to = from.circulation[index];
+      to.lo[0] += dx, to.hi[0] += dx, to.lo[1] += dy, to.hi[1] += dy;
+      if (to == now.circulation[index]) return std::nullopt;
+      return setCirculation(spec, index, to);
+    }
+    case SiteItem::Seed: {
+      growth::Seed to = from.seeds[index];
+      to.at = Vec2(to.at[0] + dx, to.at[1] + dy);
+      if (to.at == now.seeds[index].at) return std::nullopt;
+      return setSeed(spec, index, to);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::pair<SiteItem, int>> pickItem(const HandPlaced& h, const growth::Site& site, int storey, double x,
+                                                 double y) {
+  auto inside = [&](double x0, double y0, double x1, double y1) { return x >= x0 && x <= x1 && y >= y0 && y <= y1; };
+  for (int i = 0; i < int(h.seeds.size()); ++i) {
+    const growth::Seed& s = h.seeds[i];
+    if (s.storey == storey && inside(s.at[0], s.at[1], s.at[0] + s.size[0], s.at[1] + s.size[1]))
+      return std::pair{SiteItem::Seed, i};
+  }
+  const double z0 = site.base + storey * site.storeyHeight, z1 = z0 + site.storeyHeight;
+  for (int i = 0; i < int(h.circulation.size()); ++i) {
+    const growth::Box& c = h.circulation[i];
+    if (c.lo[2] < z1 - 1e-9 && c.hi[2] > z0 + 1e-9 && inside(c.lo[0], c.lo[1], c.hi[0], c.hi[1]))
+      return std::pair{SiteItem::Circulation, i};
+  }
+  for (int i = 0; i < int(h.cores.size()); ++i) {
+    const growth::Rect& c = h.cores[i];
+    if (inside(c.u0, c.v0, c.u1, c.v1)) return std::pair{SiteItem::Core, i};
+  }
+  return std::nullopt;
+}
+
+std::optional<growth::Rect> freeCoreSpot(const growth::Site& site, Vec2 size) {
+  const growth::Box b = site.bounds();
+  growth::Site trial = site;
+  trial.cores.push_back({});
+  for (double y = std::floor(b.lo[1]); y + size[1] <= b.hi[1]; y += 1.0)
+    for (double x = std::floor(b.lo[0]); x + size[0] <= b.hi[0]; x += 1.0) {
+      trial.cores.back() = {x, y, x + size[0], y + size[1]};
+      try {
+        growth::validateSite(trial);
+        // Clear of the circulation too (the validator does not compare the two).
+        bool clear = true;
+        for (const growth::Box& c : site.circulation)
+          if (growth::interiorsOverlap(c, trial.coreBox(trial.cores.size() - 1), 1e-9)) clear = false;
+        if (clear) return trial.cores.back();
+      } catch (const InputError&) {
+      }
+    }
+  return std::nullopt;
+}
+
+std::optional<growth::Seed> freeSeedSpot(const growth::Site& site, const growth::Seed& like) {
+  const growth::Box b = site.bounds();
+  growth::Site trial = site;
+  trial.seeds.push_back(like);
+  for (double y = std::floor(b.lo[1]); y + like.size[1] <= b.hi[1]; y += 1.0)
+    for (double x = std::floor(b.lo[0]); x + like.size[0] <= b.hi[0]; x += 1.0) {
+      trial.seeds.back().at = Vec2(x, y);
+      try {
+        growth::validateSite(trial);
+        growth::GrowthEngine engine(trial);  // held up by something
+        return trial.seeds.back();
+      } catch (const InputError&) {
+      }
+    }
+  return std::nullopt;
 }
 
 }  // namespace corbel::editor

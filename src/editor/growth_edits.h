@@ -1,9 +1,14 @@
 #pragma once
 // The growth panel's changes to a growth object (core/growth_spec.h): pure functions the panel
-// commits, so Step and Run are undoable and a scripted run replays them exactly.
+// commits, so Step and Run are undoable and a scripted run replays them exactly; and the site
+// editor's changes to the site's hand-placed cores, circulation and seeds, each checked as the
+// kernel will check it (growth/site.h's validator, then the engine's own refusals) before the
+// panel commits it.
 #include "core/growth_spec.h"
+#include "growth/site.h"
 
 #include <optional>
+#include <string>
 
 namespace corbel::editor {
 
@@ -11,5 +16,59 @@ namespace corbel::editor {
 // until every unit stops (steps = -1), or its last build said every unit stopped after
 // `stoppedAfter` ≤ spec.steps steps (-1: it did not say so).
 std::optional<GrowthSpec> nextStep(const GrowthSpec& spec, int stoppedAfter);
+
+// What the site editor edits: entries of the site file's "cores", "circulation" and "seeds"
+// lists. Generated seeds (generate_seeds) come after the hand-placed ones in the parsed site
+// and are not in the file's list, so they are not editable by hand.
+enum class SiteItem { Core, Circulation, Seed };
+
+// The hand-placed entries of a site, as the site file has them (the parsed site's first
+// entries of each list: growth/site_json.cpp appends generated seeds after them).
+struct HandPlaced {
+  std::vector<growth::Rect> cores;
+  std::vector<growth::Box> circulation;
+  std::vector<growth::Seed> seeds;
+};
+// Throws InputError for site text that is not a site file (the kernel names the fault).
+HandPlaced handPlaced(const std::string& siteText);
+
+// Either the edited spec or why not: the message names the field by its path in the project
+// file, as the object's build error would ("growth.site.cores[1]: overlaps cores[0]").
+struct SiteEditResult {
+  std::optional<GrowthSpec> spec;
+  std::string error;
+};
+
+// The site's error as its build would report it, or "" when it parses, validates, and the
+// engine accepts every seed (a known behaviour, something holding it up).
+std::string checkSite(const std::string& siteText);
+
+// `spec` with entry `index` of the list replaced (index = the list's size appends one), its
+// other keys ("name") kept; refused, with the validator's message, when the site would be
+// invalid. An index past the end is refused too ("cores[7]: no such entry").
+SiteEditResult setCore(const GrowthSpec& spec, int index, const growth::Rect& core);
+SiteEditResult setCirculation(const GrowthSpec& spec, int index, const growth::Box& box);
+// A seed is written with exactly its positive target, its locked sides and its behaviour.
+SiteEditResult setSeed(const GrowthSpec& spec, int index, const growth::Seed& seed);
+// `spec` without entry `index` of the list.
+SiteEditResult removeItem(const GrowthSpec& spec, SiteItem item, int index);
+
+// The plan view's drag: entry `index` as `from` has it (the entry when the drag started) moved by
+// (dx, dy) rounded to 0.5 m steps, in plan only (circulation and seeds keep their height and
+// storey). nullopt when the rounded move is nil or leaves `from`'s entry where `now` has it
+// (nothing to commit); else the edit, refused as setCore/setCirculation/setSeed refuse.
+std::optional<SiteEditResult> dragItem(const GrowthSpec& spec, const HandPlaced& from, const HandPlaced& now,
+                                       SiteItem item, int index, double dx, double dy);
+// What a click at (x, y) on the plan of `storey` picks: a seed on that storey, else circulation
+// spanning part of it, else a core (the first of each list that holds the point, boundary
+// included); nullopt for none.
+std::optional<std::pair<SiteItem, int>> pickItem(const HandPlaced& h, const growth::Site& site, int storey, double x,
+                                                 double y);
+
+// Where Add puts a new core of `size` or a new seed: the first place on a 1 m grid over the
+// envelope's bounds (rows from the least y, each from the least x; seeds on `storey`) at which
+// the site stays valid, or nullopt if there is none.
+std::optional<growth::Rect> freeCoreSpot(const growth::Site& site, Vec2 size);
+std::optional<growth::Seed> freeSeedSpot(const growth::Site& site, const growth::Seed& like);
 
 }  // namespace corbel::editor

@@ -1,11 +1,17 @@
 #include "editor/growth_panel.h"
 
-#include "editor/growth_edits.h"
+#include "core/error.h"
+#include "editor/completion_view.h"
 #include "growth/kernel.h"
 #include "growth/site.h"
+#include "render/gl.h"
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace corbel::editor {
@@ -17,12 +23,97 @@ const GrowthSpec* specOf(const GrowthHost& host) {
   return o ? std::get_if<GrowthSpec>(&o->spec) : nullptr;
 }
 
+const char* itemName(SiteItem k) {
+  switch (k) {
+    case SiteItem::Core:
+      return "core";
+    case SiteItem::Circulation:
+      return "circulation";
+    case SiteItem::Seed:
+      return "seed";
+  }
+  return "";
+}
+
+int itemCount(const HandPlaced& h, SiteItem k) {
+  switch (k) {
+    case SiteItem::Core:
+      return int(h.cores.size());
+    case SiteItem::Circulation:
+      return int(h.circulation.size());
+    case SiteItem::Seed:
+      return int(h.seeds.size());
+  }
+  return 0;
+}
+
+ImU32 colourOf(std::uint32_t id, float alpha) {
+  const auto c = idColour(id);
+  return IM_COL32(c[0], c[1], c[2], int(alpha * 255));
+}
+
+// Two doubles as one drag field ("at", "size"); true when changed.
+bool dragPair(const char* label, double* v, double min = -1e6, double max = 1e6) {
+  return ImGui::DragScalarN(label, ImGuiDataType_Double, v, 2, 0.1f, &min, &max, "%.2f");
+}
+
 }  // namespace
+
+void GrowthPanel::reset() {
+  running_ = false;
+  selected_ = -1;
+  siteError_.clear();
+  dragging_ = false;
+  slicing_ = false;
+  inspection_.reset();
+  texturesOf_ = nullptr;
+  pendingFor_.reset();
+  failedFor_.reset();
+  inspectError_.clear();
+  if (textures_[0]) glDeleteTextures(4, textures_.data());
+  textures_ = {};
+}
 
 void GrowthPanel::commitSteps(const GrowthHost& host, int steps, const std::string& label, const std::string& merge) {
   Document d = *host.doc;
   std::get<GrowthSpec>(d.find(host.object)->spec).steps = steps;
   host.commit(std::move(d), label, merge);
+}
+
+bool GrowthPanel::commitSite(const GrowthHost& host, const SiteEditResult& r, const std::string& label,
+                             const std::string& merge, bool report) {
+  if (!r.spec) {
+    siteError_ = r.error;
+    if (report) host.log(label + " refused: " + r.error, true);
+    return false;
+  }
+  siteError_.clear();
+  Document d = *host.doc;
+  std::get<GrowthSpec>(d.find(host.object)->spec) = *r.spec;
+  host.commit(std::move(d), label, merge);
+  return true;
+}
+
+void GrowthPanel::parseSite(const GrowthSpec& spec) {
+  if (summaryOf_ == spec.site) return;
+  summaryOf_ = spec.site;
+  try {
+    site_ = growth::parseSite(spec.site);
+    const growth::Site& site = *site_;
+    char text[160];
+    std::snprintf(text, sizeof text, "%.0f m² site, %d storeys of %.1f m, %zu cores, %zu circulation boxes, %zu seeds",
+                  site.area(), site.storeys, site.storeyHeight, site.cores.size(), site.circulation.size(),
+                  site.seeds.size());
+    summary_ = text;
+    hand_ = handPlaced(spec.site);
+    planStorey_ = std::clamp(planStorey_, 0, site.storeys - 1);
+    if (slicing_) slice_ = std::clamp(slice_, site.base, site.top());
+  } catch (const std::exception&) {
+    site_.reset();
+    hand_ = {};
+    summary_.clear();  // the build reports the site's fault
+  }
+  if (selected_ >= itemCount(hand_, kind_)) selected_ = -1;
 }
 
 void GrowthPanel::step(const GrowthHost& host) {
@@ -38,6 +129,7 @@ void GrowthPanel::toggleRun(const GrowthHost& host) {
 }
 
 void GrowthPanel::update(const GrowthHost& host) {
+  pollInspection();
   const GrowthSpec* spec = specOf(host);
   if (!spec || !running_ || !host.current) return;
   if (!host.error.empty()) {
@@ -54,35 +146,104 @@ void GrowthPanel::update(const GrowthHost& host) {
   commitSteps(host, next->steps, "Grow " + host.doc->find(host.object)->name, "grow" + std::to_string(host.object));
 }
 
-void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float h) {
+void GrowthPanel::add(const GrowthHost& host, SiteItem item) {
   const GrowthSpec* spec = specOf(host);
   if (!spec) return;
-  const DocObject* o = host.doc->find(host.object);
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Growth", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
-  ImGui::Text("%s: growth site (Ng, Ch. 4)", o->name.c_str());
-  if (summaryOf_ != spec->site) {
-    summaryOf_ = spec->site;
+  parseSite(*spec);
+  const std::string name = host.doc->find(host.object)->name;
+  if (!site_) {
+    host.log("Add a " + std::string(itemName(item)) + " to " + name + ": the site has a fault to fix first", true);
+    return;
+  }
+  const int index = itemCount(hand_, item);
+  SiteEditResult r;
+  if (item == SiteItem::Core) {
+    const auto spot = freeCoreSpot(*site_, Vec2(3, 3));
+    if (!spot) return host.log("Add a core to " + name + ": no free 3 x 3 m place on the site", true);
+    r = setCore(*spec, index, *spot);
+  } else if (item == SiteItem::Circulation) {
+    // A 3 × 3 m landing one storey high on the plan view's storey, where a core of that plan would fit.
+    const auto spot = freeCoreSpot(*site_, Vec2(3, 3));
+    if (!spot) return host.log("Add circulation to " + name + ": no free 3 x 3 m place on the site", true);
+    const double z = site_->base + planStorey_ * site_->storeyHeight;
+    r = setCirculation(*spec, index, {{spot->u0, spot->v0, z}, {spot->u1, spot->v1, z + site_->storeyHeight}});
+  } else {
+    growth::Seed like;
+    like.storey = planStorey_;
+    like.targetArea = 60;
+    const auto spot = freeSeedSpot(*site_, like);
+    if (!spot)
+      return host.log(
+          "Add a seed to " + name + ": no free, supported 3 x 3 m place on storey " + std::to_string(planStorey_),
+          true);
+    r = setSeed(*spec, index, *spot);
+  }
+  if (commitSite(host, r, "Add a " + std::string(itemName(item)) + " to " + name, "", true)) {
+    kind_ = item;
+    selected_ = index;
+  }
+}
+
+void GrowthPanel::removeSelected(const GrowthHost& host) {
+  const GrowthSpec* spec = specOf(host);
+  if (!spec || selected_ < 0) return;
+  const std::string label = "Delete " + std::string(itemName(kind_)) + " " + std::to_string(selected_ + 1) + " of " +
+                            host.doc->find(host.object)->name;
+  if (commitSite(host, removeItem(*spec, kind_, selected_), label, "", true)) selected_ = -1;
+}
+
+void GrowthPanel::sliceStorey(const GrowthHost& host, int by) {
+  const GrowthSpec* spec = specOf(host);
+  if (!spec) return;
+  parseSite(*spec);
+  if (!site_) return;
+  const growth::Site& s = *site_;
+  // Storey levels: base + k·h for k = 1..storeys (the top: no slice).
+  int k = slicing_ ? int(std::ceil((slice_ - s.base) / s.storeyHeight - 1e-9)) : s.storeys;
+  k = std::clamp(k + by, 1, s.storeys);
+  slicing_ = k < s.storeys;
+  slice_ = s.base + k * s.storeyHeight;
+}
+
+void GrowthPanel::requestInspection(const GrowthHost& host, const GrowthSpec& spec) {
+  if (inspection_ && inspection_->of == spec) return;
+  if (pendingFor_ && *pendingFor_ == spec) return;
+  if (failedFor_ && *failedFor_ == spec) return;
+  if (!host.current || running_ || pendingFor_) return;  // measured once the Scene shows it
+  pendingFor_ = spec;
+  auto work = [spec]() -> std::shared_ptr<const GrowthInspection> {
+    return std::make_shared<const GrowthInspection>(inspectGrowth(spec));
+  };
+  if (host.wait) {
+    std::promise<std::shared_ptr<const GrowthInspection>> p;
     try {
-      const growth::Site site = growth::parseSite(spec->site);
-      char text[160];
-      std::snprintf(text, sizeof text,
-                    "%.0f m² site, %d storeys of %.1f m, %zu cores, %zu circulation boxes, %zu seeds", site.area(),
-                    site.storeys, site.storeyHeight, site.cores.size(), site.circulation.size(), site.seeds.size());
-      summary_ = text;
-    } catch (const std::exception&) {
-      summary_.clear();  // the build reports the site's fault
+      p.set_value(work());
+    } catch (...) {
+      p.set_exception(std::current_exception());
     }
+    pending_ = p.get_future();
+    pollInspection();
+  } else {
+    pending_ = std::async(std::launch::async, work);
   }
-  if (!summary_.empty()) ImGui::TextWrapped("%s", summary_.c_str());
-  if (!host.error.empty()) {
-    ImGui::PushTextWrapPos(0);
-    ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", host.error.c_str());
-    ImGui::PopTextWrapPos();
+}
+
+void GrowthPanel::pollInspection() {
+  if (!pendingFor_ || !pending_.valid()) return;
+  if (pending_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  try {
+    inspection_ = pending_.get();
+    inspectError_.clear();
+  } catch (const std::exception& e) {
+    failedFor_ = pendingFor_;
+    inspectError_ = e.what();
   }
-  ImGui::Separator();
-  int seed = static_cast<int>(spec->seed);
+  pendingFor_.reset();
+}
+
+void GrowthPanel::drawGrow(const GrowthHost& host, const GrowthSpec& spec) {
+  const DocObject* o = host.doc->find(host.object);
+  int seed = static_cast<int>(spec.seed);
   ImGui::SetNextItemWidth(160);
   if (ImGui::InputInt("Seed", &seed, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && seed >= 0) {
     Document d = *host.doc;
@@ -90,13 +251,13 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
     host.commit(std::move(d), "Seed " + o->name, "");
   }
   const int stopped = growth::stoppedAfter(host.warnings);
-  if (spec->steps < 0)
+  if (spec.steps < 0)
     ImGui::Text("Grown until every unit stopped%s", host.current ? "" : " (growing...)");
   else
-    ImGui::Text("Grown %d step%s%s", spec->steps, spec->steps == 1 ? "" : "s", host.current ? "" : " (growing...)");
+    ImGui::Text("Grown %d step%s%s", spec.steps, spec.steps == 1 ? "" : "s", host.current ? "" : " (growing...)");
   if (stopped >= 0 && host.current) ImGui::TextDisabled("every unit stopped after %d steps", stopped);
 
-  const auto next = nextStep(*spec, stopped);
+  const auto next = nextStep(spec, stopped);
   ImGui::BeginDisabled(!next || running_);
   if (ImGui::Button("Step")) step(host);
   ImGui::EndDisabled();
@@ -105,14 +266,14 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
   if (ImGui::Button(running_ ? "Pause" : "Run")) toggleRun(host);
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::BeginDisabled(spec->steps < 0);
+  ImGui::BeginDisabled(spec.steps < 0);
   if (ImGui::Button("Grow to the end")) {
     running_ = false;
     commitSteps(host, -1, "Grow " + o->name + " to the end");
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::BeginDisabled(spec->steps == 0);
+  ImGui::BeginDisabled(spec.steps == 0);
   if (ImGui::Button("Reset")) {
     running_ = false;
     commitSteps(host, 0, "Reset the growth of " + o->name);
@@ -120,6 +281,398 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
   ImGui::EndDisabled();
   ImGui::TextDisabled("Run commits one step at a time as the view catches up;");
   ImGui::TextDisabled("the whole run is one undo step.");
+  if (site_) {
+    // The slice (Fig. 8.3): a view setting, not an edit.
+    ImGui::Separator();
+    ImGui::Checkbox("Slice", &slicing_);
+    ImGui::SameLine();
+    float h = float(slicing_ ? slice_ : site_->top());
+    ImGui::SetNextItemWidth(-1);
+    ImGui::BeginDisabled(!slicing_);
+    if (ImGui::SliderFloat("##slice", &h, float(site_->base), float(site_->top()), "hide at and above %.1f m"))
+      slice_ = h;
+    ImGui::EndDisabled();
+    if (!slicing_) slice_ = site_->top();
+    if (slicing_) {
+      const double storeys = (slice_ - site_->base) / site_->storeyHeight;
+      ImGui::TextDisabled("storeys below the cut: %.1f of %d (plans seen from above)", storeys, site_->storeys);
+    }
+  }
+  if (host.shadows && host.sunAzimuth && host.sunElevation) {
+    // Shadows from a movable sun (Fig. 8.5): the 3D view's setting, for every object.
+    ImGui::Separator();
+    ImGui::Checkbox("Shadows", host.shadows);
+    ImGui::BeginDisabled(!*host.shadows);
+    float az = float(*host.sunAzimuth), el = float(*host.sunElevation);
+    ImGui::SetNextItemWidth(-120);
+    if (ImGui::SliderFloat("sun azimuth", &az, -180.0f, 180.0f, "%.0f°")) *host.sunAzimuth = az;
+    ImGui::SetNextItemWidth(-120);
+    if (ImGui::SliderFloat("sun elevation", &el, 5.0f, 90.0f, "%.0f°")) *host.sunElevation = el;
+    ImGui::EndDisabled();
+  }
+}
+
+void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float w, float h) {
+  const growth::Site& site = *site_;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  dl->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), IM_COL32(30, 32, 36, 255));
+  const growth::Box b = site.bounds();
+  const CellMap m = fitInCell({b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, {p0.x, p0.y, w, h}, 6.0f);
+  dl->PushClipRect(p0, ImVec2(p0.x + w, p0.y + h), true);
+  auto rect = [&](double x0, double y0, double x1, double y1, ImU32 fill, ImU32 line, float thick = 1.0f) {
+    float ax, ay, bx, by;
+    m.apply(x0, y1, ax, ay);
+    m.apply(x1, y0, bx, by);
+    if (fill) dl->AddRectFilled(ImVec2(ax, ay), ImVec2(bx, by), fill);
+    if (line) dl->AddRect(ImVec2(ax, ay), ImVec2(bx, by), line, 0, 0, thick);
+  };
+  std::vector<ImVec2> outline;
+  for (const Vec2& p : site.plan) {
+    float px, py;
+    m.apply(p[0], p[1], px, py);
+    outline.emplace_back(px, py);
+  }
+  dl->AddPolyline(outline.data(), int(outline.size()), IM_COL32(150, 150, 160, 255), ImDrawFlags_Closed, 1.0f);
+  const double z0 = site.base + planStorey_ * site.storeyHeight, z1 = z0 + site.storeyHeight;
+  const ImU32 selLine = IM_COL32(255, 215, 50, 255);
+  // Generated seeds (not editable) dimmed, then the file's own entries.
+  for (std::size_t i = hand_.seeds.size(); i < site.seeds.size(); ++i)
+    if (site.seeds[i].storey == planStorey_) {
+      const growth::Seed& s = site.seeds[i];
+      rect(s.at[0], s.at[1], s.at[0] + s.size[0], s.at[1] + s.size[1], IM_COL32(70, 110, 80, 160), 0);
+    }
+  for (std::size_t i = 0; i < hand_.circulation.size(); ++i) {
+    const growth::Box& c = hand_.circulation[i];
+    if (c.lo[2] < z1 - 1e-9 && c.hi[2] > z0 + 1e-9)
+      rect(c.lo[0], c.lo[1], c.hi[0], c.hi[1], IM_COL32(80, 90, 110, 255), 0);
+  }
+  for (const growth::Rect& c : hand_.cores) rect(c.u0, c.v0, c.u1, c.v1, IM_COL32(120, 120, 125, 255), 0);
+  for (std::size_t i = 0; i < hand_.seeds.size(); ++i)
+    if (hand_.seeds[i].storey == planStorey_) {
+      const growth::Seed& s = hand_.seeds[i];
+      rect(s.at[0], s.at[1], s.at[0] + s.size[0], s.at[1] + s.size[1], colourOf(std::uint32_t(i + 1), 0.9f),
+           IM_COL32(20, 20, 20, 255));
+    }
+  if (selected_ >= 0) {
+    if (kind_ == SiteItem::Core) {
+      const growth::Rect& c = hand_.cores[selected_];
+      rect(c.u0, c.v0, c.u1, c.v1, 0, selLine, 2.0f);
+    } else if (kind_ == SiteItem::Circulation) {
+      const growth::Box& c = hand_.circulation[selected_];
+      rect(c.lo[0], c.lo[1], c.hi[0], c.hi[1], 0, selLine, 2.0f);
+    } else {
+      const growth::Seed& s = hand_.seeds[selected_];
+      rect(s.at[0], s.at[1], s.at[0] + s.size[0], s.at[1] + s.size[1], 0, selLine, 2.0f);
+    }
+  }
+  dl->PopClipRect();
+  // Click picks what lies under the mouse (seeds, then circulation, then cores, on this storey);
+  // dragging moves it in 0.5 m steps, one undo step per drag.
+  ImGui::InvisibleButton("plan", ImVec2(w, h));
+  const ImVec2 mp = ImGui::GetIO().MousePos;
+  double mx, my;
+  m.invert(mp.x, mp.y, mx, my);
+  if (ImGui::IsItemActivated()) {
+    dragging_ = false;
+    selected_ = -1;
+    if (const auto pick = pickItem(hand_, site, planStorey_, mx, my)) {
+      kind_ = pick->first;
+      selected_ = pick->second;
+      dragging_ = true;
+      dragX_ = mx, dragY_ = my;
+      dragFrom_ = hand_;
+    }
+  }
+  if (dragging_ && ImGui::IsItemActive() && selected_ >= 0) {
+    const std::string merge = "site" + std::to_string(host.object) + itemName(kind_) + std::to_string(selected_);
+    const std::string label = "Move " + std::string(itemName(kind_)) + " " + std::to_string(selected_ + 1);
+    if (const auto r = dragItem(spec, dragFrom_, hand_, kind_, selected_, mx - dragX_, my - dragY_)) {
+      commitSite(host, *r, label, merge, false);
+      siteEditOpen_ = true;
+    }
+  }
+  if (ImGui::IsItemDeactivated()) dragging_ = false;
+}
+
+void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
+  if (!site_) {
+    ImGui::TextWrapped("The site has a fault (above); fix it in the site file first.");
+    return;
+  }
+  const growth::Site& site = *site_;
+  const std::string name = host.doc->find(host.object)->name;
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderInt("Plan storey", &planStorey_, 0, site.storeys - 1);
+  ImGui::SameLine();
+  ImGui::TextDisabled("drag to move");
+  drawPlan(host, spec, ImGui::GetContentRegionAvail().x, 120);
+
+  int kind = static_cast<int>(kind_);
+  for (int k = 0; k < 3; ++k) {
+    if (k) ImGui::SameLine();
+    char label[40];
+    std::snprintf(label, sizeof label, "%s (%d)",
+                  k == 0   ? "Cores"
+                  : k == 1 ? "Circulation"
+                           : "Seeds",
+                  itemCount(hand_, SiteItem(k)));
+    if (ImGui::RadioButton(label, &kind, k)) {
+      kind_ = SiteItem(k);
+      selected_ = -1;
+    }
+  }
+  if (site.seeds.size() > hand_.seeds.size())
+    ImGui::TextDisabled("%zu more seeds generated at exits (generate_seeds; not editable here)",
+                        site.seeds.size() - hand_.seeds.size());
+  const int count = itemCount(hand_, kind_);
+  if (ImGui::Button("Add")) add(host, kind_);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(selected_ < 0);
+  if (ImGui::Button("Delete")) removeSelected(host);
+  ImGui::EndDisabled();
+
+  if (selected_ >= 0 && selected_ < count) {
+    const std::string merge = "site" + std::to_string(host.object) + itemName(kind_) + std::to_string(selected_);
+    const std::string label =
+        "Edit " + std::string(itemName(kind_)) + " " + std::to_string(selected_ + 1) + " of " + name;
+    SiteEditResult r;
+    bool changed = false;
+    ImGui::PushItemWidth(-90);
+    if (kind_ == SiteItem::Core) {
+      const growth::Rect& c = hand_.cores[selected_];
+      double at[2] = {c.u0, c.v0}, size[2] = {c.u1 - c.u0, c.v1 - c.v0};
+      changed |= dragPair("at (m)", at);
+      changed |= dragPair("size (m)", size, 0.1, 1e6);
+      if (changed) r = setCore(spec, selected_, {at[0], at[1], at[0] + size[0], at[1] + size[1]});
+    } else if (kind_ == SiteItem::Circulation) {
+      const growth::Box& c = hand_.circulation[selected_];
+      double at[3] = {c.lo[0], c.lo[1], c.lo[2]}, size[3] = {c.size(0), c.size(1), c.size(2)};
+      const double lo = -1e6, hi = 1e6, smin = 0.1;
+      changed |= ImGui::DragScalarN("at (m)", ImGuiDataType_Double, at, 3, 0.1f, &lo, &hi, "%.2f");
+      changed |= ImGui::DragScalarN("size (m)", ImGuiDataType_Double, size, 3, 0.1f, &smin, &hi, "%.2f");
+      if (changed)
+        r = setCirculation(spec, selected_,
+                           {{at[0], at[1], at[2]}, {at[0] + size[0], at[1] + size[1], at[2] + size[2]}});
+    } else {
+      growth::Seed s = hand_.seeds[selected_];
+      double at[2] = {s.at[0], s.at[1]}, size[2] = {s.size[0], s.size[1]};
+      changed |= dragPair("at (m)", at);
+      changed |= dragPair("size (m)", size, 0.1, 1e6);
+      changed |= ImGui::InputInt("storey", &s.storey);
+      int byVolume = s.targetVolume > 0;
+      double target = byVolume ? s.targetVolume : s.targetArea;
+      const double tmin = 1, tmax = 1e6;
+      changed |= ImGui::DragScalar(byVolume ? "target m³" : "target m²", ImGuiDataType_Double, &target, 1.0f, &tmin,
+                                   &tmax, "%.0f");
+      const int wasByVolume = byVolume;
+      ImGui::RadioButton("floor area", &byVolume, 0);
+      ImGui::SameLine();
+      ImGui::RadioButton("volume", &byVolume, 1);
+      if (byVolume != wasByVolume) {
+        // Keep the size of the target: a volume is the area times one storey.
+        target = byVolume ? target * site.storeyHeight : target / site.storeyHeight;
+        changed = true;
+      }
+      s.targetArea = byVolume ? 0 : target;
+      s.targetVolume = byVolume ? target : 0;
+      char behaviour[64];
+      std::snprintf(behaviour, sizeof behaviour, "%s", s.behaviour.c_str());
+      if (ImGui::InputText("behaviour", behaviour, sizeof behaviour, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        s.behaviour = behaviour;
+        changed = true;
+      }
+      ImGui::TextUnformatted("locked:");
+      for (growth::Side side : growth::kAllSides) {
+        ImGui::SameLine();
+        bool locked = s.locked[int(side)];
+        const std::string sideLabel(growth::sideName(side));
+        if (ImGui::Checkbox(sideLabel.c_str(), &locked)) {
+          s.locked[int(side)] = locked;
+          changed = true;
+        }
+      }
+      s.at = Vec2(at[0], at[1]);
+      s.size = Vec2(size[0], size[1]);
+      if (changed) r = setSeed(spec, selected_, s);
+    }
+    ImGui::PopItemWidth();
+    if (changed) {
+      commitSite(host, r, label, merge, false);
+      siteEditOpen_ = true;
+    }
+  }
+  if (ImGui::BeginListBox("##items", ImVec2(-1, 4.5f * ImGui::GetTextLineHeightWithSpacing()))) {
+    for (int i = 0; i < count; ++i) {
+      char text[120];
+      if (kind_ == SiteItem::Core) {
+        const growth::Rect& c = hand_.cores[i];
+        std::snprintf(text, sizeof text, "core %d: at (%.1f, %.1f), %.1f x %.1f m", i + 1, c.u0, c.v0, c.u1 - c.u0,
+                      c.v1 - c.v0);
+      } else if (kind_ == SiteItem::Circulation) {
+        const growth::Box& c = hand_.circulation[i];
+        std::snprintf(text, sizeof text, "circulation %d: at (%.1f, %.1f, %.1f), %.1f x %.1f x %.1f m", i + 1, c.lo[0],
+                      c.lo[1], c.lo[2], c.size(0), c.size(1), c.size(2));
+      } else {
+        const growth::Seed& s = hand_.seeds[i];
+        std::snprintf(text, sizeof text, "seed %d: storey %d at (%.1f, %.1f), %s %.0f", i + 1, s.storey, s.at[0],
+                      s.at[1], s.targetArea > 0 ? "area" : "volume", s.targetArea > 0 ? s.targetArea : s.targetVolume);
+      }
+      ImGui::PushID(i);
+      if (ImGui::Selectable(text, selected_ == i)) {
+        selected_ = i;
+        if (kind_ == SiteItem::Seed) planStorey_ = hand_.seeds[i].storey;
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndListBox();
+  }
+  // A drag (or a run of edits of one field) is one undo step, closed when the field is let go;
+  // a refused value is logged then, once.
+  if (siteEditOpen_ && !ImGui::IsAnyItemActive()) {
+    siteEditOpen_ = false;
+    host.endDrag();
+    if (!siteError_.empty()) host.log("Site edit refused: " + siteError_, true);
+  }
+  if (!siteError_.empty()) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "refused: %s", siteError_.c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void GrowthPanel::drawStatistics(const GrowthHost& host) {
+  (void)host;
+  ImGui::Checkbox("View maps", &showViewMaps_);
+  ImGui::SameLine();
+  ImGui::TextDisabled("the four projections (Sec. 5.2)");
+  if (!inspectError_.empty() && failedFor_) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", inspectError_.c_str());
+    ImGui::PopTextWrapPos();
+    return;
+  }
+  if (!inspection_) {
+    ImGui::TextDisabled("measuring the model...");
+    return;
+  }
+  if (pendingFor_ || !host.current || running_ || !(inspection_->of == *specOf(host)))
+    ImGui::TextDisabled("(of the model before the last change; measuring...)");
+  if (ImGui::BeginTable("table81", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    ImGui::TableSetupColumn("Table 8.1", ImGuiTableColumnFlags_WidthStretch, 0.45f);
+    ImGui::TableSetupColumn("this model", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    ImGui::TableHeadersRow();
+    for (const auto& [k, v] : statisticsRows(inspection_->stats)) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(k.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(v.c_str());
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("occupants: Type A > 85 m² five, B 50-85 m² three, C 30-50 m² one");
+}
+
+void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float h) {
+  const GrowthSpec* spec = specOf(host);
+  if (!spec) return;
+  const DocObject* o = host.doc->find(host.object);
+  parseSite(*spec);
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Growth", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Text("%s: growth site (Ng, Ch. 4)", o->name.c_str());
+  if (!summary_.empty()) ImGui::TextWrapped("%s", summary_.c_str());
+  if (!host.error.empty()) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", host.error.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  statsShown_ = false;
+  if (ImGui::BeginTabBar("growthTabs")) {
+    const char* names[3] = {"Grow", "Site", "Statistics"};
+    for (int t = 0; t < 3; ++t) {
+      const ImGuiTabItemFlags flags = wantTab_ == t ? ImGuiTabItemFlags_SetSelected : 0;
+      if (!ImGui::BeginTabItem(names[t], nullptr, flags)) continue;
+      ImGui::BeginChild("tab");
+      if (t == 0) drawGrow(host, *spec);
+      if (t == 1) drawSite(host, *spec);
+      if (t == 2) {
+        statsShown_ = true;
+        drawStatistics(host);
+      }
+      ImGui::EndChild();
+      ImGui::EndTabItem();
+    }
+    wantTab_ = -1;
+    ImGui::EndTabBar();
+  }
+  ImGui::End();
+  if (statsShown_ || showViewMaps_) requestInspection(host, *spec);
+}
+
+void GrowthPanel::uploadViewMaps() {
+  if (!inspection_ || texturesOf_ == inspection_.get()) return;
+  if (!textures_[0]) glGenTextures(4, textures_.data());
+  for (growth::ViewDirection d : growth::kViewDirections) {
+    const int k = int(d);
+    images_[k] = viewMapImage(inspection_->views[d], d, 320);
+    glBindTexture(GL_TEXTURE_2D, textures_[k]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, images_[k].width, images_[k].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 images_[k].rgba.data());
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  texturesOf_ = inspection_.get();
+}
+
+void GrowthPanel::drawViewMaps(const GrowthHost& host, float x, float y, float w) {
+  if (!showViewMaps_ || !specOf(host)) return;
+  uploadViewMaps();
+  // Two maps a row, as wide as the 3D view allows (at most 320 pixels each).
+  const float iw = std::clamp(std::floor((w - 40) / 2), 120.0f, 320.0f);
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(2 * iw + 30, 0), ImGuiCond_Appearing);
+  if (!ImGui::Begin("View maps (Sec. 5.2)", &showViewMaps_)) {
+    ImGui::End();
+    return;
+  }
+  if (!inspection_ || !texturesOf_) {
+    ImGui::TextDisabled("measuring the model...");
+    ImGui::End();
+    return;
+  }
+  ImGui::TextDisabled("unit ids in false colour, cores and circulation grey; as seen from each side");
+  for (growth::ViewDirection d : growth::kViewDirections) {
+    const int k = int(d);
+    if (k % 2) ImGui::SameLine();
+    ImGui::BeginGroup();
+    const growth::ViewMap& map = inspection_->views[d];
+    int seen = 0;
+    for (const auto& [id, a] : map.areas())
+      if (id != growth::kEmptyId && id != growth::kObstacleId && a > 0) ++seen;
+    ImGui::Text("from %s: %d units seen", viewDirectionName(d), seen);
+    const float ih = iw * float(images_[k].height) / float(std::max(images_[k].width, 1));
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(textures_[k])), ImVec2(iw, ih));
+    if (ImGui::IsItemHovered()) {
+      const ImVec2 mp = ImGui::GetIO().MousePos, ip = ImGui::GetItemRectMin();
+      const int px = std::clamp(int((mp.x - ip.x) / iw * images_[k].width), 0, images_[k].width - 1);
+      const int py = std::clamp(int((mp.y - ip.y) / ih * images_[k].height), 0, images_[k].height - 1);
+      const std::uint32_t id = images_[k].idAt(px, py);
+      if (id == growth::kEmptyId)
+        ImGui::SetTooltip("nothing");
+      else if (id == growth::kObstacleId)
+        ImGui::SetTooltip("a core or circulation");
+      else
+        ImGui::SetTooltip("unit %u: %.1f m² seen from %s", id, map.area(id), viewDirectionName(d));
+    }
+    ImGui::EndGroup();
+  }
   ImGui::End();
 }
 

@@ -1,12 +1,26 @@
 #pragma once
-// The growth panel of a selected growth site (Ng, Ch. 4), right of the 3D view: the site's
-// summary, the run's seed, and Step, Run, Pause, Grow to the end and Reset. The Document holds
-// how many steps the site grows (core/growth_spec.h); every button commits a new count and the
-// object's Scene build grows it off the UI thread (core/live_sync.h), so the window never
-// waits and a whole Run is one undo step.
+// The growth panel of a selected growth site (Ng, Ch. 4), right of the 3D view, in three tabs:
+//  - Grow: the site's summary, the run's seed, Step, Run, Pause, Grow to the end and Reset, and
+//    the slice (Fig. 8.3): everything at or above a height is hidden in the 3D view, a view
+//    setting that never changes the Document; and the 3D view's shadows with the sun's azimuth
+//    and elevation (Fig. 8.5), view settings too;
+//  - Site: the hand-placed cores, circulation and seeds, listed, typed or dragged in a plan view,
+//    added and deleted; a seed's target, behaviour and locked faces (editor/growth_edits.h);
+//  - Statistics: Table 8.1 for the model as grown (editor/growth_inspect.h), and the view-map
+//    inspector, a window with the four view maps in false colour.
+// The Document holds the site and how many steps it grows (core/growth_spec.h); every change is
+// one commit and the object's Scene build grows it off the UI thread (core/live_sync.h), so the
+// window never waits and a whole Run is one undo step. A refused change names the field and
+// leaves the Document as it was.
 #include "core/document.h"
+#include "editor/growth_edits.h"
+#include "editor/growth_inspect.h"
 
+#include <array>
 #include <functional>
+#include <future>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,11 +30,16 @@ struct GrowthHost {
   const Document* doc = nullptr;
   ObjectId object = 0;
   bool current = true;                // the Scene shows the current document
+  bool wait = false;                  // scripted runs: measure the model at once, not in the background
   std::string error;                  // the kernel's message for the object
   std::vector<std::string> warnings;  // of its last build (growth/kernel.h: when every unit stopped)
   std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
   std::function<void()> endDrag;
   std::function<void(const std::string&, bool)> log;
+  // The 3D view's shadows and sun (Fig. 8.5), view settings the Grow tab changes; may be null.
+  bool* shadows = nullptr;
+  double* sunAzimuth = nullptr;
+  double* sunElevation = nullptr;
 };
 
 class GrowthPanel {
@@ -28,16 +47,69 @@ class GrowthPanel {
   // Advances a running growth by one step once the Scene has caught up with the last one.
   void update(const GrowthHost& host);
   void draw(const GrowthHost& host, float x, float y, float w, float h);
-  void reset() { running_ = false; }
+  // The view-map inspector, a window of its own over the 3D view at (x, y), w wide, when first shown.
+  void drawViewMaps(const GrowthHost& host, float x, float y, float w);
+  void reset();
   // The buttons, also the actions growth.step and growth.run.
   void step(const GrowthHost& host);
   void toggleRun(const GrowthHost& host);
   bool running() const { return running_; }
+  // Site editing, also the actions growth.add_core, growth.add_circulation, growth.add_seed and
+  // growth.delete (of the entry selected in the Site tab).
+  void add(const GrowthHost& host, SiteItem item);
+  void removeSelected(const GrowthHost& host);
+  bool hasSelection() const { return selected_ >= 0; }
+  // The slice height, when slicing (growth.slice_down lowers it a storey, growth.slice_up raises
+  // it, past the top it is off).
+  std::optional<double> sliceHeight() const { return slicing_ ? std::optional<double>(slice_) : std::nullopt; }
+  void sliceStorey(const GrowthHost& host, int by);
+  // Shows a tab (0 Grow, 1 Site, 2 Statistics), also the actions growth.site and growth.statistics.
+  void showTab(int tab) { wantTab_ = tab; }
+  void toggleViewMaps() { showViewMaps_ = !showViewMaps_; }
+  bool viewMapsShown() const { return showViewMaps_; }
 
  private:
   void commitSteps(const GrowthHost& host, int steps, const std::string& label, const std::string& merge = {});
+  // Commits an edit's spec, or shows (and with `report`, logs) its refusal.
+  bool commitSite(const GrowthHost& host, const SiteEditResult& r, const std::string& label, const std::string& merge,
+                  bool report);
+  void parseSite(const GrowthSpec& spec);
+  void drawGrow(const GrowthHost& host, const GrowthSpec& spec);
+  void drawSite(const GrowthHost& host, const GrowthSpec& spec);
+  void drawPlan(const GrowthHost& host, const GrowthSpec& spec, float w, float h);
+  void drawStatistics(const GrowthHost& host);
+  // Starts (or, waiting, does) measuring the model when the shown one is not of `spec`.
+  void requestInspection(const GrowthHost& host, const GrowthSpec& spec);
+  void pollInspection();
+  void uploadViewMaps();
+
   bool running_ = false;
-  std::string summaryOf_, summary_;  // the site text summarised, and the summary
+  std::string summaryOf_, summary_;   // the site text summarised, and the summary
+  std::optional<growth::Site> site_;  // of summaryOf_, when it parses
+  HandPlaced hand_;                   // the site file's own entries (of summaryOf_)
+
+  int wantTab_ = -1;
+  SiteItem kind_ = SiteItem::Core;
+  int selected_ = -1;
+  std::string siteError_;
+  int planStorey_ = 0;
+  bool dragging_ = false;
+  bool siteEditOpen_ = false;     // a site edit's merge is open (a field or the plan is held)
+  double dragX_ = 0, dragY_ = 0;  // where the drag started, meters
+  HandPlaced dragFrom_;           // the entries when the drag started
+
+  bool slicing_ = false;
+  double slice_ = 0;
+
+  bool statsShown_ = false;
+  bool showViewMaps_ = false;
+  std::shared_ptr<const GrowthInspection> inspection_;
+  std::future<std::shared_ptr<const GrowthInspection>> pending_;
+  std::optional<GrowthSpec> pendingFor_, failedFor_;
+  std::string inspectError_;
+  std::array<unsigned, 4> textures_{};
+  std::array<ViewMapImage, 4> images_;
+  const GrowthInspection* texturesOf_ = nullptr;
 };
 
 }  // namespace corbel::editor

@@ -5,6 +5,7 @@
 #include "render/gl.h"
 #include "render/shader_sources.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
@@ -117,9 +118,35 @@ unsigned linkProgram(const std::string& vert, const std::string& frag) {
   return linkSources(vs.c_str(), fs.c_str(), vert, frag);
 }
 
+Vec3 defaultSun() { return Vec3(0.45, -0.35, 0.82).normalized(); }
+
+Vec3 sunDirection(double azimuthDeg, double elevationDeg) {
+  const double a = glm::radians(azimuthDeg), e = glm::radians(elevationDeg);
+  return Vec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+}
+
+glm::mat4 lightViewProj(const BBox& box, const Vec3& sunIn) {
+  const Vec3 sun = sunIn.norm() > 0 ? sunIn.normalized() : defaultSun();
+  const Vec3 c = box.empty() ? Vec3(0.0) : box.center();
+  const double r = box.empty() ? 1.0 : std::max(0.5 * box.size().norm(), 1e-3);
+  const glm::dvec3 centre(c[0], c[1], c[2]), toSun(sun[0], sun[1], sun[2]);
+  // Up: +Z unless the sun is (nearly) overhead.
+  const glm::dvec3 up = std::abs(sun[2]) > 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+  const glm::dmat4 view = glm::lookAt(centre + toSun * (2.0 * r), centre, up);
+  const glm::dmat4 proj = glm::ortho(-r, r, -r, r, r, 3.0 * r);
+  return glm::mat4(proj * view);
+}
+
 struct Renderer::Impl {
-  GLuint meshProgram = 0, lineProgram = 0, backgroundProgram = 0;
-  Buffer faces, highlightFaces, edges, grid, overlayLines, overlayTriangles, topLines, topTriangles;
+  GLuint meshProgram = 0, lineProgram = 0, backgroundProgram = 0, shadowProgram = 0;
+  Buffer faces, highlightFaces, edges, grid, overlayLines, overlayTriangles, topLines, topTriangles, ground;
+  // The shadow map: a depth texture and its framebuffer, made on first use.
+  GLuint shadowFbo = 0, shadowTexture = 0;
+  int shadowSize = 2048;
+  BBox bounds;  // of the visible faces
+  // Renders the depth of the faces from the sun into the shadow map, and puts the framebuffer,
+  // viewport and scissor back as they were.
+  void renderShadowMap(const glm::mat4& light);
   GLuint emptyVao = 0;
   std::uint64_t sceneRevision = ~0ull;
   std::vector<ObjectId> visibleIds;
@@ -133,7 +160,9 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->meshProgram = linkProgram("mesh.vert.glsl", "mesh.frag.glsl");
   impl_->lineProgram = linkProgram("line.vert.glsl", "line.frag.glsl");
   impl_->backgroundProgram = linkProgram("background.vert.glsl", "background.frag.glsl");
+  impl_->shadowProgram = linkProgram("shadow.vert.glsl", "shadow.frag.glsl");
   impl_->faces.create({3, 3, 3});
+  impl_->ground.create({3, 3, 3});
   impl_->highlightFaces.create({3, 3, 3});
   impl_->edges.create({3, 4});
   impl_->grid.create({3, 4});
@@ -146,8 +175,11 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
 
 Renderer::~Renderer() {
   for (Buffer* b : {&impl_->faces, &impl_->highlightFaces, &impl_->edges, &impl_->grid, &impl_->overlayLines,
-                    &impl_->overlayTriangles, &impl_->topLines, &impl_->topTriangles})
+                    &impl_->overlayTriangles, &impl_->topLines, &impl_->topTriangles, &impl_->ground})
     b->destroy();
+  if (impl_->shadowFbo) glDeleteFramebuffers(1, &impl_->shadowFbo);
+  if (impl_->shadowTexture) glDeleteTextures(1, &impl_->shadowTexture);
+  glDeleteProgram(impl_->shadowProgram);
   glDeleteVertexArrays(1, &impl_->emptyVao);
   glDeleteProgram(impl_->meshProgram);
   glDeleteProgram(impl_->lineProgram);
@@ -199,7 +231,8 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
   for (auto e : mesh.edges()) {
     auto h = mesh.halfedge_handle(e, 0);
     auto f0 = mesh.face_handle(h), f1 = mesh.opposite_face_handle(h);
-    const bool on = (f0.is_valid() && visible(scene.faceObject(f0))) || (f1.is_valid() && visible(scene.faceObject(f1)));
+    const bool on =
+        (f0.is_valid() && visible(scene.faceObject(f0))) || (f1.is_valid() && visible(scene.faceObject(f1)));
     if (!on) continue;
     // An edge inside one planar face (a kernel triangulated a face with holes) is not drawn,
     // except in wireframe: outlines show the model's faces, not how they were cut up.
@@ -234,10 +267,25 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
   impl_->grid.upload(gridData);
   impl_->gridCenter = Vec3(cx, cy, 0.0);
   impl_->gridRadius = half * step;
+  impl_->bounds = box;
+  // The ground that receives shadows, facing up: the grid's square, or three times the radius of
+  // the scene's bounding sphere if that is larger (long shadows of a low sun).
+  const double groundR = std::max(half * step, box.empty() ? 0.0 : 1.5 * box.size().norm());
+  const float g0x = float(cx - groundR), g1x = float(cx + groundR);
+  const float g0y = float(cy - groundR), g1y = float(cy + groundR);
+  const float gc[3] = {0.80f, 0.79f, 0.76f};
+  std::vector<float> groundData;
+  for (auto [px, py] : {std::pair{g0x, g0y}, {g1x, g0y}, {g1x, g1y}, {g0x, g0y}, {g1x, g1y}, {g0x, g1y}})
+    groundData.insert(groundData.end(), {px, py, 0.f, 0.f, 0.f, 1.f, gc[0], gc[1], gc[2]});
+  impl_->ground.upload(groundData);
 }
 
 void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int height, const RenderSettings& settings) {
   Impl& r = *impl_;
+  const Vec3 sunDir = settings.sun && settings.sun->norm() > 0 ? settings.sun->normalized() : defaultSun();
+  const bool shadows = settings.shadows && !settings.wireframe;
+  const glm::mat4 light = lightViewProj(r.bounds, sunDir);
+  if (shadows) r.renderShadowMap(light);
   glViewport(x, y, width, height);
   glEnable(GL_SCISSOR_TEST);
   glScissor(x, y, width, height);
@@ -263,8 +311,18 @@ void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int heig
 
   glUseProgram(r.meshProgram);
   setMat(r.meshProgram, "uViewProj", viewProj);
-  const glm::vec3 sun = glm::normalize(glm::vec3(0.45f, -0.35f, 0.82f));
+  const glm::vec3 sun = settings.sun ? glm::vec3(float(sunDir[0]), float(sunDir[1]), float(sunDir[2]))
+                                     : glm::normalize(glm::vec3(0.45f, -0.35f, 0.82f));
   setVec3(r.meshProgram, "uSunDir", sun.x, sun.y, sun.z);
+  glUniform1i(glGetUniformLocation(r.meshProgram, "uShadows"), shadows ? 1 : 0);
+  glUniform1i(glGetUniformLocation(r.meshProgram, "uShadowMap"), 1);
+  if (shadows) {
+    setMat(r.meshProgram, "uLightViewProj", light);
+    glUniform1f(glGetUniformLocation(r.meshProgram, "uShadowTexel"), 1.0f / float(r.shadowSize));
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
+    glActiveTexture(GL_TEXTURE0);
+  }
   setVec3(r.meshProgram, "uEye", float(eye[0]), float(eye[1]), float(eye[2]));
   setVec3(r.meshProgram, "uTintColor", 1.0f, 0.62f, 0.15f);
   if (!settings.wireframe) {
@@ -276,6 +334,13 @@ void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int heig
     glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.35f);
     glBindVertexArray(r.highlightFaces.vao);
     glDrawArrays(GL_TRIANGLES, 0, r.highlightFaces.count);
+    if (shadows) {
+      // The ground, pushed further back than the faces so floors at z = 0 win over it.
+      glPolygonOffset(4.0f, 16.0f);
+      glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.0f);
+      glBindVertexArray(r.ground.vao);
+      glDrawArrays(GL_TRIANGLES, 0, r.ground.count);
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
   r.overlayTriangles.upload(overlay_.triangleVertices());
@@ -322,6 +387,62 @@ void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int heig
   glUseProgram(0);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
+  if (shadows) {
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+  }
+}
+
+void Renderer::Impl::renderShadowMap(const glm::mat4& light) {
+  Impl& r = *this;
+  GLint drawFbo = 0, readFbo = 0, viewport[4] = {}, scissor[4] = {};
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFbo);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_SCISSOR_BOX, scissor);
+  const GLboolean scissorOn = glIsEnabled(GL_SCISSOR_TEST);
+  if (!r.shadowTexture) {
+    glGenTextures(1, &r.shadowTexture);
+    glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, r.shadowSize, r.shadowSize, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                 nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &r.shadowFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.shadowFbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, r.shadowTexture, 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, r.shadowFbo);
+  glDisable(GL_SCISSOR_TEST);
+  glViewport(0, 0, r.shadowSize, r.shadowSize);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(2.0f, 4.0f);
+  glUseProgram(r.shadowProgram);
+  setMat(r.shadowProgram, "uLightViewProj", light);
+  for (const Buffer* b : {&r.faces, &r.highlightFaces}) {
+    glBindVertexArray(b->vao);
+    glDrawArrays(GL_TRIANGLES, 0, b->count);
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFbo));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFbo));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
+  if (scissorOn) glEnable(GL_SCISSOR_TEST);
 }
 
 OffscreenTarget::OffscreenTarget(int width, int height, int samples)

@@ -6,6 +6,8 @@
 #include "render/image.h"
 #include "render/overlay.h"
 
+#include <glm/glm.hpp>
+
 #include <functional>
 #include <memory>
 #include <optional>
@@ -21,7 +23,20 @@ struct RenderSettings {
   // Objects to draw; all when empty.
   std::function<bool(ObjectId)> visible;
   std::optional<ObjectId> highlight;
+  // The sun: the direction towards it (normalised when drawn); none = the fixed studio sun of
+  // shaders/mesh.frag.glsl. With `shadows` (Ng, Fig. 8.5) a shadow map is rendered from the sun
+  // over the visible faces and a ground plane at z = 0 under the grid receives them too.
+  std::optional<Vec3> sun;
+  bool shadows = false;
 };
+
+// The studio sun (towards it), and a sun by azimuth (degrees from +X towards +Y, as the camera's)
+// and elevation above the ground.
+Vec3 defaultSun();
+Vec3 sunDirection(double azimuthDeg, double elevationDeg);
+// The sun's view for the shadow map: orthographic along -sun, fitted so that the sphere around
+// `box` lies inside the clip volume (x, y, z in [-1, 1]).
+glm::mat4 lightViewProj(const BBox& box, const Vec3& sun);
 
 class Renderer {
  public:

@@ -1,6 +1,11 @@
 // The growth kernel on the Alpha-like example: one simulation step (early and mid-run), the
 // view maps of a grown model, and a full run. Results: docs/growth.md.
+#include "core/atomic_file.h"
+#include "core/scene.h"
+#include "editor/growth_edits.h"
+#include "editor/growth_inspect.h"
 #include "growth/engine.h"
+#include "growth/kernel.h"
 #include "growth/site.h"
 #include "render/gl_view_mapper.h"
 #include "render/headless_context.h"
@@ -110,6 +115,39 @@ void BM_FullRunBeta(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FullRunBeta)->Unit(benchmark::kMillisecond);
+
+// The site editor (editor/growth_edits.h): one edit checked as the build would check it (parse,
+// validate, the engine's constructor), which the panel does on every frame of a drag; Alpha (72
+// seeds) and Beta (132). And the slice of grown Alpha's mesh (editor/growth_inspect.h).
+corbel::GrowthSpec specOf(const std::string& name) {
+  corbel::GrowthSpec spec;
+  spec.site = corbel::readFile(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + name, 1 << 24);
+  return spec;
+}
+
+void BM_SiteEditCheck(benchmark::State& state) {
+  const corbel::GrowthSpec spec = specOf(state.range(0) ? "growth-beta.json" : "growth-alpha.json");
+  const auto hand = corbel::editor::handPlaced(spec.site);
+  const Rect core = hand.cores.at(0);
+  for (auto _ : state) {
+    const auto r = corbel::editor::setCore(spec, 0, core);  // the same place: valid, full check
+    if (!r.spec) state.SkipWithError(r.error.c_str());
+    benchmark::DoNotOptimize(r.spec);
+  }
+  state.counters["seeds"] = double(parseSite(spec.site).seeds.size());
+}
+BENCHMARK(BM_SiteEditCheck)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_SliceGrownAlpha(benchmark::State& state) {
+  corbel::GrowthSpec spec = specOf("growth-alpha.json");
+  spec.steps = -1;
+  const GrownModel grown = grow(spec);
+  corbel::MeshData mesh;
+  for (const Unit& u : grown.units) mesh.append(unitMesh(u));
+  for (auto _ : state) benchmark::DoNotOptimize(corbel::editor::sliceBelow(mesh, 9.0));
+  state.counters["faces"] = double(mesh.faces.size());
+}
+BENCHMARK(BM_SliceGrownAlpha)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

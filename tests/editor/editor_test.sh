@@ -19,7 +19,11 @@
 #  8. form completion on the grown Alpha site: seeds from the model, Generate, Fit, Extrude adds
 #     unit objects that build as closed shells (the shot differs from the site alone); undone, the
 #     document is the untouched example (nothing to recover); redone (Ctrl+Y), the same units.
-#  9. a town (the old-town example): the next building picked and its type overridden (scripted
+#  9. the growth site editor on Alpha: Add Core (a scripted action) saves a fifth core, 3 x 3 m at
+#     the envelope's first free grid point (0, 0), and the site still builds as closed shells;
+#     sliced two storeys down with the statistics and the view maps shown, the shot differs from
+#     the site alone; undone, the document is the untouched example (nothing to recover).
+# 10. a town (the old-town example): the next building picked and its type overridden (scripted
 #     actions) is saved as an override and the 3D view differs from the town as styled; undone, the
 #     document is the untouched example (nothing to recover).
 set -euo pipefail
@@ -143,6 +147,25 @@ test -f "$work/state/recovery.corbel" && { echo "undo should leave the example u
 run --recover no --select "Alpha" --actions "${completing[0]},edit.undo,edit.redo_y" --autosave-seconds 0 \
   --quit-after-frames 14 "$alpha"
 cmp -s "$work/state/recovery.corbel" "$work/completed.corbel" || { echo "redo should bring back the same units"; exit 1; }
+echo "== growth site editor: add a core, slice, statistics, view maps, undo"
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions growth.add_core,growth.slice_down,growth.slice_down,growth.statistics,growth.view_maps \
+  --autosave-seconds 0 --screenshot "$work/growth-editor.png" --quit-after-frames 12 "$alpha"
+test -f "$work/state/recovery.corbel" || { echo "Add Core changed nothing (no recovery file)"; exit 1; }
+tr -d ' \n' < "$work/state/recovery.corbel" | grep -q '{"at":\[0.0,0.0\],"name":"core5","size":\[3.0,3.0\]}' ||
+  { echo "the added core should be saved at (0, 0), 3 x 3 m"; exit 1; }
+summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+[[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the site with a new core should build as closed shells: $summary"; exit 1; }
+"$check" "$work/growth-editor.png" "$work/site.png" 0.01
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions growth.add_core,edit.undo --autosave-seconds 0 --quit-after-frames 8 "$alpha"
+test -f "$work/state/recovery.corbel" && { echo "undoing Add Core should leave the example untouched"; exit 1; }
+echo "== shadows from a lowered sun (a view setting: nothing to recover)"
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions view.shadows,view.sun_lower,view.sun_lower --autosave-seconds 0 \
+  --screenshot "$work/growth-shadows.png" --quit-after-frames 8 "$alpha"
+test -f "$work/state/recovery.corbel" && { echo "shadows should not change the document"; exit 1; }
+"$check" "$work/growth-shadows.png" "$work/site.png" 0.05
 echo "== a town: pick a building, override its type, undo"
 town=$(dirname "$example")/town-oldtown.corbel
 rm -rf "$work/state"

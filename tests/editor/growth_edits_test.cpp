@@ -2,7 +2,14 @@
 // stopped, and never step a growth that already runs to the end.
 #include "editor/growth_edits.h"
 
+#include "core/document.h"
+#include "core/history.h"
+#include "core/project_io.h"
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 
 namespace corbel::editor {
 namespace {
@@ -27,6 +34,207 @@ TEST(NextStep, AGrowthToTheEndHasNoNextStep) {
   EXPECT_FALSE(nextStep(s, -1));
   s.steps = static_cast<int>(limits::kMaxGrowthSteps);
   EXPECT_FALSE(nextStep(s, -1));
+}
+
+}  // namespace
+}  // namespace corbel::editor
+
+// The site editor (editor/growth_edits.h) on a 20 × 10 m site of 2 storeys of 3 m with one
+// 2 × 2 m core at (10, 4), one landing and one seed. Expected values are the coordinates typed in.
+namespace corbel::editor {
+namespace {
+
+GrowthSpec smallSite() {
+  GrowthSpec s;
+  s.site = R"({"envelope": {"origin": [0, 0], "size": [20, 10]}, "storeys": 2, "storey_height": 3,)"
+           R"( "cores": [{"name": "lift", "at": [10, 4], "size": [2, 2]}],)"
+           R"( "circulation": [{"at": [13, 4, 0], "size": [2, 2, 3]}],)"
+           R"( "seeds": [{"at": [1, 1], "target_area": 40}]})";
+  return s;
+}
+
+Document withSite(const GrowthSpec& s) {
+  Document d;
+  d.add("Site", s);
+  return d;
+}
+
+TEST(SiteEdits, AnAddedCoreIsSavedWithItsCoordinatesAndReloaded) {
+  const GrowthSpec spec = smallSite();
+  const SiteEditResult r = setCore(spec, 1, {2, 6, 5, 9});
+  ASSERT_TRUE(r.spec) << r.error;
+  const HandPlaced h = handPlaced(r.spec->site);
+  ASSERT_EQ(h.cores.size(), 2u);
+  EXPECT_EQ(h.cores[0], (growth::Rect{10, 4, 12, 6}));  // the old core untouched
+  EXPECT_EQ(h.cores[1], (growth::Rect{2, 6, 5, 9}));
+  // In the saved project: at [2, 6], size [3, 3]; and read back, the same spec.
+  History history(withSite(spec));
+  Document d = history.current();
+  std::get<GrowthSpec>(d.objects[0].spec) = *r.spec;
+  history.commit(d, "Add a core");
+  const std::string text = serializeProject(history.current());
+  const auto saved = nlohmann::json::parse(text)["objects"][0]["growth"]["site"]["cores"];
+  ASSERT_EQ(saved.size(), 2u) << text;
+  EXPECT_EQ(saved[1]["at"], nlohmann::json::parse("[2.0, 6.0]"));
+  EXPECT_EQ(saved[1]["size"], nlohmann::json::parse("[3.0, 3.0]"));
+  const Document back = parseProject(text).document;
+  EXPECT_EQ(std::get<GrowthSpec>(back.objects[0].spec), *r.spec);
+  // The kept name, and one for the new core.
+  const auto j = nlohmann::json::parse(r.spec->site);
+  EXPECT_EQ(j["cores"][0]["name"], "lift");
+  EXPECT_EQ(j["cores"][1]["name"], "core 2");
+}
+
+TEST(SiteEdits, AnOverlappingCoreIsRefusedWithTheValidatorsMessageAndNothingChanges) {
+  const GrowthSpec spec = smallSite();
+  History history(withSite(spec));
+  const Document before = history.current();
+  // [11, 13] × [5, 7] overlaps the lift [10, 12] × [4, 6] by 1 × 1.
+  const SiteEditResult r = setCore(spec, 1, {11, 5, 13, 7});
+  EXPECT_FALSE(r.spec);
+  EXPECT_EQ(r.error, "growth.site.cores[1]: overlaps cores[0]");
+  if (r.spec) {
+    Document d = before;
+    std::get<GrowthSpec>(d.objects[0].spec) = *r.spec;
+    history.commit(d, "bad");
+  }
+  EXPECT_EQ(history.current(), before);
+  EXPECT_FALSE(history.canUndo());
+  // Touching along an edge is not overlapping.
+  EXPECT_TRUE(setCore(spec, 1, {12, 6, 13, 8}).spec);
+  // Outside the envelope, a negative size, a NaN, no such entry.
+  EXPECT_EQ(setCore(spec, 0, {18, 8, 21, 9}).error, "growth.site.cores[0]: lies outside the site envelope");
+  EXPECT_EQ(setCore(spec, 0, {5, 5, 4, 6}).error, "growth.site.cores[0].size: must be positive");
+  EXPECT_EQ(setCore(spec, 0, {std::nan(""), 5, 4, 6}).error, "growth.site.cores[0]: is not a finite number");
+  EXPECT_EQ(setCore(spec, 3, {1, 1, 2, 2}).error, "growth.site.cores[3]: no such entry");
+}
+
+TEST(SiteEdits, MovingAndDeletingUndoRestoreTheSiteExactly) {
+  const GrowthSpec spec = smallSite();
+  History history(withSite(spec));
+  const Document original = history.current();
+  const SiteEditResult moved = setCore(spec, 0, {16, 1, 18, 3});
+  ASSERT_TRUE(moved.spec) << moved.error;
+  Document d = original;
+  std::get<GrowthSpec>(d.objects[0].spec) = *moved.spec;
+  history.commit(d, "Move core");
+  const SiteEditResult gone = removeItem(*moved.spec, SiteItem::Circulation, 0);
+  ASSERT_TRUE(gone.spec) << gone.error;
+  EXPECT_TRUE(handPlaced(gone.spec->site).circulation.empty());
+  EXPECT_EQ(nlohmann::json::parse(gone.spec->site).count("circulation"), 0u);  // no empty list left
+  d = history.current();
+  std::get<GrowthSpec>(d.objects[0].spec) = *gone.spec;
+  history.commit(d, "Delete circulation");
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(std::get<GrowthSpec>(history.current().objects[0].spec), *moved.spec);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), original);
+  EXPECT_EQ(removeItem(spec, SiteItem::Seed, 1).error, "growth.site.seeds[1]: no such entry");
+}
+
+TEST(SiteEdits, SeedsKeepTheirTargetBehaviourAndLockedFaces) {
+  const GrowthSpec spec = smallSite();
+  growth::Seed s;
+  s.at = Vec2(4, 5);
+  s.size = Vec2(3, 4);
+  s.storey = 0;
+  s.targetVolume = 150;
+  s.locked[int(growth::Side::PosX)] = true;
+  s.locked[int(growth::Side::Top)] = true;
+  const SiteEditResult r = setSeed(spec, 0, s);
+  ASSERT_TRUE(r.spec) << r.error;
+  const auto j = nlohmann::json::parse(r.spec->site)["seeds"][0];
+  EXPECT_EQ(j["at"], nlohmann::json::parse("[4.0, 5.0]"));
+  EXPECT_EQ(j["size"], nlohmann::json::parse("[3.0, 4.0]"));
+  EXPECT_EQ(j["target_volume"], 150.0);
+  EXPECT_FALSE(j.contains("target_area"));  // the old target gone: exactly one
+  EXPECT_EQ(j["locked"], nlohmann::json::parse(R"(["+x", "top"])"));
+  EXPECT_EQ(j["behaviour"], "view");
+  const growth::Seed back = handPlaced(r.spec->site).seeds.at(0);
+  EXPECT_EQ(back.locked, s.locked);
+  EXPECT_EQ(back.targetVolume, 150.0);
+  EXPECT_EQ(back.targetArea, 0.0);
+  // Unlocking every face drops the list.
+  s.locked = {};
+  EXPECT_FALSE(nlohmann::json::parse(setSeed(spec, 0, s).spec->site)["seeds"][0].contains("locked"));
+
+  // Refusals name the field: the validator's, and the engine's.
+  growth::Seed bad = s;
+  bad.size = Vec2(2.5, 3);
+  EXPECT_EQ(setSeed(spec, 0, bad).error, "growth.site.seeds[0].size: a seed is at least 3 m x 3 m (Sec. 5.3)");
+  bad = s;
+  bad.at = Vec2(9, 4);  // [9, 12] × [4, 8] meets the lift's 1 m clearance
+  EXPECT_EQ(setSeed(spec, 0, bad).error, "growth.site.seeds[0]: lies within the clearance of cores[0]");
+  bad = s;
+  bad.behaviour = "wander";
+  EXPECT_EQ(setSeed(spec, 0, bad).error, "growth.site.seeds[0].behaviour: no behaviour named \"wander\"");
+  bad = s;
+  bad.targetArea = 30;  // and the volume: two targets
+  EXPECT_EQ(setSeed(spec, 0, bad).error, "growth.site.seeds[0]: needs exactly one of target_area and target_volume");
+  bad = s;
+  bad.storey = 1;  // on the upper storey, nothing under it and no core within reach
+  bad.at = Vec2(1, 1);
+  const std::string unsupported = setSeed(spec, 0, bad).error;
+  EXPECT_EQ(unsupported.rfind("growth.site.seeds[0]: is not supported", 0), 0u) << unsupported;
+  bad.storey = 2;
+  EXPECT_EQ(setSeed(spec, 0, bad).error, "growth.site.seeds[0].storey: must lie in 0..1");
+}
+
+TEST(SiteEdits, AddFindsTheFirstFreePlaceOnTheGrid) {
+  const growth::Site site = growth::parseSite(smallSite().site);
+  // Row y = 0: x = 0 would overlap the seed's clearance? Cores keep no clearance from seeds in
+  // the validator, but the seed's clearance from the new core is checked: the seed [1, 4] × [1, 4]
+  // must be 1 m from the core, so the first core of 2 × 2 on row 0 is at x = 5 ([4, 5] is the gap).
+  const auto core = freeCoreSpot(site, Vec2(2, 2));
+  ASSERT_TRUE(core);
+  EXPECT_EQ(*core, (growth::Rect{5, 0, 7, 2}));
+  growth::Seed like;
+  like.targetArea = 30;
+  // Row 0: [0, 3] and up to x = 3 overlap the seed [1, 4] × [1, 4]; x = 4 touches it: free.
+  const auto seed = freeSeedSpot(site, like);
+  ASSERT_TRUE(seed);
+  EXPECT_EQ(seed->at, Vec2(4, 0));
+}
+
+TEST(SiteEdits, DraggingInThePlanMovesInHalfMetreStepsAndIsRefusedLikeTyping) {
+  const GrowthSpec spec = smallSite();
+  const HandPlaced start = handPlaced(spec.site);
+  // The seed [1, 4] × [1, 4] dragged by (2.3, -0.2): 2.5 m in x, nothing in y.
+  const auto r = dragItem(spec, start, start, SiteItem::Seed, 0, 2.3, -0.2);
+  ASSERT_TRUE(r && r->spec) << (r ? r->error : "no edit");
+  EXPECT_EQ(handPlaced(r->spec->site).seeds[0].at, Vec2(3.5, 1));
+  EXPECT_EQ(handPlaced(r->spec->site).seeds[0].storey, 0);
+  // Further along the same drag, from the same start: (4.1, 1.8) rounds to (4, 2).
+  const HandPlaced now = handPlaced(r->spec->site);
+  const auto r2 = dragItem(*r->spec, start, now, SiteItem::Seed, 0, 4.1, 1.8);
+  ASSERT_TRUE(r2 && r2->spec);
+  EXPECT_EQ(handPlaced(r2->spec->site).seeds[0].at, Vec2(5, 3));
+  // A move that rounds to where the entry already is: nothing to commit.
+  EXPECT_FALSE(dragItem(spec, start, start, SiteItem::Seed, 0, 0.2, -0.24));
+  EXPECT_FALSE(dragItem(*r->spec, start, now, SiteItem::Seed, 0, 2.6, 0.1));
+  // The landing [13, 15] × [4, 6] keeps its height; the lift dragged onto it is not compared by
+  // the validator, but onto the seed's clearance it is refused with the validator's message.
+  const auto landing = dragItem(spec, start, start, SiteItem::Circulation, 0, 2, 2);
+  ASSERT_TRUE(landing && landing->spec);
+  EXPECT_EQ(handPlaced(landing->spec->site).circulation[0], (growth::Box{{15, 6, 0}, {17, 8, 3}}));
+  const auto core = dragItem(spec, start, start, SiteItem::Core, 0, -5.5, -2);  // to [4.5, 6.5] × [2, 4]
+  ASSERT_TRUE(core);
+  EXPECT_FALSE(core->spec);
+  EXPECT_EQ(core->error, "growth.site.seeds[0]: lies within the clearance of cores[0]");
+  EXPECT_FALSE(dragItem(spec, start, start, SiteItem::Core, 3, 1, 1));  // no such entry
+}
+
+TEST(SiteEdits, AClickPicksTheSeedThenTheCirculationThenTheCoreUnderIt) {
+  const GrowthSpec spec = smallSite();
+  const growth::Site site = growth::parseSite(spec.site);
+  const HandPlaced h = handPlaced(spec.site);
+  using Pick = std::optional<std::pair<SiteItem, int>>;
+  EXPECT_EQ(pickItem(h, site, 0, 2, 2), (Pick{{SiteItem::Seed, 0}}));
+  EXPECT_EQ(pickItem(h, site, 1, 2, 2), Pick{});  // the seed is on storey 0
+  EXPECT_EQ(pickItem(h, site, 0, 14, 5), (Pick{{SiteItem::Circulation, 0}}));
+  EXPECT_EQ(pickItem(h, site, 1, 14, 5), Pick{});                       // the landing is 3 m high: storey 0 only
+  EXPECT_EQ(pickItem(h, site, 1, 12, 6), (Pick{{SiteItem::Core, 0}}));  // cores run the full height; a corner
+  EXPECT_EQ(pickItem(h, site, 0, 8, 8), Pick{});
 }
 
 }  // namespace

@@ -200,6 +200,80 @@ TEST(Renderer, OverlayOnTopShowsThroughSolids) {
   renderer.overlayOnTop().clear();
 }
 
+// The lighting model of shaders/mesh.frag.glsl with any sun, and the share of the sun a shadow
+// lets through (0: in shadow, 1: lit).
+std::array<int, 3> litColor(const Rgb& albedo, const Vec3& n, const Vec3& sun, double sunSeen) {
+  const double s = std::max(0.0, OpenMesh::dot(n, sun)) * sunSeen;
+  const double sky = 0.5 + 0.5 * n[2];
+  const double sunColor[3] = {1.0, 0.97, 0.9}, low[3] = {0.28, 0.26, 0.24}, high[3] = {0.42, 0.46, 0.52};
+  std::array<int, 3> out;
+  for (int k = 0; k < 3; ++k) {
+    const double light = sunColor[k] * s * 0.75 + low[k] + (high[k] - low[k]) * sky;
+    out[k] = static_cast<int>(std::lround(std::pow(std::clamp(albedo[k] * light, 0.0, 1.0), 1.0 / 2.2) * 255.0));
+  }
+  return out;
+}
+
+TEST(Shadows, SunDirectionAndTheLightsFrustum) {
+  const Vec3 s0 = render::sunDirection(0, 45), s1 = render::sunDirection(90, 0), s2 = render::sunDirection(180, 90);
+  EXPECT_NEAR(s0[0], std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(s0[1], 0, 1e-12);
+  EXPECT_NEAR(s0[2], std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(s1[1], 1, 1e-12);
+  EXPECT_NEAR(s2[2], 1, 1e-12);
+  // Every corner of the box lands inside the light's clip volume, for suns high, low and overhead.
+  BBox box;
+  box.add(Vec3(-10, -4, 0));
+  box.add(Vec3(30, 8, 15));
+  for (const Vec3& sun : {s0, s1, s2, render::defaultSun(), render::sunDirection(-120, 10)}) {
+    const glm::mat4 m = render::lightViewProj(box, sun);
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec4 p = m * glm::vec4(k & 1 ? 30 : -10, k & 2 ? 8 : -4, k & 4 ? 15 : 0, 1);
+      for (int a = 0; a < 3; ++a) EXPECT_LE(std::abs(p[a] / p.w), 1.0f + 1e-5f);
+    }
+    // The sun's direction is the light's depth axis: moving towards the sun brings a point nearer.
+    const glm::vec4 a = m * glm::vec4(5, 2, 7, 1), b = m * glm::vec4(5 + sun[0], 2 + sun[1], 7 + sun[2], 1);
+    EXPECT_LT(b.z / b.w, a.z / a.w);
+  }
+}
+
+TEST(Shadows, ATallBoxCastsItsShadowWhereTheSunSays) {
+  // A 2 × 2 × 6 m box on the ground, the sun from +x at 45°: its shadow on the ground runs from
+  // x = -1 to x = -7 (6 m / tan 45°) over y in [-1, 1].
+  BoxSpec spec;
+  spec.size = Vec3(2, 2, 6);
+  spec.material = "plaster";
+  const Scene scene = oneBox(spec);
+  const auto camera = topCamera();
+  render::RenderSettings s = plain();
+  s.sun = render::sunDirection(0, 45);
+  s.shadows = true;
+  const render::Image img = render::renderImage(sharedRenderer(), scene, camera, kSize, kSize, s);
+  const Rgb ground{0.80f, 0.79f, 0.76f};
+  const Vec3 up(0, 0, 1);
+  auto pixel = [&](double x, double y, double z) {
+    const glm::dvec2 p = project(camera, Vec3(x, y, z), kSize, kSize);
+    return img.at(int(p.x), int(p.y));
+  };
+  auto expectColour = [&](const std::uint8_t* px, const std::array<int, 3>& c, const char* what) {
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(px[k], c[k], 3) << what << ", channel " << k;
+  };
+  const auto lit = litColor(ground, up, *s.sun, 1.0), dark = litColor(ground, up, *s.sun, 0.0);
+  ASSERT_GT(lit[0] - dark[0], 20);  // the two differ clearly
+  expectColour(pixel(-4, 0, 0), dark, "ground in the shadow");
+  expectColour(pixel(-6.5, 0.5, 0), dark, "ground near the shadow's far end");
+  expectColour(pixel(4, 0, 0), lit, "ground on the sunny side");
+  expectColour(pixel(-4, 3, 0), lit, "ground beside the shadow");
+  expectColour(pixel(-8, 0, 0), lit, "ground past the shadow's end");
+  // The roof is lit whole: no shadow acne.
+  expectColour(pixel(0, 0, 6), litColor(materialColor("plaster", Kind::Mass), up, *s.sun, 1.0), "the roof");
+  // Without shadows nothing changes where there is no ground: the roof is the same colour.
+  s.shadows = false;
+  const render::Image plainImg = render::renderImage(sharedRenderer(), scene, camera, kSize, kSize, s);
+  const glm::dvec2 roof = project(camera, Vec3(0, 0, 6), kSize, kSize);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(plainImg.at(int(roof.x), int(roof.y))[k], pixel(0, 0, 6)[k]);
+}
+
 TEST(Camera, TargetProjectsToTheImageCentreAndFramingContainsTheBox) {
   render::OrbitCamera c;
   BBox box;
