@@ -79,20 +79,26 @@ struct Sample {
 };
 
 float kifs(vec3 p) {
-  float s = uScale, h = 0.5 * uCentre.z * (s - 1.0);
+  // Uniforms read once, before the loop: on llvmpipe a product with uR1 inside the loop cost
+  // about as much as the rest of the fold (measured; docs/kifs.md, "Speed"). The products are
+  // written as GLSL defines R·p, column by column, so the results are the same to the bit.
+  float s = uScale, h = 0.5 * uCentre.z * (s - 1.0), bailout = uBailout;
+  vec2 c = uCentre.xy;
+  vec3 r1x = uR1[0], r1y = uR1[1], r1z = uR1[2], r2x = uR2[0], r2y = uR2[1], r2z = uR2[2];
+  int iterations = uIterations;
   float scl = 1.0;
-  for (int i = 0; i <= uIterations; ++i) {
-    if (!kR1Identity) p = uR1 * p;
+  for (int i = 0; i <= iterations; ++i) {
+    if (!kR1Identity) p = r1x * p.x + r1y * p.y + r1z * p.z;
     p = abs(p);
     if (p.x < p.y) p.xy = p.yx;
     if (p.x < p.z) p.xz = p.zx;
     if (p.y < p.z) p.yz = p.zy;
-    if (!kR2Identity) p = uR2 * p;
-    p.x = s * (p.x - uCentre.x) + uCentre.x;
-    p.y = s * (p.y - uCentre.y) + uCentre.y;
+    if (!kR2Identity) p = r2x * p.x + r2y * p.y + r2z * p.z;
+    p.x = s * (p.x - c.x) + c.x;
+    p.y = s * (p.y - c.y) + c.y;
     p.z = h - abs(s * p.z - h);
     scl *= s;
-    if (dot(p, p) > uBailout) break;
+    if (dot(p, p) > bailout) break;
   }
   return (length(p) - uRho) / scl;
 }
