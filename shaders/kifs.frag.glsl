@@ -16,31 +16,36 @@ uniform float uScale;
 uniform vec3 uCentre;
 uniform mat3 uR1;
 uniform mat3 uR2;
-uniform int uR1Identity;  // skip the product (I·p = p exactly, so nothing changes)
-uniform int uR2Identity;
 uniform float uBailout;
 uniform float uRho;
 
-// Mass model (Eq. 1-3): footprint 0 box, 1 T, 2 H; half-width, half-depth, height.
-uniform int uFootprint;
+// Mass model (Eq. 1-3): half-width, half-depth, height.
 uniform vec3 uMass;
 uniform float uWing;
 uniform float uShell;
 
-// Algorithm 2 and the id transform; Eq. 4 (h, y0, s_y); stretch L_f; ids are cells.
+// Algorithm 2 and the id transform; Eq. 4 (h, y0, s_y); stretch L_f.
 uniform float uPeriod;
 uniform vec3 uFoldR;
 uniform vec4 uIdTransform;  // a1, a2, b1, b2
 uniform vec3 uFloors;
 uniform float uStretch;
-uniform int uIdsCut;
 
-// Eq. 5-6: s_θ, c_θ, s_r, c_r; z0; the annulus (inner, outer radius); a closed ring has no seam.
-uniform int uCurvilinear;
+// Eq. 5-6: s_θ, c_θ, s_r, c_r; z0; the annulus (inner, outer radius).
 uniform vec4 uPolar;
 uniform float uPolarZ0;
 uniform vec2 uRing;
-uniform int uClosedRing;
+
+// The building's variant, compiled in (render/kifs_pass.cpp defines KIFS_* before this file):
+// llvmpipe runs both sides of every branch, even on a uniform, so what a building does not use
+// must not be in its program. R1, R2 = I skip their products (I·p = p exactly); footprint 0 box,
+// 1 T, 2 H; ids are cells (a1 or b1 ≠ 0); curvilinear coordinates; a closed ring has no seam.
+const bool kR1Identity = KIFS_R1_IDENTITY != 0;
+const bool kR2Identity = KIFS_R2_IDENTITY != 0;
+const int kFootprint = KIFS_FOOTPRINT;
+const bool kIdsCut = KIFS_IDS_CUT != 0;
+const bool kCurvilinear = KIFS_CURVILINEAR != 0;
+const bool kClosedRing = KIFS_CLOSED_RING != 0;
 
 // Tracing.
 uniform int uMaxSteps;
@@ -74,20 +79,26 @@ struct Sample {
 };
 
 float kifs(vec3 p) {
-  float s = uScale, h = 0.5 * uCentre.z * (s - 1.0);
+  // Uniforms read once, before the loop: on llvmpipe a product with uR1 inside the loop cost
+  // about as much as the rest of the fold (measured; docs/kifs.md, "Speed"). The products are
+  // written as GLSL defines R·p, column by column, so the results are the same to the bit.
+  float s = uScale, h = 0.5 * uCentre.z * (s - 1.0), bailout = uBailout;
+  vec2 c = uCentre.xy;
+  vec3 r1x = uR1[0], r1y = uR1[1], r1z = uR1[2], r2x = uR2[0], r2y = uR2[1], r2z = uR2[2];
+  int iterations = uIterations;
   float scl = 1.0;
-  for (int i = 0; i <= uIterations; ++i) {
-    if (uR1Identity == 0) p = uR1 * p;
+  for (int i = 0; i <= iterations; ++i) {
+    if (!kR1Identity) p = r1x * p.x + r1y * p.y + r1z * p.z;
     p = abs(p);
     if (p.x < p.y) p.xy = p.yx;
     if (p.x < p.z) p.xz = p.zx;
     if (p.y < p.z) p.yz = p.zy;
-    if (uR2Identity == 0) p = uR2 * p;
-    p.x = s * (p.x - uCentre.x) + uCentre.x;
-    p.y = s * (p.y - uCentre.y) + uCentre.y;
+    if (!kR2Identity) p = r2x * p.x + r2y * p.y + r2z * p.z;
+    p.x = s * (p.x - c.x) + c.x;
+    p.y = s * (p.y - c.y) + c.y;
     p.z = h - abs(s * p.z - h);
     scl *= s;
-    if (dot(p, p) > uBailout) break;
+    if (dot(p, p) > bailout) break;
   }
   return (length(p) - uRho) / scl;
 }
@@ -104,8 +115,8 @@ float massBox(vec3 b, float inset, float cx, float cz, float hx, float hz) {
 
 float massModel(vec3 b, float inset) {
   float hx = uMass.x, hz = uMass.y, w = uWing;
-  if (uFootprint == 0) return massBox(b, inset, 0.0, 0.0, hx, hz);
-  if (uFootprint == 1) return min(massBox(b, inset, 0.0, hz - w, hx, w), massBox(b, inset, 0.0, 0.0, w, hz));
+  if (kFootprint == 0) return massBox(b, inset, 0.0, 0.0, hx, hz);
+  if (kFootprint == 1) return min(massBox(b, inset, 0.0, hz - w, hx, w), massBox(b, inset, 0.0, 0.0, w, hz));
   return min(min(massBox(b, inset, -(hx - w), 0.0, w, hz), massBox(b, inset, hx - w, 0.0, w, hz)),
              massBox(b, inset, 0.0, 0.0, hx, w));
 }
@@ -132,13 +143,13 @@ Sample evaluateFor(vec3 world, bool withBound) {
   vec3 b = world.xzy;  // building coordinates, y up
   vec3 m = b;
   float radius = 0.0, ring = -kInf, cut = kInf;
-  if (uCurvilinear != 0) {  // Eq. 5-6
+  if (kCurvilinear) {  // Eq. 5-6
     float dx = b.x, dz = b.z - uPolarZ0;
     radius = sqrt(dx * dx + dz * dz);
     m.x = uPolar.x * (atan(dz, dx) + uPolar.y);
     m.z = uPolar.z * (radius + uPolar.w);
     ring = max(max(uRing.x - radius, radius - uRing.y), max(-b.y, b.y - uMass.z));
-    if (uClosedRing == 0) cut = dx < 0.0 ? abs(dz) : radius;
+    if (!kClosedRing) cut = dx < 0.0 ? abs(dz) : radius;
   }
   vec3 fx = facadeFold(m.x), fz = facadeFold(m.z);
   float fh = uFloors.x;
@@ -159,10 +170,10 @@ Sample evaluateFor(vec3 world, bool withBound) {
     qn.y = uFloors.z * (below ? my + fh : my - fh) / fh;
     cell = min(cell, max(gapNear, kifs(qn) / uStretch));
   }
-  if (withBound && uIdsCut != 0) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
+  if (withBound && kIdsCut) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
   float surface = min(di, max(d0, dk));
   float bound = min(di, max(d0, cell));
-  if (uCurvilinear == 0) {
+  if (!kCurvilinear) {
     o.surface = surface;
     o.bound = bound;
     return o;

@@ -26,10 +26,11 @@ glm::dmat4 OrbitCamera::view() const {
   return glm::lookAt(glm::dvec3(p[0], p[1], p[2]), glm::dvec3(target[0], target[1], target[2]), up);
 }
 
+double OrbitCamera::nearPlane() const { return std::max(distance * 0.01, 1e-3); }
+
 glm::dmat4 OrbitCamera::projection(double aspect) const {
-  const double nearPlane = std::max(distance * 0.01, 1e-3);
   const double farPlane = distance * 20.0 + 100.0;
-  return glm::perspective(fov_deg * kDeg, std::max(aspect, 1e-3), nearPlane, farPlane);
+  return glm::perspective(fov_deg * kDeg, std::max(aspect, 1e-3), nearPlane(), farPlane);
 }
 
 void OrbitCamera::frame(const BBox& box, double aspect) {

@@ -16,6 +16,7 @@ struct OrbitCamera {
   Vec3 eye() const;
   glm::dmat4 view() const;
   glm::dmat4 projection(double aspect) const;  // near/far from the distance
+  double nearPlane() const;                    // projection's near plane distance
   // Frames a bounding box so it fills the view at any azimuth.
   void frame(const BBox& box, double aspect = 1.0);
   // Mouse helpers (pixels → motion).

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace corbel::render {
@@ -25,6 +26,9 @@ struct UniformWriter {
     names.push_back(name);
     return loc;
   }
+  // A uniform that only some variants use (kifsVariant): written when `needed`, which the
+  // program must then have; otherwise written only if the program kept it.
+  bool optional(const char* name, bool needed) { return needed || glGetUniformLocation(program, name) >= 0; }
   void i(const char* n, int v) { glUniform1i(at(n), v); }
   void f(const char* n, double v) { glUniform1f(at(n), float(v)); }
   void v2(const char* n, double x, double y) { glUniform2f(at(n), float(x), float(y)); }
@@ -42,34 +46,59 @@ glm::dmat4 viewProjection(const OrbitCamera& camera, int width, int height) {
 
 }  // namespace
 
+KifsVariant kifsVariant(const kifs::Building& b) {
+  const kifs::KifsParams& p = b.params();
+  KifsVariant v;
+  v.footprint = static_cast<int>(p.mass.footprint);
+  v.curvilinear = p.curvilinear.enabled;
+  v.r1Identity = b.r1Identity();
+  v.r2Identity = b.r2Identity();
+  v.idsCut = b.idsCut();
+  v.closedRing = p.curvilinear.enabled && b.closedRing();
+  return v;
+}
+
+int KifsVariant::key() const {
+  return footprint | curvilinear << 2 | r1Identity << 3 | r2Identity << 4 | idsCut << 5 | closedRing << 6;
+}
+
+std::string kifsShaderSource(const KifsVariant& v) {
+  std::string text = shaderSource("kifs.frag.glsl");
+  const std::size_t line = text.find('\n');  // after #version, which must come first
+  if (text.rfind("#version", 0) != 0 || line == std::string::npos)
+    throw Error("kifs.frag.glsl must start with its #version line");
+  const std::string defines =
+      "#define KIFS_R1_IDENTITY " + std::to_string(int(v.r1Identity)) + "\n#define KIFS_R2_IDENTITY " +
+      std::to_string(int(v.r2Identity)) + "\n#define KIFS_FOOTPRINT " + std::to_string(v.footprint) +
+      "\n#define KIFS_IDS_CUT " + std::to_string(int(v.idsCut)) + "\n#define KIFS_CURVILINEAR " +
+      std::to_string(int(v.curvilinear)) + "\n#define KIFS_CLOSED_RING " + std::to_string(int(v.closedRing)) + "\n";
+  return text.insert(line + 1, defines);
+}
+
 std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building& b) {
   const kifs::KifsParams& p = b.params();
+  const KifsVariant v = kifsVariant(b);
   UniformWriter w{program, {}};
   glUseProgram(program);
   w.i("uIterations", p.iterations);
   w.f("uScale", p.scale);
   w.v3("uCentre", p.centre);
-  w.m3("uR1", b.r1());
-  w.m3("uR2", b.r2());
-  w.i("uR1Identity", b.r1Identity());
-  w.i("uR2Identity", b.r2Identity());
+  if (w.optional("uR1", !v.r1Identity)) w.m3("uR1", b.r1());
+  if (w.optional("uR2", !v.r2Identity)) w.m3("uR2", b.r2());
   w.f("uBailout", p.bailout);
   w.f("uRho", b.rho());
-  w.i("uFootprint", static_cast<int>(p.mass.footprint));
   w.v3("uMass", {p.mass.halfWidth, p.mass.halfDepth, p.mass.height});
-  w.f("uWing", p.mass.wing);
+  if (w.optional("uWing", v.footprint != 0)) w.f("uWing", p.mass.wing);
   w.f("uShell", p.mass.shell);
   w.f("uPeriod", p.facade.period);
   w.v3("uFoldR", p.facade.r);
   w.v4("uIdTransform", p.facade.a1, p.facade.a2, p.facade.b1, p.facade.b2);
   w.v3("uFloors", {p.floors.height, p.floors.y0, p.floors.sy});
   w.f("uStretch", b.fractalStretch());
-  w.i("uIdsCut", b.idsCut());
-  w.i("uCurvilinear", p.curvilinear.enabled);
-  w.v4("uPolar", p.curvilinear.sTheta, p.curvilinear.cTheta, p.curvilinear.sR, p.curvilinear.cR);
-  w.f("uPolarZ0", p.curvilinear.z0);
-  w.v2("uRing", b.ringInner(), b.ringOuter());
-  w.i("uClosedRing", b.closedRing());
+  if (w.optional("uPolar", v.curvilinear))
+    w.v4("uPolar", p.curvilinear.sTheta, p.curvilinear.cTheta, p.curvilinear.sR, p.curvilinear.cR);
+  if (w.optional("uPolarZ0", v.curvilinear)) w.f("uPolarZ0", p.curvilinear.z0);
+  if (w.optional("uRing", v.curvilinear)) w.v2("uRing", b.ringInner(), b.ringOuter());
   w.i("uMaxSteps", p.trace.maxSteps);
   w.f("uLipschitz", p.trace.lipschitz);
   w.f("uOverRelax", p.trace.overRelax);
@@ -81,17 +110,27 @@ std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building&
 }
 
 KifsPass::KifsPass() {
-  program_ = linkProgram("background.vert.glsl", "kifs.frag.glsl");
   glGenVertexArrays(1, &vao_);
+  program_ = programFor(kifsVariant(kifs::Building(kifs::KifsParams{})));
 }
 
 KifsPass::~KifsPass() {
   glDeleteVertexArrays(1, &vao_);
-  glDeleteProgram(program_);
+  for (const auto& [key, program] : programs_) glDeleteProgram(program);
+}
+
+unsigned KifsPass::programFor(const KifsVariant& variant) {
+  auto it = programs_.find(variant.key());
+  if (it != programs_.end()) return it->second;
+  const std::string vs = shaderSource("kifs.vert.glsl"), fs = kifsShaderSource(variant);
+  const unsigned program = linkSources(vs.c_str(), fs.c_str(), "kifs.vert.glsl", "kifs.frag.glsl");
+  programs_.emplace(variant.key(), program);
+  return program;
 }
 
 void KifsPass::draw(const kifs::Building& building, const OrbitCamera& camera, int x, int y, int width, int height,
                     KifsMode mode) {
+  program_ = programFor(kifsVariant(building));
   const glm::dmat4 vp = viewProjection(camera, width, height);
   UniformWriter w{program_, setKifsUniforms(program_, building)};
   w.m4("uViewProj", vp);
@@ -101,9 +140,56 @@ void KifsPass::draw(const kifs::Building& building, const OrbitCamera& camera, i
   w.v4("uViewport", x, y, width, height);
   w.i("uMode", static_cast<int>(mode));
   w.v3("uSunDir", glm::normalize(glm::dvec3(0.45, -0.35, 0.82)));  // the Renderer's sun
-  drawDepthWritingTriangle(vao_, x, y, width, height);
+  const KifsCover cover = kifsCover(building, camera, width, height);
+  w.v3("uCoverLo", cover.lo);
+  w.v3("uCoverHi", cover.hi);
+  w.i("uFullScreen", cover.fullScreen);
+  glViewport(x, y, width, height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glBindVertexArray(vao_);
+  if (cover.fullScreen) {
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  } else {
+    // Back faces only: each covered pixel is shaded once.
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_FRONT);
+    glDrawArrays(GL_TRIANGLES, 0, 36);
+    glCullFace(GL_BACK);
+    glDisable(GL_CULL_FACE);
+  }
+  glBindVertexArray(0);
   glUseProgram(0);
   written_ = w.names;
+}
+
+KifsCover kifsCover(const kifs::Building& building, const OrbitCamera& camera, int width, int height) {
+  const kifs::Aabb box = building.worldBounds();
+  const Vec3 e = camera.eye();
+  const glm::dvec3 eye(e[0], e[1], e[2]);
+  const double diagonal = glm::length(box.size());
+  // A box grown by m in each direction holds the ball of radius m round each of its points.
+  // Seen from distance d ≤ d_max that ball spans at least m / d radians, and an angle maps to
+  // at least as long a step on the image plane (d tan θ ≥ dθ): with m = 2 · pixel · d_max,
+  // pixel = 2 tan(fov / 2) / height, the cover reaches two pixels past the bounds everywhere.
+  const double tanHalf = std::tan(0.5 * glm::radians(camera.fov_deg));
+  const double pixel = 2.0 * tanHalf / std::max(height, 1);
+  const double farthest = glm::length(eye - 0.5 * (box.lo + box.hi)) + diagonal;
+  const double m = 2.0 * pixel * farthest + 1e-3 * diagonal;
+  KifsCover c;
+  c.lo = box.lo - glm::dvec3(m);
+  c.hi = box.hi + glm::dvec3(m);
+  // The back faces are at least dist(eye, cover) from the eye; inside the frustum a point that
+  // far has a view depth of at least that over the corner ray's stretch. Keep twice the near
+  // plane's distance clear of them, else cover the whole viewport.
+  const double aspect = double(width) / std::max(height, 1);
+  const double stretch = std::sqrt(1.0 + tanHalf * tanHalf * (1.0 + aspect * aspect));
+  const glm::dvec3 gap = glm::max(glm::max(c.lo - eye, eye - c.hi), glm::dvec3(0.0));
+  c.fullScreen = glm::length(gap) <= 2.0 * camera.nearPlane() * stretch;
+  return c;
 }
 
 void drawDepthWritingTriangle(unsigned vao, int x, int y, int width, int height) {

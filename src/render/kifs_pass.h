@@ -9,6 +9,7 @@
 #include "render/renderer.h"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -33,14 +34,31 @@ struct KifsCost {
   std::vector<float> depth;
 };
 
+// What kifs.frag.glsl is compiled for (its KIFS_* defines). llvmpipe executes both sides of
+// every branch, even one on a uniform, so each building is drawn by a program holding only the
+// code it uses (docs/kifs.md, "Speed"); the pictures are the same as with the branches.
+struct KifsVariant {
+  int footprint = 0;  // kifs::Footprint
+  bool curvilinear = false, r1Identity = true, r2Identity = true, idsCut = false, closedRing = false;
+  int key() const;  // distinct for distinct variants
+};
+KifsVariant kifsVariant(const kifs::Building& building);
+// kifs.frag.glsl with the variant's defines after its #version line.
+std::string kifsShaderSource(const KifsVariant& variant);
+
 // The one place that turns a building's parameters into kifs.frag.glsl's uniforms (camera and
-// mode aside). Returns the names written; throws corbel::Error if the program has no active
-// uniform of that name, so a field renamed on one side only cannot go unnoticed.
+// mode aside), for a program compiled for kifsVariant(building). Returns the names written;
+// throws corbel::Error if the program has no active uniform of a name the variant uses, so a
+// field renamed on one side only cannot go unnoticed. Uniforms the variant does not use (R1
+// when it is I, the wing of a box, the polar ones of a rectilinear building) are written only
+// if the program kept them.
 std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building& building);
 
 class KifsPass {
  public:
   // Needs a current GL 3.3 core context; throws corbel::Error if the shader fails to build.
+  // Compiles the default parameters' variant; a draw compiles its building's variant on first
+  // use and keeps it.
   KifsPass();
   ~KifsPass();
   KifsPass(const KifsPass&) = delete;
@@ -50,18 +68,29 @@ class KifsPass {
   // trace.pixelAngle should match the view (kifsForView).
   void draw(const kifs::Building& building, const OrbitCamera& camera, int x, int y, int width, int height,
             KifsMode mode);
-  unsigned program() const { return program_; }
+  unsigned program() const { return program_; }  // the last draw's (before any: the default's)
   // Every uniform the last draw wrote (setKifsUniforms' and the camera's).
   const std::vector<std::string>& writtenUniforms() const { return written_; }
 
  private:
+  unsigned programFor(const KifsVariant& variant);
   unsigned program_ = 0, vao_ = 0;
+  std::map<int, unsigned> programs_;  // by KifsVariant::key
   std::vector<std::string> written_;
 };
 
 // Draws the full-screen triangle (background.vert.glsl) of the bound program into the viewport
 // (x, y, width, height), depth-tested (LEQUAL) and writing depth, blending off.
 void drawDepthWritingTriangle(unsigned vao, int x, int y, int width, int height);
+
+// Where a KifsPass draw runs the fragment shader: the back faces of the building's bounds box
+// grown by at least two pixels on screen, or the whole viewport when the eye is inside that
+// box or so near it that the near plane could cut its back faces.
+struct KifsCover {
+  glm::dvec3 lo, hi;
+  bool fullScreen = false;
+};
+KifsCover kifsCover(const kifs::Building& building, const OrbitCamera& camera, int width, int height);
 
 // `params` with the hit threshold's pixel angle for a camera seeing `height` pixels.
 kifs::KifsParams kifsForView(kifs::KifsParams params, const OrbitCamera& camera, int height);

@@ -1,13 +1,15 @@
 // KIFS speeds (docs/kifs.md, "Speed"): CPU distance evaluations per second for each preset, CPU
-// rays per second, the shader's frame time through OSMesa (llvmpipe) at 256² and 512² and
+// rays per second, the shader's frame time through OSMesa (llvmpipe) at 256², 512² and 640² and
 // meshing at 64³ and 128³. Run: build/tests/bench/corbel_bench_kifs
 #include "kifs/mesher.h"
 #include "kifs/trace.h"
+#include "render/gl.h"
 #include "render/headless_context.h"
 #include "render/kifs_pass.h"
 
 #include <benchmark/benchmark.h>
 
+#include <optional>
 #include <random>
 
 namespace {
@@ -71,7 +73,48 @@ BENCHMARK(KifsShaderFrame)
     ->Args({512, 3})
     ->Args({512, 4})
     ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()  // "CPU" counts llvmpipe's threads: steadier on a shared machine
     ->UseRealTime();
+
+// Where the 640² box frame goes: each part ends with glFinish and only it is timed. 0 the
+// target and the renderer's sky and grid, 1 the KIFS pass (march and shading), 2 the MSAA
+// resolve and read-back.
+void KifsFramePart(benchmark::State& state) {
+  static render::HeadlessContext context;
+  static render::Renderer renderer;
+  static render::KifsPass pass;
+  const int n = 640, part = static_cast<int>(state.range(0));
+  const kifs::KifsParams params = kifs::preset("box");
+  const render::OrbitCamera camera = render::kifsCamera(kifs::Building(params), 1.0);
+  const kifs::Building b(render::kifsForView(params, camera, n));
+  render::RenderSettings settings;
+  settings.edges = false;
+  const Scene scene;
+  (void)render::renderKifsImage(renderer, pass, b, scene, camera, n, n, render::KifsMode::Shaded, settings);
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::optional<render::OffscreenTarget> target;
+    for (int stage = 0; stage < 3; ++stage) {
+      if (stage == part) state.ResumeTiming();
+      if (stage == 0) {
+        target.emplace(n, n);
+        target->bind();
+        renderer.setScene(scene, settings);
+        renderer.draw(camera, 0, 0, n, n, settings);
+      } else if (stage == 1) {
+        pass.draw(b, camera, 0, 0, n, n, render::KifsMode::Shaded);
+      } else {
+        benchmark::DoNotOptimize(target->read().rgba[0]);
+      }
+      glFinish();
+      if (stage == part) state.PauseTiming();
+    }
+    target.reset();
+    state.ResumeTiming();
+  }
+  state.SetLabel(part == 0 ? "sky and grid" : part == 1 ? "KIFS pass" : "read-back");
+}
+BENCHMARK(KifsFramePart)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
 void KifsMesh(benchmark::State& state) {
   const kifs::Building b(kifs::preset("box"));

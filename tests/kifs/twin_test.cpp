@@ -159,24 +159,46 @@ TEST_P(KifsTwin, ShaderDepthAgreesWithCpuTracing) {
 
 INSTANTIATE_TEST_SUITE_P(Presets, KifsTwin, ::testing::ValuesIn(buildingPresets()));
 
-// Every active uniform of kifs.frag.glsl is written by a draw (setKifsUniforms throws for the
-// other direction: a name written that the shader lacks).
+// Every active uniform of kifs.frag.glsl is written by a draw, in the program of every
+// preset's variant (setKifsUniforms throws for the other direction: a name the variant uses
+// that the shader lacks).
 TEST(KifsTwin, EveryShaderUniformIsWritten) {
   render::KifsPass& pass = sharedPass();
-  const Building b(preset("box"));
-  (void)render::renderKifsDepth(pass, b, render::kifsCamera(b, 1.0), 8, 8);
-  const std::set<std::string> written(pass.writtenUniforms().begin(), pass.writtenUniforms().end());
-  GLint count = 0;
-  glGetProgramiv(pass.program(), GL_ACTIVE_UNIFORMS, &count);
-  EXPECT_GT(count, 20);
-  for (GLint i = 0; i < count; ++i) {
-    char name[128] = {};
-    GLsizei len = 0;
-    GLint size = 0;
-    GLenum type = 0;
-    glGetActiveUniform(pass.program(), GLuint(i), sizeof name, &len, &size, &type, name);
-    EXPECT_TRUE(written.count(name)) << "uniform " << name << " is never written";
+  std::set<int> variants;
+  for (const std::string& name : presetNames()) {
+    const Building b(preset(name));
+    variants.insert(render::kifsVariant(b).key());
+    (void)render::renderKifsDepth(pass, b, render::kifsCamera(b, 1.0), 8, 8);
+    const std::set<std::string> written(pass.writtenUniforms().begin(), pass.writtenUniforms().end());
+    GLint count = 0;
+    glGetProgramiv(pass.program(), GL_ACTIVE_UNIFORMS, &count);
+    EXPECT_GT(count, 20);
+    for (GLint i = 0; i < count; ++i) {
+      char uniform[128] = {};
+      GLsizei len = 0;
+      GLint size = 0;
+      GLenum type = 0;
+      glGetActiveUniform(pass.program(), GLuint(i), sizeof uniform, &len, &size, &type, uniform);
+      EXPECT_TRUE(written.count(uniform)) << name << ": uniform " << uniform << " is never written";
+    }
   }
+  EXPECT_GE(variants.size(), 6u);  // box, T, H, polar ring, arc, R1 and R2 ≠ I
+}
+
+// The fragment shader runs on the back faces of the grown bounds box, or on the whole viewport
+// when the eye is inside it: either way every ray that meets the bounds marches (the test above
+// checks this for the box; here the eye stands inside the building, where every ray does).
+TEST(KifsTwin, EveryRayMarchesWhenTheEyeIsInsideTheBounds) {
+  render::KifsPass& pass = sharedPass();
+  const Building b(preset("box"));
+  const int w = 24, h = 20;
+  render::OrbitCamera camera = render::kifsCamera(b, double(w) / h);
+  EXPECT_FALSE(render::kifsCover(b, camera, w, h).fullScreen);
+  camera.distance = 2.0;  // the target is the box's centre
+  ASSERT_TRUE(render::kifsCover(b, camera, w, h).fullScreen);
+  const render::KifsCost cost = render::measureKifsCost(pass, b, camera, w, h);
+  for (int i = 0; i < w * h; ++i) EXPECT_GE(cost.perPixel[i], 1) << "pixel " << i;
+  EXPECT_GT(cost.hits, w * h / 2);
 }
 
 // The shader tests the ray against the outer shell's box before marching: pixels whose ray
