@@ -256,9 +256,14 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
       // the event's height (1e-9 relative) moves their meeting point by decimetres along the
       // ridge. It is made where its lines pass through the event point, which may be a little
       // above the event; below that it does not exist yet (liveAt), and cannot reach back
-      // along its ridge into events below.
+      // along its ridge into events below. "A little" is δ1, or more where both lines pass
+      // within δ2 of the point (as every line of the event does): a split by a wall 6e-8 rad
+      // off antiparallel puts their meeting point 0.4 m back along the ridge, 1.3 δ1 below,
+      // and a corner made there crossed the event point again and undid the split.
       const double later = OpenMesh::dot(c.v, at - cornerAt(ci, z)) / (c.speed * c.speed);
-      if (later > 0 && later <= tol_.height) c.z0 = z + later;
+      const double offA = std::abs(OpenMesh::dot(a.n, at) - (a.c + a.k * z));
+      const double offB = std::abs(OpenMesh::dot(b.n, at) - (b.c + b.k * z));
+      if (later > 0 && (later <= tol_.height || std::max(offA, offB) <= tol_.cluster)) c.z0 = z + later;
     }
     c.base = cornerAt(ci, c.z0);
     return;

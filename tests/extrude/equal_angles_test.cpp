@@ -1,6 +1,7 @@
 // Equal angles = the straight skeleton (Sec. 4, Aichholzer et al.): with every edge at one
 // pitch φ, heights, face count and volume must equal CGAL's interior straight skeleton lifted
 // by tan φ, and the roof's area must be the footprint's area / cos φ.
+#include "core/project_io.h"
 #include "core/scene.h"
 #include "extrude/footprints.h"
 #include "skeleton_oracle.h"
@@ -143,6 +144,30 @@ TEST(EqualAngles, RacingCornerOfACourtyardWallMatchesCgal) {
       {Vec2(2.122628758693913e-07, -8.407606341008172e-08), Vec2(20.252157550648576, 2.7311979462880157e-07), Vec2(20.252157452200027, 9.267513298788964), Vec2(20.25215793353483, 39.207223314266294), Vec2(12.35982920837079, 39.207223323364644), Vec2(5.6424904985919695e-08, 39.20722371904837)},
       {Vec2(6.750719226670095, 24.634945209320918), Vec2(12.996175693623917, 24.634945209320918), Vec2(12.996175693623917, 13.06907447819381), Vec2(6.750719226670095, 13.06907447819381)}};
   for (double pitch : {30 * kDeg, 45 * kDeg, 60 * kDeg}) expectMatchesSkeleton({"random13793", loops}, pitch, 1e-7);
+}
+
+// A plan of the random robustness run saved in tests/data/extrude (one profile, one slope):
+// its outline and its pitch from horizontal.
+Case savedHipCase(const std::string& file, double& pitch) {
+  const Document doc = loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/" + file).document;
+  const auto& spec = std::get<ExtrusionSpec>(doc.objects.at(0).spec);
+  EXPECT_EQ(spec.profiles.size(), 1u);
+  EXPECT_EQ(spec.profiles.at(0).points.size(), 2u);
+  const Vec2 d = spec.profiles[0].points[1] - spec.profiles[0].points[0];
+  pitch = std::atan2(d[1], d[0]);
+  Case c{file, {}};
+  for (const auto& l : spec.loops) c.loops.push_back(l.points);
+  return c;
+}
+
+// random89618: a mirrored skyline perturbed by 5e-7 m. Where a reflex corner splits the
+// opposite wall, 6e-8 rad off antiparallel, the new corner's lines meet 0.4 m back along the
+// ridge, where they pass the event point 2e-8 m (1.3 δ1) higher; made below that, the corner
+// crossed the event point again, a second event undid the split and the sweep diverged.
+TEST(EqualAngles, RacingCornerOfASplitIsMadeWhereItsLinesPassTheEvent) {
+  double pitch = 0;
+  const Case c = savedHipCase("racing_split_ridge.corbel", pitch);
+  expectMatchesSkeleton(c, pitch, 1e-7);
 }
 
 TEST(EqualAngles, RandomOrthogonalSkylinesMatchCgal) {
