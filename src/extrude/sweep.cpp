@@ -603,6 +603,22 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     involve(ei);
     splits.push_back(ei);
   }
+  if (splits.empty()) {
+    // Corners that an event made at this point a moment ago, meeting only one another again:
+    // nothing has happened since; a prediction against a plane within rounding of one of
+    // theirs (a wall 6e-9 rad off its colinear neighbour) brought the sweep back here, and
+    // relinking them would undo what that event did.
+    bool madeHere = true;
+    for (int ci : K) {
+      const Vec3& p = points_[corners_[ci].vertex];
+      madeHere = madeHere && std::abs(p[0] - l[0]) <= tol_.cluster && std::abs(p[1] - l[1]) <= tol_.cluster &&
+                 z - p[2] <= 1e3 * tol_.cluster;
+    }
+    if (madeHere) {
+      SWEEP_TRACE("   only corners made here a moment ago meet there");
+      return false;
+    }
+  }
   if (involved.size() < 3) {
     // Fewer than three planes meet only where a whole loop has shrunk to the point (a
     // two-edge sliver whose corners arrive together).

@@ -160,6 +160,43 @@ Case savedHipCase(const std::string& file, double& pitch) {
   return c;
 }
 
+// random75113: a mirrored skyline (two arms on a block) perturbed by 5e-8 m, with walls 2.18 m
+// high and one 60.6° roof. Where a reflex corner splits the left wall, the wall's other piece
+// (6e-9 rad off it) met the corner made there at the same point 2e-8 m higher; that event
+// found only the two corners the split had made, relinked them, undid the split, and the sweep
+// diverged. The oracle: CGAL's skeleton lifted by tan φ on a prism as high as the walls.
+TEST(EqualAngles, CornersMadeAtAPointDoNotMeetAgainThere) {
+  const Document doc =
+      loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/corners_meet_again.corbel").document;
+  const auto& spec = std::get<ExtrusionSpec>(doc.objects.at(0).spec);
+  ASSERT_EQ(spec.profiles.size(), 1u);
+  const auto& pts = spec.profiles[0].points;
+  ASSERT_EQ(pts.size(), 3u);
+  ASSERT_EQ(pts[1][0], 0.0);  // a wall, then one roof slope
+  const double wall = pts[1][1], pitch = std::atan2(pts[2][1] - pts[1][1], pts[2][0] - pts[1][0]);
+  std::vector<std::vector<Vec2>> loops;
+  double footprint = 0, perimeter = 0;
+  std::size_t edges = 0;
+  for (const auto& l : spec.loops) {
+    loops.push_back(l.points);
+    footprint += shoelace(l.points);
+    for (std::size_t i = 0; i < l.points.size(); ++i)
+      perimeter += (l.points[(i + 1) % l.points.size()] - l.points[i]).norm();
+    edges += l.points.size();
+  }
+  const ExtrusionResult r = extrude(spec);
+  for (const auto& w : r.shell.warnings) ADD_FAILURE() << "warning: " << w;
+  EXPECT_EQ(unpairedEdges(r.shell), 0u);
+  const ShellMeasures m = measure(r.shell);
+  const SkeletonRoof o = cgalRoof(loops, pitch);
+  const double rel = 1e-7;
+  EXPECT_NEAR(m.maxHeight, wall + o.maxHeight, rel * m.maxHeight);
+  EXPECT_NEAR(m.volume, wall * footprint + o.volume, rel * m.volume);
+  EXPECT_NEAR(m.roofArea, o.roofArea, rel * o.roofArea);
+  EXPECT_NEAR(m.wallArea, wall * perimeter, rel * m.wallArea);
+  EXPECT_EQ(m.faces, 2 * edges + 1) << "a wall and a roof face per input edge, and the base";
+}
+
 // random89618: a mirrored skyline perturbed by 5e-7 m. Where a reflex corner splits the
 // opposite wall, 6e-8 rad off antiparallel, the new corner's lines meet 0.4 m back along the
 // ridge, where they pass the event point 2e-8 m (1.3 δ1) higher; made below that, the corner
