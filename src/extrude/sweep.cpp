@@ -247,7 +247,13 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
   const double det = cross2(a.n, b.n);
   c.p0 = at;
   c.z0 = z;
-  if (std::abs(det) > tol_.parallelSine) {
+  // Neighbours on almost one line in one direction with one angle: their lines may meet
+  // metres from the corner (two walls 2e-8 rad apart whose offsets differ by 1e-7 m meet 5 m
+  // away), and the corner, which sits where the event made it, would jump there. It moves
+  // with the edges instead, as between parallel ones.
+  const bool straight = OpenMesh::dot(a.d, b.d) > 0 && std::abs(det) <= tol_.mergeSine && a.k == b.k &&
+                        (cornerAt(ci, z) - at).norm() > tol_.cluster;
+  if (std::abs(det) > tol_.parallelSine && !straight) {
     c.parallel = false;
     c.v = Vec2((a.k * b.n[1] - b.k * a.n[1]) / det, (a.n[0] * b.k - b.n[0] * a.k) / det);
     c.speed = c.v.norm();

@@ -207,6 +207,16 @@ TEST(EqualAngles, RacingCornerOfASplitIsMadeWhereItsLinesPassTheEvent) {
   expectMatchesSkeleton(c, pitch, 1e-7);
 }
 
+// random27185: a mirrored skyline perturbed by 2e-7 m. Where a corridor's roof closes at the
+// wall it meets, that wall's two pieces (2e-8 rad apart, one angle) become neighbours; their
+// lines meet 10 m away, and the corner between them, recomputed from the lines, jumped there:
+// a two-edge loop outside the plan, closed 30 m above the roof. The shell was open, unwarned.
+TEST(EqualAngles, CornerOnAnAlmostStraightWallMovesWithTheWall) {
+  double pitch = 0;
+  const Case c = savedHipCase("straight_corner_far_lines.corbel", pitch);
+  expectMatchesSkeleton(c, pitch, 1e-7);
+}
+
 TEST(EqualAngles, RandomOrthogonalSkylinesMatchCgal) {
   std::mt19937 rng(7);
   for (int i = 0; i < 150; ++i) {
