@@ -247,7 +247,13 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
   const double det = cross2(a.n, b.n);
   c.p0 = at;
   c.z0 = z;
-  if (std::abs(det) > tol_.parallelSine) {
+  // Neighbours on almost one line in one direction with one angle: their lines may meet
+  // metres from the corner (two walls 2e-8 rad apart whose offsets differ by 1e-7 m meet 5 m
+  // away), and the corner, which sits where the event made it, would jump there. It moves
+  // with the edges instead, as between parallel ones.
+  const bool straight = OpenMesh::dot(a.d, b.d) > 0 && std::abs(det) <= tol_.mergeSine && a.k == b.k &&
+                        (cornerAt(ci, z) - at).norm() > tol_.cluster;
+  if (std::abs(det) > tol_.parallelSine && !straight) {
     c.parallel = false;
     c.v = Vec2((a.k * b.n[1] - b.k * a.n[1]) / det, (a.n[0] * b.k - b.n[0] * a.k) / det);
     c.speed = c.v.norm();
@@ -256,9 +262,14 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
       // the event's height (1e-9 relative) moves their meeting point by decimetres along the
       // ridge. It is made where its lines pass through the event point, which may be a little
       // above the event; below that it does not exist yet (liveAt), and cannot reach back
-      // along its ridge into events below.
+      // along its ridge into events below. "A little" is δ1, or more where both lines pass
+      // within δ2 of the point (as every line of the event does): a split by a wall 6e-8 rad
+      // off antiparallel puts their meeting point 0.4 m back along the ridge, 1.3 δ1 below,
+      // and a corner made there crossed the event point again and undid the split.
       const double later = OpenMesh::dot(c.v, at - cornerAt(ci, z)) / (c.speed * c.speed);
-      if (later > 0 && later <= tol_.height) c.z0 = z + later;
+      const double offA = std::abs(OpenMesh::dot(a.n, at) - (a.c + a.k * z));
+      const double offB = std::abs(OpenMesh::dot(b.n, at) - (b.c + b.k * z));
+      if (later > 0 && (later <= tol_.height || std::max(offA, offB) <= tol_.cluster)) c.z0 = z + later;
     }
     c.base = cornerAt(ci, c.z0);
     return;
@@ -597,6 +608,22 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     if (along < -tol_.edgeMargin || along > length + tol_.edgeMargin) continue;
     involve(ei);
     splits.push_back(ei);
+  }
+  if (splits.empty()) {
+    // Corners that an event made at this point a moment ago, meeting only one another again:
+    // nothing has happened since; a prediction against a plane within rounding of one of
+    // theirs (a wall 6e-9 rad off its colinear neighbour) brought the sweep back here, and
+    // relinking them would undo what that event did.
+    bool madeHere = true;
+    for (int ci : K) {
+      const Vec3& p = points_[corners_[ci].vertex];
+      madeHere = madeHere && std::abs(p[0] - l[0]) <= tol_.cluster && std::abs(p[1] - l[1]) <= tol_.cluster &&
+                 z - p[2] <= 1e3 * tol_.cluster;
+    }
+    if (madeHere) {
+      SWEEP_TRACE("   only corners made here a moment ago meet there");
+      return false;
+    }
   }
   if (involved.size() < 3) {
     // Fewer than three planes meet only where a whole loop has shrunk to the point (a

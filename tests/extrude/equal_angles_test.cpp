@@ -1,6 +1,7 @@
 // Equal angles = the straight skeleton (Sec. 4, Aichholzer et al.): with every edge at one
 // pitch φ, heights, face count and volume must equal CGAL's interior straight skeleton lifted
 // by tan φ, and the roof's area must be the footprint's area / cos φ.
+#include "core/project_io.h"
 #include "core/scene.h"
 #include "extrude/footprints.h"
 #include "skeleton_oracle.h"
@@ -143,6 +144,77 @@ TEST(EqualAngles, RacingCornerOfACourtyardWallMatchesCgal) {
       {Vec2(2.122628758693913e-07, -8.407606341008172e-08), Vec2(20.252157550648576, 2.7311979462880157e-07), Vec2(20.252157452200027, 9.267513298788964), Vec2(20.25215793353483, 39.207223314266294), Vec2(12.35982920837079, 39.207223323364644), Vec2(5.6424904985919695e-08, 39.20722371904837)},
       {Vec2(6.750719226670095, 24.634945209320918), Vec2(12.996175693623917, 24.634945209320918), Vec2(12.996175693623917, 13.06907447819381), Vec2(6.750719226670095, 13.06907447819381)}};
   for (double pitch : {30 * kDeg, 45 * kDeg, 60 * kDeg}) expectMatchesSkeleton({"random13793", loops}, pitch, 1e-7);
+}
+
+// A plan of the random robustness run saved in tests/data/extrude (one profile, one slope):
+// its outline and its pitch from horizontal.
+Case savedHipCase(const std::string& file, double& pitch) {
+  const Document doc = loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/" + file).document;
+  const auto& spec = std::get<ExtrusionSpec>(doc.objects.at(0).spec);
+  EXPECT_EQ(spec.profiles.size(), 1u);
+  EXPECT_EQ(spec.profiles.at(0).points.size(), 2u);
+  const Vec2 d = spec.profiles[0].points[1] - spec.profiles[0].points[0];
+  pitch = std::atan2(d[1], d[0]);
+  Case c{file, {}};
+  for (const auto& l : spec.loops) c.loops.push_back(l.points);
+  return c;
+}
+
+// random75113: a mirrored skyline (two arms on a block) perturbed by 5e-8 m, with walls 2.18 m
+// high and one 60.6° roof. Where a reflex corner splits the left wall, the wall's other piece
+// (6e-9 rad off it) met the corner made there at the same point 2e-8 m higher; that event
+// found only the two corners the split had made, relinked them, undid the split, and the sweep
+// diverged. The oracle: CGAL's skeleton lifted by tan φ on a prism as high as the walls.
+TEST(EqualAngles, CornersMadeAtAPointDoNotMeetAgainThere) {
+  const Document doc =
+      loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/corners_meet_again.corbel").document;
+  const auto& spec = std::get<ExtrusionSpec>(doc.objects.at(0).spec);
+  ASSERT_EQ(spec.profiles.size(), 1u);
+  const auto& pts = spec.profiles[0].points;
+  ASSERT_EQ(pts.size(), 3u);
+  ASSERT_EQ(pts[1][0], 0.0);  // a wall, then one roof slope
+  const double wall = pts[1][1], pitch = std::atan2(pts[2][1] - pts[1][1], pts[2][0] - pts[1][0]);
+  std::vector<std::vector<Vec2>> loops;
+  double footprint = 0, perimeter = 0;
+  std::size_t edges = 0;
+  for (const auto& l : spec.loops) {
+    loops.push_back(l.points);
+    footprint += shoelace(l.points);
+    for (std::size_t i = 0; i < l.points.size(); ++i)
+      perimeter += (l.points[(i + 1) % l.points.size()] - l.points[i]).norm();
+    edges += l.points.size();
+  }
+  const ExtrusionResult r = extrude(spec);
+  for (const auto& w : r.shell.warnings) ADD_FAILURE() << "warning: " << w;
+  EXPECT_EQ(unpairedEdges(r.shell), 0u);
+  const ShellMeasures m = measure(r.shell);
+  const SkeletonRoof o = cgalRoof(loops, pitch);
+  const double rel = 1e-7;
+  EXPECT_NEAR(m.maxHeight, wall + o.maxHeight, rel * m.maxHeight);
+  EXPECT_NEAR(m.volume, wall * footprint + o.volume, rel * m.volume);
+  EXPECT_NEAR(m.roofArea, o.roofArea, rel * o.roofArea);
+  EXPECT_NEAR(m.wallArea, wall * perimeter, rel * m.wallArea);
+  EXPECT_EQ(m.faces, 2 * edges + 1) << "a wall and a roof face per input edge, and the base";
+}
+
+// random89618: a mirrored skyline perturbed by 5e-7 m. Where a reflex corner splits the
+// opposite wall, 6e-8 rad off antiparallel, the new corner's lines meet 0.4 m back along the
+// ridge, where they pass the event point 2e-8 m (1.3 δ1) higher; made below that, the corner
+// crossed the event point again, a second event undid the split and the sweep diverged.
+TEST(EqualAngles, RacingCornerOfASplitIsMadeWhereItsLinesPassTheEvent) {
+  double pitch = 0;
+  const Case c = savedHipCase("racing_split_ridge.corbel", pitch);
+  expectMatchesSkeleton(c, pitch, 1e-7);
+}
+
+// random27185: a mirrored skyline perturbed by 2e-7 m. Where a corridor's roof closes at the
+// wall it meets, that wall's two pieces (2e-8 rad apart, one angle) become neighbours; their
+// lines meet 10 m away, and the corner between them, recomputed from the lines, jumped there:
+// a two-edge loop outside the plan, closed 30 m above the roof. The shell was open, unwarned.
+TEST(EqualAngles, CornerOnAnAlmostStraightWallMovesWithTheWall) {
+  double pitch = 0;
+  const Case c = savedHipCase("straight_corner_far_lines.corbel", pitch);
+  expectMatchesSkeleton(c, pitch, 1e-7);
 }
 
 TEST(EqualAngles, RandomOrthogonalSkylinesMatchCgal) {

@@ -3,7 +3,7 @@
 // holes. Nothing may crash or hang (each building has a 1 s limit); every building is either
 // a closed 2-manifold whose roof projects onto the footprint exactly once, or a failure with a
 // reason. Failures are written to <build>/tests/extrude-random-failures/ as project files
-// that reproduce them (corbel-cli extrude FILE). Failures stay under 2 % (1,346 of 100,000 at the last count; docs/extrude.md).
+// that reproduce them (corbel-cli extrude FILE). Failures stay under 2 % (386 of 100,000 at the last count; docs/extrude.md).
 #include "core/project_io.h"
 #include "extrude/batch.h"
 #include "support.h"

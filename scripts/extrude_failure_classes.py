@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Groups the random robustness run's failures (build/tests/extrude-random-failures/*.corbel)
+into classes by running `corbel-cli extrude CASE --stats` on each and reading its error and
+warnings. Usage: scripts/extrude_failure_classes.py [FAILURE_DIR] [--cli PATH] [--list CLASS]"""
+import json
+import subprocess
+import sys
+from collections import Counter, defaultdict
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+
+def classify(error, warnings):
+    w = " ".join(warnings)
+    if "cascade" in error or "cycle" in error:
+        return "event cycle"
+    if "time limit" in error:
+        return "time limit"
+    if "diverged" in w:
+        return "diverged"
+    if "did not close" in w:
+        return "capped"
+    if "overlapped itself" in w:
+        return "overlap-warned"
+    if "could not be placed" in w:
+        return "face placement"
+    if "not closed" in error:
+        return "unclosed without warning" if not warnings else "unclosed, other warning"
+    if "2-manifold" in error:
+        return "non-manifold"
+    return "other: " + error[:60]
+
+
+def run(cli, path):
+    p = subprocess.run([cli, "extrude", str(path), "--stats"], capture_output=True, text=True)
+    for line in p.stdout.splitlines():
+        j = json.loads(line)
+        if "summary" in j or "error" not in j:
+            continue
+        return classify(j["error"], j.get("warnings", [])), j
+    return "closed now", None
+
+
+def main():
+    args = sys.argv[1:]
+    cli = "build/src/cli/corbel-cli"
+    show = None
+    if "--cli" in args:
+        i = args.index("--cli")
+        cli = args[i + 1]
+        del args[i : i + 2]
+    if "--list" in args:
+        i = args.index("--list")
+        show = args[i + 1]
+        del args[i : i + 2]
+    folder = Path(args[0] if args else "build/tests/extrude-random-failures")
+    cases = sorted(folder.glob("*.corbel"))
+    with ThreadPoolExecutor(2) as pool:
+        results = list(pool.map(lambda c: run(cli, c), cases))
+    counts = Counter(r[0] for r in results)
+    members = defaultdict(list)
+    for c, r in zip(cases, results):
+        members[r[0]].append(c.stem)
+    for k, n in counts.most_common():
+        print(f"{n:6d}  {k}")
+    print(f"{len(cases):6d}  total")
+    if show:
+        for m in members.get(show, []):
+            print(m)
+
+
+if __name__ == "__main__":
+    main()
