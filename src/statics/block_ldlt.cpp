@@ -171,8 +171,7 @@ void BlockLdlt::analyze(int n, const std::vector<std::pair<int, int>>& pairs) {
   }
   colStart_[std::size_t(n)] = int(rows_.size());
   auto find = [&](int row, int column) {
-    const auto b = rows_.begin() + colStart_[std::size_t(column)],
-               e = rows_.begin() + colStart_[std::size_t(column) + 1];
+    const auto b = rows_.begin() + colStart_[std::size_t(column)], e = rows_.begin() + colStart_[std::size_t(column) + 1];
     return int(std::lower_bound(b, e, row) - rows_.begin());
   };
   // Update targets: for rows qa ≥ qb of column p, the block (qa, qb) in column qb.
