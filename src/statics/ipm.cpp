@@ -578,7 +578,11 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       const VectorXd w = rc.cwiseQuotient(s) + d.cwiseProduct(rg);
       const VectorXd rho = -rd - GTv(w);
       const VectorXd rhs = -rp - applyAHinv(rho);
-      dy = refine ? solveSchur(rhs) : ldlt.solve(rhs);
+      // Once the correction on the unreduced system below runs, it also corrects the Schur
+      // solve's error: both solves are then plain (3 solves an iteration instead of 5; the
+      // equilibrium residuals measured stay within 2× of the refined ones, 1e-16..5e-12).
+      const bool unreduced = refine && mu < kRefineBelowMu && options.newtonRefinement > 0;
+      dy = refine && !unreduced ? solveSchur(rhs) : ldlt.solve(rhs);
       dx = hinvPlusAT(rho, dy);
       // Refinement on the unreduced system H dx − Aᵀ dy = rho, A dx = −rp: forming the Schur
       // right-hand side cancels large terms (H⁻¹ reaches 1/μ), which leaves A dx + rp at
@@ -587,7 +591,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int step = 0; refine && mu < kRefineBelowMu && step < options.newtonRefinement; ++step) {
         const VectorXd r1 = rho + qp.A.transpose() * dy - applyH(dx);
         const VectorXd r2 = -rp - qp.A * dx;
-        const VectorXd ddy = solveSchur(r2 - applyAHinv(r1));
+        const VectorXd ddy = ldlt.solve(r2 - applyAHinv(r1));
         dx += hinvPlusAT(r1, ddy);
         dy += ddy;
       }

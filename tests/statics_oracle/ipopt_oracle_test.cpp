@@ -229,9 +229,10 @@ double compareWithIpopt(const Assembly& as, const AnalysisOptions& opt = {}) {
   const double tol = std::max({1e-6 * ip.y, ours.gap, kFeasibleMeasure});
   std::printf(
       "  %d blocks, %d variables: corbel y/W² %.10g (%s, %d iterations, gap %.2g), Ipopt %.10g (%d iterations), "
-      "difference %.2g (%.2g relative)\n",
+      "difference %.2g (%.2g relative); residuals %.1e, %.1e\n",
       int(as.blocks.size()), q.n, ours.yNormalised, toString(ours.status).c_str(), ours.iterations, ours.gap, ip.y,
-      ip.iterations, ours.yNormalised - ip.y, ip.y > 0 ? (ours.yNormalised - ip.y) / ip.y : 0.0);
+      ip.iterations, ours.yNormalised - ip.y, ip.y > 0 ? (ours.yNormalised - ip.y) / ip.y : 0.0,
+      ours.equilibriumResidual, residual(q, ip.x));
   EXPECT_NEAR(ours.yNormalised, ip.y, tol)
       << "corbel " << ours.yNormalised << " (gap " << ours.gap << ", " << toString(ours.status) << ", "
       << ours.iterations << " iterations), Ipopt " << ip.y;
