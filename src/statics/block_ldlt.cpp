@@ -11,26 +11,111 @@
 namespace corbel::statics {
 namespace {
 
-// X = D⁺ B for a pivot block factored as D = Pᵀ L diag(d) Lᵀ P (Eigen's LDLT), the same steps
-// as LDLT::solve (zero pivots give zero rows) written out for 6×6 right-hand sides: Eigen
-// sends a matrix right-hand side through its generic blocked triangular solve and GEMM, which
-// cost more than the arithmetic here.
-BlockLdlt::Block pivotSolve(const Eigen::LDLT<BlockLdlt::Block>& f, const BlockLdlt::Block& B) {
-  BlockLdlt::Block X = f.transpositionsP() * B;
-  const BlockLdlt::Block& L = f.matrixLDLT();  // unit lower triangle below the diagonal
-  const auto d = f.vectorD();
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define CORBEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define CORBEL_CLONES
+#endif
+
+// X ← D⁺ X for a pivot block D = Pᵀ L diag(d) Lᵀ P, X with 6 rows of C entries (row i at
+// X + C·i): the steps of Eigen's LDLT::solve (permutation, unit-triangular substitutions, zero
+// for pivots ≤ the smallest normal double, permutation back), written as row operations on
+// contiguous rows so they vectorise.
+template <int C>
+inline void pivotApply(const BlockLdlt::Pivot& pv, double* X) {
+  for (int i = 0; i < 6; ++i) {
+    const int t = pv.transpositions[i];
+    if (t != i)
+      for (int c = 0; c < C; ++c) std::swap(X[C * i + c], X[C * t + c]);
+  }
   for (int i = 1; i < 6; ++i)
-    for (int k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
+    for (int k = 0; k < i; ++k) {
+      const double l = pv.L[i + 6 * k];
+      for (int c = 0; c < C; ++c) X[C * i + c] -= l * X[C * k + c];
+    }
   constexpr double tiny = (std::numeric_limits<double>::min)();
   for (int i = 0; i < 6; ++i) {
-    if (std::abs(d[i]) > tiny)
-      X.row(i) /= d[i];
-    else
-      X.row(i).setZero();
+    if (std::abs(pv.d[i]) > tiny) {
+      const double inv = 1.0 / pv.d[i];
+      for (int c = 0; c < C; ++c) X[C * i + c] *= inv;
+    } else {
+      for (int c = 0; c < C; ++c) X[C * i + c] = 0.0;
+    }
   }
   for (int i = 4; i >= 0; --i)
-    for (int k = i + 1; k < 6; ++k) X.row(i) -= L(k, i) * X.row(k);
-  return f.transpositionsP().transpose() * X;
+    for (int k = i + 1; k < 6; ++k) {
+      const double l = pv.L[k + 6 * i];
+      for (int c = 0; c < C; ++c) X[C * i + c] -= l * X[C * k + c];
+    }
+  for (int i = 5; i >= 0; --i) {
+    const int t = pv.transpositions[i];
+    if (t != i)
+      for (int c = 0; c < C; ++c) std::swap(X[C * i + c], X[C * t + c]);
+  }
+}
+
+// L_a = S_a D⁺ for the m off-diagonal blocks of a column (S column-major, m blocks in a row).
+// (S_a D⁺)ᵀ = D⁺ S_aᵀ, and S_aᵀ read row by row is S_a's column-major storage, so the result's
+// storage is D⁺ applied to the rows of a copy of S_a.
+CORBEL_CLONES
+void pivotColumn(int m, const BlockLdlt::Pivot& pv, const double* __restrict S, double* __restrict L) {
+  for (int a = 0; a < m; ++a) {
+    double* X = L + 36 * a;
+    for (int k = 0; k < 36; ++k) X[k] = S[36 * a + k];
+    pivotApply<6>(pv, X);
+  }
+}
+
+// L D Lᵀ y = b in place, y by position (6 a block row).
+CORBEL_CLONES
+void blockSubstitute(int n, const int* __restrict colStart, const int* __restrict rows, const double* __restrict values,
+                     const BlockLdlt::Pivot* __restrict pivots, double* __restrict y) {
+  for (int p = 0; p < n; ++p) {
+    const double* yp = y + 6 * p;
+    for (int s = colStart[p] + 1; s < colStart[p + 1]; ++s) {
+      const double* V = values + 36 * std::size_t(s);
+      double* yr = y + 6 * rows[s];
+      for (int k = 0; k < 6; ++k)
+        for (int i = 0; i < 6; ++i) yr[i] -= V[i + 6 * k] * yp[k];
+    }
+  }
+  for (int p = 0; p < n; ++p) pivotApply<1>(pivots[p], y + 6 * p);
+  for (int p = n - 1; p >= 0; --p) {
+    double* yp = y + 6 * p;
+    for (int s = colStart[p] + 1; s < colStart[p + 1]; ++s) {
+      const double* V = values + 36 * std::size_t(s);
+      const double* yr = y + 6 * rows[s];
+      for (int k = 0; k < 6; ++k) {
+        double acc = 0;
+        for (int i = 0; i < 6; ++i) acc += V[i + 6 * k] * yr[i];
+        yp[k] -= acc;
+      }
+    }
+  }
+}
+
+// The right-looking update of one column: C_t −= L_a S_bᵀ for every pair of the column's rows
+// a ≥ b, t the pair's target slot. This is most of the factorisation's arithmetic (6×6 times
+// 6×6, 432 flops a pair), written as plain loops so the compiler vectorises them for the
+// machine: `target_clones` builds an AVX2/FMA version beside the baseline x86-64 one and picks
+// one when the program loads (GCC's ifunc). Eigen's own kernels are fixed at compile time to
+// SSE2 here, since the build targets baseline x86-64. No aliasing: L is a scratch copy, the
+// S_b are the column's own slots and every target lies in a later column.
+CORBEL_CLONES
+void updateColumn(int m, const double* __restrict L, const double* __restrict S, const int* __restrict targets,
+                  double* __restrict values) {
+  for (int a = 0; a < m; ++a) {
+    const double* La = L + 36 * a;
+    for (int b = 0; b <= a; ++b) {
+      const double* Sb = S + 36 * b;
+      double* C = values + 36 * std::size_t(*targets++);
+      for (int j = 0; j < 6; ++j)
+        for (int k = 0; k < 6; ++k) {
+          const double sjk = Sb[j + 6 * k];
+          for (int i = 0; i < 6; ++i) C[i + 6 * j] -= La[i + 6 * k] * sjk;
+        }
+    }
+  }
 }
 
 }  // namespace
@@ -103,6 +188,7 @@ void BlockLdlt::analyze(int n, const std::vector<std::pair<int, int>>& pairs) {
   // Copies of a factorised LDLT: Eigen 3.4 leaves a default-constructed one's status
   // uninitialised, and copying that is undefined behaviour (UBSan reports it).
   dfac_.assign(std::size_t(n), Eigen::LDLT<Block>(Block::Identity()));
+  pivots_.assign(std::size_t(n), Pivot{});
 }
 
 BlockLdlt::Slot BlockLdlt::slot(int i, int j) const {
@@ -129,31 +215,28 @@ bool BlockLdlt::factorize(double minPivot) {
     if (!(dv.minCoeff() > minPivot * top)) return false;
     // L_qp = S_qp D_p⁺, then S_ab −= L_ap S_bpᵀ for the column's rows a ≥ b.
     const int m = end - start - 1;
+    Pivot& pv = pivots_[std::size_t(p)];
+    for (int i = 0; i < 6; ++i) {
+      pv.transpositions[i] = f.transpositionsP().indices()[i];
+      pv.d[i] = dv[i];
+    }
+    Eigen::Map<Block>(pv.L) = f.matrixLDLT();
     L.resize(std::size_t(m));
-    for (int a = 0; a < m; ++a)
-      L[std::size_t(a)] = pivotSolve(f, values_[std::size_t(start + 1 + a)].transpose()).transpose();
-    int u = updStart_[std::size_t(p)];
-    for (int a = 0; a < m; ++a)
-      for (int b = 0; b <= a; ++b) values_[std::size_t(updTarget_[std::size_t(u++)])].noalias() -=
-          L[std::size_t(a)] * values_[std::size_t(start + 1 + b)].transpose();
+    if (m > 0) pivotColumn(m, pv, values_[std::size_t(start + 1)].data(), L[0].data());
+    if (m > 0)
+      updateColumn(m, L[0].data(), values_[std::size_t(start + 1)].data(),
+                   updTarget_.data() + updStart_[std::size_t(p)], values_[0].data());
     for (int a = 0; a < m; ++a) values_[std::size_t(start + 1 + a)] = L[std::size_t(a)];
   }
   return true;
 }
 
 Eigen::VectorXd BlockLdlt::solve(const Eigen::VectorXd& b) const {
-  using V6 = Eigen::Matrix<double, 6, 1>;
-  std::vector<V6> y(static_cast<std::size_t>(n_));
-  for (int p = 0; p < n_; ++p) y[std::size_t(p)] = b.segment<6>(6 * perm_[std::size_t(p)]);
-  for (int p = 0; p < n_; ++p)
-    for (int s = colStart_[std::size_t(p)] + 1; s < colStart_[std::size_t(p) + 1]; ++s)
-      y[std::size_t(rows_[std::size_t(s)])].noalias() -= values_[std::size_t(s)] * y[std::size_t(p)];
-  for (int p = 0; p < n_; ++p) y[std::size_t(p)] = dfac_[std::size_t(p)].solve(y[std::size_t(p)]);
-  for (int p = n_ - 1; p >= 0; --p)
-    for (int s = colStart_[std::size_t(p)] + 1; s < colStart_[std::size_t(p) + 1]; ++s)
-      y[std::size_t(p)].noalias() -= values_[std::size_t(s)].transpose() * y[std::size_t(rows_[std::size_t(s)])];
+  Eigen::VectorXd y(b.size());
+  for (int p = 0; p < n_; ++p) y.segment<6>(6 * p) = b.segment<6>(6 * perm_[std::size_t(p)]);
+  if (n_ > 0) blockSubstitute(n_, colStart_.data(), rows_.data(), values_[0].data(), pivots_.data(), y.data());
   Eigen::VectorXd x(b.size());
-  for (int p = 0; p < n_; ++p) x.segment<6>(6 * perm_[std::size_t(p)]) = y[std::size_t(p)];
+  for (int p = 0; p < n_; ++p) x.segment<6>(6 * perm_[std::size_t(p)]) = y.segment<6>(6 * p);
   return x;
 }
 

@@ -43,14 +43,24 @@ class BlockLdlt {
 
  private:
   int n_ = 0;
-  std::vector<int> perm_;      // position → block row
-  std::vector<int> pos_;       // block row → position
-  std::vector<int> colStart_;  // position → first slot of its column (the diagonal), then its rows
-  std::vector<int> rows_;      // per off-diagonal slot: the position of its row (> column)
-  std::vector<int> updStart_;  // position → first entry of its update list
-  std::vector<int> updTarget_; // per pair (a ≥ b) of a column's rows: the slot updated
+  std::vector<int> perm_;       // position → block row
+  std::vector<int> pos_;        // block row → position
+  std::vector<int> colStart_;   // position → first slot of its column (the diagonal), then its rows
+  std::vector<int> rows_;       // per off-diagonal slot: the position of its row (> column)
+  std::vector<int> updStart_;   // position → first entry of its update list
+  std::vector<int> updTarget_;  // per pair (a ≥ b) of a column's rows: the slot updated
   std::vector<Block> values_;
   std::vector<Eigen::LDLT<Block>> dfac_;  // per position: D's factorisation
+ public:
+  // D_p's factorisation D = Pᵀ L diag(d) Lᵀ P as plain arrays, for the vectorised kernels.
+  struct Pivot {
+    int transpositions[6];
+    double L[36];  // column-major; the unit lower triangle below the diagonal
+    double d[6];
+  };
+
+ private:
+  std::vector<Pivot> pivots_;
 };
 
 }  // namespace corbel::statics

@@ -571,20 +571,27 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       dy += ldlt.solve(r);
       return dy;
     };
-    auto newton = [&](const VectorXd& rc, VectorXd& dx, VectorXd& dy, VectorXd& dz, VectorXd& ds) {
+    // `refine`: false for the predictor, whose step only sets the centring σ and the
+    // second-order term of the corrector (its errors perturb the centring, not the iterate):
+    // one plain solve with the factorisation, no refinement.
+    auto newton = [&](const VectorXd& rc, VectorXd& dx, VectorXd& dy, VectorXd& dz, VectorXd& ds, bool refine) {
       const VectorXd w = rc.cwiseQuotient(s) + d.cwiseProduct(rg);
       const VectorXd rho = -rd - GTv(w);
       const VectorXd rhs = -rp - applyAHinv(rho);
-      dy = solveSchur(rhs);
+      // Once the correction on the unreduced system below runs, it also corrects the Schur
+      // solve's error: both solves are then plain (3 solves an iteration instead of 5; the
+      // equilibrium residuals measured stay within 2× of the refined ones, 1e-16..5e-12).
+      const bool unreduced = refine && mu < kRefineBelowMu && options.newtonRefinement > 0;
+      dy = refine && !unreduced ? solveSchur(rhs) : ldlt.solve(rhs);
       dx = hinvPlusAT(rho, dy);
       // Refinement on the unreduced system H dx − Aᵀ dy = rho, A dx = −rp: forming the Schur
       // right-hand side cancels large terms (H⁻¹ reaches 1/μ), which leaves A dx + rp at
       // 1e-11..1e-10 near the optimum of strongly infeasible models; one correction solved
       // with the same factorisation brings it back to rounding. Only needed once μ is small.
-      for (int step = 0; mu < kRefineBelowMu && step < options.newtonRefinement; ++step) {
+      for (int step = 0; refine && mu < kRefineBelowMu && step < options.newtonRefinement; ++step) {
         const VectorXd r1 = rho + qp.A.transpose() * dy - applyH(dx);
         const VectorXd r2 = -rp - qp.A * dx;
-        const VectorXd ddy = solveSchur(r2 - applyAHinv(r1));
+        const VectorXd ddy = ldlt.solve(r2 - applyAHinv(r1));
         dx += hinvPlusAT(r1, ddy);
         dy += ddy;
       }
@@ -594,14 +601,14 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       return allFinite(dx) && allFinite(dy) && allFinite(dz);
     };
     VectorXd dx, dy, dz, ds;
-    if (!newton(s.cwiseProduct(z), dx, dy, dz, ds)) {
+    if (!newton(s.cwiseProduct(z), dx, dy, dz, ds, false)) {
       return stop(SolveStatus::NumericalFailure);
     }
     const double aAff = std::min({1.0, maxStep(s, ds), maxStep(z, dz)});
     const double muAff = mi ? (s + aAff * ds).dot(z + aAff * dz) / mi : 0.0;
     const double sigma = mu > 0 ? std::pow(std::clamp(muAff / mu, 0.0, 1.0), 3) : 0.0;
     const VectorXd rc = s.cwiseProduct(z) + ds.cwiseProduct(dz) - VectorXd::Constant(mi, sigma * mu);
-    if (!newton(rc, dx, dy, dz, ds)) {
+    if (!newton(rc, dx, dy, dz, ds, true)) {
       return stop(SolveStatus::NumericalFailure);
     }
     const double alpha = std::min(1.0, 0.995 * std::min(maxStep(s, ds), maxStep(z, dz)));
