@@ -548,6 +548,10 @@ void App::registerActions() {
   add({"town.next_type", "Town", "Override: Next Type",
        "Give the selected building the style's next building type (an undoable override).", {}, false,
        [this] { townPanel_.overrideNextType(townHost()); }, townSelected});
+  add({"town.add_street", "Town", "Add Street", "Add a street along the selected town's south side (Fig. 26).", {},
+       false, [this] { townPanel_.addStreet(townHost()); }, townSelected});
+  add({"town.bend_street", "Town", "Bend Street", "Move the chosen street's middle point 10 m south.", {}, false,
+       [this] { townPanel_.bendStreet(townHost()); }, townSelected});
   add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
        [this] { showHelp_ = true; }});
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <limits>
+#include <map>
 
 namespace corbel::editor {
 
@@ -55,6 +56,86 @@ void setTownOverride(Document& doc, ObjectId id, const std::string& building, co
   TownSpec& t = townOf(doc, id);
   if (o.empty()) t.overrides.erase(building);
   else t.overrides[building] = o;
+}
+
+namespace {
+
+void checked(Document& doc, ObjectId id, const TownSpec& changed) {
+  if (auto problem = checkTownSpec(changed)) throw Error("town." + *problem);
+  townOf(doc, id) = changed;
+}
+
+TownStreet& streetOf(TownSpec& t, std::size_t street) {
+  if (street >= t.streets.size()) throw Error("the town has no street " + std::to_string(street + 1));
+  return t.streets[street];
+}
+
+}  // namespace
+
+TownStreet defaultStreet(const city::TownCache& cache, ObjectId object) {
+  BBox box;
+  for (const city::BuiltBuilding& b : cache.buildings(object))
+    if (!b.bounds.empty()) box.lo = box.lo.minimize(b.bounds.lo), box.hi = box.hi.maximize(b.bounds.hi);
+  TownStreet st;
+  // Its plots reach width/2 + setback + depth = 19 m from the centreline: 20 m keeps them clear.
+  const double reach = st.width / 2 + st.setback + st.depth + 1;
+  double x0 = 0, x1 = 70, y = -reach;
+  if (!box.empty()) {
+    x0 = box.lo[0];
+    x1 = std::max(box.hi[0], x0 + 30);
+    y = box.lo[1] - reach;
+  }
+  st.points = {{x0, y}, {(x0 + x1) / 2, y}, {x1, y}};
+  return st;
+}
+
+std::size_t addStreet(Document& doc, ObjectId id, const TownStreet& street) {
+  TownSpec t = townOf(doc, id);
+  t.streets.push_back(street);
+  checked(doc, id, t);
+  return t.streets.size() - 1;
+}
+
+void setStreet(Document& doc, ObjectId id, std::size_t street, const TownStreet& value) {
+  TownSpec t = townOf(doc, id);
+  streetOf(t, street) = value;
+  checked(doc, id, t);
+}
+
+void moveStreetPoint(Document& doc, ObjectId id, std::size_t street, std::size_t point, const Vec2& to) {
+  TownSpec t = townOf(doc, id);
+  TownStreet& st = streetOf(t, street);
+  if (point >= st.points.size())
+    throw Error("street " + std::to_string(street + 1) + " has no point " + std::to_string(point + 1));
+  st.points[point] = {to[0], to[1]};
+  checked(doc, id, t);
+}
+
+void removeStreet(Document& doc, ObjectId id, std::size_t street) {
+  TownSpec t = townOf(doc, id);
+  streetOf(t, street);
+  t.streets.erase(t.streets.begin() + std::ptrdiff_t(street));
+  // Overrides of its plots, and the numbers of the streets after it, would now mean other plots.
+  const std::string prefix = "street ";
+  std::map<std::string, TownOverride> kept;
+  for (auto& [building, o] : t.overrides) {
+    if (building.rfind(prefix, 0) != 0) {
+      kept[building] = o;
+      continue;
+    }
+    const std::size_t slash = building.find('/');
+    const std::size_t k = std::size_t(std::stoul(building.substr(prefix.size(), slash - prefix.size()))) - 1;
+    if (k == street) continue;
+    kept[k > street ? prefix + std::to_string(k) + building.substr(slash) : building] = o;
+  }
+  t.overrides = std::move(kept);
+  checked(doc, id, t);
+}
+
+std::optional<Vec2> groundPoint(const Vec3& origin, const Vec3& dir) {
+  if (!(dir[2] < -1e-9) || !(origin[2] > 0)) return std::nullopt;
+  const double t = -origin[2] / dir[2];
+  return Vec2(origin[0] + t * dir[0], origin[1] + t * dir[1]);
 }
 
 void setTownSpec(Document& doc, ObjectId id, const TownSpec& spec) {

@@ -17,6 +17,20 @@ void setTownOverride(Document& doc, ObjectId id, const std::string& building, co
 // value is refused (checkTownSpec).
 void setTownSpec(Document& doc, ObjectId id, const TownSpec& spec);
 
+// Streets of a town (Fig. 26), each edit checked by checkTownSpec (a refusal throws
+// corbel::Error naming the street, "town.streets[0].points[2]: repeats the point before it", and
+// leaves the Document as it was).
+// A straight street of three control points along the town's south side, 20 m clear of the
+// bounds of what the object's last build made (or 0..70 m on y = -20 before any build).
+TownStreet defaultStreet(const city::TownCache& cache, ObjectId object);
+// Adds a street; returns its index.
+std::size_t addStreet(Document& doc, ObjectId id, const TownStreet& street);
+void setStreet(Document& doc, ObjectId id, std::size_t street, const TownStreet& value);
+void moveStreetPoint(Document& doc, ObjectId id, std::size_t street, std::size_t point, const Vec2& to);
+void removeStreet(Document& doc, ObjectId id, std::size_t street);
+// Where a ray of the 3D view meets the ground plane z = 0 (nullopt when it looks up or along it).
+std::optional<Vec2> groundPoint(const Vec3& origin, const Vec3& dir);
+
 // The building of the object's last build whose faces the ray (origin, unit direction) meets
 // first, or nullopt.
 std::optional<std::string> pickBuilding(const city::TownCache& cache, ObjectId object, const Vec3& origin,

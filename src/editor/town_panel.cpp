@@ -1,10 +1,12 @@
 #include "editor/town_panel.h"
 
 #include "core/error.h"
+#include "city/street.h"
 #include "editor/town_edits.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -64,7 +66,49 @@ void TownPanel::overrideNextType(const TownHost& host) {
   commitOverride(host, o, "Set the type to " + o.type);
 }
 
+bool TownPanel::commitStreets(const TownHost& host, const std::function<void(Document&)>& edit,
+                              const std::string& what, const std::string& merge) {
+  Document doc = *host.doc;
+  try {
+    edit(doc);
+  } catch (const Error& e) {
+    host.log(e.what(), true);
+    return false;
+  }
+  host.commit(std::move(doc), what, merge);
+  return true;
+}
+
+void TownPanel::addStreet(const TownHost& host) {
+  if (!townOf(host)) return;
+  const TownStreet st = defaultStreet(*host.cache, host.object);
+  std::size_t k = 0;
+  if (commitStreets(host, [&](Document& d) { k = editor::addStreet(d, host.object, st); }, "Add a street"))
+    street_ = int(k), point_ = 1, openStreets_ = true;
+}
+
+void TownPanel::bendStreet(const TownHost& host) {
+  const TownSpec* t = townOf(host);
+  if (!t || t->streets.empty()) return;
+  if (street_ < 0 || street_ >= int(t->streets.size())) street_ = int(t->streets.size()) - 1;
+  const auto& pts = t->streets[std::size_t(street_)].points;
+  const std::size_t mid = pts.size() / 2;
+  const Vec2 to(pts[mid][0], pts[mid][1] - 10);
+  commitStreets(host, [&](Document& d) { moveStreetPoint(d, host.object, std::size_t(street_), mid, to); },
+                "Bend street " + std::to_string(street_ + 1));
+}
+
 void TownPanel::pick(const TownHost& host, const Vec3& origin, const Vec3& dir) {
+  const TownSpec* t = townOf(host);
+  if (moveOnClick_ && t && street_ >= 0 && street_ < int(t->streets.size()) && point_ >= 0 &&
+      point_ < int(t->streets[std::size_t(street_)].points.size())) {
+    if (auto g = groundPoint(origin, dir)) {
+      const std::size_t k = std::size_t(street_), i = std::size_t(point_);
+      commitStreets(host, [&](Document& d) { moveStreetPoint(d, host.object, k, i, *g); },
+                    "Move point " + std::to_string(i + 1) + " of street " + std::to_string(k + 1));
+    }
+    return;
+  }
   if (auto id = pickBuilding(*host.cache, host.object, origin, dir)) {
     selected_ = *id;
     scrollToSelected_ = true;
@@ -73,6 +117,25 @@ void TownPanel::pick(const TownHost& host, const Vec3& origin, const Vec3& dir) 
 }
 
 void TownPanel::drawOverlay(const TownHost& host, render::Overlay& overlay) const {
+  // The streets: their centrelines (the spline the plots are cut along) and control points, the
+  // selected street in yellow, its selected point larger.
+  if (const TownSpec* t = townOf(host))
+    for (std::size_t k = 0; k < t->streets.size(); ++k) {
+      const TownStreet& st = t->streets[k];
+      std::vector<Vec2> control;
+      for (const auto& p : st.points) control.emplace_back(p[0], p[1]);
+      const bool chosen = int(k) == street_;
+      const render::Rgba line = chosen ? render::Rgba{1.0f, 0.85f, 0.2f, 1.0f} : render::Rgba{0.85f, 0.85f, 0.9f, 1.0f};
+      const std::vector<Vec2> spline = city::catmullRom(control);
+      for (std::size_t i = 0; i + 1 < spline.size(); ++i)
+        overlay.line(Vec3(spline[i][0], spline[i][1], 0.15), Vec3(spline[i + 1][0], spline[i + 1][1], 0.15), line);
+      for (std::size_t i = 0; i < control.size(); ++i) {
+        const double r = chosen && int(i) == point_ ? 2.5 : 1.2;
+        const Vec3 c(control[i][0], control[i][1], 0.2);
+        overlay.line(c - Vec3(r, 0, 0), c + Vec3(r, 0, 0), line);
+        overlay.line(c - Vec3(0, r, 0), c + Vec3(0, r, 0), line);
+      }
+    }
   if (selected_.empty()) return;
   const auto list = host.cache->buildings(host.object);
   const city::BuiltBuilding* b = findBuilding(list, selected_);
@@ -83,6 +146,79 @@ void TownPanel::drawOverlay(const TownHost& host, render::Overlay& overlay) cons
   for (int k = 0; k < 8; ++k) p[k] = Vec3(k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]);
   const int edges[12][2] = {{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7}, {7, 6}, {6, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   for (const auto& e : edges) overlay.line(p[e[0]], p[e[1]], c);
+}
+
+void TownPanel::drawStreets(const TownHost& host, const TownSpec& spec) {
+  const ObjectId id = host.object;
+  if (street_ >= int(spec.streets.size())) street_ = point_ = -1;
+  if (street_ < 0 && !spec.streets.empty()) street_ = int(spec.streets.size()) - 1, point_ = 0;  // one is always chosen
+  ImGui::SetNextItemOpen(!spec.streets.empty(), ImGuiCond_Appearing);
+  if (openStreets_) ImGui::SetNextItemOpen(true), openStreets_ = false;
+  if (!ImGui::CollapsingHeader("Streets (Fig. 26)")) return;
+  if (ImGui::SmallButton("Add street")) addStreet(host);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A straight street along the town's south side; its plots become houses");
+  for (std::size_t k = 0; k < spec.streets.size(); ++k) {
+    const std::string label = "street " + std::to_string(k + 1) + " (" + std::to_string(spec.streets[k].points.size()) +
+                              " points)";
+    ImGui::SameLine();
+    if (ImGui::SmallButton(label.c_str())) street_ = int(k), point_ = 0;
+  }
+  if (street_ < 0) {
+    ImGui::TextDisabled("Select a street to edit its points; plots become houses facing it.");
+    return;
+  }
+  const std::size_t k = std::size_t(street_);
+  const TownStreet& st = spec.streets[k];
+  const std::string key = "town.street." + std::to_string(id) + "." + std::to_string(k);
+  for (std::size_t i = 0; i < st.points.size(); ++i) {
+    float xy[2] = {float(st.points[i][0]), float(st.points[i][1])};
+    ImGui::PushID(int(i));
+    if (ImGui::RadioButton("##pick", point_ == int(i))) point_ = int(i);
+    ImGui::SameLine();
+    if (ImGui::DragFloat2(("point " + std::to_string(i + 1)).c_str(), xy, 0.25f, -1e6f, 1e6f, "%.2f")) {
+      const Vec2 to(xy[0], xy[1]);
+      commitStreets(host, [&](Document& d) { moveStreetPoint(d, id, k, i, to); },
+                    "Move point " + std::to_string(i + 1) + " of street " + std::to_string(k + 1),
+                    key + ".point." + std::to_string(i));
+    }
+    ImGui::PopID();
+  }
+  ImGui::Checkbox("Move the chosen point on click", &moveOnClick_);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A click on the ground in the 3D view moves the chosen point there");
+  TownStreet edit = st;
+  bool changed = false;
+  float v[4] = {float(st.width), float(st.setback), float(st.depth), float(st.plotWidth)};
+  changed |= ImGui::DragFloat("Street width", &v[0], 0.1f, 1, 100, "%.1f m");
+  changed |= ImGui::DragFloat("Setback", &v[1], 0.1f, 0, 50, "%.1f m");
+  changed |= ImGui::DragFloat("Plot depth", &v[2], 0.1f, 3, 200, "%.1f m");
+  changed |= ImGui::DragFloat("Plot width", &v[3], 0.1f, 3, 200, "%.1f m");
+  bool both = st.bothSides;
+  changed |= ImGui::Checkbox("Plots on both sides", &both);
+  if (changed) {
+    edit.width = v[0], edit.setback = v[1], edit.depth = v[2], edit.plotWidth = v[3], edit.bothSides = both;
+    commitStreets(host, [&](Document& d) { setStreet(d, id, k, edit); }, "Edit street " + std::to_string(k + 1),
+                  key + ".values");
+  }
+  if (ImGui::SmallButton("Add point")) {
+    TownStreet more = st;
+    const auto& a = st.points[st.points.size() - 2];
+    const auto& b = st.points.back();
+    more.points.push_back({2 * b[0] - a[0], 2 * b[1] - a[1]});  // continues the last span
+    commitStreets(host, [&](Document& d) { setStreet(d, id, k, more); }, "Add a point to street " + std::to_string(k + 1));
+  }
+  ImGui::SameLine();
+  if (st.points.size() > 2 && point_ >= 0 && ImGui::SmallButton("Remove point")) {
+    TownStreet fewer = st;
+    fewer.points.erase(fewer.points.begin() + point_);
+    commitStreets(host, [&](Document& d) { setStreet(d, id, k, fewer); },
+                  "Remove a point of street " + std::to_string(k + 1));
+    point_ = std::min(point_, int(fewer.points.size()) - 1);
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Delete street")) {
+    commitStreets(host, [&](Document& d) { removeStreet(d, id, k); }, "Delete street " + std::to_string(k + 1));
+    street_ = point_ = -1;
+  }
 }
 
 void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
@@ -186,10 +322,12 @@ void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
   for (const auto& [t, n] : types) byType += (byType.empty() ? "" : ", ") + std::to_string(n) + " " + t;
   if (!byType.empty()) ImGui::TextWrapped("%s", byType.c_str());
 
+  drawStreets(host, *current);
+
   // The buildings, by footprint id.
   ImGui::Separator();
   ImGui::TextUnformatted("Buildings (click one here or in the 3D view)");
-  const float listH = std::max(80.0f, ImGui::GetContentRegionAvail().y - 8 * ImGui::GetFrameHeightWithSpacing());
+  const float listH = std::max(60.0f, ImGui::GetContentRegionAvail().y - 8 * ImGui::GetFrameHeightWithSpacing());
   ImGui::BeginChild("buildings", ImVec2(0, listH), true);
   // Only the visible rows are drawn (a real town has thousands of buildings).
   const float rowH = ImGui::GetTextLineHeightWithSpacing();

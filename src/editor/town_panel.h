@@ -41,19 +41,34 @@ class TownPanel {
   void draw(const TownHost& host, float x, float y, float w, float h);
   // The selected building's outline in the 3D view.
   void drawOverlay(const TownHost& host, render::Overlay& overlay) const;
-  // A click in the 3D view: selects the building under the ray.
+  // A click in the 3D view: selects the building under the ray, or, with "move on click", moves
+  // the selected street point to where the ray meets the ground.
   void pick(const TownHost& host, const Vec3& origin, const Vec3& dir);
-  void reset() { selected_.clear(); }
+  void reset() {
+    selected_.clear();
+    street_ = point_ = -1;
+    moveOnClick_ = false;
+  }
 
   // Also the actions town.next (select the next building) and town.next_type (override the
   // selected building's type with the style's next type).
   void selectNext(const TownHost& host);
   void overrideNextType(const TownHost& host);
+  // Also the actions town.add_street (a street along the town's south side, selected) and
+  // town.bend_street (the selected street's middle point 10 m further south).
+  void addStreet(const TownHost& host);
+  void bendStreet(const TownHost& host);
 
  private:
   void commitOverride(const TownHost& host, const TownOverride& o, const std::string& what);
+  void drawStreets(const TownHost& host, const TownSpec& spec);
+  bool commitStreets(const TownHost& host, const std::function<void(Document&)>& edit, const std::string& what,
+                     const std::string& merge = {});
   std::string selected_;  // footprint id
   bool scrollToSelected_ = false;
+  int street_ = -1, point_ = -1;  // the selected street and control point
+  bool moveOnClick_ = false;      // a click in the 3D view moves the selected point there
+  bool openStreets_ = false;      // open the Streets header on the next frame
 };
 
 }  // namespace corbel::editor

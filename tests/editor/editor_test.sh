@@ -25,7 +25,9 @@
 #     the site alone; undone, the document is the untouched example (nothing to recover).
 # 10. a town (the old-town example): the next building picked and its type overridden (scripted
 #     actions) is saved as an override and the 3D view differs from the town as styled; undone, the
-#     document is the untouched example (nothing to recover).
+#     document is the untouched example (nothing to recover);
+# 11. a street added beside that town and bent (scripted actions) is saved, builds its plots as
+#     houses (the saved project checks closed) that show in the 3D view; undone twice, nothing.
 set -euo pipefail
 editor=$1 cli=$2 check=$3 example=$4 work=$5 script=${6:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -184,4 +186,19 @@ rm -rf "$work/state"
 run --recover no --select "Town" --actions town.next,town.next_type,edit.undo --autosave-seconds 0 \
   --quit-after-frames 12 "$town"
 test -f "$work/state/recovery.corbel" && { echo "undo should leave the town example untouched (a recovery file was written)"; exit 1; }
+echo "== a town: add a street beside it and bend it; its plots are built as houses"
+rm -rf "$work/state"
+run --recover no --select "Town" --actions town.next,town.add_street,town.bend_street --autosave-seconds 0 \
+  --screenshot "$work/town-street.png" --quit-after-frames 12 "$town"
+test -f "$work/state/recovery.corbel" || { echo "adding a street changed nothing (no recovery file)"; exit 1; }
+grep -q '"streets": \[' "$work/state/recovery.corbel" || { echo "no street was saved"; exit 1; }
+summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+echo "with a street: $summary"
+[[ $summary == *'"failed":0}' ]] || { echo "the town with a street should build: $summary"; exit 1; }
+# The street's houses stand south of the town, in the 3D view.
+"$check" "$work/town-street.png" "$work/town.png" 0.01 460
+rm -rf "$work/state"
+run --recover no --select "Town" --actions town.add_street,town.bend_street,edit.undo,edit.undo --autosave-seconds 0 \
+  --quit-after-frames 12 "$town"
+test -f "$work/state/recovery.corbel" && { echo "undoing the street should leave the town untouched"; exit 1; }
 echo "editor test passed"

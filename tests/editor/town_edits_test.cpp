@@ -103,5 +103,93 @@ TEST(TownEdits, StylesAreTheShippedJsonFiles) {
   EXPECT_NE(styles[0].find("mixed.json"), std::string::npos);
 }
 
+// A street added beside the old town: its plots build (the default lies 20 m clear of the
+// town's bounds, and its plots reach 19 m), the footprints are not extruded again, dragging its
+// middle point re-cuts its plots and is one undo step back to the street as added; a point
+// moved onto its neighbour is refused with the street's path and changes nothing.
+TEST(TownEdits, AStreetBesideTheTownBuildsItsPlotsAndUndoesInOneStep) {
+  Document doc = example();
+  const ObjectId id = townId(doc);
+  SceneSync sync;
+  extrude::registerKernel(sync);
+  const auto cache = city::registerKernel(sync);
+  Scene scene;
+  sync.update(doc, scene);
+  ASSERT_EQ(cache->extrusions(), 32u);
+  const TownStreet st = defaultStreet(*cache, id);
+  ASSERT_EQ(st.points.size(), 3u);
+  History history;
+  history.reset(doc);
+  Document added = doc;
+  EXPECT_EQ(addStreet(added, id, st), 0u);
+  history.commit(added, "add street");
+  sync.update(history.current(), scene);
+  std::size_t plots = 0, refused = 0;
+  for (const city::BuiltBuilding& b : cache->buildings(id))
+    if (b.id.rfind("street 1/", 0) == 0) (b.error.empty() ? plots : refused) += 1;
+  EXPECT_GE(plots, 8u);
+  EXPECT_EQ(refused, 0u);
+  EXPECT_TRUE(sync.status().at(id).error.empty()) << sync.status().at(id).error;
+  EXPECT_TRUE(scene.validate(id).closedManifold());
+  const std::size_t afterAdd = cache->extrusions();
+  EXPECT_LE(afterAdd, 32u + plots + 32u);  // the plots, and at most the footprints whose labels the street changed
+
+  // A drag: many moves of the middle point, one undo step.
+  const Vec2 mid(st.points[1][0], st.points[1][1]);
+  for (int k = 1; k <= 5; ++k) {
+    Document d = history.current();
+    moveStreetPoint(d, id, 0, 1, mid + Vec2(0, -2.0 * k));
+    history.commit(d, "move street point", "town.street.0.1");
+  }
+  EXPECT_EQ(std::get<TownSpec>(history.current().find(id)->spec).streets[0].points[1][1], mid[1] - 10);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), added);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), doc);
+
+  Document bad = added;
+  try {
+    moveStreetPoint(bad, id, 0, 1, Vec2(st.points[0][0], st.points[0][1]));
+    FAIL() << "a point on its neighbour should be refused";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("town.streets[0].points[1]: repeats the point before it"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(bad, added);
+  EXPECT_THROW(moveStreetPoint(bad, id, 3, 0, mid), Error);
+  EXPECT_THROW(moveStreetPoint(bad, id, 0, 7, mid), Error);
+}
+
+// Removing a street drops the overrides of its plots and renumbers those of later streets.
+TEST(TownEdits, RemovingAStreetKeepsTheOverridesOfOtherStreetsPlots) {
+  Document doc = example();
+  const ObjectId id = townId(doc);
+  TownStreet a, b;
+  a.points = {{500, 0}, {570, 0}};
+  b.points = {{500, 100}, {570, 100}};
+  addStreet(doc, id, a);
+  addStreet(doc, id, b);
+  const std::size_t before = std::get<TownSpec>(doc.find(id)->spec).overrides.size();  // the footprints'
+  TownOverride garage;
+  garage.type = "garage";
+  setTownOverride(doc, id, "street 1/left/0", garage);
+  setTownOverride(doc, id, "street 2/right/3", garage);
+  removeStreet(doc, id, 0);
+  const TownSpec& t = std::get<TownSpec>(doc.find(id)->spec);
+  ASSERT_EQ(t.streets.size(), 1u);
+  EXPECT_EQ(t.streets[0], b);
+  EXPECT_EQ(t.overrides.size(), before + 1);
+  EXPECT_EQ(t.overrides.count("street 1/right/3"), 1u);
+}
+
+TEST(TownEdits, AClickOnTheGroundGivesThePointUnderIt) {
+  const auto p = groundPoint(Vec3(10, 20, 30), Vec3(0.6, 0, -0.8));
+  ASSERT_TRUE(p);
+  EXPECT_NEAR((*p)[0], 10 + 0.6 * 37.5, 1e-12);
+  EXPECT_NEAR((*p)[1], 20, 1e-12);
+  EXPECT_FALSE(groundPoint(Vec3(0, 0, 5), Vec3(1, 0, 0)));
+  EXPECT_FALSE(groundPoint(Vec3(0, 0, 5), Vec3(0, 0.6, 0.8)));
+}
+
 }  // namespace
 }  // namespace corbel::editor
