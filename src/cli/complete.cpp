@@ -185,15 +185,11 @@ int complete(int argc, char** argv) {
       std::cerr << "corbel-cli: complete: --storey: the site has storeys 0 to " << site.storeys - 1 << "\n";
       return 2;
     }
-    growth::EntranceOptions eo;
-    eo.storey = storey;
-    eo.base = site.base;
-    eo.storeyHeight = site.storeyHeight;
-    std::vector<growth::Box> obstacles = site.circulation;
-    for (std::size_t i = 0; i < site.cores.size(); ++i) obstacles.push_back(site.coreBox(i));
+    const growth::EntranceOptions eo = growth::storeyOptions(site, storey);
+    const std::vector<growth::Box> obstacles = growth::entranceObstacles(site);
     if (!haveRegion) {
       const growth::Box b = site.bounds();
-      if (!growth::findGap(model.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, 5, 16, region)) {
+      if (!growth::findGap(model.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, growth::kGapMinSide, growth::kGapMaxSide, region)) {
         std::cerr << "corbel-cli: complete: no empty region of 5 to 16 m on storey " << storey
                   << " of the grown model; give one with --region\n";
         return 1;

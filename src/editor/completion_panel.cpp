@@ -64,13 +64,7 @@ void CompletionPanel::defaultRegion(const growth::Site& site) {
 
 std::pair<growth::EntranceOptions, std::vector<growth::Box>> CompletionPanel::entranceSetup() const {
   const growth::Site& site = model_->grown.site;
-  growth::EntranceOptions eo;
-  eo.storey = storey_;
-  eo.base = site.base;
-  eo.storeyHeight = site.storeyHeight;
-  std::vector<growth::Box> obstacles = site.circulation;
-  for (std::size_t i = 0; i < site.cores.size(); ++i) obstacles.push_back(site.coreBox(i));
-  return {eo, obstacles};
+  return {growth::storeyOptions(site, storey_), growth::entranceObstacles(site)};
 }
 
 void CompletionPanel::gapRegion() {
@@ -78,7 +72,7 @@ void CompletionPanel::gapRegion() {
   const auto [eo, obstacles] = entranceSetup();
   const growth::Box b = model_->grown.site.bounds();
   growth::PlanRect gap;
-  if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, 5, 16, gap)) {
+  if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, growth::kGapMinSide, growth::kGapMaxSide, gap)) {
     region_ = gap;
     regionSet_ = true;
   }

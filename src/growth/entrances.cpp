@@ -158,4 +158,18 @@ bool findGap(const std::vector<Unit>& units, const std::vector<Box>& obstacles, 
   return true;
 }
 
+EntranceOptions storeyOptions(const Site& site, int storey) {
+  EntranceOptions eo;
+  eo.storey = storey;
+  eo.base = site.base;
+  eo.storeyHeight = site.storeyHeight;
+  return eo;
+}
+
+std::vector<Box> entranceObstacles(const Site& site) {
+  std::vector<Box> obstacles = site.circulation;
+  for (std::size_t i = 0; i < site.cores.size(); ++i) obstacles.push_back(site.coreBox(i));
+  return obstacles;
+}
+
 }  // namespace corbel::growth

@@ -7,6 +7,7 @@
 // it and is free (no unit or obstacle right outside it).
 #include "growth/box.h"
 #include "growth/cartogram.h"
+#include "growth/site.h"
 #include "growth/unit.h"
 
 #include <vector>
@@ -26,6 +27,14 @@ struct EntranceOptions {
   double minWidth = 1.0;  // shorter free stretches are no entrance
   int maxCount = 12;      // the completion takes 1 .. 12 units: the widest entrances are kept
 };
+
+// The options for a storey of a site (its base and storey height), and the site's obstacles to
+// entrances: its circulation and its cores' boxes. The editor's completion panel and
+// `corbel-cli complete --from` read a grown model through these.
+EntranceOptions storeyOptions(const Site& site, int storey);
+std::vector<Box> entranceObstacles(const Site& site);
+// The sides of a gap the completion looks for in a grown model (findGap), metres.
+inline constexpr double kGapMinSide = 5, kGapMaxSide = 16;
 
 // Ordered by unit id. Obstacles (cores, circulation) block a face like another unit does.
 std::vector<Entrance> entrancesInRegion(const std::vector<Unit>& units, const PlanRect& region,
