@@ -514,6 +514,12 @@ void App::registerActions() {
   add({"growth.delete", "Growth", "Delete Site Entry", "Delete the core, circulation or seed picked in the Site tab.",
        {}, true, [this] { growthPanel_.removeSelected(growthHost()); },
        [this, growthSelected] { return growthSelected() && growthPanel_.hasSelection(); }});
+  add({"growth.add_storey", "Growth", "Add a Storey",
+       "Give the selected site one storey more, of the same height (one undo step).", {}, true,
+       [this] { growthPanel_.addStorey(growthHost()); }, growthSelected});
+  add({"growth.widen_site", "Growth", "Widen the Site by 5 m",
+       "Make the selected site's box envelope 5 m longer in x (one undo step).", {}, true,
+       [this] { growthPanel_.widenSite(growthHost(), 5.0); }, growthSelected});
   add({"growth.site", "Growth", "Show the Site", "Show the Site tab: cores, circulation and seeds.", {}, false,
        [this] { growthPanel_.showTab(1); }, growthSelected});
   add({"growth.slice_down", "Growth", "Slice a Storey Lower",

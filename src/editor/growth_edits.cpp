@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "growth/engine.h"
+#include "growth/seeding.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,11 +38,11 @@ std::string where(SiteItem item, int index) { return std::string(listKey(item)) 
 
 json pair(double a, double b) { return json::array({a, b}); }
 
-// The site file as JSON, with `edit` applied to the list of `item` (created when missing);
-// the edited site is checked and the spec returned with its compact text (keys sorted, as a
-// project written and read back has it).
+// The site file as JSON with `edit` applied (it returns "" or why not); the edited site is
+// checked and the spec returned with its compact text (keys sorted, as a project written and
+// read back has it).
 template <class Edit>
-SiteEditResult editList(const GrowthSpec& spec, SiteItem item, int index, bool appendAllowed, Edit edit) {
+SiteEditResult editSite(const GrowthSpec& spec, Edit edit) {
   SiteEditResult r;
   json site;
   try {
@@ -54,25 +55,30 @@ SiteEditResult editList(const GrowthSpec& spec, SiteItem item, int index, bool a
     r.error = "growth.site: must be an object";
     return r;
   }
-  json& list = site[listKey(item)];
-  if (list.is_null()) list = json::array();
-  if (!list.is_array()) {
-    r.error = "growth.site." + std::string(listKey(item)) + ": must be a list";
-    return r;
-  }
-  const int size = static_cast<int>(list.size());
-  if (index < 0 || index > size || (index == size && !appendAllowed)) {
-    r.error = "growth.site." + where(item, index) + ": no such entry";
-    return r;
-  }
-  if (index == size) list.push_back(json::object());
-  edit(list, index);
-  if (list.empty()) site.erase(listKey(item));
+  r.error = edit(site);
+  if (!r.error.empty()) return r;
   GrowthSpec next = spec;
   next.site = site.dump();
   r.error = checkSite(next.site);
   if (r.error.empty()) r.spec = std::move(next);
   return r;
+}
+
+// editSite with `edit` applied to the list of `item` (created when missing).
+template <class Edit>
+SiteEditResult editList(const GrowthSpec& spec, SiteItem item, int index, bool appendAllowed, Edit edit) {
+  return editSite(spec, [&](json& site) -> std::string {
+    json& list = site[listKey(item)];
+    if (list.is_null()) list = json::array();
+    if (!list.is_array()) return "growth.site." + std::string(listKey(item)) + ": must be a list";
+    const int size = static_cast<int>(list.size());
+    if (index < 0 || index > size || (index == size && !appendAllowed))
+      return "growth.site." + where(item, index) + ": no such entry";
+    if (index == size) list.push_back(json::object());
+    edit(list, index);
+    if (list.empty()) site.erase(listKey(item));
+    return "";
+  });
 }
 
 int itemCount(const HandPlaced& h, SiteItem k) {
@@ -187,6 +193,89 @@ SiteEditResult removeItem(const GrowthSpec& spec, SiteItem item, int index) {
   return editList(spec, item, index, false, [](json& list, int i) { list.erase(list.begin() + i); });
 }
 
+SiteFrame siteFrame(const std::string& siteText) {
+  SiteFrame f;
+  const json site = json::parse(siteText, nullptr, false);
+  if (!site.is_object()) return f;
+  try {
+    const growth::Site parsed = growth::parseSite(siteText);
+    f.plan = parsed.plan;
+    f.storeys = parsed.storeys;
+    f.storeyHeight = parsed.storeyHeight;
+    f.box = !(site.contains("envelope") && site["envelope"].contains("polygon"));
+    f.controls = growth::seedControlsOf(siteText);
+    f.valid = true;
+  } catch (const std::exception&) {
+  }
+  return f;
+}
+
+SiteEditResult setEnvelopeBox(const GrowthSpec& spec, Vec2 origin, Vec2 size) {
+  if (!finite({origin[0], origin[1]})) return {std::nullopt, "growth.site.envelope.origin: is not a finite number"};
+  if (!finite({size[0], size[1]}) || !(size[0] > 0 && size[1] > 0))
+    return {std::nullopt, "growth.site.envelope.size: sizes must be positive"};
+  return editSite(spec, [&](json& site) -> std::string {
+    json& e = site["envelope"];
+    e = json::object();  // a box replaces a polygon
+    e["origin"] = pair(origin[0], origin[1]);
+    e["size"] = pair(size[0], size[1]);
+    return "";
+  });
+}
+
+SiteEditResult setEnvelopePolygon(const GrowthSpec& spec, const std::vector<Vec2>& corners) {
+  if (corners.size() < 3) return {std::nullopt, "growth.site.envelope.polygon: needs at least 3 corners"};
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    if (!finite({corners[i][0], corners[i][1]}))
+      return {std::nullopt, "growth.site.envelope.polygon[" + std::to_string(i) + "]: is not a finite number"};
+  return editSite(spec, [&](json& site) -> std::string {
+    json poly = json::array();
+    for (const Vec2& c : corners) poly.push_back(pair(c[0], c[1]));
+    site["envelope"] = json{{"polygon", poly}};
+    return "";
+  });
+}
+
+SiteEditResult setStoreys(const GrowthSpec& spec, int storeys, double storeyHeight) {
+  if (storeys < 1 || storeys > 1000) return {std::nullopt, "growth.site.storeys: must lie in 1..1000"};
+  if (!std::isfinite(storeyHeight) || !(storeyHeight > 0))
+    return {std::nullopt, "growth.site.storey_height: must be positive"};
+  return editSite(spec, [&](json& site) -> std::string {
+    site["storeys"] = storeys;
+    site["storey_height"] = storeyHeight;
+    return "";
+  });
+}
+
+SiteEditResult setSeedControls(const GrowthSpec& spec, const std::optional<growth::SeedControls>& c) {
+  if (c) {
+    if (!finite({c->size[0], c->size[1]}) || !(c->size[0] > 0 && c->size[1] > 0))
+      return {std::nullopt, "growth.site.generate_seeds.size: sizes must be positive"};
+    if (!std::isfinite(c->spacing)) return {std::nullopt, "growth.site.generate_seeds.spacing: is not a finite number"};
+    if (!finite({c->areaLo, c->areaHi}))
+      return {std::nullopt, "growth.site.generate_seeds.target_area: is not a finite number"};
+    if (c->behaviour.empty()) return {std::nullopt, "growth.site.generate_seeds.behaviour: must not be empty"};
+  }
+  return editSite(spec, [&](json& site) -> std::string {
+    if (!c) {
+      site.erase("generate_seeds");
+      // A site needs seeds or generate_seeds: without either it keeps an empty seed list.
+      if (!site.contains("seeds")) site["seeds"] = json::array();
+      return "";
+    }
+    json g = json::object();
+    g["count"] = c->count;
+    g["size"] = pair(c->size[0], c->size[1]);
+    g["spacing"] = c->spacing;
+    g["target_area"] = pair(c->areaLo, c->areaHi);
+    if (!c->storeys.empty()) g["storeys"] = c->storeys;
+    g["seed"] = c->seed;
+    g["behaviour"] = c->behaviour;
+    site["generate_seeds"] = g;
+    return "";
+  });
+}
+
 std::optional<SiteEditResult> dragItem(const GrowthSpec& spec, const HandPlaced& from, const HandPlaced& now,
                                        SiteItem item, int index, double dx, double dy) {
   dx = std::round(dx * 2) / 2;
@@ -244,12 +333,8 @@ std::optional<growth::Rect> freeCoreSpot(const growth::Site& site, Vec2 size) {
     for (double x = std::floor(b.lo[0]); x + size[0] <= b.hi[0]; x += 1.0) {
       trial.cores.back() = {x, y, x + size[0], y + size[1]};
       try {
-        growth::validateSite(trial);
-        // Clear of the circulation too (the validator does not compare the two).
-        bool clear = true;
-        for (const growth::Box& c : site.circulation)
-          if (growth::interiorsOverlap(c, trial.coreBox(trial.cores.size() - 1), 1e-9)) clear = false;
-        if (clear) return trial.cores.back();
+        growth::validateSite(trial);  // inside the envelope, clear of cores, circulation and seeds
+        return trial.cores.back();
       } catch (const InputError&) {
       }
     }

@@ -5,6 +5,7 @@
 // kernel will check it (growth/site.h's validator, then the engine's own refusals) before the
 // panel commits it.
 #include "core/growth_spec.h"
+#include "growth/seeding.h"
 #include "growth/site.h"
 
 #include <optional>
@@ -52,6 +53,34 @@ SiteEditResult setCirculation(const GrowthSpec& spec, int index, const growth::B
 SiteEditResult setSeed(const GrowthSpec& spec, int index, const growth::Seed& seed);
 // `spec` without entry `index` of the list.
 SiteEditResult removeItem(const GrowthSpec& spec, SiteItem item, int index);
+
+// The site's frame as the Site tab shows it: the envelope's plan (a box is its rectangle, in
+// the order growth::rectanglePlan gives), whether the file writes it as a box (origin and size)
+// or a polygon, the storeys and their height, and the generate_seeds controls (nullopt: none).
+// valid = false when the site does not parse (the build names the fault).
+struct SiteFrame {
+  bool valid = false;
+  std::vector<Vec2> plan;
+  bool box = true;
+  int storeys = 1;
+  double storeyHeight = 3.0;
+  std::optional<growth::SeedControls> controls;
+};
+SiteFrame siteFrame(const std::string& siteText);
+
+// The envelope as a box [origin, origin + size] ("envelope": {"origin", "size"}), or as the
+// extruded polygon of these corners ("envelope": {"polygon"}); each replaces the other form.
+// Refused as setCore is: a non-finite or non-positive value names its field, and a site whose
+// cores, circulation or seeds no longer fit gets the validator's message
+// ("growth.site.cores[0]: lies outside the site envelope").
+SiteEditResult setEnvelopeBox(const GrowthSpec& spec, Vec2 origin, Vec2 size);
+SiteEditResult setEnvelopePolygon(const GrowthSpec& spec, const std::vector<Vec2>& corners);
+// "storeys" (1..1000) and "storey_height" (> 0 m) together.
+SiteEditResult setStoreys(const GrowthSpec& spec, int storeys, double storeyHeight);
+// "generate_seeds" written with every control (storeys only when some are chosen), or removed
+// for nullopt (the site then keeps an empty "seeds" list if it had none); bad controls get
+// growth/seeding.h's message ("growth.site.generate_seeds.count: ...").
+SiteEditResult setSeedControls(const GrowthSpec& spec, const std::optional<growth::SeedControls>& controls);
 
 // The plan view's drag: entry `index` as `from` has it (the entry when the drag started) moved by
 // (dx, dy) rounded to 0.5 m steps, in plan only (circulation and seeds keep their height and

@@ -106,11 +106,13 @@ void GrowthPanel::parseSite(const GrowthSpec& spec) {
                   site.seeds.size());
     summary_ = text;
     hand_ = handPlaced(spec.site);
+    frame_ = siteFrame(spec.site);
     planStorey_ = std::clamp(planStorey_, 0, site.storeys - 1);
     if (slicing_) slice_ = std::clamp(slice_, site.base, site.top());
   } catch (const std::exception&) {
     site_.reset();
     hand_ = {};
+    frame_ = {};
     summary_.clear();  // the build reports the site's fault
   }
   if (selected_ >= itemCount(hand_, kind_)) selected_ = -1;
@@ -182,6 +184,27 @@ void GrowthPanel::add(const GrowthHost& host, SiteItem item) {
     kind_ = item;
     selected_ = index;
   }
+}
+
+void GrowthPanel::addStorey(const GrowthHost& host) {
+  const GrowthSpec* spec = specOf(host);
+  if (!spec) return;
+  parseSite(*spec);
+  const std::string label = "Add a storey to " + host.doc->find(host.object)->name;
+  if (!frame_.valid) return host.log(label + ": the site has a fault to fix first", true);
+  commitSite(host, setStoreys(*spec, frame_.storeys + 1, frame_.storeyHeight), label, "", true);
+}
+
+void GrowthPanel::widenSite(const GrowthHost& host, double dx) {
+  const GrowthSpec* spec = specOf(host);
+  if (!spec) return;
+  parseSite(*spec);
+  const std::string label = "Widen the site of " + host.doc->find(host.object)->name;
+  if (!frame_.valid) return host.log(label + ": the site has a fault to fix first", true);
+  if (!frame_.box) return host.log(label + " refused: the envelope is a polygon (edit its corners)", true);
+  const growth::Box b = site_->bounds();
+  commitSite(host, setEnvelopeBox(*spec, Vec2(b.lo[0], b.lo[1]), Vec2(b.hi[0] - b.lo[0] + dx, b.hi[1] - b.lo[1])),
+             label, "", true);
 }
 
 void GrowthPanel::removeSelected(const GrowthHost& host) {
@@ -395,6 +418,95 @@ void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float
   if (ImGui::IsItemDeactivated()) dragging_ = false;
 }
 
+// The envelope (a box's origin and size, or the polygon's corners), the storeys and the
+// generate_seeds controls: each change is one edit checked by the kernel (merged while a field
+// is held), refused with its message as the entries' edits are.
+void GrowthPanel::drawFrame(const GrowthHost& host, const GrowthSpec& spec) {
+  if (!frame_.valid) return;
+  const std::string name = host.doc->find(host.object)->name;
+  SiteEditResult r;
+  bool changed = false;
+  std::string label, merge;
+  ImGui::PushItemWidth(-135);
+  if (ImGui::CollapsingHeader("Envelope and storeys", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (frame_.box) {
+      const growth::Box b = [&] {
+        growth::Site s;
+        s.plan = frame_.plan;
+        return s.bounds();
+      }();
+      double origin[2] = {b.lo[0], b.lo[1]}, size[2] = {b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]};
+      bool c = dragPair("origin (m)", origin);
+      c |= dragPair("box size (m)", size, 0.1, 1e6);
+      if (c) {
+        r = setEnvelopeBox(spec, Vec2(origin[0], origin[1]), Vec2(size[0], size[1]));
+        changed = true, label = "Edit the envelope of " + name, merge = "envelope";
+      }
+    } else {
+      for (std::size_t i = 0; i < frame_.plan.size(); ++i) {
+        double p[2] = {frame_.plan[i][0], frame_.plan[i][1]};
+        const std::string l = "corner " + std::to_string(i + 1);
+        if (dragPair(l.c_str(), p)) {
+          std::vector<Vec2> plan = frame_.plan;
+          plan[i] = Vec2(p[0], p[1]);
+          r = setEnvelopePolygon(spec, plan);
+          changed = true, label = "Edit the envelope of " + name, merge = "envelope";
+        }
+      }
+    }
+    int storeys = frame_.storeys;
+    double height = frame_.storeyHeight;
+    const double hmin = 0.5, hmax = 100;
+    bool c = ImGui::InputInt("storeys", &storeys);
+    c |= ImGui::DragScalar("storey height (m)", ImGuiDataType_Double, &height, 0.05f, &hmin, &hmax, "%.2f");
+    if (c) {
+      r = setStoreys(spec, storeys, height);
+      changed = true, label = "Edit the storeys of " + name, merge = "storeys";
+    }
+  }
+  if (ImGui::CollapsingHeader("Generated seeds")) {
+    bool on = frame_.controls.has_value();
+    growth::SeedControls g = on ? *frame_.controls : growth::SeedControls{};
+    bool c = ImGui::Checkbox("generate seeds at exits", &on);
+    if (on) {
+      c |= ImGui::InputInt("count", &g.count);
+      double size[2] = {g.size[0], g.size[1]}, area[2] = {g.areaLo, g.areaHi};
+      const double smin = 0, smax = 1e4;
+      c |= dragPair("seed size (m)", size, 0.1, 1e4);
+      c |= ImGui::DragScalar("spacing (m)", ImGuiDataType_Double, &g.spacing, 0.1f, &smin, &smax, "%.2f");
+      c |= dragPair("target area (m²)", area, 1, 1e6);
+      int shuffle = int(g.seed);
+      c |= ImGui::InputInt("shuffle seed", &shuffle);
+      g.size = Vec2(size[0], size[1]);
+      g.areaLo = area[0], g.areaHi = area[1];
+      g.seed = unsigned(std::max(shuffle, 0));
+      ImGui::TextDisabled("storeys (none ticked: every storey the circulation serves):");
+      for (int k = 0; k < frame_.storeys && k < 12; ++k) {
+        if (k) ImGui::SameLine();
+        bool ticked = std::find(g.storeys.begin(), g.storeys.end(), k) != g.storeys.end();
+        ImGui::PushID(k);
+        if (ImGui::Checkbox(std::to_string(k).c_str(), &ticked)) {
+          if (ticked)
+            g.storeys.push_back(k), std::sort(g.storeys.begin(), g.storeys.end());
+          else
+            g.storeys.erase(std::find(g.storeys.begin(), g.storeys.end(), k));
+          c = true;
+        }
+        ImGui::PopID();
+      }
+    }
+    if (c) {
+      r = setSeedControls(spec, on ? std::optional<growth::SeedControls>(g) : std::nullopt);
+      changed = true, label = "Edit the seed generation of " + name, merge = "seedcontrols";
+    }
+  }
+  ImGui::PopItemWidth();
+  if (changed) {
+    commitSite(host, r, label, "site" + std::to_string(host.object) + merge, false);
+    siteEditOpen_ = true;
+  }
+}
+
 void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
   if (!site_) {
     ImGui::TextWrapped("The site has a fault (above); fix it in the site file first.");
@@ -407,6 +519,7 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
   ImGui::SameLine();
   ImGui::TextDisabled("drag to move");
   drawPlan(host, spec, ImGui::GetContentRegionAvail().x, 120);
+  drawFrame(host, spec);
 
   int kind = static_cast<int>(kind_);
   for (int k = 0; k < 3; ++k) {
@@ -423,7 +536,7 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
     }
   }
   if (site.seeds.size() > hand_.seeds.size())
-    ImGui::TextDisabled("%zu more seeds generated at exits (generate_seeds; not editable here)",
+    ImGui::TextDisabled("%zu more seeds generated at exits (Generated seeds, above)",
                         site.seeds.size() - hand_.seeds.size());
   const int count = itemCount(hand_, kind_);
   if (ImGui::Button("Add")) add(host, kind_);

@@ -59,6 +59,11 @@ class GrowthPanel {
   void add(const GrowthHost& host, SiteItem item);
   void removeSelected(const GrowthHost& host);
   bool hasSelection() const { return selected_ >= 0; }
+  // The Site tab's frame edits as actions: growth.add_storey (one storey more, of the same
+  // height) and growth.widen_site (a box envelope dx metres longer in x); each one undo step,
+  // refused (logged) as the tab's fields are.
+  void addStorey(const GrowthHost& host);
+  void widenSite(const GrowthHost& host, double dx);
   // The slice height, when slicing (growth.slice_down lowers it a storey, growth.slice_up raises
   // it, past the top it is off).
   std::optional<double> sliceHeight() const { return slicing_ ? std::optional<double>(slice_) : std::nullopt; }
@@ -76,6 +81,7 @@ class GrowthPanel {
   void parseSite(const GrowthSpec& spec);
   void drawGrow(const GrowthHost& host, const GrowthSpec& spec);
   void drawSite(const GrowthHost& host, const GrowthSpec& spec);
+  void drawFrame(const GrowthHost& host, const GrowthSpec& spec);
   void drawPlan(const GrowthHost& host, const GrowthSpec& spec, float w, float h);
   void drawStatistics(const GrowthHost& host);
   // Starts (or, waiting, does) measuring the model when the shown one is not of `spec`.
@@ -87,6 +93,7 @@ class GrowthPanel {
   std::string summaryOf_, summary_;   // the site text summarised, and the summary
   std::optional<growth::Site> site_;  // of summaryOf_, when it parses
   HandPlaced hand_;                   // the site file's own entries (of summaryOf_)
+  SiteFrame frame_;                   // its envelope, storeys and seed controls (of summaryOf_)
 
   int wantTab_ = -1;
   SiteItem kind_ = SiteItem::Core;

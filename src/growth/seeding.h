@@ -6,6 +6,7 @@
 // envelope, clear of cores, circulation and the seeds already placed).
 #include "growth/site.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,5 +26,9 @@ struct SeedControls {
 // many it added (fewer when the circulation has fewer free exits). Throws InputError naming
 // the control at fault ("generate_seeds.count: ...") for bad controls.
 int generateSeeds(Site& site, const SeedControls& controls);
+
+// The "generate_seeds" controls of a site file as parseSite reads them (defaults for missing
+// keys), or nullopt when it has none. Throws InputError naming a control the file gets wrong.
+std::optional<SeedControls> seedControlsOf(const std::string& siteJsonText);
 
 }  // namespace corbel::growth

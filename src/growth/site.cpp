@@ -145,6 +145,10 @@ void validateSite(const Site& site) {
     }
     if (!(b.size(0) > 0 && b.size(1) > 0 && b.size(2) > 0)) bad(where + ".size", "must be positive");
     if (!site.contains(b)) bad(where, "lies outside the site envelope");
+    // A landing may touch a core (its lift door opens onto it), so the core's clearance, which
+    // keeps units off a core, does not apply here: only a shared interior is refused.
+    for (std::size_t j = 0; j < site.cores.size(); ++j)
+      if (interiorsOverlap(b, site.coreBox(j), kEps)) bad(where, "overlaps cores[" + std::to_string(j) + "]");
   }
   for (std::size_t i = 0; i < site.seeds.size(); ++i) {
     const std::string where = "seeds[" + std::to_string(i) + "]";

@@ -52,7 +52,9 @@ struct Site {
 std::vector<Vec2> rectanglePlan(double x0, double y0, double x1, double y1);
 
 // Throws InputError naming the first bad field ("seeds[3].at: outside the site envelope",
-// "cores[1]: overlaps cores[0]", "storey_height: must be positive", NaN anywhere).
+// "cores[1]: overlaps cores[0]", "circulation[2]: overlaps cores[0]" (circulation may touch a
+// core, as a landing at its lift door does, but not share its interior),
+// "storey_height: must be positive", NaN anywhere).
 void validateSite(const Site& site);
 
 // Parses the site JSON of docs/growth.md and validates it. `warnings` gets unknown keys.

@@ -19,7 +19,33 @@ Vec2 positiveSize(const JsonReader& r) {
   return v;
 }
 
+SeedControls readControls(const JsonReader& g, std::vector<std::string>* warnings) {
+  warnUnknown(g, {"count", "size", "spacing", "target_area", "storeys", "seed", "behaviour"}, warnings);
+  SeedControls c;
+  c.count = int(g.at("count").integer(0, 100000));
+  if (auto z = g.find("size")) c.size = positiveSize(*z);
+  if (auto sp = g.find("spacing")) c.spacing = sp->number(0, 1e4);
+  if (auto t = g.find("target_area")) {
+    const Vec2 range = t->vec2();
+    c.areaLo = range[0];
+    c.areaHi = range[1];
+  }
+  if (auto st = g.find("storeys"))
+    for (const JsonReader& k : st->array(1000)) c.storeys.push_back(int(k.integer(0, 999)));
+  if (auto sd = g.find("seed")) c.seed = unsigned(sd->integer(0, 4294967295LL));
+  if (auto b = g.find("behaviour")) c.behaviour = b->string(64);
+  return c;
+}
+
 }  // namespace
+
+std::optional<SeedControls> seedControlsOf(const std::string& jsonText) {
+  const nlohmann::json j = parseJsonText(jsonText);
+  const JsonReader root(j, "");
+  root.expectObject();
+  if (auto g = root.find("generate_seeds")) return readControls(*g, nullptr);
+  return std::nullopt;
+}
 
 Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) {
   const nlohmann::json j = parseJsonText(jsonText);
@@ -89,26 +115,9 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
     if (auto b = s.find("behaviour")) seed.behaviour = b->string(64);
     site.seeds.push_back(seed);
   }
-  if (generate) {
-    // Seeds at exits along the circulation, within these controls (growth/seeding.h); the
-    // hand-placed ones above are kept and the generated ones placed clear of them.
-    const JsonReader& g = *generate;
-    warnUnknown(g, {"count", "size", "spacing", "target_area", "storeys", "seed", "behaviour"}, warnings);
-    SeedControls c;
-    c.count = int(g.at("count").integer(0, 100000));
-    if (auto z = g.find("size")) c.size = positiveSize(*z);
-    if (auto sp = g.find("spacing")) c.spacing = sp->number(0, 1e4);
-    if (auto t = g.find("target_area")) {
-      const Vec2 range = t->vec2();
-      c.areaLo = range[0];
-      c.areaHi = range[1];
-    }
-    if (auto st = g.find("storeys"))
-      for (const JsonReader& k : st->array(1000)) c.storeys.push_back(int(k.integer(0, 999)));
-    if (auto sd = g.find("seed")) c.seed = unsigned(sd->integer(0, 4294967295LL));
-    if (auto b = g.find("behaviour")) c.behaviour = b->string(64);
-    generateSeeds(site, c);
-  }
+  // Seeds at exits along the circulation, within these controls (growth/seeding.h); the
+  // hand-placed ones above are kept and the generated ones placed clear of them.
+  if (generate) generateSeeds(site, readControls(*generate, warnings));
   validateSite(site);
   return site;
 }

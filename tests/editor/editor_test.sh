@@ -23,6 +23,9 @@
 #     the envelope's first free grid point (0, 0), and the site still builds as closed shells;
 #     sliced two storeys down with the statistics and the view maps shown, the shot differs from
 #     the site alone; undone, the document is the untouched example (nothing to recover).
+#  9b. the Site tab's frame on Alpha: Add a Storey and Widen the Site (scripted actions) save 6
+#     storeys and a 95 x 50 m box, the site still builds as closed shells and the shot (the Site
+#     tab with its envelope fields) differs from the site alone; undone twice, nothing to recover.
 # 10. a town (the old-town example): the next building picked and its type overridden (scripted
 #     actions) is saved as an override and the 3D view differs from the town as styled; undone, the
 #     document is the untouched example (nothing to recover);
@@ -162,6 +165,22 @@ summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.add_core,edit.undo --autosave-seconds 0 --quit-after-frames 8 "$alpha"
 test -f "$work/state/recovery.corbel" && { echo "undoing Add Core should leave the example untouched"; exit 1; }
+echo "== growth site frame: a storey more, a wider envelope, undo"
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions growth.site,growth.add_storey,growth.widen_site --autosave-seconds 0 \
+  --screenshot "$work/growth-frame.png" --quit-after-frames 12 "$alpha"
+test -f "$work/state/recovery.corbel" || { echo "the frame edits changed nothing (no recovery file)"; exit 1; }
+frame=$(tr -d ' \n' < "$work/state/recovery.corbel")
+grep -q '"envelope":{"origin":\[0.0,0.0\],"size":\[95.0,50.0\]}' <<<"$frame" ||
+  { echo "the widened envelope should be saved as a 95 x 50 m box"; exit 1; }
+grep -Eq '"storeys":6[,}]' <<<"$frame" || { echo "the site should be saved with 6 storeys"; exit 1; }
+summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+[[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the wider, taller site should build as closed shells: $summary"; exit 1; }
+"$check" "$work/growth-frame.png" "$work/site.png" 0.01
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions growth.add_storey,growth.widen_site,edit.undo,edit.undo --autosave-seconds 0 \
+  --quit-after-frames 10 "$alpha"
+test -f "$work/state/recovery.corbel" && { echo "undoing the frame edits should leave the example untouched"; exit 1; }
 echo "== shadows from a lowered sun (a view setting: nothing to recover)"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions view.shadows,view.sun_lower,view.sun_lower --autosave-seconds 0 \

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace corbel::editor {
@@ -212,8 +213,8 @@ TEST(SiteEdits, DraggingInThePlanMovesInHalfMetreStepsAndIsRefusedLikeTyping) {
   // A move that rounds to where the entry already is: nothing to commit.
   EXPECT_FALSE(dragItem(spec, start, start, SiteItem::Seed, 0, 0.2, -0.24));
   EXPECT_FALSE(dragItem(*r->spec, start, now, SiteItem::Seed, 0, 2.6, 0.1));
-  // The landing [13, 15] × [4, 6] keeps its height; the lift dragged onto it is not compared by
-  // the validator, but onto the seed's clearance it is refused with the validator's message.
+  // The landing [13, 15] × [4, 6] keeps its height; the lift dragged onto the seed's clearance is
+  // refused with the validator's message.
   const auto landing = dragItem(spec, start, start, SiteItem::Circulation, 0, 2, 2);
   ASSERT_TRUE(landing && landing->spec);
   EXPECT_EQ(handPlaced(landing->spec->site).circulation[0], (growth::Box{{15, 6, 0}, {17, 8, 3}}));
@@ -235,6 +236,170 @@ TEST(SiteEdits, AClickPicksTheSeedThenTheCirculationThenTheCoreUnderIt) {
   EXPECT_EQ(pickItem(h, site, 1, 14, 5), Pick{});                       // the landing is 3 m high: storey 0 only
   EXPECT_EQ(pickItem(h, site, 1, 12, 6), (Pick{{SiteItem::Core, 0}}));  // cores run the full height; a corner
   EXPECT_EQ(pickItem(h, site, 0, 8, 8), Pick{});
+}
+
+// Commits `next` as the object's spec (as the panel does) and returns the history's document.
+void commitSpec(History& history, const GrowthSpec& next, const std::string& label) {
+  Document d = history.current();
+  std::get<GrowthSpec>(d.objects[0].spec) = next;
+  history.commit(d, label);
+}
+
+// The spec saved in a project and read back.
+GrowthSpec savedAndReloaded(const History& history) {
+  return std::get<GrowthSpec>(parseProject(serializeProject(history.current())).document.objects[0].spec);
+}
+
+TEST(SiteEdits, TypedCirculationOnACoreGetsTheValidatorsMessage) {
+  const GrowthSpec spec = smallSite();
+  // The landing moved to [11, 13] × [4, 6] shares [11, 12] × [4, 6] with the lift [10, 12] × [4, 6].
+  EXPECT_EQ(setCirculation(spec, 0, {{11, 4, 0}, {13, 6, 3}}).error, "growth.site.circulation[0]: overlaps cores[0]");
+  // The lift typed onto the landing [13, 15] × [4, 6]: the same pair, named the same way.
+  EXPECT_EQ(setCore(spec, 0, {12.5, 4, 14.5, 6}).error, "growth.site.circulation[0]: overlaps cores[0]");
+  // On the upper storey only ([3, 6] in z): the lift runs the full height, still an overlap.
+  EXPECT_EQ(setCirculation(spec, 0, {{10, 4, 3}, {12, 6, 6}}).error, "growth.site.circulation[0]: overlaps cores[0]");
+  // A landing against the lift's side ([12, 14] × [4, 6]) is where its door opens: accepted.
+  EXPECT_TRUE(setCirculation(spec, 0, {{12, 4, 0}, {14, 6, 3}}).spec);
+}
+
+TEST(SiteEdits, TheEnvelopeBoxIsEditedSavedReloadedAndUndone) {
+  const GrowthSpec spec = smallSite();
+  History history(withSite(spec));
+  const Document original = history.current();
+  const SiteEditResult r = setEnvelopeBox(spec, Vec2(0, 0), Vec2(30, 12));
+  ASSERT_TRUE(r.spec) << r.error;
+  const SiteFrame f = siteFrame(r.spec->site);
+  ASSERT_TRUE(f.valid);
+  EXPECT_TRUE(f.box);
+  EXPECT_EQ(f.plan, growth::rectanglePlan(0, 0, 30, 12));
+  EXPECT_DOUBLE_EQ(growth::parseSite(r.spec->site).area(), 360.0);  // 30 × 12
+  EXPECT_EQ(nlohmann::json::parse(r.spec->site)["envelope"],
+            nlohmann::json::parse(R"({"origin": [0.0, 0.0], "size": [30.0, 12.0]})"));
+  commitSpec(history, *r.spec, "Edit the envelope");
+  EXPECT_EQ(savedAndReloaded(history), *r.spec);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), original);
+
+  // Refusals: the lift [10, 12] no longer inside [0, 11]; the seed [1, 4] left of x = 2; a nil size.
+  History untouched(withSite(spec));
+  const Document before = untouched.current();
+  EXPECT_EQ(setEnvelopeBox(spec, Vec2(0, 0), Vec2(11, 10)).error,
+            "growth.site.cores[0]: lies outside the site envelope");
+  EXPECT_EQ(setEnvelopeBox(spec, Vec2(2, 0), Vec2(20, 10)).error,
+            "growth.site.seeds[0].at: the seed lies outside the site envelope");
+  EXPECT_EQ(setEnvelopeBox(spec, Vec2(0, 0), Vec2(0, 10)).error, "growth.site.envelope.size: sizes must be positive");
+  EXPECT_EQ(setEnvelopeBox(spec, Vec2(std::nan(""), 0), Vec2(20, 10)).error,
+            "growth.site.envelope.origin: is not a finite number");
+  EXPECT_EQ(untouched.current(), before);
+  EXPECT_FALSE(untouched.canUndo());
+}
+
+TEST(SiteEdits, AnExtrudedPolygonEnvelopeReplacesTheBoxAndBack) {
+  const GrowthSpec spec = smallSite();
+  // An L: the 20 × 10 box and a 8 × 4 wing above its left end: 200 + 32 = 232 m².
+  const std::vector<Vec2> l{Vec2(0, 0), Vec2(20, 0), Vec2(20, 10), Vec2(8, 10), Vec2(8, 14), Vec2(0, 14)};
+  const SiteEditResult r = setEnvelopePolygon(spec, l);
+  ASSERT_TRUE(r.spec) << r.error;
+  const SiteFrame f = siteFrame(r.spec->site);
+  EXPECT_FALSE(f.box);
+  EXPECT_EQ(f.plan, l);
+  EXPECT_DOUBLE_EQ(growth::parseSite(r.spec->site).area(), 232.0);
+  const auto env = nlohmann::json::parse(r.spec->site)["envelope"];
+  EXPECT_FALSE(env.contains("origin") || env.contains("size"));
+  History history(withSite(spec));
+  commitSpec(history, *r.spec, "Edit the envelope");
+  EXPECT_EQ(savedAndReloaded(history), *r.spec);
+  // Back to a box: the polygon goes.
+  const SiteEditResult box = setEnvelopeBox(*r.spec, Vec2(0, 0), Vec2(20, 10));
+  ASSERT_TRUE(box.spec);
+  EXPECT_FALSE(nlohmann::json::parse(box.spec->site)["envelope"].contains("polygon"));
+  // The lower half [0, 20] × [0, 5] cuts the lift [10, 12] × [4, 6]; two corners are no plan.
+  EXPECT_EQ(setEnvelopePolygon(spec, {Vec2(0, 0), Vec2(20, 0), Vec2(20, 5), Vec2(0, 5)}).error,
+            "growth.site.cores[0]: lies outside the site envelope");
+  EXPECT_EQ(setEnvelopePolygon(spec, {Vec2(0, 0), Vec2(20, 0)}).error,
+            "growth.site.envelope.polygon: needs at least 3 corners");
+  EXPECT_EQ(setEnvelopePolygon(spec, {Vec2(0, 0), Vec2(20, 0), Vec2(20, INFINITY)}).error,
+            "growth.site.envelope.polygon[2]: is not a finite number");
+}
+
+TEST(SiteEdits, StoreysAndTheirHeightAreCheckedAgainstTheCirculation) {
+  const GrowthSpec spec = smallSite();
+  History history(withSite(spec));
+  const Document original = history.current();
+  const SiteEditResult r = setStoreys(spec, 4, 2.8);
+  ASSERT_TRUE(r.spec) << r.error;
+  const growth::Site site = growth::parseSite(r.spec->site);
+  EXPECT_EQ(site.storeys, 4);
+  EXPECT_DOUBLE_EQ(site.top(), 11.2);  // 4 × 2.8
+  commitSpec(history, *r.spec, "Edit the storeys");
+  EXPECT_EQ(savedAndReloaded(history), *r.spec);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), original);
+  // One storey of 2.5 m: the 3 m landing sticks out of the top.
+  EXPECT_EQ(setStoreys(spec, 1, 2.5).error, "growth.site.circulation[0]: lies outside the site envelope");
+  EXPECT_EQ(setStoreys(spec, 0, 3).error, "growth.site.storeys: must lie in 1..1000");
+  EXPECT_EQ(setStoreys(spec, 2, -1).error, "growth.site.storey_height: must be positive");
+  EXPECT_EQ(setStoreys(spec, 2, std::nan("")).error, "growth.site.storey_height: must be positive");
+}
+
+TEST(SiteEdits, SeedGenerationControlsAreWrittenAndGiveTheExitsCountedByHand) {
+  // A 6 m landing [13, 19] × [4, 6] on storey 0. 3 m seeds step 3 m along its ∓y sides:
+  // x = 13 and 16, at y = 4 - 3 = 1 and y = 6: four exits, all clear of the lift's 1 m
+  // clearance [9, 13] × [3, 7] (touching it at x = 13) and of the seed [1, 4]²; its ∓x sides
+  // are 2 m long, too short for a 3 m seed.
+  const SiteEditResult wide = setCirculation(smallSite(), 0, {{13, 4, 0}, {19, 6, 3}});
+  ASSERT_TRUE(wide.spec) << wide.error;
+  const GrowthSpec spec = *wide.spec;
+  History history(withSite(spec));
+  const Document original = history.current();
+  growth::SeedControls c;
+  c.count = 10;
+  c.areaLo = c.areaHi = 50;
+  c.storeys = {0};
+  c.seed = 7;
+  const SiteEditResult r = setSeedControls(spec, c);
+  ASSERT_TRUE(r.spec) << r.error;
+  const growth::Site site = growth::parseSite(r.spec->site);
+  ASSERT_EQ(site.seeds.size(), 5u);  // the hand-placed one and the four exits
+  std::vector<std::pair<double, double>> at;
+  for (std::size_t i = 1; i < site.seeds.size(); ++i) {
+    at.push_back({site.seeds[i].at[0], site.seeds[i].at[1]});
+    EXPECT_EQ(site.seeds[i].targetArea, 50.0);
+    EXPECT_EQ(site.seeds[i].storey, 0);
+  }
+  std::sort(at.begin(), at.end());
+  EXPECT_EQ(at, (std::vector<std::pair<double, double>>{{13, 1}, {13, 6}, {16, 1}, {16, 6}}));
+  EXPECT_EQ(handPlaced(r.spec->site).seeds.size(), 1u);  // generated seeds are not hand-placed
+  const auto saved = nlohmann::json::parse(r.spec->site)["generate_seeds"];
+  EXPECT_EQ(saved, nlohmann::json::parse(R"({"count": 10, "size": [3.0, 3.0], "spacing": 0.0,
+      "target_area": [50.0, 50.0], "storeys": [0], "seed": 7, "behaviour": "view"})"));
+  const auto back = siteFrame(r.spec->site).controls;
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->count, 10);
+  EXPECT_EQ(back->storeys, std::vector<int>{0});
+  EXPECT_EQ(back->seed, 7u);
+  commitSpec(history, *r.spec, "Generate seeds");
+  EXPECT_EQ(savedAndReloaded(history), *r.spec);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), original);
+
+  // Two of the four; none again when the controls go.
+  c.count = 2;
+  EXPECT_EQ(growth::parseSite(setSeedControls(spec, c).spec->site).seeds.size(), 3u);
+  const SiteEditResult none = setSeedControls(*r.spec, std::nullopt);
+  ASSERT_TRUE(none.spec);
+  EXPECT_FALSE(nlohmann::json::parse(none.spec->site).contains("generate_seeds"));
+  EXPECT_EQ(growth::parseSite(none.spec->site).seeds.size(), 1u);
+  // Refusals name the control.
+  c.areaLo = 60, c.areaHi = 40;
+  EXPECT_EQ(setSeedControls(spec, c).error,
+            "growth.site.generate_seeds.target_area: expected [lo, hi] with 0 < lo <= hi");
+  c.areaLo = c.areaHi = 50;
+  c.storeys = {2};
+  EXPECT_EQ(setSeedControls(spec, c).error, "growth.site.generate_seeds.storeys: storey 2 is not in 0..1");
+  c.storeys = {};
+  c.size = Vec2(2, 3);
+  EXPECT_EQ(setSeedControls(spec, c).error, "growth.site.generate_seeds.size: a seed is at least 3 m x 3 m (Sec. 5.3)");
 }
 
 }  // namespace

@@ -94,6 +94,23 @@ TEST(Site, BadSitesNameTheField) {
   EXPECT_EQ(where, "storey_height");
 }
 
+// The core is [10, 14]² from z = 0 to the top (9.6); kSite's landing [14, 20] × [11, 13] touches
+// its +x side (a lift door opening onto it) and loads (Site.ParsesEveryField).
+TEST(Site, CirculationSharingACoresInteriorIsRefused) {
+  std::string where;
+  // 0.5 m into the core at every height of the ground storey.
+  const std::string into = errorWith("\"at\": [14, 11, 0]", "\"at\": [13.5, 11, 0]", &where);
+  EXPECT_NE(into.find("overlaps cores[0]"), std::string::npos) << into;
+  EXPECT_EQ(where, "circulation[0]");
+  // On the top storey (z 6.4..9.6): the core runs the full height, so it still overlaps.
+  errorWith("\"at\": [14, 11, 0], \"size\": [6, 2, 3.2]", "\"at\": [11, 11, 6.4], \"size\": [2, 2, 3.2]", &where);
+  EXPECT_EQ(where, "circulation[0]");
+  // Touching at a corner only ((14, 14)), or lying 0.01 m off the core: no shared interior.
+  EXPECT_EQ(errorWith("\"at\": [14, 11, 0]", "\"at\": [14, 14, 0]"), "");
+  EXPECT_EQ(errorWith("\"at\": [14, 11, 0], \"size\": [6, 2, 3.2]", "\"at\": [14.01, 11, 0], \"size\": [5.99, 2, 3.2]"),
+            "");
+}
+
 TEST(Site, NonFiniteValuesInAProgrammaticSiteNameTheField) {
   Site s = test::openSite(20, 20, 2);
   s.seeds.push_back(test::seedAt(1, 1, 0, 30));
