@@ -35,6 +35,7 @@ constexpr const char* kCityUsage =
     "usage: corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] [--out FILE.glb]\n"
     "         [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]\n"
     "         [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]\n"
+    "         [--textures on|off]\n"
     "       corbel-cli city --street X,Y;X,Y;... --style STYLE.json [...]   (town houses along a spline)\n";
 
 Vec2 centroidOf(const std::vector<Vec2>& ring) {
@@ -56,8 +57,9 @@ void drawBar(std::size_t done, std::size_t total, double seconds) {
 int city(int argc, char** argv) {
   std::map<std::string, std::string> opt;
   std::vector<std::string> positional;
-  const std::set<std::string> known = {"--style",  "--seed",   "--jobs",   "--out",         "--tiles",  "--tile-size",
-                                       "--render", "--around", "--street", "--coordinates", "--report", "--detail"};
+  const std::set<std::string> known = {"--style",     "--seed",   "--jobs",    "--out",    "--tiles",
+                                       "--tile-size", "--render", "--around",  "--street", "--coordinates",
+                                       "--report",    "--detail", "--textures"};
   for (int i = 2; i < argc; ++i) {
     const std::string s = argv[i];
     if (s.rfind("--", 0) == 0) {
@@ -177,6 +179,10 @@ int city(int argc, char** argv) {
   }
 
   std::unique_ptr<Scene> whole, tile, view;
+  ExportOptions exportOptions;  // textured by tag: a PNG per built-in material, UVs from the faces' planes
+  const std::string textures = opt.count("--textures") ? opt["--textures"] : "on";
+  if (textures != "on" && textures != "off") return usage("--textures: expected on or off, not '" + textures + "'");
+  exportOptions.textures = textures == "on";
   if (opt.count("--out")) whole = std::make_unique<Scene>();
   if (opt.count("--render") && !whole) view = std::make_unique<Scene>();  // else the output's Scene is rendered
   ObjectId wholeId = 1, tileId = 1, viewId = 1;
@@ -185,9 +191,11 @@ int city(int argc, char** argv) {
   auto flushTile = [&] {
     if (!tile || !currentTile) return;
     if (tileId > 1) {
-      exportScene(*tile, (std::filesystem::path(opt["--tiles"]) / ("tile_" + std::to_string(currentTile->first) + "_" +
-                                                                   std::to_string(currentTile->second) + ".glb"))
-                             .string());
+      exportScene(*tile,
+                  (std::filesystem::path(opt["--tiles"]) /
+                   ("tile_" + std::to_string(currentTile->first) + "_" + std::to_string(currentTile->second) + ".glb"))
+                      .string(),
+                  exportOptions);
       ++tilesWritten;
     }
     tile.reset();
@@ -235,7 +243,7 @@ int city(int argc, char** argv) {
                                                 [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
   flushTile();
   const double buildS = seconds();
-  if (whole) exportScene(*whole, opt["--out"]);
+  if (whole) exportScene(*whole, opt["--out"], exportOptions);
   if (opt.count("--render")) {
     render::HeadlessContext context;
     writeScenePng(whole ? *whole : *view, {-60, 35, 0.75}, opt["--render"]);

@@ -11,6 +11,9 @@ namespace corbel {
 struct ExportOptions {
   // Which objects to write (all when empty).
   std::function<bool(ObjectId)> include;
+  // glb only: a procedural texture (core/textures.h) per built-in material, embedded as PNG,
+  // with TEXCOORD_0 from each face's plane in its material's primitives.
+  bool textures = false;
 };
 
 enum class ExportFormat { Obj, Ply, Off, Glb };

@@ -1,12 +1,16 @@
 // Binary glTF 2.0 export through tinygltf: one node and mesh per object (named as the
-// object), one primitive per material, flat normals. glTF is Y up: (x, y, z) → (x, z, −y).
+// object), one primitive per material, flat normals; with ExportOptions::textures, a PNG
+// texture per built-in material and TEXCOORD_0 from each face's plane. glTF is Y up: (x, y, z) → (x, z, −y).
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
 #include "core/materials.h"
+#include "core/textures.h"
 
+#include <stb_image_write.h>
 #include <tiny_gltf.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -16,7 +20,7 @@ namespace corbel {
 namespace {
 
 struct PrimitiveData {
-  std::vector<float> positions, normals;
+  std::vector<float> positions, normals, uvs;
   std::vector<std::uint32_t> indices;
 };
 
@@ -53,6 +57,47 @@ int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bo
   return static_cast<int>(model.accessors.size()) - 1;
 }
 
+int addVec2Accessor(tinygltf::Model& model, const std::vector<float>& values) {
+  tinygltf::Accessor a;
+  a.bufferView = addView(model, values.data(), values.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+  a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  a.count = values.size() / 2;
+  a.type = TINYGLTF_TYPE_VEC2;
+  model.accessors.push_back(a);
+  return static_cast<int>(model.accessors.size()) - 1;
+}
+
+// The texture as a PNG image in the binary buffer, a repeating sampler and a texture.
+int addTexture(tinygltf::Model& model, const MaterialTexture& tex, const std::string& name) {
+  std::vector<unsigned char> png;
+  stbi_write_png_to_func(
+      [](void* context, void* data, int size) {
+        auto* out = static_cast<std::vector<unsigned char>*>(context);
+        const auto* p = static_cast<const unsigned char*>(data);
+        out->insert(out->end(), p, p + size);
+      },
+      &png, tex.size, tex.size, 3, tex.rgb.data(), tex.size * 3);
+  if (png.empty()) throw Error("cannot encode the texture of '" + name + "' as PNG");
+  tinygltf::Image image;
+  image.name = name;
+  image.mimeType = "image/png";
+  image.bufferView = addView(model, png.data(), png.size(), 0);
+  model.images.push_back(image);
+  if (model.samplers.empty()) {
+    tinygltf::Sampler sampler;
+    sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+    sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_REPEAT;
+    model.samplers.push_back(sampler);
+  }
+  tinygltf::Texture texture;
+  texture.name = name;
+  texture.sampler = 0;
+  texture.source = static_cast<int>(model.images.size()) - 1;
+  model.textures.push_back(texture);
+  return static_cast<int>(model.textures.size()) - 1;
+}
+
 }  // namespace
 
 void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& options) {
@@ -63,6 +108,7 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
   model.scenes.emplace_back();
   model.defaultScene = 0;
   std::map<std::string, int> materialIndex;
+  std::map<std::string, const MaterialTexture*> materialTex;
   const PolyMesh& mesh = scene.mesh();
 
   const auto byObject = scene.facesByObject();
@@ -70,6 +116,7 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
     if (options.include && !options.include(id)) continue;
     std::map<std::string, PrimitiveData> byMaterial;
     std::vector<Vec3> poly;
+    std::vector<Vec2> uv;
     const auto found = byObject.find(id);
     if (found == byObject.end()) continue;
     for (auto f : found->second) {
@@ -82,9 +129,16 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
         mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
         mat.pbrMetallicRoughness.metallicFactor = 0.0;
         mat.pbrMetallicRoughness.roughnessFactor = 0.9;
+        const MaterialTexture* tex = options.textures && !m.empty() ? materialTexture(m) : nullptr;
+        if (tex) {  // the texture carries the colour: base colour = factor × texel
+          mat.pbrMetallicRoughness.baseColorTexture.index = addTexture(model, *tex, label);
+          mat.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+        }
         model.materials.push_back(mat);
         materialIndex[label] = static_cast<int>(model.materials.size()) - 1;
+        materialTex[label] = tex;
       }
+      const MaterialTexture* tex = materialTex[label];
       PrimitiveData& prim = byMaterial[label];
       poly.clear();
       for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
@@ -98,6 +152,19 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
         prim.normals.insert(prim.normals.end(),
                             {static_cast<float>(n[0]), static_cast<float>(n[2]), static_cast<float>(-n[1])});
       }
+      if (tex) {  // texture coordinates from the plane, shifted by whole tiles to stay small;
+                  // v is flipped so that the image's top is up on the building
+        uv.clear();
+        Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+        for (const Vec3& p : poly) {
+          uv.push_back(planeUv(p, n) / tex->metres);
+          lo = Vec2(std::min(lo[0], uv.back()[0]), std::min(lo[1], uv.back()[1]));
+          hi[1] = std::max(hi[1], uv.back()[1]);
+        }
+        const double u0 = std::floor(lo[0]), v0 = std::ceil(hi[1]);
+        for (const Vec2& t : uv)
+          prim.uvs.insert(prim.uvs.end(), {static_cast<float>(t[0] - u0), static_cast<float>(v0 - t[1])});
+      }
       for (const auto& t : triangulatePolygon(poly))
         prim.indices.insert(prim.indices.end(), {base + t[0], base + t[1], base + t[2]});
     }
@@ -109,6 +176,7 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
       p.material = materialIndex[label];
       p.attributes["POSITION"] = addVec3Accessor(model, prim.positions, true);
       p.attributes["NORMAL"] = addVec3Accessor(model, prim.normals, false);
+      if (!prim.uvs.empty()) p.attributes["TEXCOORD_0"] = addVec2Accessor(model, prim.uvs);
       tinygltf::Accessor idx;
       idx.bufferView = addView(model, prim.indices.data(), prim.indices.size() * sizeof(std::uint32_t),
                                TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);

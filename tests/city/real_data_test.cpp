@@ -1,12 +1,16 @@
 // Every one of the 10,524 real footprints is either built as a closed shell or reported with a
 // reason, with the three-style rule set; and the CLI writes the town and its tiles.
 #include "city/town.h"
+#include "core/materials.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <set>
 
 using namespace corbel;
 using namespace corbel::city;
@@ -57,4 +61,64 @@ TEST(RealData, TheCliWritesTheTownAndItsTiles) {
   for (const auto& e : std::filesystem::directory_iterator(dir / "tiles")) tiles += e.path().extension() == ".glb";
   EXPECT_EQ(tiles, j["tiles"].get<std::size_t>());
   EXPECT_GT(tiles, 1u);
+}
+
+// The glb of a street of old-town houses is textured by tag: read as bytes and its JSON chunk
+// parsed, every material the style's tags give a built-in name has a texture of its own, every
+// primitive of such a material a UV per corner; `--textures off` writes none, a bad value is named.
+TEST(RealData, TheCliTexturesTheGlbByTag) {
+  const auto dir = std::filesystem::temp_directory_path() / "corbel_city_texture_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  auto run = [&](const std::string& name, const std::string& extra) {
+    const std::string cmd = std::string(CORBEL_CLI) + " city --street \"0,0;40,20;80,10\" --style " +
+                            CORBEL_SOURCE_DIR + "/assets/styles/oldtown.json --out " + (dir / name).string() + " " +
+                            extra + " > " + (dir / "out.json").string() + " 2> " + (dir / "err.txt").string();
+    return WEXITSTATUS(std::system(cmd.c_str()));
+  };
+  auto gltfOf = [&](const std::string& name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_GT(bytes.size(), 20u);
+    EXPECT_EQ(bytes.substr(0, 4), "glTF");
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    return nlohmann::json::parse(bytes.substr(20, length));
+  };
+  ASSERT_EQ(run("town.glb", ""), 0);
+  const nlohmann::json g = gltfOf("town.glb");
+  std::set<std::string> textured;
+  std::set<int> texturesUsed;
+  for (const auto& m : g["materials"]) {
+    const std::string name = m["name"];
+    const bool has = m["pbrMetallicRoughness"].contains("baseColorTexture");
+    EXPECT_EQ(has, isBuiltinMaterial(name)) << name;  // the table of core/materials.h
+    if (has) {
+      textured.insert(name);
+      EXPECT_TRUE(texturesUsed.insert(m["pbrMetallicRoughness"]["baseColorTexture"]["index"].get<int>()).second)
+          << name;
+    }
+  }
+  EXPECT_TRUE(textured.count("plaster") || textured.count("brick"));
+  EXPECT_TRUE(textured.count("timber"));  // the gables' tag
+  EXPECT_EQ(g["images"].size(), textured.size());
+  EXPECT_EQ(g["textures"].size(), textured.size());
+  std::size_t primitives = 0;
+  for (const auto& mesh : g["meshes"])
+    for (const auto& p : mesh["primitives"]) {
+      const std::string name = g["materials"][p["material"].get<int>()]["name"];
+      ASSERT_EQ(p["attributes"].contains("TEXCOORD_0"), textured.count(name) > 0) << name;
+      if (!textured.count(name)) continue;
+      ++primitives;
+      EXPECT_EQ(g["accessors"][p["attributes"]["TEXCOORD_0"].get<int>()]["count"],
+                g["accessors"][p["attributes"]["POSITION"].get<int>()]["count"]);
+    }
+  EXPECT_GT(primitives, 0u);
+
+  ASSERT_EQ(run("plain.glb", "--textures off"), 0);
+  EXPECT_FALSE(gltfOf("plain.glb").contains("images"));
+  EXPECT_EQ(run("bad.glb", "--textures maybe"), 2);
+  std::ifstream err(dir / "err.txt");
+  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("--textures: expected on or off, not 'maybe'"), std::string::npos) << message;
 }

@@ -4,12 +4,14 @@
 
 #include "core/error.h"
 #include "core/materials.h"
+#include "core/textures.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <set>
@@ -409,6 +411,144 @@ TEST(Export, EmptySelectionWritesValidEmptyFiles) {
   ASSERT_TRUE(g.ok) << g.err;
   EXPECT_TRUE(g.model.nodes.empty());
   EXPECT_TRUE(g.model.meshes.empty());
+}
+
+}  // namespace
+
+namespace {
+
+// Positions, normals and UVs of one primitive, read back.
+struct PrimData {
+  std::vector<float> positions, normals, uvs;
+};
+
+// Per face of a primitive (the writer gives each face its own corners, so corners sharing a
+// normal and an edge-connected run of the index list are a face; here each face is found as
+// the corners with one normal): the UV extent along u and v.
+std::map<std::tuple<int, int, int>, std::pair<Vec2, Vec2>> uvSpanByNormal(const PrimData& p) {
+  std::map<std::tuple<int, int, int>, std::pair<Vec2, Vec2>> out;
+  for (std::size_t i = 0; i < p.normals.size() / 3; ++i) {
+    const auto key = std::make_tuple(static_cast<int>(std::lround(p.normals[3 * i] * 1000)),
+                                     static_cast<int>(std::lround(p.normals[3 * i + 1] * 1000)),
+                                     static_cast<int>(std::lround(p.normals[3 * i + 2] * 1000)));
+    const Vec2 uv(p.uvs[2 * i], p.uvs[2 * i + 1]);
+    auto [it, fresh] = out.try_emplace(key, uv, uv);
+    if (!fresh)
+      for (int k = 0; k < 2; ++k) {
+        it->second.first[k] = std::min(it->second.first[k], uv[k]);
+        it->second.second[k] = std::max(it->second.second[k], uv[k]);
+      }
+  }
+  return out;
+}
+
+TEST(Export, GlbTexturesPerMaterialWithPlaneUvs) {
+  TempDir dir;
+  Scene s = testScene();
+  // A roof plane 4 m along its contour (x) and 5 m up its slope (3 m across, 4 m up).
+  MeshData roof;
+  const int tile = roof.addMaterial("roof_tile");
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(4, 3, 4), Vec3(0, 3, 4)}) roof.addPoint(p);
+  roof.addFace({0, 1, 2, 3}, 0, tile);
+  s.replaceObject(5, Kind::Shell, "Roof", roof);
+  corbel::ExportOptions textured;
+  textured.textures = true;
+  corbel::exportScene(s, dir.file("textured.glb"), textured);
+  const Glb g = loadGlb(dir.file("textured.glb"));
+  ASSERT_TRUE(g.ok) << g.err;
+  const tinygltf::Model& m = g.model;
+
+  // One image and texture per textured material, decoded back to the generated texels.
+  const std::set<std::string> texturedNames = {"stone", "brick", "glass", "roof_tile"};
+  EXPECT_EQ(m.images.size(), texturedNames.size());
+  EXPECT_EQ(m.textures.size(), texturedNames.size());
+  std::map<std::string, int> materialByName;
+  for (std::size_t i = 0; i < m.materials.size(); ++i) materialByName[m.materials[i].name] = static_cast<int>(i);
+  ASSERT_EQ(materialByName.size(), 5u);
+  for (const auto& [name, index] : materialByName) {
+    SCOPED_TRACE(name);
+    const int t = m.materials[index].pbrMetallicRoughness.baseColorTexture.index;
+    if (!texturedNames.count(name)) {
+      EXPECT_EQ(t, -1);  // the site's kind colour has no texture
+      continue;
+    }
+    ASSERT_GE(t, 0);
+    const tinygltf::Image& image = m.images.at(m.textures.at(t).source);
+    const corbel::MaterialTexture* want = corbel::materialTexture(name);
+    ASSERT_NE(want, nullptr);
+    EXPECT_EQ(image.mimeType, "image/png");
+    ASSERT_EQ(image.width, want->size);
+    ASSERT_EQ(image.height, want->size);
+    EXPECT_LE(want->size, 256);
+    ASSERT_GE(image.component, 3);
+    std::size_t differ = 0;
+    for (int px = 0; px < want->size * want->size; ++px)
+      for (int k = 0; k < 3; ++k) differ += image.image[px * image.component + k] != want->rgb[px * 3 + k];
+    EXPECT_EQ(differ, 0u);
+    const int sampler = m.textures[t].sampler;
+    ASSERT_GE(sampler, 0);
+    EXPECT_EQ(m.samplers[sampler].wrapS, TINYGLTF_TEXTURE_WRAP_REPEAT);
+    EXPECT_EQ(m.samplers[sampler].wrapT, TINYGLTF_TEXTURE_WRAP_REPEAT);
+  }
+
+  // Every textured primitive has one UV per corner; the site has none. The UV extent of each
+  // face of the hand-made solids is its size in metres over the tile's size.
+  for (const tinygltf::Mesh& mesh : m.meshes)
+    for (const tinygltf::Primitive& p : mesh.primitives) {
+      SCOPED_TRACE(mesh.name);
+      const std::string& name = m.materials.at(p.material).name;
+      const auto uv = p.attributes.find("TEXCOORD_0");
+      if (!texturedNames.count(name)) {
+        EXPECT_EQ(uv, p.attributes.end());
+        continue;
+      }
+      ASSERT_NE(uv, p.attributes.end());
+      EXPECT_EQ(m.accessors.at(uv->second).count, m.accessors.at(p.attributes.at("POSITION")).count);
+      EXPECT_EQ(m.accessors.at(uv->second).type, TINYGLTF_TYPE_VEC2);
+      PrimData d;
+      d.normals = accessorData<float>(m, p.attributes.at("NORMAL"), 3);
+      d.uvs = accessorData<float>(m, uv->second, 2);
+      const double tileM = corbel::materialTexture(name)->metres;
+      const auto spans = uvSpanByNormal(d);
+      auto expectSpan = [&](std::tuple<int, int, int> normal, double uMetres, double vMetres) {
+        const auto it = spans.find(normal);
+        ASSERT_NE(it, spans.end());
+        EXPECT_NEAR(it->second.second[0] - it->second.first[0], uMetres / tileM, 1e-5);
+        EXPECT_NEAR(it->second.second[1] - it->second.first[1], vMetres / tileM, 1e-5);
+      };
+      // glTF is Y up: corbel's (x, y, z) normal is (x, z, -y) there.
+      if (mesh.name == "Hall") {           // the 18 x 10 x 7 m box
+        expectSpan({0, 0, 1000}, 18, 7);   // south wall, normal -y
+        expectSpan({0, 0, -1000}, 18, 7);  // north wall
+        expectSpan({1000, 0, 0}, 10, 7);   // east wall
+        expectSpan({-1000, 0, 0}, 10, 7);  // west wall
+        expectSpan({0, 1000, 0}, 18, 10);  // the flat top, in plan
+      } else if (mesh.name == "Roof") {
+        expectSpan({0, 600, 800}, 4, 5);  // normal (0, -0.8, 0.6) in corbel's frame
+      }
+      for (float v : d.uvs) EXPECT_TRUE(std::isfinite(v));
+    }
+}
+
+TEST(Export, PlaneUvRunsAlongTheWallAndUpTheSlope) {
+  // A south wall (normal -y): u = x to the right seen from outside, v = z.
+  const Vec2 a = corbel::planeUv(Vec3(3, 0, 2), Vec3(0, -1, 0));
+  EXPECT_NEAR(a[0], 3, 1e-12);
+  EXPECT_NEAR(a[1], 2, 1e-12);
+  // Seen from outside, a north wall's right is -x.
+  EXPECT_NEAR(corbel::planeUv(Vec3(3, 5, 2), Vec3(0, 1, 0))[0], -3, 1e-12);
+  // A roof rising 4 m over 3 m northwards: v grows by 5 m from eaves to ridge.
+  const Vec3 n = Vec3(0, -0.8, 0.6);
+  EXPECT_NEAR(corbel::planeUv(Vec3(1, 3, 4), n)[1] - corbel::planeUv(Vec3(1, 0, 0), n)[1], 5, 1e-12);
+  EXPECT_NEAR(corbel::planeUv(Vec3(1, 3, 4), n)[0] - corbel::planeUv(Vec3(1, 0, 0), n)[0], 0, 1e-12);
+  // Flat: plan coordinates.
+  const Vec2 f = corbel::planeUv(Vec3(7, -2, 9), Vec3(0, 0, 1));
+  EXPECT_EQ(f, Vec2(7, -2));
+  // Unknown materials have no texture; built-ins are seamless at most 256 px tiles.
+  EXPECT_EQ(corbel::materialTexture("unobtainium"), nullptr);
+  const corbel::MaterialTexture* brick = corbel::materialTexture("brick");
+  ASSERT_NE(brick, nullptr);
+  EXPECT_LE(brick->size, 256);
 }
 
 }  // namespace
