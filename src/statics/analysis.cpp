@@ -178,6 +178,7 @@ BlockQP penaltyQP(const EquilibriumSystem& p) {
       // The pyramid bounds friction by α·f_n⁺ (statics notes): f_n⁺ ≥ 0, f_n⁻ ≥ 0, α f_n⁺ ± f_t ≥ 0.
       vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}};
       addFrictionRows(vb, p, 0, 2);
+      vb.nullDirection = {-1, -1, 0, 0};  // the columns of f_n⁺ and f_n⁻ are exact opposites
       qp.blocks.push_back(vb);
       col += 4;
     }

@@ -395,6 +395,12 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
            (gap <= options.gapTolerance || gap <= options.relativeGapTolerance * std::abs(obj));
   };
 
+  // The early exit (IpmOptions::objectiveExitBelow): with c = 0 and Q ≥ 0 the objective is
+  // ≥ 0 everywhere, so a primal-feasible x with objective φ(x) ≤ ε has optimum φ* ∈ [0, φ(x)]:
+  // φ(x) is within φ(x) ≤ ε of it. Primal-feasible means A x = b to the residual tolerance
+  // (the same sense as `optimal`) and G x ≥ 0 exactly (checked on every row, not via s).
+  const bool objectiveNonNegative = options.objectiveExitBelow > 0 && (c.size() == 0 || c.cwiseAbs().maxCoeff() == 0) &&
+                                    (n == 0 || qdiag.minCoeff() >= 0);
   const auto started = std::chrono::steady_clock::now();
   for (int iter = 0;; ++iter) {
     const VectorXd gx = Gx(x);
@@ -406,6 +412,51 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       best.status = SolveStatus::Optimal;
       best.regularisations = res.regularisations;
       return best;
+    }
+    if (objectiveNonNegative &&
+        (rp.size() ? rp.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0) <= options.residualTolerance) {
+      // x̃: every block moved along its null direction e by the δ ≥ 0 that minimises the
+      // block's objective ½Σq(x + δe)², capped so that every row g·x ≥ 0 stays so. A e = 0, so
+      // A x̃ = A x up to rounding (checked again below).
+      VectorXd xt = x;
+      for (int j = 0; j < nb; ++j) {
+        const VarBlock& blk = qp.blocks[std::size_t(j)];
+        const auto& e = blk.nullDirection;
+        double qe = 0, qxe = 0;
+        for (int k = 0; k < blk.size; ++k) {
+          qe += blk.hessian[k] * e[k] * e[k];
+          qxe += blk.hessian[k] * x[blk.offset + k] * e[k];
+        }
+        if (!(qe > 0) || !(qxe < 0)) continue;
+        double delta = -qxe / qe;
+        for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+          double ge = 0;
+          for (int k = 0; k < blk.size; ++k) ge += blk.rows[r][k] * e[k];
+          if (ge < 0) delta = std::min(delta, std::max(0.0, gx[rowStart[j] + int(r)]) / -ge);
+        }
+        for (int k = 0; k < blk.size; ++k) xt[blk.offset + k] += delta * e[k];
+      }
+      const double obj = 0.5 * xt.dot(qdiag.cwiseProduct(xt));
+      if (obj <= options.objectiveExitBelow) {
+        const VectorXd rpt = qp.A * xt - qp.b;
+        const double prt = rpt.size() ? rpt.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
+        const VectorXd gxt = Gx(xt);
+        if (prt <= options.residualTolerance && (mi == 0 || gxt.minCoeff() >= 0)) {
+          IpmResult early;
+          early.status = SolveStatus::Optimal;
+          early.x = xt;
+          // With ½x̃ᵀQx̃ = 0 (so Q x̃ = 0) and c = 0, (x̃, 0, 0) satisfies the KKT conditions
+          // exactly: the multipliers are 0. Otherwise the iterate's.
+          early.multipliers = obj == 0 ? VectorXd::Zero(m) : y;
+          early.objective = obj;
+          early.primalResidual = prt;
+          early.dualResidual = obj == 0 ? 0.0 : (rd.size() ? rd.lpNorm<Eigen::Infinity>() / (1 + cnorm) : 0.0);
+          early.gap = obj;  // the certified bound on objective − optimum
+          early.iterations = iter;
+          early.regularisations = res.regularisations;
+          return early;
+        }
+      }
     }
     if (iter >= options.maxIterations) break;
     if (options.maxSeconds > 0 &&

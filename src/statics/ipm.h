@@ -21,6 +21,11 @@ struct VarBlock {
   std::array<double, 4> cost{};     // c on the block
   // Inequality rows g·x_block ≥ 0, coefficients on the block's variables.
   std::vector<std::array<double, 4>> rows;
+  // Optional: a direction e on the block's variables with A_j e = 0 exactly (the penalty QP:
+  // f_n⁺ and f_n⁻ have opposite columns, e = (−1, −1, 0, 0) trades tension for less
+  // compression). The early exit moves an iterate along it to lower the objective, keeping
+  // every row ≥ 0; all zeros for none.
+  std::array<double, 4> nullDirection{};
 };
 
 struct BlockQP {
@@ -33,7 +38,8 @@ struct BlockQP {
 };
 
 enum class SolveStatus {
-  Optimal,          // residuals and duality gap within tolerance
+  Optimal,          // residuals and duality gap within tolerance, or the objective certified
+                    // within IpmOptions::objectiveExitBelow of its optimum (then gap = that bound)
   IterationLimit,   // the iteration cap was reached; the best iterate is returned
   TimeLimit,        // the time cap was reached; the best iterate is returned
   ReducedAccuracy,  // stopped short of the tolerances (iteration cap or a failed factorisation)
@@ -59,6 +65,12 @@ struct IpmOptions {
   double residualTolerance = 1e-11;  // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
   double gapTolerance = 1e-13;       // absolute, on sᵀz (loads are normalised, so O(1))
   double relativeGapTolerance = 1e-10;  // or relative to |objective|
+  // Early exit on a certified small objective (docs/statics.md, "The early exit"): when c = 0
+  // and Q ≥ 0 (the objective is ≥ 0, as in the penalty QP), a point x̃ with A x̃ = b to
+  // residualTolerance, G x̃ ≥ 0 and ½x̃ᵀQx̃ ≤ this bound is optimal to within the bound. x̃ is
+  // the iterate moved along the blocks' nullDirection; the solve stops there as `optimal`
+  // with `gap` = ½x̃ᵀQx̃ (the certified bound). 0 turns it off.
+  double objectiveExitBelow = 1e-12;
 };
 
 struct IpmResult {

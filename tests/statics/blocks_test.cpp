@@ -1,8 +1,10 @@
 // Small assemblies whose thresholds are computed by hand: stacks, tipping, sliding, the kern.
 #include "core/error.h"
 #include "statics/analysis.h"
+#include "statics/builder.h"
 #include "statics/examples.h"
 #include "statics/thresholds.h"
+#include "statics/wall.h"
 
 #include <gtest/gtest.h>
 
@@ -185,6 +187,44 @@ TEST(BlockStatics, SolverTimeCapStopsWithItsStatus) {
   EXPECT_EQ(r.status, SolveStatus::TimeLimit);
   EXPECT_FALSE(r.feasible);
   EXPECT_EQ(toString(r.status), "time limit");
+}
+
+// The early exit on a certified small objective (IpmOptions::objectiveExitBelow,
+// docs/statics.md): on a standing wall it must stop sooner than the full tolerances, with y
+// within its reported bound of the fully converged y (the oracle: the same QP with the exit
+// off) and in equilibrium; on a model that does not stand (y/W² = 1/18 for the tipped
+// overhang) it must not fire, so the result is the same bit for bit.
+TEST(BlockStatics, EarlyExitStopsSoonerWithinItsCertifiedBound) {
+  WallSpec w;
+  w.blockLength = 0.5;
+  w.length = 5;
+  w.courses = 10;
+  w.height = 2.5;
+  w.thickness = 0.4;
+  StructureBuilder b;
+  b.add("wall", wallBlocks(w));
+  b.groundUnder(1.0);
+  const Assembly wall = b.build();
+  AnalysisOptions off;
+  off.solver.objectiveExitBelow = 0;
+  const AnalysisResult full = analyse(wall, off), early = analyse(wall);
+  ASSERT_EQ(full.status, SolveStatus::Optimal);
+  ASSERT_EQ(early.status, SolveStatus::Optimal);
+  EXPECT_LT(early.iterations, full.iterations);
+  EXPECT_TRUE(early.feasible);
+  EXPECT_LE(early.yNormalised, AnalysisOptions{}.solver.objectiveExitBelow);
+  EXPECT_EQ(early.gap, early.yNormalised);
+  // Each is within its own gap of the optimum, so of each other within the sum.
+  EXPECT_LE(std::abs(early.yNormalised - full.yNormalised), early.gap + full.gap);
+  EXPECT_LE(early.yNormalised, full.yNormalised);
+  EXPECT_LE(early.equilibriumResidual, 1e-8);
+  for (const InterfaceForces& f : early.interfaces)
+    for (const VertexForce& v : f.vertices) EXPECT_GE(v.compression, 0);
+
+  const AnalysisResult tippedFull = analyse(stack(0, 0.7), off), tipped = analyse(stack(0, 0.7));
+  EXPECT_EQ(tipped.iterations, tippedFull.iterations);
+  EXPECT_EQ(tipped.yNormalised, tippedFull.yNormalised);
+  EXPECT_NEAR(tipped.yNormalised, 1.0 / 18, 1e-7);
 }
 
 // The strongly infeasible examples (docs/statics.md, the solver's known weakness) stop short
