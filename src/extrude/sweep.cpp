@@ -490,6 +490,7 @@ void Sweeper::predict(int ci) {
     q = Vec2((a.c * b.n[1] - b.c * a.n[1]) / det, (a.n[0] * b.c - b.n[0] * a.c) / det);
   }
   syncLive();
+  const double after = c.z0 + settle(c);
   for (int ei : liveEdges_) {
     const Edge& e = edges_[ei];
     if (!e.alive || ei == c.prev || ei == c.next) continue;
@@ -498,7 +499,7 @@ void Sweeper::predict(int ci) {
     const double z = (e.c - OpenMesh::dot(e.n, q)) / denom;
     // A corner takes part in nothing more at the height it was made: everything at its
     // point and height was handled by the event that made it.
-    if (!(z > c.z0 + settle(c)) || !std::isfinite(z)) continue;
+    if (!(z > after) || !std::isfinite(z)) continue;
     push({z, q + v * z, ci});
   }
 }
