@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -178,7 +180,15 @@ std::size_t unpairedEdges(const SweepOutput& shell) {
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const bool repeated = (i > 0 && edges[i - 1] == edges[i]) || (i + 1 < edges.size() && edges[i + 1] == edges[i]);
     const auto rev = std::equal_range(edges.begin(), edges.end(), std::make_pair(edges[i].second, edges[i].first));
-    if (repeated || rev.second - rev.first != 1) ++bad;
+    if (repeated || rev.second - rev.first != 1) {
+      ++bad;
+      if (const char* t = std::getenv("CORBEL_SWEEP_TRACE"); t && *t == '1') {
+        const Vec3& a = shell.points[edges[i].first];
+        const Vec3& b = shell.points[edges[i].second];
+        std::fprintf(stderr, "unpaired edge v%d (%.9g, %.9g, %.9g) -> v%d (%.9g, %.9g, %.9g)\n", edges[i].first, a[0],
+                     a[1], a[2], edges[i].second, b[0], b[1], b[2]);
+      }
+    }
   }
   return bad;
 }

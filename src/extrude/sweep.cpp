@@ -117,6 +117,7 @@ class Sweeper {
   // Geometry.
   Vec2 cornerAt(int c, double z) const;
   Vec2 liveAt(int c, double z) const;  // at z, or where it was made if that is above z
+  double settle(const Corner& c) const;
   Vec2 nearestOnPath(int c, const Vec2& p, double z) const;
   void setCornerMotion(int c, const Vec2& at, double z);
   void setEdgePlane(Edge& e, const Vec2& d, const Vec2& pointOnLine, double z, double angle);
@@ -356,9 +357,11 @@ void Sweeper::resolveCorner(int ci, double z, int depth) {
     // Almost antiparallel: one line (a ridge) when they are within ridgeSine, or, up to
     // ridgeMaxSine, when the sliver between them is too small to matter (sine · L² of the
     // shorter edge under ridgeArea). Otherwise the corner races along the ridge exactly.
-    if (sine > tol_.ridgeSine) {
-      const Vec2 l = cornerAt(ci, z);
-      const double shorter = std::min((l - cornerAt(a.start, z)).norm(), (cornerAt(b.end, z) - l).norm());
+    // A loop of these two edges alone has no area to keep (both corners are where the lines
+    // meet): it always closes along the ridge.
+    if (sine > tol_.ridgeSine && a.start != b.end) {
+      const Vec2 l = liveAt(ci, z);
+      const double shorter = std::min((l - liveAt(a.start, z)).norm(), (liveAt(b.end, z) - l).norm());
       if (sine * shorter * shorter > tol_.ridgeArea) return;
     }
     zipSpike(ci, z, depth);
@@ -380,25 +383,27 @@ void Sweeper::relink(int prev, int next, int vertex, const Vec2& at, double z, i
 
 // Two antiparallel edges meeting at a corner lie on one line: above this height they would
 // cross. They meet along their overlap (a ridge); the longer one goes on (Sec. 4.4, the
-// degenerate chains of two parallel edges).
+// degenerate chains of two parallel edges). Corners are taken where they live (liveAt): a
+// racing corner made a little above z would, taken back to z along its path, sit decimetres
+// to metres along the ridge from its event (taking them at z: 265 random failures, not 131).
 void Sweeper::zipSpike(int ci, double z, int depth) {
   Corner& c = corners_[ci];
   const int A = c.prev, B = c.next;
   const int a0 = edges_[A].start, b1 = edges_[B].end;
-  const Vec2 l = cornerAt(ci, z);
+  const Vec2 l = liveAt(ci, z);
   const int vl = c.vertex;
   c.alive = false;
   SWEEP_TRACE("zip corner %d (edges %d, %d) at (%g, %g, %g)", ci, A, B, l[0], l[1], z);
   if (a0 == b1) {
     // A loop of two edges: it closes along the ridge.
-    const Vec2 pa = cornerAt(a0, z);
+    const Vec2 pa = liveAt(a0, z);
     const int va = addVertex(pa, z);
     killCorner(a0, va);
     shareTop(A, B, vl, va);
     edges_[A].alive = edges_[B].alive = false;
     return;
   }
-  const Vec2 pa = cornerAt(a0, z), pb = cornerAt(b1, z);
+  const Vec2 pa = liveAt(a0, z), pb = liveAt(b1, z);
   const double la = OpenMesh::dot(edges_[A].d, l - pa);
   const double lb = OpenMesh::dot(edges_[B].d, pb - l);
   const int aPrev = corners_[a0].prev, bNext = corners_[b1].next;
@@ -440,7 +445,7 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
   SWEEP_TRACE("merge colinear corner %d (edges %d, %d) keeping %d", ci, A, B, keepA ? A : B);
   if (keepA) {
     const int b1 = edges_[B].end;
-    const Vec2 pb = cornerAt(b1, z);
+    const Vec2 pb = liveAt(b1, z);
     const int vb = addVertex(pb, z);
     killCorner(b1, vb);
     shareTop(A, B, vl, vb);  // B's face ends along its top; A's face goes on above it
@@ -449,7 +454,7 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
     relink(A, bNext, vb, pb, z, depth);
   } else {
     const int a0 = edges_[A].start;
-    const Vec2 pa = cornerAt(a0, z);
+    const Vec2 pa = liveAt(a0, z);
     const int va = addVertex(pa, z);
     killCorner(a0, va);
     shareTop(A, B, vl, va);
@@ -478,6 +483,7 @@ void Sweeper::predict(int ci) {
     q = Vec2((a.c * b.n[1] - b.c * a.n[1]) / det, (a.n[0] * b.c - b.n[0] * a.c) / det);
   }
   syncLive();
+  const double after = c.z0 + settle(c);
   for (int ei : liveEdges_) {
     const Edge& e = edges_[ei];
     if (!e.alive || ei == c.prev || ei == c.next) continue;
@@ -486,9 +492,19 @@ void Sweeper::predict(int ci) {
     const double z = (e.c - OpenMesh::dot(e.n, q)) / denom;
     // A corner takes part in nothing more at the height it was made: everything at its
     // point and height was handled by the event that made it.
-    if (!(z > c.z0 + tol_.height) || !std::isfinite(z)) continue;
+    if (!(z > after) || !std::isfinite(z)) continue;
     push({z, q + v * z, ci});
   }
+}
+
+// Predictions this little above the height a corner was made at are what that event handled.
+// δ1 for most corners; a racing corner covers metres in δ1 (an initial corner between a
+// shallow roof and a wall 2.5e-7 rad off it races at 1e7 m per m of rise and may sweep its
+// whole edge in that height), so for it, the height in which it moves kRaceSettle δ2.
+constexpr double kRaceSettle = 2;
+
+double Sweeper::settle(const Corner& c) const {
+  return c.speed > 0 ? std::min(tol_.height, kRaceSettle * tol_.cluster / c.speed) : tol_.height;
 }
 
 void Sweeper::syncLive() {
@@ -544,7 +560,7 @@ void Sweeper::predictAgainst(int ei) {
     const double denom = OpenMesh::dot(e.n, v) - e.k;
     if (std::abs(denom) < 1e-14) continue;
     const double z = (e.c - OpenMesh::dot(e.n, q)) / denom;
-    if (!(z > std::max(c.z0, z_) + tol_.height) || !std::isfinite(z)) continue;
+    if (!(z > std::max(c.z0 + settle(c), z_ + tol_.height)) || !std::isfinite(z)) continue;
     push({z, q + v * z, ci});
   }
 }

@@ -1,9 +1,9 @@
 // The post inter-chain check of Sec. 4.4: after an event, the corners it made must keep the
 // active plan simple just above it. A plan that overlaps itself there comes from an earlier
-// degenerate configuration (here: a random plan perturbed by up to 1e-5 m, random69086, saved
-// by the random robustness test), and the user is told so. The oracle that the warning is deserved is the
-// shell itself: its edges do not pair up. (That no closed real footprint or example carries
-// the warning is checked in footprints_test.cpp and examples_test.cpp.)
+// degenerate configuration (here: a random plan, random34510, saved by the random robustness
+// test; the plan used before, random69086, closes since racing corners settle, see below), and the user is told so. The
+// oracle that the warning is deserved is the shell itself: its edges do not pair up. (That no closed real footprint or
+// example carries the warning is checked in footprints_test.cpp and examples_test.cpp.)
 #include "core/error.h"
 #include "core/project_io.h"
 #include "extrude/extrude.h"
@@ -17,7 +17,8 @@ namespace corbel::extrude::test {
 namespace {
 
 TEST(PostInterChain, WarnsWhereThePlanOverlapsItselfAboveAnEvent) {
-  const Document d = loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/overlap_after_event.corbel").document;
+  const Document d =
+      loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/overlap_after_event.corbel").document;
   ASSERT_EQ(d.objects.size(), 1u);
   const ExtrusionResult r = extrude(std::get<ExtrusionSpec>(d.objects[0].spec));
   std::string warning;
@@ -25,8 +26,8 @@ TEST(PostInterChain, WarnsWhereThePlanOverlapsItselfAboveAnEvent) {
     if (w.find("overlapped itself") != std::string::npos) warning = w;
   ASSERT_FALSE(warning.empty()) << "no post inter-chain warning";
   // It names where: the event point (x, y, z).
-  EXPECT_NE(warning.find("(-7.88"), std::string::npos) << warning;
-  EXPECT_NE(warning.find(", -4.44"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("(30.19"), std::string::npos) << warning;
+  EXPECT_NE(warning.find(", -2.80"), std::string::npos) << warning;
   EXPECT_GT(unpairedEdges(r.shell), 0u) << "the warned shell closed after all: the check would be crying wolf";
 }
 
@@ -34,19 +35,24 @@ TEST(PostInterChain, WarnsWhereThePlanOverlapsItselfAboveAnEvent) {
 // since corners that an event made at a point no longer meet again there
 // (EqualAngles.CornersMadeAtAPointDoNotMeetAgainThere), it closes unwarned, and its roof
 // projects onto the footprint exactly once.
+// The plan the test above was warned on next (random69086) closes unwarned too, since racing
+// corners predict events within δ1 of their making and two-edge ridge loops close at once
+// (RegressionCases.PerturbedRacingCornersCloseAsTheUnperturbedPlan).
 TEST(PostInterChain, APlanThatUsedToOverlapItselfClosesWithTheProjectionIdentity) {
-  const Document d =
-      loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/former_overlap_closes.corbel").document;
-  ASSERT_EQ(d.objects.size(), 1u);
-  const auto& spec = std::get<ExtrusionSpec>(d.objects[0].spec);
-  const ExtrusionResult r = extrude(spec);
-  for (const std::string& w : r.shell.warnings) ADD_FAILURE() << "warning: " << w;
-  EXPECT_EQ(unpairedEdges(r.shell), 0u);
-  double footprint = 0, projected = 0;
-  for (const auto& l : spec.loops) footprint += shoelace(l.points);
-  for (const ShellFace& f : r.shell.faces)
-    if (!f.base) projected += faceArea(r.shell, f) * f.normal[2];
-  EXPECT_NEAR(projected, footprint, 1e-7 * footprint);
+  for (const char* file : {"former_overlap_closes.corbel", "former_overlap_closes_too.corbel"}) {
+    SCOPED_TRACE(file);
+    const Document d = loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/" + file).document;
+    ASSERT_EQ(d.objects.size(), 1u);
+    const auto& spec = std::get<ExtrusionSpec>(d.objects[0].spec);
+    const ExtrusionResult r = extrude(spec);
+    for (const std::string& w : r.shell.warnings) ADD_FAILURE() << "warning: " << w;
+    EXPECT_EQ(unpairedEdges(r.shell), 0u);
+    double footprint = 0, projected = 0;
+    for (const auto& l : spec.loops) footprint += shoelace(l.points);
+    for (const ShellFace& f : r.shell.faces)
+      if (!f.base) projected += faceArea(r.shell, f) * f.normal[2];
+    EXPECT_NEAR(projected, footprint, 1e-7 * footprint);
+  }
 }
 
 // A random plan (random13237 of the robustness run) whose active plan comes to overlap itself
