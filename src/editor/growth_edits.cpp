@@ -81,6 +81,15 @@ SiteEditResult editList(const GrowthSpec& spec, SiteItem item, int index, bool a
   });
 }
 
+
+bool finite(std::initializer_list<double> values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace
+
 int itemCount(const HandPlaced& h, SiteItem k) {
   switch (k) {
     case SiteItem::Core:
@@ -92,14 +101,6 @@ int itemCount(const HandPlaced& h, SiteItem k) {
   }
   return 0;
 }
-
-bool finite(std::initializer_list<double> values) {
-  for (double v : values)
-    if (!std::isfinite(v)) return false;
-  return true;
-}
-
-}  // namespace
 
 HandPlaced handPlaced(const std::string& siteText) {
   // Only the file's own lists: parse the text without generating seeds.

@@ -30,6 +30,8 @@ struct HandPlaced {
   std::vector<growth::Box> circulation;
   std::vector<growth::Seed> seeds;
 };
+// How many entries of one kind (SiteItem) the site has by hand.
+int itemCount(const HandPlaced& h, SiteItem item);
 // Throws InputError for site text that is not a site file (the kernel names the fault).
 HandPlaced handPlaced(const std::string& siteText);
 

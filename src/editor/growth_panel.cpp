@@ -35,18 +35,6 @@ const char* itemName(SiteItem k) {
   return "";
 }
 
-int itemCount(const HandPlaced& h, SiteItem k) {
-  switch (k) {
-    case SiteItem::Core:
-      return int(h.cores.size());
-    case SiteItem::Circulation:
-      return int(h.circulation.size());
-    case SiteItem::Seed:
-      return int(h.seeds.size());
-  }
-  return 0;
-}
-
 ImU32 colourOf(std::uint32_t id, float alpha) {
   const auto c = idColour(id);
   return IM_COL32(c[0], c[1], c[2], int(alpha * 255));
