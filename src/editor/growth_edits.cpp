@@ -81,7 +81,6 @@ SiteEditResult editList(const GrowthSpec& spec, SiteItem item, int index, bool a
   });
 }
 
-
 bool finite(std::initializer_list<double> values) {
   for (double v : values)
     if (!std::isfinite(v)) return false;
