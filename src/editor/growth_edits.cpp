@@ -236,6 +236,64 @@ SiteEditResult setEnvelopePolygon(const GrowthSpec& spec, const std::vector<Vec2
   });
 }
 
+namespace {
+// The envelope's corners as the site file gives them, or nullopt when the site does not parse.
+std::optional<std::vector<Vec2>> envelopePlan(const GrowthSpec& spec) {
+  const SiteFrame f = siteFrame(spec.site);
+  if (!f.valid) return std::nullopt;
+  return f.plan;
+}
+std::string noCorner(int i) { return "growth.site.envelope.polygon[" + std::to_string(i) + "]: no such corner"; }
+const char* kUnparsed = "growth.site: the site does not parse (its build names the fault)";
+}  // namespace
+
+SiteEditResult insertEnvelopeCorner(const GrowthSpec& spec, int edge) {
+  auto plan = envelopePlan(spec);
+  if (!plan) return {std::nullopt, kUnparsed};
+  const int n = int(plan->size());
+  if (edge < 0 || edge >= n) return {std::nullopt, noCorner(edge)};
+  const Vec2 mid = ((*plan)[edge] + (*plan)[(edge + 1) % n]) * 0.5;
+  plan->insert(plan->begin() + edge + 1, mid);
+  return setEnvelopePolygon(spec, *plan);
+}
+
+SiteEditResult removeEnvelopeCorner(const GrowthSpec& spec, int corner) {
+  auto plan = envelopePlan(spec);
+  if (!plan) return {std::nullopt, kUnparsed};
+  if (corner < 0 || corner >= int(plan->size())) return {std::nullopt, noCorner(corner)};
+  if (plan->size() <= 3) return {std::nullopt, "growth.site.envelope.polygon: needs at least 3 corners"};
+  plan->erase(plan->begin() + corner);
+  return setEnvelopePolygon(spec, *plan);
+}
+
+SiteEditResult moveEnvelopeCorner(const GrowthSpec& spec, int corner, Vec2 to) {
+  auto plan = envelopePlan(spec);
+  if (!plan) return {std::nullopt, kUnparsed};
+  if (corner < 0 || corner >= int(plan->size())) return {std::nullopt, noCorner(corner)};
+  (*plan)[corner] = to;
+  return setEnvelopePolygon(spec, *plan);
+}
+
+std::optional<SiteEditResult> dragEnvelopeCorner(const GrowthSpec& spec, const std::vector<Vec2>& from,
+                                                 const std::vector<Vec2>& now, int corner, double dx, double dy) {
+  dx = std::round(dx * 2) / 2;
+  dy = std::round(dy * 2) / 2;
+  if (corner < 0 || corner >= int(from.size()) || corner >= int(now.size())) return std::nullopt;
+  const Vec2 to(from[corner][0] + dx, from[corner][1] + dy);
+  if (to == now[corner]) return std::nullopt;
+  return moveEnvelopeCorner(spec, corner, to);
+}
+
+std::optional<int> pickEnvelopeCorner(const std::vector<Vec2>& plan, double x, double y, double radius) {
+  std::optional<int> best;
+  double bestD = radius;
+  for (int i = 0; i < int(plan.size()); ++i) {
+    const double d = std::hypot(plan[i][0] - x, plan[i][1] - y);
+    if (d <= bestD) best = i, bestD = d;
+  }
+  return best;
+}
+
 SiteEditResult setStoreys(const GrowthSpec& spec, int storeys, double storeyHeight) {
   if (storeys < 1 || storeys > 1000) return {std::nullopt, "growth.site.storeys: must lie in 1..1000"};
   if (!std::isfinite(storeyHeight) || !(storeyHeight > 0))

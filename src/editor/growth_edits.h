@@ -77,6 +77,20 @@ SiteFrame siteFrame(const std::string& siteText);
 // ("growth.site.cores[0]: lies outside the site envelope").
 SiteEditResult setEnvelopeBox(const GrowthSpec& spec, Vec2 origin, Vec2 size);
 SiteEditResult setEnvelopePolygon(const GrowthSpec& spec, const std::vector<Vec2>& corners);
+// The envelope's corners edited one at a time (a box becomes the polygon of its four corners,
+// in growth::rectanglePlan's order, first): a corner inserted at the middle of edge `edge`
+// (from corner edge to edge + 1), corner `corner` removed (a plan keeps 3), corner `corner`
+// moved to `to`. Refused as setEnvelopePolygon is, with "envelope.polygon[7]: no such corner"
+// for an index out of range and the validator's message for a plan that crosses itself.
+SiteEditResult insertEnvelopeCorner(const GrowthSpec& spec, int edge);
+SiteEditResult removeEnvelopeCorner(const GrowthSpec& spec, int corner);
+SiteEditResult moveEnvelopeCorner(const GrowthSpec& spec, int corner, Vec2 to);
+// The plan view's drag of an envelope corner: corner `corner` of `from` (the plan when the drag
+// started) moved by (dx, dy) rounded to 0.5 m steps; nullopt when that leaves it where `now`
+// has it. The corner nearest (x, y) within `radius`, nullopt for none.
+std::optional<SiteEditResult> dragEnvelopeCorner(const GrowthSpec& spec, const std::vector<Vec2>& from,
+                                                 const std::vector<Vec2>& now, int corner, double dx, double dy);
+std::optional<int> pickEnvelopeCorner(const std::vector<Vec2>& plan, double x, double y, double radius);
 // "storeys" (1..1000) and "storey_height" (> 0 m) together.
 SiteEditResult setStoreys(const GrowthSpec& spec, int storeys, double storeyHeight);
 // "generate_seeds" written with every control (storeys only when some are chosen), or removed

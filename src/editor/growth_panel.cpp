@@ -345,6 +345,13 @@ void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float
     outline.emplace_back(px, py);
   }
   dl->AddPolyline(outline.data(), int(outline.size()), IM_COL32(150, 150, 160, 255), ImDrawFlags_Closed, 1.0f);
+  // The envelope's corners are handles: dragging one moves it (a box becomes a polygon).
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const ImVec2& c = outline[i];
+    const bool held = dragCorner_ == int(i);
+    dl->AddRectFilled(ImVec2(c.x - 3, c.y - 3), ImVec2(c.x + 3, c.y + 3),
+                      held ? IM_COL32(255, 215, 50, 255) : IM_COL32(170, 170, 180, 255));
+  }
   const double z0 = site.base + planStorey_ * site.storeyHeight, z1 = z0 + site.storeyHeight;
   const ImU32 selLine = IM_COL32(255, 215, 50, 255);
   // Generated seeds (not editable) dimmed, then the file's own entries.
@@ -385,6 +392,22 @@ void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float
   double mx, my;
   m.invert(mp.x, mp.y, mx, my);
   if (ImGui::IsItemActivated()) {
+    dragging_ = false;
+    dragCorner_ = -1;
+    if (const auto corner = pickEnvelopeCorner(site.plan, mx, my, 6.0 / m.s)) {
+      dragCorner_ = *corner;
+      dragPlan_ = site.plan;
+      dragX_ = mx, dragY_ = my;
+    }
+  }
+  if (dragCorner_ >= 0 && ImGui::IsItemActive()) {
+    const std::string merge = "site" + std::to_string(host.object) + "envelope corner" + std::to_string(dragCorner_);
+    const std::string label = "Move corner " + std::to_string(dragCorner_ + 1) + " of the envelope";
+    if (const auto r = dragEnvelopeCorner(spec, dragPlan_, site.plan, dragCorner_, mx - dragX_, my - dragY_))
+      commitSite(host, *r, label, merge, false);
+  }
+  if (dragCorner_ >= 0 && ImGui::IsItemDeactivated()) dragCorner_ = -1;
+  if (ImGui::IsItemActivated() && dragCorner_ < 0) {
     dragging_ = false;
     selected_ = -1;
     if (const auto pick = pickItem(hand_, site, planStorey_, mx, my)) {
@@ -430,16 +453,46 @@ void GrowthPanel::drawFrame(const GrowthHost& host, const GrowthSpec& spec) {
         r = setEnvelopeBox(spec, Vec2(origin[0], origin[1]), Vec2(size[0], size[1]));
         changed = true, label = "Edit the envelope of " + name, merge = "envelope";
       }
+      if (ImGui::Button("Edit as a polygon")) {
+        r = setEnvelopePolygon(spec, frame_.plan);
+        changed = true, label = "Make the envelope of " + name + " a polygon";
+      }
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The box's four corners become a polygon's, to move, add or remove.");
     } else {
       for (std::size_t i = 0; i < frame_.plan.size(); ++i) {
+        ImGui::PushID(int(i));
         double p[2] = {frame_.plan[i][0], frame_.plan[i][1]};
         const std::string l = "corner " + std::to_string(i + 1);
+        if (ImGui::SmallButton("+")) {
+          r = insertEnvelopeCorner(spec, int(i));
+          changed = true, label = "Add a corner after corner " + std::to_string(i + 1) + " of the envelope of " + name;
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add a corner halfway to the next one");
+        ImGui::SameLine();
+        ImGui::BeginDisabled(frame_.plan.size() <= 3);
+        if (ImGui::SmallButton("-")) {
+          r = removeEnvelopeCorner(spec, int(i));
+          changed = true, label = "Remove corner " + std::to_string(i + 1) + " of the envelope of " + name;
+        }
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+          ImGui::SetTooltip("Remove this corner (a plan keeps 3)");
+        ImGui::SameLine();
         if (dragPair(l.c_str(), p)) {
-          std::vector<Vec2> plan = frame_.plan;
-          plan[i] = Vec2(p[0], p[1]);
-          r = setEnvelopePolygon(spec, plan);
+          r = moveEnvelopeCorner(spec, int(i), Vec2(p[0], p[1]));
           changed = true, label = "Edit the envelope of " + name, merge = "envelope";
         }
+        ImGui::PopID();
+      }
+      if (ImGui::Button("Make it a box")) {
+        const growth::Box b = [&] {
+          growth::Site s;
+          s.plan = frame_.plan;
+          return s.bounds();
+        }();
+        r = setEnvelopeBox(spec, Vec2(b.lo[0], b.lo[1]), Vec2(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]));
+        changed = true, label = "Make the envelope of " + name + " its bounding box";
       }
     }
     int storeys = frame_.storeys;
@@ -505,7 +558,7 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
   ImGui::SetNextItemWidth(120);
   ImGui::SliderInt("Plan storey", &planStorey_, 0, site.storeys - 1);
   ImGui::SameLine();
-  ImGui::TextDisabled("drag to move");
+  ImGui::TextDisabled("drag to move; drag a corner to reshape");
   drawPlan(host, spec, ImGui::GetContentRegionAvail().x, 120);
   drawFrame(host, spec);
 

@@ -104,6 +104,8 @@ class GrowthPanel {
   bool siteEditOpen_ = false;     // a site edit's merge is open (a field or the plan is held)
   double dragX_ = 0, dragY_ = 0;  // where the drag started, meters
   HandPlaced dragFrom_;           // the entries when the drag started
+  int dragCorner_ = -1;           // the envelope corner being dragged in the plan view, or -1
+  std::vector<Vec2> dragPlan_;    // the envelope's plan when that drag started
 
   bool slicing_ = false;
   double slice_ = 0;

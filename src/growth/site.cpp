@@ -3,6 +3,9 @@
 #include "core/error.h"
 #include "growth/tolerances.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -123,6 +126,14 @@ void validateSite(const Site& site) {
   for (std::size_t i = 0; i < site.plan.size(); ++i)
     for (int k = 0; k < 2; ++k) finite("envelope.polygon[" + std::to_string(i) + "]", site.plan[i][k]);
   if (!(site.area() > 0)) bad("envelope", "has no area");
+  if (site.plan.size() > 3) {
+    // Exact predicates: whether two edges cross is an orientation question.
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::vector<K::Point_2> pts;
+    for (const Vec2& p : site.plan) pts.emplace_back(p[0], p[1]);
+    if (!CGAL::is_simple_2(pts.begin(), pts.end(), K()))
+      bad("envelope.polygon", "is not a simple polygon (two edges cross or touch, or a corner repeats)");
+  }
 
   for (std::size_t i = 0; i < site.cores.size(); ++i) {
     const std::string where = "cores[" + std::to_string(i) + "]";

@@ -322,6 +322,52 @@ TEST(SiteEdits, AnExtrudedPolygonEnvelopeReplacesTheBoxAndBack) {
             "growth.site.envelope.polygon[2]: is not a finite number");
 }
 
+// The Site tab's corner buttons and the plan view's corner drag on the 20 × 10 box: a corner
+// added halfway along an edge changes no area; moved 4 m inward it cuts a triangle of
+// 20 × 4 / 2 = 40 m² off; removing it gives the box back; a corner dragged across the plan, one
+// that no longer holds the lift, and indices out of range are refused by name.
+TEST(SiteEdits, EnvelopeCornersAreAddedMovedAndRemovedOneAtATime) {
+  const GrowthSpec spec = smallSite();
+  const SiteEditResult added = insertEnvelopeCorner(spec, 2);  // edge (20, 10) → (0, 10)
+  ASSERT_TRUE(added.spec) << added.error;
+  const SiteFrame f = siteFrame(added.spec->site);
+  EXPECT_FALSE(f.box);
+  ASSERT_EQ(f.plan.size(), 5u);
+  EXPECT_EQ(f.plan[3], Vec2(10, 10));
+  EXPECT_DOUBLE_EQ(growth::parseSite(added.spec->site).area(), 200.0);
+
+  // (10, 10) → (10, 6) stays clear of the lift [10, 12] × [4, 6] only at its corner: refused
+  // by the lift; to (6, 7) the notch misses it.
+  EXPECT_EQ(moveEnvelopeCorner(*added.spec, 3, Vec2(11, 5)).error,
+            "growth.site.cores[0]: lies outside the site envelope");
+  const SiteEditResult moved = moveEnvelopeCorner(*added.spec, 3, Vec2(4, 6));
+  ASSERT_TRUE(moved.spec) << moved.error;
+  // The notch (20, 10)–(4, 6)–(0, 10): the box less the triangle of base 20 and height 4.
+  EXPECT_DOUBLE_EQ(growth::parseSite(moved.spec->site).area(), 200.0 - 40.0);
+
+  // The plan view's drag: 0.5 m steps from where the drag started; nil moves commit nothing.
+  const std::vector<Vec2> start = f.plan;
+  EXPECT_FALSE(dragEnvelopeCorner(*added.spec, start, start, 3, 0.2, -0.2));
+  const auto dragged = dragEnvelopeCorner(*added.spec, start, start, 3, -6.1, -3.9);
+  ASSERT_TRUE(dragged && dragged->spec) << (dragged ? dragged->error : "");
+  EXPECT_EQ(siteFrame(dragged->spec->site).plan[3], Vec2(4, 6));
+  EXPECT_EQ(pickEnvelopeCorner(start, 10.3, 9.8, 0.5), std::optional<int>(3));
+  EXPECT_EQ(pickEnvelopeCorner(start, 10.3, 9.0, 0.5), std::nullopt);
+
+  // A corner pulled through the opposite edge makes the plan cross itself.
+  EXPECT_EQ(moveEnvelopeCorner(*added.spec, 3, Vec2(10, -5)).error,
+            "growth.site.envelope.polygon: is not a simple polygon (two edges cross or touch, or a corner repeats)");
+  const SiteEditResult removed = removeEnvelopeCorner(*moved.spec, 3);
+  ASSERT_TRUE(removed.spec) << removed.error;
+  EXPECT_EQ(siteFrame(removed.spec->site).plan, growth::rectanglePlan(0, 0, 20, 10));
+  EXPECT_EQ(insertEnvelopeCorner(spec, 4).error, "growth.site.envelope.polygon[4]: no such corner");
+  EXPECT_EQ(removeEnvelopeCorner(spec, -1).error, "growth.site.envelope.polygon[-1]: no such corner");
+  const SiteEditResult triangle =
+      setEnvelopePolygon(spec, {Vec2(0, 0), Vec2(40, 0), Vec2(0, 40)});  // holds the lift and the seed
+  ASSERT_TRUE(triangle.spec) << triangle.error;
+  EXPECT_EQ(removeEnvelopeCorner(*triangle.spec, 0).error, "growth.site.envelope.polygon: needs at least 3 corners");
+}
+
 TEST(SiteEdits, StoreysAndTheirHeightAreCheckedAgainstTheCirculation) {
   const GrowthSpec spec = smallSite();
   History history(withSite(spec));

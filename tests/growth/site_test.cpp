@@ -141,5 +141,31 @@ TEST(Site, PolygonEnvelopeContainsOnlyWhatIsInside) {
   EXPECT_TRUE(s.planContains({5, 1, 15, 4}));
 }
 
+// A bow tie's lobes have equal and opposite signed areas; a plan may not cross itself, touch
+// itself or repeat a corner, whatever its area. Colinear corners (a corner halfway along an
+// edge, as the Site tab's "+" makes) are a simple polygon and load.
+TEST(Site, AnEnvelopeThatCrossesOrTouchesItselfIsRefused) {
+  Site s = test::openSite(1, 1, 1);
+  auto where = [&](std::vector<Vec2> plan) -> std::string {
+    s.plan = std::move(plan);
+    try {
+      validateSite(s);
+    } catch (const InputError& e) {
+      return e.where;
+    }
+    return "";
+  };
+  // A bow tie whose lobes differ (|area| > 0, so the area check alone would pass it).
+  EXPECT_EQ(where({Vec2(0, 0), Vec2(20, 10), Vec2(20, 0), Vec2(0, 20)}), "envelope.polygon");
+  // A square whose fifth corner touches its first edge from inside.
+  EXPECT_EQ(where({Vec2(0, 0), Vec2(20, 0), Vec2(20, 20), Vec2(10, 0), Vec2(0, 20)}), "envelope.polygon");
+  // A corner given twice.
+  EXPECT_EQ(where({Vec2(0, 0), Vec2(20, 0), Vec2(20, 0), Vec2(20, 20), Vec2(0, 20)}), "envelope.polygon");
+  EXPECT_EQ(where({Vec2(0, 0), Vec2(10, 0), Vec2(20, 0), Vec2(20, 20), Vec2(0, 20)}), "");
+  // Clockwise is the same region: accepted.
+  EXPECT_EQ(where({Vec2(0, 0), Vec2(0, 20), Vec2(20, 20), Vec2(20, 0)}), "");
+  EXPECT_DOUBLE_EQ(s.area(), 400.0);
+}
+
 }  // namespace
 }  // namespace corbel::growth
