@@ -16,13 +16,20 @@ std::string Shortcut::text() const {
   if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) return s + char('0' + (key - GLFW_KEY_0));
   if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F12) return s + "F" + std::to_string(key - GLFW_KEY_F1 + 1);
   switch (key) {
-    case GLFW_KEY_DELETE: return s + "Delete";
-    case GLFW_KEY_HOME: return s + "Home";
-    case GLFW_KEY_KP_1: return s + "Num1";
-    case GLFW_KEY_KP_3: return s + "Num3";
-    case GLFW_KEY_KP_5: return s + "Num5";
-    case GLFW_KEY_KP_7: return s + "Num7";
-    default: return s + "Key" + std::to_string(key);
+    case GLFW_KEY_DELETE:
+      return s + "Delete";
+    case GLFW_KEY_HOME:
+      return s + "Home";
+    case GLFW_KEY_KP_1:
+      return s + "Num1";
+    case GLFW_KEY_KP_3:
+      return s + "Num3";
+    case GLFW_KEY_KP_5:
+      return s + "Num5";
+    case GLFW_KEY_KP_7:
+      return s + "Num7";
+    default:
+      return s + "Key" + std::to_string(key);
   }
 }
 

@@ -9,7 +9,7 @@
 namespace corbel::editor {
 
 struct Shortcut {
-  int key = 0;       // GLFW key code, 0 = none
+  int key = 0;  // GLFW key code, 0 = none
   bool ctrl = false;
   bool shift = false;
   bool alt = false;

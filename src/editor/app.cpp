@@ -8,10 +8,10 @@
 #include "extrude/kernel.h"
 #include "growth/kernel.h"
 #include "kifs/kernel.h"
-#include "render/kifs_layer.h"
-#include "statics/kernel.h"
 #include "render/gl.h"
 #include "render/image.h"
+#include "render/kifs_layer.h"
+#include "statics/kernel.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -31,7 +31,7 @@ namespace {
 
 constexpr float kLeftPanelWidth = 320.0f;
 constexpr float kStatusBarHeight = 118.0f;
-constexpr float kPaneWidth = 460.0f;  // the plan and profile panes, right of the 3D view
+constexpr float kPaneWidth = 460.0f;          // the plan and profile panes, right of the 3D view
 constexpr float kGrowthPanelHeight = 470.0f;  // over the form completion panel
 
 std::string stateDirOr(const std::string& dir) { return dir.empty() ? defaultStateDir() : dir; }
@@ -75,8 +75,10 @@ App::App(GLFWwindow* window, EditorOptions options)
     if (!options_.scriptShots.empty()) std::filesystem::create_directories(options_.scriptShots);
   }
   if (!options_.select.empty()) {
-    if (const DocObject* o = history_.current().findByName(options_.select)) selected_ = o->id;
-    else log("--select: the project has no object named \"" + options_.select + "\"", true);
+    if (const DocObject* o = history_.current().findByName(options_.select))
+      selected_ = o->id;
+    else
+      log("--select: the project has no object named \"" + options_.select + "\"", true);
   }
   syncScene(true);
   frameAll();
@@ -97,13 +99,16 @@ void App::commit(Document doc, const std::string& label, const std::string& merg
 }
 
 bool App::scripted() const {
-  return !scriptLines_.empty() || !options_.actions.empty() || options_.quitAfterFrames > 0 || !options_.screenshot.empty();
+  return !scriptLines_.empty() || !options_.actions.empty() || options_.quitAfterFrames > 0 ||
+         !options_.screenshot.empty();
 }
 
 void App::syncScene(bool wait) {
   if (selected_ && !history_.current().find(*selected_)) selected_.reset();
-  if (wait || scripted()) live_.settle(history_.current(), history_.stateId(), scene_);
-  else if (!live_.update(history_.current(), history_.stateId(), scene_)) return;
+  if (wait || scripted())
+    live_.settle(history_.current(), history_.stateId(), scene_);
+  else if (!live_.update(history_.current(), history_.stateId(), scene_))
+    return;
   // Kernel messages go to the log once per change; a failed object keeps its last good shell.
   for (const auto& [id, st] : sync_.status()) {
     const DocObject* o = history_.current().find(id);
@@ -191,8 +196,10 @@ bool App::saveTo(const std::string& path) {
 }
 
 void App::save() {
-  if (path_.empty()) saveAs();
-  else saveTo(path_);
+  if (path_.empty())
+    saveAs();
+  else
+    saveTo(path_);
 }
 
 void App::saveAs() {
@@ -201,8 +208,8 @@ void App::saveAs() {
 }
 
 void App::exportScene() {
-  std::string start = path_.empty() ? std::string("scene.glb")
-                                    : std::filesystem::path(path_).replace_extension(".glb").string();
+  std::string start =
+      path_.empty() ? std::string("scene.glb") : std::filesystem::path(path_).replace_extension(".glb").string();
   fileDialog_.open(FileDialog::Mode::Save, "Export scene", {".glb", ".obj", ".ply", ".off"}, start,
                    [this](const std::string& p) {
                      auto snapshot = std::make_shared<Scene>(scene_);
@@ -244,7 +251,9 @@ void App::checkRecovery() {
   if (!problem.empty()) log("A recovery file exists but cannot be read: " + problem, true);
   if (!found) return;
   switch (options_.recover) {
-    case EditorOptions::Recover::No: recovery_.discard(); break;
+    case EditorOptions::Recover::No:
+      recovery_.discard();
+      break;
     case EditorOptions::Recover::Yes:
       history_.reset(Document{});
       commit(found->document, "Recover unsaved work");
@@ -253,7 +262,9 @@ void App::checkRecovery() {
       frameAll();
       log("Recovered unsaved work from " + found->savedAt);
       break;
-    case EditorOptions::Recover::Ask: recoveryOffer_ = std::move(found); break;
+    case EditorOptions::Recover::Ask:
+      recoveryOffer_ = std::move(found);
+      break;
   }
 }
 
@@ -276,8 +287,10 @@ void App::pollJob() {
   auto done = std::move(jobDone_);
   try {
     job->rethrow();
-    if (job->progress().cancelled()) log(job->title() + ": cancelled");
-    else if (done) done();
+    if (job->progress().cancelled())
+      log(job->title() + ": cancelled");
+    else if (done)
+      done();
   } catch (const Cancelled&) {
     log(job->title() + ": cancelled");
   } catch (const std::exception& e) {
@@ -295,41 +308,86 @@ void App::registerActions() {
   add({"file.new", "File", "New", "Start an empty project.", {GLFW_KEY_N, true}, false, [this] { newDocument(); }});
   add({"file.open", "File", "Open…", "Open a project file (.corbel).", {GLFW_KEY_O, true}, false, [this] {
          guardUnsaved([this] {
-           fileDialog_.open(FileDialog::Mode::Open, "Open project", {".corbel"}, path_,
-                            [this](const std::string& p) {
-                              // The unsaved-changes question was already answered.
-                              history_.markSaved();
-                              openFile(p);
-                            });
+           fileDialog_.open(FileDialog::Mode::Open, "Open project", {".corbel"}, path_, [this](const std::string& p) {
+             // The unsaved-changes question was already answered.
+             history_.markSaved();
+             openFile(p);
+           });
          });
        }});
-  add({"file.save", "File", "Save", "Save the project (atomic: the old file stays intact until the new one is complete).",
-       {GLFW_KEY_S, true}, false, [this] { save(); }});
-  add({"file.save_as", "File", "Save As…", "Save the project under a new name.", {GLFW_KEY_S, true, true}, false,
+  add({"file.save",
+       "File",
+       "Save",
+       "Save the project (atomic: the old file stays intact until the new one is complete).",
+       {GLFW_KEY_S, true},
+       false,
+       [this] { save(); }});
+  add({"file.save_as",
+       "File",
+       "Save As…",
+       "Save the project under a new name.",
+       {GLFW_KEY_S, true, true},
+       false,
        [this] { saveAs(); }});
-  add({"file.export", "File", "Export…", "Export the visible objects to glTF (.glb), OBJ, PLY or OFF.",
-       {GLFW_KEY_E, true}, false, [this] { exportScene(); }, {}, {}, true});
-  add({"file.quit", "File", "Quit", "Close corbel (asks before discarding changes).", {GLFW_KEY_Q, true}, false,
-       [this] { guardUnsaved([this] { quitRequested_ = true; }); }, {}, {}, true});
+  add({"file.export",
+       "File",
+       "Export…",
+       "Export the visible objects to glTF (.glb), OBJ, PLY or OFF.",
+       {GLFW_KEY_E, true},
+       false,
+       [this] { exportScene(); },
+       {},
+       {},
+       true});
+  add({"file.quit",
+       "File",
+       "Quit",
+       "Close corbel (asks before discarding changes).",
+       {GLFW_KEY_Q, true},
+       false,
+       [this] { guardUnsaved([this] { quitRequested_ = true; }); },
+       {},
+       {},
+       true});
 
-  add({"edit.undo", "Edit", "Undo", "Undo the last change to the document.", {GLFW_KEY_Z, true}, false,
+  add({"edit.undo",
+       "Edit",
+       "Undo",
+       "Undo the last change to the document.",
+       {GLFW_KEY_Z, true},
+       false,
        [this] {
          if (history_.undo()) log("Undo");
        },
        [this] { return history_.canUndo(); }});
-  add({"edit.redo", "Edit", "Redo", "Redo the change undone last.", {GLFW_KEY_Z, true, true}, false,
+  add({"edit.redo",
+       "Edit",
+       "Redo",
+       "Redo the change undone last.",
+       {GLFW_KEY_Z, true, true},
+       false,
        [this] {
          if (history_.redo()) log("Redo");
        },
        [this] { return history_.canRedo(); }});
-  add({"edit.redo_y", "", "Redo", "Redo the change undone last (Ctrl+Y, as on Windows).", {GLFW_KEY_Y, true}, false,
+  add({"edit.redo_y",
+       "",
+       "Redo",
+       "Redo the change undone last (Ctrl+Y, as on Windows).",
+       {GLFW_KEY_Y, true},
+       false,
        [this] {
          if (history_.redo()) log("Redo");
        },
        [this] { return history_.canRedo(); }});
 
-  add({"object.add_box", "Object", "Add Box", "Add a mass-model box next to the existing objects.", {GLFW_KEY_B, true},
-       true, [this, doc] {
+  add({"object.add_box",
+       "Object",
+       "Add Box",
+       "Add a mass-model box next to the existing objects.",
+       {GLFW_KEY_B, true},
+       true,
+       [this, doc] {
          Document d = doc();
          BoxSpec b;
          BBox box = scene_.bounds();
@@ -338,10 +396,14 @@ void App::registerActions() {
          commit(std::move(d), "Add box");
          selected_ = id;
        }});
-  add({"object.add_extrusion", "Object", "Add Extrusion",
+  add({"object.add_extrusion",
+       "Object",
+       "Add Extrusion",
        "Add a procedural extrusion (a 12 × 8 m plan on the hip profile) next to the existing objects; edit it in the "
        "plan and profile panes.",
-       {GLFW_KEY_X, true, true}, false, [this, doc] {
+       {GLFW_KEY_X, true, true},
+       false,
+       [this, doc] {
          Document d = doc();
          ExtrusionSpec e;
          e.profiles.push_back(extrude::edit::profileLibrary()[1]);
@@ -354,8 +416,12 @@ void App::registerActions() {
          selected_ = id;
          if (box.empty()) firstFrame_ = true;  // frame the first object of a new scene
        }});
-  add({"object.add_kifs", "Object", "Add KIFS Building",
-       "Add a KIFS fractal building (McGraw; the box preset) at the origin; edit it in the KIFS panel.", {}, true,
+  add({"object.add_kifs",
+       "Object",
+       "Add KIFS Building",
+       "Add a KIFS fractal building (McGraw; the box preset) at the origin; edit it in the KIFS panel.",
+       {},
+       true,
        [this, doc] {
          Document d = doc();
          const ObjectId id = d.add("KIFS building", kifs::specOf(kifs::preset("box"), "box"));
@@ -363,10 +429,14 @@ void App::registerActions() {
          selected_ = id;
          firstFrame_ = true;
        }});
-  add({"object.add_town", "Object", "Add Town...",
+  add({"object.add_town",
+       "Object",
+       "Add Town...",
        "Add a town (Kelly & Wonka Sec. 3.7): choose a GeoJSON footprint file; it is styled with "
        "assets/styles/mixed.json until another style is picked in the Town panel.",
-       {}, false, [this, doc] {
+       {},
+       false,
+       [this, doc] {
          fileDialog_.open(FileDialog::Mode::Open, "Open footprints", {".geojson", ".json"}, path_,
                           [this, doc](const std::string& path) {
                             Document d = doc();
@@ -379,7 +449,12 @@ void App::registerActions() {
                             firstFrame_ = true;
                           });
        }});
-  add({"object.duplicate", "Object", "Duplicate", "Copy the selected object beside itself.", {GLFW_KEY_D, true}, true,
+  add({"object.duplicate",
+       "Object",
+       "Duplicate",
+       "Copy the selected object beside itself.",
+       {GLFW_KEY_D, true},
+       true,
        [this, doc] {
          Document d = doc();
          const DocObject* o = d.find(*selected_);
@@ -395,7 +470,12 @@ void App::registerActions() {
          selected_ = id;
        },
        [this] { return selected_.has_value(); }});
-  add({"object.delete", "Object", "Delete", "Delete the selected object.", {GLFW_KEY_DELETE}, true,
+  add({"object.delete",
+       "Object",
+       "Delete",
+       "Delete the selected object.",
+       {GLFW_KEY_DELETE},
+       true,
        [this, doc] {
          Document d = doc();
          const std::string name = d.find(*selected_)->name;
@@ -411,31 +491,82 @@ void App::registerActions() {
       frameAll();
     };
   };
-  add({"view.frame", "View", "Frame All", "Fit the visible objects in the view.", {GLFW_KEY_HOME}, false,
-       [this] { frameAll(); }});
-  add({"view.perspective", "View", "Perspective", "Look from above at an angle.", {GLFW_KEY_KP_5}, false,
-       preset(render::CameraPreset::Perspective), {}, {}, true});
+  add({"view.frame", "View", "Frame All", "Fit the visible objects in the view.", {GLFW_KEY_HOME}, false, [this] {
+         frameAll();
+       }});
+  add({"view.perspective",
+       "View",
+       "Perspective",
+       "Look from above at an angle.",
+       {GLFW_KEY_KP_5},
+       false,
+       preset(render::CameraPreset::Perspective),
+       {},
+       {},
+       true});
   add({"view.front", "View", "Front", "Look along +Y.", {GLFW_KEY_KP_1}, false, preset(render::CameraPreset::Front)});
   add({"view.right", "View", "Right", "Look along −X.", {GLFW_KEY_KP_3}, false, preset(render::CameraPreset::Right)});
   add({"view.top", "View", "Top", "Look straight down.", {GLFW_KEY_KP_7}, false, preset(render::CameraPreset::Top)});
-  add({"view.wireframe", "View", "Wireframe", "Draw edges only.", {GLFW_KEY_W, false, false, true}, false,
-       [this] { settings_.wireframe = !settings_.wireframe; }, {}, [this] { return settings_.wireframe; }, true});
-  add({"view.edges", "View", "Edges", "Outline every face.", {}, false, [this] { settings_.edges = !settings_.edges; },
-       {}, [this] { return settings_.edges; }});
-  add({"view.grid", "View", "Ground Grid", "Show the ground grid at z = 0.", {}, false,
-       [this] { settings_.grid = !settings_.grid; }, {}, [this] { return settings_.grid; }});
+  add({"view.wireframe",
+       "View",
+       "Wireframe",
+       "Draw edges only.",
+       {GLFW_KEY_W, false, false, true},
+       false,
+       [this] { settings_.wireframe = !settings_.wireframe; },
+       {},
+       [this] { return settings_.wireframe; },
+       true});
+  add({"view.edges",
+       "View",
+       "Edges",
+       "Outline every face.",
+       {},
+       false,
+       [this] { settings_.edges = !settings_.edges; },
+       {},
+       [this] { return settings_.edges; }});
+  add({"view.grid",
+       "View",
+       "Ground Grid",
+       "Show the ground grid at z = 0.",
+       {},
+       false,
+       [this] { settings_.grid = !settings_.grid; },
+       {},
+       [this] { return settings_.grid; }});
   // Shadows from a movable sun (Ng, Fig. 8.5); the growth panel's Grow tab has the sun's sliders.
-  add({"view.shadows", "View", "Shadows", "Cast shadows from the sun onto the model and the ground.", {}, false,
-       [this] { settings_.shadows = !settings_.shadows; }, {}, [this] { return settings_.shadows; }, true});
-  add({"view.sun_later", "View", "Sun Later", "Move the sun 15° on (its azimuth, towards +Y).", {}, false,
-       [this] { sunAzimuth_ = std::remainder(sunAzimuth_ + 15.0, 360.0); }});
-  add({"view.sun_earlier", "View", "Sun Earlier", "Move the sun 15° back.", {}, false,
-       [this] { sunAzimuth_ = std::remainder(sunAzimuth_ - 15.0, 360.0); }});
-  add({"view.sun_lower", "View", "Sun Lower", "Lower the sun by 10° (at least 5° above the ground).", {}, false,
+  add({"view.shadows",
+       "View",
+       "Shadows",
+       "Cast shadows from the sun onto the model and the ground.",
+       {},
+       false,
+       [this] { settings_.shadows = !settings_.shadows; },
+       {},
+       [this] { return settings_.shadows; },
+       true});
+  add({"view.sun_later", "View", "Sun Later", "Move the sun 15° on (its azimuth, towards +Y).", {}, false, [this] {
+         sunAzimuth_ = std::remainder(sunAzimuth_ + 15.0, 360.0);
+       }});
+  add({"view.sun_earlier", "View", "Sun Earlier", "Move the sun 15° back.", {}, false, [this] {
+         sunAzimuth_ = std::remainder(sunAzimuth_ - 15.0, 360.0);
+       }});
+  add({"view.sun_lower",
+       "View",
+       "Sun Lower",
+       "Lower the sun by 10° (at least 5° above the ground).",
+       {},
+       false,
        [this] { sunElevation_ = std::max(5.0, sunElevation_ - 10.0); }});
 
-  add({"tools.validate", "Tools", "Validate All Objects",
-       "Check every object's shell (closed, 2-manifold, Euler characteristic), in the background.", {}, false, [this] {
+  add({"tools.validate",
+       "Tools",
+       "Validate All Objects",
+       "Check every object's shell (closed, 2-manifold, Euler characteristic), in the background.",
+       {},
+       false,
+       [this] {
          auto snapshot = std::make_shared<Scene>(scene_);
          auto lines = std::make_shared<std::vector<std::string>>();
          startJob(
@@ -446,8 +577,8 @@ void App::registerActions() {
                for (const auto& [id, info] : snapshot->objects()) {
                  if (progress.cancelled()) throw Cancelled();
                  const ValidityReport r = snapshot->validate(id);
-                 std::string line = info.name + ": " + (r.closedManifold() ? "closed 2-manifold" : "PROBLEMS") +
-                                    ", " + std::to_string(r.faces) + " faces, Euler " + std::to_string(r.euler);
+                 std::string line = info.name + ": " + (r.closedManifold() ? "closed 2-manifold" : "PROBLEMS") + ", " +
+                                    std::to_string(r.faces) + " faces, Euler " + std::to_string(r.euler);
                  for (const auto& p : r.problems()) line += "; " + p;
                  lines->push_back(line);
                  progress.report(double(++i) / n, info.name);
@@ -457,108 +588,283 @@ void App::registerActions() {
                for (const auto& l : *lines) log(l, l.find("PROBLEMS") != std::string::npos);
              });
        }});
-  add({"statics.make_stand", "Statics", "Make It Stand",
+  add({"statics.make_stand",
+       "Statics",
+       "Make It Stand",
        "Search the selected masonry object's free parameters, within their bounds, for a structure that stands "
        "(in the background; one undo step).",
-       {GLFW_KEY_M, true, true}, true, [this] { statics_.makeItStand(staticsHost()); },
+       {GLFW_KEY_M, true, true},
+       true,
+       [this] { statics_.makeItStand(staticsHost()); },
        [this] { return selectedMasonry() && !statics_.searching(); }});
-  add({"statics.cancel", "Statics", "Cancel Search", "Stop the running search; nothing changes.", {}, false,
-       [this] { statics_.cancelSearch(); }, [this] { return statics_.searching(); }});
+  add({"statics.cancel",
+       "Statics",
+       "Cancel Search",
+       "Stop the running search; nothing changes.",
+       {},
+       false,
+       [this] { statics_.cancelSearch(); },
+       [this] { return statics_.searching(); }});
   // The collapse simulation (Sec. 5): never a Document change, so none is undoable.
   auto masonrySelected = [this] { return selectedMasonry() != nullptr; };
-  add({"statics.sim_play", "Statics", "Simulate: Play / Pause",
+  add({"statics.sim_play",
+       "Statics",
+       "Simulate: Play / Pause",
        "Play the selected masonry object's collapse simulation in real time (as fast as the frame budget "
        "allows); again to pause.",
-       {}, false, [this] { statics_.simulatePlay(staticsHost()); }, masonrySelected,
-       [this] { return statics_.simulationPlaying(); }, true});
-  add({"statics.sim_step", "Statics", "Simulate: Step", "Advance the simulation by one fixed step (1/240 s).", {},
-       false, [this] { statics_.simulateStep(staticsHost()); }, masonrySelected});
-  add({"statics.simulate", "Statics", "Simulate: Run 1 s",
-       "Advance the simulation by one simulated second at once (240 steps; the window waits for it).", {}, false,
-       [this] { statics_.simulateStep(staticsHost(), 240); }, masonrySelected});
-  add({"statics.sim_reset", "Statics", "Simulate: Reset", "Return the simulation to the design state, paused.", {},
-       false, [this] { statics_.simulateReset(staticsHost()); }, masonrySelected});
-  add({"statics.sim_shake", "Statics", "Simulate: Shake",
-       "Shake the ground as in the paper (4 m/s within 1/60 s on a 10 m model, scaled to this one).", {}, false,
-       [this] { statics_.simulateShake(staticsHost()); }, masonrySelected});
-  add({"statics.sim_remove", "Statics", "Simulate: Remove Block",
-       "Take the block chosen in the Simulate section (at first the top one) out of the simulation.", {}, false,
-       [this] { statics_.simulateRemove(staticsHost()); }, masonrySelected});
-  add({"statics.landscape_grid", "Statics", "Energy Landscape over Two Parameters",
+       {},
+       false,
+       [this] { statics_.simulatePlay(staticsHost()); },
+       masonrySelected,
+       [this] { return statics_.simulationPlaying(); },
+       true});
+  add({"statics.sim_step",
+       "Statics",
+       "Simulate: Step",
+       "Advance the simulation by one fixed step (1/240 s).",
+       {},
+       false,
+       [this] { statics_.simulateStep(staticsHost()); },
+       masonrySelected});
+  add({"statics.simulate",
+       "Statics",
+       "Simulate: Run 1 s",
+       "Advance the simulation by one simulated second at once (240 steps; the window waits for it).",
+       {},
+       false,
+       [this] { statics_.simulateStep(staticsHost(), 240); },
+       masonrySelected});
+  add({"statics.sim_reset",
+       "Statics",
+       "Simulate: Reset",
+       "Return the simulation to the design state, paused.",
+       {},
+       false,
+       [this] { statics_.simulateReset(staticsHost()); },
+       masonrySelected});
+  add({"statics.sim_shake",
+       "Statics",
+       "Simulate: Shake",
+       "Shake the ground as in the paper (4 m/s within 1/60 s on a 10 m model, scaled to this one).",
+       {},
+       false,
+       [this] { statics_.simulateShake(staticsHost()); },
+       masonrySelected});
+  add({"statics.sim_remove",
+       "Statics",
+       "Simulate: Remove Block",
+       "Take the block chosen in the Simulate section (at first the top one) out of the simulation.",
+       {},
+       false,
+       [this] { statics_.simulateRemove(staticsHost()); },
+       masonrySelected});
+  add({"statics.landscape_grid",
+       "Statics",
+       "Energy Landscape over Two Parameters",
        "Sample y/W² over a grid of the selected masonry object's first two free parameters (Fig. 8) in the "
        "statics panel; again for the landscape over one parameter.",
-       {}, false, [this] { statics_.toggleLandscapeGrid(staticsHost()); }, masonrySelected,
+       {},
+       false,
+       [this] { statics_.toggleLandscapeGrid(staticsHost()); },
+       masonrySelected,
        [this] { return statics_.landscapeGridChosen(); }});
-  add({"statics.sim_close", "Statics", "Simulate: Close", "Stop simulating and show the design again.", {}, false,
-       [this] { statics_.closeSimulation(); }, [this] { return statics_.simulating(); }});
+  add({"statics.sim_close",
+       "Statics",
+       "Simulate: Close",
+       "Stop simulating and show the design again.",
+       {},
+       false,
+       [this] { statics_.closeSimulation(); },
+       [this] { return statics_.simulating(); }});
   auto growthSelected = [this] {
     const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
     return o && std::holds_alternative<GrowthSpec>(o->spec);
   };
-  add({"growth.step", "Growth", "Step", "Grow the selected site one step more (one undo step).", {}, true,
-       [this] { growthPanel_.step(growthHost()); }, growthSelected});
-  add({"growth.run", "Growth", "Run / Pause",
-       "Grow the selected site step by step as the view catches up, until every unit stops; again to pause.", {},
-       true, [this] { growthPanel_.toggleRun(growthHost()); }, growthSelected,
+  add({"growth.step",
+       "Growth",
+       "Step",
+       "Grow the selected site one step more (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.step(growthHost()); },
+       growthSelected});
+  add({"growth.run",
+       "Growth",
+       "Run / Pause",
+       "Grow the selected site step by step as the view catches up, until every unit stops; again to pause.",
+       {},
+       true,
+       [this] { growthPanel_.toggleRun(growthHost()); },
+       growthSelected,
        [this] { return growthPanel_.running(); }});
   // The site editor, the slice, the statistics and the view maps of the selected growth site.
-  add({"growth.add_core", "Growth", "Add Core",
-       "Add a 3 x 3 m core at the first free place of the selected site (one undo step).", {}, true,
-       [this] { growthPanel_.add(growthHost(), SiteItem::Core); }, growthSelected, {}, true});
-  add({"growth.add_circulation", "Growth", "Add Circulation",
-       "Add a 3 x 3 m landing, one storey high, on the Site tab's plan storey (one undo step).", {}, true,
-       [this] { growthPanel_.add(growthHost(), SiteItem::Circulation); }, growthSelected});
-  add({"growth.add_seed", "Growth", "Add Seed",
-       "Add a 3 x 3 m seed of 60 m² at the first free, supported place on the plan storey (one undo step).", {},
-       true, [this] { growthPanel_.add(growthHost(), SiteItem::Seed); }, growthSelected});
-  add({"growth.delete", "Growth", "Delete Site Entry", "Delete the core, circulation or seed picked in the Site tab.",
-       {}, true, [this] { growthPanel_.removeSelected(growthHost()); },
+  add({"growth.add_core",
+       "Growth",
+       "Add Core",
+       "Add a 3 x 3 m core at the first free place of the selected site (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Core); },
+       growthSelected,
+       {},
+       true});
+  add({"growth.add_circulation",
+       "Growth",
+       "Add Circulation",
+       "Add a 3 x 3 m landing, one storey high, on the Site tab's plan storey (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Circulation); },
+       growthSelected});
+  add({"growth.add_seed",
+       "Growth",
+       "Add Seed",
+       "Add a 3 x 3 m seed of 60 m² at the first free, supported place on the plan storey (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Seed); },
+       growthSelected});
+  add({"growth.delete",
+       "Growth",
+       "Delete Site Entry",
+       "Delete the core, circulation or seed picked in the Site tab.",
+       {},
+       true,
+       [this] { growthPanel_.removeSelected(growthHost()); },
        [this, growthSelected] { return growthSelected() && growthPanel_.hasSelection(); }});
-  add({"growth.add_storey", "Growth", "Add a Storey",
-       "Give the selected site one storey more, of the same height (one undo step).", {}, true,
-       [this] { growthPanel_.addStorey(growthHost()); }, growthSelected});
-  add({"growth.widen_site", "Growth", "Widen the Site by 5 m",
-       "Make the selected site's box envelope 5 m longer in x (one undo step).", {}, true,
-       [this] { growthPanel_.widenSite(growthHost(), 5.0); }, growthSelected});
-  add({"growth.site", "Growth", "Show the Site", "Show the Site tab: cores, circulation and seeds.", {}, false,
-       [this] { growthPanel_.showTab(1); }, growthSelected});
-  add({"growth.slice_down", "Growth", "Slice a Storey Lower",
-       "Hide one storey more of the selected site in the 3D view (Fig. 8.3; a view setting).", {}, false,
-       [this] { growthPanel_.sliceStorey(growthHost(), -1); }, growthSelected, {}, true});
-  add({"growth.slice_up", "Growth", "Slice a Storey Higher", "Show one storey more; past the top, no slice.", {},
-       false, [this] { growthPanel_.sliceStorey(growthHost(), 1); }, growthSelected});
-  add({"growth.statistics", "Growth", "Statistics", "Show Table 8.1 for the model as grown.", {}, false,
-       [this] { growthPanel_.showTab(2); }, growthSelected});
-  add({"growth.view_maps", "Growth", "View Maps",
-       "Show the four view maps (Sec. 5.2) of the model as grown, unit ids in false colour.", {}, false,
-       [this] { growthPanel_.toggleViewMaps(); }, growthSelected, [this] { return growthPanel_.viewMapsShown(); }});
+  add({"growth.add_storey",
+       "Growth",
+       "Add a Storey",
+       "Give the selected site one storey more, of the same height (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.addStorey(growthHost()); },
+       growthSelected});
+  add({"growth.widen_site",
+       "Growth",
+       "Widen the Site by 5 m",
+       "Make the selected site's box envelope 5 m longer in x (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.widenSite(growthHost(), 5.0); },
+       growthSelected});
+  add({"growth.site",
+       "Growth",
+       "Show the Site",
+       "Show the Site tab: cores, circulation and seeds.",
+       {},
+       false,
+       [this] { growthPanel_.showTab(1); },
+       growthSelected});
+  add({"growth.slice_down",
+       "Growth",
+       "Slice a Storey Lower",
+       "Hide one storey more of the selected site in the 3D view (Fig. 8.3; a view setting).",
+       {},
+       false,
+       [this] { growthPanel_.sliceStorey(growthHost(), -1); },
+       growthSelected,
+       {},
+       true});
+  add({"growth.slice_up",
+       "Growth",
+       "Slice a Storey Higher",
+       "Show one storey more; past the top, no slice.",
+       {},
+       false,
+       [this] { growthPanel_.sliceStorey(growthHost(), 1); },
+       growthSelected});
+  add({"growth.statistics",
+       "Growth",
+       "Statistics",
+       "Show Table 8.1 for the model as grown.",
+       {},
+       false,
+       [this] { growthPanel_.showTab(2); },
+       growthSelected});
+  add({"growth.view_maps",
+       "Growth",
+       "View Maps",
+       "Show the four view maps (Sec. 5.2) of the model as grown, unit ids in false colour.",
+       {},
+       false,
+       [this] { growthPanel_.toggleViewMaps(); },
+       growthSelected,
+       [this] { return growthPanel_.viewMapsShown(); }});
   // Form completion (Ch. 7, Fig. 8.6) in a region of the selected growth site.
-  add({"completion.seeds", "Growth", "Completion: Seeds From the Model",
+  add({"completion.seeds",
+       "Growth",
+       "Completion: Seeds From the Model",
        "Grow the selected site's model (in the background) and take the entrances its units open onto the "
        "completion region as the seeds.",
-       {}, false, [this] { completion_.takeSeeds(completionHost()); }, growthSelected});
-  add({"completion.generate", "Growth", "Completion: Generate Forms",
-       "Generate forms of the chosen complexity range from the seeds (in the background, with Cancel).", {}, false,
-       [this] { completion_.generate(completionHost()); }, [this, growthSelected] { return growthSelected() && !job_; }});
-  add({"completion.fit", "Growth", "Completion: Fit to Region",
-       "Fit the picked form into the completion region and size it (Fig. 8.6).", {}, false,
-       [this] { completion_.fit(completionHost()); }, [this, growthSelected] { return growthSelected() && completion_.canFit(); }});
-  add({"completion.extrude", "Growth", "Completion: Extrude to Units",
-       "Add the fitted form's units to the model as unit objects (one undo step).", {}, true,
+       {},
+       false,
+       [this] { completion_.takeSeeds(completionHost()); },
+       growthSelected});
+  add({"completion.generate",
+       "Growth",
+       "Completion: Generate Forms",
+       "Generate forms of the chosen complexity range from the seeds (in the background, with Cancel).",
+       {},
+       false,
+       [this] { completion_.generate(completionHost()); },
+       [this, growthSelected] { return growthSelected() && !job_; }});
+  add({"completion.fit",
+       "Growth",
+       "Completion: Fit to Region",
+       "Fit the picked form into the completion region and size it (Fig. 8.6).",
+       {},
+       false,
+       [this] { completion_.fit(completionHost()); },
+       [this, growthSelected] { return growthSelected() && completion_.canFit(); }});
+  add({"completion.extrude",
+       "Growth",
+       "Completion: Extrude to Units",
+       "Add the fitted form's units to the model as unit objects (one undo step).",
+       {},
+       true,
        [this] { completion_.extrude(completionHost()); },
        [this, growthSelected] { return growthSelected() && completion_.canExtrude(); }});
   // The Town panel (Kelly & Wonka Sec. 3.7): its building list and override, for scripts.
   const auto townSelected = [this] { return selectedTown() != nullptr; };
-  add({"town.next", "Town", "Select Next Building", "Select the next building of the selected town.", {}, false,
-       [this] { townPanel_.selectNext(townHost()); }, townSelected});
-  add({"town.next_type", "Town", "Override: Next Type",
-       "Give the selected building the style's next building type (an undoable override).", {}, false,
-       [this] { townPanel_.overrideNextType(townHost()); }, townSelected});
-  add({"town.add_street", "Town", "Add Street", "Add a street along the selected town's south side (Fig. 26).", {},
-       false, [this] { townPanel_.addStreet(townHost()); }, townSelected});
-  add({"town.bend_street", "Town", "Bend Street", "Move the chosen street's middle point 10 m south.", {}, false,
-       [this] { townPanel_.bendStreet(townHost()); }, townSelected});
-  add({"help.shortcuts", "Help", "Keyboard Shortcuts", "List every command and its shortcut.", {GLFW_KEY_F1}, false,
+  add({"town.next",
+       "Town",
+       "Select Next Building",
+       "Select the next building of the selected town.",
+       {},
+       false,
+       [this] { townPanel_.selectNext(townHost()); },
+       townSelected});
+  add({"town.next_type",
+       "Town",
+       "Override: Next Type",
+       "Give the selected building the style's next building type (an undoable override).",
+       {},
+       false,
+       [this] { townPanel_.overrideNextType(townHost()); },
+       townSelected});
+  add({"town.add_street",
+       "Town",
+       "Add Street",
+       "Add a street along the selected town's south side (Fig. 26).",
+       {},
+       false,
+       [this] { townPanel_.addStreet(townHost()); },
+       townSelected});
+  add({"town.bend_street",
+       "Town",
+       "Bend Street",
+       "Move the chosen street's middle point 10 m south.",
+       {},
+       false,
+       [this] { townPanel_.bendStreet(townHost()); },
+       townSelected});
+  add({"help.shortcuts",
+       "Help",
+       "Keyboard Shortcuts",
+       "List every command and its shortcut.",
+       {GLFW_KEY_F1},
+       false,
        [this] { showHelp_ = true; }});
 }
 
@@ -629,68 +935,70 @@ void App::drawObjectProperties(const DocObject& object) {
   std::snprintf(name, sizeof name, "%s", o->name.c_str());
   if (ImGui::InputText("Name", name, sizeof name, ImGuiInputTextFlags_EnterReturnsTrue)) {
     std::string n = name;
-    if (n.empty()) log("An object needs a name.", true);
-    else if (n != o->name && d.findByName(n)) log("Another object is already called \"" + n + "\".", true);
+    if (n.empty())
+      log("An object needs a name.", true);
+    else if (n != o->name && d.findByName(n))
+      log("Another object is already called \"" + n + "\".", true);
     else if (n != o->name) {
       o->name = n;
       edited("name", "name");
     }
   }
   if (auto* bp = std::get_if<BoxSpec>(&o->spec)) {
-        BoxSpec& b = *bp;
-        ImGui::Separator();
-  ImGui::TextDisabled("Box");
-        float origin[3] = {float(b.origin[0]), float(b.origin[1]), float(b.origin[2])};
-        if (ImGui::DragFloat3("Origin (m)", origin, 0.1f, -1e5f, 1e5f, "%.2f")) {
-          b.origin = Vec3(origin[0], origin[1], origin[2]);
-          edited("origin", "origin");
+    BoxSpec& b = *bp;
+    ImGui::Separator();
+    ImGui::TextDisabled("Box");
+    float origin[3] = {float(b.origin[0]), float(b.origin[1]), float(b.origin[2])};
+    if (ImGui::DragFloat3("Origin (m)", origin, 0.1f, -1e5f, 1e5f, "%.2f")) {
+      b.origin = Vec3(origin[0], origin[1], origin[2]);
+      edited("origin", "origin");
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+    float size[3] = {float(b.size[0]), float(b.size[1]), float(b.size[2])};
+    if (ImGui::DragFloat3("Size (m)", size, 0.05f, 0.1f, 1e4f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+      b.size = Vec3(size[0], size[1], size[2]);
+      edited("size", "size");
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+    float rot = float(b.rotation_deg);
+    if (ImGui::DragFloat("Rotation (°)", &rot, 0.5f, -360.f, 360.f, "%.1f")) {
+      b.rotation_deg = rot;
+      edited("rotation", "rotation");
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+    if (ImGui::BeginCombo("Material", b.material.c_str())) {
+      for (const auto& m : builtinMaterials()) {
+        const Rgb c = m.color;
+        ImGui::ColorButton(("##c" + std::string(m.name)).c_str(), ImVec4(c[0], c[1], c[2], 1),
+                           ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+        ImGui::SameLine();
+        if (ImGui::Selectable(std::string(m.name).c_str(), b.material == m.name)) {
+          b.material = m.name;
+          edited("material", "material");
         }
-        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
-        float size[3] = {float(b.size[0]), float(b.size[1]), float(b.size[2])};
-        if (ImGui::DragFloat3("Size (m)", size, 0.05f, 0.1f, 1e4f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
-          b.size = Vec3(size[0], size[1], size[2]);
-          edited("size", "size");
-        }
-        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
-        float rot = float(b.rotation_deg);
-        if (ImGui::DragFloat("Rotation (°)", &rot, 0.5f, -360.f, 360.f, "%.1f")) {
-          b.rotation_deg = rot;
-          edited("rotation", "rotation");
-        }
-        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
-        if (ImGui::BeginCombo("Material", b.material.c_str())) {
-          for (const auto& m : builtinMaterials()) {
-            const Rgb c = m.color;
-            ImGui::ColorButton(("##c" + std::string(m.name)).c_str(), ImVec4(c[0], c[1], c[2], 1),
-                               ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
-            ImGui::SameLine();
-            if (ImGui::Selectable(std::string(m.name).c_str(), b.material == m.name)) {
-              b.material = m.name;
-              edited("material", "material");
-            }
-          }
-          ImGui::EndCombo();
-        }
-        int rep[2] = {b.repeat_x, b.repeat_y};
-        if (ImGui::DragInt2("Repeat", rep, 0.1f, 1, 100, "%d", ImGuiSliderFlags_AlwaysClamp)) {
-          b.repeat_x = std::max(1, rep[0]);
-          b.repeat_y = std::max(1, rep[1]);
-          edited("repeat", "repeat");
-        }
-        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
-        float spacing[2] = {float(b.spacing_x), float(b.spacing_y)};
-        if (ImGui::DragFloat2("Spacing (m)", spacing, 0.1f, -1e3f, 1e3f, "%.2f")) {
-          b.spacing_x = spacing[0];
-          b.spacing_y = spacing[1];
-          edited("spacing", "spacing");
-        }
-        if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
-        if (changed) {
-          if (auto problem = checkBoxSpec(b)) {
-            log(object.name + ": " + *problem, true);
-            changed = false;
-          }
-        }
+      }
+      ImGui::EndCombo();
+    }
+    int rep[2] = {b.repeat_x, b.repeat_y};
+    if (ImGui::DragInt2("Repeat", rep, 0.1f, 1, 100, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+      b.repeat_x = std::max(1, rep[0]);
+      b.repeat_y = std::max(1, rep[1]);
+      edited("repeat", "repeat");
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+    float spacing[2] = {float(b.spacing_x), float(b.spacing_y)};
+    if (ImGui::DragFloat2("Spacing (m)", spacing, 0.1f, -1e3f, 1e3f, "%.2f")) {
+      b.spacing_x = spacing[0];
+      b.spacing_y = spacing[1];
+      edited("spacing", "spacing");
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
+    if (changed) {
+      if (auto problem = checkBoxSpec(b)) {
+        log(object.name + ": " + *problem, true);
+        changed = false;
+      }
+    }
   } else if (auto* e = std::get_if<ExtrusionSpec>(&o->spec)) {
     ImGui::Separator();
     ImGui::TextDisabled("Procedural extrusion");
@@ -717,8 +1025,8 @@ void App::drawObjectProperties(const DocObject& object) {
       e->priority = priority == 0 ? Priority::MaximiseVolume : Priority::MinimiseVolume;
       edited("ambiguity priority", "priority");
     }
-    for (const Profile& p : e->profiles) ImGui::BulletText("%s: %zu segment%s", p.name.c_str(), p.points.size() - 1,
-                                                            p.points.size() == 2 ? "" : "s");
+    for (const Profile& p : e->profiles)
+      ImGui::BulletText("%s: %zu segment%s", p.name.c_str(), p.points.size() - 1, p.points.size() == 2 ? "" : "s");
   } else if (auto* t = std::get_if<TownSpec>(&o->spec)) {
     ImGui::Separator();
     ImGui::TextDisabled("Town from footprints (Kelly & Wonka Sec. 3.7); edit it in the Town panel");
@@ -811,7 +1119,8 @@ void App::drawStatusBar() {
     // A build longer than a frame runs off the UI thread; the 3D view keeps the last result.
     ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Updating geometry... (the view shows the previous result)");
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("An edit takes longer than a frame to build: it runs in the background and the newest edit wins");
+      ImGui::SetTooltip(
+          "An edit takes longer than a frame to build: it runs in the background and the newest edit wins");
     ImGui::SameLine();
   }
   ImGui::Text("%s%s  |  %zu objects, %zu triangles  |  %.0f fps", path_.empty() ? "(unsaved project)" : path_.c_str(),
@@ -820,8 +1129,10 @@ void App::drawStatusBar() {
   ImGui::Separator();
   ImGui::BeginChild("log");
   for (const LogLine& l : log_) {
-    if (l.error) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", l.text.c_str());
-    else ImGui::TextUnformatted(l.text.c_str());
+    if (l.error)
+      ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", l.text.c_str());
+    else
+      ImGui::TextUnformatted(l.text.c_str());
   }
   if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY() - 4) ImGui::SetScrollHereY(1.0f);
   ImGui::EndChild();
@@ -872,9 +1183,10 @@ void App::drawModals() {
         if (afterUnsavedPrompt_) afterUnsavedPrompt_();
       } else if (path_.empty()) {
         auto then = afterUnsavedPrompt_;
-        fileDialog_.open(FileDialog::Mode::Save, "Save project as", {".corbel"}, "", [this, then](const std::string& p) {
-          if (saveTo(p) && then) then();
-        });
+        fileDialog_.open(FileDialog::Mode::Save, "Save project as", {".corbel"}, "",
+                         [this, then](const std::string& p) {
+                           if (saveTo(p) && then) then();
+                         });
       }
       afterUnsavedPrompt_ = nullptr;
     }
@@ -939,12 +1251,33 @@ void App::handleViewportInput() {
   const ImGuiIO& io = ImGui::GetIO();
   const ImVec2 m = io.MousePos;
   const bool inside = m.x >= vpX_ && m.x < vpX_ + vpW_ && m.y >= vpY_ && m.y < vpY_ + vpH_;
+  // A drag of a growth site's entry or envelope corner (the Site tab shown) holds the mouse
+  // until the button is let go, wherever it is then.
+  const bool growthSite = [&] {
+    const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+    return o && std::holds_alternative<GrowthSpec>(o->spec);
+  }();
+  if (growthPanel_.viewDragging()) {
+    if (!growthSite || !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      growthPanel_.endViewDrag(growthHost());
+    } else if (io.MouseDelta.x != 0 || io.MouseDelta.y != 0) {
+      const auto [origin, dir] = viewRay(m.x, m.y);
+      growthPanel_.viewDrag(growthHost(), origin, dir);
+    }
+    return;
+  }
   if (io.WantCaptureMouse || !inside) return;
+  if (growthSite && growthPanel_.siteShown() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyShift) {
+    const auto [origin, dir] = viewRay(m.x, m.y);
+    if (growthPanel_.beginViewDrag(growthHost(), origin, dir)) return;
+  }
   const ImVec2 d = io.MouseDelta;
   const bool panning = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
                        (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
-  if (panning) camera_.pan(d.x, d.y, static_cast<int>(vpH_));
-  else if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) camera_.orbit(d.x, d.y);
+  if (panning)
+    camera_.pan(d.x, d.y, static_cast<int>(vpH_));
+  else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
+    camera_.orbit(d.x, d.y);
   if (io.MouseWheel != 0) camera_.zoom(io.MouseWheel);
   // A click (no drag) on the selected extrusion picks a face: its provenance is shown and its
   // plan edge and profile segment are highlighted in the panes.
@@ -1172,7 +1505,8 @@ int App::run() {
     if (job_ || live_.building() || growthPanel_.running() || statics_.simulationPlaying() ||
         options_.quitAfterFrames > 0 || frame_ < 3)
       glfwPollEvents();
-    else glfwWaitEventsTimeout(0.1);
+    else
+      glfwWaitEventsTimeout(0.1);
     const auto now = std::chrono::steady_clock::now();
     frameSeconds_ = frame_ == 0 ? 0.0 : std::chrono::duration<double>(now - lastFrame_).count();
     lastFrame_ = now;
@@ -1197,7 +1531,8 @@ int App::run() {
     // The plan and profile panes of a selected extrusion, right of the 3D view.
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     const DocObject* sel = selected_ ? history_.current().find(*selected_) : nullptr;  // looked up again below
-    const bool panes = sel && std::holds_alternative<ExtrusionSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
+    const bool panes =
+        sel && std::holds_alternative<ExtrusionSpec>(sel->spec) && vp->Size.x > kLeftPanelWidth + kPaneWidth + 200;
     if (panes) {
       if (panesFor_ != sel->id) panes_.reset();
       panesFor_ = sel->id;
@@ -1205,11 +1540,14 @@ int App::run() {
       host.doc = &history_.current();
       host.object = sel->id;
       if (auto it = sync_.status().find(sel->id); it != sync_.status().end()) host.error = it->second.error;
-      host.commit = [this](Document d, const std::string& label, const std::string& key) { commit(std::move(d), label, key); };
+      host.commit = [this](Document d, const std::string& label, const std::string& key) {
+        commit(std::move(d), label, key);
+      };
       host.endDrag = [this] { history_.closeMerge(); };
       host.log = [this](const std::string& line, bool error) { log(line, error); };
       const float top = ImGui::GetFrameHeight();
-      panes_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth, vp->Size.y - top - kStatusBarHeight);
+      panes_.draw(host, vp->Pos.x + vp->Size.x - kPaneWidth, vp->Pos.y + top, kPaneWidth,
+                  vp->Size.y - top - kStatusBarHeight);
     } else {
       panesFor_.reset();
     }
@@ -1308,8 +1646,8 @@ int App::run() {
       return o && o->visible;
     };
     // The sun of the shadows; without them the studio sun, so the model looks as it always did.
-    settings_.sun = settings_.shadows ? std::optional<Vec3>(render::sunDirection(sunAzimuth_, sunElevation_))
-                                      : std::nullopt;
+    settings_.sun =
+        settings_.shadows ? std::optional<Vec3>(render::sunDirection(sunAzimuth_, sunElevation_)) : std::nullopt;
     // A selected town is not tinted as a whole: its picked building is outlined instead.
     settings_.highlight = selectedTown() ? std::nullopt : selected_;
     // Tension colours and force arrows of the selected masonry object, when it is shown.
@@ -1319,6 +1657,9 @@ int App::run() {
       statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
     if (growthFor_ && selected_ == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
     if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
+    if (const DocObject* g = selected_ ? doc.find(*selected_) : nullptr;
+        g && std::holds_alternative<GrowthSpec>(g->spec))
+      growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
     renderer_->setScene(shownScene(), settings_);
     const int px = int(vpX_ * sx), py = int((vp->Size.y - vpY_ - vpH_) * sy), pw = int(vpW_ * sx), ph = int(vpH_ * sy);
     renderer_->draw(camera_, px, py, pw, ph, settings_);
@@ -1335,8 +1676,9 @@ int App::run() {
         for (const DocObject& o : doc.objects)
           if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0 && settings_.visible(o.id))
             specs.push_back(*k);
-        const std::array<double, 9> view{camera_.target[0], camera_.target[1], camera_.target[2], camera_.azimuth_deg,
-                                         camera_.elevation_deg, camera_.distance, camera_.fov_deg, double(pw), double(ph)};
+        const std::array<double, 9> view{
+            camera_.target[0], camera_.target[1], camera_.target[2], camera_.azimuth_deg, camera_.elevation_deg,
+            camera_.distance,  camera_.fov_deg,   double(pw),        double(ph)};
         const auto now = std::chrono::steady_clock::now();
         if (specs != kifsSpecs_ || view != kifsView_) {
           kifsSpecs_ = std::move(specs);

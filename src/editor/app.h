@@ -25,8 +25,8 @@
 #include <array>
 #include <chrono>
 #include <deque>
-#include <map>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,16 +37,16 @@ struct GLFWwindow;
 namespace corbel::editor {
 
 struct EditorOptions {
-  std::string project;              // opened at start ("" = a new document)
-  std::string screenshot;           // write the window to this PNG, then quit
-  int quitAfterFrames = -1;         // quit after this many frames (> 0)
-  std::vector<std::string> actions; // action ids run one per frame at start (scripted use)
-  std::string script;               // an edit script (JSON lines, extrude/edit.h) run one line per frame
-  std::string scriptShots;          // a folder: a screenshot after each stage of the script
+  std::string project;               // opened at start ("" = a new document)
+  std::string screenshot;            // write the window to this PNG, then quit
+  int quitAfterFrames = -1;          // quit after this many frames (> 0)
+  std::vector<std::string> actions;  // action ids run one per frame at start (scripted use)
+  std::string script;                // an edit script (JSON lines, extrude/edit.h) run one line per frame
+  std::string scriptShots;           // a folder: a screenshot after each stage of the script
   double autosaveSeconds = 60.0;
   enum class Recover { Ask, Yes, No } recover = Recover::Ask;
-  std::string stateDir;             // recovery and recent files ("" = defaultStateDir())
-  std::string select;               // select the object of this name at start
+  std::string stateDir;  // recovery and recent files ("" = defaultStateDir())
+  std::string select;    // select the object of this name at start
 };
 
 class App {
@@ -170,13 +170,13 @@ class App {
   std::shared_ptr<city::TownCache> townCache_;  // the town kernel's per-building results
   TownPanel townPanel_;
   std::optional<ObjectId> townFor_;
-  std::unique_ptr<render::KifsPass> kifsPass_;  // made when a KIFS building is first shown
+  std::unique_ptr<render::KifsPass> kifsPass_;    // made when a KIFS building is first shown
   std::unique_ptr<render::KifsLayer> kifsLayer_;  // the cached march (progressive refinement)
-  std::vector<KifsSpec> kifsSpecs_;              // what the layer shows, to see it change
+  std::vector<KifsSpec> kifsSpecs_;               // what the layer shows, to see it change
   std::array<double, 9> kifsView_{};
   std::chrono::steady_clock::time_point kifsChanged_{};
   unsigned long kifsGeneration_ = 0;
-  bool kifsFailed_ = false;                      // its shader did not build (logged once)
+  bool kifsFailed_ = false;  // its shader did not build (logged once)
   std::vector<std::string> scriptLines_;
   std::size_t scriptLine_ = 0;
   int shotAtFrame_ = -1;

@@ -7,7 +7,8 @@
 namespace corbel::editor {
 
 namespace {
-const char* const kPalette[] = {"brick", "glass", "grass", "timber", "slate", "stone", "roof_tile", "metal", "plaster", "concrete"};
+const char* const kPalette[] = {"brick", "glass",     "grass", "timber",  "slate",
+                                "stone", "roof_tile", "metal", "plaster", "concrete"};
 }
 
 const char* unitMaterial(int id) { return kPalette[std::size_t(id > 0 ? id - 1 : 0) % std::size(kPalette)]; }

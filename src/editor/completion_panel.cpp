@@ -26,8 +26,8 @@ growth::Fraction fractionOf(double v) { return growth::Fraction::of(std::llround
 std::string fq(const growth::Complexity& c) {
   const growth::Fraction v = c.value();
   char text[64];
-  std::snprintf(text, sizeof text, "F_q %lld/%lld = %.3f", static_cast<long long>(v.num),
-                static_cast<long long>(v.den), v.value());
+  std::snprintf(text, sizeof text, "F_q %lld/%lld = %.3f", static_cast<long long>(v.num), static_cast<long long>(v.den),
+                v.value());
   return text;
 }
 
@@ -43,9 +43,7 @@ bool CompletionPanel::modelCurrent(const CompletionHost& host) const {
   return spec && model_ && model_->of == *spec;
 }
 
-void CompletionPanel::reset() {
-  *this = CompletionPanel();
-}
+void CompletionPanel::reset() { *this = CompletionPanel(); }
 
 double CompletionPanel::storeyZ() const {
   if (!model_) return 0.0;
@@ -72,7 +70,8 @@ void CompletionPanel::gapRegion() {
   const auto [eo, obstacles] = entranceSetup();
   const growth::Box b = model_->grown.site.bounds();
   growth::PlanRect gap;
-  if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, growth::kGapMinSide, growth::kGapMaxSide, gap)) {
+  if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, growth::kGapMinSide,
+                      growth::kGapMaxSide, gap)) {
     region_ = gap;
     regionSet_ = true;
   }
@@ -121,7 +120,8 @@ void CompletionPanel::takeSeeds(const CompletionHost& host) {
   auto result = std::make_shared<Model>();
   result->of = *spec;
   attempted_ = *spec;
-  run(host, "Growing the model for its entrances",
+  run(
+      host, "Growing the model for its entrances",
       [result](Progress& p) { result->grown = growth::grow(result->of, &p); },
       [this, result] {
         model_ = result;
@@ -156,8 +156,8 @@ void CompletionPanel::generate(const CompletionHost& host) {
   rq.seed = std::uint64_t(std::max(0, seed_));
   auto result = std::make_shared<growth::FormSet>();
   const int seeds = rq.seeds;
-  run(host, "Generating forms",
-      [result, rq](Progress& p) { *result = growth::generateForms(rq, &p); },
+  run(
+      host, "Generating forms", [result, rq](Progress& p) { *result = growth::generateForms(rq, &p); },
       [this, result, seeds, log = host.log] {
         forms_ = std::move(*result);
         formsSeeds_ = seeds;
@@ -202,7 +202,8 @@ void CompletionPanel::fit(const CompletionHost& host) {
         for (const growth::Box& a : f.parts)
           for (const growth::Unit& g : model_->grown.units)
             for (const growth::Box& b : g.parts) clashes += growth::interiorsOverlap(a, b, 1e-6) ? 1 : 0;
-      if (clashes) status_ += "; overlaps grown units in " + std::to_string(clashes) + " places (choose an empty region)";
+      if (clashes)
+        status_ += "; overlaps grown units in " + std::to_string(clashes) + " places (choose an empty region)";
     }
   } catch (const std::exception& e) {
     host.log(std::string("Fit to region: ") + e.what(), true);
@@ -242,12 +243,15 @@ void CompletionPanel::drawOverlay(render::Overlay& overlay) const {
   if (!regionSet_) return;
   const double z = storeyZ() + 0.05;
   const render::Rgba yellow{1.0f, 0.85f, 0.2f, 1.0f};
-  const Vec3 c[4] = {{region_.x0, region_.y0, z}, {region_.x1, region_.y0, z}, {region_.x1, region_.y1, z},
+  const Vec3 c[4] = {{region_.x0, region_.y0, z},
+                     {region_.x1, region_.y0, z},
+                     {region_.x1, region_.y1, z},
                      {region_.x0, region_.y1, z}};
   for (int i = 0; i < 4; ++i) overlay.line(c[i], c[(i + 1) % 4], yellow);
   for (const growth::Entrance& e : entrances_)
-    overlay.arrow(Vec3(e.at[0], e.at[1], z), Vec3(e.at[0] + sideSign(e.facing) * (sideAxis(e.facing) == 0 ? 1.5 : 0),
-                                                  e.at[1] + sideSign(e.facing) * (sideAxis(e.facing) == 1 ? 1.5 : 0), z),
+    overlay.arrow(Vec3(e.at[0], e.at[1], z),
+                  Vec3(e.at[0] + sideSign(e.facing) * (sideAxis(e.facing) == 0 ? 1.5 : 0),
+                       e.at[1] + sideSign(e.facing) * (sideAxis(e.facing) == 1 ? 1.5 : 0), z),
                   {0.3f, 0.9f, 0.4f, 1.0f}, 0.4);
   if (!fitted_) return;
   // The doors the fit was asked to meet: green where the unit opens onto its entrance, red where not.
@@ -265,7 +269,8 @@ void CompletionPanel::drawOverlay(render::Overlay& overlay) const {
     for (const growth::Box& b : u.parts) {
       const double zs[2] = {b.lo[2] + 0.02, b.hi[2]};
       for (double zz : zs) {
-        const Vec3 q[4] = {{b.lo[0], b.lo[1], zz}, {b.hi[0], b.lo[1], zz}, {b.hi[0], b.hi[1], zz}, {b.lo[0], b.hi[1], zz}};
+        const Vec3 q[4] = {
+            {b.lo[0], b.lo[1], zz}, {b.hi[0], b.lo[1], zz}, {b.hi[0], b.hi[1], zz}, {b.lo[0], b.hi[1], zz}};
         for (int i = 0; i < 4; ++i) overlay.line(q[i], q[(i + 1) % 4], col);
       }
       for (double x : {b.lo[0], b.hi[0]})
@@ -309,18 +314,21 @@ void CompletionPanel::drawPlan(const CompletionHost& host, float w, float h) {
       m.apply(p[0], p[1], px, py);
       outline.emplace_back(px, py);
     }
-    if (outline.size() >= 3) dl->AddPolyline(outline.data(), int(outline.size()), IM_COL32(150, 150, 160, 255), ImDrawFlags_Closed, 1.0f);
+    if (outline.size() >= 3)
+      dl->AddPolyline(outline.data(), int(outline.size()), IM_COL32(150, 150, 160, 255), ImDrawFlags_Closed, 1.0f);
     const double zMid = storeyZ() + 0.5 * site.storeyHeight;
     for (const growth::Unit& u : model_->grown.units)
       for (const growth::Box& b : u.parts)
-        if (b.lo[2] < zMid && b.hi[2] > zMid) rect(b.lo[0], b.lo[1], b.hi[0], b.hi[1], IM_COL32(200, 196, 185, 200), IM_COL32(90, 90, 90, 255));
+        if (b.lo[2] < zMid && b.hi[2] > zMid)
+          rect(b.lo[0], b.lo[1], b.hi[0], b.hi[1], IM_COL32(200, 196, 185, 200), IM_COL32(90, 90, 90, 255));
     for (const growth::Rect& c : site.cores) rect(c.u0, c.v0, c.u1, c.v1, IM_COL32(120, 120, 125, 255), 0);
     for (const growth::Box& c : site.circulation)
       if (c.lo[2] < zMid && c.hi[2] > zMid) rect(c.lo[0], c.lo[1], c.hi[0], c.hi[1], IM_COL32(80, 90, 110, 255), 0);
   }
   if (fitted_)
     for (const growth::Unit& u : fitted_->units)
-      for (const growth::Box& b : u.parts) rect(b.lo[0], b.lo[1], b.hi[0], b.hi[1], unitColour(u.id, 0.9f), IM_COL32(20, 20, 20, 255));
+      for (const growth::Box& b : u.parts)
+        rect(b.lo[0], b.lo[1], b.hi[0], b.hi[1], unitColour(u.id, 0.9f), IM_COL32(20, 20, 20, 255));
   rect(region_.x0, region_.y0, region_.x1, region_.y1, 0, IM_COL32(255, 215, 50, 255));
   for (const growth::Entrance& e : entrances_) {
     float px, py;
@@ -346,10 +354,14 @@ void CompletionPanel::drawPlan(const CompletionHost& host, float w, float h) {
       const ImVec2 mp = ImGui::GetIO().MousePos;
       m.invert(mp.x, mp.y, x, y);
       x = std::round(x * 2) / 2, y = std::round(y * 2) / 2;
-      if (xs[k] == &region_.x0) region_.x0 = std::min(x, region_.x1 - kMinRegion);
-      else region_.x1 = std::max(x, region_.x0 + kMinRegion);
-      if (ys[k] == &region_.y0) region_.y0 = std::min(y, region_.y1 - kMinRegion);
-      else region_.y1 = std::max(y, region_.y0 + kMinRegion);
+      if (xs[k] == &region_.x0)
+        region_.x0 = std::min(x, region_.x1 - kMinRegion);
+      else
+        region_.x1 = std::max(x, region_.x0 + kMinRegion);
+      if (ys[k] == &region_.y0)
+        region_.y0 = std::min(y, region_.y1 - kMinRegion);
+      else
+        region_.y1 = std::max(y, region_.y0 + kMinRegion);
     }
     ImGui::PopID();
     dl->AddRectFilled(ImVec2(px - 4, py - 4), ImVec2(px + 4, py + 4),
@@ -397,7 +409,8 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
   if (!spec) return;
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Form completion", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Form completion", nullptr,
+               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
   if (!regionSet_) {
     try {
       defaultRegion(growth::parseSite(spec->site));
@@ -439,8 +452,10 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
   }
   ImGui::PushItemWidth(110);
   if (fromModel_) {
-    if (!current) ImGui::TextDisabled("growing the model for its entrances...");
-    else ImGui::Text("%zu entrances in the region (green)", entrances_.size());
+    if (!current)
+      ImGui::TextDisabled("growing the model for its entrances...");
+    else
+      ImGui::Text("%zu entrances in the region (green)", entrances_.size());
   } else {
     ImGui::SliderInt("Seeds N", &count_, 1, 12);
   }
@@ -470,14 +485,18 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
   if (ImGui::Button(label)) extrude(host);
   ImGui::EndDisabled();
   // A fitted form follows the region as it is typed or dragged.
-  if (fitted_ && (fittedRegion_.x0 != region_.x0 || fittedRegion_.y0 != region_.y0 || fittedRegion_.x1 != region_.x1 ||
-                  fittedRegion_.y1 != region_.y1) && canFit())
+  if (fitted_ &&
+      (fittedRegion_.x0 != region_.x0 || fittedRegion_.y0 != region_.y0 || fittedRegion_.x1 != region_.x1 ||
+       fittedRegion_.y1 != region_.y1) &&
+      canFit())
     fit(host);
   if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
   ImGui::Separator();
   ImGui::BeginChild("forms", ImVec2(0, 0), false);
-  if (forms_.forms.empty()) ImGui::TextDisabled("No forms yet: Generate.");
-  else drawThumbnails(ImGui::GetContentRegionAvail().x);
+  if (forms_.forms.empty())
+    ImGui::TextDisabled("No forms yet: Generate.");
+  else
+    drawThumbnails(ImGui::GetContentRegionAvail().x);
   ImGui::EndChild();
   ImGui::End();
 }

@@ -71,8 +71,8 @@ class CompletionPanel {
   growth::PlanRect region_{};
   bool regionSet_ = false;
   bool regionChosen_ = false;
-  bool zoom_ = true;       // the plan view shows the region and its surroundings, not the whole site
-  bool dragging_ = false;  // a corner handle is held
+  bool zoom_ = true;              // the plan view shows the region and its surroundings, not the whole site
+  bool dragging_ = false;         // a corner handle is held
   growth::PlanRect mapBounds_{};  // typed or dragged: the model's gap no longer replaces it
   int storey_ = 0;
   bool fromModel_ = true;

@@ -45,7 +45,8 @@ static bool repeatFields(Repeat& rep, const Anchor& anchor, const std::string& i
   if (rep.kind == RepeatKind::Grid) {
     float g[2] = {float(rep.height), float(rep.rowSpacing)};
     ImGui::SetNextItemWidth(140);
-    if (ImGui::InputFloat2(("last row height, row spacing" + id).c_str(), g, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    if (ImGui::InputFloat2(("last row height, row spacing" + id).c_str(), g, "%.2f",
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
       rep.height = g[0];
       rep.rowSpacing = g[1];
       changed = true;
@@ -58,8 +59,9 @@ namespace {
 
 // Edge colours by profile index (the paper's colour coding of Fig. 4).
 ImU32 profileColor(int i) {
-  static const ImU32 palette[] = {IM_COL32(230, 90, 70, 255),  IM_COL32(70, 130, 230, 255), IM_COL32(90, 190, 90, 255),
-                                  IM_COL32(220, 170, 40, 255), IM_COL32(170, 90, 210, 255), IM_COL32(40, 190, 190, 255),
+  static const ImU32 palette[] = {IM_COL32(230, 90, 70, 255),   IM_COL32(70, 130, 230, 255),
+                                  IM_COL32(90, 190, 90, 255),   IM_COL32(220, 170, 40, 255),
+                                  IM_COL32(170, 90, 210, 255),  IM_COL32(40, 190, 190, 255),
                                   IM_COL32(230, 120, 180, 255), IM_COL32(150, 150, 150, 255)};
   return palette[static_cast<std::size_t>(i) % (sizeof palette / sizeof palette[0])];
 }
@@ -164,7 +166,8 @@ void ExtrusionPanes::reset() {
 
 namespace {
 
-const FeatureKind kFeatureKinds[] = {FeatureKind::Door, FeatureKind::Window, FeatureKind::RoofWindow, FeatureKind::ChimneyPot};
+const FeatureKind kFeatureKinds[] = {FeatureKind::Door, FeatureKind::Window, FeatureKind::RoofWindow,
+                                     FeatureKind::ChimneyPot};
 const char* const kFeatureLabels = "door\0window\0roof window\0chimney pot\0";
 
 // Where an anchor lies on its input edge in the plan (the plan pane draws input edges).
@@ -195,15 +198,19 @@ void ExtrusionPanes::featureFields(const PaneHost& host, const ExtrusionSpec& sp
     ImGui::SetNextItemWidth(220);
     if (ImGui::InputFloat3("W, H, D (m)", size, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
       const FeatureSize fs{size[0], size[1], size[2]};
-      apply(host, [&](const ExtrusionSpec& s) { return ed::setFeatureSize(s, k, fs); }, "Resize " + m.name);
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::setFeatureSize(s, k, fs); }, "Resize " + m.name);
     }
   }
   Repeat rep = m.repeat;
   const bool changed = repeatFields(rep, m.anchor, "");
-  if (changed) apply(host, [&](const ExtrusionSpec& s) { return ed::setFeatureRepeat(s, k, rep); }, "Repeat " + m.name);
+  if (changed)
+    apply(
+        host, [&](const ExtrusionSpec& s) { return ed::setFeatureRepeat(s, k, rep); }, "Repeat " + m.name);
   ImGui::SameLine();
   if (ImGui::Button("Delete feature")) {
-    apply(host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete " + m.name);
+    apply(
+        host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete " + m.name);
     selectedFeature_.reset();
   }
 }
@@ -276,8 +283,9 @@ bool ExtrusionPanes::backgroundTexture(const PaneHost& host, const PlanBackgroun
 void ExtrusionPanes::backgroundFields(const PaneHost& host, const DocObject& object, const ExtrusionSpec& spec) {
   if (ImGui::Button("Choose image…")) {
     const std::string start = object.background ? object.background->image : std::string();
-    backgroundDialog_.open(FileDialog::Mode::Open, "Background image", {".png", ".jpg", ".jpeg", ".PNG", ".JPG", ".JPEG"},
-                           start, [this](const std::string& path) { chosenBackground_ = path; });
+    backgroundDialog_.open(FileDialog::Mode::Open, "Background image",
+                           {".png", ".jpg", ".jpeg", ".PNG", ".JPG", ".JPEG"}, start,
+                           [this](const std::string& path) { chosenBackground_ = path; });
     ImGui::CloseCurrentPopup();
   }
   if (!object.background) {
@@ -324,12 +332,14 @@ void ExtrusionPanes::backgroundFields(const PaneHost& host, const DocObject& obj
     ImGui::CloseCurrentPopup();
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Click two points of the image whose distance you know, then type it: the image is scaled about the first");
+    ImGui::SetTooltip(
+        "Click two points of the image whose distance you know, then type it: the image is scaled about the first");
   ImGui::SameLine();
   if (ImGui::Button("Centre on plan") && texture_ && b.image == texturePath_) {
     double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
     for (const PlanLoop& l : spec.loops)
-      for (const Vec2& p : l.points) x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+      for (const Vec2& p : l.points)
+        x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
     if (x0 <= x1) {
       b.origin = Vec2((x0 + x1 - textureW_ * b.scale) / 2, (y0 + y1 - textureH_ * b.scale) / 2);
       setBackground(host, b, "Move background");
@@ -350,7 +360,8 @@ void ExtrusionPanes::stepFields(const PaneHost& host, const ExtrusionSpec& spec)
   ImGui::Text("Step \"%s\": %s at %.2f m", st.name.c_str(), shape, st.anchor.height);
   ImGui::SameLine();
   if (ImGui::SmallButton("Delete step")) {
-    apply(host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
+    apply(
+        host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
     selectedStep_.reset();
     return;
   }
@@ -360,7 +371,9 @@ void ExtrusionPanes::stepFields(const PaneHost& host, const ExtrusionSpec& spec)
     const RepeatGrid grid = repeatGrid(spec, st.anchor, st.repeat);
     if (st.repeat.kind != RepeatKind::None) ImGui::TextDisabled("%zu x %zu steps", grid.columns, grid.rows);
   }
-  if (changed) apply(host, [&](const ExtrusionSpec& s) { return ed::setStepRepeat(s, k, rep); }, "Repeat " + st.name);
+  if (changed)
+    apply(
+        host, [&](const ExtrusionSpec& s) { return ed::setStepRepeat(s, k, rep); }, "Repeat " + st.name);
 }
 
 void ExtrusionPanes::fit(const ExtrusionSpec& spec, const PlanBackground* background, float w, float h) {
@@ -416,8 +429,9 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   ImGui::SameLine();
   ImGui::Checkbox("Angles", &snapAngles_);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("With Snap: new edges turn to multiples of the angle step, or parallel or perpendicular to their "
-                      "neighbour when that is within half a step (hold Alt to draw freely)");
+    ImGui::SetTooltip(
+        "With Snap: new edges turn to multiples of the angle step, or parallel or perpendicular to their "
+        "neighbour when that is within half a step (hold Alt to draw freely)");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(52);
   ImGui::Combo("##anglestep", &angleStep_, kAngleStepLabels);
@@ -428,10 +442,13 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     drawn_.clear();
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Click to place corners; click the first corner or press Enter to close. Inside another loop it becomes a hole.");
+    ImGui::SetTooltip(
+        "Click to place corners; click the first corner or press Enter to close. Inside another loop it becomes a "
+        "hole.");
   ImGui::SameLine();
   if (ImGui::Button("Background…")) ImGui::OpenPopup("background");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("An image under the plan to trace from (saved with the object; never extruded)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("An image under the plan to trace from (saved with the object; never extruded)");
   if (ImGui::BeginPopup("background")) {
     if (object) backgroundFields(host, *object, spec);
     ImGui::EndPopup();
@@ -449,10 +466,11 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
         // Fit the image's longer side to 1.5 times the plan's, centred on it.
         double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
         for (const PlanLoop& l : spec.loops)
-          for (const Vec2& p : l.points) x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+          for (const Vec2& p : l.points)
+            x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
         if (x0 <= x1) {
-          b.scale = std::clamp(1.5 * std::max(x1 - x0, y1 - y0) / std::max(textureW_, textureH_), limits::kMinBackgroundScale,
-                               limits::kMaxBackgroundScale);
+          b.scale = std::clamp(1.5 * std::max(x1 - x0, y1 - y0) / std::max(textureW_, textureH_),
+                               limits::kMinBackgroundScale, limits::kMaxBackgroundScale);
           b.origin = Vec2((x0 + x1 - textureW_ * b.scale) / 2, (y0 + y1 - textureH_ * b.scale) / 2);
         }
       }
@@ -460,13 +478,16 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     }
   }
   ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x));
-  const std::string current = spec.profiles.empty() ? "" : spec.profiles[std::min<std::size_t>(profile_, spec.profiles.size() - 1)].name;
+  const std::string current =
+      spec.profiles.empty() ? "" : spec.profiles[std::min<std::size_t>(profile_, spec.profiles.size() - 1)].name;
   if (ImGui::BeginCombo("##assign", selectedEdges_.empty() ? "Select edges to assign a profile" : "Assign profile…")) {
     for (int i = 0; i < static_cast<int>(spec.profiles.size()); ++i) {
       ImGui::PushStyleColor(ImGuiCol_Text, profileColor(i));
       if (ImGui::Selectable(spec.profiles[i].name.c_str(), false) && !selectedEdges_.empty()) {
         const std::vector<ed::EdgeRef> edges(selectedEdges_.begin(), selectedEdges_.end());
-        apply(host, [&](const ExtrusionSpec& s) { return ed::setEdgeProfile(s, edges, i); }, "Assign profile " + spec.profiles[i].name);
+        apply(
+            host, [&](const ExtrusionSpec& s) { return ed::setEdgeProfile(s, edges, i); },
+            "Assign profile " + spec.profiles[i].name);
         profile_ = i;
       }
       ImGui::PopStyleColor();
@@ -477,7 +498,8 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   if (selectedEdges_.size() == 1) {
     if (ImGui::Button("Add step here")) ImGui::OpenPopup("step");
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("A natural step anchored on the selected edge: a dormer, a bay window or a buttress (Sec. 3.5)");
+      ImGui::SetTooltip(
+          "A natural step anchored on the selected edge: a dormer, a bay window or a buttress (Sec. 3.5)");
   }
   if (ImGui::BeginPopup("step")) {
     ImGui::Combo("Kind", &stepShape_, "dormer\0bay window\0buttress\0");
@@ -496,31 +518,34 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       st.depth = stepDepth_;
       st.cant = stepCant_;
       st.shape = shape == 1 ? StepShape::Bay : StepShape::Rectangle;
-      apply(host, [&](const ExtrusionSpec& s0) {
-        // The step's profiles come from the library, added once.
-        ExtrusionSpec s = s0;
-        auto use = [&](const std::string& name) {
-          for (int i = 0; i < static_cast<int>(s.profiles.size()); ++i)
-            if (s.profiles[i].name == name) return i;
-          for (const Profile& p : ed::profileLibrary())
-            if (p.name == name) {
-              int index = 0;
-              s = ed::addProfile(s, p, &index);
-              return index;
+      apply(
+          host,
+          [&](const ExtrusionSpec& s0) {
+            // The step's profiles come from the library, added once.
+            ExtrusionSpec s = s0;
+            auto use = [&](const std::string& name) {
+              for (int i = 0; i < static_cast<int>(s.profiles.size()); ++i)
+                if (s.profiles[i].name == name) return i;
+              for (const Profile& p : ed::profileLibrary())
+                if (p.name == name) {
+                  int index = 0;
+                  s = ed::addProfile(s, p, &index);
+                  return index;
+                }
+              throw InputError("profile", "no library profile " + name);
+            };
+            if (shape == 0) {
+              st.frontProfile = use("dormer front");
+              st.sideProfile = use("dormer side");
+            } else if (shape == 1) {
+              st.frontProfile = st.sideProfile = use("bay");
+            } else {
+              st.frontProfile = use("buttress");
+              st.sideProfile = use("vertical wall");
             }
-          throw InputError("profile", "no library profile " + name);
-        };
-        if (shape == 0) {
-          st.frontProfile = use("dormer front");
-          st.sideProfile = use("dormer side");
-        } else if (shape == 1) {
-          st.frontProfile = st.sideProfile = use("bay");
-        } else {
-          st.frontProfile = use("buttress");
-          st.sideProfile = use("vertical wall");
-        }
-        return ed::addStep(s, st);
-      }, "Add " + st.name);
+            return ed::addStep(s, st);
+          },
+          "Add " + st.name);
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
@@ -530,7 +555,8 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     ImGui::SameLine();
     if (ImGui::Button("Add feature here")) ImGui::OpenPopup("feature");
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("A door, window, roof window or chimney pot at a mesh anchor on the selected edge (Sec. 3.4, Fig. 28)");
+      ImGui::SetTooltip(
+          "A door, window, roof window or chimney pot at a mesh anchor on the selected edge (Sec. 3.4, Fig. 28)");
     ImGui::SameLine();
     if (ImGui::Button("Draw forced step") && !(drawing_ && forcedEdge_)) {
       drawing_ = true;
@@ -538,8 +564,9 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       drawn_.clear();
     }
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("Click the corners of a polygon; closing it unions it with the plan at the chosen height, anchored on "
-                        "the selected edge where it is nearest (a forced step, Sec. 3.5)");
+      ImGui::SetTooltip(
+          "Click the corners of a polygon; closing it unions it with the plan at the chosen height, anchored on "
+          "the selected edge where it is nearest (a forced step, Sec. 3.5)");
   }
   if (ImGui::BeginPopup("feature")) {
     if (ImGui::Combo("Kind", &featureKind_, kFeatureLabels)) {
@@ -556,14 +583,16 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       std::replace(label.begin(), label.end(), '_', ' ');
       const MeshAnchor m(label, {li, ei, false, featureFraction_, std::max(0.0f, featureHeight_)}, kind,
                          {featureSize_[0], featureSize_[1], featureSize_[2]});
-      apply(host, [&](const ExtrusionSpec& s) { return ed::addMeshAnchor(s, m); }, "Add " + label);
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::addMeshAnchor(s, m); }, "Add " + label);
       selectedFeature_ = static_cast<int>(spec.anchors.size());  // the new one, once committed
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
   }
   if (forcedEdge_ && drawing_) {
-    ImGui::TextColored(ImVec4(1.0f, 0.86f, 0.47f, 1.0f), "Forced step on loop %d edge %d:", forcedEdge_->first, forcedEdge_->second);
+    ImGui::TextColored(ImVec4(1.0f, 0.86f, 0.47f, 1.0f), "Forced step on loop %d edge %d:", forcedEdge_->first,
+                       forcedEdge_->second);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
     ImGui::InputFloat("height (m)##forced", &forcedHeight_, 0.1f, 1.0f, "%.2f");
@@ -584,12 +613,14 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   const ImVec2 size(std::max(avail.x, 10.0f), std::max(avail.y - errH, 10.0f));
   if (object && object->background) backgroundTexture(host, *object->background);  // may ask for a fit
   if (!fitted_) fit(spec, object && object->background ? &*object->background : nullptr, size.x, size.y);
-  ImGui::InvisibleButton("plan-canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                                                  ImGuiButtonFlags_MouseButtonMiddle);
+  ImGui::InvisibleButton(
+      "plan-canvas", size,
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered();
   const ImGuiIO& io = ImGui::GetIO();
   auto toScreen = [&](const Vec2& p) {
-    return ImVec2(float(origin.x + size.x / 2 + (p[0] - cx_) * zoom_), float(origin.y + size.y / 2 - (p[1] - cy_) * zoom_));
+    return ImVec2(float(origin.x + size.x / 2 + (p[0] - cx_) * zoom_),
+                  float(origin.y + size.y / 2 - (p[1] - cy_) * zoom_));
   };
   auto toWorld = [&](ImVec2 s) {
     return Vec2(cx_ + (s.x - origin.x - size.x / 2) / zoom_, cy_ - (s.y - origin.y - size.y / 2) / zoom_);
@@ -608,7 +639,8 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (!angles || drawn_.empty()) return snapped(pointer);
     const Vec2 last(drawn_.back().first, drawn_.back().second);
     std::vector<Vec2> refs;
-    if (drawn_.size() >= 2) refs.push_back(last - Vec2(drawn_[drawn_.size() - 2].first, drawn_[drawn_.size() - 2].second));
+    if (drawn_.size() >= 2)
+      refs.push_back(last - Vec2(drawn_[drawn_.size() - 2].first, drawn_[drawn_.size() - 2].second));
     else if (forcedEdge_ && forcedEdge_->first < static_cast<int>(spec.loops.size()) &&
              forcedEdge_->second < static_cast<int>(spec.loops[forcedEdge_->first].points.size())) {
       const auto& pts = spec.loops[forcedEdge_->first].points;
@@ -641,8 +673,8 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     const ImVec2 tl = toScreen(Vec2(b.origin[0], b.origin[1] + textureH_ * b.scale));
     const ImVec2 br = toScreen(Vec2(b.origin[0] + textureW_ * b.scale, b.origin[1]));
     const int alpha = std::clamp(static_cast<int>(std::lround(b.opacity * 255)), 0, 255);
-    dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)), tl, br, ImVec2(0, 0), ImVec2(1, 1),
-                 IM_COL32(255, 255, 255, alpha));
+    dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)), tl, br, ImVec2(0, 0),
+                 ImVec2(1, 1), IM_COL32(255, 255, 255, alpha));
   }
   // Grid: 1 m lines, 5 m lines stronger; coarser when zoomed out; see-through over an image.
   const ImU32 seeThrough = object && object->background && texture_ ? 0x70FFFFFF : 0xFFFFFFFF;
@@ -711,7 +743,9 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       const bool hot = hotCorner && *hotCorner == std::make_pair(li, i);
       const float r = hot || sel ? 5.0f : 3.5f;
       dl->AddRectFilled(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r),
-                        isFaulty ? IM_COL32(255, 60, 60, 255) : sel ? IM_COL32(255, 255, 255, 255) : IM_COL32(210, 210, 210, 255));
+                        isFaulty ? IM_COL32(255, 60, 60, 255)
+                        : sel    ? IM_COL32(255, 255, 255, 255)
+                                 : IM_COL32(210, 210, 210, 255));
       if (isFaulty) dl->AddCircle(p, 11, IM_COL32(255, 60, 60, 255), 20, 2.5f);
     }
   }
@@ -729,11 +763,13 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       const Vec2 out(d[1], -d[0]);
       std::vector<ImVec2> poly;
       for (const Vec2& q : st.points) poly.push_back(toScreen(*at + d * q[0] + out * q[1]));
-      dl->AddPolyline(poly.data(), static_cast<int>(poly.size()), (col & 0x00FFFFFF) | 0xB0000000, ImDrawFlags_Closed, 1.5f);
+      dl->AddPolyline(poly.data(), static_cast<int>(poly.size()), (col & 0x00FFFFFF) | 0xB0000000, ImDrawFlags_Closed,
+                      1.5f);
     }
     if (st.repeat.kind != RepeatKind::None) {
       const std::vector<Anchor> all = repeatAnchors(spec, st.anchor, st.repeat);
-      if (auto last = anchorOnPlan(spec, all.back())) dl->AddLine(toScreen(*at), toScreen(*last), (col & 0x00FFFFFF) | 0x80000000, 1.5f);
+      if (auto last = anchorOnPlan(spec, all.back()))
+        dl->AddLine(toScreen(*at), toScreen(*last), (col & 0x00FFFFFF) | 0x80000000, 1.5f);
       for (std::size_t i = 1; i < all.size() && i < 2000; ++i)
         if (auto q = anchorOnPlan(spec, all[i])) dl->AddCircleFilled(toScreen(*q), 3, col);
     }
@@ -749,12 +785,14 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     const ImU32 col = IM_COL32(80, 220, 240, 255);
     if (m.repeat.kind != RepeatKind::None) {
       const std::vector<Anchor> all = repeatAnchors(spec, m.anchor, m.repeat);
-      if (auto last = anchorOnPlan(spec, all.back())) dl->AddLine(toScreen(*at), toScreen(*last), (col & 0x00FFFFFF) | 0x80000000, 1.5f);
+      if (auto last = anchorOnPlan(spec, all.back()))
+        dl->AddLine(toScreen(*at), toScreen(*last), (col & 0x00FFFFFF) | 0x80000000, 1.5f);
       for (std::size_t i = 1; i < all.size() && i < 2000; ++i)
         if (auto q = anchorOnPlan(spec, all[i])) dl->AddCircleFilled(toScreen(*q), 3, col);
     }
     const bool sel = selectedFeature_ && *selectedFeature_ == k;
-    if (sel || (hotFeature && *hotFeature == k)) dl->AddCircleFilled(toScreen(*at), 6, (col & 0x00FFFFFF) | 0x90000000, 16);
+    if (sel || (hotFeature && *hotFeature == k))
+      dl->AddCircleFilled(toScreen(*at), 6, (col & 0x00FFFFFF) | 0x90000000, 16);
     dl->AddCircle(toScreen(*at), 6, col, 16, sel ? 3.0f : 2.0f);
   }
   // A loop (or a forced step's polygon) being drawn; its next point as it would be placed.
@@ -765,8 +803,10 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     for (std::size_t i = 0; i < drawn_.size(); ++i) {
       const ImVec2 p = toScreen(Vec2(drawn_[i].first, drawn_[i].second));
       dl->AddCircleFilled(p, 4, col);
-      if (i + 1 < drawn_.size()) dl->AddLine(p, toScreen(Vec2(drawn_[i + 1].first, drawn_[i + 1].second)), col, 2.0f);
-      else if (nextDrawn) dl->AddLine(p, toScreen(*nextDrawn), col, 2.0f);
+      if (i + 1 < drawn_.size())
+        dl->AddLine(p, toScreen(Vec2(drawn_[i + 1].first, drawn_[i + 1].second)), col, 2.0f);
+      else if (nextDrawn)
+        dl->AddLine(p, toScreen(*nextDrawn), col, 2.0f);
     }
     if (nextDrawn) dl->AddCircle(toScreen(*nextDrawn), 4, col, 12, 1.5f);
   }
@@ -797,8 +837,10 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   if (calibrating_ > 0) {
     // Two free clicks (no snapping: they mark the image, not the plan).
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-      if (calibrating_ == 2) calibrateA_ = toWorld(mouse);
-      else calibrateB_ = toWorld(mouse);
+      if (calibrating_ == 2)
+        calibrateA_ = toWorld(mouse);
+      else
+        calibrateB_ = toWorld(mouse);
       if (--calibrating_ == 0) {
         calibratePopup_ = true;
         calibrateDistance_ = float((calibrateB_ - calibrateA_).norm());
@@ -816,10 +858,13 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
         const double height = forcedHeight_;
         const int front = profile_;
         const int index = static_cast<int>(spec.steps.size());
-        apply(host, [&](const ExtrusionSpec& s) { return ed::addForcedStep(s, li, ei, pts, height, front); }, "Add forced step");
+        apply(
+            host, [&](const ExtrusionSpec& s) { return ed::addForcedStep(s, li, ei, pts, height, front); },
+            "Add forced step");
         selectedStep_ = index;  // the new one, once committed
       } else {
-        apply(host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
+        apply(
+            host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");
       }
       drawing_ = false;
       forcedEdge_.reset();
@@ -829,8 +874,10 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
       const bool closes = drawn_.size() >= 3 && dist(mouse, toScreen(Vec2(drawn_[0].first, drawn_[0].second))) < 8;
       const Vec2 p = nextDrawn ? *nextDrawn : snapped(toWorld(mouse));
-      if (closes) finishLoop();
-      else drawn_.emplace_back(p[0], p[1]);
+      if (closes)
+        finishLoop();
+      else
+        drawn_.emplace_back(p[0], p[1]);
     } else if (enter) {
       finishLoop();
     } else if (keyPressed(ImGuiKey_Escape)) {
@@ -842,7 +889,8 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && hotEdge) {
       const auto [li, ei] = *hotEdge;
       const Vec2 p = cornerPoint(li, ei, ei + 1, toWorld(mouse));
-      apply(host, [&](const ExtrusionSpec& s) { return ed::insertCorner(s, li, ei, p); }, "Insert corner");
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::insertCorner(s, li, ei, p); }, "Insert corner");
       selectedCorner_ = std::make_pair(li, ei + 1);
     } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
       if (hotFeature) {
@@ -872,7 +920,8 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     // Box selection: every edge with both ends inside the box (Shift adds to the selection).
     if (boxFrom_) {
       const ImVec2 a(boxFrom_->first, boxFrom_->second);
-      const ImVec2 lo(std::min(a.x, mouse.x), std::min(a.y, mouse.y)), hi(std::max(a.x, mouse.x), std::max(a.y, mouse.y));
+      const ImVec2 lo(std::min(a.x, mouse.x), std::min(a.y, mouse.y)),
+          hi(std::max(a.x, mouse.x), std::max(a.y, mouse.y));
       auto inBox = [&](const Vec2& p) {
         const ImVec2 q = toScreen(p);
         return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
@@ -883,26 +932,30 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
         if (hi.x - lo.x > 3 || hi.y - lo.y > 3)
           for (int li = 0; li < static_cast<int>(spec.loops.size()); ++li)
             for (int i = 0; i < static_cast<int>(spec.loops[li].points.size()); ++i)
-              if (inBox(spec.loops[li].points[i]) && inBox(spec.loops[li].points[(i + 1) % spec.loops[li].points.size()]))
+              if (inBox(spec.loops[li].points[i]) &&
+                  inBox(spec.loops[li].points[(i + 1) % spec.loops[li].points.size()]))
                 selectedEdges_.insert({li, i});
         boxFrom_.reset();
       }
     }
-    if (dragCorner_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+    if (dragCorner_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
+        ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
       const auto [li, ci] = *dragCorner_;
-      const bool exists = li < static_cast<int>(spec.loops.size()) && ci < static_cast<int>(spec.loops[li].points.size());
+      const bool exists =
+          li < static_cast<int>(spec.loops.size()) && ci < static_cast<int>(spec.loops[li].points.size());
       const Vec2 p = exists ? cornerPoint(li, ci - 1, ci + 1, toWorld(mouse)) : toWorld(mouse);
       if (exists && (spec.loops[li].points[ci] - p).norm() > 1e-12)
-        apply(host, [&](const ExtrusionSpec& s) { return ed::moveCorner(s, li, ci, p); }, "Move corner",
-              "plan-corner-" + std::to_string(li) + "-" + std::to_string(ci));
+        apply(
+            host, [&](const ExtrusionSpec& s) { return ed::moveCorner(s, li, ci, p); }, "Move corner",
+            "plan-corner-" + std::to_string(li) + "-" + std::to_string(ci));
     }
     if (dragCorner_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       dragCorner_.reset();
       host.endDrag();
     }
     // Dragging a feature's marker slides its anchor along its input edge: one undo step.
-    if (dragFeature_ && *dragFeature_ < static_cast<int>(spec.anchors.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
-        ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+    if (dragFeature_ && *dragFeature_ < static_cast<int>(spec.anchors.size()) &&
+        ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
       const int k = *dragFeature_;
       Anchor a = spec.anchors[k].anchor;
       const auto& pts = spec.loops[a.loop].points;
@@ -913,8 +966,9 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       const double along = a.absolute ? t * std::sqrt(len2) : std::clamp(t, 0.0, 1.0);
       if (std::abs(along - a.along) > 1e-12) {
         a.along = along;
-        apply(host, [&](const ExtrusionSpec& s) { return ed::moveMeshAnchor(s, k, a); }, "Move " + spec.anchors[k].name,
-              "feature-anchor-" + std::to_string(k));
+        apply(
+            host, [&](const ExtrusionSpec& s) { return ed::moveMeshAnchor(s, k, a); }, "Move " + spec.anchors[k].name,
+            "feature-anchor-" + std::to_string(k));
       }
     }
     if (dragFeature_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
@@ -924,17 +978,22 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (ImGui::IsWindowFocused() && !selectedCorner_ && !selectedFeature_ && selectedStep_ &&
         (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const int k = *selectedStep_;
-      apply(host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
       selectedStep_.reset();
     }
-    if (ImGui::IsWindowFocused() && !selectedCorner_ && selectedFeature_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+    if (ImGui::IsWindowFocused() && !selectedCorner_ && selectedFeature_ &&
+        (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const int k = *selectedFeature_;
-      apply(host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete feature");
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete feature");
       selectedFeature_.reset();
     }
-    if (ImGui::IsWindowFocused() && selectedCorner_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+    if (ImGui::IsWindowFocused() && selectedCorner_ &&
+        (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const auto [li, ci] = *selectedCorner_;
-      apply(host, [&](const ExtrusionSpec& s) { return ed::deleteCorner(s, li, ci); }, "Delete corner");
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::deleteCorner(s, li, ci); }, "Delete corner");
       selectedCorner_.reset();
     }
   }
@@ -975,7 +1034,8 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     const Vec2 p = toWorld(mouse);
     ImGui::SetTooltip("%.2f, %.2f m%s", p[0], p[1],
                       calibrating_ ? "\ncalibrating: click a point of the image whose distance to another you know"
-                      : drawing_   ? "\nclick to place a corner; click the first one or press Enter to close, Esc to cancel"
+                      : drawing_
+                          ? "\nclick to place a corner; click the first one or press Enter to close, Esc to cancel"
                       : hotFeature ? "\na feature's anchor: drag along its edge, click to edit"
                       : hotStep    ? "\na step's anchor: click to edit its repeat, Delete to remove"
                       : hotCorner  ? "\ndrag to move, Delete to remove"
@@ -1017,20 +1077,23 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     for (const Profile& p : ed::profileLibrary())
       if (ImGui::Selectable(p.name.c_str())) {
         int index = 0;
-        apply(host, [&](const ExtrusionSpec& s) { return ed::addProfile(s, p, &index); }, "Add profile " + p.name);
+        apply(
+            host, [&](const ExtrusionSpec& s) { return ed::addProfile(s, p, &index); }, "Add profile " + p.name);
         profile_ = static_cast<int>(spec.profiles.size());  // the new one, once committed
       }
     ImGui::EndCombo();
   }
   ImGui::SameLine();
   if (ImGui::Button("Add overhang")) ImGui::OpenPopup("overhang");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Insert a horizontal overhang into every profile at one height (Sec. 3.3)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Insert a horizontal overhang into every profile at one height (Sec. 3.3)");
   if (ImGui::BeginPopup("overhang")) {
     ImGui::InputFloat("Height (m)", &overhangHeight_, 0.1f, 1.0f, "%.2f");
     ImGui::InputFloat("Depth (m)", &overhangDepth_, 0.05f, 0.5f, "%.2f");
     if (ImGui::Button("Add to every profile")) {
       const double hh = overhangHeight_, dd = overhangDepth_;
-      apply(host, [&](const ExtrusionSpec& s) { return ed::addOverhang(s, hh, dd); }, "Add overhang");
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::addOverhang(s, hh, dd); }, "Add overhang");
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
@@ -1042,21 +1105,26 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     float wz[2] = {float(p.points[i][0]), float(p.points[i][1])};
     ImGui::SetNextItemWidth(160);
     if (ImGui::InputFloat2("w, z (m)", wz, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue))
-      apply(host, [&](const ExtrusionSpec& s) { return ed::moveProfilePoint(s, profile_, i, Vec2(wz[0], wz[1])); }, "Set profile point");
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::moveProfilePoint(s, profile_, i, Vec2(wz[0], wz[1])); },
+          "Set profile point");
     if (i > 0) {
       ImGui::SameLine();
       char tag[64];
-      std::snprintf(tag, sizeof tag, "%s", static_cast<std::size_t>(i - 1) < p.tags.size() ? p.tags[i - 1].c_str() : "");
+      std::snprintf(tag, sizeof tag, "%s",
+                    static_cast<std::size_t>(i - 1) < p.tags.size() ? p.tags[i - 1].c_str() : "");
       ImGui::SetNextItemWidth(110);
       if (ImGui::InputText("tag below", tag, sizeof tag, ImGuiInputTextFlags_EnterReturnsTrue)) {
         const std::string t = tag;
-        apply(host, [&](const ExtrusionSpec& s) { return ed::setSegmentTag(s, profile_, i - 1, t); }, "Set tag");
+        apply(
+            host, [&](const ExtrusionSpec& s) { return ed::setSegmentTag(s, profile_, i - 1, t); }, "Set tag");
       }
     }
   }
 
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 10.0f), std::max(ImGui::GetContentRegionAvail().y, 10.0f));
+  const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 10.0f),
+                    std::max(ImGui::GetContentRegionAvail().y, 10.0f));
   ImGui::InvisibleButton("profile-canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
   const bool hovered = ImGui::IsItemHovered();
   const ImGuiIO& io = ImGui::GetIO();
@@ -1069,7 +1137,9 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
   auto toScreen = [&](const Vec2& q) {
     return ImVec2(float(origin.x + (q[0] - pw0_) * pzoom_), float(origin.y + size.y - (q[1] - pz0_) * pzoom_));
   };
-  auto toProfile = [&](ImVec2 s) { return Vec2(pw0_ + (s.x - origin.x) / pzoom_, pz0_ + (origin.y + size.y - s.y) / pzoom_); };
+  auto toProfile = [&](ImVec2 s) {
+    return Vec2(pw0_ + (s.x - origin.x) / pzoom_, pz0_ + (origin.y + size.y - s.y) / pzoom_);
+  };
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
   dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(28, 30, 34, 255));
@@ -1080,7 +1150,8 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
   // The plan edge (w = 0) and the ground.
   dl->AddLine(toScreen(Vec2(0, pz0_)), toScreen(Vec2(0, zMax + 1)), IM_COL32(90, 95, 105, 255), 1.5f);
   dl->AddLine(toScreen(Vec2(pw0_, 0)), toScreen(Vec2(pw0_ + size.x / pzoom_, 0)), IM_COL32(90, 95, 105, 255), 1.5f);
-  dl->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(150, 150, 160, 255), "z up; w inward (right) from the plan edge");
+  dl->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(150, 150, 160, 255),
+              "z up; w inward (right) from the plan edge");
 
   std::optional<int> hotPoint, hotSegment;
   double best = 8;
@@ -1104,7 +1175,8 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     // Tags as small triangles beside their segment.
     if (static_cast<std::size_t>(i) < p.tags.size() && !p.tags[i].empty()) {
       const ImVec2 mid((a.x + b.x) / 2 + 8, (a.y + b.y) / 2);
-      dl->AddTriangleFilled(ImVec2(mid.x, mid.y - 4), ImVec2(mid.x, mid.y + 4), ImVec2(mid.x + 7, mid.y), IM_COL32(240, 200, 80, 255));
+      dl->AddTriangleFilled(ImVec2(mid.x, mid.y - 4), ImVec2(mid.x, mid.y + 4), ImVec2(mid.x + 7, mid.y),
+                            IM_COL32(240, 200, 80, 255));
       dl->AddText(ImVec2(mid.x + 10, mid.y - 7), IM_COL32(200, 200, 200, 255), p.tags[i].c_str());
     }
   }
@@ -1140,14 +1212,17 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     const ImVec2 q = toScreen(p.points[i]);
     const bool sel = selectedPoint_ && *selectedPoint_ == i;
     const float r = (hotPoint && *hotPoint == i) || sel ? 5.0f : 3.5f;
-    dl->AddRectFilled(ImVec2(q.x - r, q.y - r), ImVec2(q.x + r, q.y + r), sel ? IM_COL32(255, 255, 255, 255) : IM_COL32(210, 210, 210, 255));
+    dl->AddRectFilled(ImVec2(q.x - r, q.y - r), ImVec2(q.x + r, q.y + r),
+                      sel ? IM_COL32(255, 255, 255, 255) : IM_COL32(210, 210, 210, 255));
   }
   dl->PopClipRect();
 
   if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && hotSegment) {
     const int s = *hotSegment;
     const Vec2 at = toProfile(io.MousePos);
-    apply(host, [&](const ExtrusionSpec& sp) { return ed::insertProfilePoint(sp, profile_, s, at); }, "Insert profile point");
+    apply(
+        host, [&](const ExtrusionSpec& sp) { return ed::insertProfilePoint(sp, profile_, s, at); },
+        "Insert profile point");
     selectedPoint_ = s + 1;
   } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && hotFeature) {
     selectedFeature_ = hotFeature;
@@ -1156,28 +1231,31 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     selectedPoint_ = hotPoint;
     dragPoint_ = hotPoint;
   }
-  if (dragFeatureHeight_ && *dragFeatureHeight_ < static_cast<int>(spec.anchors.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
-      ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+  if (dragFeatureHeight_ && *dragFeatureHeight_ < static_cast<int>(spec.anchors.size()) &&
+      ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
     const int k = *dragFeatureHeight_;
     Anchor a = spec.anchors[k].anchor;
     double z = std::max(0.0, toProfile(io.MousePos)[1]);
     if (!io.KeyAlt) z = std::round(z * 20) / 20;
     if (std::abs(z - a.height) > 1e-12) {
       a.height = z;
-      apply(host, [&](const ExtrusionSpec& s) { return ed::moveMeshAnchor(s, k, a); }, "Move " + spec.anchors[k].name,
-            "feature-height-" + std::to_string(k));
+      apply(
+          host, [&](const ExtrusionSpec& s) { return ed::moveMeshAnchor(s, k, a); }, "Move " + spec.anchors[k].name,
+          "feature-height-" + std::to_string(k));
     }
   }
   if (dragFeatureHeight_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     dragFeatureHeight_.reset();
     host.endDrag();
   }
-  if (dragPoint_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) && *dragPoint_ > 0) {
+  if (dragPoint_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) &&
+      *dragPoint_ > 0) {
     const int i = *dragPoint_;
     Vec2 at = toProfile(io.MousePos);
     if (!io.KeyAlt) at = Vec2(std::round(at[0] * 10) / 10, std::round(at[1] * 10) / 10);
-    apply(host, [&](const ExtrusionSpec& s) { return ed::moveProfilePoint(s, profile_, i, at); }, "Move profile point",
-          "profile-" + std::to_string(profile_) + "-" + std::to_string(i));
+    apply(
+        host, [&](const ExtrusionSpec& s) { return ed::moveProfilePoint(s, profile_, i, at); }, "Move profile point",
+        "profile-" + std::to_string(profile_) + "-" + std::to_string(i));
   }
   if (dragPoint_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     dragPoint_.reset();
@@ -1185,14 +1263,16 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
   }
   if (ImGui::IsWindowFocused() && selectedPoint_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
     const int i = *selectedPoint_;
-    apply(host, [&](const ExtrusionSpec& s) { return ed::deleteProfilePoint(s, profile_, i); }, "Delete profile point");
+    apply(
+        host, [&](const ExtrusionSpec& s) { return ed::deleteProfilePoint(s, profile_, i); }, "Delete profile point");
     selectedPoint_.reset();
   }
   if (hovered) {
     const Vec2 q = toProfile(io.MousePos);
     ImGui::SetTooltip("w %.2f, z %.2f m%s", q[0], q[1],
-                      hotPoint ? "\ndrag (z stays between its neighbours), Delete to remove"
-                               : hotSegment ? "\ndouble-click to add a point" : "");
+                      hotPoint     ? "\ndrag (z stays between its neighbours), Delete to remove"
+                      : hotSegment ? "\ndouble-click to add a point"
+                                   : "");
   }
   ImGui::End();
 }

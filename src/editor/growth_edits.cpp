@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace corbel::editor {
 
@@ -360,6 +362,74 @@ std::optional<SiteEditResult> dragItem(const GrowthSpec& spec, const HandPlaced&
     }
   }
   return std::nullopt;
+}
+
+namespace {
+// The ray parameter at which the ray enters box [lo, hi] (0 when it starts inside), or nullopt.
+std::optional<double> rayEntry(const Vec3& o, const Vec3& d, const Vec3& lo, const Vec3& hi) {
+  double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(d[k]) < 1e-15) {
+      if (o[k] < lo[k] || o[k] > hi[k]) return std::nullopt;
+      continue;
+    }
+    double a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t0 <= t1 ? std::optional<double>(t0) : std::nullopt;
+}
+}  // namespace
+
+std::optional<Vec2> rayOnPlane(const Vec3& origin, const Vec3& dir, double z) {
+  if (std::abs(dir[2]) < 1e-9) return std::nullopt;
+  const double t = (z - origin[2]) / dir[2];
+  if (!(t > 0) || t > 1e4) return std::nullopt;
+  return Vec2(origin[0] + t * dir[0], origin[1] + t * dir[1]);
+}
+
+std::optional<SiteGrab> grabInView(const HandPlaced& h, const growth::Site& site, const Vec3& origin, const Vec3& dir) {
+  std::optional<SiteGrab> best;
+  double bestT = std::numeric_limits<double>::infinity();
+  auto consider = [&](std::optional<SiteItem> item, int index, const Vec3& lo, const Vec3& hi) {
+    const auto t = rayEntry(origin, dir, lo, hi);
+    if (!t || *t >= bestT) return;
+    bestT = *t;
+    const Vec3 p = origin + dir * *t;
+    best = SiteGrab{item, index, p[2], Vec2(p[0], p[1])};
+  };
+  for (int i = 0; i < int(h.seeds.size()); ++i) {
+    const growth::Seed& s = h.seeds[i];
+    const double z = site.base + s.storey * site.storeyHeight;
+    consider(SiteItem::Seed, i, Vec3(s.at[0], s.at[1], z),
+             Vec3(s.at[0] + s.size[0], s.at[1] + s.size[1], z + site.storeyHeight));
+  }
+  for (int i = 0; i < int(h.circulation.size()); ++i) {
+    const growth::Box& c = h.circulation[i];
+    consider(SiteItem::Circulation, i, Vec3(c.lo[0], c.lo[1], c.lo[2]), Vec3(c.hi[0], c.hi[1], c.hi[2]));
+  }
+  for (int i = 0; i < int(h.cores.size()); ++i) {
+    const growth::Rect& c = h.cores[i];
+    consider(SiteItem::Core, i, Vec3(c.u0, c.v0, site.base), Vec3(c.u1, c.v1, site.top()));
+  }
+  // The envelope's corners: the closest approach of the ray to each vertical edge [base, top].
+  for (int i = 0; i < int(site.plan.size()); ++i) {
+    const Vec3 a(site.plan[i][0], site.plan[i][1], site.base);
+    const Vec3 up(0, 0, 1);
+    const double len = site.top() - site.base;
+    // Lines origin + t dir and a + u up: minimise |origin + t dir - a - u up|.
+    const Vec3 w = origin - a;
+    const double b = dir | up, dd = dir | w, e = up | w, den = 1 - b * b;
+    if (den < 1e-12) continue;  // looking straight down the edge
+    const double u = std::clamp((e - b * dd) / den, 0.0, len);
+    const double t = std::max(0.0, (a + up * u - origin) | dir);  // the ray's point nearest that one
+    const Vec3 p = origin + dir * t, q = a + up * u;
+    if ((p - q).norm() > std::max(0.3, 0.015 * t) || t >= bestT) continue;
+    bestT = t;
+    best = SiteGrab{std::nullopt, i, q[2], Vec2(q[0], q[1])};
+  }
+  return best;
 }
 
 std::optional<std::pair<SiteItem, int>> pickItem(const HandPlaced& h, const growth::Site& site, int storey, double x,

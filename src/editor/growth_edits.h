@@ -110,6 +110,22 @@ std::optional<SiteEditResult> dragItem(const GrowthSpec& spec, const HandPlaced&
 std::optional<std::pair<SiteItem, int>> pickItem(const HandPlaced& h, const growth::Site& site, int storey, double x,
                                                  double y);
 
+// What a press in the 3D view grabs, for a drag in plan on the horizontal plane at height z
+// through the grabbed point `at`: the hand-placed core (its full height), circulation box or
+// seed box (on its storey) that the ray (origin, unit dir) enters first, or an envelope corner
+// (item nullopt, index the corner) when the ray passes within max(0.3 m, 1.5 % of its distance)
+// of the corner's vertical edge before it enters any of those. nullopt for nothing.
+struct SiteGrab {
+  std::optional<SiteItem> item;  // nullopt: the envelope corner `index`
+  int index = -1;
+  double z = 0;
+  Vec2 at;
+};
+std::optional<SiteGrab> grabInView(const HandPlaced& h, const growth::Site& site, const Vec3& origin, const Vec3& dir);
+// Where the ray meets the plane at height z (in front of the origin), or nullopt (parallel, or
+// behind it, or farther than 1e4 m: a grazing ray would throw an entry across the site).
+std::optional<Vec2> rayOnPlane(const Vec3& origin, const Vec3& dir, double z);
+
 // Where Add puts a new core of `size` or a new seed: the first place on a 1 m grid over the
 // envelope's bounds (rows from the least y, each from the least x; seeds on `storey`) at which
 // the site stays valid, or nullopt if there is none.

@@ -403,8 +403,10 @@ void GrowthPanel::drawPlan(const GrowthHost& host, const GrowthSpec& spec, float
   if (dragCorner_ >= 0 && ImGui::IsItemActive()) {
     const std::string merge = "site" + std::to_string(host.object) + "envelope corner" + std::to_string(dragCorner_);
     const std::string label = "Move corner " + std::to_string(dragCorner_ + 1) + " of the envelope";
-    if (const auto r = dragEnvelopeCorner(spec, dragPlan_, site.plan, dragCorner_, mx - dragX_, my - dragY_))
+    if (const auto r = dragEnvelopeCorner(spec, dragPlan_, site.plan, dragCorner_, mx - dragX_, my - dragY_)) {
       commitSite(host, *r, label, merge, false);
+      siteEditOpen_ = true;
+    }
   }
   if (dragCorner_ >= 0 && ImGui::IsItemDeactivated()) dragCorner_ = -1;
   if (ImGui::IsItemActivated() && dragCorner_ < 0) {
@@ -558,7 +560,7 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
   ImGui::SetNextItemWidth(120);
   ImGui::SliderInt("Plan storey", &planStorey_, 0, site.storeys - 1);
   ImGui::SameLine();
-  ImGui::TextDisabled("drag to move; drag a corner to reshape");
+  ImGui::TextDisabled("drag to move or reshape");
   drawPlan(host, spec, ImGui::GetContentRegionAvail().x, 120);
   drawFrame(host, spec);
 
@@ -744,6 +746,7 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
     ImGui::PopTextWrapPos();
   }
   statsShown_ = false;
+  siteShown_ = false;
   if (ImGui::BeginTabBar("growthTabs")) {
     const char* names[3] = {"Grow", "Site", "Statistics"};
     for (int t = 0; t < 3; ++t) {
@@ -751,7 +754,10 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
       if (!ImGui::BeginTabItem(names[t], nullptr, flags)) continue;
       ImGui::BeginChild("tab");
       if (t == 0) drawGrow(host, *spec);
-      if (t == 1) drawSite(host, *spec);
+      if (t == 1) {
+        siteShown_ = true;
+        drawSite(host, *spec);
+      }
       if (t == 2) {
         statsShown_ = true;
         drawStatistics(host);
@@ -764,6 +770,89 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
   }
   ImGui::End();
   if (statsShown_ || showViewMaps_) requestInspection(host, *spec);
+}
+
+bool GrowthPanel::beginViewDrag(const GrowthHost& host, const Vec3& origin, const Vec3& dir) {
+  viewGrab_.reset();
+  const DocObject* o = host.doc->find(host.object);
+  const auto* spec = o ? std::get_if<GrowthSpec>(&o->spec) : nullptr;
+  if (!spec || !siteShown_) return false;
+  parseSite(*spec);
+  if (!site_) return false;
+  viewGrab_ = grabInView(hand_, *site_, origin, dir);
+  if (!viewGrab_) return false;
+  dragFrom_ = hand_;
+  dragPlan_ = site_->plan;
+  if (viewGrab_->item) {
+    kind_ = *viewGrab_->item;
+    selected_ = viewGrab_->index;
+    if (kind_ == SiteItem::Seed) planStorey_ = hand_.seeds[std::size_t(selected_)].storey;
+  }
+  return true;
+}
+
+void GrowthPanel::viewDrag(const GrowthHost& host, const Vec3& origin, const Vec3& dir) {
+  if (!viewGrab_) return;
+  const DocObject* o = host.doc->find(host.object);
+  const auto* spec = o ? std::get_if<GrowthSpec>(&o->spec) : nullptr;
+  if (!spec) return;
+  parseSite(*spec);
+  if (!site_) return;
+  const auto p = rayOnPlane(origin, dir, viewGrab_->z);
+  if (!p) return;
+  const double dx = (*p)[0] - viewGrab_->at[0], dy = (*p)[1] - viewGrab_->at[1];
+  const std::string where = std::to_string(host.object);
+  if (viewGrab_->item) {
+    const SiteItem item = *viewGrab_->item;
+    const int i = viewGrab_->index;
+    if (const auto r = dragItem(*spec, dragFrom_, hand_, item, i, dx, dy))
+      commitSite(host, *r, "Move " + std::string(itemName(item)) + " " + std::to_string(i + 1),
+                 "site" + where + itemName(item) + std::to_string(i) + " in view", false);
+  } else if (const auto r = dragEnvelopeCorner(*spec, dragPlan_, site_->plan, viewGrab_->index, dx, dy)) {
+    commitSite(host, *r, "Move corner " + std::to_string(viewGrab_->index + 1) + " of the envelope",
+               "site" + where + "envelope corner" + std::to_string(viewGrab_->index) + " in view", false);
+  }
+}
+
+void GrowthPanel::endViewDrag(const GrowthHost& host) {
+  if (!viewGrab_) return;
+  viewGrab_.reset();
+  host.endDrag();
+  if (!siteError_.empty()) host.log("Site edit refused: " + siteError_, true);
+}
+
+void GrowthPanel::drawViewOverlay(render::Overlay& overlay) const {
+  if (!siteShown_ || !site_) return;
+  const growth::Site& site = *site_;
+  const render::Rgba frame{0.3f, 0.42f, 0.65f, 1}, chosen{1.0f, 0.84f, 0.2f, 1};
+  const std::size_t n = site.plan.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 &a = site.plan[i], &b = site.plan[(i + 1) % n];
+    const bool held = viewGrab_ && !viewGrab_->item && viewGrab_->index == int(i);
+    for (double z : {site.base, site.top()}) overlay.line(Vec3(a[0], a[1], z), Vec3(b[0], b[1], z), frame);
+    overlay.line(Vec3(a[0], a[1], site.base), Vec3(a[0], a[1], site.top()), held ? chosen : frame);
+  }
+  if (selected_ < 0 || selected_ >= itemCount(hand_, kind_)) return;
+  Vec3 lo, hi;
+  if (kind_ == SiteItem::Core) {
+    const growth::Rect& c = hand_.cores[std::size_t(selected_)];
+    lo = Vec3(c.u0, c.v0, site.base), hi = Vec3(c.u1, c.v1, site.top());
+  } else if (kind_ == SiteItem::Circulation) {
+    const growth::Box& c = hand_.circulation[std::size_t(selected_)];
+    lo = Vec3(c.lo[0], c.lo[1], c.lo[2]), hi = Vec3(c.hi[0], c.hi[1], c.hi[2]);
+  } else {
+    const growth::Seed& s = hand_.seeds[std::size_t(selected_)];
+    const double z = site.base + s.storey * site.storeyHeight;
+    lo = Vec3(s.at[0], s.at[1], z), hi = Vec3(s.at[0] + s.size[0], s.at[1] + s.size[1], z + site.storeyHeight);
+  }
+  const Vec3 c[8] = {Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], lo[1], lo[2]), Vec3(hi[0], hi[1], lo[2]),
+                     Vec3(lo[0], hi[1], lo[2]), Vec3(lo[0], lo[1], hi[2]), Vec3(hi[0], lo[1], hi[2]),
+                     Vec3(hi[0], hi[1], hi[2]), Vec3(lo[0], hi[1], hi[2])};
+  for (int k = 0; k < 4; ++k) {
+    overlay.line(c[k], c[(k + 1) % 4], chosen);
+    overlay.line(c[4 + k], c[4 + (k + 1) % 4], chosen);
+    overlay.line(c[k], c[4 + k], chosen);
+  }
 }
 
 void GrowthPanel::uploadViewMaps() {

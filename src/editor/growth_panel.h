@@ -15,6 +15,7 @@
 #include "core/document.h"
 #include "editor/growth_edits.h"
 #include "editor/growth_inspect.h"
+#include "render/overlay.h"
 
 #include <array>
 #include <functional>
@@ -71,6 +72,19 @@ class GrowthPanel {
   // Shows a tab (0 Grow, 1 Site, 2 Statistics), also the actions growth.site and growth.statistics.
   void showTab(int tab) { wantTab_ = tab; }
   void toggleViewMaps() { showViewMaps_ = !showViewMaps_; }
+  // Dragging in the 3D view while the Site tab is shown: a press on a hand-placed core,
+  // circulation box or seed, or next to an envelope corner's vertical edge, grabs it (true: the
+  // view does not orbit); each move drags it in plan on the horizontal plane through the grabbed
+  // point, in 0.5 m steps, refused as the plan view's drag is; the release closes the one undo
+  // step. The grabbed entry is drawn in the view (drawViewOverlay).
+  bool siteShown() const { return siteShown_; }
+  bool beginViewDrag(const GrowthHost& host, const Vec3& origin, const Vec3& dir);
+  void viewDrag(const GrowthHost& host, const Vec3& origin, const Vec3& dir);
+  void endViewDrag(const GrowthHost& host);
+  bool viewDragging() const { return viewGrab_.has_value(); }
+  // While the Site tab is shown: the envelope's outline at the base and the top with its corner
+  // edges, and the chosen entry's box in yellow.
+  void drawViewOverlay(render::Overlay& overlay) const;
   bool viewMapsShown() const { return showViewMaps_; }
 
  private:
@@ -101,11 +115,13 @@ class GrowthPanel {
   std::string siteError_;
   int planStorey_ = 0;
   bool dragging_ = false;
-  bool siteEditOpen_ = false;     // a site edit's merge is open (a field or the plan is held)
-  double dragX_ = 0, dragY_ = 0;  // where the drag started, meters
-  HandPlaced dragFrom_;           // the entries when the drag started
-  int dragCorner_ = -1;           // the envelope corner being dragged in the plan view, or -1
-  std::vector<Vec2> dragPlan_;    // the envelope's plan when that drag started
+  bool siteEditOpen_ = false;         // a site edit's merge is open (a field or the plan is held)
+  double dragX_ = 0, dragY_ = 0;      // where the drag started, meters
+  HandPlaced dragFrom_;               // the entries when the drag started
+  int dragCorner_ = -1;               // the envelope corner being dragged in the plan view, or -1
+  std::vector<Vec2> dragPlan_;        // the envelope's plan when that drag started
+  bool siteShown_ = false;            // the Site tab was drawn last frame
+  std::optional<SiteGrab> viewGrab_;  // what a drag in the 3D view holds
 
   bool slicing_ = false;
   double slice_ = 0;

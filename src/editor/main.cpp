@@ -78,9 +78,12 @@ int main(int argc, char** argv) {
       options.autosaveSeconds = std::atof(value().c_str());
     } else if (a == "--recover") {
       const std::string v = value();
-      if (v == "yes") options.recover = corbel::editor::EditorOptions::Recover::Yes;
-      else if (v == "no") options.recover = corbel::editor::EditorOptions::Recover::No;
-      else if (v == "ask") options.recover = corbel::editor::EditorOptions::Recover::Ask;
+      if (v == "yes")
+        options.recover = corbel::editor::EditorOptions::Recover::Yes;
+      else if (v == "no")
+        options.recover = corbel::editor::EditorOptions::Recover::No;
+      else if (v == "ask")
+        options.recover = corbel::editor::EditorOptions::Recover::Ask;
       else {
         std::fprintf(stderr, "corbel: --recover expects ask, yes or no\n");
         return 2;

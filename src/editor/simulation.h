@@ -114,8 +114,8 @@ class Simulation {
   bool playing_ = false;
   State shown_;
   std::uint64_t revision_ = 0;
-  double pending_ = 0;    // wall time not yet turned into steps (under one step)
-  double stepCost_ = 0;   // wall time of the last step timed, s
+  double pending_ = 0;        // wall time not yet turned into steps (under one step)
+  double stepCost_ = 0;       // wall time of the last step timed, s
   std::future<State> batch_;  // steps on the worker, with the state they end in
 };
 

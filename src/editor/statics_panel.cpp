@@ -297,8 +297,8 @@ void StaticsPanel::simulateShake(const StaticsHost& host) {
     s->shake();
     const sim::ShakeSpec k = sim::paperShake(s->design());
     char line[128];
-    std::snprintf(line, sizeof line, "Shake: the ground moves %.2f m/s along x within %.1f ms at t = %.2f s", k.velocity,
-                  1000 * k.duration, s->time());
+    std::snprintf(line, sizeof line, "Shake: the ground moves %.2f m/s along x within %.1f ms at t = %.2f s",
+                  k.velocity, 1000 * k.duration, s->time());
     host.log(line, false);
   }
 }
@@ -327,8 +327,10 @@ bool StaticsPanel::pickBlock(const StaticsHost& host, const Vec3& origin, const 
   const statics::Block& block = sim_->design().blocks[b];
   if (block.fixed) return false;
   removeChoice_ = block.name;
-  if (removeOnClick_) simulateRemove(host);
-  else host.log("Chose block \"" + block.name + "\": Remove block takes it out of the simulation", false);
+  if (removeOnClick_)
+    simulateRemove(host);
+  else
+    host.log("Chose block \"" + block.name + "\": Remove block takes it out of the simulation", false);
   return true;
 }
 
@@ -356,7 +358,8 @@ void StaticsPanel::drawSimulation(const StaticsHost& host) {
   }
   // The remove-block tool: a block chosen from the list or by a click in the 3D view.
   const std::vector<std::string> names = sim_ ? sim_->removableBlocks() : std::vector<std::string>{};
-  const std::string shown = removeChoice_.empty() ? (sim_ ? sim_->topBlock() : std::string("(top block)")) : removeChoice_;
+  const std::string shown =
+      removeChoice_.empty() ? (sim_ ? sim_->topBlock() : std::string("(top block)")) : removeChoice_;
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
   if (ImGui::BeginCombo("##block", shown.c_str())) {
     for (const std::string& n : names)

@@ -29,7 +29,7 @@ namespace corbel::editor {
 struct StaticsHost {
   const Document* doc = nullptr;
   ObjectId object = 0;
-  bool wait = false;  // scripted runs: wait for the workers so every frame shows the current state
+  bool wait = false;        // scripted runs: wait for the workers so every frame shows the current state
   double frameSeconds = 0;  // wall time since the last frame (the simulation plays by it)
   std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
   std::function<void()> endDrag;
@@ -87,7 +87,7 @@ class StaticsPanel {
   void drawSearch(const StaticsHost& host);
   void drawLandscape(const MasonrySpec& spec);
   void drawSimulation(const StaticsHost& host);
-  Simulation* simulationFor(const StaticsHost& host);  // made on first use; null when it cannot be
+  Simulation* simulationFor(const StaticsHost& host);               // made on first use; null when it cannot be
   using Range = std::pair<std::string, std::pair<double, double>>;  // a parameter and its bounds
   // The landscape's parameter and range for a spec: the chosen one, else the first free one.
   std::optional<Range> landscapeFor(const MasonrySpec& spec) const;

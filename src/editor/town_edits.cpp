@@ -54,8 +54,10 @@ bool hitsBox(const Vec3& o, const Vec3& d, const BBox& box) {
 
 void setTownOverride(Document& doc, ObjectId id, const std::string& building, const TownOverride& o) {
   TownSpec& t = townOf(doc, id);
-  if (o.empty()) t.overrides.erase(building);
-  else t.overrides[building] = o;
+  if (o.empty())
+    t.overrides.erase(building);
+  else
+    t.overrides[building] = o;
 }
 
 namespace {

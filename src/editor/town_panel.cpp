@@ -1,7 +1,7 @@
 #include "editor/town_panel.h"
 
-#include "core/error.h"
 #include "city/street.h"
+#include "core/error.h"
 #include "editor/town_edits.h"
 
 #include <imgui.h>
@@ -66,8 +66,8 @@ void TownPanel::overrideNextType(const TownHost& host) {
   commitOverride(host, o, "Set the type to " + o.type);
 }
 
-bool TownPanel::commitStreets(const TownHost& host, const std::function<void(Document&)>& edit,
-                              const std::string& what, const std::string& merge) {
+bool TownPanel::commitStreets(const TownHost& host, const std::function<void(Document&)>& edit, const std::string& what,
+                              const std::string& merge) {
   Document doc = *host.doc;
   try {
     edit(doc);
@@ -83,7 +83,8 @@ void TownPanel::addStreet(const TownHost& host) {
   if (!townOf(host)) return;
   const TownStreet st = defaultStreet(*host.cache, host.object);
   std::size_t k = 0;
-  if (commitStreets(host, [&](Document& d) { k = editor::addStreet(d, host.object, st); }, "Add a street"))
+  if (commitStreets(
+          host, [&](Document& d) { k = editor::addStreet(d, host.object, st); }, "Add a street"))
     street_ = int(k), point_ = 1, openStreets_ = true;
 }
 
@@ -94,8 +95,9 @@ void TownPanel::bendStreet(const TownHost& host) {
   const auto& pts = t->streets[std::size_t(street_)].points;
   const std::size_t mid = pts.size() / 2;
   const Vec2 to(pts[mid][0], pts[mid][1] - 10);
-  commitStreets(host, [&](Document& d) { moveStreetPoint(d, host.object, std::size_t(street_), mid, to); },
-                "Bend street " + std::to_string(street_ + 1));
+  commitStreets(
+      host, [&](Document& d) { moveStreetPoint(d, host.object, std::size_t(street_), mid, to); },
+      "Bend street " + std::to_string(street_ + 1));
 }
 
 void TownPanel::pick(const TownHost& host, const Vec3& origin, const Vec3& dir) {
@@ -104,8 +106,9 @@ void TownPanel::pick(const TownHost& host, const Vec3& origin, const Vec3& dir) 
       point_ < int(t->streets[std::size_t(street_)].points.size())) {
     if (auto g = groundPoint(origin, dir)) {
       const std::size_t k = std::size_t(street_), i = std::size_t(point_);
-      commitStreets(host, [&](Document& d) { moveStreetPoint(d, host.object, k, i, *g); },
-                    "Move point " + std::to_string(i + 1) + " of street " + std::to_string(k + 1));
+      commitStreets(
+          host, [&](Document& d) { moveStreetPoint(d, host.object, k, i, *g); },
+          "Move point " + std::to_string(i + 1) + " of street " + std::to_string(k + 1));
     }
     return;
   }
@@ -144,7 +147,8 @@ void TownPanel::drawOverlay(const TownHost& host, render::Overlay& overlay) cons
   const render::Rgba c{1.0f, 0.55f, 0.1f, 1.0f};
   Vec3 p[8];
   for (int k = 0; k < 8; ++k) p[k] = Vec3(k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]);
-  const int edges[12][2] = {{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7}, {7, 6}, {6, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  const int edges[12][2] = {{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7},
+                            {7, 6}, {6, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   for (const auto& e : edges) overlay.line(p[e[0]], p[e[1]], c);
 }
 
@@ -156,10 +160,11 @@ void TownPanel::drawStreets(const TownHost& host, const TownSpec& spec) {
   if (openStreets_) ImGui::SetNextItemOpen(true), openStreets_ = false;
   if (!ImGui::CollapsingHeader("Streets (Fig. 26)")) return;
   if (ImGui::SmallButton("Add street")) addStreet(host);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A straight street along the town's south side; its plots become houses");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A straight street along the town's south side; its plots become houses");
   for (std::size_t k = 0; k < spec.streets.size(); ++k) {
-    const std::string label = "street " + std::to_string(k + 1) + " (" + std::to_string(spec.streets[k].points.size()) +
-                              " points)";
+    const std::string label =
+        "street " + std::to_string(k + 1) + " (" + std::to_string(spec.streets[k].points.size()) + " points)";
     ImGui::SameLine();
     if (ImGui::SmallButton(label.c_str())) street_ = int(k), point_ = 0;
   }
@@ -177,9 +182,10 @@ void TownPanel::drawStreets(const TownHost& host, const TownSpec& spec) {
     ImGui::SameLine();
     if (ImGui::DragFloat2(("point " + std::to_string(i + 1)).c_str(), xy, 0.25f, -1e6f, 1e6f, "%.2f")) {
       const Vec2 to(xy[0], xy[1]);
-      commitStreets(host, [&](Document& d) { moveStreetPoint(d, id, k, i, to); },
-                    "Move point " + std::to_string(i + 1) + " of street " + std::to_string(k + 1),
-                    key + ".point." + std::to_string(i));
+      commitStreets(
+          host, [&](Document& d) { moveStreetPoint(d, id, k, i, to); },
+          "Move point " + std::to_string(i + 1) + " of street " + std::to_string(k + 1),
+          key + ".point." + std::to_string(i));
     }
     ImGui::PopID();
   }
@@ -196,27 +202,29 @@ void TownPanel::drawStreets(const TownHost& host, const TownSpec& spec) {
   changed |= ImGui::Checkbox("Plots on both sides", &both);
   if (changed) {
     edit.width = v[0], edit.setback = v[1], edit.depth = v[2], edit.plotWidth = v[3], edit.bothSides = both;
-    commitStreets(host, [&](Document& d) { setStreet(d, id, k, edit); }, "Edit street " + std::to_string(k + 1),
-                  key + ".values");
+    commitStreets(
+        host, [&](Document& d) { setStreet(d, id, k, edit); }, "Edit street " + std::to_string(k + 1), key + ".values");
   }
   if (ImGui::SmallButton("Add point")) {
     TownStreet more = st;
     const auto& a = st.points[st.points.size() - 2];
     const auto& b = st.points.back();
     more.points.push_back({2 * b[0] - a[0], 2 * b[1] - a[1]});  // continues the last span
-    commitStreets(host, [&](Document& d) { setStreet(d, id, k, more); }, "Add a point to street " + std::to_string(k + 1));
+    commitStreets(
+        host, [&](Document& d) { setStreet(d, id, k, more); }, "Add a point to street " + std::to_string(k + 1));
   }
   ImGui::SameLine();
   if (st.points.size() > 2 && point_ >= 0 && ImGui::SmallButton("Remove point")) {
     TownStreet fewer = st;
     fewer.points.erase(fewer.points.begin() + point_);
-    commitStreets(host, [&](Document& d) { setStreet(d, id, k, fewer); },
-                  "Remove a point of street " + std::to_string(k + 1));
+    commitStreets(
+        host, [&](Document& d) { setStreet(d, id, k, fewer); }, "Remove a point of street " + std::to_string(k + 1));
     point_ = std::min(point_, int(fewer.points.size()) - 1);
   }
   ImGui::SameLine();
   if (ImGui::SmallButton("Delete street")) {
-    commitStreets(host, [&](Document& d) { removeStreet(d, id, k); }, "Delete street " + std::to_string(k + 1));
+    commitStreets(
+        host, [&](Document& d) { removeStreet(d, id, k); }, "Delete street " + std::to_string(k + 1));
     street_ = point_ = -1;
   }
 }

@@ -20,11 +20,11 @@ struct TownHost {
   const Document* doc = nullptr;
   ObjectId object = 0;
   const city::TownCache* cache = nullptr;
-  bool building = false;  // the Scene is being rebuilt
-  bool current = true;    // the Scene shows the current document
-  double fraction = 0;    // of that build
-  std::string error;      // the kernel's message for the object ("" = fine)
-  std::string stylesFolder;  // assets/styles
+  bool building = false;         // the Scene is being rebuilt
+  bool current = true;           // the Scene shows the current document
+  double fraction = 0;           // of that build
+  std::string error;             // the kernel's message for the object ("" = fine)
+  std::string stylesFolder;      // assets/styles
   std::function<void()> cancel;  // stops the running build (what it extruded stays cached)
   std::function<void()> retry;   // builds a cancelled state again
   bool cancelled = false;        // the current state's build was cancelled

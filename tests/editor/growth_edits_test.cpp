@@ -368,6 +368,74 @@ TEST(SiteEdits, EnvelopeCornersAreAddedMovedAndRemovedOneAtATime) {
   EXPECT_EQ(removeEnvelopeCorner(*triangle.spec, 0).error, "growth.site.envelope.polygon: needs at least 3 corners");
 }
 
+// The 3D view's grab on the small site (2 storeys of 3 m; lift [10, 12] × [4, 6] full height,
+// landing [13, 15] × [4, 6] × [0, 3], seed [1, 4] × [1, 4] on the ground storey): rays from
+// above and from the side, their entry points by hand, and the drag plane through them.
+TEST(SiteEdits, ThreeDViewGrabsWhatTheRayEntersFirstAndDragsOnItsPlane) {
+  const GrowthSpec spec = smallSite();
+  const growth::Site site = growth::parseSite(spec.site);
+  const HandPlaced h = handPlaced(spec.site);
+  const Vec3 down(0, 0, -1);
+  // Straight down onto the lift's roof at (11, 5): entered at the top, z = 6.
+  auto g = grabInView(h, site, Vec3(11, 5, 20), down);
+  ASSERT_TRUE(g && g->item);
+  EXPECT_EQ(*g->item, SiteItem::Core);
+  EXPECT_EQ(g->index, 0);
+  EXPECT_DOUBLE_EQ(g->z, 6.0);
+  EXPECT_EQ(g->at, Vec2(11, 5));
+  // Down onto the landing's roof (z = 3) and onto the seed's (z = 3, one storey high).
+  g = grabInView(h, site, Vec3(14, 5, 20), down);
+  ASSERT_TRUE(g && g->item);
+  EXPECT_EQ(*g->item, SiteItem::Circulation);
+  EXPECT_DOUBLE_EQ(g->z, 3.0);
+  g = grabInView(h, site, Vec3(2, 2, 20), down);
+  ASSERT_TRUE(g && g->item);
+  EXPECT_EQ(*g->item, SiteItem::Seed);
+  // From the +x side at z = 1 along y = 5: the landing (x = 15) comes before the lift (x = 12).
+  g = grabInView(h, site, Vec3(40, 5, 1), Vec3(-1, 0, 0));
+  ASSERT_TRUE(g && g->item);
+  EXPECT_EQ(*g->item, SiteItem::Circulation);
+  EXPECT_EQ(g->at, Vec2(15, 5));
+  // At z = 4.5 the landing is below the ray: the lift is entered at x = 12.
+  g = grabInView(h, site, Vec3(40, 5, 4.5), Vec3(-1, 0, 0));
+  ASSERT_TRUE(g && g->item);
+  EXPECT_EQ(*g->item, SiteItem::Core);
+  EXPECT_EQ(g->at, Vec2(12, 5));
+  // A ray along y = 10.2 at z = 2 from x = 40 passes 0.2 m beside the envelope's corner
+  // (20, 10) (corner 2) 20 m away, and beside (0, 10) only after it: it grabs corner 2.
+  g = grabInView(h, site, Vec3(40, 10.2, 2), Vec3(-1, 0, 0));
+  ASSERT_TRUE(g);
+  EXPECT_FALSE(g->item);
+  EXPECT_EQ(g->index, 2);
+  EXPECT_DOUBLE_EQ(g->z, 2.0);
+  // 1 m beside it, 40 m away: nothing (the reach there is max(0.3, 0.6) m).
+  EXPECT_FALSE(grabInView(h, site, Vec3(21, -30, 2), Vec3(0, 1, 0)));
+  // A ray along x = 20.2 from y = -30 passes (20, 0) (corner 1) before (20, 10).
+  g = grabInView(h, site, Vec3(20.2, -30, 2), Vec3(0, 1, 0));
+  ASSERT_TRUE(g);
+  EXPECT_FALSE(g->item);
+  EXPECT_EQ(g->index, 1);
+  EXPECT_FALSE(grabInView(h, site, Vec3(30, 30, 20), down));  // outside the site
+
+  // The drag plane: a ray from (11, 5, 20) towards (17, 8, 6) meets z = 6 at (17, 8).
+  Vec3 d(6, 3, -14);
+  d.normalize();
+  const auto p = rayOnPlane(Vec3(11, 5, 20), d, 6.0);
+  ASSERT_TRUE(p);
+  EXPECT_NEAR((*p)[0], 17, 1e-12);
+  EXPECT_NEAR((*p)[1], 8, 1e-12);
+  EXPECT_FALSE(rayOnPlane(Vec3(0, 0, 1), Vec3(1, 0, 0), 6.0));  // parallel
+  EXPECT_FALSE(rayOnPlane(Vec3(0, 0, 1), down, 6.0));           // behind the eye
+  // Grabbed at (11, 5) and dragged to (17, 8): the lift moves by (6, 3) to [16, 18] × [7, 9];
+  // by (10, 0) it would leave the envelope, refused with the validator's message.
+  auto r = dragItem(spec, h, h, SiteItem::Core, 0, (*p)[0] - 11, (*p)[1] - 5);
+  ASSERT_TRUE(r && r->spec) << (r ? r->error : "");
+  EXPECT_EQ(handPlaced(r->spec->site).cores[0], (growth::Rect{16, 7, 18, 9}));
+  r = dragItem(spec, h, h, SiteItem::Core, 0, 10, 0);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->error, "growth.site.cores[0]: lies outside the site envelope");
+}
+
 TEST(SiteEdits, StoreysAndTheirHeightAreCheckedAgainstTheCirculation) {
   const GrowthSpec spec = smallSite();
   History history(withSite(spec));
