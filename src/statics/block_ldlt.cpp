@@ -202,7 +202,7 @@ BlockLdlt::Slot BlockLdlt::slot(int i, int j) const {
 }
 
 bool BlockLdlt::factorize(double minPivot) {
-  std::vector<Block> L;
+  std::vector<Block>& L = scratchL_;
   for (int p = 0; p < n_; ++p) {
     const int start = colStart_[std::size_t(p)], end = colStart_[std::size_t(p) + 1];
     // D_p by a dense LDLᵀ with symmetric pivoting (scaling-invariant, unlike an explicit
@@ -232,12 +232,18 @@ bool BlockLdlt::factorize(double minPivot) {
 }
 
 Eigen::VectorXd BlockLdlt::solve(const Eigen::VectorXd& b) const {
-  Eigen::VectorXd y(b.size());
+  Eigen::VectorXd x;
+  solve(b, x);
+  return x;
+}
+
+void BlockLdlt::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  Eigen::VectorXd& y = scratchY_;
+  y.resize(b.size());
   for (int p = 0; p < n_; ++p) y.segment<6>(6 * p) = b.segment<6>(6 * perm_[std::size_t(p)]);
   if (n_ > 0) blockSubstitute(n_, colStart_.data(), rows_.data(), values_[0].data(), pivots_.data(), y.data());
-  Eigen::VectorXd x(b.size());
+  x.resize(b.size());
   for (int p = 0; p < n_; ++p) x.segment<6>(6 * perm_[std::size_t(p)]) = y.segment<6>(6 * p);
-  return x;
 }
 
 }  // namespace corbel::statics

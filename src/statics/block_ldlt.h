@@ -38,6 +38,8 @@ class BlockLdlt {
   bool factorize(double minPivot = 1e-15);
 
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // The same into x (sized here; not b), without allocating once x has its size.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
   long factorNonZeroBlocks() const { return long(values_.size()); }
 
@@ -51,6 +53,8 @@ class BlockLdlt {
   std::vector<int> updTarget_;  // per pair (a ≥ b) of a column's rows: the slot updated
   std::vector<Block> values_;
   std::vector<Eigen::LDLT<Block>> dfac_;  // per position: D's factorisation
+  std::vector<Block> scratchL_;           // factorize's L of one column
+  mutable Eigen::VectorXd scratchY_;      // solve's permuted vector
  public:
   // D_p's factorisation D = Pᵀ L diag(d) Lᵀ P as plain arrays, for the vectorised kernels.
   struct Pivot {

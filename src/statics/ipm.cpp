@@ -158,10 +158,14 @@ class SchurFactor {
   void analyzeBlocks(int n, const std::vector<std::pair<int, int>>& pairs) { blocks_.analyze(n, pairs); }
   BlockLdlt& blocks() { return blocks_; }
   bool factorizeBlocks() { return blocks_.factorize(); }
-  VectorXd solve(const VectorXd& b) {
-    if (kind_ == SchurSolver::Cholmod) return cholmod_.solve(b);
-    if (kind_ == SchurSolver::BlockLdlt) return blocks_.solve(b);
-    return ldlt_.solve(b);
+  // x = S⁻¹ b (x not b; the block path allocates nothing).
+  void solve(const VectorXd& b, VectorXd& x) {
+    if (kind_ == SchurSolver::Cholmod)
+      x = cholmod_.solve(b);
+    else if (kind_ == SchurSolver::BlockLdlt)
+      blocks_.solve(b, x);
+    else
+      x = ldlt_.solve(b);
   }
 
  private:
@@ -207,8 +211,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int k = 0; k < blk.size; ++k) coef[4 * i + std::size_t(k)] = blk.rows[r][k];
     }
   }
-  auto Gx = [&](const VectorXd& v) {
-    VectorXd out(mi);
+  // G v and Gᵀ w into `out` (sized by the caller; Gᵀ w's is overwritten).
+  auto Gx = [&](const VectorXd& v, VectorXd& out) {
     for (std::size_t i = 0; i < std::size_t(mi); ++i) {
       const double* g = &coef[4 * i];
       const double* x0 = v.data() + rowOffset[i];
@@ -216,17 +220,15 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int k = 0; k < rowSize[i]; ++k) acc += g[k] * x0[k];
       out[Eigen::Index(i)] = acc;
     }
-    return out;
   };
-  auto GTv = [&](const VectorXd& w) {
-    VectorXd out = VectorXd::Zero(n);
+  auto GTv = [&](const VectorXd& w, VectorXd& out) {
+    out.setZero();
     for (std::size_t i = 0; i < std::size_t(mi); ++i) {
       const double* g = &coef[4 * i];
       double* o = out.data() + rowOffset[i];
       const double wi = w[Eigen::Index(i)];
       for (int k = 0; k < rowSize[i]; ++k) o[k] += g[k] * wi;
     }
-    return out;
   };
   VectorXd qdiag = VectorXd::Zero(n), c = VectorXd::Zero(n);
   for (const VarBlock& blk : qp.blocks)
@@ -401,12 +403,23 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // (the same sense as `optimal`) and G x ≥ 0 exactly (checked on every row, not via s).
   const bool objectiveNonNegative = options.objectiveExitBelow > 0 && (c.size() == 0 || c.cwiseAbs().maxCoeff() == 0) &&
                                     (n == 0 || qdiag.minCoeff() >= 0);
+  // The iteration's vectors, allocated once: a fresh vector of 50,000 doubles costs its page
+  // faults (the kernel zeroing new pages was 14 % of the 1,040-block wall's QP when every
+  // step allocated its temporaries). Each is computed with the same operations in the same
+  // order as the expressions they replace, so the iterates are bit for bit the same.
+  VectorXd gx(mi), rd(n), rp(m), rg(mi), d(mi), rc(mi), tn(n), tm(m), tm2(m), ti(mi);
+  VectorXd w(mi), rho(n), rhs(m), r1(n), r2(m), ddy(m), dx(n), dy(m), dz(mi), ds(mi), xt(n), gxt(mi), rpt(m);
+  VectorXd sn1(n), sn2(n);
   const auto started = std::chrono::steady_clock::now();
   for (int iter = 0;; ++iter) {
-    const VectorXd gx = Gx(x);
-    const VectorXd rd = qdiag.cwiseProduct(x) + c - qp.A.transpose() * y - GTv(z);
-    const VectorXd rp = qp.A * x - qp.b;
-    const VectorXd rg = gx - s;
+    Gx(x, gx);
+    rd = qdiag.cwiseProduct(x) + c;
+    rd.noalias() -= qp.A.transpose() * y;
+    GTv(z, tn);
+    rd -= tn;
+    rp.noalias() = qp.A * x;
+    rp -= qp.b;
+    rg = gx - s;
     const double gap = s.dot(z);
     if (record(iter, rp, rd, gap)) {
       best.status = SolveStatus::Optimal;
@@ -418,7 +431,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       // x̃: every block moved along its null direction e by the δ ≥ 0 that minimises the
       // block's objective ½Σq(x + δe)², capped so that every row g·x ≥ 0 stays so. A e = 0, so
       // A x̃ = A x up to rounding (checked again below).
-      VectorXd xt = x;
+      xt = x;
       for (int j = 0; j < nb; ++j) {
         const VarBlock& blk = qp.blocks[std::size_t(j)];
         const auto& e = blk.nullDirection;
@@ -438,9 +451,10 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       }
       const double obj = 0.5 * xt.dot(qdiag.cwiseProduct(xt));
       if (obj <= options.objectiveExitBelow) {
-        const VectorXd rpt = qp.A * xt - qp.b;
+        rpt.noalias() = qp.A * xt;
+        rpt -= qp.b;
         const double prt = rpt.size() ? rpt.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
-        const VectorXd gxt = Gx(xt);
+        Gx(xt, gxt);
         if (prt <= options.residualTolerance && (mi == 0 || gxt.minCoeff() >= 0)) {
           IpmResult early;
           early.status = SolveStatus::Optimal;
@@ -464,7 +478,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       return stop(SolveStatus::TimeLimit);
     }
     const double mu = mi ? gap / mi : 0.0;
-    const VectorXd d = z.cwiseQuotient(s);
+    d = z.cwiseQuotient(s);
 
     // Block Hessians and their inverses.
     for (int j = 0; j < nb; ++j) {
@@ -546,8 +560,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     if (regularisation < 1e-14) regularisation = 0;
 
     // M v block by block, for M = H⁻¹ or H.
-    auto applyBlocks = [&](const std::vector<Mat4>& M, const VectorXd& v) {
-      VectorXd out(n);
+    auto applyBlocks = [&](const std::vector<Mat4>& M, const VectorXd& v, VectorXd& out) {
       for (int j = 0; j < nb; ++j) {
         const VarBlock& blk = qp.blocks[j];
         Eigen::Vector4d in = Eigen::Vector4d::Zero();
@@ -555,10 +568,9 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         const Eigen::Vector4d o = M[std::size_t(j)] * in;
         for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
       }
-      return out;
     };
-    auto applyHinv = [&](const VectorXd& v) { return applyBlocks(hinv, v); };
-    auto applyH = [&](const VectorXd& v) { return applyBlocks(hess, v); };
+    auto applyHinv = [&](const VectorXd& v, VectorXd& out) { applyBlocks(hinv, v, out); };
+    auto applyH = [&](const VectorXd& v, VectorXd& out) { applyBlocks(hess, v, out); };
     // S dy = rhs with one step of iterative refinement against S applied as A H⁻¹ Aᵀ (near the
     // optimum S mixes entries of very different sizes, z/s → 0 or ∞).
     // On the block path, A H⁻¹ u, A H⁻¹ Aᵀ v and H⁻¹(u + Aᵀ v) in one pass over the blocks'
@@ -583,29 +595,41 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int k = 0; k < blk.size; ++k) in[k] = u[blk.offset + k];
       return in;
     };
-    auto applyAHinv = [&](const VectorXd& u) {
-      if (!blockwise) return VectorXd(qp.A * applyHinv(u));
-      VectorXd out = VectorXd::Zero(m);
+    // The three products write `out` (never one of their inputs); the scalar path uses sn1, sn2.
+    auto applyAHinv = [&](const VectorXd& u, VectorXd& out) {
+      if (!blockwise) {
+        applyHinv(u, sn1);
+        out.noalias() = qp.A * sn1;
+        return;
+      }
+      out.setZero();
       for (int j = 0; j < nb; ++j) {
         const BlockCols12& bc = cols12[std::size_t(j)];
         if (bc.groups == 0) continue;
         scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * blockIn(j, u)), out);
       }
-      return out;
     };
-    auto applySchur = [&](const VectorXd& v) {
-      if (!blockwise) return VectorXd(qp.A * applyHinv(qp.A.transpose() * v));
-      VectorXd out = VectorXd::Zero(m);
+    auto applySchur = [&](const VectorXd& v, VectorXd& out) {
+      if (!blockwise) {
+        sn1.noalias() = qp.A.transpose() * v;
+        applyHinv(sn1, sn2);
+        out.noalias() = qp.A * sn2;
+        return;
+      }
+      out.setZero();
       for (int j = 0; j < nb; ++j) {
         const BlockCols12& bc = cols12[std::size_t(j)];
         if (bc.groups == 0) continue;
         scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * (bc.vals.transpose() * gather(bc, v))), out);
       }
-      return out;
     };
-    auto hinvPlusAT = [&](const VectorXd& u, const VectorXd& v) {
-      if (!blockwise) return applyHinv(u + qp.A.transpose() * v);
-      VectorXd out(n);
+    auto hinvPlusAT = [&](const VectorXd& u, const VectorXd& v, VectorXd& out) {
+      if (!blockwise) {
+        sn1 = u;
+        sn1.noalias() += qp.A.transpose() * v;
+        applyHinv(sn1, out);
+        return;
+      }
       for (int j = 0; j < nb; ++j) {
         const BlockCols12& bc = cols12[std::size_t(j)];
         Eigen::Vector4d in = blockIn(j, u);
@@ -614,52 +638,65 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         const VarBlock& blk = qp.blocks[std::size_t(j)];
         for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
       }
-      return out;
     };
-    auto solveSchur = [&](const VectorXd& rhs) {
-      VectorXd dy = ldlt.solve(rhs);
-      const VectorXd r = rhs - applySchur(dy) - (regularisation)*dy;
-      dy += ldlt.solve(r);
-      return dy;
+    // S out = rhs, refined once against S (uses tm, tm2).
+    auto solveSchur = [&](const VectorXd& rhsv, VectorXd& out) {
+      ldlt.solve(rhsv, out);
+      applySchur(out, tm);
+      tm2 = rhsv - tm - (regularisation)*out;
+      ldlt.solve(tm2, tm);
+      out += tm;
     };
     // `refine`: false for the predictor, whose step only sets the centring σ and the
     // second-order term of the corrector (its errors perturb the centring, not the iterate):
-    // one plain solve with the factorisation, no refinement.
-    auto newton = [&](const VectorXd& rc, VectorXd& dx, VectorXd& dy, VectorXd& dz, VectorXd& ds, bool refine) {
-      const VectorXd w = rc.cwiseQuotient(s) + d.cwiseProduct(rg);
-      const VectorXd rho = -rd - GTv(w);
-      const VectorXd rhs = -rp - applyAHinv(rho);
+    // one plain solve with the factorisation, no refinement. Writes dx, dy, dz, ds.
+    auto newton = [&](const VectorXd& rcv, bool refine) {
+      w = rcv.cwiseQuotient(s) + d.cwiseProduct(rg);
+      GTv(w, tn);
+      rho = -rd - tn;
+      applyAHinv(rho, tm);
+      rhs = -rp - tm;
       // Once the correction on the unreduced system below runs, it also corrects the Schur
       // solve's error: both solves are then plain (3 solves an iteration instead of 5; the
       // equilibrium residuals measured stay within 2× of the refined ones, 1e-16..5e-12).
       const bool unreduced = refine && mu < kRefineBelowMu && options.newtonRefinement > 0;
-      dy = refine && !unreduced ? solveSchur(rhs) : ldlt.solve(rhs);
-      dx = hinvPlusAT(rho, dy);
+      if (refine && !unreduced)
+        solveSchur(rhs, dy);
+      else
+        ldlt.solve(rhs, dy);
+      hinvPlusAT(rho, dy, dx);
       // Refinement on the unreduced system H dx − Aᵀ dy = rho, A dx = −rp: forming the Schur
       // right-hand side cancels large terms (H⁻¹ reaches 1/μ), which leaves A dx + rp at
       // 1e-11..1e-10 near the optimum of strongly infeasible models; one correction solved
       // with the same factorisation brings it back to rounding. Only needed once μ is small.
       for (int step = 0; refine && mu < kRefineBelowMu && step < options.newtonRefinement; ++step) {
-        const VectorXd r1 = rho + qp.A.transpose() * dy - applyH(dx);
-        const VectorXd r2 = -rp - qp.A * dx;
-        const VectorXd ddy = ldlt.solve(r2 - applyAHinv(r1));
-        dx += hinvPlusAT(r1, ddy);
+        r1 = rho;
+        r1.noalias() += qp.A.transpose() * dy;
+        applyH(dx, tn);
+        r1 -= tn;
+        r2 = -rp;
+        r2.noalias() -= qp.A * dx;
+        applyAHinv(r1, tm);
+        tm2 = r2 - tm;
+        ldlt.solve(tm2, ddy);
+        hinvPlusAT(r1, ddy, tn);
+        dx += tn;
         dy += ddy;
       }
-      const VectorXd gdx = Gx(dx);
-      dz = -w - d.cwiseProduct(gdx);
-      ds = gdx + rg;
+      Gx(dx, ti);
+      dz = -w - d.cwiseProduct(ti);
+      ds = ti + rg;
       return allFinite(dx) && allFinite(dy) && allFinite(dz);
     };
-    VectorXd dx, dy, dz, ds;
-    if (!newton(s.cwiseProduct(z), dx, dy, dz, ds, false)) {
+    rc = s.cwiseProduct(z);
+    if (!newton(rc, false)) {
       return stop(SolveStatus::NumericalFailure);
     }
     const double aAff = std::min({1.0, maxStep(s, ds), maxStep(z, dz)});
     const double muAff = mi ? (s + aAff * ds).dot(z + aAff * dz) / mi : 0.0;
     const double sigma = mu > 0 ? std::pow(std::clamp(muAff / mu, 0.0, 1.0), 3) : 0.0;
-    const VectorXd rc = s.cwiseProduct(z) + ds.cwiseProduct(dz) - VectorXd::Constant(mi, sigma * mu);
-    if (!newton(rc, dx, dy, dz, ds, true)) {
+    rc = s.cwiseProduct(z) + ds.cwiseProduct(dz) - VectorXd::Constant(mi, sigma * mu);
+    if (!newton(rc, true)) {
       return stop(SolveStatus::NumericalFailure);
     }
     const double alpha = std::min(1.0, 0.995 * std::min(maxStep(s, ds), maxStep(z, dz)));
