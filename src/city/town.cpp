@@ -2,6 +2,8 @@
 
 #include "extrude/batch.h"
 
+#include <future>
+#include <memory>
 #include <numeric>
 
 namespace corbel::city {
@@ -44,17 +46,25 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
   batch.mergeCoplanar = options.mergeCoplanar;
   batch.timeLimitSeconds = options.timeLimitSeconds;
   const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
-  for (std::size_t from = 0; from < order.size(); from += chunk) {
-    const std::size_t to = std::min(order.size(), from + chunk);
-    std::vector<BuildingReport> reports(to - from);
-    std::vector<extrude::BatchItem> items(to - from);
-    for (std::size_t k = from; k < to; ++k) {
+  // One chunk: its buildings styled, ready to extrude, and their reports.
+  struct Chunk {
+    std::size_t from = 0, to = 0;
+    std::vector<BuildingReport> reports;
+    std::vector<extrude::BatchItem> items;
+  };
+  auto prepare = [&](std::size_t from) {
+    auto c = std::make_unique<Chunk>();
+    c->from = from;
+    c->to = std::min(order.size(), from + chunk);
+    c->reports.resize(c->to - from);
+    c->items.resize(c->to - from);
+    for (std::size_t k = from; k < c->to; ++k) {
       const Building& b = town.buildings[order[k]];
-      BuildingReport& r = reports[k - from];
+      BuildingReport& r = c->reports[k - from];
       r.index = order[k];
       r.id = b.id;
       r.notes = b.notes;
-      extrude::BatchItem& item = items[k - from];
+      extrude::BatchItem& item = c->items[k - from];
       item.id = b.id;
       if (!b.problem.empty()) {
         item.problem = b.problem;
@@ -70,14 +80,31 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
       if (options.detail == Detail::Massing) item.spec.steps.clear();
       item.problem = s.problem;
     }
-    std::vector<extrude::BatchResult> results = extrude::extrudeBatch(items, batch);
+    return c;
+  };
+  if (order.empty()) return sum;
+  // The sink runs on this thread while the next chunk is extruded (styling a chunk and handing
+  // its meshes on are serial; without the overlap one core idled through them). The chunks are
+  // declared before the future, so that on an exception (a cancelled progress) the running
+  // extrusion is waited for before the items it reads go.
+  std::unique_ptr<Chunk> current = prepare(0), next;
+  auto launch = [&](const Chunk* c) {
+    return std::async(std::launch::async, [&batch, c] { return extrude::extrudeBatch(c->items, batch); });
+  };
+  std::future<std::vector<extrude::BatchResult>> running = launch(current.get());
+  while (true) {
+    std::vector<extrude::BatchResult> results = running.get();
+    if (current->to < order.size()) {
+      next = prepare(current->to);
+      running = launch(next.get());
+    }
     for (std::size_t k = 0; k < results.size(); ++k) {
-      BuildingReport& r = reports[k];
+      BuildingReport& r = current->reports[k];
       extrude::BatchResult& res = results[k];
       r.ok = res.ok;
       r.error = res.error;
       r.warnings = std::move(res.warnings);
-      if (!items[k].problem.empty())
+      if (!current->items[k].problem.empty())
         ++sum.refused;
       else if (!res.ok)
         ++sum.failed;
@@ -91,7 +118,9 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
       sink(r, res.ok ? &res.mesh : nullptr);
       res.mesh = MeshData();  // handed on: drop it now
     }
-    if (progress) progress(to, order.size());
+    if (progress) progress(current->to, order.size());
+    if (current->to >= order.size()) break;
+    current = std::move(next);
   }
   return sum;
 }
