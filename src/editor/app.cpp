@@ -676,10 +676,7 @@ void App::registerActions() {
        false,
        [this] { statics_.closeSimulation(); },
        [this] { return statics_.simulating(); }});
-  auto growthSelected = [this] {
-    const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
-    return o && std::holds_alternative<GrowthSpec>(o->spec);
-  };
+  auto growthSelected = [this] { return selectedGrowth() != nullptr; };
   add({"growth.step",
        "Growth",
        "Step",
@@ -1253,10 +1250,7 @@ void App::handleViewportInput() {
   const bool inside = m.x >= vpX_ && m.x < vpX_ + vpW_ && m.y >= vpY_ && m.y < vpY_ + vpH_;
   // A drag of a growth site's entry or envelope corner (the Site tab shown) holds the mouse
   // until the button is let go, wherever it is then.
-  const bool growthSite = [&] {
-    const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
-    return o && std::holds_alternative<GrowthSpec>(o->spec);
-  }();
+  const bool growthSite = selectedGrowth() != nullptr;
   if (growthPanel_.viewDragging()) {
     if (!growthSite || !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       growthPanel_.endViewDrag(growthHost());
@@ -1427,6 +1421,11 @@ GrowthHost App::growthHost() {
   host.endDrag = deferredEndDrag();
   host.log = [this](const std::string& line, bool error) { log(line, error); };
   return host;
+}
+
+const DocObject* App::selectedGrowth() const {
+  const DocObject* o = selected_ ? history_.current().find(*selected_) : nullptr;
+  return o && std::holds_alternative<GrowthSpec>(o->spec) ? o : nullptr;
 }
 
 const DocObject* App::selectedTown() const {
@@ -1657,9 +1656,7 @@ int App::run() {
       statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
     if (growthFor_ && selected_ == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
     if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
-    if (const DocObject* g = selected_ ? doc.find(*selected_) : nullptr;
-        g && std::holds_alternative<GrowthSpec>(g->spec))
-      growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
+    if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
     renderer_->setScene(shownScene(), settings_);
     const int px = int(vpX_ * sx), py = int((vp->Size.y - vpY_ - vpH_) * sy), pw = int(vpW_ * sx), ph = int(vpH_ * sy);
     renderer_->draw(camera_, px, py, pw, ph, settings_);

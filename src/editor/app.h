@@ -97,6 +97,7 @@ class App {
   CompletionHost completionHost();
   TownHost townHost();
   const DocObject* selectedTown() const;
+  const DocObject* selectedGrowth() const;
   std::function<void(Document, const std::string&, const std::string&)> deferredCommit();
   std::function<void()> deferredEndDrag();
   std::string windowTitle() const;
