@@ -96,6 +96,17 @@ std::map<std::string, BuildingOverride> resolveOverrides(const Style& style, con
         throw InputError(at + ".profiles." + side, "the style \"" + style.name + "\" has no profile named \"" + name + "\"");
       r.profiles[*orientation] = index;
     }
+    for (const auto& [key, name] : o.edges) {
+      const auto edge = parseTownEdgeKey(key);
+      if (!edge) throw InputError(at + ".edges", "expected an edge \"LOOP:EDGE\" (as \"0:3\"), found \"" + key + "\"");
+      int index = -1;
+      for (std::size_t i = 0; i < style.profiles.size(); ++i)
+        if (style.profiles[i].name == name) index = static_cast<int>(i);
+      if (index < 0)
+        throw InputError(at + ".edges[\"" + key + "\"]",
+                         "the style \"" + style.name + "\" has no profile named \"" + name + "\"");
+      r.edges[*edge] = index;
+    }
     out[id] = std::move(r);
   }
   return out;
@@ -132,9 +143,23 @@ BuildResult TownCache::build(const DocObject& object, Progress* progress, std::s
   const Detail detail = detailFromName(spec.detail);
   const std::map<std::string, BuildingOverride> overrides = resolveOverrides(in->style, spec);
   for (const auto& [id, o] : spec.overrides) {
-    bool found = false;
-    for (const Building& b : in->town.buildings) found = found || b.id == id;
+    const Building* found = nullptr;
+    for (const Building& b : in->town.buildings)
+      if (b.id == id) found = &b;
     if (!found) throw InputError("town.overrides[\"" + id + "\"]", "no footprint has this id");
+    // An edge override must name an edge of the cleaned footprint.
+    for (const auto& [key, name] : o.edges) {
+      const auto [loop, edge] = *parseTownEdgeKey(key);
+      const std::string at = "town.overrides[\"" + id + "\"].edges[\"" + key + "\"]";
+      if (found->loops.empty()) throw InputError(at, "the footprint has no plan to override: " + found->problem);
+      if (loop >= static_cast<int>(found->loops.size()))
+        throw InputError(at, "the footprint has " + std::to_string(found->loops.size()) + " loop(s) (0 to " +
+                                 std::to_string(found->loops.size() - 1) + ")");
+      if (edge >= static_cast<int>(found->loops[loop].size()))
+        throw InputError(at, "loop " + std::to_string(loop) + " of the footprint has " +
+                                 std::to_string(found->loops[loop].size()) + " edges (0 to " +
+                                 std::to_string(found->loops[loop].size() - 1) + ")");
+    }
   }
 
   // Style every building (cheap) to learn its inputs' hash; extrude only the ones not cached.

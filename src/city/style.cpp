@@ -380,8 +380,10 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
       return out;
     }
     int p = rule->profiles[random.pick(rule->profiles)].index;
-    if (override)
+    if (override) {
       if (auto it = override->profiles.find(e.orientation); it != override->profiles.end()) p = it->second;
+      if (auto it = override->edges.find({e.loop, e.edge}); it != override->edges.end()) p = it->second;
+    }
     spec.loops[e.loop].profile[e.edge] = p;
     used.insert(p);
   }

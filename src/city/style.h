@@ -120,11 +120,13 @@ class BuildingRandom {
 std::optional<std::size_t> assignType(const Style& style, const Building& b, BuildingRandom& random);
 
 // A user's override of one building (core/town_spec.h, resolved against a style): its type
-// (index into style.types) and, per edge orientation, the profile (index into style.profiles).
-// The building's random draws are made as without it, so nothing else about it changes.
+// (index into style.types), per edge orientation the profile (index into style.profiles), and
+// per edge (loop, edge) the profile, which wins over its orientation's. The building's random
+// draws are made as without it, so nothing else about it changes.
 struct BuildingOverride {
   std::optional<std::size_t> type;
   std::map<Orientation, int> profiles;
+  std::map<std::pair<int, int>, int> edges;
 };
 
 struct StyledBuilding {

@@ -121,6 +121,26 @@ std::optional<std::string> checkUnitSpec(const UnitSpec& s) {
   return std::nullopt;
 }
 
+std::optional<std::pair<int, int>> parseTownEdgeKey(const std::string& key) {
+  const auto colon = key.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == key.size()) return std::nullopt;
+  int parts[2] = {0, 0};
+  std::size_t k = 0;
+  for (int i = 0; i < 2; ++i, ++k) {
+    const std::size_t end = i == 0 ? colon : key.size();
+    if (end - k > 6) return std::nullopt;  // below 10⁶, and no overflow
+    for (; k < end; ++k) {
+      if (key[k] < '0' || key[k] > '9') return std::nullopt;
+      parts[i] = parts[i] * 10 + (key[k] - '0');
+    }
+  }
+  // One spelling per edge, so that equal overrides compare equal: no leading zeros.
+  if (townEdgeKey(parts[0], parts[1]) != key) return std::nullopt;
+  return std::pair{parts[0], parts[1]};
+}
+
+std::string townEdgeKey(int loop, int edge) { return std::to_string(loop) + ":" + std::to_string(edge); }
+
 std::optional<std::string> checkTownSpec(const TownSpec& s) {
   if (s.footprints.empty() && s.footprintsJson.empty()) return "footprints: a footprint file or embedded GeoJSON is needed";
   if (s.style.empty() && s.styleJson.empty()) return "style: a style file or an embedded style is needed";
@@ -135,6 +155,11 @@ std::optional<std::string> checkTownSpec(const TownSpec& s) {
       if (side != "street" && side != "side" && side != "back")
         return at + ".profiles: expected \"street\", \"side\" or \"back\", found \"" + side + "\"";
       if (profile.empty()) return at + ".profiles." + side + ": the profile name must not be empty";
+    }
+    for (const auto& [key, profile] : o.edges) {
+      if (!parseTownEdgeKey(key))
+        return at + ".edges: expected an edge \"LOOP:EDGE\" (as \"0:3\"), found \"" + key + "\"";
+      if (profile.empty()) return at + ".edges[\"" + key + "\"]: the profile name must not be empty";
     }
   }
   if (s.streets.size() > limits::kMaxTownStreets) return "streets: too many (at most 256)";

@@ -313,6 +313,11 @@ ojson townToJson(const TownSpec& t, const std::string& folder) {
         for (const auto& [side, name] : o.profiles) profiles[side] = name;
         oj["profiles"] = std::move(profiles);
       }
+      if (!o.edges.empty()) {
+        ojson edges = ojson::object();
+        for (const auto& [key, name] : o.edges) edges[key] = name;
+        oj["edges"] = std::move(edges);
+      }
       overrides[id] = std::move(oj);
     }
     j["overrides"] = std::move(overrides);
@@ -366,7 +371,7 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
       o.expectObject();
       if (id.empty()) o.fail("a footprint id must not be empty");
       if (id.size() > limits::kMaxNameLength) o.fail("the footprint id is too long");
-      for (auto& k : o.unknownKeys({"type", "profiles"})) warnings.push_back(k + ": unknown key ignored");
+      for (auto& k : o.unknownKeys({"type", "profiles", "edges"})) warnings.push_back(k + ": unknown key ignored");
       TownOverride over;
       if (auto ty = o.find("type")) {
         over.type = ty->string(limits::kMaxNameLength);
@@ -383,7 +388,17 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
           over.profiles[side] = profile;
         }
       }
-      if (over.empty()) o.fail("overrides nothing: expected \"type\" or \"profiles\"");
+      if (auto ed = o.find("edges")) {
+        ed->expectObject();
+        for (const auto& [key, name] : ed->raw().items()) {
+          const JsonReader n(name, ed->path() + "[\"" + key + "\"]");
+          if (!parseTownEdgeKey(key)) n.fail("expected an edge \"LOOP:EDGE\" (as \"0:3\"), found \"" + key + "\"");
+          const std::string profile = n.string(limits::kMaxNameLength);
+          if (profile.empty()) n.fail("the profile name must not be empty");
+          over.edges[key] = profile;
+        }
+      }
+      if (over.empty()) o.fail("overrides nothing: expected \"type\", \"profiles\" or \"edges\"");
       t.overrides[id] = std::move(over);
     }
   }

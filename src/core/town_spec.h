@@ -14,11 +14,15 @@
 namespace corbel {
 
 // What the user changed on one building: its type (a type name of the style, "" = as the style
-// assigns it) and, per edge orientation ("street", "side", "back"), the profile its edges take.
+// assigns it), per edge orientation ("street", "side", "back") the profile its edges take, and
+// per single edge the profile that edge takes (it wins over its orientation's). An edge is
+// named "L:E": edge E (from corner E to corner E + 1) of loop L of the cleaned footprint, the
+// numbering the Town panel's plan view shows.
 struct TownOverride {
   std::string type;
   std::map<std::string, std::string> profiles;
-  bool empty() const { return type.empty() && profiles.empty(); }
+  std::map<std::string, std::string> edges;
+  bool empty() const { return type.empty() && profiles.empty() && edges.empty(); }
   bool operator==(const TownOverride&) const = default;
 };
 
@@ -56,6 +60,11 @@ inline constexpr std::size_t kMaxEmbeddedBytes = 32u << 20;  // embedded footpri
 inline constexpr std::size_t kMaxTownStreets = 256;
 inline constexpr std::size_t kMaxStreetPoints = 64;
 }  // namespace limits
+
+// Reads an edge key "L:E" of TownOverride::edges (two decimal numbers, each below 10⁶);
+// nullopt when it is not one.
+std::optional<std::pair<int, int>> parseTownEdgeKey(const std::string& key);
+std::string townEdgeKey(int loop, int edge);
 
 // "detail: ...", "overrides[\"id\"].profiles: ..." and the like for a bad spec; nullopt when fine.
 std::optional<std::string> checkTownSpec(const TownSpec& spec);

@@ -840,6 +840,22 @@ void App::registerActions() {
        false,
        [this] { townPanel_.overrideNextType(townHost()); },
        townSelected});
+  add({"town.next_edge",
+       "Town",
+       "Pick Next Edge",
+       "Pick the selected building's next edge in the Town panel's plan view.",
+       {},
+       false,
+       [this] { townPanel_.selectNextEdge(townHost()); },
+       townSelected});
+  add({"town.next_edge_profile",
+       "Town",
+       "Override: Next Edge Profile",
+       "Give the picked edge of the selected building the style's next profile (an undoable override of that edge).",
+       {},
+       false,
+       [this] { townPanel_.overrideNextEdgeProfile(townHost()); },
+       townSelected});
   add({"town.add_street",
        "Town",
        "Add Street",

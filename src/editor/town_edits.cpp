@@ -60,6 +60,38 @@ void setTownOverride(Document& doc, ObjectId id, const std::string& building, co
     t.overrides[building] = o;
 }
 
+void setTownEdgeProfile(Document& doc, ObjectId id, const std::string& building, int loop, int edge,
+                        const std::string& profile) {
+  TownSpec& t = townOf(doc, id);
+  TownOverride o;
+  if (auto it = t.overrides.find(building); it != t.overrides.end()) o = it->second;
+  if (profile.empty())
+    o.edges.erase(townEdgeKey(loop, edge));
+  else
+    o.edges[townEdgeKey(loop, edge)] = profile;
+  setTownOverride(doc, id, building, o);
+}
+
+std::optional<std::pair<int, int>> nearestEdge(const std::vector<std::vector<Vec2>>& loops, const Vec2& p,
+                                               double maxDistance) {
+  std::optional<std::pair<int, int>> best;
+  double bestDistance = maxDistance;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const auto& ring = loops[l];
+    for (std::size_t e = 0; e < ring.size(); ++e) {
+      const Vec2 a = ring[e], b = ring[(e + 1) % ring.size()], ab = b - a;
+      const double len2 = ab | ab;
+      const double t = len2 > 0 ? std::clamp(((p - a) | ab) / len2, 0.0, 1.0) : 0.0;
+      const double d = (a + t * ab - p).norm();
+      if (d < bestDistance || (!best && d <= bestDistance)) {
+        bestDistance = d;
+        best = std::pair{static_cast<int>(l), static_cast<int>(e)};
+      }
+    }
+  }
+  return best;
+}
+
 namespace {
 
 void checked(Document& doc, ObjectId id, const TownSpec& changed) {

@@ -13,6 +13,15 @@ namespace corbel::editor {
 // Sets one building's override (an empty one removes it); throws corbel::Error when there is
 // no such town object.
 void setTownOverride(Document& doc, ObjectId id, const std::string& building, const TownOverride& o);
+// Sets one edge's profile in a building's override (loop and edge of the cleaned footprint);
+// an empty profile gives that edge back to its orientation's choice (and an override left
+// empty is removed). Throws corbel::Error when there is no such town object.
+void setTownEdgeProfile(Document& doc, ObjectId id, const std::string& building, int loop, int edge,
+                        const std::string& profile);
+// The edge (loop, edge) of a plan nearest to p and within maxDistance of it, or nullopt; on a
+// tie the first in loop order.
+std::optional<std::pair<int, int>> nearestEdge(const std::vector<std::vector<Vec2>>& loops, const Vec2& p,
+                                               double maxDistance);
 // Replaces the object's town spec; throws corbel::Error when there is no such town object or a
 // value is refused (checkTownSpec).
 void setTownSpec(Document& doc, ObjectId id, const TownSpec& spec);

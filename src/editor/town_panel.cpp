@@ -27,7 +27,166 @@ const city::BuiltBuilding* findBuilding(const std::vector<city::BuiltBuilding>& 
   return nullptr;
 }
 
+// The selected building's index in the town's inputs, or -1.
+int buildingIndex(const city::TownInputs& in, const std::string& id) {
+  for (std::size_t i = 0; i < in.town.buildings.size(); ++i)
+    if (in.town.buildings[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
+ImU32 orientationColour(city::Orientation o, float alpha = 1.0f) {
+  const int a = static_cast<int>(alpha * 255);
+  switch (o) {
+    case city::Orientation::Street:
+      return IM_COL32(240, 150, 60, a);
+    case city::Orientation::Side:
+      return IM_COL32(110, 200, 120, a);
+    case city::Orientation::Back:
+      return IM_COL32(110, 150, 235, a);
+  }
+  return IM_COL32(200, 200, 200, a);
+}
+
+// The building as the style makes it under the override `over` (its profile per edge).
+city::StyledBuilding styledWith(const city::TownInputs& in, const TownSpec& spec, int index, const TownOverride& over) {
+  city::BuildingOverride resolved;
+  if (!over.empty()) {
+    TownSpec one = spec;
+    one.overrides = {{in.town.buildings[std::size_t(index)].id, over}};
+    try {
+      const auto all = city::resolveOverrides(in.style, one);
+      if (auto it = all.begin(); it != all.end()) resolved = it->second;
+    } catch (const Error&) {
+      // A bad override is reported by the build; show the style's own draw.
+    }
+  }
+  return city::styleBuilding(in.style, in.town.buildings[std::size_t(index)], in.labels[std::size_t(index)], spec.seed,
+                             &resolved);
+}
+
 }  // namespace
+
+void TownPanel::selectNextEdge(const TownHost& host) {
+  const auto inputs = host.cache->inputs(host.object);
+  if (!inputs) return;
+  const int bi = buildingIndex(*inputs, selected_);
+  if (bi < 0) return;
+  const auto& loops = inputs->town.buildings[std::size_t(bi)].loops;
+  if (loops.empty()) return;
+  auto [l, e] = edgeOf_ == selected_ ? edge_ : std::pair{0, -1};
+  if (l < 0) l = 0, e = -1;
+  if (++e >= static_cast<int>(loops[std::size_t(l)].size())) e = 0, l = (l + 1) % static_cast<int>(loops.size());
+  edge_ = {l, e};
+  edgeOf_ = selected_;
+}
+
+void TownPanel::overrideNextEdgeProfile(const TownHost& host) {
+  const TownSpec* spec = townOf(host);
+  const auto inputs = host.cache->inputs(host.object);
+  if (!spec || !inputs || edgeOf_ != selected_ || edge_.first < 0 || inputs->style.profiles.empty()) return;
+  const int bi = buildingIndex(*inputs, selected_);
+  if (bi < 0) return;
+  TownOverride over;
+  if (auto it = spec->overrides.find(selected_); it != spec->overrides.end()) over = it->second;
+  // The profile the edge takes now (the style's draw with the current override), then the next.
+  const city::StyledBuilding styled = styledWith(*inputs, *spec, bi, over);
+  if (!styled.problem.empty() || edge_.first >= static_cast<int>(styled.spec.loops.size())) return;
+  const auto& profile = styled.spec.loops[std::size_t(edge_.first)].profile;
+  if (edge_.second >= static_cast<int>(profile.size())) return;
+  const std::size_t next = (std::size_t(profile[std::size_t(edge_.second)]) + 1) % inputs->style.profiles.size();
+  Document doc = *host.doc;
+  const std::string name = inputs->style.profiles[next].name;
+  try {
+    setTownEdgeProfile(doc, host.object, selected_, edge_.first, edge_.second, name);
+  } catch (const Error& e) {
+    host.log(e.what(), true);
+    return;
+  }
+  host.commit(std::move(doc),
+              "Set edge " + townEdgeKey(edge_.first, edge_.second) + " to " + name + " of building " + selected_, {});
+}
+
+void TownPanel::drawEdges(const TownHost& host, const TownSpec& spec, const TownOverride& over) {
+  const auto inputs = host.cache->inputs(host.object);
+  if (!inputs) return;
+  const int bi = buildingIndex(*inputs, selected_);
+  if (bi < 0) return;
+  const city::Building& b = inputs->town.buildings[std::size_t(bi)];
+  const city::BuildingLabels& labels = inputs->labels[std::size_t(bi)];
+  if (b.loops.empty() || labels.edges.empty()) return;
+  if (edgeOf_ != selected_) edge_ = {-1, -1}, edgeOf_ = selected_;
+
+  // What each edge takes now: the style's draw under the current override.
+  const city::StyledBuilding styled = styledWith(*inputs, spec, bi, over);
+
+  ImGui::TextUnformatted("Edges (click one: street orange, side green, back blue)");
+  const float side = std::min(ImGui::GetContentRegionAvail().x, 190.0f);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("plan", ImVec2(ImGui::GetContentRegionAvail().x, side));
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 end(origin.x + ImGui::GetContentRegionAvail().x, origin.y + side);
+  dl->AddRectFilled(origin, end, IM_COL32(28, 30, 34, 255));
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const auto& ring : b.loops)
+    for (const Vec2& p : ring) lo.minimize(p), hi.maximize(p);
+  const float margin = 14.0f, w = end.x - origin.x - 2 * margin, h = side - 2 * margin;
+  const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-6});
+  const double scale = std::min(w, h) / extent;
+  const Vec2 mid = 0.5 * (lo + hi);
+  const ImVec2 centre(origin.x + margin + w / 2, origin.y + margin + h / 2);
+  const auto toScreen = [&](const Vec2& p) {
+    return ImVec2(centre.x + float((p[0] - mid[0]) * scale), centre.y - float((p[1] - mid[1]) * scale));
+  };
+  for (const city::EdgeLabel& e : labels.edges) {
+    const auto& ring = b.loops[std::size_t(e.loop)];
+    const ImVec2 a = toScreen(ring[std::size_t(e.edge)]), c = toScreen(ring[(std::size_t(e.edge) + 1) % ring.size()]);
+    const bool picked = edge_ == std::pair{e.loop, e.edge};
+    const bool overridden = over.edges.count(townEdgeKey(e.loop, e.edge)) > 0;
+    if (picked) dl->AddLine(a, c, IM_COL32(255, 255, 255, 255), 6.0f);
+    dl->AddLine(a, c, orientationColour(e.orientation), overridden ? 3.5f : 2.0f);
+    const std::string label = std::to_string(e.edge) + (overridden ? "*" : "");
+    dl->AddText(ImVec2(0.5f * (a.x + c.x) + 3, 0.5f * (a.y + c.y) - 14), IM_COL32(230, 230, 230, 255), label.c_str());
+  }
+  if (ImGui::IsItemClicked()) {
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const Vec2 p(mid[0] + (m.x - centre.x) / scale, mid[1] - (m.y - centre.y) / scale);
+    if (auto hit = nearestEdge(b.loops, p, 10.0 / scale)) edge_ = *hit;
+  }
+
+  if (edge_.first < 0) return;
+  const city::EdgeLabel* picked = nullptr;
+  for (const auto& e : labels.edges)
+    if (std::pair{e.loop, e.edge} == edge_) picked = &e;
+  if (!picked) return;
+  const std::string key = townEdgeKey(edge_.first, edge_.second);
+  auto it = over.edges.find(key);
+  std::string now = "?";
+  if (styled.problem.empty() && edge_.first < static_cast<int>(styled.spec.loops.size()) &&
+      edge_.second < static_cast<int>(styled.spec.loops[std::size_t(edge_.first)].profile.size()))
+    now = inputs->style
+              .profiles[std::size_t(styled.spec.loops[std::size_t(edge_.first)].profile[std::size_t(edge_.second)])]
+              .name;
+  ImGui::Text("Edge %s: %s, %.1f m", key.c_str(), std::string(city::orientationName(picked->orientation)).c_str(),
+              picked->length);
+  const std::string shown =
+      it == over.edges.end()
+          ? "(as its " + std::string(city::orientationName(picked->orientation)) + " edges: " + now + ")"
+          : it->second;
+  if (ImGui::BeginCombo("Edge profile", shown.c_str())) {
+    if (ImGui::Selectable("(as its orientation's edges)", it == over.edges.end())) {
+      Document doc = *host.doc;
+      setTownEdgeProfile(doc, host.object, selected_, edge_.first, edge_.second, "");
+      host.commit(std::move(doc), "Give back edge " + key + " of building " + selected_, {});
+    }
+    for (const auto& p : inputs->style.profiles)
+      if (ImGui::Selectable(p.name.c_str(), it != over.edges.end() && it->second == p.name)) {
+        Document doc = *host.doc;
+        setTownEdgeProfile(doc, host.object, selected_, edge_.first, edge_.second, p.name);
+        host.commit(std::move(doc), "Set edge " + key + " to " + p.name + " of building " + selected_, {});
+      }
+    ImGui::EndCombo();
+  }
+}
 
 void TownPanel::commitOverride(const TownHost& host, const TownOverride& o, const std::string& what) {
   Document doc = *host.doc;
@@ -150,6 +309,21 @@ void TownPanel::drawOverlay(const TownHost& host, render::Overlay& overlay) cons
   const int edges[12][2] = {{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7},
                             {7, 6}, {6, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   for (const auto& e : edges) overlay.line(p[e[0]], p[e[1]], c);
+  // The edge picked in the plan view: white, a little above the ground, with a post at each end.
+  if (edgeOf_ != selected_ || edge_.first < 0) return;
+  const auto inputs = host.cache->inputs(host.object);
+  const int bi = inputs ? buildingIndex(*inputs, selected_) : -1;
+  if (bi < 0) return;
+  const auto& loops = inputs->town.buildings[std::size_t(bi)].loops;
+  if (edge_.first >= static_cast<int>(loops.size()) ||
+      edge_.second >= static_cast<int>(loops[std::size_t(edge_.first)].size()))
+    return;
+  const auto& ring = loops[std::size_t(edge_.first)];
+  const Vec2 a = ring[std::size_t(edge_.second)], e2 = ring[(std::size_t(edge_.second) + 1) % ring.size()];
+  const render::Rgba white{1.0f, 1.0f, 1.0f, 1.0f};
+  for (double z : {0.1, 0.3}) overlay.line(Vec3(a[0], a[1], z), Vec3(e2[0], e2[1], z), white);
+  overlay.line(Vec3(a[0], a[1], 0.1), Vec3(a[0], a[1], hi[2]), white);
+  overlay.line(Vec3(e2[0], e2[1], 0.1), Vec3(e2[0], e2[1], hi[2]), white);
 }
 
 void TownPanel::drawStreets(const TownHost& host, const TownSpec& spec) {
@@ -335,7 +509,9 @@ void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
   // The buildings, by footprint id.
   ImGui::Separator();
   ImGui::TextUnformatted("Buildings (click one here or in the 3D view)");
-  const float listH = std::max(60.0f, ImGui::GetContentRegionAvail().y - 8 * ImGui::GetFrameHeightWithSpacing());
+  // Below the list: the building's type and orientation combos, its plan view and edge combo.
+  const float listH =
+      std::max(60.0f, ImGui::GetContentRegionAvail().y - 10 * ImGui::GetFrameHeightWithSpacing() - 200.0f);
   ImGui::BeginChild("buildings", ImVec2(0, listH), true);
   // Only the visible rows are drawn (a real town has thousands of buildings).
   const float rowH = ImGui::GetTextLineHeightWithSpacing();
@@ -395,6 +571,7 @@ void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
         ImGui::EndCombo();
       }
     }
+    drawEdges(host, *current, over);
     if (!over.empty() && ImGui::Button("Clear override")) commitOverride(host, TownOverride{}, "Clear the override");
   }
   ImGui::PopItemWidth();

@@ -4,8 +4,9 @@
 // assets/styles/*.json or any style file), the seed and the detail; the town builds as the
 // object's Scene build off the UI thread (core/live_sync.h, city/kernel.h) with a progress bar
 // and Cancel. Its buildings are listed by footprint id; one is picked from the list or by a
-// click in the 3D view, and its type or its profiles per edge orientation are overridden as a
-// Document edit (editor/town_edits.h), so it is undoable and only that building is re-extruded.
+// click in the 3D view, and its type, its profiles per edge orientation or the profile of one
+// edge (picked in a plan view of its footprint) are overridden as a Document edit (editor/town_edits.h), so it is
+// undoable and only that building is re-extruded.
 #include "city/kernel.h"
 #include "core/document.h"
 #include "render/overlay.h"
@@ -54,6 +55,13 @@ class TownPanel {
   // selected building's type with the style's next type).
   void selectNext(const TownHost& host);
   void overrideNextType(const TownHost& host);
+  // Also the actions town.next_edge (pick the selected building's next edge in the plan view)
+  // and town.next_edge_profile (give the picked edge the style's next profile, an override of
+  // that one edge).
+  void selectNextEdge(const TownHost& host);
+  void overrideNextEdgeProfile(const TownHost& host);
+  // The picked edge (loop, edge) of the selected building, or (-1, -1).
+  std::pair<int, int> pickedEdge() const { return edge_; }
   // Also the actions town.add_street (a street along the town's south side, selected) and
   // town.bend_street (the selected street's middle point 10 m further south).
   void addStreet(const TownHost& host);
@@ -62,9 +70,12 @@ class TownPanel {
  private:
   void commitOverride(const TownHost& host, const TownOverride& o, const std::string& what);
   void drawStreets(const TownHost& host, const TownSpec& spec);
+  void drawEdges(const TownHost& host, const TownSpec& spec, const TownOverride& over);
   bool commitStreets(const TownHost& host, const std::function<void(Document&)>& edit, const std::string& what,
                      const std::string& merge = {});
   std::string selected_;  // footprint id
+  std::string edgeOf_;    // the building edge_ belongs to
+  std::pair<int, int> edge_{-1, -1};
   bool scrollToSelected_ = false;
   int street_ = -1, point_ = -1;  // the selected street and control point
   bool moveOnClick_ = false;      // a click in the 3D view moves the selected point there

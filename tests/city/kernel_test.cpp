@@ -87,6 +87,99 @@ TEST(TownKernel, AnOverrideReExtrudesExactlyThatBuilding) {
   EXPECT_EQ(back.mesh.points, before.mesh.points);
 }
 
+// An edge override changes that one edge's profile and nothing else of the building: the
+// oracle is the style's own draw for the building without the override.
+TEST(TownKernel, AnEdgeOverrideChangesThatEdgeOnlyAndWinsOverItsOrientation) {
+  DocObject town = exampleTown();
+  TownCache cache;
+  cache.build(town, nullptr);
+  const auto inputs = cache.inputs(town.id);
+  ASSERT_TRUE(inputs);
+  const std::size_t bi = 5;
+  const Building& b = inputs->town.buildings[bi];
+  auto& spec = std::get<TownSpec>(town.spec);
+  const StyledBuilding plain = styleBuilding(inputs->style, b, inputs->labels[bi], spec.seed);
+  ASSERT_TRUE(plain.problem.empty()) << plain.problem;
+  // A street edge of the building, and a profile it does not have.
+  const EdgeLabel* street = nullptr;
+  for (const EdgeLabel& e : inputs->labels[bi].edges)
+    if (e.orientation == Orientation::Street && !street) street = &e;
+  ASSERT_TRUE(street);
+  const int before = plain.spec.loops[street->loop].profile[street->edge];
+  int wanted = -1;
+  for (std::size_t i = 0; i < inputs->style.profiles.size(); ++i)
+    if (static_cast<int>(i) != before && inputs->style.profiles[i].name.find("dormer") == std::string::npos)
+      wanted = static_cast<int>(i);
+  ASSERT_GE(wanted, 0);
+  const std::string key = townEdgeKey(street->loop, street->edge);
+  const auto styledUnder = [&](const TownOverride& o) {
+    TownSpec one = spec;
+    one.overrides = {{b.id, o}};
+    const auto resolved = resolveOverrides(inputs->style, one);
+    StyledBuilding s = styleBuilding(inputs->style, b, inputs->labels[bi], spec.seed, &resolved.at(b.id));
+    EXPECT_TRUE(s.problem.empty()) << s.problem;
+    return s;
+  };
+  // Equal profiles everywhere but at the target edge, which takes `wanted`.
+  const auto expectOnlyTargetDiffers = [&](const StyledBuilding& base, const StyledBuilding& changed) {
+    for (std::size_t l = 0; l < base.spec.loops.size(); ++l)
+      for (std::size_t e = 0; e < base.spec.loops[l].profile.size(); ++e) {
+        const bool target = static_cast<int>(l) == street->loop && static_cast<int>(e) == street->edge;
+        EXPECT_EQ(changed.spec.loops[l].profile[e], target ? wanted : base.spec.loops[l].profile[e]) << l << ":" << e;
+      }
+  };
+  TownOverride edgeOnly;
+  edgeOnly.edges[key] = inputs->style.profiles[wanted].name;
+  expectOnlyTargetDiffers(plain, styledUnder(edgeOnly));
+  // With every street edge overridden to `before` too, the edge's own override still wins.
+  TownOverride streetOnly;
+  streetOnly.profiles["street"] = inputs->style.profiles[before].name;
+  TownOverride both = streetOnly;
+  both.edges = edgeOnly.edges;
+  expectOnlyTargetDiffers(styledUnder(streetOnly), styledUnder(both));
+  spec.overrides[b.id] = edgeOnly;
+  // The cache re-extrudes that building only, and its mesh equals a build from scratch.
+  const std::size_t extrusions = cache.extrusions();
+  const auto list = cache.buildings(town.id);
+  const BuildResult after = cache.build(town, nullptr);
+  EXPECT_EQ(cache.extrusions(), extrusions + 1);
+  const auto list2 = cache.buildings(town.id);
+  for (std::size_t i = 0; i < list.size(); ++i)
+    EXPECT_EQ(list2[i].hash != list[i].hash, list[i].id == b.id) << list[i].id;
+  EXPECT_TRUE(list2[bi].error.empty()) << list2[bi].error;
+  TownCache fresh;
+  const BuildResult scratch = fresh.build(town, nullptr);
+  EXPECT_EQ(scratch.mesh.points, after.mesh.points);
+  EXPECT_EQ(scratch.mesh.faces, after.mesh.faces);
+}
+
+TEST(TownKernel, BadEdgeOverridesNameTheEdge) {
+  DocObject town = exampleTown();
+  TownCache cache;
+  cache.build(town, nullptr);
+  const auto inputs = cache.inputs(town.id);
+  const Building& b = inputs->town.buildings[0];
+  auto& spec = std::get<TownSpec>(town.spec);
+  const auto expectFault = [&](const std::string& key, const std::string& profile, const std::string& reason) {
+    spec.overrides.clear();
+    spec.overrides[b.id].edges[key] = profile;
+    try {
+      cache.build(town, nullptr);
+      ADD_FAILURE() << key << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where, "town.overrides[\"" + b.id + "\"].edges[\"" + key + "\"]");
+      EXPECT_EQ(e.reason, reason);
+    }
+  };
+  const std::size_t n = b.loops[0].size();
+  expectFault("0:" + std::to_string(n), "oldtown gable",
+              "loop 0 of the footprint has " + std::to_string(n) + " edges (0 to " + std::to_string(n - 1) + ")");
+  expectFault(std::to_string(b.loops.size()) + ":0", "oldtown gable",
+              "the footprint has " + std::to_string(b.loops.size()) + " loop(s) (0 to " +
+                  std::to_string(b.loops.size() - 1) + ")");
+  expectFault("0:0", "spire", "the style \"gabled old town\" has no profile named \"spire\"");
+}
+
 TEST(TownKernel, ASeedChangeReExtrudesOnlyBuildingsThatDrawDifferently) {
   DocObject town = exampleTown("suburban");
   TownCache cache;

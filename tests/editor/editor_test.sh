@@ -29,6 +29,8 @@
 # 10. a town (the old-town example): the next building picked and its type overridden (scripted
 #     actions) is saved as an override and the 3D view differs from the town as styled; undone, the
 #     document is the untouched example (nothing to recover);
+# 10b. the next building's first edge picked and given the style's next profile (scripted
+#     actions) is saved as an edge override ("0:0") and the town still builds;
 # 11. a street added beside that town and bent (scripted actions) is saved, builds its plots as
 #     houses (the saved project checks closed) that show in the 3D view; undone twice, nothing.
 set -euo pipefail
@@ -205,6 +207,16 @@ rm -rf "$work/state"
 run --recover no --select "Town" --actions town.next,town.next_type,edit.undo --autosave-seconds 0 \
   --quit-after-frames 12 "$town"
 test -f "$work/state/recovery.corbel" && { echo "undo should leave the town example untouched (a recovery file was written)"; exit 1; }
+echo "== a town: pick a building's edge in the plan view and override its profile"
+rm -rf "$work/state"
+run --recover no --select "Town" --actions town.next,town.next_edge,town.next_edge_profile --autosave-seconds 0 \
+  --screenshot "$work/town-edge.png" --quit-after-frames 10 "$town"
+test -f "$work/state/recovery.corbel" || { echo "the edge override changed nothing (no recovery file)"; exit 1; }
+grep -q '"edges": {' "$work/state/recovery.corbel" || { echo "no edge override was saved"; exit 1; }
+grep -q '"0:0": "' "$work/state/recovery.corbel" || { echo "the edge override should name edge 0:0"; exit 1; }
+summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+echo "edge overridden: $summary"
+[[ $summary == *'"failed":0}' ]] || { echo "the town with an edge override should build: $summary"; exit 1; }
 echo "== a town: add a street beside it and bend it; its plots are built as houses"
 rm -rf "$work/state"
 run --recover no --select "Town" --actions town.next,town.add_street,town.bend_street --autosave-seconds 0 \

@@ -65,6 +65,44 @@ TEST(TownEdits, AnOverrideIsOneUndoStepAndRebuildsOneBuilding) {
   EXPECT_THROW(setTownOverride(edited, 999, target, o), Error);
 }
 
+// Setting an edge's profile adds it to the building's override, keeping what else it holds;
+// clearing the last thing removes the override.
+TEST(TownEdits, AnEdgeProfileJoinsTheOverrideAndClearingItRemovesIt) {
+  Document doc = example();
+  const ObjectId id = townId(doc);
+  TownOverride o;
+  o.type = "town house";
+  setTownOverride(doc, id, "b1", o);
+  setTownEdgeProfile(doc, id, "b1", 0, 2, "oldtown gable");
+  setTownEdgeProfile(doc, id, "b2", 1, 0, "oldtown eaves");
+  const TownSpec& t = std::get<TownSpec>(doc.find(id)->spec);
+  EXPECT_EQ(t.overrides.at("b1").type, "town house");
+  EXPECT_EQ(t.overrides.at("b1").edges, (std::map<std::string, std::string>{{"0:2", "oldtown gable"}}));
+  EXPECT_EQ(t.overrides.at("b2").edges, (std::map<std::string, std::string>{{"1:0", "oldtown eaves"}}));
+  setTownEdgeProfile(doc, id, "b2", 1, 0, "");
+  EXPECT_EQ(std::get<TownSpec>(doc.find(id)->spec).overrides.count("b2"), 0u);
+  setTownEdgeProfile(doc, id, "b1", 0, 2, "");
+  EXPECT_TRUE(std::get<TownSpec>(doc.find(id)->spec).overrides.at("b1").edges.empty());
+  EXPECT_THROW(setTownEdgeProfile(doc, id + 100, "b1", 0, 0, "x"), Error);
+}
+
+// The plan view's pick: the edge nearest the click (distance to the segment, by hand), none
+// beyond the reach, holes included.
+TEST(TownEdits, NearestEdgeIsTheClosestSegmentWithinReach) {
+  // A 10 × 6 rectangle (counter-clockwise) with a 2 × 2 hole (clockwise) at (4..6, 2..4).
+  const std::vector<std::vector<Vec2>> loops = {{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {{4, 2}, {4, 4}, {6, 4}, {6, 2}}};
+  using E = std::optional<std::pair<int, int>>;
+  EXPECT_EQ(nearestEdge(loops, Vec2(5, -0.5), 1.0), E(std::pair{0, 0}));  // 0.5 below the bottom
+  EXPECT_EQ(nearestEdge(loops, Vec2(10.4, 3), 1.0), E(std::pair{0, 1}));  // right of the right wall
+  EXPECT_EQ(nearestEdge(loops, Vec2(5, 5.2), 1.0), E(std::pair{0, 2}));   // 0.8 from the top, 1.2 from the hole
+  EXPECT_EQ(nearestEdge(loops, Vec2(3.7, 3), 1.0), E(std::pair{1, 0}));   // the hole's left side, (4,2)→(4,4)
+  EXPECT_EQ(nearestEdge(loops, Vec2(5, 1.6), 1.0), E(std::pair{1, 3}));   // the hole's bottom, (6,2)→(4,2)
+  EXPECT_EQ(nearestEdge(loops, Vec2(5, 3), 0.9), E());                    // the hole's middle: 1 from every side
+  EXPECT_EQ(nearestEdge(loops, Vec2(-3, -4), 4.9), E());                  // 5 from the corner (0, 0)
+  EXPECT_EQ(nearestEdge(loops, Vec2(-3, -4), 5.1), E(std::pair{0, 0}));   // a tie of edges 0 and 3: the first
+  EXPECT_EQ(nearestEdge({}, Vec2(0, 0), 100.0), E());
+}
+
 TEST(TownEdits, SetTownSpecRefusesBadValues) {
   Document doc = example();
   const ObjectId id = townId(doc);

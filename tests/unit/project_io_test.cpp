@@ -899,6 +899,7 @@ TEST(ProjectIo, TownSpecsRoundTripWithPathsRelativeToTheProject) {
   st.bothSides = false;
   t.streets = {st, corbel::TownStreet{{{{1, 2}, {3, 4}}}}};
   t.overrides["street 1/left/0"].type = "garage";
+  t.overrides["w7"].edges = {{"0:3", "oldtown gable"}, {"1:0", "oldtown eaves"}};
   corbel::Document d;
   d.add("town", t);
   const std::string text = corbel::serializeProject(d, "/data/p");
@@ -943,7 +944,7 @@ TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": [])"),
                "objects[0].town.overrides", "expected an object, found an array");
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {}})"),
-               R"(objects[0].town.overrides["w1"])", R"(overrides nothing: expected "type" or "profiles")");
+               R"(objects[0].town.overrides["w1"])", R"(overrides nothing: expected "type", "profiles" or "edges")");
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {"type": 2}})"),
                R"(objects[0].town.overrides["w1"].type)", "expected a string, found a number");
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {"profiles": {"roof": "x"}}})"),
@@ -951,6 +952,16 @@ TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
   EXPECT_FAULT(withTown(R"("footprints": "f.geojson", "style": "s.json", "overrides": {"w1": {"profiles": {"side": ""}}})"),
                R"(objects[0].town.overrides["w1"].profiles.side)", "the profile name must not be empty");
   const std::string fs = R"("footprints": "f.geojson", "style": "s.json", )";
+  EXPECT_FAULT(withTown(fs + R"("overrides": {"w1": {"edges": ["0:1"]}})"), R"(objects[0].town.overrides["w1"].edges)",
+               "expected an object, found an array");
+  for (const char* key : {"3", "a:1", "0:", ":2", "01:2", "0:-1", "0:1:2", "1234567:0"})
+    EXPECT_FAULT(withTown(fs + R"("overrides": {"w1": {"edges": {")" + key + R"(": "x"}}})"),
+                 std::string(R"(objects[0].town.overrides["w1"].edges[")") + key + R"("])",
+                 std::string(R"(expected an edge "LOOP:EDGE" (as "0:3"), found ")") + key + "\"");
+  EXPECT_FAULT(withTown(fs + R"("overrides": {"w1": {"edges": {"0:1": 4}}})"),
+               R"(objects[0].town.overrides["w1"].edges["0:1"])", "expected a string, found a number");
+  EXPECT_FAULT(withTown(fs + R"("overrides": {"w1": {"edges": {"0:1": ""}}})"),
+               R"(objects[0].town.overrides["w1"].edges["0:1"])", "the profile name must not be empty");
   EXPECT_FAULT(withTown(fs + R"("streets": {})"), "objects[0].town.streets", "expected an array of streets");
   EXPECT_FAULT(withTown(fs + R"("streets": [{"width": 8}])"), "objects[0].town.streets[0].points", "missing");
   EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0]]}])"), "objects[0].town.streets[0].points",
