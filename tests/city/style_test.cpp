@@ -272,8 +272,8 @@ TEST(Style, TagTextureFaultsNameTheirKey) {
   // JSON has no NaN: null (what a NaN is written as) and an overflowing number are refused too.
   EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "metres": null}})")),
             "tag_textures.roof.metres: expected a number, found null");
-  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "metres": 1e999}})")).substr(0, 24),
-            "tag_textures.roof.metres");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "metres": 1e999}})")),
+            "tag_textures.roof.metres: number is not finite (1e999 is out of range)");
   EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "scale": 2}})")),
             "tag_textures.roof.scale: unknown key (expected one of: metres, texture)");
   EXPECT_EQ(parseError(withTagTextures(R"({"": "slate"})")),
