@@ -258,6 +258,23 @@ std::shared_ptr<const TownInputs> TownCache::inputs(ObjectId object) const {
   return it == inputs_.end() ? nullptr : it->second.inputs;
 }
 
+TagTextures TownCache::tagTextures() const {
+  auto styles = std::make_shared<std::map<ObjectId, std::shared_ptr<const TownInputs>>>();
+  {
+    std::lock_guard lock(mutex_);
+    for (const auto& [id, e] : inputs_)
+      if (e.inputs && !e.inputs->style.tagTextures.empty()) (*styles)[id] = e.inputs;
+  }
+  if (styles->empty()) return {};
+  return [styles](ObjectId object, const std::string& tag) -> const SurfaceTexture* {
+    const auto s = styles->find(object);
+    if (s == styles->end()) return nullptr;
+    const auto& table = s->second->style.tagTextures;
+    const auto it = table.find(tag);
+    return it == table.end() ? nullptr : &it->second;
+  };
+}
+
 std::shared_ptr<TownCache> registerKernel(SceneSync& sync, std::shared_ptr<TownCache> cache) {
   if (!cache) cache = std::make_shared<TownCache>();
   sync.setBuilder<TownSpec>([cache](const DocObject& o, Progress* p) { return cache->build(o, p); });

@@ -58,6 +58,9 @@ class TownCache {
   MeshData mesh(ObjectId object, const std::string& id) const;
   // The style and footprints of the object's last build (null before one).
   std::shared_ptr<const TownInputs> inputs(ObjectId object) const;
+  // The tag textures (docs/city.md) of every town object's style as last read, for
+  // ExportOptions and RenderSettings::tagTextures: a snapshot, which holds those styles.
+  TagTextures tagTextures() const;
   std::size_t extrusions() const { return extrusions_.load(); }  // buildings extruded so far
 
  private:

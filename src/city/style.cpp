@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "core/textures.h"
 
 #include <cmath>
 #include <filesystem>
@@ -111,10 +112,37 @@ std::string checkProfile(const extrude::Profile& p) {
   return {};
 }
 
+// A tag's texture: "name" or {"texture": "name", "metres": m}, the name one of the built-in
+// textures and m the metres of one repeat (default: the texture's own tile).
+SurfaceTexture tagTexture(const JsonReader& r) {
+  SurfaceTexture t;
+  std::optional<JsonReader> name;
+  if (r.raw().is_string()) {
+    name.emplace(r);
+  } else if (r.raw().is_object()) {
+    rejectUnknown(r, {"texture", "metres"});
+    name.emplace(r.at("texture"));
+    if (auto m = r.find("metres")) {
+      t.metres = m->number();
+      if (!(t.metres > 0 && t.metres <= 1e4))
+        m->fail("the metres of one repeat must be greater than 0 and at most 10000");
+    }
+  } else {
+    r.fail("expected a texture name or {\"texture\": name, \"metres\": m}");
+  }
+  t.name = name->string(200);
+  if (!materialTexture(t.name)) {
+    std::string known;
+    for (std::string_view n : builtinTextureNames()) known += (known.empty() ? "" : ", ") + std::string(n);
+    name->fail("no built-in texture named \"" + t.name + "\" (expected one of: " + known + ")");
+  }
+  return t;
+}
+
 void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, int depth) {
   JsonReader r(root, "");
   r.expectObject();
-  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "assign", "tag_materials"});
+  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "assign", "tag_materials", "tag_textures"});
   // The styles this one uses first, so its own name and labels win.
   if (auto u = r.find("use")) {
     if (depth > 8) u->fail("styles use each other more than 8 deep (a cycle?)");
@@ -143,6 +171,14 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
     m->expectObject();
     for (auto& [tag, value] : m->raw().items())
       s.tagMaterials[tag] = JsonReader(value, m->path() + "." + tag).string(200);
+  }
+  if (auto m = r.find("tag_textures")) {
+    m->expectObject();
+    for (auto& [tag, value] : m->raw().items()) {
+      const JsonReader v = *m->find(tag);
+      if (tag.empty()) v.fail("the empty tag names no faces (faces without a tag keep their material's texture)");
+      s.tagTextures[tag] = tagTexture(v);
+    }
   }
   std::map<std::string, int> profileNames, typeNames;
   for (std::size_t i = 0; i < s.profiles.size(); ++i) profileNames[s.profiles[i].name] = static_cast<int>(i);
@@ -289,6 +325,15 @@ void applyTagMaterials(const Style& style, MeshData& mesh) {
   for (std::size_t f = 0; f < mesh.faceTag.size() && f < mesh.faceMaterial.size(); ++f)
     if (const int t = mesh.faceTag[f]; t >= 0 && static_cast<std::size_t>(t) < remap.size() && remap[t] >= 0)
       mesh.faceMaterial[f] = remap[t];
+}
+
+TagTextures tagTexturesOf(const Style& style) {
+  if (style.tagTextures.empty()) return {};
+  const auto* table = &style.tagTextures;
+  return [table](ObjectId, const std::string& tag) -> const SurfaceTexture* {
+    const auto it = table->find(tag);
+    return it == table->end() ? nullptr : &it->second;
+  };
 }
 
 Style parseStyle(const std::string& text, const std::string& folder) {

@@ -6,6 +6,7 @@
 #include "city/import.h"
 #include "city/labels.h"
 #include "core/mesh_data.h"
+#include "core/textures.h"
 #include "extrude/spec.h"
 
 #include <cstdint>
@@ -94,10 +95,17 @@ struct Style {
   // Faces with one of these tags take that material (chimneys of brick, copings of stone),
   // so the glb's materials follow the tags.
   std::map<std::string, std::string> tagMaterials;
+  // Faces with one of these tags show that built-in texture (core/textures.h) in textured output
+  // (the glb, the renderer's textured mode), whatever their material; metres 0 = the texture's
+  // own tile. Independent of tagMaterials, which still gives such faces their material (colour).
+  std::map<std::string, SurfaceTexture> tagTextures;
 };
 
 // Gives the faces of `mesh` whose tag the style names their material.
 void applyTagMaterials(const Style& style, MeshData& mesh);
+// The style's tag textures for ExportOptions and RenderSettings, for every object (the style
+// must outlive it); empty when the style has none.
+TagTextures tagTexturesOf(const Style& style);
 
 // Parses a style; faults throw InputError naming the JSON path ("types[1].edges[0].profiles:
 // no profile named \"x\""). `folder` resolves the paths in "use".

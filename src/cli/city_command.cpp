@@ -1,6 +1,7 @@
 // corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] --out town.glb
 //   [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R] [--street X,Y;X,Y;...]
 //   [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]
+//   [--textures on|off] [--render-textures on|off]
 #include "cli/city_command.h"
 
 #include "city/import.h"
@@ -35,7 +36,7 @@ constexpr const char* kCityUsage =
     "usage: corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] [--out FILE.glb]\n"
     "         [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]\n"
     "         [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]\n"
-    "         [--textures on|off]\n"
+    "         [--textures on|off] [--render-textures on|off]\n"
     "       corbel-cli city --street X,Y;X,Y;... --style STYLE.json [...]   (town houses along a spline)\n";
 
 Vec2 centroidOf(const std::vector<Vec2>& ring) {
@@ -57,9 +58,9 @@ void drawBar(std::size_t done, std::size_t total, double seconds) {
 int city(int argc, char** argv) {
   std::map<std::string, std::string> opt;
   std::vector<std::string> positional;
-  const std::set<std::string> known = {"--style",     "--seed",   "--jobs",    "--out",    "--tiles",
-                                       "--tile-size", "--render", "--around",  "--street", "--coordinates",
-                                       "--report",    "--detail", "--textures"};
+  const std::set<std::string> known = {
+      "--style",  "--seed",   "--jobs",        "--out",    "--tiles",  "--tile-size", "--render",
+      "--around", "--street", "--coordinates", "--report", "--detail", "--textures",  "--render-textures"};
   for (int i = 2; i < argc; ++i) {
     const std::string s = argv[i];
     if (s.rfind("--", 0) == 0) {
@@ -183,6 +184,11 @@ int city(int argc, char** argv) {
   const std::string textures = opt.count("--textures") ? opt["--textures"] : "on";
   if (textures != "on" && textures != "off") return usage("--textures: expected on or off, not '" + textures + "'");
   exportOptions.textures = textures == "on";
+  exportOptions.tagTextures = city::tagTexturesOf(style);  // the style's tag_textures
+  // The PNG of --render: colours unless asked for (the renderer's textured mode).
+  const std::string renderTextures = opt.count("--render-textures") ? opt["--render-textures"] : "off";
+  if (renderTextures != "on" && renderTextures != "off")
+    return usage("--render-textures: expected on or off, not '" + renderTextures + "'");
   if (opt.count("--out")) whole = std::make_unique<Scene>();
   if (opt.count("--render") && !whole) view = std::make_unique<Scene>();  // else the output's Scene is rendered
   ObjectId wholeId = 1, tileId = 1, viewId = 1;
@@ -246,7 +252,8 @@ int city(int argc, char** argv) {
   if (whole) exportScene(*whole, opt["--out"], exportOptions);
   if (opt.count("--render")) {
     render::HeadlessContext context;
-    writeScenePng(whole ? *whole : *view, {-60, 35, 0.75}, opt["--render"]);
+    writeScenePng(whole ? *whole : *view, {-60, 35, 0.75, renderTextures == "on", exportOptions.tagTextures},
+                  opt["--render"]);
   }
   whole.reset();
   view.reset();

@@ -44,7 +44,8 @@ constexpr const char* kUsage = R"(corbel-cli — headless tools of corbel
 
 usage:
   corbel-cli render PROJECT --out PNG [--size WxH] [--camera AZ,EL[,DIST]] [--object NAME]
-                    [--no-grid] [--no-edges] [--wireframe]
+                    [--no-grid] [--no-edges] [--wireframe] [--textures on|off]
+                    --textures on draws the built-in textures (docs/city.md) instead of colours.
   corbel-cli export PROJECT --out FILE.{obj,ply,off,glb} [--object NAME]
   corbel-cli check PROJECT        validate the file and every object's shell (JSON lines)
   corbel-cli extrude INPUT [--pitch DEG] [--wall-height M] [--out FILE.{obj,ply,off,glb}] [--stats]
@@ -89,7 +90,7 @@ usage:
   corbel-cli city FOOTPRINTS.geojson --style STYLE.json [--seed N] [--jobs N] [--out FILE.glb]
                     [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]
                     [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]
-                    | --street X,Y;X,Y;...
+                    [--textures on|off] [--render-textures on|off] | --street X,Y;X,Y;...
                     A styled town (docs/city.md); prints one JSON line, skipped buildings on stderr.
 )";
 constexpr const char* kUsageEnd = R"(  corbel-cli --version | --help
@@ -137,6 +138,7 @@ std::vector<double> parseNumbers(const std::string& text, char sep, const std::s
 struct Loaded {
   Document doc;
   Scene scene;
+  std::shared_ptr<city::TownCache> towns;  // their styles' tag textures
 };
 
 Loaded load(const std::string& path) {
@@ -149,7 +151,7 @@ Loaded load(const std::string& path) {
   statics::registerKernel(sync);
   kifs::registerKernel(sync);
   growth::registerKernel(sync);
-  city::registerKernel(sync);
+  l.towns = city::registerKernel(sync);
   sync.update(l.doc, l.scene);
   for (const auto& [id, st] : sync.status()) {
     const DocObject* o = l.doc.find(id);
@@ -191,6 +193,12 @@ int cmdRender(const Args& a) {
   settings.grid = !a.options.count("--no-grid");
   settings.edges = !a.options.count("--no-edges");
   settings.wireframe = a.options.count("--wireframe") > 0;
+  if (auto t = a.options.find("--textures"); t != a.options.end()) {
+    if (t->second != "on" && t->second != "off")
+      throw UsageError("--textures: expected on or off, not '" + t->second + "'");
+    settings.textures = t->second == "on";
+    if (settings.textures) settings.tagTextures = l.towns->tagTextures();
+  }
   settings.visible = [&](ObjectId id) {
     if (only) return id == *only;
     const DocObject* o = l.doc.find(id);
@@ -439,8 +447,15 @@ int main(int argc, char** argv) {
   try {
     const std::string cmd = argv[1];
     if (cmd == "render")
-      return cmdRender(parseArgs(argc, argv, {{"--out", true}, {"--size", true}, {"--camera", true}, {"--object", true},
-                                              {"--no-grid", false}, {"--no-edges", false}, {"--wireframe", false}}));
+      return cmdRender(parseArgs(argc, argv,
+                                 {{"--out", true},
+                                  {"--size", true},
+                                  {"--camera", true},
+                                  {"--object", true},
+                                  {"--no-grid", false},
+                                  {"--no-edges", false},
+                                  {"--wireframe", false},
+                                  {"--textures", true}}));
     if (cmd == "export") return cmdExport(parseArgs(argc, argv, {{"--out", true}, {"--object", true}}));
     if (cmd == "check") return cmdCheck(parseArgs(argc, argv, {}));
     if (cmd == "extrude")

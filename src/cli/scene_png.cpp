@@ -13,6 +13,8 @@ void writeScenePng(const Scene& scene, const SceneView& view, const std::string&
   camera.elevation_deg = view.elevationDeg;
   camera.distance *= view.zoom;
   render::RenderSettings settings;
+  settings.textures = view.textures;
+  settings.tagTextures = view.tagTextures;
   render::writePng(render::renderImage(renderer, scene, camera, 1200, 800, settings), png);
 }
 

@@ -1,6 +1,7 @@
 // Binary glTF 2.0 export through tinygltf: one node and mesh per object (named as the
 // object), one primitive per material, flat normals; with ExportOptions::textures, a PNG
-// texture per built-in material and TEXCOORD_0 from each face's plane. glTF is Y up: (x, y, z) → (x, z, −y).
+// texture per built-in texture used (by a material, or by a tag: ExportOptions::tagTextures)
+// and TEXCOORD_0 from each face's plane. glTF is Y up: (x, y, z) → (x, z, −y).
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
@@ -107,8 +108,7 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
   model.buffers.emplace_back();
   model.scenes.emplace_back();
   model.defaultScene = 0;
-  std::map<std::string, int> materialIndex;
-  std::map<std::string, const MaterialTexture*> materialTex;
+  std::map<std::string, int> materialIndex, textureIndex;  // by glTF material label, by texture name
   const PolyMesh& mesh = scene.mesh();
 
   const auto byObject = scene.facesByObject();
@@ -121,7 +121,13 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
     if (found == byObject.end()) continue;
     for (auto f : found->second) {
       const std::string& m = scene.faceMaterial(f);
-      const std::string label = m.empty() ? std::string(kindName(scene.faceKind(f))) : m;
+      std::string label = m.empty() ? std::string(kindName(scene.faceKind(f))) : m;
+      // A face with a texture of its own (a style's tag texture) gets a glTF material of its own,
+      // whatever its material's colour: the texture carries the colour.
+      const SurfaceTexture* own =
+          options.textures && options.tagTextures ? options.tagTextures(id, scene.faceTag(f)) : nullptr;
+      const TextureUse use = options.textures ? textureFor(own, m) : TextureUse{};
+      if (use.own) label += " (texture " + std::string(use.name) + ")";
       if (!materialIndex.count(label)) {
         tinygltf::Material mat;
         mat.name = label;
@@ -129,16 +135,15 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
         mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
         mat.pbrMetallicRoughness.metallicFactor = 0.0;
         mat.pbrMetallicRoughness.roughnessFactor = 0.9;
-        const MaterialTexture* tex = options.textures && !m.empty() ? materialTexture(m) : nullptr;
-        if (tex) {  // the texture carries the colour: base colour = factor × texel
-          mat.pbrMetallicRoughness.baseColorTexture.index = addTexture(model, *tex, label);
+        if (use.texture) {  // the texture carries the colour: base colour = factor × texel
+          const std::string texName(use.name);
+          if (!textureIndex.count(texName)) textureIndex[texName] = addTexture(model, *use.texture, texName);
+          mat.pbrMetallicRoughness.baseColorTexture.index = textureIndex[texName];
           mat.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
         }
         model.materials.push_back(mat);
         materialIndex[label] = static_cast<int>(model.materials.size()) - 1;
-        materialTex[label] = tex;
       }
-      const MaterialTexture* tex = materialTex[label];
       PrimitiveData& prim = byMaterial[label];
       poly.clear();
       for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
@@ -152,18 +157,9 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
         prim.normals.insert(prim.normals.end(),
                             {static_cast<float>(n[0]), static_cast<float>(n[2]), static_cast<float>(-n[1])});
       }
-      if (tex) {  // texture coordinates from the plane, shifted by whole tiles to stay small;
-                  // v is flipped so that the image's top is up on the building
-        uv.clear();
-        Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
-        for (const Vec3& p : poly) {
-          uv.push_back(planeUv(p, n) / tex->metres);
-          lo = Vec2(std::min(lo[0], uv.back()[0]), std::min(lo[1], uv.back()[1]));
-          hi[1] = std::max(hi[1], uv.back()[1]);
-        }
-        const double u0 = std::floor(lo[0]), v0 = std::ceil(hi[1]);
-        for (const Vec2& t : uv)
-          prim.uvs.insert(prim.uvs.end(), {static_cast<float>(t[0] - u0), static_cast<float>(v0 - t[1])});
+      if (use.texture) {  // texture coordinates from the plane (core/textures.h)
+        faceTextureCoordinates(poly, n, use.metres, uv);
+        for (const Vec2& t : uv) prim.uvs.insert(prim.uvs.end(), {static_cast<float>(t[0]), static_cast<float>(t[1])});
       }
       for (const auto& t : triangulatePolygon(poly))
         prim.indices.insert(prim.indices.end(), {base + t[0], base + t[1], base + t[2]});

@@ -126,12 +126,16 @@ MaterialTexture make(const std::string& name) {
 
 }  // namespace
 
+const std::vector<std::string_view>& builtinTextureNames() {
+  static const std::vector<std::string_view> names = {"plaster",  "stone",  "brick", "roof_tile", "slate",
+                                                      "concrete", "timber", "glass", "metal",     "grass"};
+  return names;
+}
+
 const MaterialTexture* materialTexture(std::string_view name) {
   static const std::map<std::string, MaterialTexture, std::less<>> table = [] {
     std::map<std::string, MaterialTexture, std::less<>> m;
-    for (const char* n :
-         {"plaster", "stone", "brick", "roof_tile", "slate", "concrete", "timber", "glass", "metal", "grass"})
-      m[n] = make(n);
+    for (std::string_view n : builtinTextureNames()) m[std::string(n)] = make(std::string(n));
     return m;
   }();
   const auto it = table.find(name);
@@ -144,6 +148,31 @@ Vec2 planeUv(const Vec3& p, const Vec3& n) {
   t /= t.norm();
   const Vec3 s = n % t;  // n × t: up the face
   return Vec2(p | t, p | s);
+}
+
+TextureUse textureFor(const SurfaceTexture* own, std::string_view material) {
+  TextureUse use;
+  if (own && !own->name.empty() && (use.texture = materialTexture(own->name))) {
+    use.name = own->name;
+    use.metres = own->metres > 0 ? own->metres : use.texture->metres;
+    use.own = true;
+  } else if (!material.empty() && (use.texture = materialTexture(material))) {
+    use.name = material;
+    use.metres = use.texture->metres;
+  }
+  return use;
+}
+
+void faceTextureCoordinates(const std::vector<Vec3>& poly, const Vec3& n, double metres, std::vector<Vec2>& out) {
+  out.clear();
+  double uLo = 1e300, vHi = -1e300;
+  for (const Vec3& p : poly) {
+    out.push_back(planeUv(p, n) / metres);
+    uLo = std::min(uLo, out.back()[0]);
+    vHi = std::max(vHi, out.back()[1]);
+  }
+  const double u0 = std::floor(uLo), v0 = std::ceil(vHi);
+  for (Vec2& t : out) t = Vec2(t[0] - u0, v0 - t[1]);
 }
 
 }  // namespace corbel

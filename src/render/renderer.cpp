@@ -2,12 +2,14 @@
 
 #include "core/error.h"
 #include "core/materials.h"
+#include "core/textures.h"
 #include "render/gl.h"
 #include "render/shader_sources.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -140,6 +142,12 @@ glm::mat4 lightViewProj(const BBox& box, const Vec3& sunIn) {
 struct Renderer::Impl {
   GLuint meshProgram = 0, lineProgram = 0, backgroundProgram = 0, shadowProgram = 0;
   Buffer faces, highlightFaces, edges, grid, overlayLines, overlayTriangles, topLines, topTriangles, ground;
+  // With RenderSettings::textures: faces that show a texture, [x y z nx ny nz r g b u v layer].
+  Buffer texturedFaces, texturedHighlight;
+  // The built-in textures (core/textures.h) as layers of one array texture, made on first use.
+  GLuint textureArray = 0;
+  void makeTextureArray();
+  bool textured = false;  // what the buffers were built for
   // The shadow map: a depth texture and its framebuffer, made on first use.
   GLuint shadowFbo = 0, shadowTexture = 0;
   int shadowSize = 2048;
@@ -170,13 +178,17 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->overlayTriangles.create({3, 3, 3});
   impl_->topLines.create({3, 4});
   impl_->topTriangles.create({3, 3, 3});
+  impl_->texturedFaces.create({3, 3, 3, 3});
+  impl_->texturedHighlight.create({3, 3, 3, 3});
   glGenVertexArrays(1, &impl_->emptyVao);
 }
 
 Renderer::~Renderer() {
   for (Buffer* b : {&impl_->faces, &impl_->highlightFaces, &impl_->edges, &impl_->grid, &impl_->overlayLines,
-                    &impl_->overlayTriangles, &impl_->topLines, &impl_->topTriangles, &impl_->ground})
+                    &impl_->overlayTriangles, &impl_->topLines, &impl_->topTriangles, &impl_->ground,
+                    &impl_->texturedFaces, &impl_->texturedHighlight})
     b->destroy();
+  if (impl_->textureArray) glDeleteTextures(1, &impl_->textureArray);
   if (impl_->shadowFbo) glDeleteFramebuffers(1, &impl_->shadowFbo);
   if (impl_->shadowTexture) glDeleteTextures(1, &impl_->shadowTexture);
   glDeleteProgram(impl_->shadowProgram);
@@ -192,8 +204,10 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
   std::vector<ObjectId> ids;
   for (const auto& [id, info] : scene.objects())
     if (!settings.visible || settings.visible(id)) ids.push_back(id);
-  if (scene.revision() == impl_->sceneRevision && ids == impl_->visibleIds && settings.highlight == impl_->highlight)
+  if (scene.revision() == impl_->sceneRevision && ids == impl_->visibleIds && settings.highlight == impl_->highlight &&
+      settings.textures == impl_->textured)
     return;
+  impl_->textured = settings.textures;
   impl_->sceneRevision = scene.revision();
   impl_->visibleIds = ids;
   impl_->highlight = settings.highlight;
@@ -203,8 +217,10 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
   for (ObjectId id : ids) show[id] = 1;
   auto visible = [&](ObjectId id) { return id < show.size() && show[id]; };
 
-  std::vector<float> faceData, highlightData, edgeData;
+  std::vector<float> faceData, highlightData, edgeData, texturedData, texturedHighlightData;
   std::vector<Vec3> poly;
+  std::vector<Vec2> uv;
+  const std::vector<std::string_view>& layers = builtinTextureNames();
   BBox box;
   impl_->triangles = 0;
   std::vector<Vec3> normals(mesh.n_faces(), Vec3(0, 0, 0));
@@ -220,7 +236,23 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
     if (n.norm() > 0) n.normalize();
     normals[f.idx()] = n;
     const Rgb c = materialColor(scene.faceMaterial(f), scene.faceKind(f));
-    std::vector<float>& out = (settings.highlight && *settings.highlight == id) ? highlightData : faceData;
+    const bool lit = settings.highlight && *settings.highlight == id;
+    const SurfaceTexture* own =
+        settings.textures && settings.tagTextures ? settings.tagTextures(id, scene.faceTag(f)) : nullptr;
+    const TextureUse use = settings.textures ? textureFor(own, scene.faceMaterial(f)) : TextureUse{};
+    if (use.texture) {  // the glb's coordinates; the layer is the texture's place among the built-in ones
+      faceTextureCoordinates(poly, n, use.metres, uv);
+      const float layer = float(std::find(layers.begin(), layers.end(), use.name) - layers.begin());
+      std::vector<float>& out = lit ? texturedHighlightData : texturedData;
+      for (const auto& t : triangulatePolygon(poly)) {
+        for (int k : t)
+          out.insert(out.end(), {float(poly[k][0]), float(poly[k][1]), float(poly[k][2]), float(n[0]), float(n[1]),
+                                 float(n[2]), c[0], c[1], c[2], float(uv[k][0]), float(uv[k][1]), layer});
+        ++impl_->triangles;
+      }
+      continue;
+    }
+    std::vector<float>& out = lit ? highlightData : faceData;
     for (const auto& t : triangulatePolygon(poly)) {
       for (int k : t)
         out.insert(out.end(), {float(poly[k][0]), float(poly[k][1]), float(poly[k][2]), float(n[0]), float(n[1]),
@@ -247,6 +279,9 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
   }
   impl_->faces.upload(faceData);
   impl_->highlightFaces.upload(highlightData);
+  impl_->texturedFaces.upload(texturedData);
+  impl_->texturedHighlight.upload(texturedHighlightData);
+  if (!texturedData.empty() || !texturedHighlightData.empty()) impl_->makeTextureArray();
   impl_->edges.upload(edgeData);
 
   // Ground grid: a 1-2-5 step with about 20 cells across the scene, major lines every 5.
@@ -316,6 +351,8 @@ void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int heig
   setVec3(r.meshProgram, "uSunDir", sun.x, sun.y, sun.z);
   glUniform1i(glGetUniformLocation(r.meshProgram, "uShadows"), shadows ? 1 : 0);
   glUniform1i(glGetUniformLocation(r.meshProgram, "uShadowMap"), 1);
+  glUniform1i(glGetUniformLocation(r.meshProgram, "uTextures"), 2);
+  glUniform1i(glGetUniformLocation(r.meshProgram, "uTextured"), 0);
   if (shadows) {
     setMat(r.meshProgram, "uLightViewProj", light);
     glUniform1f(glGetUniformLocation(r.meshProgram, "uShadowTexel"), 1.0f / float(r.shadowSize));
@@ -334,6 +371,22 @@ void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int heig
     glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.35f);
     glBindVertexArray(r.highlightFaces.vao);
     glDrawArrays(GL_TRIANGLES, 0, r.highlightFaces.count);
+    if (r.texturedFaces.count + r.texturedHighlight.count > 0) {
+      glActiveTexture(GL_TEXTURE2);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, r.textureArray);
+      glActiveTexture(GL_TEXTURE0);
+      glUniform1i(glGetUniformLocation(r.meshProgram, "uTextured"), 1);
+      glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.0f);
+      glBindVertexArray(r.texturedFaces.vao);
+      glDrawArrays(GL_TRIANGLES, 0, r.texturedFaces.count);
+      glUniform1f(glGetUniformLocation(r.meshProgram, "uTint"), 0.35f);
+      glBindVertexArray(r.texturedHighlight.vao);
+      glDrawArrays(GL_TRIANGLES, 0, r.texturedHighlight.count);
+      glUniform1i(glGetUniformLocation(r.meshProgram, "uTextured"), 0);
+      glActiveTexture(GL_TEXTURE2);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      glActiveTexture(GL_TEXTURE0);
+    }
     if (shadows) {
       // The ground, pushed further back than the faces so floors at z = 0 win over it.
       glPolygonOffset(4.0f, 16.0f);
@@ -394,6 +447,32 @@ void Renderer::draw(const OrbitCamera& camera, int x, int y, int width, int heig
   }
 }
 
+void Renderer::Impl::makeTextureArray() {
+  if (textureArray) return;
+  const std::vector<std::string_view>& names = builtinTextureNames();
+  const int size = materialTexture(names.front())->size;
+  for (std::string_view n : names)
+    if (materialTexture(n)->size != size) throw Error("the built-in textures differ in size");
+  glGenTextures(1, &textureArray);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, textureArray);
+  GLint alignment = 4;
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  // Rows top first, as the glb's PNG: v = 0 is the image's top row in both.
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB8, size, size, GLsizei(names.size()), 0, GL_RGB, GL_UNSIGNED_BYTE,
+               nullptr);
+  for (std::size_t i = 0; i < names.size(); ++i)
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(i), size, size, 1, GL_RGB, GL_UNSIGNED_BYTE,
+                    materialTexture(names[i])->rgb.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+  glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+}
+
 void Renderer::Impl::renderShadowMap(const glm::mat4& light) {
   Impl& r = *this;
   GLint drawFbo = 0, readFbo = 0, viewport[4] = {}, scissor[4] = {};
@@ -432,7 +511,7 @@ void Renderer::Impl::renderShadowMap(const glm::mat4& light) {
   glPolygonOffset(2.0f, 4.0f);
   glUseProgram(r.shadowProgram);
   setMat(r.shadowProgram, "uLightViewProj", light);
-  for (const Buffer* b : {&r.faces, &r.highlightFaces}) {
+  for (const Buffer* b : {&r.faces, &r.highlightFaces, &r.texturedFaces, &r.texturedHighlight}) {
     glBindVertexArray(b->vao);
     glDrawArrays(GL_TRIANGLES, 0, b->count);
   }

@@ -2,6 +2,7 @@
 // The scene renderer: OpenGL 3.3 core, independent of the window system. It draws into
 // whatever framebuffer is bound (the editor's window, or an OffscreenTarget headless).
 #include "core/scene.h"
+#include "core/textures.h"
 #include "render/camera.h"
 #include "render/image.h"
 #include "render/overlay.h"
@@ -28,6 +29,13 @@ struct RenderSettings {
   // over the visible faces and a ground plane at z = 0 under the grid receives them too.
   std::optional<Vec3> sun;
   bool shadows = false;
+  // Textured faces (docs/city.md, "Textures"): a face shows the texture `tagTextures` gives its
+  // object and tag (a style's tag_textures) or else its built-in material's, with the glb's
+  // texture coordinates (core/textures.h), sampled with repeat and mipmaps; other faces keep
+  // their colour. Off by default: the golden images are of colours. Read when the buffers are
+  // rebuilt (a new scene revision, visibility, highlight or `textures`).
+  bool textures = false;
+  TagTextures tagTextures;
 };
 
 // The studio sun (towards it), and a sun by azimuth (degrees from +X towards +Y, as the camera's)

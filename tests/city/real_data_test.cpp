@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 
 using namespace corbel;
@@ -64,8 +65,9 @@ TEST(RealData, TheCliWritesTheTownAndItsTiles) {
 }
 
 // The glb of a street of old-town houses is textured by tag: read as bytes and its JSON chunk
-// parsed, every material the style's tags give a built-in name has a texture of its own, every
-// primitive of such a material a UV per corner; `--textures off` writes none, a bad value is named.
+// parsed, every material the style's tags give a built-in name has its texture, the faces of the
+// style's tag_textures theirs, every primitive of such a material a UV per corner; `--textures
+// off` writes none, a bad value is named.
 TEST(RealData, TheCliTexturesTheGlbByTag) {
   const auto dir = std::filesystem::temp_directory_path() / "corbel_city_texture_test";
   std::filesystem::remove_all(dir);
@@ -87,22 +89,36 @@ TEST(RealData, TheCliTexturesTheGlbByTag) {
   };
   ASSERT_EQ(run("town.glb", ""), 0);
   const nlohmann::json g = gltfOf("town.glb");
+  // A material "M (texture T)" is M on faces whose tag shows T (the style's tag_textures: soffits
+  // of timber, dormer roofs of metal); every other textured material shows its own texture. One
+  // image and texture per texture name, named by it.
   std::set<std::string> textured;
-  std::set<int> texturesUsed;
+  std::map<std::string, int> textureOfName;
+  bool tagTextured = false;
   for (const auto& m : g["materials"]) {
     const std::string name = m["name"];
     const bool has = m["pbrMetallicRoughness"].contains("baseColorTexture");
-    EXPECT_EQ(has, isBuiltinMaterial(name)) << name;  // the table of core/materials.h
+    std::string texture = name;
+    if (const auto own = name.find(" (texture "); own != std::string::npos) {
+      texture = name.substr(own + 10, name.size() - own - 11);
+      EXPECT_TRUE(texture == "timber" || texture == "metal") << name;
+      EXPECT_TRUE(has) << name;
+      tagTextured = tagTextured || texture == "timber";
+    } else {
+      EXPECT_EQ(has, isBuiltinMaterial(name)) << name;  // the table of core/materials.h
+    }
     if (has) {
       textured.insert(name);
-      EXPECT_TRUE(texturesUsed.insert(m["pbrMetallicRoughness"]["baseColorTexture"]["index"].get<int>()).second)
-          << name;
+      const int index = m["pbrMetallicRoughness"]["baseColorTexture"]["index"].get<int>();
+      EXPECT_EQ(textureOfName.emplace(texture, index).first->second, index) << name;
+      EXPECT_EQ(g["images"][g["textures"][index]["source"].get<int>()]["name"], texture) << name;
     }
   }
   EXPECT_TRUE(textured.count("plaster") || textured.count("brick"));
-  EXPECT_TRUE(textured.count("timber"));  // the gables' tag
-  EXPECT_EQ(g["images"].size(), textured.size());
-  EXPECT_EQ(g["textures"].size(), textured.size());
+  EXPECT_TRUE(textured.count("timber"));  // the gables' tag material
+  EXPECT_TRUE(tagTextured);               // the soffits' tag texture
+  EXPECT_EQ(g["images"].size(), textureOfName.size());
+  EXPECT_EQ(g["textures"].size(), textureOfName.size());
   std::size_t primitives = 0;
   for (const auto& mesh : g["meshes"])
     for (const auto& p : mesh["primitives"]) {

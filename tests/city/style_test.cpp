@@ -202,3 +202,80 @@ TEST(Style, TheShippedStylesLoad) {
   }
   EXPECT_EQ(loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/mixed.json").types.size(), 7u);
 }
+
+namespace {
+std::string withTagTextures(const std::string& table) {
+  return R"({"profiles": [{"name": "hip", "points": [[0, 0], [0, 3], [3, 6]], "tags": ["wall", "roof"]}],
+             "types": [{"name": "a", "edges": [{"profiles": "hip"}]}], "tag_textures": )" +
+         table + "}";
+}
+}  // namespace
+
+// tag_textures: a name alone takes the texture's own tile, {texture, metres} a repeat of its own;
+// the lookup handed to the exporter and renderer answers for those tags only.
+TEST(Style, TagTexturesNameABuiltInTextureAndARepeat) {
+  const Style s = parseStyle(withTagTextures(R"({"roof": "slate", "wall": {"texture": "brick", "metres": 0.64},
+                                                 "soffit": {"texture": "timber"}})"));
+  ASSERT_EQ(s.tagTextures.size(), 3u);
+  EXPECT_EQ(s.tagTextures.at("roof"), (SurfaceTexture{"slate", 0}));
+  EXPECT_EQ(s.tagTextures.at("wall"), (SurfaceTexture{"brick", 0.64}));
+  EXPECT_EQ(s.tagTextures.at("soffit"), (SurfaceTexture{"timber", 0}));
+  const TagTextures lookup = tagTexturesOf(s);
+  ASSERT_TRUE(lookup);
+  ASSERT_NE(lookup(7, "wall"), nullptr);
+  EXPECT_EQ(lookup(7, "wall")->name, "brick");
+  EXPECT_EQ(lookup(7, "gable"), nullptr);
+  EXPECT_EQ(lookup(7, ""), nullptr);
+  EXPECT_FALSE(tagTexturesOf(parseStyle(withType(R"({"name": "a", "edges": [{"profiles": "hip"}]})"))));
+  // What a face then shows: the tag's texture and repeat, else its material's (core/textures.h).
+  const TextureUse roof = textureFor(lookup(1, "roof"), "roof_tile");
+  EXPECT_EQ(roof.name, "slate");
+  EXPECT_TRUE(roof.own);
+  EXPECT_DOUBLE_EQ(roof.metres, materialTexture("slate")->metres);
+  EXPECT_DOUBLE_EQ(textureFor(lookup(1, "wall"), "plaster").metres, 0.64);
+  const TextureUse gable = textureFor(lookup(1, "gable"), "plaster");
+  EXPECT_EQ(gable.name, "plaster");
+  EXPECT_FALSE(gable.own);
+  EXPECT_EQ(textureFor(nullptr, "unobtainium").texture, nullptr);
+}
+
+// A style that uses another gets its tag textures; its own win for the same tag.
+TEST(Style, TagTexturesOfAUsedStyleJoinAndTheUsersWin) {
+  const auto dir = std::filesystem::temp_directory_path() / "corbel_city_tag_texture_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "base.json") << withTagTextures(R"({"roof": "slate", "wall": "brick"})");
+  std::ofstream(dir / "user.json")
+      << R"({"use": ["base.json"], "tag_textures": {"roof": {"texture": "metal", "metres": 1}}})";
+  const Style s = loadStyle((dir / "user.json").string());
+  EXPECT_EQ(s.tagTextures.at("roof"), (SurfaceTexture{"metal", 1}));
+  EXPECT_EQ(s.tagTextures.at("wall"), (SurfaceTexture{"brick", 0}));
+}
+
+TEST(Style, TagTextureFaultsNameTheirKey) {
+  EXPECT_EQ(parseError(withTagTextures(R"(["slate"])")), "tag_textures: expected an object, found an array");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": 3})")),
+            "tag_textures.roof: expected a texture name or {\"texture\": name, \"metres\": m}");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": "marble"})")),
+            "tag_textures.roof: no built-in texture named \"marble\" (expected one of: plaster, stone, brick, "
+            "roof_tile, slate, concrete, timber, glass, metal, grass)");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "Slate"}})")).substr(0, 52),
+            "tag_textures.roof.texture: no built-in texture named");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": 5}})")),
+            "tag_textures.roof.texture: expected a string, found a number");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"metres": 2}})")).substr(0, 26), "tag_textures.roof.texture:");
+  for (const char* bad : {"0", "-1.5", "1e5"})
+    EXPECT_EQ(parseError(withTagTextures(std::string(R"({"roof": {"texture": "slate", "metres": )") + bad + "}}")),
+              "tag_textures.roof.metres: the metres of one repeat must be greater than 0 and at most 10000")
+        << bad;
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "metres": "2"}})")),
+            "tag_textures.roof.metres: expected a number, found a string");
+  // JSON has no NaN: null (what a NaN is written as) and an overflowing number are refused too.
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "metres": null}})")),
+            "tag_textures.roof.metres: expected a number, found null");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "metres": 1e999}})")),
+            "tag_textures.roof.metres: number is not finite (1e999 is out of range)");
+  EXPECT_EQ(parseError(withTagTextures(R"({"roof": {"texture": "slate", "scale": 2}})")),
+            "tag_textures.roof.scale: unknown key (expected one of: metres, texture)");
+  EXPECT_EQ(parseError(withTagTextures(R"({"": "slate"})")),
+            "tag_textures[\"\"]: the empty tag names no faces (faces without a tag keep their material's texture)");
+}

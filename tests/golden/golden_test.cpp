@@ -32,7 +32,8 @@ std::vector<std::string> examples() {
   return out;
 }
 
-render::Image renderExample(const std::string& name) {
+// With `textures`, the renderer's textured mode and the town styles' tag textures.
+render::Image renderExample(const std::string& name, bool textures = false) {
   const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + name + ".corbel");
   Scene scene;
   SceneSync sync;
@@ -40,11 +41,13 @@ render::Image renderExample(const std::string& name) {
   statics::registerKernel(sync);
   kifs::registerKernel(sync);
   growth::registerKernel(sync);
-  city::registerKernel(sync);
+  const auto towns = city::registerKernel(sync);
   sync.update(p.document, scene);
   for (const auto& [id, st] : sync.status()) EXPECT_EQ(st.error, "") << name;
   render::RenderSettings settings;
   settings.visible = [&](ObjectId id) { return p.document.find(id)->visible; };
+  settings.textures = textures;
+  if (textures) settings.tagTextures = towns->tagTextures();
   BBox box;
   for (const auto& o : p.document.objects)
     if (o.visible) box.add(scene.bounds(o.id));
@@ -69,6 +72,13 @@ INSTANTIATE_TEST_SUITE_P(Examples, Golden, ::testing::ValuesIn(examples()),
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n;
                          });
+
+// The old town in the renderer's textured mode (docs/city.md): plaster, brick, roof tiles and
+// slate by material, timber gables by tag_materials, timber soffits and metal dormer roofs by
+// tag_textures. The only textured golden: the others are of colours.
+TEST(TexturedGolden, OldTownMatchesReferenceImage) {
+  expectMatchesGolden(renderExample("town-oldtown", true), "town-oldtown-textured");
+}
 
 // Rendering is deterministic: two renders of each example in a row are byte-identical.
 TEST(GoldenStability, TwoRendersInARowAreIdentical) {

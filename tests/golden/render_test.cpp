@@ -2,6 +2,7 @@
 // the camera matrices and the shoelace formula, the documented lighting model, visibility.
 #include "core/massing.h"
 #include "core/materials.h"
+#include "core/textures.h"
 #include "golden_support.h"
 
 #include <glm/glm.hpp>
@@ -198,6 +199,134 @@ TEST(Renderer, OverlayOnTopShowsThroughSolids) {
   renderer.overlayOnTop().arrow(Vec3(-8, 0, 1.5), Vec3(8, 0, 1.5), {1.0f, 0.0f, 0.0f, 1.0f}, 0.25);
   EXPECT_TRUE(redAtHead(render::renderImage(renderer, scene, camera, kSize, kSize, plain())));
   renderer.overlayOnTop().clear();
+}
+
+// Textured mode: a square face 8 × 8 m at z = 1 seen from straight above, textured either by a
+// tag (the lookup of RenderSettings::tagTextures) or by its material. The oracle: each pixel's
+// centre unprojected through the camera's matrices onto the face, its texture coordinates by
+// hand (plan (x, y) over the repeat, shifted by whole repeats so the face starts at u = 0 and its
+// top at v = 0, v down the image), the generated texels (core/textures.h) sampled bilinearly with
+// repeat as GL magnifies, and lit by the documented lighting model.
+struct TexturedView {
+  render::OrbitCamera camera;
+  Scene scene;
+};
+
+TexturedView texturedSquare(const std::string& material, double cameraDistance) {
+  TexturedView t;
+  MeshData m;
+  for (const Vec3& p : {Vec3(-4, -4, 1), Vec3(4, -4, 1), Vec3(4, 4, 1), Vec3(-4, 4, 1)}) m.addPoint(p);
+  m.addFace({0, 1, 2, 3}, m.addTag("roof"), m.addMaterial(material));
+  t.scene.replaceObject(1, Kind::Shell, "square", m);
+  t.camera = topCamera();
+  t.camera.target = Vec3(0, 0, 1);
+  t.camera.distance = cameraDistance;
+  return t;
+}
+
+// Where pixel (px, py)'s centre sees the plane z = height.
+Vec3 pixelOnPlane(const render::OrbitCamera& c, int px, int py, int w, int h, double height) {
+  const glm::dmat4 inv = glm::inverse(c.projection(double(w) / h) * c.view());
+  const double x = (px + 0.5) / w * 2 - 1, y = 1 - (py + 0.5) / h * 2;
+  glm::dvec4 a = inv * glm::dvec4(x, y, -1, 1), b = inv * glm::dvec4(x, y, 1, 1);
+  a /= a.w;
+  b /= b.w;
+  const double s = (height - a.z) / (b.z - a.z);
+  return Vec3(a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), height);
+}
+
+// Bilinear filtering of the texture at (u, v) with repeat, texel centres at half-integers.
+Rgb bilinear(const MaterialTexture& t, double u, double v) {
+  const double s = u * t.size - 0.5, r = v * t.size - 0.5;
+  const int i0 = int(std::floor(s)), j0 = int(std::floor(r));
+  const double fs = s - i0, fr = r - j0;
+  auto texel = [&](int i, int j, int k) {
+    i = ((i % t.size) + t.size) % t.size;
+    j = ((j % t.size) + t.size) % t.size;
+    return t.rgb[(std::size_t(j) * t.size + i) * 3 + k] / 255.0;
+  };
+  Rgb out;
+  for (int k = 0; k < 3; ++k)
+    out[k] = float((1 - fr) * ((1 - fs) * texel(i0, j0, k) + fs * texel(i0 + 1, j0, k)) +
+                   fr * ((1 - fs) * texel(i0, j0 + 1, k) + fs * texel(i0 + 1, j0 + 1, k)));
+  return out;
+}
+
+struct OracleFit {
+  std::size_t pixels = 0, off = 0;  // pixels compared; those with a channel more than 8 off
+  double meanError = 0;             // per channel, 0..255
+};
+
+// Compares the image inside the square (0.2 m from its edges) with the oracle for a repeat of
+// `metres`; `flipV` makes the oracle wrong on purpose (v up the image), to show it can tell.
+OracleFit fitTexture(const render::Image& img, const render::OrbitCamera& camera, const MaterialTexture& tex,
+                     double metres, bool flipV = false) {
+  OracleFit fit;
+  double sum = 0;
+  // By hand for this square: u = x / metres − floor(−4 / metres), v = ceil(4 / metres) − y / metres.
+  const double u0 = std::floor(-4 / metres), v0 = std::ceil(4 / metres);
+  for (int py = 0; py < img.height; ++py)
+    for (int px = 0; px < img.width; ++px) {
+      const Vec3 p = pixelOnPlane(camera, px, py, img.width, img.height, 1.0);
+      if (std::abs(p[0]) > 3.8 || std::abs(p[1]) > 3.8) continue;
+      const double u = p[0] / metres - u0, v = flipV ? p[1] / metres : v0 - p[1] / metres;
+      const auto want = litColor(bilinear(tex, u, v), Vec3(0, 0, 1));
+      const auto* got = img.at(px, py);
+      int worst = 0;
+      for (int k = 0; k < 3; ++k) {
+        worst = std::max(worst, std::abs(int(got[k]) - want[k]));
+        sum += std::abs(int(got[k]) - want[k]);
+      }
+      ++fit.pixels;
+      fit.off += worst > 8;
+    }
+  fit.meanError = fit.pixels ? sum / (3.0 * fit.pixels) : 1e9;
+  return fit;
+}
+
+TEST(RendererTextures, ATagsTextureIsDrawnAtItsRepeatAsTheTexelsSay) {
+  // brick at 8 m per repeat: 128 texels over 8 m, about 2.9 pixels per texel (magnified).
+  const TexturedView view = texturedSquare("plaster", 12.0);
+  const SurfaceTexture brick{"brick", 8.0};
+  render::RenderSettings settings = plain();
+  settings.textures = true;
+  settings.tagTextures = [&](ObjectId, const std::string& tag) { return tag == "roof" ? &brick : nullptr; };
+  const render::Image img = render::renderImage(sharedRenderer(), view.scene, view.camera, kSize, kSize, settings);
+  const MaterialTexture& tex = *materialTexture("brick");
+  const OracleFit fit = fitTexture(img, view.camera, tex, 8.0);
+  EXPECT_GT(fit.pixels, 100000u);
+  EXPECT_LT(double(fit.off) / fit.pixels, 0.01) << fit.off << " of " << fit.pixels << " pixels off";
+  EXPECT_LT(fit.meanError, 1.5);
+  // The oracle can tell: with v running the wrong way, or at the brick's own 1.28 m repeat
+  // (which the tag replaced), most pixels are off.
+  EXPECT_GT(double(fitTexture(img, view.camera, tex, 8.0, true).off) / fit.pixels, 0.2);
+  EXPECT_GT(double(fitTexture(img, view.camera, tex, tex.metres).off) / fit.pixels, 0.2);
+
+  // Without the textured mode the same face is flat plaster (the golden images' look).
+  settings.textures = false;
+  const render::Image flat = render::renderImage(sharedRenderer(), view.scene, view.camera, kSize, kSize, settings);
+  const auto plaster = litColor(materialColor("plaster", Kind::Shell), Vec3(0, 0, 1));
+  for (const auto& [px, py] : {std::pair{200, 200}, {120, 90}, {300, 310}})
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(flat.at(px, py)[k], plaster[k], 2);
+}
+
+TEST(RendererTextures, AMaterialsOwnTextureIsDrawnWithoutATag) {
+  // slate, 2 m per repeat, seen from 3 m: about 2.9 pixels per texel again.
+  const TexturedView view = texturedSquare("slate", 3.0);
+  render::RenderSettings settings = plain();
+  settings.textures = true;
+  const render::Image img = render::renderImage(sharedRenderer(), view.scene, view.camera, kSize, kSize, settings);
+  const MaterialTexture& tex = *materialTexture("slate");
+  const OracleFit fit = fitTexture(img, view.camera, tex, tex.metres);
+  EXPECT_GT(fit.pixels, 100000u);
+  EXPECT_LT(double(fit.off) / fit.pixels, 0.01) << fit.off << " of " << fit.pixels << " pixels off";
+  EXPECT_LT(fit.meanError, 1.5);
+  EXPECT_GT(double(fitTexture(img, view.camera, tex, tex.metres, true).off) / fit.pixels, 0.2);
+  // A material with no built-in texture keeps its colour in the textured mode.
+  const TexturedView other = texturedSquare("unobtainium", 3.0);
+  const render::Image plain = render::renderImage(sharedRenderer(), other.scene, other.camera, kSize, kSize, settings);
+  const auto want = litColor(materialColor("unobtainium", Kind::Shell), Vec3(0, 0, 1));
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(plain.at(200, 200)[k], want[k], 2);
 }
 
 // The lighting model of shaders/mesh.frag.glsl with any sun, and the share of the sun a shadow

@@ -131,6 +131,7 @@ TEST(Cli, BadCommandLinesExitTwo) {
       "render " + v + " --out " + quote(dir.file("a.png")) + " --camera 10",
       "render " + v + " --out " + quote(dir.file("a.png")) + " --camera 10,20,-5",
       "render " + v + " --out " + quote(dir.file("a.png")) + " --bogus",
+      "render " + v + " --out " + quote(dir.file("a.png")) + " --textures maybe",
   };
   for (const std::string& args : bad) {
     const CliRun r = cli(dir, args);
@@ -268,6 +269,29 @@ TEST(Cli, RenderWritesAPng) {
   const std::string png = readText(out);
   ASSERT_GE(png.size(), 8u);
   EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
+// render --textures: off is the default (the same bytes), on draws the textures (the old town's
+// walls, roofs and ground change colour pixel by pixel, not only at edges).
+TEST(Cli, RenderTexturesAreOptIn) {
+  TempDir dir;
+  const std::string town = quote(corbel::test::sourcePath("assets/examples/town-oldtown.corbel"));
+  for (const char* mode : {"", " --textures off", " --textures on"}) {
+    const std::string name = std::string("t") + (mode[0] ? mode + 12 : "default") + ".png";
+    const CliRun r = cli(dir, "render " + town + " --out " + quote(dir.file(name)) + " --size 320x240" + mode);
+    ASSERT_EQ(r.code, 0) << mode << ": " << r.err;
+  }
+  EXPECT_EQ(readText(dir.file("tdefault.png")), readText(dir.file("toff.png")));
+  const corbel::render::Image off = corbel::render::readPng(dir.file("toff.png"));
+  const corbel::render::Image on = corbel::render::readPng(dir.file("ton.png"));
+  ASSERT_EQ(off.rgba.size(), on.rgba.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < off.rgba.size(); i += 4)
+    differ += std::abs(int(off.rgba[i]) - int(on.rgba[i])) + std::abs(int(off.rgba[i + 1]) - int(on.rgba[i + 1])) > 6;
+  EXPECT_GT(differ, off.rgba.size() / 4 / 10) << "pixels that changed: " << differ;
+  const CliRun bad = cli(dir, "render " + town + " --out " + quote(dir.file("bad.png")) + " --textures yes");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--textures: expected on or off, not 'yes'"), std::string::npos) << bad.err;
 }
 
 // statics PROJECT --render / --landscape: the editor's statics pictures, headless.
