@@ -12,7 +12,9 @@
 #include "volume_oracle.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <string>
 
 namespace corbel::extrude::test {
@@ -116,7 +118,8 @@ TEST(Rebuilt, PlansThatOverlappedThemselvesCloseWithWiderTolerances) {
 }
 
 // random15198: the 10× rebuild alone closes, but 1.4e-3 away from the unperturbed plan's
-// volume; 100× closes on yet another roof. The disagreement refuses it, and the failure says so.
+// volume, and the 100× rebuild disagrees with it by as much. The disagreement refuses it, and
+// the failure says so.
 TEST(Rebuilt, ARebuildThatAWiderOneContradictsIsRefused) {
   const ExtrusionSpec spec = saved("rebuilt/random15198.corbel");
   const VolumeOracle o = independentVolume(spec);
@@ -170,6 +173,31 @@ TEST(Rebuilt, APlanThatPassesIsBuiltOnceAndKeepsItsShell) {
     EXPECT_EQ(with.mesh.points, direct.points);
     EXPECT_EQ(with.mesh.faces, direct.faces);
   }
+}
+
+// corbel-cli extrude goes through the batch: it rebuilds, says so in --stats, and --no-retry
+// gives the first build's failure.
+TEST(Rebuilt, CorbelCliExtrudeRebuildsAndNoRetryDoesNot) {
+  auto stats = [](const std::string& extra) {
+    const std::string cmd = std::string(CORBEL_CLI) + " extrude " + CORBEL_SOURCE_DIR +
+                            "/tests/data/extrude/rebuilt/random21797.corbel --stats" + extra;
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+    if (p) pclose(p);
+    return nlohmann::json::parse(out.substr(0, out.find('\n')));
+  };
+  const auto rebuilt = stats("");
+  EXPECT_FALSE(rebuilt.contains("error")) << rebuilt;
+  EXPECT_EQ(rebuilt["tolerance_factor"], 10.0);
+  EXPECT_EQ(rebuilt["builds"], 4);
+  ASSERT_FALSE(rebuilt["warnings"].empty());
+  EXPECT_EQ(rebuilt["warnings"][0].get<std::string>().rfind("rebuilt with 10× tolerances", 0), 0u);
+  const auto first = stats(" --no-retry");
+  EXPECT_TRUE(first.contains("error")) << first;
+  EXPECT_EQ(first["tolerance_factor"], 1.0);
+  EXPECT_EQ(first["builds"], 1);
 }
 
 }  // namespace
