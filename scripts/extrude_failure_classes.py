@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Groups the random robustness run's failures (build/tests/extrude-random-failures/*.corbel)
-into classes by running `corbel-cli extrude CASE --stats` on each and reading its error and
-warnings. Usage: scripts/extrude_failure_classes.py [FAILURE_DIR] [--cli PATH] [--list CLASS]"""
+"""Groups the random robustness run's first-build failures (build/tests/extrude-random-failures/
+*.corbel, still failing, and its rebuilt/ subfolder, closed by a rebuild with wider tolerances)
+into classes by running `corbel-cli extrude CASE --stats --no-retry` on each and reading its error
+and warnings, then says per class how many `corbel-cli extrude CASE --stats` (with rebuilds)
+closes. Usage: scripts/extrude_failure_classes.py [FAILURE_DIR] [--cli PATH] [--list CLASS]"""
 import json
 import subprocess
 import sys
@@ -31,14 +33,22 @@ def classify(error, warnings):
     return "other: " + error[:60]
 
 
-def run(cli, path):
-    p = subprocess.run([cli, "extrude", str(path), "--stats"], capture_output=True, text=True)
+def stats(cli, path, *extra):
+    p = subprocess.run([cli, "extrude", str(path), "--stats", *extra], capture_output=True, text=True)
     for line in p.stdout.splitlines():
         j = json.loads(line)
-        if "summary" in j or "error" not in j:
-            continue
-        return classify(j["error"], j.get("warnings", [])), j
-    return "closed now", None
+        if "summary" not in j:
+            return j
+    return None
+
+
+def run(cli, path):
+    first = stats(cli, path, "--no-retry")
+    if first is None or "error" not in first:
+        return "closed now", None
+    again = stats(cli, path)
+    rebuilt = again is not None and "error" not in again
+    return classify(first["error"], first.get("warnings", [])), (again.get("tolerance_factor") if rebuilt else None)
 
 
 def main():
@@ -54,16 +64,18 @@ def main():
         show = args[i + 1]
         del args[i : i + 2]
     folder = Path(args[0] if args else "build/tests/extrude-random-failures")
-    cases = sorted(folder.glob("*.corbel"))
+    cases = sorted(folder.glob("*.corbel")) + sorted((folder / "rebuilt").glob("*.corbel"))
     with ThreadPoolExecutor(2) as pool:
         results = list(pool.map(lambda c: run(cli, c), cases))
     counts = Counter(r[0] for r in results)
+    closed = Counter(r[0] for r in results if r[1] is not None)
     members = defaultdict(list)
     for c, r in zip(cases, results):
-        members[r[0]].append(c.stem)
+        members[r[0]].append(c.stem + (f" (rebuilt {r[1]:g}x)" if r[1] is not None else ""))
+    print(" first  rebuilt  class")
     for k, n in counts.most_common():
-        print(f"{n:6d}  {k}")
-    print(f"{len(cases):6d}  total")
+        print(f"{n:6d}  {closed[k]:6d}   {k}")
+    print(f"{len(cases):6d}  {sum(closed.values()):6d}   total")
     if show:
         for m in members.get(show, []):
             print(m)

@@ -49,12 +49,14 @@ usage:
   corbel-cli export PROJECT --out FILE.{obj,ply,off,glb} [--object NAME]
   corbel-cli check PROJECT        validate the file and every object's shell (JSON lines)
   corbel-cli extrude INPUT [--pitch DEG] [--wall-height M] [--out FILE.{obj,ply,off,glb}] [--stats]
-                    [--jobs N] [--library PROJECT] [--merge-coplanar]
+                    [--jobs N] [--library PROJECT] [--merge-coplanar] [--no-retry]
                     INPUT: a project (its extrusion objects) or GeoJSON footprints (meters).
                     --pitch gives every edge one roof slope (default 45 for GeoJSON) over walls
                     --wall-height high (default 0). --stats prints one JSON line per building.
                     GeoJSON features may name a profile of the --library project ("profile").
                     --merge-coplanar writes neighbouring faces in one plane as one face.
+                    A building whose shell fails is rebuilt with 10-1000x tolerances and kept
+                    only where two rebuilds agree (a warning says so); --no-retry does not.
   corbel-cli statics arch --blocks N --thickness T [--tilt DEG] [--friction A] [--kern S]
                     [--friction-sides 4|8] [--min-thickness | --critical-tilt]
                     A semicircular arch of N voussoirs (centreline radius 1, radial joints) on
@@ -328,6 +330,7 @@ int cmdExtrude(const Args& a) {
   options.jobs = jobs;
   options.keepMeshes = !out.empty();
   options.mergeCoplanar = a.options.count("--merge-coplanar") > 0;
+  if (a.options.count("--no-retry")) options.retryFactors.clear();
   const auto t0 = std::chrono::steady_clock::now();
   const auto results = extrude::extrudeBatch(items, options);
   const double batchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -371,6 +374,8 @@ int cmdExtrude(const Args& a) {
       j["watertight"] = r.watertight;
       j["manifold"] = r.manifold;
       j["warnings"] = r.warnings;
+      j["tolerance_factor"] = r.toleranceFactor;
+      j["builds"] = r.builds;
       j["ms"] = r.ms;
       std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else if (!r.ok) {
@@ -459,9 +464,15 @@ int main(int argc, char** argv) {
     if (cmd == "export") return cmdExport(parseArgs(argc, argv, {{"--out", true}, {"--object", true}}));
     if (cmd == "check") return cmdCheck(parseArgs(argc, argv, {}));
     if (cmd == "extrude")
-      return cmdExtrude(parseArgs(argc, argv, {{"--pitch", true}, {"--wall-height", true}, {"--out", true},
-                                               {"--stats", false}, {"--jobs", true}, {"--library", true},
-                                               {"--merge-coplanar", false}}));
+      return cmdExtrude(parseArgs(argc, argv,
+                                  {{"--pitch", true},
+                                   {"--wall-height", true},
+                                   {"--out", true},
+                                   {"--stats", false},
+                                   {"--jobs", true},
+                                   {"--library", true},
+                                   {"--merge-coplanar", false},
+                                   {"--no-retry", false}}));
     if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics") return cli::runStatics(argc, argv);
     if (cmd == "simulate") return cli::runSimulate(argc, argv);

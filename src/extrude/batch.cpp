@@ -1,60 +1,155 @@
 #include "extrude/batch.h"
 
+#include "core/error.h"
 #include "core/scene.h"
 #include "extrude/features.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <thread>
 
 namespace corbel::extrude {
 
 namespace {
 
-void runOne(const BatchItem& item, BatchResult& r, bool keepMesh, bool merge, double timeLimit) {
+// One build of one building at one tolerance factor, validated as a closed 2-manifold.
+struct Attempt {
+  bool ok = false;
+  bool retryable = false;  // failed in a way wider tolerances may mend (not bad input, not time)
+  std::string error;
+  std::vector<std::string> warnings;
+  ShellMeasures measures;
+  std::size_t meshFaces = 0, meshVertices = 0;
+  bool watertight = false, manifold = false;
+  std::vector<AnchorFrame> anchors;
+  MeshData mesh;
+};
+
+Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge, double timeLimit) {
+  Attempt a;
+  try {
+    const ExtrusionResult er = extrude(item.spec, nullptr, ExtrudeOptions{timeLimit, factor});
+    a.warnings = er.shell.warnings;
+    a.anchors = er.anchors;
+    a.measures = measure(er.shell);
+    a.retryable = true;
+    // A shell that is not closed fails here, before a mesh is built: inserting a badly broken
+    // shell into a half-edge mesh can take seconds.
+    if (const std::size_t open = unpairedEdges(er.shell)) {
+      a.error = "the shell is not closed: " + std::to_string(open) + " edges without a partner";
+      return a;
+    }
+    MeshData mesh = toMeshData(er.shell, item.spec, item.spec.material);
+    appendFeatures(mesh, item.spec, er, a.warnings);
+    Scene scene;
+    scene.replaceObject(1, Kind::Shell, item.id, mesh);
+    const ValidityReport v = scene.validate(1);
+    a.meshFaces = v.faces;
+    a.meshVertices = v.vertices;
+    a.watertight = v.watertight();
+    a.manifold = v.manifold();
+    a.ok = v.closedManifold();
+    if (!a.ok) {
+      a.error = "the shell is not a closed 2-manifold:";
+      for (const auto& p : v.problems()) a.error += " " + p + ";";
+    }
+    if (keepMesh && merge) {
+      a.mesh = toMeshData(er.shell, item.spec, item.spec.material, true);
+      std::vector<std::string> again;
+      appendFeatures(a.mesh, item.spec, er, again);
+    } else if (keepMesh) {
+      a.mesh = std::move(mesh);
+    }
+  } catch (const InputError& e) {
+    a.error = e.what();  // bad input: the same with any tolerance
+  } catch (const std::exception& e) {
+    a.error = e.what();
+    // A sweep that ran out of time would only run out again, for each factor.
+    a.retryable = std::string(e.what()).find("time limit") == std::string::npos;
+  }
+  return a;
+}
+
+double relativeDifference(double a, double b) {
+  const double m = std::max(std::abs(a), std::abs(b));
+  return m > 0 ? std::abs(a - b) / m : 0.0;
+}
+
+std::string times(double factor) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g×", factor);
+  return buf;
+}
+
+void finish(BatchResult& r, Attempt& a, std::chrono::steady_clock::time_point t0) {
+  r.ok = a.ok;
+  r.error = a.error;
+  r.warnings = std::move(a.warnings);
+  r.measures = a.measures;
+  r.meshFaces = a.meshFaces;
+  r.meshVertices = a.meshVertices;
+  r.watertight = a.watertight;
+  r.manifold = a.manifold;
+  r.anchors = std::move(a.anchors);
+  r.mesh = std::move(a.mesh);
+  r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void runOne(const BatchItem& item, BatchResult& r, const BatchOptions& o) {
   r.id = item.id;
   if (!item.problem.empty()) {
     r.error = item.problem;
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  try {
-    const ExtrusionResult er = extrude(item.spec, nullptr, timeLimit);
-    r.warnings = er.shell.warnings;
-    r.anchors = er.anchors;
-    r.measures = measure(er.shell);
-    // A shell that is not closed fails here, before a mesh is built: inserting a badly broken
-    // shell into a half-edge mesh can take seconds.
-    if (const std::size_t open = unpairedEdges(er.shell)) {
-      r.error = "the shell is not closed: " + std::to_string(open) + " edges without a partner";
-      r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  Attempt first = attempt(item, 1.0, o.keepMeshes, o.mergeCoplanar, o.timeLimitSeconds);
+  r.builds = 1;
+  if (!first.ok && first.retryable && !o.retryFactors.empty()) {
+    // Rebuild with every factor in turn, stopping at the first that fails or disagrees with
+    // the first rebuild; keep the first rebuild only if all passed and agreed.
+    std::vector<Attempt> rebuilt;
+    double worstVolume = 0, worstRoof = 0;
+    bool agreed = true;
+    for (std::size_t i = 0; i < o.retryFactors.size() && agreed; ++i) {
+      rebuilt.push_back(attempt(item, o.retryFactors[i], o.keepMeshes && i == 0, o.mergeCoplanar, o.timeLimitSeconds));
+      ++r.builds;
+      agreed = rebuilt.back().ok;
+      if (!agreed || i == 0) continue;
+      worstVolume = std::max(worstVolume, relativeDifference(rebuilt[0].measures.volume, rebuilt[i].measures.volume));
+      worstRoof = std::max(worstRoof, relativeDifference(rebuilt[0].measures.roofArea, rebuilt[i].measures.roofArea));
+      agreed = worstVolume <= o.retryAgreement && worstRoof <= o.retryAgreement;
+    }
+    if (agreed) {
+      Attempt* chosen = &rebuilt[0];
+      r.toleranceFactor = o.retryFactors[0];
+      std::string others;
+      for (std::size_t i = 1; i < o.retryFactors.size(); ++i)
+        others += (i > 1 ? (i + 1 == o.retryFactors.size() ? " and " : ", ") : "") + times(o.retryFactors[i]);
+      char agree[96];
+      std::snprintf(agree, sizeof agree, " agree on volume within %.1e and roof area within %.1e", worstVolume,
+                    worstRoof);
+      chosen->warnings.insert(chosen->warnings.begin(),
+                              "rebuilt with " + times(r.toleranceFactor) +
+                                  " tolerances (the first build failed: " + first.error + ")" +
+                                  (others.empty() ? std::string() : "; rebuilds with " + others + agree));
+      finish(r, *chosen, t0);
       return;
     }
-    MeshData mesh = toMeshData(er.shell, item.spec, item.spec.material);
-    appendFeatures(mesh, item.spec, er, r.warnings);
-    Scene scene;
-    scene.replaceObject(1, Kind::Shell, item.id, mesh);
-    const ValidityReport v = scene.validate(1);
-    r.meshFaces = v.faces;
-    r.meshVertices = v.vertices;
-    r.watertight = v.watertight();
-    r.manifold = v.manifold();
-    r.ok = v.closedManifold();
-    if (!r.ok) {
-      r.error = "the shell is not a closed 2-manifold:";
-      for (const auto& p : v.problems()) r.error += " " + p + ";";
-    }
-    if (keepMesh && merge) {
-      r.mesh = toMeshData(er.shell, item.spec, item.spec.material, true);
-      std::vector<std::string> again;
-      appendFeatures(r.mesh, item.spec, er, again);
-    } else if (keepMesh) {
-      r.mesh = std::move(mesh);
-    }
-  } catch (const std::exception& e) {
-    r.error = e.what();
+    // Say why no rebuild was kept; the first build's error and warnings stand.
+    const double at = o.retryFactors[rebuilt.size() - 1];
+    char why[128];
+    if (!rebuilt.back().ok)
+      std::snprintf(why, sizeof why, " (rebuilt with wider tolerances: the %s rebuild failed too)", times(at).c_str());
+    else
+      std::snprintf(why, sizeof why,
+                    " (rebuilt with wider tolerances: %s and %s disagree, volume by %.1e, roof area by %.1e)",
+                    times(o.retryFactors[0]).c_str(), times(at).c_str(), worstVolume, worstRoof);
+    first.error += why;
   }
-  r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  finish(r, first, t0);
 }
 
 }  // namespace
@@ -68,7 +163,7 @@ std::vector<BatchResult> extrudeBatch(const std::vector<BatchItem>& items, const
   auto worker = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < items.size();) {
       if (progress && progress->cancelled()) return;
-      runOne(items[i], results[i], options.keepMeshes, options.mergeCoplanar, options.timeLimitSeconds);
+      runOne(items[i], results[i], options);
       const std::size_t d = ++done;
       if (progress && (d % 64 == 0 || d == items.size()))
         progress->report(double(d) / items.size(), "extruding buildings");

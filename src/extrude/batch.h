@@ -24,7 +24,11 @@ struct BatchResult {
   ShellMeasures measures;
   std::size_t meshFaces = 0, meshVertices = 0;
   bool watertight = false, manifold = false;
-  double ms = 0.0;
+  double ms = 0.0;  // all attempts together
+  // 1: the first build passed. Larger: the first build failed validation and this is the
+  // accepted rebuild with that many times the tolerances (a warning says so).
+  double toleranceFactor = 1.0;
+  int builds = 0;                    // extrusions run for it: 1 for a building that passed (or was refused) at once
   std::vector<AnchorFrame> anchors;  // the spec's mesh anchors, placed on the shell
   MeshData mesh;                 // kept when requested (for export)
 };
@@ -33,7 +37,15 @@ struct BatchOptions {
   unsigned jobs = 0;             // 0 = all cores
   bool keepMeshes = false;
   bool mergeCoplanar = false;    // kept meshes only: coplanar neighbours merged (export option)
-  double timeLimitSeconds = 10.0;  // per building
+  double timeLimitSeconds = 10.0;  // per building and attempt
+  // A building whose first build fails validation (not closed, not a 2-manifold, or an error
+  // of the sweep; never bad input or the time limit) is rebuilt with each of these tolerance
+  // factors in turn (Tolerances::forScale). A rebuild is accepted only when the next factor's
+  // rebuild passes too and both agree on volume and roof area within `retryAgreement`
+  // (relative): wider tolerances can close a shell around the wrong roof, and two of them
+  // rarely make the same wrong one. Empty: no rebuilds. docs/extrude.md has the measurements.
+  std::vector<double> retryFactors{10.0, 100.0, 1000.0};
+  double retryAgreement = 1e-6;
 };
 
 std::vector<BatchResult> extrudeBatch(const std::vector<BatchItem>& items, const BatchOptions& options,

@@ -26,12 +26,24 @@ struct ExtrusionResult {
   // One per instance of spec.anchors, in order (an anchor that repeats gives one per element).
   std::vector<AnchorFrame> anchors;
   double scale = 0.0;  // plan bounding-box diagonal the tolerances were scaled by
+  double toleranceFactor = 1.0;  // ExtrudeOptions::toleranceFactor it was built with
+};
+
+struct ExtrudeOptions {
+  double timeLimitSeconds = 0.0;  // > 0: give up with an Error after this long
+  // Multiplies the sweep's tolerances (Tolerances::forScale). 1 is the kernel as documented;
+  // larger factors are for rebuilding a shell that failed validation (extrude/batch.cpp), and
+  // their results need checking (docs/extrude.md, "Rebuilding with wider tolerances").
+  double toleranceFactor = 1.0;
 };
 
 // Validates the spec (throws InputError naming the loop/edge/point), expands its repeats
 // (core/extrusion_spec.h) and runs the sweep. Shell faces of a repeated step name the step's
 // index in `spec`.
-ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress = nullptr, double timeLimitSeconds = 0.0);
+ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, const ExtrudeOptions& options);
+inline ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress = nullptr, double timeLimitSeconds = 0.0) {
+  return extrude(spec, progress, ExtrudeOptions{timeLimitSeconds, 1.0});
+}
 
 // Areas and volume of a shell, from its planar faces (holes included).
 struct ShellMeasures {

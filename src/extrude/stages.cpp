@@ -1065,7 +1065,8 @@ ExtrusionResult Stager::run(double scale) {
 
 }  // namespace
 
-ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double timeLimitSeconds) {
+ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, const ExtrudeOptions& options) {
+  const double timeLimitSeconds = options.timeLimitSeconds;
   if (auto problem = checkSpec(spec)) {
     const auto colon = problem->find(": ");
     throw InputError(problem->substr(0, colon), colon == std::string::npos ? *problem : problem->substr(colon + 2));
@@ -1073,7 +1074,7 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double ti
   BBox box;
   for (const auto& l : spec.loops)
     for (const Vec2& p : l.points) box.add(Vec3(p[0], p[1], 0));
-  const Tolerances tol = Tolerances::forScale(box.diagonal());
+  const Tolerances tol = Tolerances::forScale(box.diagonal(), options.toleranceFactor);
   // Repeats expand into single instances first; a spec without any (most of them, and every
   // footprint of a batch) is used as it is, without a copy.
   const bool repeats = std::any_of(spec.steps.begin(), spec.steps.end(), [](const PlanStep& st) { return st.repeat.kind != RepeatKind::None; }) ||
@@ -1082,6 +1083,7 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double ti
     Stager stager(spec, tol, progress, timeLimitSeconds);
     ExtrusionResult r = stager.run(box.diagonal());
     for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = static_cast<int>(k);
+    r.toleranceFactor = options.toleranceFactor;
     return r;
   }
   const ExpandedSpec expanded = expandRepeats(spec);
@@ -1090,6 +1092,7 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, double ti
   for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = expanded.anchorSource[k];
   for (ShellFace& f : r.shell.faces)
     if (f.step >= 0 && f.step < static_cast<int>(expanded.stepSource.size())) f.step = expanded.stepSource[f.step];
+  r.toleranceFactor = options.toleranceFactor;
   return r;
 }
 

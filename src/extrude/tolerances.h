@@ -36,9 +36,16 @@ struct Tolerances {
   // left of a loop that a change (a chimney's top stepping in) closed up to rounding.
   double tinyFace;
 
-  static Tolerances forScale(double scale) {
+  // `factor` widens every tolerance of the sweep by that multiple (a rebuild of a shell that
+  // failed with the defaults, extrude/batch.cpp); the sines stay below 1e-3 and ridgeArea
+  // grows with the square of the factor, as a length squared. minEdge, the input check's
+  // bar, does not change: a plan is valid or not whatever the sweep's tolerances.
+  static Tolerances forScale(double scale, double factor = 1.0) {
     const double s = std::max(scale, 1e-3);
-    return {1e-9 * s, 1e-8 * s, 1e-8 * s, 1e-8, 1e-7, 1e-8, 1e-5, 1e-11 * s * s, 1e-7 * s, 5e-8 * s, 1e-6 * s};
+    const double f = std::max(factor, 1.0);
+    auto sine = [&](double v) { return std::min(v * f, 1e-3); };
+    return {1e-9 * s * f, 1e-8 * s * f,          1e-8 * s * f, sine(1e-8),   sine(1e-7),  sine(1e-8),
+            sine(1e-5),   1e-11 * s * s * f * f, 1e-7 * s,     5e-8 * s * f, 1e-6 * s * f};
   }
 };
 

@@ -4,7 +4,9 @@
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/create_straight_skeleton_from_polygon_with_holes_2.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace corbel::extrude::test {
@@ -43,6 +45,99 @@ SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitch)
     r.roofArea += 0.5 * newellNormal(poly).norm();
   }
   return r;
+}
+
+namespace {
+
+// Height of the profile at horizontal distance t (the first rise at t = 0 included; past the
+// last point, the last segment goes on).
+double profileHeight(const std::vector<Vec2>& pr, double t) {
+  // The last sloped segment that starts at or before t (else the first one): vertical pieces
+  // (a wall) only lift the segments after them.
+  int seg = -1;
+  for (std::size_t i = 0; i + 1 < pr.size(); ++i)
+    if (pr[i + 1][0] > pr[i][0] && (seg < 0 || pr[i][0] <= t)) seg = static_cast<int>(i);
+  const Vec2 a = pr[seg], b = pr[seg + 1];
+  return a[1] + (b[1] - a[1]) * (t - a[0]) / (b[0] - a[0]);
+}
+
+struct Corner {
+  double x, y, t;
+};
+
+// ∫ H(t) over a triangle whose t is linear, split at the profile's breakpoints so H is
+// linear on each piece: each piece gives its area × H at its centroid.
+double integrateTriangle(const std::array<Corner, 3>& tri, const std::vector<Vec2>& pr) {
+  const double signedArea =
+      0.5 * ((tri[1].x - tri[0].x) * (tri[2].y - tri[0].y) - (tri[2].x - tri[0].x) * (tri[1].y - tri[0].y));
+  if (signedArea == 0) return 0;
+  std::vector<double> cuts{-std::numeric_limits<double>::infinity()};
+  for (std::size_t i = 1; i + 1 < pr.size(); ++i) cuts.push_back(pr[i][0]);
+  cuts.push_back(std::numeric_limits<double>::infinity());
+  double sum = 0;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    std::vector<Corner> poly(tri.begin(), tri.end());
+    for (int side = 0; side < 2; ++side) {  // keep t >= cuts[k], then t <= cuts[k + 1]
+      const double level = side == 0 ? cuts[k] : cuts[k + 1];
+      if (!std::isfinite(level)) continue;
+      auto inside = [&](const Corner& c) { return side == 0 ? c.t >= level : c.t <= level; };
+      std::vector<Corner> out;
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Corner &a = poly[i], &b = poly[(i + 1) % poly.size()];
+        if (inside(a)) out.push_back(a);
+        if (inside(a) != inside(b)) {
+          const double u = (level - a.t) / (b.t - a.t);
+          out.push_back({a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), level});
+        }
+      }
+      poly = std::move(out);
+    }
+    if (poly.size() < 3) continue;
+    double area = 0, cx = 0, cy = 0, ct = 0;
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+      const Corner &a = poly[0], &b = poly[i], &c = poly[i + 1];
+      const double w = std::abs(0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)));
+      area += w;
+      cx += w * (a.x + b.x + c.x) / 3;
+      cy += w * (a.y + b.y + c.y) / 3;
+      ct += w * (a.t + b.t + c.t) / 3;
+    }
+    if (area == 0) continue;
+    sum += area * profileHeight(pr, ct / area);
+  }
+  return signedArea > 0 ? sum : -sum;
+}
+
+}  // namespace
+
+double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
+  PolygonWithHoles pwh;
+  {
+    Polygon outer;
+    for (const Vec2& v : loops[0]) outer.push_back(K::Point_2(v[0], v[1]));
+    pwh = PolygonWithHoles(outer);
+  }
+  for (std::size_t i = 1; i < loops.size(); ++i) {
+    Polygon h;
+    for (const Vec2& v : loops[i]) h.push_back(K::Point_2(v[0], v[1]));
+    pwh.add_hole(h);
+  }
+  auto ss = CGAL::create_interior_straight_skeleton_2(pwh, K());
+  if (!ss) throw std::runtime_error("CGAL could not build the straight skeleton");
+  double volume = 0;
+  for (auto f = ss->faces_begin(); f != ss->faces_end(); ++f) {
+    std::vector<Corner> poly;
+    auto h = f->halfedge();
+    const auto start = h;
+    do {
+      const auto& p = h->vertex()->point();
+      poly.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), h->vertex()->time()});
+      h = h->next();
+    } while (h != start);
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i)
+      volume += integrateTriangle({poly[0], poly[i], poly[i + 1]}, profile);
+  }
+  return volume;
 }
 
 }  // namespace corbel::extrude::test

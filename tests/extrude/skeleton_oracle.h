@@ -16,4 +16,11 @@ struct SkeletonRoof {
 // loops: outer counter-clockwise, holes clockwise (one outer loop with its holes).
 SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitchRadians);
 
+// Volume under one profile on every edge (points (w, z) from (0, 0), w never decreasing, as
+// the random plans' profiles are): every edge then moves inward by the same w(z), so the
+// active plan at height z is the straight skeleton's offset at time w(z), and a point whose
+// skeleton time is t lies under the profile's height at w = t (the last segment going on).
+// Integrated exactly over CGAL's skeleton faces, on each of which t is linear.
+double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile);
+
 }  // namespace corbel::extrude::test
