@@ -404,3 +404,41 @@ TEST(Engine, AStaircasesTopIsNeverTakenInPart) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// The look-ahead before a stair base: unit 2 (storey 1, on a second staircase's roof, 0.2 m east
+// of the first staircase's top) is growing, so its next advance could take the top's east end;
+// unit 1 waits at the staircase and takes the whole top only once unit 2 has stopped (it can
+// make no move: every face locked, so it is stuck after `patience` steps, here 10).
+TEST(Engine, AStairBaseWaitsUntilNoGrowingNeighbourCouldReachTheTop) {
+  Site site = stairSite();
+  site.circulation.push_back(test::box(14.2, 2.5, 0, 17.2, 5.5, 3));
+  Seed b = test::seedAt(14.2, 2.5, 1, 100);
+  b.locked.fill(true);
+  site.seeds.push_back(b);
+  GrowthOptions o;
+  o.patience = 10;  // unit 2 grows (in name) for 10 steps; unit 1 arrives in 3
+  GrowthEngine engine(site, o);
+  int baseStep = 0, stuckStep = 0, arrivedStep = 0;
+  Box base;
+  engine.onCommit([&](const GrowthEngine& e, const CommitRecord& r) {
+    if (r.move.type == Move::Type::StairBase) {
+      baseStep = r.step;
+      base = r.move.box;
+    }
+    if (!arrivedStep && e.units()[0].parts[0].hi[0] >= 10 - site.alpha - 1e-9) arrivedStep = r.step;
+  });
+  while (engine.step())
+    if (!stuckStep && engine.states()[1].status == UnitStatus::Stuck) stuckStep = engine.steps();
+  ASSERT_GT(arrivedStep, 0);
+  ASSERT_GT(stuckStep, arrivedStep);  // unit 1 was at the staircase while unit 2 still grew
+  ASSERT_GT(baseStep, 0);
+  EXPECT_GE(baseStep, stuckStep - 1);  // in the step unit 2 stopped (if it went first) or after
+  EXPECT_EQ(base, (Box{{engine.units()[0].parts[0].hi[0], 2, 3}, {14, 6, 9}}));  // the whole top
+  EXPECT_TRUE(test::independentViolations(site, engine.units()).empty());
+}
+
+}  // namespace
+}  // namespace corbel::growth
