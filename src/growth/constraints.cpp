@@ -35,17 +35,21 @@ bool facesAcross(const Box& b, Side s, const Box& o) {
 
 double ConstraintEnforcer::freeDistance(const std::vector<Unit>& units, std::size_t unit, int part, Side s,
                                         double limit) const {
-  return distanceAhead(units, unit, part, s, limit, 0.0, nullptr);
+  return distanceAhead(units, unit, units[unit].parts[part], part, s, limit, 0.0, nullptr);
 }
 
 double ConstraintEnforcer::lookAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit,
                                      double reach, const std::vector<bool>& growing) const {
-  return distanceAhead(units, unit, part, s, limit, reach, &growing);
+  return distanceAhead(units, unit, units[unit].parts[part], part, s, limit, reach, &growing);
 }
 
-double ConstraintEnforcer::distanceAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s,
-                                         double limit, double reach, const std::vector<bool>* growing) const {
-  const Box& b = units[unit].parts[part];
+double ConstraintEnforcer::lookAheadFrom(const std::vector<Unit>& units, std::size_t unit, const Box& from, Side s,
+                                         double limit, double reach, const std::vector<bool>& growing) const {
+  return distanceAhead(units, unit, from, -1, s, limit, reach, &growing);
+}
+
+double ConstraintEnforcer::distanceAhead(const std::vector<Unit>& units, std::size_t unit, const Box& b, int part,
+                                         Side s, double limit, double reach, const std::vector<bool>* growing) const {
   const int k = sideAxis(s);
   double d = limit;
   auto against = [&](const Box& o) {
@@ -75,23 +79,24 @@ double ConstraintEnforcer::distanceAhead(const std::vector<Unit>& units, std::si
   return d;
 }
 
-std::vector<std::pair<double, double>> ConstraintEnforcer::blockedSpans(const std::vector<Unit>& units,
-                                                                        std::size_t unit, int part, Side s,
-                                                                        double distance) const {
+FaceObstacles ConstraintEnforcer::obstaclesAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s,
+                                                 double distance) const {
   const Box& b = units[unit].parts[part];
   const int k = sideAxis(s), along = 1 - k;
-  std::vector<std::pair<double, double>> spans;
+  FaceObstacles out;
+  out.face = {b.lo[along], b.lo[2], b.hi[along], b.hi[2]};
   auto against = [&](const Box& o) {
     if (!facesAcross(b, s, o)) return;
     const double gap = sideSign(s) > 0 ? o.lo[k] - b.hi[k] : b.lo[k] - o.hi[k];
-    if (gap < distance) spans.push_back({std::max(o.lo[along], b.lo[along]), std::min(o.hi[along], b.hi[along])});
+    if (gap < distance)
+      out.obstacles.push_back({std::max(o.lo[along], b.lo[along]), std::max(o.lo[2], b.lo[2]),
+                               std::min(o.hi[along], b.hi[along]), std::min(o.hi[2], b.hi[2])});
   };
   for (const Box& z : zones_) against(z);
   for (std::size_t i = 0; i < units.size(); ++i)
     for (std::size_t j = 0; j < units[i].parts.size(); ++j)
       if (i != unit || int(j) != part) against(units[i].parts[j]);
-  std::sort(spans.begin(), spans.end());
-  return spans;
+  return out;
 }
 
 bool ConstraintEnforcer::plausible(const std::vector<Unit>& units, std::size_t unit) const {
@@ -139,6 +144,7 @@ Verdict ConstraintEnforcer::check(const std::vector<Unit>& units, std::size_t un
   const Unit& u = units[unit];
   auto no = [&](std::string why) { return Verdict{false, m, std::move(why)}; };
   if (m.part < 0 || m.part >= int(u.parts.size())) return no("no such part");
+  if (m.type == Move::Type::StairBase) return checkStairBase(units, unit, m);
   const Box& b = u.parts[m.part];
   if (m.type == Move::Type::Split) {
     if (m.axis != 0 && m.axis != 1) return no("a split cuts along x or y");
@@ -166,6 +172,39 @@ Verdict ConstraintEnforcer::check(const std::vector<Unit>& units, std::size_t un
   }
   Unit moved = u;
   applyMove(moved, v.move);
+  if (!plausibleAs(units, unit, moved)) return no("the unit would reach beyond its supports (cantilever limit)");
+  return v;
+}
+
+// Fig. 5.4: the whole top of a staircase, or nothing.
+Verdict ConstraintEnforcer::checkStairBase(const std::vector<Unit>& units, std::size_t unit, const Move& m) const {
+  const Unit& u = units[unit];
+  auto no = [&](std::string why) { return Verdict{false, m, std::move(why)}; };
+  if (m.staircase < 0 || m.staircase >= int(site_.circulation.size())) return no("no such staircase");
+  if (sideAxis(m.side) == 2) return no("a stair base is reached through a vertical face");
+  if (u.locked[static_cast<int>(m.side)]) return no("the face is locked");
+  if (sideTouchesOwnPart(u, m.part, m.side)) return no("the face touches another part of the unit");
+  if (int(u.parts.size()) >= kMaxParts) return no("the unit has its most parts");
+  std::string why;
+  const std::optional<Box> part =
+      stairBasePart(u.parts[m.part], m.side, site_.circulation[m.staircase], site_.storeyHeight, site_.alpha, &why);
+  if (!part) return no(why);
+  if (part->size(0) < kMinPartWidth - kEps || part->size(1) < kMinPartWidth - kEps)
+    return no("the staircase's top is under 3 m x 3 m");
+  if (!site_.contains(*part)) return no("the staircase's top is not inside the envelope");
+  // Never a partial occupancy: anything on any of the top refuses the whole.
+  for (const Box& z : zones_)
+    if (interiorsOverlap(*part, z, kEps)) return no("the staircase's top is not wholly free (a clearance zone)");
+  for (const Unit& o : units)
+    for (const Box& p : o.parts)
+      if (interiorsOverlap(*part, p, kEps))
+        return no("the staircase's top is not wholly free (unit " + std::to_string(o.id) + ")");
+  Verdict v{true, m, ""};
+  v.move.box = *part;
+  Unit moved = u;
+  applyMove(moved, v.move);
+  auto [first, last] = storeySpan(site_, moved);
+  if (last - first > 2) return no("a unit spans at most two storeys");
   if (!plausibleAs(units, unit, moved)) return no("the unit would reach beyond its supports (cantilever limit)");
   return v;
 }

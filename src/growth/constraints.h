@@ -15,6 +15,9 @@
 //
 // Advances that would run into an obstacle are trimmed to stop at it (when at least
 // kMinAdvance remains): the collide behaviour of Sec. 5.3 in its straightforward form.
+// A stair base (Fig. 5.4, Move::StairBase) is the whole top of a staircase or nothing: the
+// part of growth/collide.h's stairBasePart, refused when anything stands on any of it.
+#include "growth/collide.h"
 #include "growth/site.h"
 #include "growth/unit.h"
 
@@ -43,10 +46,15 @@ class ConstraintEnforcer {
   // (what it can take within reach / α steps).
   double lookAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit, double reach,
                    const std::vector<bool>& growing) const;
-  // Collide (Sec. 5.3): the spans, along side s of the part, of every obstacle (envelope
-  // excluded) that lies in front of it closer than `distance`.
-  std::vector<std::pair<double, double>> blockedSpans(const std::vector<Unit>& units, std::size_t unit, int part,
-                                                      Side s, double distance) const;
+  // The look-ahead of a face that is not yet a part's: side s of box `from` (the face of a part
+  // about to be added to units[unit]; every part of the unit counts as an obstacle).
+  double lookAheadFrom(const std::vector<Unit>& units, std::size_t unit, const Box& from, Side s, double limit,
+                       double reach, const std::vector<bool>& growing) const;
+  // Collide (Sec. 5.3): side s of the part in its plane (u along the face, v = z) and the
+  // footprints on that plane of every obstacle (envelope excluded: clearance zones and parts)
+  // that lies in front of it closer than `distance` (growth/collide.h).
+  FaceObstacles obstaclesAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s,
+                               double distance) const;
   // Physical plausibility of one unit among the others.
   bool plausible(const std::vector<Unit>& units, std::size_t unit) const;
   // Every constraint above over a whole configuration; one sentence per violation.
@@ -57,8 +65,10 @@ class ConstraintEnforcer {
  private:
   // Plausibility of `u` standing in for units[unit].
   bool plausibleAs(const std::vector<Unit>& units, std::size_t unit, const Unit& u) const;
-  double distanceAhead(const std::vector<Unit>& units, std::size_t unit, int part, Side s, double limit, double reach,
-                       const std::vector<bool>* growing) const;
+  // From side s of box b, skipping part `skip` of units[unit] (−1: none).
+  double distanceAhead(const std::vector<Unit>& units, std::size_t unit, const Box& b, int skip, Side s, double limit,
+                       double reach, const std::vector<bool>* growing) const;
+  Verdict checkStairBase(const std::vector<Unit>& units, std::size_t unit, const Move& m) const;
   const Site& site_;
   std::vector<Box> zones_;  // cores and circulation grown by their clearances
 };

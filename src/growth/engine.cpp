@@ -1,6 +1,7 @@
 #include "growth/engine.h"
 
 #include "core/error.h"
+#include "growth/collide.h"
 #include "growth/tolerances.h"
 
 #include <algorithm>
@@ -91,6 +92,7 @@ class ViewBehaviour : public Behaviour {
       }
     }
     proposeCollideSplits(ctx, moves);
+    if (s.progress() < s.target) proposeStairBases(ctx, moves);
     // Double volume once the unit has half its target (Sec. 5.3, "Choice of Unit Height").
     if (s.wantsDoubleVolume && !s.doubleVolumeDone && s.progress() >= 0.5 * s.target)
       for (int p = 0; p < int(u.parts.size()); ++p)
@@ -112,6 +114,8 @@ class ViewBehaviour : public Behaviour {
   int choose(BehaviourContext& ctx, const std::vector<ScoredMove>& valid) override {
     UnitState& s = ctx.state;
     const Unit& u = s.unit;
+    for (int i = 0; i < int(valid.size()); ++i)
+      if (valid[i].move.type == Move::Type::StairBase) return i;  // a rare chance, taken whole
     for (int i = 0; i < int(valid.size()); ++i)
       if (valid[i].move.type == Move::Type::Split) return i;
     for (int i = 0; i < int(valid.size()); ++i)
@@ -163,17 +167,17 @@ class ViewBehaviour : public Behaviour {
       s.activePart = high ? int(s.unit.parts.size()) - 1 : m.part;
       s.activeSide = why.side;
       s.activeStart = sideCoord(s.unit.parts[s.activePart], s.activeSide);
-    } else if (sideAxis(m.side) == 2) {
+    } else if (m.type == Move::Type::StairBase || sideAxis(m.side) == 2) {
       s.doubleVolumeDone = true;
     }
     pending_.clear();
   }
 
  private:
-  // Collide-and-extrude (Sec. 5.3, Fig. 5.3) for boxes: when an obstacle covers only part of a
-  // face of the growing part, the face is split at the obstacle's edge so the free piece can
-  // extrude past it (the plan difference of face and obstacle is one interval here, so no
-  // polygon Boolean is needed).
+  // Collide-and-extrude (Sec. 5.3, Fig. 5.3): when obstacles cover only part of a face of the
+  // growing part, the face is split at an obstacle's edge so a free piece can extrude past it.
+  // The free region is face − obstacles (growth/collide.h: CGAL's polygon difference, or the
+  // interval twin the tests hold to it); a split frees a piece whose whole height is free.
   void proposeCollideSplits(BehaviourContext& ctx, std::vector<Move>& moves) {
     const UnitState& s = ctx.state;
     const Unit& u = s.unit;
@@ -185,18 +189,42 @@ class ViewBehaviour : public Behaviour {
       if (ctx.engine.enforcer().freeDistance(ctx.engine.units(), ctx.unit, p, side, alpha) >= alpha) continue;
       const int along = 1 - sideAxis(side);
       const double least = std::max(kMinPartWidth, b.size(sideAxis(side)) / ctx.engine.options().maxAspect);
-      const auto spans = ctx.engine.enforcer().blockedSpans(ctx.engine.units(), ctx.unit, p, side, alpha);
-      if (spans.empty()) continue;  // only the envelope is in the way
-      // The blocked stretch [lo, hi]; the face's free ends lie before and after it.
-      const double lo = spans.front().first;
-      double hi = lo;
-      for (const auto& sp : spans) hi = std::max(hi, sp.second);
-      if (lo - b.lo[along] >= least && b.hi[along] - lo >= least) {
-        moves.push_back(Move::split(p, along, lo));
-        pending_.push_back({moves.back(), side, 0});  // the low piece is free
-      } else if (b.hi[along] - hi >= least && hi - b.lo[along] >= least) {
-        moves.push_back(Move::split(p, along, hi));
-        pending_.push_back({moves.back(), side, 1});  // the high piece is free
+      const FaceObstacles f = ctx.engine.enforcer().obstaclesAhead(ctx.engine.units(), ctx.unit, p, side, alpha);
+      if (f.obstacles.empty()) continue;  // only the envelope is in the way
+      const std::vector<Interval> columns =
+          ctx.engine.options().exactCollide ? freeColumns(f) : freeColumnsByIntervals(f);
+      const std::vector<CollideSplit> splits = collideSplits(f.face, columns, least);
+      if (splits.empty()) continue;
+      moves.push_back(Move::split(p, along, splits.front().at));
+      pending_.push_back({moves.back(), side, splits.front().freeHigh ? 1 : 0});
+    }
+  }
+
+  // Fig. 5.4: a face of the growing part that has reached an external staircase whose roof is
+  // one storey below the part's floor may take the staircase's whole top, if the look-ahead
+  // finds all of it clear even after the growing neighbours' next advance.
+  void proposeStairBases(BehaviourContext& ctx, std::vector<Move>& moves) {
+    const UnitState& s = ctx.state;
+    const Unit& u = s.unit;
+    const Site& site = ctx.engine.site();
+    if (site.circulation.empty() || int(u.parts.size()) >= kMaxParts) return;
+    const int p = std::min<int>(s.activePart, int(u.parts.size()) - 1);
+    const Box& b = u.parts[p];
+    std::vector<bool> growing;
+    for (Side side : kVerticalSides) {
+      if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
+      for (int c = 0; c < int(site.circulation.size()); ++c) {
+        const std::optional<Box> part = stairBasePart(b, side, site.circulation[c], site.storeyHeight, site.alpha);
+        if (!part) continue;
+        if (growing.empty())
+          for (const UnitState& o : ctx.engine.states()) growing.push_back(o.status == UnitStatus::Growing);
+        const int k = sideAxis(side);
+        Box face = *part;  // the new part's face on the plane of b's side
+        face.lo[k] = face.hi[k] = sideCoord(b, side);
+        const double depth = part->size(k);
+        if (ctx.engine.enforcer().lookAheadFrom(ctx.engine.units(), ctx.unit, face, side, depth, site.alpha, growing) >=
+            depth - kEps)
+          moves.push_back(Move::stairBase(p, side, c));
       }
     }
   }

@@ -59,6 +59,9 @@ struct GrowthOptions {
   double doubleVolumeChance = 0.35;
   double maxAspect = 3.0;  // the view behaviour keeps each part's plan within 1 : maxAspect
   int patience = 5;
+  // Collide-and-extrude from CGAL's polygon difference (growth/collide.h's freeColumns) rather
+  // than its interval twin: the same splits, slower.
+  bool exactCollide = false;
 };
 
 class GrowthEngine;

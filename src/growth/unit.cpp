@@ -46,6 +46,10 @@ bool sideTouchesOwnPart(const Unit& u, int part, Side s) {
 }
 
 void applyMove(Unit& u, const Move& m) {
+  if (m.type == Move::Type::StairBase) {
+    u.parts.push_back(m.box);
+    return;
+  }
   Box& b = u.parts[m.part];
   if (m.type == Move::Type::Advance) {
     const int k = sideAxis(m.side);

@@ -34,16 +34,26 @@ struct Unit {
 };
 
 struct Move {
-  enum class Type { Advance, Split };
+  // StairBase (Fig. 5.4): side `side` of part `part` has reached staircase `staircase` (an index
+  // into the site's circulation) and the unit takes the whole of its top as a new part, `box`
+  // (set by the constraint enforcer, see growth/collide.h's stairBasePart).
+  enum class Type { Advance, Split, StairBase };
   Type type = Type::Advance;
   int part = 0;
   Side side = Side::PosX;  // Advance: the face that moves
   double distance = 0;     // Advance: how far (α, or one storey for floor and ceiling)
   int axis = 0;            // Split: the cut is the plane x (0) or y (1) = at
   double at = 0;
+  int staircase = -1;  // StairBase
+  Box box;             // StairBase: the part added
 
-  static Move advance(int part, Side side, double distance) { return {Type::Advance, part, side, distance, 0, 0}; }
-  static Move split(int part, int axis, double at) { return {Type::Split, part, Side::PosX, 0, axis, at}; }
+  static Move advance(int part, Side side, double distance) {
+    return {Type::Advance, part, side, distance, 0, 0, -1, {}};
+  }
+  static Move split(int part, int axis, double at) { return {Type::Split, part, Side::PosX, 0, axis, at, -1, {}}; }
+  static Move stairBase(int part, Side side, int staircase) {
+    return {Type::StairBase, part, side, 0, 0, 0, staircase, {}};
+  }
   bool operator==(const Move&) const = default;
 };
 
@@ -52,7 +62,8 @@ struct Move {
 bool sideTouchesOwnPart(const Unit& u, int part, Side s);
 
 // Applies a move without checking it (the constraint enforcer decides what is valid).
-// Split keeps the low piece at `part` and appends the high piece as the last part.
+// Split keeps the low piece at `part` and appends the high piece as the last part; StairBase
+// appends `box`.
 void applyMove(Unit& u, const Move& m);
 
 // The closed surface of the union of the parts: one quad per exposed cell face of the grid

@@ -106,15 +106,39 @@ void BM_FullRun(benchmark::State& state) {
 BENCHMARK(BM_FullRun)->Unit(benchmark::kMillisecond);
 
 // Beta (100 m x 60 m, 6 storeys, 132 seeds) grown to completion: the goal is under 5 s.
+// Arg 1: collide-and-extrude from CGAL's polygon difference instead of intervals.
 void BM_FullRunBeta(benchmark::State& state) {
   static const Site beta = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-beta.json");
+  GrowthOptions options;
+  options.exactCollide = state.range(0) != 0;
   for (auto _ : state) {
-    GrowthEngine engine(beta);
+    GrowthEngine engine(beta, options);
     state.counters["steps"] = engine.run(100000);
     state.counters["moves"] = double(engine.commits());
   }
 }
-BENCHMARK(BM_FullRunBeta)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullRunBeta)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// Collide-and-extrude's free columns (growth/collide.h) of every vertical face of grown Alpha
+// that something lies within α of: arg 0 by intervals, 1 by CGAL's polygon difference (items =
+// faces).
+void BM_CollideColumns(benchmark::State& state) {
+  GrowthEngine engine(alpha());
+  engine.run(100000);
+  std::vector<FaceObstacles> faces;
+  for (std::size_t i = 0; i < engine.units().size(); ++i)
+    for (int p = 0; p < int(engine.units()[i].parts.size()); ++p)
+      for (Side s : kVerticalSides) {
+        FaceObstacles f = engine.enforcer().obstaclesAhead(engine.units(), i, p, s, alpha().alpha);
+        if (!f.obstacles.empty()) faces.push_back(std::move(f));
+      }
+  for (auto _ : state)
+    for (const FaceObstacles& f : faces)
+      benchmark::DoNotOptimize(state.range(0) ? freeColumns(f) : freeColumnsByIntervals(f));
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(faces.size()));
+  state.counters["faces"] = double(faces.size());
+}
+BENCHMARK(BM_CollideColumns)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // The site editor (editor/growth_edits.h): one edit checked as the build would check it (parse,
 // validate, the engine's constructor), which the panel does on every frame of a drag; Alpha (72

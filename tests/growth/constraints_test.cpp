@@ -143,3 +143,64 @@ TEST(Constraints, LookAheadAssumesGrowingNeighboursComeCloser) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// Fig. 5.4 by hand: unit 1 on storey 2 (z 6–9), fixed to a stair tower at x = 6, its +x face at
+// x = 9.9, 0.1 m short of a staircase of storey 0 (x 10–14, y 2–6, roof at z = 3).
+struct StairCase {
+  Site site = test::openSite(30, 20, 3);
+  std::vector<Unit> units{unitOf(1, {box(6, 2, 6, 9.9, 5, 9)})};
+  StairCase() { site.circulation = {box(3, 2, 0, 6, 5, 9), box(10, 2, 0, 14, 6, 3)}; }
+};
+
+TEST(Constraints, AStairBaseIsTheStaircasesWholeTop) {
+  StairCase c;
+  ConstraintEnforcer e(c.site);
+  const Verdict v = e.check(c.units, 0, Move::stairBase(0, Side::PosX, 1));
+  ASSERT_TRUE(v.ok) << v.reason;
+  EXPECT_EQ(v.move.box, box(9.9, 2, 3, 14, 6, 9));
+  applyMove(c.units[0], v.move);
+  EXPECT_NEAR(c.units[0].floorArea(), 3.9 * 3 + 4.1 * 4, 1e-9);       // 28.1 m²
+  EXPECT_NEAR(c.units[0].volume(), 3.9 * 3 * 3 + 4.1 * 4 * 6, 1e-9);  // 133.5 m³
+  EXPECT_TRUE(test::independentViolations(c.site, c.units).empty());
+  EXPECT_TRUE(e.violations(c.units).empty());
+  // Its face now touches the new part: no second stair base, no advance there.
+  EXPECT_FALSE(e.check(c.units, 0, Move::stairBase(0, Side::PosX, 1)).ok);
+  EXPECT_FALSE(e.check(c.units, 0, Move::advance(0, Side::PosX, 0.3)).ok);
+}
+
+TEST(Constraints, AStairBaseIsRefusedWhenAnyOfTheTopIsTaken) {
+  StairCase c;
+  ConstraintEnforcer e(c.site);
+  EXPECT_EQ(e.check(c.units, 0, Move::stairBase(0, Side::PosX, 0)).reason,
+            "the staircase's roof is not one storey below the part's floor");  // the tower
+  EXPECT_EQ(e.check(c.units, 0, Move::stairBase(0, Side::PosX, 2)).reason, "no such staircase");
+  EXPECT_FALSE(e.check(c.units, 0, Move::stairBase(0, Side::NegY, 1)).ok);
+  // Unit 2 of storey 1 stands on the top's east end (x 12–14): the whole is refused.
+  c.units.push_back(unitOf(2, {box(12, 2.5, 3, 15, 5.5, 6)}));
+  ASSERT_TRUE(e.violations(c.units).empty());
+  const Verdict v = e.check(c.units, 0, Move::stairBase(0, Side::PosX, 1));
+  EXPECT_FALSE(v.ok);
+  EXPECT_EQ(v.reason, "the staircase's top is not wholly free (unit 2)");
+  // A locked face does not reach it either.
+  c.units.pop_back();
+  c.units[0].locked[int(Side::PosX)] = true;
+  EXPECT_EQ(e.check(c.units, 0, Move::stairBase(0, Side::PosX, 1)).reason, "the face is locked");
+}
+
+// The behaviour's look-ahead before proposing a stair base: unit 2 beside the top (its -x face
+// 0.2 m east of it, on storey 1) would reach it in its next advance while it grows.
+TEST(Constraints, LookAheadFromAStairBasesFace) {
+  StairCase c;
+  c.units.push_back(unitOf(2, {box(14.2, 2.5, 3, 17.2, 5.5, 6)}));
+  ConstraintEnforcer e(c.site);
+  const Box face{{9.9, 2, 3}, {9.9, 6, 9}};
+  EXPECT_NEAR(e.lookAheadFrom(c.units, 0, face, Side::PosX, 4.1, 0.3, {true, true}), 4.0, 1e-9);
+  EXPECT_NEAR(e.lookAheadFrom(c.units, 0, face, Side::PosX, 4.1, 0.3, {true, false}), 4.1, 1e-9);
+  EXPECT_TRUE(e.check(c.units, 0, Move::stairBase(0, Side::PosX, 1)).ok);  // free now, all of it
+}
+
+}  // namespace
+}  // namespace corbel::growth

@@ -289,3 +289,156 @@ TEST(Engine, ACollidingFaceSplitsAndExtrudesPastTheObstacle) {
 
 }  // namespace
 }  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// Fig. 5.3, interlocking: unit 1's +x face (12 m) meets two units that leave only its middle
+// 4 m free (y 4–8). It splits at y = 8 and then y = 4, and the middle piece extrudes between
+// the two obstacles, past them.
+TEST(Engine, AFaceBlockedAtBothEndsExtrudesItsFreeMiddle) {
+  Site site = test::openSite(40, 40, 1);
+  Seed a = test::seedAt(0, 0, 0, 100, 6, 12);
+  a.locked[int(Side::NegX)] = a.locked[int(Side::NegY)] = a.locked[int(Side::PosY)] = true;
+  site.seeds = {a, test::seedAt(6, 0, 0, 12, 3, 4), test::seedAt(6, 8, 0, 12, 3, 4)};
+  GrowthEngine engine(site);
+  ASSERT_EQ(engine.states()[1].status, UnitStatus::Reached);
+  ASSERT_EQ(engine.states()[2].status, UnitStatus::Reached);
+  std::vector<double> cuts;
+  engine.onCommit([&](const GrowthEngine&, const CommitRecord& r) {
+    if (r.unit == 0 && r.move.type == Move::Type::Split) cuts.push_back(r.move.at);
+  });
+  engine.run(1000);
+  ASSERT_GE(cuts.size(), 2u);
+  EXPECT_DOUBLE_EQ(cuts[0], 8);
+  EXPECT_DOUBLE_EQ(cuts[1], 4);
+  bool past = false;
+  for (const Box& p : engine.units()[0].parts)
+    if (p.hi[0] > 9 + 1e-9) {
+      past = true;
+      EXPECT_GE(p.lo[1], 4 - 1e-9);
+      EXPECT_LE(p.hi[1], 8 + 1e-9);
+    }
+  EXPECT_TRUE(past);
+  EXPECT_TRUE(test::independentViolations(site, engine.units()).empty());
+}
+
+// The interval twin against CGAL's polygon difference over whole runs: the same units, part for
+// part, on Alpha and on the test site with another seed.
+TEST(Engine, CollideByIntervalsGrowsWhatCgalsDifferenceGrows) {
+  const Site alpha = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-alpha.json");
+  for (std::uint64_t seed : {1u, 3u}) {
+    GrowthOptions o;
+    o.seed = seed;
+    GrowthEngine fast(alpha, o);
+    o.exactCollide = true;
+    GrowthEngine exact(alpha, o);
+    fast.run(100000);
+    exact.run(100000);
+    EXPECT_TRUE(sameUnits(fast.units(), exact.units())) << "seed " << seed;
+    EXPECT_EQ(fast.commits(), exact.commits());
+  }
+}
+
+// Fig. 5.4 on a hand-made site: a one-storey unit on storey 2, fixed to a stair tower, grows +x
+// (its other faces locked) toward an external staircase of storey 0 (x 10–14, y 2–6, roof at
+// z = 3, one storey below the unit's floor). Once its face is within α of the staircase it
+// takes the staircase's whole top as a two-storey part from the roof up to its ceiling.
+Site stairSite() {
+  Site site = test::openSite(30, 20, 3);
+  site.circulation = {test::box(3, 2, 0, 6, 5, 9), test::box(10, 2, 0, 14, 6, 3)};
+  Seed a = test::seedAt(6, 2, 2, 40);
+  for (Side s : {Side::NegX, Side::NegY, Side::PosY, Side::Bottom, Side::Top}) a.locked[int(s)] = true;
+  site.seeds = {a};
+  return site;
+}
+
+TEST(Engine, AUnitTakesAStaircasesWholeTopAsItsStairBase) {
+  const Site site = stairSite();
+  GrowthEngine engine(site);
+  std::vector<Move> bases;
+  double faceAt = 0;
+  std::vector<std::string> bad;
+  engine.onCommit([&](const GrowthEngine& e, const CommitRecord& r) {
+    if (r.move.type == Move::Type::StairBase) {
+      bases.push_back(r.move);
+      faceAt = e.units()[0].parts[0].hi[0];
+    }
+    if (bad.empty()) bad = test::independentViolations(site, e.units());
+  });
+  engine.run(1000);
+  EXPECT_TRUE(bad.empty()) << bad.front();
+  ASSERT_EQ(bases.size(), 1u);
+  EXPECT_EQ(bases[0].staircase, 1);
+  EXPECT_GE(faceAt, 10 - site.alpha - 1e-9);
+  EXPECT_LE(faceAt, 10 + 1e-9);
+  // By hand: from the face to the staircase's far side, its width, roof to ceiling.
+  EXPECT_EQ(bases[0].box, (Box{{faceAt, 2, 3}, {14, 6, 9}}));
+  const Unit& u = engine.units()[0];
+  EXPECT_DOUBLE_EQ(u.bounds().lo[2], 3);  // double-storey: storeys 1 and 2
+  EXPECT_DOUBLE_EQ(u.bounds().hi[2], 9);
+}
+
+// The same unit, but a unit of storey 1 already stands on part of the staircase's top (x 12–14):
+// only a partial occupancy would be left, so the unit never takes any of it.
+TEST(Engine, AStaircasesTopIsNeverTakenInPart) {
+  Site site = stairSite();
+  Seed b = test::seedAt(12, 2.5, 1, 9);
+  b.locked.fill(true);
+  site.seeds.push_back(b);
+  GrowthEngine engine(site);
+  ASSERT_EQ(engine.states()[1].status, UnitStatus::Reached);
+  int bases = 0;
+  std::vector<std::string> bad;
+  engine.onCommit([&](const GrowthEngine& e, const CommitRecord& r) {
+    bases += r.move.type == Move::Type::StairBase;
+    if (bad.empty()) bad = test::independentViolations(site, e.units());
+  });
+  engine.run(1000);
+  EXPECT_TRUE(bad.empty()) << bad.front();
+  EXPECT_EQ(bases, 0);
+  for (const Box& p : engine.units()[0].parts) EXPECT_DOUBLE_EQ(p.lo[2], 6);  // nothing on the roof at z = 3
+  // It did reach the staircase (and stopped there: nothing holds it up beyond x = 10).
+  EXPECT_GE(engine.units()[0].bounds().hi[0], 10 - site.alpha - 1e-9);
+}
+
+}  // namespace
+}  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// The look-ahead before a stair base: unit 2 (storey 1, on a second staircase's roof, 0.2 m east
+// of the first staircase's top) is growing, so its next advance could take the top's east end;
+// unit 1 waits at the staircase and takes the whole top only once unit 2 has stopped (it can
+// make no move: every face locked, so it is stuck after `patience` steps, here 10).
+TEST(Engine, AStairBaseWaitsUntilNoGrowingNeighbourCouldReachTheTop) {
+  Site site = stairSite();
+  site.circulation.push_back(test::box(14.2, 2.5, 0, 17.2, 5.5, 3));
+  Seed b = test::seedAt(14.2, 2.5, 1, 100);
+  b.locked.fill(true);
+  site.seeds.push_back(b);
+  GrowthOptions o;
+  o.patience = 10;  // unit 2 grows (in name) for 10 steps; unit 1 arrives in 3
+  GrowthEngine engine(site, o);
+  int baseStep = 0, stuckStep = 0, arrivedStep = 0;
+  Box base;
+  engine.onCommit([&](const GrowthEngine& e, const CommitRecord& r) {
+    if (r.move.type == Move::Type::StairBase) {
+      baseStep = r.step;
+      base = r.move.box;
+    }
+    if (!arrivedStep && e.units()[0].parts[0].hi[0] >= 10 - site.alpha - 1e-9) arrivedStep = r.step;
+  });
+  while (engine.step())
+    if (!stuckStep && engine.states()[1].status == UnitStatus::Stuck) stuckStep = engine.steps();
+  ASSERT_GT(arrivedStep, 0);
+  ASSERT_GT(stuckStep, arrivedStep);  // unit 1 was at the staircase while unit 2 still grew
+  ASSERT_GT(baseStep, 0);
+  EXPECT_GE(baseStep, stuckStep - 1);  // in the step unit 2 stopped (if it went first) or after
+  EXPECT_EQ(base, (Box{{engine.units()[0].parts[0].hi[0], 2, 3}, {14, 6, 9}}));  // the whole top
+  EXPECT_TRUE(test::independentViolations(site, engine.units()).empty());
+}
+
+}  // namespace
+}  // namespace corbel::growth

@@ -60,6 +60,27 @@ TEST(Unit, MeshOfAnLShapedUnitIsClosedWithTheRightVolumeAndArea) {
   EXPECT_NEAR(r.area, 2 * 30 + 24 * 3, 1e-9);
 }
 
+// Fig. 5.4's stair base appends its box: a one-storey part on storey 2 and a two-storey part
+// from the staircase's roof (z = 3) up to its ceiling, meeting over the 3 × 3 m face at x = 9.9.
+TEST(Unit, StairBaseMeshIsClosedWithTheRightVolumeAndArea) {
+  Unit u;
+  u.id = 1;
+  u.parts = {box(6, 2, 6, 9.9, 5, 9)};
+  Move m = Move::stairBase(0, Side::PosX, 1);
+  m.box = box(9.9, 2, 3, 14, 6, 9);
+  applyMove(u, m);
+  ASSERT_EQ(u.parts.size(), 2u);
+  EXPECT_EQ(u.parts[0], box(6, 2, 6, 9.9, 5, 9));  // untouched
+  Scene scene;
+  scene.replaceObject(1, Kind::Unit, "unit", unitMesh(u));
+  const ValidityReport r = scene.validate(1);
+  EXPECT_TRUE(r.closedManifold()) << r.problems().size();
+  EXPECT_NEAR(r.volume, 3.9 * 3 * 3 + 4.1 * 4 * 6, 1e-9);  // 133.5 m³
+  // The two boxes' areas (64.8 and 130 m²) less the shared 3 × 3 m face on each.
+  EXPECT_NEAR(r.area, 64.8 + 130 - 2 * 9, 1e-9);
+  EXPECT_NEAR(u.floorArea(), 3.9 * 3 + 4.1 * 4, 1e-9);
+}
+
 TEST(Unit, DoubleVolumeMeshIsClosed) {
   Unit u = oneBox();
   applyMove(u, Move::split(0, 1, 3));            // [0,6]x[0,3] and [0,6]x[3,4]... pieces
