@@ -52,7 +52,7 @@ App::App(GLFWwindow* window, EditorOptions options)
     if (!glMaps_) log("GL view maps unavailable (" + why + "): growth grows on the exact CPU maps", true);
     growOnGl_ = glMaps_ && glViewMaps_;
   }
-  growth::registerKernel(sync_, [this] { return growthMapper(); });
+  growth::registerKernelWith(sync_, [this] { return growthMapper(); });
   townCache_ = city::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());

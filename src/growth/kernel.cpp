@@ -23,7 +23,9 @@ void addSolid(MeshData& out, const Box& b, const std::string& material) {
 
 }  // namespace
 
-void registerKernel(SceneSync& sync, MapperSource mappers) {
+void registerKernel(SceneSync& sync) { registerKernelWith(sync, {}); }
+
+void registerKernelWith(SceneSync& sync, MapperSource mappers) {
   sync.setBuilder<GrowthSpec>([mappers](const DocObject& o, Progress* progress) {
     const auto& spec = std::get<GrowthSpec>(o.spec);
     const std::shared_ptr<ViewMapper> mapper = mappers ? mappers() : nullptr;

@@ -20,11 +20,12 @@ namespace corbel::growth {
 // so in the build's warnings ("every unit stopped after N steps"), which the editor's Run reads.
 // Unit objects (core/unit_spec.h) are built the same way: one closed shell of their parts, of
 // kind Unit, in the spec's material.
-// With `mappers`, each growth build asks it for the view mapper to grow on (null: the exact CPU
-// one); the editor's GL view maps come this way. Builds run on any thread, so the source and
+void registerKernel(SceneSync& sync);
+// The same, but each growth build asks `mappers` for the view mapper to grow on (null: the exact
+// CPU one); the editor's GL view maps come this way. Builds run on any thread, so the source and
 // the mappers it gives must be safe to call from one.
 using MapperSource = std::function<std::shared_ptr<ViewMapper>()>;
-void registerKernel(SceneSync& sync, MapperSource mappers = {});
+void registerKernelWith(SceneSync& sync, MapperSource mappers);
 
 // What a growth object's build grows: the parsed site, and the units after the spec's steps
 // (or once every unit stopped). The builder and the editor's form completion share it, so the

@@ -107,7 +107,7 @@ GrowthSpec landingSite(int steps) {
 MeshData builtOn(const GrowthSpec& spec, std::shared_ptr<growth::ViewMapper> mapper,
                  std::vector<std::string>* warnings) {
   SceneSync sync;
-  growth::registerKernel(sync, [mapper] { return mapper; });
+  growth::registerKernelWith(sync, [mapper] { return mapper; });
   Document doc;
   const ObjectId id = doc.add("site", spec);
   Scene scene;
