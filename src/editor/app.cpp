@@ -113,18 +113,20 @@ std::shared_ptr<growth::ViewMapper> App::growthMapper() const {
   return growOnGl_ ? std::shared_ptr<growth::ViewMapper>(glMaps_) : nullptr;
 }
 
-std::string App::growthMapsName() const { return growOnGl_ ? glMapsName(kEditorViewMapPixel) : "exact"; }
+std::string App::growthMapsName() const { return growOnGl_ ? glMapsName(glMaps_->pixelSize()) : "exact"; }
 
 void App::applyViewMapSetting() {
   const bool want = glMaps_ && glViewMaps_;
-  if (want == growOnGl_ || live_.building()) return;
-  // The growth objects' builds read growOnGl_; none runs now, so each is rebuilt on the new
-  // maps by the next update (the Document does not change: not an undo step).
+  const bool newPixel = want && glMaps_->pixelSize() != glPixel_;
+  if ((want == growOnGl_ && !newPixel) || live_.building()) return;
+  // The growth objects' builds read growOnGl_ and the mapper's pixel; none runs now, so each is
+  // rebuilt on the new maps by the next update (the Document does not change: not an undo step).
+  if (newPixel) glMaps_->setPixelSize(glPixel_);
   growOnGl_ = want;
   for (const DocObject& o : history_.current().objects)
     if (std::holds_alternative<GrowthSpec>(o.spec)) sync_.invalidate(o.id);
   live_.refresh();
-  log(std::string("Growth: view maps ") + (want ? glMapsName(kEditorViewMapPixel) : "exact (CPU)"), false);
+  log(std::string("Growth: view maps ") + (want ? glMapsName(glPixel_) : "exact (CPU)"), false);
 }
 
 void App::syncScene(bool wait) {
@@ -813,6 +815,18 @@ void App::registerActions() {
        [this] { glViewMaps_ = !glViewMaps_; },
        [this] { return glMaps_ != nullptr; },
        [this] { return glMaps_ && glViewMaps_; }});
+  add({"growth.gl_pixel_next",
+       "Growth",
+       "GL View Map Pixels: Next Size",
+       "The next pixel size of the GL view maps (0.1, 0.25, 0.5 m, then 0.1 again); the sites regrow on it.",
+       {},
+       false,
+       [this] {
+         const auto& sizes = kEditorViewMapPixels;
+         const auto at = std::find(std::begin(sizes), std::end(sizes), glPixel_);
+         glPixel_ = at == std::end(sizes) || at + 1 == std::end(sizes) ? sizes[0] : *(at + 1);
+       },
+       [this] { return glMaps_ && glViewMaps_; }});
   add({"growth.view_maps",
        "Growth",
        "View Maps",
@@ -1450,6 +1464,7 @@ GrowthHost App::growthHost() {
   host.mapper = growthMapper();
   host.maps = growthMapsName();
   host.glViewMaps = glMaps_ ? &glViewMaps_ : nullptr;
+  host.glPixel = glMaps_ ? &glPixel_ : nullptr;
   if (auto it = sync_.status().find(host.object); it != sync_.status().end()) {
     host.error = it->second.error;
     host.warnings = it->second.warnings;

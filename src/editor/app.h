@@ -111,9 +111,11 @@ class App {
   // The GL view maps (editor/view_map_context.h; null without a context), before sync_ and the
   // panels: their builds and measurements use it, so it goes after them. growOnGl_ is what the
   // growth builds read (off the UI thread); glViewMaps_ the Grow tab's setting, which becomes
-  // growOnGl_ (and regrows the growth objects) when no build runs.
+  // growOnGl_ (and regrows the growth objects) when no build runs, as glPixel_ becomes the
+  // mapper's pixel size.
   std::shared_ptr<render::ContextViewMapper> glMaps_;
   bool glViewMaps_ = true;
+  double glPixel_ = kEditorViewMapPixel;  // the Grow tab's; glMaps_ has it once applied
   std::atomic<bool> growOnGl_{false};
   void applyViewMapSetting();
   std::shared_ptr<growth::ViewMapper> growthMapper() const;

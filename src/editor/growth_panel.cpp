@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "editor/completion_view.h"
+#include "editor/view_map_context.h"
 #include "growth/kernel.h"
 #include "growth/site.h"
 #include "render/gl.h"
@@ -306,7 +307,22 @@ void GrowthPanel::drawGrow(const GrowthHost& host, const GrowthSpec& spec) {
     ImGui::SameLine();
     ImGui::RadioButton("GL", &gl, 1);
     *host.glViewMaps = gl == 1;
-    if (*host.glViewMaps != (host.mapper != nullptr))
+    if (gl && host.glPixel) {
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(110);
+      char current[32];
+      std::snprintf(current, sizeof current, "%.2g m pixels", *host.glPixel);
+      if (ImGui::BeginCombo("##pixel", current)) {
+        for (double p : kEditorViewMapPixels) {
+          char label[32];
+          std::snprintf(label, sizeof label, "%.2g m pixels", p);
+          if (ImGui::Selectable(label, p == *host.glPixel)) *host.glPixel = p;
+        }
+        ImGui::EndCombo();
+      }
+    }
+    if (*host.glViewMaps != (host.mapper != nullptr) ||
+        (host.glPixel && *host.glViewMaps && host.maps != glMapsName(*host.glPixel)))
       ImGui::TextDisabled("regrowing on the %s maps...", *host.glViewMaps ? "GL" : "exact");
     else
       ImGui::TextDisabled("growing on %s", host.maps.c_str());

@@ -49,6 +49,7 @@ struct GrowthHost {
   std::string maps = "exact";
   // The Grow tab's choice of GL view maps, an editor setting; null when there is no GL mapper.
   bool* glViewMaps = nullptr;
+  double* glPixel = nullptr;  // and the GL maps' pixel size (m), with it
 };
 
 class GrowthPanel {

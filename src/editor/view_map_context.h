@@ -11,9 +11,11 @@
 
 namespace corbel::editor {
 
-// The pixel size of the editor's GL view maps: Alpha's 90 × 15 m sides are 360 × 60 pixels,
+// The default pixel size of the editor's GL view maps: Alpha's 90 × 15 m sides are 360 × 60 pixels,
 // and a whole run on them costs about 6 ms a step more than on the exact maps (docs/growth.md).
 inline constexpr double kEditorViewMapPixel = 0.25;
+// The pixels the Grow tab offers.
+inline constexpr double kEditorViewMapPixels[] = {0.1, 0.25, 0.5};
 
 // Makes the hidden window (call on the main thread, after glfwInit, with the window's context
 // current; it stays current). Null, with the reason in *why, when GLFW cannot make a GL 3.3 core

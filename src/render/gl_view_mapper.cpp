@@ -104,6 +104,11 @@ GlViewMapper::GlViewMapper(double pixelSize) : pixel_(pixelSize) {
   glBindVertexArray(0);
 }
 
+void GlViewMapper::setPixelSize(double pixelSize) {
+  if (!(pixelSize > 0)) throw Error("view map pixel size must be positive");
+  pixel_ = pixelSize;
+}
+
 GlViewMapper::~GlViewMapper() {
   glDeleteBuffers(1, &vbo_);
   glDeleteVertexArrays(1, &vao_);
@@ -214,6 +219,18 @@ ContextViewMapper::~ContextViewMapper() {
   lease_->enter();
   gl_.reset();
   lease_->leave();
+}
+
+double ContextViewMapper::pixelSize() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return pixel_;
+}
+
+void ContextViewMapper::setPixelSize(double pixelSize) {
+  if (!(pixelSize > 0)) throw Error("view map pixel size must be positive");
+  const std::lock_guard<std::mutex> lock(mutex_);
+  pixel_ = pixelSize;
+  if (gl_) gl_->setPixelSize(pixelSize);
 }
 
 growth::ViewMaps ContextViewMapper::render(const std::vector<growth::ViewBox>& boxes, const growth::Box& frame) {

@@ -28,6 +28,7 @@ class GlViewMapper : public growth::ViewMapper {
   // Throws corbel::Error when a projection needs more pixels than GL allows per side.
   growth::ViewMaps render(const std::vector<growth::ViewBox>& boxes, const growth::Box& frame) override;
   double pixelSize() const { return pixel_; }
+  void setPixelSize(double pixelSize);  // throws corbel::Error unless positive
 
  private:
   double pixel_;
@@ -54,10 +55,13 @@ class ContextViewMapper : public growth::ViewMapper {
   ContextViewMapper(const ContextViewMapper&) = delete;
   ContextViewMapper& operator=(const ContextViewMapper&) = delete;
   growth::ViewMaps render(const std::vector<growth::ViewBox>& boxes, const growth::Box& frame) override;
-  double pixelSize() const { return pixel_; }
+  double pixelSize() const;
+  // The next render's pixels (a render running meanwhile finishes on the old ones); throws
+  // corbel::Error unless positive.
+  void setPixelSize(double pixelSize);
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::unique_ptr<GlContextLease> lease_;
   double pixel_;
   std::unique_ptr<GlViewMapper> gl_;

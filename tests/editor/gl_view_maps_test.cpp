@@ -286,7 +286,7 @@ TEST(EditorGlViewMaps, AViewMapRenderLeavesTheCallersGlStateAsItWas) {
   glDeleteFramebuffers(1, &fbo);
 }
 
-TEST(EditorGlViewMaps, TheContextMapperGivesBackTheCallersContextAndSharesItsOwnAcrossThreads) {
+TEST(EditorGlViewMaps, TheContextMapperGivesBackTheCallersContextSharesItsOwnAcrossThreadsAndChangesPixels) {
   render::HeadlessContext context;
   const OSMesaContext mine = OSMesaGetCurrentContext();
   ASSERT_NE(mine, nullptr);
@@ -315,6 +315,15 @@ TEST(EditorGlViewMaps, TheContextMapperGivesBackTheCallersContextAndSharesItsOwn
   const auto threads = gl.threadsSeen();
   EXPECT_EQ(threads.count(std::this_thread::get_id()), 1u);
   EXPECT_GE(threads.size(), 2u);
+  // The Grow tab's pixel choice: the next render is on the new pixels (the rasterizer's maps at
+  // 0.25 m); a size that is not positive is refused and changes nothing.
+  gl.mapper->setPixelSize(0.25);
+  EXPECT_EQ(gl.mapper->pixelSize(), 0.25);
+  const growth::ViewMaps finer = gl.mapper->render(fewBoxes(), kFrame);
+  EXPECT_EQ(finer[growth::ViewDirection::PosX].columns(), 40);  // 10 m of y in 0.25 m pixels
+  expectSameMaps(finer, growth::RasterViewMapper(0.25).render(fewBoxes(), kFrame));
+  EXPECT_THROW(gl.mapper->setPixelSize(0), Error);
+  EXPECT_EQ(gl.mapper->pixelSize(), 0.25);
 }
 
 }  // namespace
