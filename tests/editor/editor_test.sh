@@ -24,7 +24,8 @@
 #     sliced two storeys down with the statistics and the view maps shown, the shot differs from
 #     the site alone; undone, the document is the untouched example (nothing to recover).
 #  9a. the Alpha model grown on GL view maps (the default) and, with growth.gl_view_maps, on the
-#     exact ones: the inspector shots differ (another model, other maps) and nothing is recovered;
+#     exact ones, or with growth.gl_pixel_next on 0.5 m GL pixels: the inspector shots differ from
+#     the default's (another model, other maps) and nothing is recovered;
 #  9b. the Site tab's frame on Alpha: Add a Storey and Widen the Site (scripted actions) save 6
 #     storeys and a 95 x 50 m box, the site still builds as closed shells and the shot (the Site
 #     tab with its envelope fields) differs from the site alone; undone twice, nothing to recover.
@@ -160,8 +161,11 @@ run --recover no --select "Alpha" --actions growth.statistics,growth.view_maps -
   --screenshot "$work/maps-gl.png" --quit-after-frames 30 "$alpha"
 run --recover no --select "Alpha" --actions growth.gl_view_maps,growth.statistics,growth.view_maps --autosave-seconds 0 \
   --screenshot "$work/maps-exact.png" --quit-after-frames 30 "$alpha"
+run --recover no --select "Alpha" --actions growth.gl_pixel_next,growth.statistics,growth.view_maps --autosave-seconds 0 \
+  --screenshot "$work/maps-gl-coarse.png" --quit-after-frames 30 "$alpha"
 test -f "$work/state/recovery.corbel" && { echo "switching the view maps should leave the document untouched"; exit 1; }
 "$check" "$work/maps-gl.png" "$work/maps-exact.png" 0.01
+"$check" "$work/maps-gl.png" "$work/maps-gl-coarse.png" 0.01
 echo "== growth site editor: add a core, slice, statistics, view maps, undo"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.add_core,growth.slice_down,growth.slice_down,growth.statistics,growth.view_maps \
