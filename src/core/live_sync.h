@@ -40,6 +40,10 @@ class LiveSync {
   // an edit makes a newer one.
   void cancel();
   void retry() { abandoned_.reset(); }
+  // Forgets that the Scene shows the latest state, so the next update() plans again and builds
+  // what SceneSync::invalidate(id) marked. Call it when no build runs (building() is false): a
+  // running build would be taken as showing the state.
+  void refresh() { shown_.reset(); }
   bool cancelled() const { return abandoned_ && *abandoned_ == wanted_ && !running_; }
   bool current() const { return !running_ && shown_ == wanted_; }  // the Scene shows the latest state given
   bool building() const { return static_cast<bool>(running_); }

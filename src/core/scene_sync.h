@@ -60,6 +60,9 @@ class SceneSync {
   void run(Job& job, Progress* progress = nullptr) const;  // safe on any thread
   std::size_t apply(Job& job, Scene& scene);               // returns the objects rebuilt
   void invalidate() { built_.clear(); }
+  // The next plan() rebuilds this object even though its spec did not change (its builder
+  // reads a setting outside the Document that changed: the editor's view maps).
+  void invalidate(ObjectId id) { built_.erase(id); }
 
   struct Status {
     std::string error;                  // the last build failed with this ("" = fine)

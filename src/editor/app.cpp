@@ -46,7 +46,13 @@ App::App(GLFWwindow* window, EditorOptions options)
   extrude::registerKernel(sync_);
   statics::registerKernel(sync_);
   kifs::registerKernel(sync_);
-  growth::registerKernel(sync_);
+  {
+    std::string why;
+    glMaps_ = makeEditorGlViewMapper(kEditorViewMapPixel, &why);
+    if (!glMaps_) log("GL view maps unavailable (" + why + "): growth grows on the exact CPU maps", true);
+    growOnGl_ = glMaps_ && glViewMaps_;
+  }
+  growth::registerKernelWith(sync_, [this] { return growthMapper(); });
   townCache_ = city::registerKernel(sync_);
   renderer_ = std::make_unique<render::Renderer>();
   log("OpenGL " + render::glDescription());
@@ -103,8 +109,29 @@ bool App::scripted() const {
          !options_.screenshot.empty();
 }
 
+std::shared_ptr<growth::ViewMapper> App::growthMapper() const {
+  return growOnGl_ ? std::shared_ptr<growth::ViewMapper>(glMaps_) : nullptr;
+}
+
+std::string App::growthMapsName() const { return growOnGl_ ? glMapsName(glMaps_->pixelSize()) : "exact"; }
+
+void App::applyViewMapSetting() {
+  const bool want = glMaps_ && glViewMaps_;
+  const bool newPixel = want && glMaps_->pixelSize() != glPixel_;
+  if ((want == growOnGl_ && !newPixel) || live_.building()) return;
+  // The growth objects' builds read growOnGl_ and the mapper's pixel; none runs now, so each is
+  // rebuilt on the new maps by the next update (the Document does not change: not an undo step).
+  if (newPixel) glMaps_->setPixelSize(glPixel_);
+  growOnGl_ = want;
+  for (const DocObject& o : history_.current().objects)
+    if (std::holds_alternative<GrowthSpec>(o.spec)) sync_.invalidate(o.id);
+  live_.refresh();
+  log(std::string("Growth: view maps ") + (want ? glMapsName(glPixel_) : "exact (CPU)"), false);
+}
+
 void App::syncScene(bool wait) {
   if (selected_ && !history_.current().find(*selected_)) selected_.reset();
+  applyViewMapSetting();
   if (wait || scripted())
     live_.settle(history_.current(), history_.stateId(), scene_);
   else if (!live_.update(history_.current(), history_.stateId(), scene_))
@@ -779,6 +806,27 @@ void App::registerActions() {
        false,
        [this] { growthPanel_.showTab(2); },
        growthSelected});
+  add({"growth.gl_view_maps",
+       "Growth",
+       "GL View Maps",
+       "Grow and measure growth sites on view maps rendered with OpenGL (unchecked: the exact CPU maps).",
+       {},
+       false,
+       [this] { glViewMaps_ = !glViewMaps_; },
+       [this] { return glMaps_ != nullptr; },
+       [this] { return glMaps_ && glViewMaps_; }});
+  add({"growth.gl_pixel_next",
+       "Growth",
+       "GL View Map Pixels: Next Size",
+       "The next pixel size of the GL view maps (0.1, 0.25, 0.5 m, then 0.1 again); the sites regrow on it.",
+       {},
+       false,
+       [this] {
+         const auto& sizes = kEditorViewMapPixels;
+         const auto at = std::find(std::begin(sizes), std::end(sizes), glPixel_);
+         glPixel_ = at == std::end(sizes) || at + 1 == std::end(sizes) ? sizes[0] : *(at + 1);
+       },
+       [this] { return glMaps_ && glViewMaps_; }});
   add({"growth.view_maps",
        "Growth",
        "View Maps",
@@ -1429,6 +1477,10 @@ GrowthHost App::growthHost() {
   host.shadows = &settings_.shadows;
   host.sunAzimuth = &sunAzimuth_;
   host.sunElevation = &sunElevation_;
+  host.mapper = growthMapper();
+  host.maps = growthMapsName();
+  host.glViewMaps = glMaps_ ? &glViewMaps_ : nullptr;
+  host.glPixel = glMaps_ ? &glPixel_ : nullptr;
   if (auto it = sync_.status().find(host.object); it != sync_.status().end()) {
     host.error = it->second.error;
     host.warnings = it->second.warnings;
@@ -1481,6 +1533,8 @@ CompletionHost App::completionHost() {
   host.wait = scripted();
   host.busy = job_ != nullptr;
   host.settled = live_.current() && !growthPanel_.running();
+  host.mapper = growthMapper();
+  host.maps = growthMapsName();
   host.startJob = [this](std::string title, BackgroundJob::Work work, std::function<void()> done) {
     startJob(std::move(title), std::move(work), std::move(done));
   };

@@ -17,12 +17,14 @@
 #include "editor/kifs_panel.h"
 #include "editor/statics_panel.h"
 #include "editor/town_panel.h"
+#include "editor/view_map_context.h"
 #include "render/camera.h"
 #include "render/kifs_layer.h"
 #include "render/kifs_pass.h"
 #include "render/renderer.h"
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <deque>
 #include <functional>
@@ -106,6 +108,18 @@ class App {
   EditorOptions options_;
   History history_;
   Scene scene_;
+  // The GL view maps (editor/view_map_context.h; null without a context), before sync_ and the
+  // panels: their builds and measurements use it, so it goes after them. growOnGl_ is what the
+  // growth builds read (off the UI thread); glViewMaps_ the Grow tab's setting, which becomes
+  // growOnGl_ (and regrows the growth objects) when no build runs, as glPixel_ becomes the
+  // mapper's pixel size.
+  std::shared_ptr<render::ContextViewMapper> glMaps_;
+  bool glViewMaps_ = true;
+  double glPixel_ = kEditorViewMapPixel;  // the Grow tab's; glMaps_ has it once applied
+  std::atomic<bool> growOnGl_{false};
+  void applyViewMapSetting();
+  std::shared_ptr<growth::ViewMapper> growthMapper() const;
+  std::string growthMapsName() const;
   SceneSync sync_;
   LiveSync live_{sync_};  // after sync_: its builds use it
   std::unique_ptr<render::Renderer> renderer_;

@@ -40,7 +40,7 @@ const GrowthSpec* CompletionPanel::specOf(const CompletionHost& host) const {
 
 bool CompletionPanel::modelCurrent(const CompletionHost& host) const {
   const GrowthSpec* spec = specOf(host);
-  return spec && model_ && model_->of == *spec;
+  return spec && model_ && model_->of == *spec && model_->maps == host.maps;
 }
 
 void CompletionPanel::reset() { *this = CompletionPanel(); }
@@ -119,10 +119,11 @@ void CompletionPanel::takeSeeds(const CompletionHost& host) {
   if (modelCurrent(host)) return;
   auto result = std::make_shared<Model>();
   result->of = *spec;
+  result->maps = host.maps;
   attempted_ = *spec;
   run(
       host, "Growing the model for its entrances",
-      [result](Progress& p) { result->grown = growth::grow(result->of, &p); },
+      [result, mapper = host.mapper](Progress& p) { result->grown = growth::grow(result->of, &p, mapper.get()); },
       [this, result] {
         model_ = result;
         if (!regionChosen_) gapRegion();

@@ -34,6 +34,10 @@ struct CompletionHost {
   std::function<void(std::string title, BackgroundJob::Work work, std::function<void()> onDone)> startJob;
   std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
   std::function<void(const std::string&, bool)> log;
+  // The view maps the site's build grows on (null: the exact CPU mapper) and their name, so the
+  // model completed is the one the 3D view shows.
+  std::shared_ptr<growth::ViewMapper> mapper;
+  std::string maps = "exact";
 };
 
 class CompletionPanel {
@@ -54,6 +58,7 @@ class CompletionPanel {
  private:
   struct Model {
     GrowthSpec of;
+    std::string maps;  // the view maps it grew on (CompletionHost::maps)
     growth::GrownModel grown;
   };
   const GrowthSpec* specOf(const CompletionHost& host) const;

@@ -19,12 +19,15 @@ std::vector<growth::ViewBox> viewBoxesOf(const growth::Site& site, const std::ve
   return boxes;
 }
 
-GrowthInspection inspectGrowth(const GrowthSpec& spec, Progress* progress) {
+GrowthInspection inspectGrowth(const GrowthSpec& spec, Progress* progress, growth::ViewMapper* mapper,
+                               const std::string& maps) {
   GrowthInspection out;
   out.of = spec;
-  out.grown = growth::grow(spec, progress);
-  growth::ExactViewMapper mapper;
-  out.views = mapper.render(viewBoxesOf(out.grown.site, out.grown.units), out.grown.site.bounds());
+  out.maps = maps;
+  out.grown = growth::grow(spec, progress, mapper);
+  growth::ExactViewMapper exact;
+  growth::ViewMapper& m = mapper ? *mapper : exact;
+  out.views = m.render(viewBoxesOf(out.grown.site, out.grown.units), out.grown.site.bounds());
   out.stats = growth::computeStatistics(out.grown.site, out.grown.units, out.views);
   return out;
 }
@@ -120,7 +123,10 @@ ViewMapImage viewMapImage(const growth::ViewMap& map, growth::ViewDirection d, i
     column[x] = cellOf(ue, u0 + (i + 0.5) * pixel);
   }
   img.ids.resize(std::size_t(img.width) * img.height);
+  img.depths.assign(img.ids.size(), -std::numeric_limits<double>::infinity());
   img.rgba.resize(img.ids.size() * 4);
+  img.depthRgba.resize(img.ids.size() * 4);
+  double nearest = -std::numeric_limits<double>::infinity(), farthest = std::numeric_limits<double>::infinity();
   for (int y = 0; y < img.height; ++y) {
     const int j = cellOf(ve, v1 - (y + 0.5) * pv);
     for (int x = 0; x < width; ++x) {
@@ -132,7 +138,24 @@ ViewMapImage viewMapImage(const growth::ViewMap& map, growth::ViewDirection d, i
       img.rgba[4 * k + 1] = c[1];
       img.rgba[4 * k + 2] = c[2];
       img.rgba[4 * k + 3] = 255;
+      if (id == growth::kEmptyId) continue;
+      img.depths[k] = map.depth(column[x], j);
+      nearest = std::max(nearest, img.depths[k]);
+      farthest = std::min(farthest, img.depths[k]);
     }
+  }
+  const auto empty = idColour(growth::kEmptyId);
+  for (std::size_t k = 0; k < img.ids.size(); ++k) {
+    std::uint8_t grey[3] = {empty[0], empty[1], empty[2]};
+    if (img.ids[k] != growth::kEmptyId) {
+      // One depth only (everything seen at one depth) is all nearest: white.
+      const double t = nearest > farthest ? (img.depths[k] - farthest) / (nearest - farthest) : 1.0;
+      grey[0] = grey[1] = grey[2] = std::uint8_t(std::lround(kFarthestGrey + t * (255 - kFarthestGrey)));
+    }
+    img.depthRgba[4 * k] = grey[0];
+    img.depthRgba[4 * k + 1] = grey[1];
+    img.depthRgba[4 * k + 2] = grey[2];
+    img.depthRgba[4 * k + 3] = 255;
   }
   return img;
 }

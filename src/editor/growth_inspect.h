@@ -22,6 +22,7 @@ namespace corbel::editor {
 // A grown model with its view maps and statistics.
 struct GrowthInspection {
   GrowthSpec of;
+  std::string maps;  // which view maps ("exact", or the GL mapper's name), as the request said
   growth::GrownModel grown;
   growth::ViewMaps views;
   growth::Statistics stats;
@@ -30,9 +31,11 @@ struct GrowthInspection {
 // What the engine renders its view maps of: every unit part (id = unit id), then the cores and
 // the circulation (kObstacleId).
 std::vector<growth::ViewBox> viewBoxesOf(const growth::Site& site, const std::vector<growth::Unit>& units);
-// Grows `spec` as its build does (growth::grow) and measures the result on the exact mapper.
+// Grows `spec` as its build does (growth::grow) on `mapper` (null: the exact CPU mapper) and
+// measures the result on the same mapper; `maps` names it in the result.
 // Throws InputError for a bad site, Cancelled when `progress` is cancelled.
-GrowthInspection inspectGrowth(const GrowthSpec& spec, Progress* progress = nullptr);
+GrowthInspection inspectGrowth(const GrowthSpec& spec, Progress* progress = nullptr,
+                               growth::ViewMapper* mapper = nullptr, const std::string& maps = "exact");
 
 // Table 8.1 as (row, value) text, in the paper's order.
 std::vector<std::pair<std::string, std::string>> statisticsRows(const growth::Statistics& s);
@@ -41,13 +44,17 @@ std::vector<std::pair<std::string, std::string>> statisticsRows(const growth::St
 // the map holds at the pixel's centre: `width` pixels across the map's u range, as many rows as
 // keep pixels square (at least 1). Seen from outside, looking against the faces' normal:
 // mirrored (u decreasing to the right) for -x and +y, so the picture is what a viewer standing
-// on that side sees.
+// on that side sees. `depthRgba` is the same pixels' depth in grey: the nearest face seen in the
+// map white, the farthest dark grey (kFarthestGrey), linear between; nothing the empty colour.
 struct ViewMapImage {
   int width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;
+  std::vector<std::uint8_t> rgba, depthRgba;
   std::uint32_t idAt(int x, int y) const { return ids[std::size_t(y) * width + x]; }
+  double depthAt(int x, int y) const { return depths[std::size_t(y) * width + x]; }
   std::vector<std::uint32_t> ids;  // per pixel, the id sampled
+  std::vector<double> depths;      // and its depth (growth::frontDepth: larger is nearer)
 };
+inline constexpr int kFarthestGrey = 60;
 ViewMapImage viewMapImage(const growth::ViewMap& map, growth::ViewDirection d, int width);
 // False colour of an id: nothing (0) is near black, a core or circulation (kObstacleId) grey,
 // a unit a bright hue that neighbouring ids do not share.

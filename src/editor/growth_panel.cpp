@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "editor/completion_view.h"
+#include "editor/view_map_context.h"
 #include "growth/kernel.h"
 #include "growth/site.h"
 #include "render/gl.h"
@@ -58,7 +59,7 @@ void GrowthPanel::reset() {
   pendingFor_.reset();
   failedFor_.reset();
   inspectError_.clear();
-  if (textures_[0]) glDeleteTextures(4, textures_.data());
+  if (textures_[0]) glDeleteTextures(GLsizei(textures_.size()), textures_.data());
   textures_ = {};
 }
 
@@ -217,13 +218,16 @@ void GrowthPanel::sliceStorey(const GrowthHost& host, int by) {
 }
 
 void GrowthPanel::requestInspection(const GrowthHost& host, const GrowthSpec& spec) {
-  if (inspection_ && inspection_->of == spec) return;
-  if (pendingFor_ && *pendingFor_ == spec) return;
-  if (failedFor_ && *failedFor_ == spec) return;
+  if (inspection_ && inspection_->of == spec && inspection_->maps == host.maps) return;
+  if (pendingFor_ && *pendingFor_ == spec && pendingMaps_ == host.maps) return;
+  if (failedFor_ && *failedFor_ == spec && failedMaps_ == host.maps) return;
   if (!host.current || running_ || pendingFor_) return;  // measured once the Scene shows it
   pendingFor_ = spec;
-  auto work = [spec]() -> std::shared_ptr<const GrowthInspection> {
-    return std::make_shared<const GrowthInspection>(inspectGrowth(spec));
+  pendingMaps_ = host.maps;
+  // The GL mapper renders on a context of its own (render::ContextViewMapper), so this may run
+  // off the UI thread like the exact one.
+  auto work = [spec, mapper = host.mapper, maps = host.maps]() -> std::shared_ptr<const GrowthInspection> {
+    return std::make_shared<const GrowthInspection>(inspectGrowth(spec, nullptr, mapper.get(), maps));
   };
   if (host.wait) {
     std::promise<std::shared_ptr<const GrowthInspection>> p;
@@ -247,6 +251,7 @@ void GrowthPanel::pollInspection() {
     inspectError_.clear();
   } catch (const std::exception& e) {
     failedFor_ = pendingFor_;
+    failedMaps_ = pendingMaps_;
     inspectError_ = e.what();
   }
   pendingFor_.reset();
@@ -292,6 +297,38 @@ void GrowthPanel::drawGrow(const GrowthHost& host, const GrowthSpec& spec) {
   ImGui::EndDisabled();
   ImGui::TextDisabled("Run commits one step at a time as the view catches up;");
   ImGui::TextDisabled("the whole run is one undo step.");
+  // The view maps the runs grow on (Sec. 5.2): an editor setting, like the slice and shadows.
+  ImGui::Separator();
+  ImGui::TextUnformatted("View maps:");
+  ImGui::SameLine();
+  if (host.glViewMaps) {
+    int gl = *host.glViewMaps ? 1 : 0;
+    ImGui::RadioButton("exact (CPU)", &gl, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("GL", &gl, 1);
+    *host.glViewMaps = gl == 1;
+    if (gl && host.glPixel) {
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(110);
+      char current[32];
+      std::snprintf(current, sizeof current, "%.2g m pixels", *host.glPixel);
+      if (ImGui::BeginCombo("##pixel", current)) {
+        for (double p : kEditorViewMapPixels) {
+          char label[32];
+          std::snprintf(label, sizeof label, "%.2g m pixels", p);
+          if (ImGui::Selectable(label, p == *host.glPixel)) *host.glPixel = p;
+        }
+        ImGui::EndCombo();
+      }
+    }
+    if (*host.glViewMaps != (host.mapper != nullptr) ||
+        (host.glPixel && *host.glViewMaps && host.maps != glMapsName(*host.glPixel)))
+      ImGui::TextDisabled("regrowing on the %s maps...", *host.glViewMaps ? "GL" : "exact");
+    else
+      ImGui::TextDisabled("growing on %s", host.maps.c_str());
+  } else {
+    ImGui::TextDisabled("exact (CPU); no GL context for GL maps");
+  }
   if (site_) {
     // The slice (Fig. 8.3): a view setting, not an edit.
     ImGui::Separator();
@@ -712,7 +749,7 @@ void GrowthPanel::drawStatistics(const GrowthHost& host) {
     ImGui::TextDisabled("measuring the model...");
     return;
   }
-  if (pendingFor_ || !host.current || running_ || !(inspection_->of == *specOf(host)))
+  if (pendingFor_ || !host.current || running_ || !(inspection_->of == *specOf(host)) || inspection_->maps != host.maps)
     ImGui::TextDisabled("(of the model before the last change; measuring...)");
   if (ImGui::BeginTable("table81", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     ImGui::TableSetupColumn("Table 8.1", ImGuiTableColumnFlags_WidthStretch, 0.45f);
@@ -857,18 +894,20 @@ void GrowthPanel::drawViewOverlay(render::Overlay& overlay) const {
 
 void GrowthPanel::uploadViewMaps() {
   if (!inspection_ || texturesOf_ == inspection_.get()) return;
-  if (!textures_[0]) glGenTextures(4, textures_.data());
+  if (!textures_[0]) glGenTextures(GLsizei(textures_.size()), textures_.data());
   for (growth::ViewDirection d : growth::kViewDirections) {
     const int k = int(d);
     images_[k] = viewMapImage(inspection_->views[d], d, 320);
-    glBindTexture(GL_TEXTURE_2D, textures_[k]);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, images_[k].width, images_[k].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                 images_[k].rgba.data());
+    for (int layer = 0; layer < 2; ++layer) {
+      glBindTexture(GL_TEXTURE_2D, textures_[k + 4 * layer]);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, images_[k].width, images_[k].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   (layer ? images_[k].depthRgba : images_[k].rgba).data());
+    }
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   texturesOf_ = inspection_.get();
@@ -890,7 +929,13 @@ void GrowthPanel::drawViewMaps(const GrowthHost& host, float x, float y, float w
     ImGui::End();
     return;
   }
-  ImGui::TextDisabled("unit ids in false colour, cores and circulation grey; as seen from each side");
+  const growth::ViewMap& first = inspection_->views[growth::ViewDirection::PosX];
+  if (inspection_->maps == "exact")
+    ImGui::TextDisabled("exact CPU maps (cells on every box edge)");
+  else
+    ImGui::TextDisabled("%s: %d x %d pixels from +x", inspection_->maps.c_str(), first.columns(), first.rows());
+  ImGui::TextDisabled("unit ids in false colour (cores and circulation grey), under them the depth");
+  ImGui::TextDisabled("(nearest white); as seen from each side");
   for (growth::ViewDirection d : growth::kViewDirections) {
     const int k = int(d);
     if (k % 2) ImGui::SameLine();
@@ -901,18 +946,25 @@ void GrowthPanel::drawViewMaps(const GrowthHost& host, float x, float y, float w
       if (id != growth::kEmptyId && id != growth::kObstacleId && a > 0) ++seen;
     ImGui::Text("from %s: %d units seen", viewDirectionName(d), seen);
     const float ih = iw * float(images_[k].height) / float(std::max(images_[k].width, 1));
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(textures_[k])), ImVec2(iw, ih));
-    if (ImGui::IsItemHovered()) {
+    for (int layer = 0; layer < 2; ++layer) {
+      ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(textures_[k + 4 * layer])),
+                   ImVec2(iw, ih));
+      if (!ImGui::IsItemHovered()) continue;
       const ImVec2 mp = ImGui::GetIO().MousePos, ip = ImGui::GetItemRectMin();
       const int px = std::clamp(int((mp.x - ip.x) / iw * images_[k].width), 0, images_[k].width - 1);
       const int py = std::clamp(int((mp.y - ip.y) / ih * images_[k].height), 0, images_[k].height - 1);
       const std::uint32_t id = images_[k].idAt(px, py);
+      // The face's coordinate along the view axis (growth::frontDepth negates it for -x, -y).
+      const bool positive = d == growth::ViewDirection::PosX || d == growth::ViewDirection::PosY;
+      const double at = positive ? images_[k].depthAt(px, py) : -images_[k].depthAt(px, py);
+      const char axis = d == growth::ViewDirection::PosX || d == growth::ViewDirection::NegX ? 'x' : 'y';
       if (id == growth::kEmptyId)
         ImGui::SetTooltip("nothing");
       else if (id == growth::kObstacleId)
-        ImGui::SetTooltip("a core or circulation");
+        ImGui::SetTooltip("a core or circulation, its face at %c = %.2f m", axis, at);
       else
-        ImGui::SetTooltip("unit %u: %.1f m² seen from %s", id, map.area(id), viewDirectionName(d));
+        ImGui::SetTooltip("unit %u: %.1f m² seen from %s; this face at %c = %.2f m", id, map.area(id),
+                          viewDirectionName(d), axis, at);
     }
     ImGui::EndGroup();
   }

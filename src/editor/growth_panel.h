@@ -1,13 +1,15 @@
 #pragma once
 // The growth panel of a selected growth site (Ng, Ch. 4), right of the 3D view, in three tabs:
-//  - Grow: the site's summary, the run's seed, Step, Run, Pause, Grow to the end and Reset, and
+//  - Grow: the site's summary, the run's seed, Step, Run, Pause, Grow to the end and Reset, the
+//    view maps the runs grow on (exact CPU or GL, an editor setting), and
 //    the slice (Fig. 8.3): everything at or above a height is hidden in the 3D view, a view
 //    setting that never changes the Document; and the 3D view's shadows with the sun's azimuth
 //    and elevation (Fig. 8.5), view settings too;
 //  - Site: the hand-placed cores, circulation and seeds, listed, typed or dragged in a plan view,
 //    added and deleted; a seed's target, behaviour and locked faces (editor/growth_edits.h);
 //  - Statistics: Table 8.1 for the model as grown (editor/growth_inspect.h), and the view-map
-//    inspector, a window with the four view maps in false colour.
+//    inspector, a window with the four view maps (those the model grew on) in false colour by
+//    unit id and in grey by depth.
 // The Document holds the site and how many steps it grows (core/growth_spec.h); every change is
 // one commit and the object's Scene build grows it off the UI thread (core/live_sync.h), so the
 // window never waits and a whole Run is one undo step. A refused change names the field and
@@ -41,6 +43,13 @@ struct GrowthHost {
   bool* shadows = nullptr;
   double* sunAzimuth = nullptr;
   double* sunElevation = nullptr;
+  // The view maps the object's build grows on and the inspector measures with (null: the exact
+  // CPU mapper), and their name ("exact", or the GL mapper's: editor/view_map_context.h).
+  std::shared_ptr<growth::ViewMapper> mapper;
+  std::string maps = "exact";
+  // The Grow tab's choice of GL view maps, an editor setting; null when there is no GL mapper.
+  bool* glViewMaps = nullptr;
+  double* glPixel = nullptr;  // and the GL maps' pixel size (m), with it
 };
 
 class GrowthPanel {
@@ -131,8 +140,9 @@ class GrowthPanel {
   std::shared_ptr<const GrowthInspection> inspection_;
   std::future<std::shared_ptr<const GrowthInspection>> pending_;
   std::optional<GrowthSpec> pendingFor_, failedFor_;
+  std::string pendingMaps_, failedMaps_;  // the view maps of pendingFor_ and failedFor_
   std::string inspectError_;
-  std::array<unsigned, 4> textures_{};
+  std::array<unsigned, 8> textures_{};  // per direction its unit ids, then (4 + d) its depth
   std::array<ViewMapImage, 4> images_;
   const GrowthInspection* texturesOf_ = nullptr;
 };

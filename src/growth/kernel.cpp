@@ -23,10 +23,13 @@ void addSolid(MeshData& out, const Box& b, const std::string& material) {
 
 }  // namespace
 
-void registerKernel(SceneSync& sync) {
-  sync.setBuilder<GrowthSpec>([](const DocObject& o, Progress* progress) {
+void registerKernel(SceneSync& sync) { registerKernelWith(sync, {}); }
+
+void registerKernelWith(SceneSync& sync, MapperSource mappers) {
+  sync.setBuilder<GrowthSpec>([mappers](const DocObject& o, Progress* progress) {
     const auto& spec = std::get<GrowthSpec>(o.spec);
-    GrownModel grown = grow(spec, progress);
+    const std::shared_ptr<ViewMapper> mapper = mappers ? mappers() : nullptr;
+    GrownModel grown = grow(spec, progress, mapper.get());
     const Site& site = grown.site;
     BuildResult b;
     b.kind = Kind::Unit;
@@ -59,7 +62,7 @@ void registerKernel(SceneSync& sync) {
   });
 }
 
-GrownModel grow(const GrowthSpec& spec, Progress* progress) {
+GrownModel grow(const GrowthSpec& spec, Progress* progress, ViewMapper* mapper) {
   GrownModel out;
   try {
     out.site = parseSite(spec.site);
@@ -68,7 +71,7 @@ GrownModel grow(const GrowthSpec& spec, Progress* progress) {
   }
   GrowthOptions options;
   options.seed = spec.seed;
-  GrowthEngine engine(out.site, options);
+  GrowthEngine engine(out.site, options, mapper);
   const int limit = spec.steps < 0 ? static_cast<int>(limits::kMaxGrowthSteps) : spec.steps;
   while (engine.steps() < limit && !engine.done()) {
     if (progress && progress->cancelled()) throw Cancelled();

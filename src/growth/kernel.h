@@ -5,6 +5,10 @@
 #include "core/unit_spec.h"
 #include "growth/site.h"
 #include "growth/unit.h"
+#include "growth/view_map.h"
+
+#include <functional>
+#include <memory>
 
 namespace corbel::growth {
 
@@ -17,6 +21,11 @@ namespace corbel::growth {
 // Unit objects (core/unit_spec.h) are built the same way: one closed shell of their parts, of
 // kind Unit, in the spec's material.
 void registerKernel(SceneSync& sync);
+// The same, but each growth build asks `mappers` for the view mapper to grow on (null: the exact
+// CPU one); the editor's GL view maps come this way. Builds run on any thread, so the source and
+// the mappers it gives must be safe to call from one.
+using MapperSource = std::function<std::shared_ptr<ViewMapper>()>;
+void registerKernelWith(SceneSync& sync, MapperSource mappers);
 
 // What a growth object's build grows: the parsed site, and the units after the spec's steps
 // (or once every unit stopped). The builder and the editor's form completion share it, so the
@@ -27,7 +36,8 @@ struct GrownModel {
   int steps = 0;
   bool stopped = false;  // every unit stopped
 };
-GrownModel grow(const GrowthSpec& spec, Progress* progress = nullptr);
+// `mapper` (may be null: the exact CPU mapper) renders the engine's view maps.
+GrownModel grow(const GrowthSpec& spec, Progress* progress = nullptr, ViewMapper* mapper = nullptr);
 
 // The words of that note, for the editor: the steps after which every unit stopped, or -1.
 int stoppedAfter(const std::vector<std::string>& warnings);

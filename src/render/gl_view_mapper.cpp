@@ -36,10 +36,62 @@ struct Vertex {
   std::uint8_t id[4];
 };
 
+// The state render() changes, read when it starts and put back when it ends (also when it
+// throws), so a view-map render can run between the draws of the editor's frame.
+class SavedState {
+ public:
+  SavedState() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo_);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFbo_);
+    glGetIntegerv(GL_RENDERBUFFER_BINDING, &renderbuffer_);
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
+    glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &arrayBuffer_);
+    glGetIntegerv(GL_VIEWPORT, viewport_);
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
+    glGetBooleanv(GL_COLOR_WRITEMASK, colourMask_);
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clearColour_);
+    glGetDoublev(GL_DEPTH_CLEAR_VALUE, &clearDepth_);
+    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
+    for (int i = 0; i < kCaps; ++i) enabled_[i] = glIsEnabled(kCap[i]);
+  }
+  ~SavedState() {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFbo_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFbo_));
+    glBindRenderbuffer(GL_RENDERBUFFER, GLuint(renderbuffer_));
+    glUseProgram(GLuint(program_));
+    glBindVertexArray(GLuint(vao_));
+    glBindBuffer(GL_ARRAY_BUFFER, GLuint(arrayBuffer_));
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    glDepthFunc(GLenum(depthFunc_));
+    glDepthMask(depthMask_);
+    glColorMask(colourMask_[0], colourMask_[1], colourMask_[2], colourMask_[3]);
+    glClearColor(clearColour_[0], clearColour_[1], clearColour_[2], clearColour_[3]);
+    glClearDepth(clearDepth_);
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
+    for (int i = 0; i < kCaps; ++i) (enabled_[i] ? glEnable : glDisable)(kCap[i]);
+  }
+  SavedState(const SavedState&) = delete;
+  SavedState& operator=(const SavedState&) = delete;
+
+ private:
+  static constexpr int kCaps = 5;
+  static constexpr GLenum kCap[kCaps] = {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE, GL_MULTISAMPLE, GL_SCISSOR_TEST};
+  GLint drawFbo_ = 0, readFbo_ = 0, renderbuffer_ = 0, program_ = 0, vao_ = 0, arrayBuffer_ = 0;
+  GLint viewport_[4] = {0, 0, 0, 0};
+  GLint depthFunc_ = GL_LESS, packAlignment_ = 4;
+  GLboolean depthMask_ = GL_TRUE, colourMask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+  GLfloat clearColour_[4] = {0, 0, 0, 0};
+  GLdouble clearDepth_ = 1;
+  GLboolean enabled_[kCaps] = {};
+};
+
 }  // namespace
 
 GlViewMapper::GlViewMapper(double pixelSize) : pixel_(pixelSize) {
   if (!(pixelSize > 0)) throw Error("view map pixel size must be positive");
+  const SavedState saved;
   program_ = linkSources(kVertex, kFragment, "view map vertex", "view map fragment");
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &vbo_);
@@ -50,6 +102,11 @@ GlViewMapper::GlViewMapper(double pixelSize) : pixel_(pixelSize) {
   glEnableVertexAttribArray(0);
   glEnableVertexAttribArray(1);
   glBindVertexArray(0);
+}
+
+void GlViewMapper::setPixelSize(double pixelSize) {
+  if (!(pixelSize > 0)) throw Error("view map pixel size must be positive");
+  pixel_ = pixelSize;
 }
 
 GlViewMapper::~GlViewMapper() {
@@ -63,9 +120,7 @@ growth::ViewMaps GlViewMapper::render(const std::vector<growth::ViewBox>& boxes,
   growth::ViewMaps out;
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
-  GLint previousFbo = 0, viewport[4];
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previousFbo);
-  glGetIntegerv(GL_VIEWPORT, viewport);
+  const SavedState saved;
   for (ViewDirection d : growth::kViewDirections) {
     const growth::Rect f = growth::projectFrame(frame, d);
     const int cols = std::max(1, int(std::ceil((f.u1 - f.u0) / pixel_ - 1e-9)));
@@ -106,7 +161,7 @@ growth::ViewMaps GlViewMapper::render(const std::vector<growth::ViewBox>& boxes,
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, cols, rows);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFbo));
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glDeleteRenderbuffers(1, &color);
       glDeleteRenderbuffers(1, &depth);
       glDeleteFramebuffers(1, &fbo);
@@ -116,6 +171,9 @@ growth::ViewMaps GlViewMapper::render(const std::vector<growth::ViewBox>& boxes,
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glDisable(GL_MULTISAMPLE);
+    glDisable(GL_SCISSOR_TEST);  // the editor's ImGui pass leaves it on; it would clip the clear
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glClearColor(0, 0, 0, 0);
@@ -129,8 +187,7 @@ growth::ViewMaps GlViewMapper::render(const std::vector<growth::ViewBox>& boxes,
     std::vector<std::uint8_t> pixels(std::size_t(cols) * rows * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, cols, rows, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());  // bottom row first: v increasing
-    glBindVertexArray(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFbo));
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);  // not bound while deleted; `saved` puts the caller's back
     glDeleteRenderbuffers(1, &color);
     glDeleteRenderbuffers(1, &depth);
     glDeleteFramebuffers(1, &fbo);
@@ -147,8 +204,44 @@ growth::ViewMaps GlViewMapper::render(const std::vector<growth::ViewBox>& boxes,
     m.finish();
     out[d] = std::move(m);
   }
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   return out;
+}
+
+ContextViewMapper::ContextViewMapper(std::unique_ptr<GlContextLease> lease, double pixelSize)
+    : lease_(std::move(lease)), pixel_(pixelSize) {
+  if (!lease_) throw Error("the GL view mapper needs a context");
+  if (!(pixelSize > 0)) throw Error("view map pixel size must be positive");
+}
+
+ContextViewMapper::~ContextViewMapper() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (!gl_) return;
+  lease_->enter();
+  gl_.reset();
+  lease_->leave();
+}
+
+double ContextViewMapper::pixelSize() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return pixel_;
+}
+
+void ContextViewMapper::setPixelSize(double pixelSize) {
+  if (!(pixelSize > 0)) throw Error("view map pixel size must be positive");
+  const std::lock_guard<std::mutex> lock(mutex_);
+  pixel_ = pixelSize;
+  if (gl_) gl_->setPixelSize(pixelSize);
+}
+
+growth::ViewMaps ContextViewMapper::render(const std::vector<growth::ViewBox>& boxes, const growth::Box& frame) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  lease_->enter();
+  struct Leave {
+    GlContextLease& lease;
+    ~Leave() { lease.leave(); }
+  } leave{*lease_};
+  if (!gl_) gl_ = std::make_unique<GlViewMapper>(pixel_);
+  return gl_->render(boxes, frame);
 }
 
 }  // namespace corbel::render

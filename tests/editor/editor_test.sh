@@ -23,6 +23,9 @@
 #     the envelope's first free grid point (0, 0), and the site still builds as closed shells;
 #     sliced two storeys down with the statistics and the view maps shown, the shot differs from
 #     the site alone; undone, the document is the untouched example (nothing to recover).
+#  9a. the Alpha model grown on GL view maps (the default) and, with growth.gl_view_maps, on the
+#     exact ones, or with growth.gl_pixel_next on 0.5 m GL pixels: the inspector shots differ from
+#     the default's (another model, other maps) and nothing is recovered;
 #  9b. the Site tab's frame on Alpha: Add a Storey and Widen the Site (scripted actions) save 6
 #     storeys and a 95 x 50 m box, the site still builds as closed shells and the shot (the Site
 #     tab with its envelope fields) differs from the site alone; undone twice, nothing to recover.
@@ -154,6 +157,17 @@ test -f "$work/state/recovery.corbel" && { echo "undo should leave the example u
 run --recover no --select "Alpha" --actions "${completing[0]},edit.undo,edit.redo_y" --autosave-seconds 0 \
   --quit-after-frames 14 "$alpha"
 cmp -s "$work/state/recovery.corbel" "$work/completed.corbel" || { echo "redo should bring back the same units"; exit 1; }
+echo "== growth view maps: GL (the default) against exact, a setting that changes nothing in the document"
+rm -rf "$work/state"
+run --recover no --select "Alpha" --actions growth.statistics,growth.view_maps --autosave-seconds 0 \
+  --screenshot "$work/maps-gl.png" --quit-after-frames 30 "$alpha"
+run --recover no --select "Alpha" --actions growth.gl_view_maps,growth.statistics,growth.view_maps --autosave-seconds 0 \
+  --screenshot "$work/maps-exact.png" --quit-after-frames 30 "$alpha"
+run --recover no --select "Alpha" --actions growth.gl_pixel_next,growth.statistics,growth.view_maps --autosave-seconds 0 \
+  --screenshot "$work/maps-gl-coarse.png" --quit-after-frames 30 "$alpha"
+test -f "$work/state/recovery.corbel" && { echo "switching the view maps should leave the document untouched"; exit 1; }
+"$check" "$work/maps-gl.png" "$work/maps-exact.png" 0.01
+"$check" "$work/maps-gl.png" "$work/maps-gl-coarse.png" 0.01
 echo "== growth site editor: add a core, slice, statistics, view maps, undo"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.add_core,growth.slice_down,growth.slice_down,growth.statistics,growth.view_maps \

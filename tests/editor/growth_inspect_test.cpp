@@ -72,6 +72,37 @@ TEST(GrowthInspect, ViewMapImagesShowEachUnitWhereItIsSeenFromOutside) {
   EXPECT_NE(c0, co);
 }
 
+TEST(GrowthInspect, DepthImagesShowTheNearestFaceWhiteAndTheFarthestDarkest) {
+  const GrowthInspection in = inspectGrowth(twoSeeds());
+  const auto grey = [](const ViewMapImage& img, int x, int y) {
+    const std::size_t k = 4 * (std::size_t(y) * img.width + x);
+    EXPECT_EQ(img.depthRgba[k], img.depthRgba[k + 1]);
+    EXPECT_EQ(img.depthRgba[k], img.depthRgba[k + 2]);
+    EXPECT_EQ(img.depthRgba[k + 3], 255);
+    return int(img.depthRgba[k]);
+  };
+  const auto empty = idColour(growth::kEmptyId);
+  // From +x the faces seen are A's at x = 10 and B's at x = 20 (depth = x): B nearest.
+  const ViewMapImage px = viewMapImage(in.views[growth::ViewDirection::PosX], growth::ViewDirection::PosX, 20);
+  for (int x = 0; x < 20; ++x) {
+    const bool a = x < 9, b = x >= 11 && x < 19;
+    if (a) {
+      EXPECT_DOUBLE_EQ(px.depthAt(x, 1), 10.0) << x;
+      EXPECT_EQ(grey(px, x, 1), kFarthestGrey) << x;
+    } else if (b) {
+      EXPECT_DOUBLE_EQ(px.depthAt(x, 1), 20.0) << x;
+      EXPECT_EQ(grey(px, x, 1), 255) << x;
+    } else {
+      EXPECT_EQ(px.depthRgba[4 * std::size_t(20 + x)], empty[0]) << x;
+    }
+  }
+  // From -x A's face at x = 0 is the nearer (depth = -x: 0 against B's -12): the greys swap.
+  const ViewMapImage nx = viewMapImage(in.views[growth::ViewDirection::NegX], growth::ViewDirection::NegX, 20);
+  EXPECT_EQ(grey(nx, 15, 1), 255);           // A, on the right when seen from -x
+  EXPECT_EQ(grey(nx, 4, 1), kFarthestGrey);  // B
+  EXPECT_DOUBLE_EQ(nx.depthAt(4, 1), -12.0);
+}
+
 double area(const MeshData& m, std::size_t f) {
   Vec3 n(0.0);
   const auto& loop = m.faces[f];
