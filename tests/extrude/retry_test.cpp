@@ -6,7 +6,10 @@
 // unperturbed orthogonal plan). A rebuild that wider rebuilds contradict is refused; bad input
 // is never rebuilt; a building that passes is built once and keeps its shell.
 #include "core/project_io.h"
+#include "core/scene.h"
+#include "core/scene_sync.h"
 #include "extrude/batch.h"
+#include "extrude/kernel.h"
 #include "skeleton_oracle.h"
 #include "support.h"
 #include "volume_oracle.h"
@@ -120,6 +123,37 @@ TEST(Rebuilt, PlansThatOverlappedThemselvesCloseWithWiderTolerances) {
 // random15198: the 10× rebuild alone closes, but 1.4e-3 away from the unperturbed plan's
 // volume, and the 100× rebuild disagrees with it by as much. The disagreement refuses it, and
 // the failure says so.
+// The Scene's builder (the editor, `corbel-cli render`) rebuilds as the batch does: a plan whose
+// first shell is left open shows the batch's accepted rebuild, with its warning, closed.
+TEST(Rebuilt, TheSceneBuilderShowsTheBatchsRebuild) {
+  const Document d =
+      loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/rebuilt/random28832.corbel").document;
+  const ObjectId id = d.objects.at(0).id;
+  const ExtrusionSpec& spec = std::get<ExtrusionSpec>(d.objects.at(0).spec);
+  ASSERT_GT(unpairedEdges(extrude(spec).shell), 0u) << "the first build closes now: the case tests nothing";
+  SceneSync sync;
+  registerKernel(sync);
+  Scene scene;
+  sync.update(d, scene);
+  const SceneSync::Status& st = sync.status().at(id);
+  ASSERT_TRUE(st.error.empty()) << st.error;
+  ASSERT_FALSE(st.warnings.empty());
+  EXPECT_EQ(st.warnings[0].rfind("rebuilt with 10× tolerances", 0), 0u) << st.warnings[0];
+  const ValidityReport v = scene.validate(id);
+  EXPECT_TRUE(v.closedManifold()) << (v.problems().empty() ? "" : v.problems()[0]);
+  // The same shell as the batch's accepted rebuild.
+  const BatchResult r = buildOne(spec, true, true);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(v.faces, r.meshFaces);
+  EXPECT_EQ(v.vertices, r.meshVertices);
+  // Bad input is refused by the builder with the kernel's message, never rebuilt.
+  Document bad = d;
+  auto& badSpec = std::get<ExtrusionSpec>(bad.objects.at(0).spec);
+  badSpec.loops[0].points[1] = badSpec.loops[0].points[0];
+  sync.update(bad, scene);
+  EXPECT_NE(sync.status().at(id).error.find("loops[0]"), std::string::npos) << sync.status().at(id).error;
+}
+
 TEST(Rebuilt, ARebuildThatAWiderOneContradictsIsRefused) {
   const ExtrusionSpec spec = saved("rebuilt/random15198.corbel");
   const VolumeOracle o = independentVolume(spec);
