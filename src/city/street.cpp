@@ -1,9 +1,12 @@
 #include "city/street.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Polygon_set_2.h>
 
 #include "core/error.h"
+#include "extrude/extrude.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +30,83 @@ std::vector<Vec2> catmullRom(const std::vector<Vec2>& c, int perSpan) {
   out.push_back(c.back());
   return out;
 }
+
+namespace {
+
+// One side's frontage strip split among seeds by the skeleton (Fig. 26): the strip (fronts, then
+// backs reversed; counter-clockwise) is a plan whose edges are walls far higher than the plots
+// are deep, with one small square hole per seed whose edges rise at 45°. The sweep grows every
+// seed at one speed until it meets its neighbours or the strip's walls, so the plan projection
+// of a seed's four roof faces, with the seed itself, is the part of the strip it reaches
+// first. Returns one counter-clockwise ring per seed, or an empty list (with `why`) when the
+// kernel or the check that the plots add up to the strip fails.
+std::vector<std::vector<Vec2>> skeletonPlots(const std::vector<Vec2>& strip, const std::vector<Vec2>& seeds,
+                                             const std::vector<Vec2>& tangents, double reachHeight, std::string& why) {
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  extrude::ExtrusionSpec spec;
+  extrude::Profile wall, slope;
+  wall.name = "plot wall";
+  wall.points = {{0, 0}, {0, reachHeight}, {1, reachHeight + 1}};
+  slope.name = "plot seed";
+  slope.points = {{0, 0}, {1, 1}};
+  spec.profiles = {wall, slope};
+  spec.loops.push_back({strip, std::vector<int>(strip.size(), 0)});
+  const double a = 0.05;  // the seed's half side, m
+  std::vector<std::vector<Vec2>> squares;
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const Vec2 t = tangents[k], nrm(-t[1], t[0]);
+    // Clockwise: a hole.
+    std::vector<Vec2> sq{seeds[k] - a * t - a * nrm, seeds[k] - a * t + a * nrm, seeds[k] + a * t + a * nrm,
+                         seeds[k] + a * t - a * nrm};
+    squares.push_back(sq);
+    spec.loops.push_back({sq, std::vector<int>(4, 1)});
+  }
+  extrude::ExtrusionResult r;
+  try {
+    r = extrude::extrude(spec, nullptr, 5.0);
+  } catch (const std::exception& e) {
+    why = std::string("the skeleton of the strip failed: ") + e.what();
+    return {};
+  }
+  std::vector<CGAL::Polygon_set_2<EK>> sets(seeds.size());
+  for (const extrude::ShellFace& f : r.shell.faces) {
+    if (f.base || f.sourceLoop < 1 || f.sourceLoop > static_cast<int>(seeds.size())) continue;
+    CGAL::Polygon_2<EK> poly;
+    for (int v : f.loops[0]) poly.push_back(EK::Point_2(r.shell.points[v][0], r.shell.points[v][1]));
+    if (poly.size() < 3 || !poly.is_simple()) continue;
+    if (poly.orientation() == CGAL::CLOCKWISE) poly.reverse_orientation();
+    sets[std::size_t(f.sourceLoop - 1)].join(poly);
+  }
+  std::vector<std::vector<Vec2>> plots;
+  double total = 0;
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    CGAL::Polygon_2<EK> sq;
+    for (auto it = squares[k].rbegin(); it != squares[k].rend(); ++it) sq.push_back(EK::Point_2((*it)[0], (*it)[1]));
+    sets[k].join(sq);
+    std::vector<CGAL::Polygon_with_holes_2<EK>> parts;
+    sets[k].polygons_with_holes(std::back_inserter(parts));
+    if (parts.size() != 1 || parts[0].number_of_holes() != 0) {
+      why = "the skeleton gave seed " + std::to_string(k) + " " + std::to_string(parts.size()) + " pieces";
+      return {};
+    }
+    std::vector<Vec2> ring;
+    for (const auto& p : parts[0].outer_boundary().container())
+      ring.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    total += CGAL::to_double(parts[0].outer_boundary().area());
+    plots.push_back(std::move(ring));
+  }
+  double stripArea = 0;
+  for (std::size_t i = 0; i < strip.size(); ++i)
+    stripArea += strip[i][0] * strip[(i + 1) % strip.size()][1] - strip[i][1] * strip[(i + 1) % strip.size()][0];
+  stripArea /= 2;
+  if (std::abs(total - stripArea) > 1e-6 * stripArea) {
+    why = "the skeleton's plots cover " + std::to_string(total) + " m² of a " + std::to_string(stripArea) + " m² strip";
+    return {};
+  }
+  return plots;
+}
+
+}  // namespace
 
 Town streetTown(const std::vector<Vec2>& control, const PlotOptions& o) {
   for (std::size_t i = 0; i + 1 < control.size(); ++i)
@@ -58,6 +138,55 @@ Town streetTown(const std::vector<Vec2>& control, const PlotOptions& o) {
   const double front = o.streetWidth / 2 + o.setback, back = front + o.depth;
   for (int side = 0; side < (o.bothSides ? 2 : 1); ++side) {
     const double sign = side == 0 ? 1.0 : -1.0;
+    std::string skeletonNote;
+    if (o.method == PlotMethod::Skeleton) {
+      // The side's whole strip: fronts and backs at every spline sample, each back kept short of
+      // where its normal crosses a neighbour's (80 %, as below).
+      std::vector<double> reach(n, back);
+      for (std::size_t i = 0; i + 1 < n; ++i) {
+        const Vec2 d = line[i + 1] - line[i], a = normal[i] * sign, b = normal[i + 1] * sign;
+        const double den = a[0] * b[1] - a[1] * b[0];
+        if (std::abs(den) < 1e-12) continue;
+        const double t = (d[0] * b[1] - d[1] * b[0]) / den;
+        if (t > 0) reach[i] = std::min(reach[i], 0.8 * t), reach[i + 1] = std::min(reach[i + 1], 0.8 * t);
+      }
+      const double shallowest = *std::min_element(reach.begin(), reach.end());
+      std::vector<Vec2> fronts, backs;
+      for (std::size_t i = 0; i < n; ++i) {
+        fronts.push_back(line[i] + normal[i] * sign * front);
+        backs.push_back(line[i] + normal[i] * sign * reach[i]);
+      }
+      std::vector<Vec2> strip = fronts;
+      strip.insert(strip.end(), backs.rbegin(), backs.rend());
+      if (side == 1) std::reverse(strip.begin(), strip.end());
+      std::vector<Vec2> seeds, tangents;
+      for (int k = 0; k < count; ++k) {
+        Vec2 p, nm;
+        at(length * (k + 0.5) / count, p, nm);
+        nm *= sign;
+        const std::size_t near =
+            std::min<std::size_t>(std::lower_bound(s.begin(), s.end(), length * (k + 0.5) / count) - s.begin(), n - 1);
+        seeds.push_back(p + nm * (0.5 * (front + std::min(reach[near], reach[near == 0 ? 0 : near - 1]))));
+        tangents.push_back(Vec2(nm[1], -nm[0]));
+      }
+      std::vector<std::vector<Vec2>> rings;
+      if (shallowest - front < 3)
+        skeletonNote = "the street bends too sharply for the skeleton's strip";
+      else
+        rings = skeletonPlots(strip, seeds, tangents, 10 * (o.depth + o.plotWidth + front), skeletonNote);
+      if (!rings.empty()) {
+        for (int k = 0; k < count; ++k) {
+          Building b;
+          b.id = std::string(side == 0 ? "left/" : "right/") + std::to_string(k);
+          b.properties = {{"side", side == 0 ? "left" : "right"}, {"index", k}, {"plot", true}};
+          b.loops.push_back(std::move(rings[std::size_t(k)]));
+          b.notes.push_back("plot grown from its seed by the skeleton of the frontage (Fig. 26)");
+          cleanBuilding(b);
+          town.buildings.push_back(std::move(b));
+        }
+        continue;
+      }
+    }
     for (int k = 0; k < count; ++k) {
       const double t0 = length * k / count, t1 = length * (k + 1) / count;
       // Stations: the plot's two ends and every spline sample between them.
@@ -96,6 +225,7 @@ Town streetTown(const std::vector<Vec2>& control, const PlotOptions& o) {
       b.id = std::string(side == 0 ? "left/" : "right/") + std::to_string(k);
       b.properties = {{"side", side == 0 ? "left" : "right"}, {"index", k}, {"plot", true}};
       b.loops.push_back(std::move(ring));
+      if (!skeletonNote.empty()) b.notes.push_back("plot cut along the street's normals instead: " + skeletonNote);
       if (reach - front < 3)
         b.problem = "the street bends too sharply here: a plot would be " + std::to_string(reach - front) +
                     " m deep before its back folds";
@@ -116,9 +246,7 @@ K::Point_2 pt(const Vec2& v) { return {v[0], v[1]}; }
 struct Box2 {
   Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   void add(const Vec2& p) { lo = lo.minimize(p), hi = hi.maximize(p); }
-  bool meets(const Box2& o) const {
-    return lo[0] < o.hi[0] && o.lo[0] < hi[0] && lo[1] < o.hi[1] && o.lo[1] < hi[1];
-  }
+  bool meets(const Box2& o) const { return lo[0] < o.hi[0] && o.lo[0] < hi[0] && lo[1] < o.hi[1] && o.lo[1] < hi[1]; }
 };
 
 Box2 boxOf(const std::vector<Vec2>& ring) {
@@ -131,8 +259,8 @@ Box2 boxOf(const std::vector<Vec2>& ring) {
 bool crosses(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
   const auto o1 = CGAL::orientation(pt(a), pt(b), pt(c)), o2 = CGAL::orientation(pt(a), pt(b), pt(d));
   const auto o3 = CGAL::orientation(pt(c), pt(d), pt(a)), o4 = CGAL::orientation(pt(c), pt(d), pt(b));
-  return o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o1 != o2 && o3 != CGAL::COLLINEAR &&
-         o4 != CGAL::COLLINEAR && o3 != o4;
+  return o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o1 != o2 && o3 != CGAL::COLLINEAR && o4 != CGAL::COLLINEAR &&
+         o3 != o4;
 }
 
 // Whether p lies strictly inside the simple ring.

@@ -37,7 +37,8 @@ constexpr const char* kCityUsage =
     "         [--tiles DIR] [--tile-size M] [--render PNG] [--around X,Y,R]\n"
     "         [--coordinates auto|lonlat|metric] [--report FILE.jsonl] [--detail massing|steps|full]\n"
     "         [--textures on|off] [--render-textures on|off]\n"
-    "       corbel-cli city --street X,Y;X,Y;... --style STYLE.json [...]   (town houses along a spline)\n";
+    "       corbel-cli city --street X,Y;X,Y;... [--plots normals|skeleton] --style STYLE.json [...]\n"
+    "         (town houses along a spline; skeleton: plots grown from seeds, Fig. 26)\n";
 
 Vec2 centroidOf(const std::vector<Vec2>& ring) {
   Vec2 c{0, 0};
@@ -59,8 +60,8 @@ int city(int argc, char** argv) {
   std::map<std::string, std::string> opt;
   std::vector<std::string> positional;
   const std::set<std::string> known = {
-      "--style",  "--seed",   "--jobs",        "--out",    "--tiles",  "--tile-size", "--render",
-      "--around", "--street", "--coordinates", "--report", "--detail", "--textures",  "--render-textures"};
+      "--style",  "--seed",        "--jobs",   "--out",    "--tiles",    "--tile-size",       "--render", "--around",
+      "--street", "--coordinates", "--report", "--detail", "--textures", "--render-textures", "--plots"};
   for (int i = 2; i < argc; ++i) {
     const std::string s = argv[i];
     if (s.rfind("--", 0) == 0) {
@@ -82,6 +83,7 @@ int city(int argc, char** argv) {
     return 2;
   };
   if (positional.size() + opt.count("--street") != 1) return usage("expected one FOOTPRINTS file or a --street");
+  if (opt.count("--plots") && !opt.count("--street")) return usage("--plots: only with --street");
   if (!opt.count("--style")) return usage("--style STYLE.json is required");
   if (!opt.count("--out") && !opt.count("--tiles") && !opt.count("--render"))
     return usage("nothing to write: give --out, --tiles or --render");
@@ -149,7 +151,14 @@ int city(int argc, char** argv) {
       control.emplace_back((*v)[0], (*v)[1]);
       from = semi + 1;
     }
-    town = city::streetTown(control);
+    city::PlotOptions plots;
+    if (auto p = opt.find("--plots"); p != opt.end()) {
+      if (p->second == "skeleton")
+        plots.method = city::PlotMethod::Skeleton;
+      else if (p->second != "normals")
+        return usage("--plots: expected normals or skeleton");
+    }
+    town = city::streetTown(control, plots);
     source = "street";
   } else {
     source = positional[0];
