@@ -138,3 +138,38 @@ TEST(RealData, TheCliTexturesTheGlbByTag) {
   const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
   EXPECT_NE(message.find("--textures: expected on or off, not 'maybe'"), std::string::npos) << message;
 }
+
+// `--plots skeleton` grows a street's plots from seeds (Fig. 26): as many plots as the normal
+// cuts, all built; a bad value, or plots without a street, are refused by name.
+TEST(RealData, TheCliGrowsStreetPlotsBySkeleton) {
+  const auto dir = std::filesystem::temp_directory_path() / "corbel_city_plots_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  auto run = [&](const std::string& args, nlohmann::json* summary = nullptr) {
+    const std::string cmd = std::string(CORBEL_CLI) + " city " + args + " --style " + CORBEL_SOURCE_DIR +
+                            "/assets/styles/oldtown.json --out " + (dir / "t.glb").string() + " > " +
+                            (dir / "out.json").string() + " 2> " + (dir / "err.txt").string();
+    const int rc = WEXITSTATUS(std::system(cmd.c_str()));
+    if (summary) {
+      std::ifstream in(dir / "out.json");
+      std::string line, last;
+      while (std::getline(in, line))
+        if (!line.empty()) last = line;
+      *summary = nlohmann::json::parse(last);
+    }
+    return rc;
+  };
+  auto error = [&] {
+    std::ifstream err(dir / "err.txt");
+    return std::string((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  };
+  nlohmann::json cuts, grown;
+  ASSERT_EQ(run("--street \"0,0;40,20;80,10\"", &cuts), 0) << error();
+  ASSERT_EQ(run("--street \"0,0;40,20;80,10\" --plots skeleton", &grown), 0) << error();
+  EXPECT_EQ(grown["buildings"], cuts["buildings"]);
+  EXPECT_EQ(grown["ok"], grown["buildings"]);
+  EXPECT_EQ(run("--street \"0,0;40,20;80,10\" --plots voronoi"), 2);
+  EXPECT_NE(error().find("--plots: expected normals or skeleton"), std::string::npos) << error();
+  EXPECT_EQ(run(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/town-moosburg.geojson --plots skeleton"), 2);
+  EXPECT_NE(error().find("--plots: only with --street"), std::string::npos) << error();
+}
