@@ -124,6 +124,7 @@ std::shared_ptr<const TownInputs> TownCache::inputsFor(ObjectId object, const To
     for (double v : {st.width, st.setback, st.depth, st.plotWidth})
       std::snprintf(number, sizeof number, " %a", v), key += number;
     key += st.bothSides ? " both" : " left";
+    key += st.skeletonPlots ? " skeleton" : " normals";
   }
   {
     std::lock_guard lock(mutex_);

@@ -340,6 +340,7 @@ void addStreets(Town& town, const std::vector<TownStreet>& streets) {
     o.depth = st.depth;
     o.plotWidth = st.plotWidth;
     o.bothSides = st.bothSides;
+    o.method = st.skeletonPlots ? PlotMethod::Skeleton : PlotMethod::Normals;
     Town one = streetTown(control, o);
     const std::string name = "street " + std::to_string(k + 1);
     lines.push_back(one.streets.front().points);

@@ -334,6 +334,7 @@ ojson townToJson(const TownSpec& t, const std::string& folder) {
       sj["depth"] = st.depth;
       sj["plot_width"] = st.plotWidth;
       sj["both_sides"] = st.bothSides;
+      if (st.skeletonPlots) sj["plots"] = "skeleton";
       streets.push_back(std::move(sj));
     }
     j["streets"] = std::move(streets);
@@ -408,7 +409,7 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
     for (std::size_t k = 0; k < sv->raw().size(); ++k) {
       const JsonReader st(sv->raw()[k], sv->path() + "[" + std::to_string(k) + "]");
       st.expectObject();
-      for (auto& key : st.unknownKeys({"points", "width", "setback", "depth", "plot_width", "both_sides"}))
+      for (auto& key : st.unknownKeys({"points", "width", "setback", "depth", "plot_width", "both_sides", "plots"}))
         warnings.push_back(key + ": unknown key ignored");
       TownStreet street;
       const JsonReader pts = st.at("points");
@@ -430,6 +431,12 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
       if (auto v = st.find("depth")) street.depth = v->number(3, 200);
       if (auto v = st.find("plot_width")) street.plotWidth = v->number(3, 200);
       if (auto v = st.find("both_sides")) street.bothSides = v->boolean();
+      if (auto v = st.find("plots")) {
+        const std::string how = v->string(16);
+        if (how != "normals" && how != "skeleton")
+          v->fail("expected \"normals\" or \"skeleton\", found \"" + how + "\"");
+        street.skeletonPlots = how == "skeleton";
+      }
       t.streets.push_back(std::move(street));
     }
   }

@@ -36,6 +36,7 @@ struct TownStreet {
   double depth = 12;      // plot depth, front to back
   double plotWidth = 7;   // wanted frontage of one plot (the frontage is cut evenly)
   bool bothSides = true;
+  bool skeletonPlots = false;  // plots grown from seeds by the skeleton (Fig. 26), else cut along normals
   bool operator==(const TownStreet&) const = default;
 };
 

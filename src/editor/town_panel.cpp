@@ -374,8 +374,15 @@ void TownPanel::drawStreets(const TownHost& host, const TownSpec& spec) {
   changed |= ImGui::DragFloat("Plot width", &v[3], 0.1f, 3, 200, "%.1f m");
   bool both = st.bothSides;
   changed |= ImGui::Checkbox("Plots on both sides", &both);
+  bool grown = st.skeletonPlots;
+  changed |= ImGui::Checkbox("Grow plots from seeds (skeleton)", &grown);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Fig. 26: each plot grown from a seed by a second application of the skeleton; "
+        "off: cut along the street's normals");
   if (changed) {
     edit.width = v[0], edit.setback = v[1], edit.depth = v[2], edit.plotWidth = v[3], edit.bothSides = both;
+    edit.skeletonPlots = grown;
     commitStreets(
         host, [&](Document& d) { setStreet(d, id, k, edit); }, "Edit street " + std::to_string(k + 1), key + ".values");
   }

@@ -326,6 +326,44 @@ TEST(TownStreets, PlotsThatOverlapAFootprintAreReportedByName) {
 
 // Reshaping a street far (more than the 200 m street reach) from every footprint re-extrudes its
 // plots only; the example's 32 footprints are not extruded again and keep their meshes.
+// A street whose plots are grown by the skeleton (Fig. 26): the same number of plots as its
+// normal cuts, every one built, the two sets of plots covering the same frontage area (Steiner:
+// on a bend gentle enough that no back folds, both are the strip) and differing in shape; switching is an input change
+// that re-extrudes the plots.
+TEST(TownStreets, GrownPlotsBuildAndSwitchingReExtrudesThem) {
+  DocObject town = exampleTown();
+  TownCache cache;
+  TownStreet st;
+  st.points = {{400, 0}, {435, 6}, {470, 0}};  // a gentle bend: no plot's back folds
+  auto& spec = std::get<TownSpec>(town.spec);
+  spec.streets = {st};
+  cache.build(town, nullptr);
+  const auto inputsCut = cache.inputs(town.id);
+  const std::size_t afterCuts = cache.extrusions();
+  spec.streets[0].skeletonPlots = true;
+  cache.build(town, nullptr);
+  const auto inputsGrown = cache.inputs(town.id);
+  ASSERT_NE(inputsCut, inputsGrown);  // new inputs: the plots were cut again
+  double cutArea = 0, grownArea = 0;
+  std::size_t cut = 0, grown = 0, differ = 0;
+  for (std::size_t i = 0; i < inputsGrown->town.buildings.size(); ++i) {
+    const Building& g = inputsGrown->town.buildings[i];
+    if (g.id.rfind("street 1/", 0) != 0) continue;
+    ++grown;
+    grownArea += g.area;
+    EXPECT_NE(g.notes.front().find("grown from its seed"), std::string::npos) << g.id;
+    for (const Building& c : inputsCut->town.buildings)
+      if (c.id == g.id) ++cut, cutArea += c.area, differ += c.loops != g.loops;
+  }
+  EXPECT_EQ(grown, cut);
+  EXPECT_GT(differ, 0u);
+  EXPECT_NEAR(grownArea, cutArea, 1e-3 * cutArea);
+  std::size_t built = 0;
+  for (const BuiltBuilding& b : cache.buildings(town.id)) built += b.id.rfind("street 1/", 0) == 0 && b.error.empty();
+  EXPECT_EQ(built, grown);
+  EXPECT_GE(cache.extrusions(), afterCuts + differ);
+}
+
 TEST(TownStreets, ReshapingAStreetReExtrudesItsPlotsAndNothingElse) {
   DocObject town = exampleTown();
   TownCache cache;

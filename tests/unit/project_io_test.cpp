@@ -897,6 +897,7 @@ TEST(ProjectIo, TownSpecsRoundTripWithPathsRelativeToTheProject) {
   st.depth = 15.5;
   st.plotWidth = 6;
   st.bothSides = false;
+  st.skeletonPlots = true;
   t.streets = {st, corbel::TownStreet{{{{1, 2}, {3, 4}}}}};
   t.overrides["street 1/left/0"].type = "garage";
   t.overrides["w7"].edges = {{"0:3", "oldtown gable"}, {"1:0", "oldtown eaves"}};
@@ -964,6 +965,8 @@ TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
                R"(objects[0].town.overrides["w1"].edges["0:1"])", "the profile name must not be empty");
   EXPECT_FAULT(withTown(fs + R"("streets": {})"), "objects[0].town.streets", "expected an array of streets");
   EXPECT_FAULT(withTown(fs + R"("streets": [{"width": 8}])"), "objects[0].town.streets[0].points", "missing");
+  EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0], [1, 0]], "plots": "voronoi"}])"),
+               "objects[0].town.streets[0].plots", R"(expected "normals" or "skeleton", found "voronoi")");
   EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0]]}])"), "objects[0].town.streets[0].points",
                "expected 2 to 64 control points, found 1");
   EXPECT_FAULT(withTown(fs + R"("streets": [{"points": [[0, 0], [1]]}])"), "objects[0].town.streets[0].points[1]",
