@@ -81,6 +81,12 @@ std::map<std::string, BuildingOverride> resolveOverrides(const Style& style, con
   for (const auto& [id, o] : spec.overrides) {
     const std::string at = "town.overrides[\"" + id + "\"]";
     BuildingOverride r;
+    // The style's profile of that name; a missing one throws at `where`.
+    const auto profileIndex = [&style](const std::string& name, const std::string& where) {
+      for (std::size_t i = 0; i < style.profiles.size(); ++i)
+        if (style.profiles[i].name == name) return static_cast<int>(i);
+      throw InputError(where, "the style \"" + style.name + "\" has no profile named \"" + name + "\"");
+    };
     if (!o.type.empty()) {
       for (std::size_t i = 0; i < style.types.size(); ++i)
         if (style.types[i].name == o.type) r.type = i;
@@ -89,23 +95,12 @@ std::map<std::string, BuildingOverride> resolveOverrides(const Style& style, con
     for (const auto& [side, name] : o.profiles) {
       const auto orientation = orientationFromName(side);
       if (!orientation) throw InputError(at + ".profiles", "expected \"street\", \"side\" or \"back\", found \"" + side + "\"");
-      int index = -1;
-      for (std::size_t i = 0; i < style.profiles.size(); ++i)
-        if (style.profiles[i].name == name) index = static_cast<int>(i);
-      if (index < 0)
-        throw InputError(at + ".profiles." + side, "the style \"" + style.name + "\" has no profile named \"" + name + "\"");
-      r.profiles[*orientation] = index;
+      r.profiles[*orientation] = profileIndex(name, at + ".profiles." + side);
     }
     for (const auto& [key, name] : o.edges) {
       const auto edge = parseTownEdgeKey(key);
       if (!edge) throw InputError(at + ".edges", "expected an edge \"LOOP:EDGE\" (as \"0:3\"), found \"" + key + "\"");
-      int index = -1;
-      for (std::size_t i = 0; i < style.profiles.size(); ++i)
-        if (style.profiles[i].name == name) index = static_cast<int>(i);
-      if (index < 0)
-        throw InputError(at + ".edges[\"" + key + "\"]",
-                         "the style \"" + style.name + "\" has no profile named \"" + name + "\"");
-      r.edges[*edge] = index;
+      r.edges[*edge] = profileIndex(name, at + ".edges[\"" + key + "\"]");
     }
     out[id] = std::move(r);
   }

@@ -20,6 +20,14 @@ double area(const std::vector<Vec2>& p) {
   return a / 2;
 }
 
+// Whether some edge of ring a is the reverse of an edge of ring b (corners within tol).
+bool shareAnEdge(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double tol) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j)
+      if ((a[i] - b[(j + 1) % b.size()]).norm() < tol && (a[(i + 1) % a.size()] - b[j]).norm() < tol) return true;
+  return false;
+}
+
 // Frontage tiling, checked from the plots alone: every plot is counter-clockwise, the plots
 // of one side add up to the strip's area (Steiner: length × depth on the two sides together,
 // the curvature terms cancel), and each plot's end edge is its neighbour's start edge.
@@ -47,12 +55,9 @@ void expectTiles(const Town& t, const PlotOptions& o, bool fullDepth = true) {
       // Shared boundary: some edge of plot k is the reverse of an edge of plot k + 1.
       const auto& a = t.buildings[side * perSide + k].loops[0];
       const auto& b = t.buildings[side * perSide + k + 1].loops[0];
-      bool shared = false;
-      for (std::size_t i = 0; i < a.size() && !shared; ++i)
-        for (std::size_t j = 0; j < b.size() && !shared; ++j)
-          shared = fullDepth
-                       ? (a[i] - b[(j + 1) % b.size()]).norm() < 1e-9 && (a[(i + 1) % a.size()] - b[j]).norm() < 1e-9
-                       : (a[i] - b[j]).norm() < 1e-9;
+      bool shared = fullDepth && shareAnEdge(a, b, 1e-9);
+      for (std::size_t i = 0; i < a.size() && !fullDepth && !shared; ++i)
+        for (std::size_t j = 0; j < b.size() && !shared; ++j) shared = (a[i] - b[j]).norm() < 1e-9;
       EXPECT_TRUE(shared) << side << " " << k;
     }
 }
@@ -77,11 +82,7 @@ void expectTilesGrown(const Town& t, const PlotOptions& o) {
     for (std::size_t k = 0; k + 1 < perSide; ++k) {
       const auto& a = t.buildings[side * perSide + k].loops[0];
       const auto& b = t.buildings[side * perSide + k + 1].loops[0];
-      bool shared = false;
-      for (std::size_t i = 0; i < a.size() && !shared; ++i)
-        for (std::size_t j = 0; j < b.size() && !shared; ++j)
-          shared = (a[i] - b[(j + 1) % b.size()]).norm() < 1e-6 && (a[(i + 1) % a.size()] - b[j]).norm() < 1e-6;
-      EXPECT_TRUE(shared) << side << " " << k;
+      EXPECT_TRUE(shareAnEdge(a, b, 1e-6)) << side << " " << k;
     }
   // A corner on the front line: at the front distance from the centreline (its sampled polyline).
   const double front = o.streetWidth / 2 + o.setback;
