@@ -9,7 +9,9 @@
 // CGAL's straight skeleton where every edge has one profile (volume_oracle.h). Against the
 // unperturbed plan of a perturbed orthogonal one it is counted and reported (the two may differ
 // where the wider merge sine joins edges by priority that the normal one leaves apart). Rebuilt
-// cases are written to extrude-random-failures/rebuilt/.
+// cases are written to extrude-random-failures/rebuilt/. Every first-build failure is kept in
+// tests/data/extrude/random/ with a test of its own (random_cases_test.cpp; new ones are added
+// with scripts/extrude_random_cases.py).
 #include "core/project_io.h"
 #include "extrude/batch.h"
 #include "support.h"
