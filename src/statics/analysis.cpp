@@ -179,6 +179,7 @@ BlockQP penaltyQP(const EquilibriumSystem& p) {
       vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}};
       addFrictionRows(vb, p, 0, 2);
       vb.nullDirection = {-1, -1, 0, 0};  // the columns of f_n⁺ and f_n⁻ are exact opposites
+      vb.interiorDirection = {1, 1, 0, 0};  // more of both: every row grows (α > 0 on the pyramid's)
       qp.blocks.push_back(vb);
       col += 4;
     }

@@ -409,7 +409,96 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // order as the expressions they replace, so the iterates are bit for bit the same.
   VectorXd gx(mi), rd(n), rp(m), rg(mi), d(mi), rc(mi), tn(n), tm(m), tm2(m), ti(mi);
   VectorXd w(mi), rho(n), rhs(m), r1(n), r2(m), ddy(m), dx(n), dy(m), dz(mi), ds(mi), xt(n), gxt(mi), rpt(m);
-  VectorXd sn1(n), sn2(n);
+  VectorXd sn1(n), sn2(n), xc(n), zeroN = VectorXd::Zero(n);
+  // The projection of the early exit: every block with a null direction e moved along it by the
+  // δ that minimises the block's objective ½Σq(x + δe)², clamped so that its rows g·x ≥ 0 hold.
+  // One-sided (δ ≥ 0, rows taken as max(0, g·x)) for an interior iterate; two-sided for the
+  // feasibility correction's point, whose rows may be negative before the move (then δ < 0 can
+  // repair them: f_n⁺ and f_n⁻ both raised, the net force unchanged).
+  auto project = [&](const VectorXd& xin, const VectorXd& gxin, VectorXd& out, bool twoSided) {
+    out = xin;
+    for (int j = 0; j < nb; ++j) {
+      const VarBlock& blk = qp.blocks[std::size_t(j)];
+      const auto& e = blk.nullDirection;
+      double qe = 0, qxe = 0;
+      for (int k = 0; k < blk.size; ++k) {
+        qe += blk.hessian[k] * e[k] * e[k];
+        qxe += blk.hessian[k] * xin[blk.offset + k] * e[k];
+      }
+      if (!(qe > 0)) continue;
+      if (!twoSided) {
+        if (!(qxe < 0)) continue;
+        double delta = -qxe / qe;
+        for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+          double ge = 0;
+          for (int k = 0; k < blk.size; ++k) ge += blk.rows[r][k] * e[k];
+          if (ge < 0) delta = std::min(delta, std::max(0.0, gxin[rowStart[j] + int(r)]) / -ge);
+        }
+        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] += delta * e[k];
+        continue;
+      }
+      double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+      for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+        double ge = 0;
+        for (int k = 0; k < blk.size; ++k) ge += blk.rows[r][k] * e[k];
+        const double gv = gxin[rowStart[j] + int(r)];
+        if (ge < 0) hi = std::min(hi, gv / -ge);
+        if (ge > 0) lo = std::max(lo, -gv / ge);
+      }
+      if (!(lo <= hi)) continue;  // no δ repairs this block: the certificate's check refuses the point
+      const double delta = std::clamp(-qxe / qe, lo, hi);
+      for (int k = 0; k < blk.size; ++k) out[blk.offset + k] += delta * e[k];
+    }
+  };
+  // Blocks whose rows are negative (by rounding, after the correction's solve) moved along
+  // their interior direction d by t = max over those rows of −g·x / g·d, a little more: the
+  // rows are then ≥ 0 and A x moves by t A_j d (the certificate checks both again).
+  auto repair = [&](VectorXd& v) {
+    for (int j = 0; j < nb; ++j) {
+      const VarBlock& blk = qp.blocks[std::size_t(j)];
+      const auto& dir = blk.interiorDirection;
+      // The margin covers the rounding of g·x (a few ulps of Σ|g_k x_k|) and of x + t d.
+      constexpr double eps = std::numeric_limits<double>::epsilon();
+      double t = 0, scale = 0;
+      for (int k = 0; k < blk.size; ++k) scale = std::max(scale, std::abs(v[blk.offset + k]));
+      for (const auto& g : blk.rows) {
+        double gv = 0, gd = 0, ga = 0;
+        for (int k = 0; k < blk.size; ++k) {
+          gv += g[k] * v[blk.offset + k];
+          gd += g[k] * dir[k];
+          ga += std::abs(g[k]) * (std::abs(v[blk.offset + k]) + 4 * eps * scale);
+        }
+        if (gv < 0 && gd > 0) t = std::max(t, (-gv + 16 * eps * ga) / gd);
+      }
+      if (t > 0)
+        for (int k = 0; k < blk.size; ++k) v[blk.offset + k] += t * dir[k];
+    }
+  };
+  // The certificate (see "The early exit"): A x̃ = b to the residual tolerance and G x̃ ≥ 0 on
+  // every row, both computed again here, with the objective φ(x̃) ≤ objectiveExitBelow.
+  IpmResult early;
+  auto certify = [&](const VectorXd& xtv, double obj, int iter, const VectorXd& rdv) {
+    if (!(obj <= options.objectiveExitBelow)) return false;
+    rpt.noalias() = qp.A * xtv;
+    rpt -= qp.b;
+    const double prt = rpt.size() ? rpt.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
+    Gx(xtv, gxt);
+    if (!(prt <= options.residualTolerance && (mi == 0 || gxt.minCoeff() >= 0))) return false;
+    early.status = SolveStatus::Optimal;
+    early.x = xtv;
+    // With ½x̃ᵀQx̃ = 0 (so Q x̃ = 0) and c = 0, (x̃, 0, 0) satisfies the KKT conditions
+    // exactly: the multipliers are 0. Otherwise the iterate's.
+    early.multipliers = obj == 0 ? VectorXd::Zero(m) : y;
+    early.objective = obj;
+    early.primalResidual = prt;
+    early.dualResidual = obj == 0 ? 0.0 : (rdv.size() ? rdv.lpNorm<Eigen::Infinity>() / (1 + cnorm) : 0.0);
+    early.gap = obj;  // the certified bound on objective − optimum
+    early.iterations = iter;
+    early.regularisations = res.regularisations;
+    early.corrections = res.corrections;
+    return true;
+  };
+  double lastProjected = std::numeric_limits<double>::infinity();
   const auto started = std::chrono::steady_clock::now();
   for (int iter = 0;; ++iter) {
     Gx(x, gx);
@@ -426,51 +515,12 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       best.regularisations = res.regularisations;
       return best;
     }
-    if (objectiveNonNegative &&
-        (rp.size() ? rp.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0) <= options.residualTolerance) {
-      // x̃: every block moved along its null direction e by the δ ≥ 0 that minimises the
-      // block's objective ½Σq(x + δe)², capped so that every row g·x ≥ 0 stays so. A e = 0, so
-      // A x̃ = A x up to rounding (checked again below).
-      xt = x;
-      for (int j = 0; j < nb; ++j) {
-        const VarBlock& blk = qp.blocks[std::size_t(j)];
-        const auto& e = blk.nullDirection;
-        double qe = 0, qxe = 0;
-        for (int k = 0; k < blk.size; ++k) {
-          qe += blk.hessian[k] * e[k] * e[k];
-          qxe += blk.hessian[k] * x[blk.offset + k] * e[k];
-        }
-        if (!(qe > 0) || !(qxe < 0)) continue;
-        double delta = -qxe / qe;
-        for (std::size_t r = 0; r < blk.rows.size(); ++r) {
-          double ge = 0;
-          for (int k = 0; k < blk.size; ++k) ge += blk.rows[r][k] * e[k];
-          if (ge < 0) delta = std::min(delta, std::max(0.0, gx[rowStart[j] + int(r)]) / -ge);
-        }
-        for (int k = 0; k < blk.size; ++k) xt[blk.offset + k] += delta * e[k];
-      }
-      const double obj = 0.5 * xt.dot(qdiag.cwiseProduct(xt));
-      if (obj <= options.objectiveExitBelow) {
-        rpt.noalias() = qp.A * xt;
-        rpt -= qp.b;
-        const double prt = rpt.size() ? rpt.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
-        Gx(xt, gxt);
-        if (prt <= options.residualTolerance && (mi == 0 || gxt.minCoeff() >= 0)) {
-          IpmResult early;
-          early.status = SolveStatus::Optimal;
-          early.x = xt;
-          // With ½x̃ᵀQx̃ = 0 (so Q x̃ = 0) and c = 0, (x̃, 0, 0) satisfies the KKT conditions
-          // exactly: the multipliers are 0. Otherwise the iterate's.
-          early.multipliers = obj == 0 ? VectorXd::Zero(m) : y;
-          early.objective = obj;
-          early.primalResidual = prt;
-          early.dualResidual = obj == 0 ? 0.0 : (rd.size() ? rd.lpNorm<Eigen::Infinity>() / (1 + cnorm) : 0.0);
-          early.gap = obj;  // the certified bound on objective − optimum
-          early.iterations = iter;
-          early.regularisations = res.regularisations;
-          return early;
-        }
-      }
+    const bool primalFeasible =
+        (rp.size() ? rp.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0) <= options.residualTolerance;
+    if (objectiveNonNegative) {
+      project(x, gx, xt, false);
+      lastProjected = 0.5 * xt.dot(qdiag.cwiseProduct(xt));
+      if (primalFeasible && certify(xt, lastProjected, iter, rd)) return early;
     }
     if (iter >= options.maxIterations) break;
     if (options.maxSeconds > 0 &&
@@ -688,6 +738,48 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       ds = ti + rg;
       return allFinite(dx) && allFinite(dy) && allFinite(dz);
     };
+    // The feasibility correction (IpmOptions::feasibilityCorrections): the projected point x̃
+    // with its penalised variables set to 0 (the tension removed) misses equilibrium by r; the
+    // least change in the metric of this iteration's H that restores it, H⁻¹Aᵀ S⁻¹ r, costs one
+    // solve with the factorisation just made. Projected again (two-sided), the result either
+    // passes the certificate — and the solve ends here, a few iterations before the iterate
+    // itself would — or is dropped.
+    if (objectiveNonNegative && options.feasibilityCorrections > 0 &&
+        (iter == 0 || lastProjected <= options.correctBelow)) {
+      xc = xt;
+      for (int round = 0; round < options.feasibilityCorrections; ++round) {
+        for (int j = 0; j < nb; ++j) {
+          const VarBlock& blk = qp.blocks[std::size_t(j)];
+          std::array<double, 4> v{};
+          bool any = false;
+          for (int k = 0; k < blk.size; ++k) {
+            v[k] = xc[blk.offset + k];
+            if (blk.hessian[k] > 0 && v[k] != 0) v[k] = 0, any = true;
+          }
+          if (!any) continue;
+          bool ok = true;
+          for (const auto& g : blk.rows) {
+            double acc = 0;
+            for (int k = 0; k < blk.size; ++k) acc += g[k] * v[k];
+            ok = ok && acc >= 0;
+          }
+          if (ok)
+            for (int k = 0; k < blk.size; ++k) xc[blk.offset + k] = v[k];
+        }
+        rpt.noalias() = qp.A * xc;
+        tm2 = qp.b - rpt;
+        ldlt.solve(tm2, ddy);
+        hinvPlusAT(zeroN, ddy, tn);
+        xc += tn;
+        Gx(xc, gxt);
+        project(xc, gxt, xt, true);
+        repair(xt);
+        const double obj = 0.5 * xt.dot(qdiag.cwiseProduct(xt));
+        ++res.corrections;
+        if (certify(xt, obj, iter, rd)) return early;
+        xc = xt;
+      }
+    }
     rc = s.cwiseProduct(z);
     if (!newton(rc, false)) {
       return stop(SolveStatus::NumericalFailure);

@@ -9,6 +9,7 @@
 #include <Eigen/SparseCore>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct VarBlock {
   // compression). The early exit moves an iterate along it to lower the objective, keeping
   // every row ≥ 0; all zeros for none.
   std::array<double, 4> nullDirection{};
+  // Optional: a direction d with g·d > 0 for every row of the block (strictly inside its cone).
+  // The feasibility correction moves a point whose rows are negative by rounding along it, by
+  // just enough to make them ≥ 0; all zeros for none.
+  std::array<double, 4> interiorDirection{};
 };
 
 struct BlockQP {
@@ -71,6 +76,13 @@ struct IpmOptions {
   // the iterate moved along the blocks' nullDirection; the solve stops there as `optimal`
   // with `gap` = ½x̃ᵀQx̃ (the certified bound). 0 turns it off.
   double objectiveExitBelow = 1e-12;
+  // The feasibility correction ("the least-squares start", docs/statics.md): after the first
+  // factorisation, and at later iterates whose projected objective is already at most
+  // correctBelow, this many rounds of "remove the tension, restore equilibrium with one solve
+  // of this iteration's factorisation, project" are tried against the early exit's
+  // certificate; a point that fails it is dropped. 0 turns it off.
+  int feasibilityCorrections = 1;
+  double correctBelow = 1e-8;
 };
 
 struct IpmResult {
@@ -80,6 +92,7 @@ struct IpmResult {
   double primalResidual = 0, dualResidual = 0, gap = 0;
   int iterations = 0;
   int regularisations = 0;  // factorisations that needed a diagonal shift
+  int corrections = 0;      // feasibility-correction rounds tried
 };
 
 IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options = {});

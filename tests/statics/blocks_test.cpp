@@ -227,6 +227,59 @@ TEST(BlockStatics, EarlyExitStopsSoonerWithinItsCertifiedBound) {
   EXPECT_NEAR(tipped.yNormalised, 1.0 / 18, 1e-7);
 }
 
+// The least-squares start (IpmOptions::feasibilityCorrections, docs/statics.md): on a running-
+// bond wall under its own weight the equilibrium field of least norm is compression within the
+// pyramid, so the solve must end at iteration 0 with that certificate. Checked independently of
+// the solver: the LP phase-1 agrees that the wall stands, the ground carries the whole weight,
+// and every vertex force is compressive and inside the pyramid. On the tipped overhang the
+// start fails, and the iterates, so the result, must be those of the solve without it, bit for
+// bit.
+TEST(BlockStatics, LeastSquaresStartCertifiesAStandingWallBeforeAnyIteration) {
+  WallSpec w;
+  w.blockLength = 0.5;
+  w.length = 8;
+  w.courses = 16;
+  w.height = 4;
+  w.thickness = 0.4;
+  StructureBuilder b;
+  b.add("wall", wallBlocks(w));
+  b.groundUnder(1.0);
+  const Assembly wall = b.build();
+  ASSERT_GT(wall.blocks.size(), 250u);
+  AnalysisOptions off;
+  off.solver.feasibilityCorrections = 0;
+  const AnalysisResult r = analyse(wall), without = analyse(wall, off);
+  ASSERT_EQ(r.status, SolveStatus::Optimal);
+  EXPECT_EQ(r.iterations, 0);
+  EXPECT_GT(without.iterations, 3);
+  EXPECT_TRUE(r.feasible);
+  EXPECT_TRUE(without.feasible);
+  EXPECT_TRUE(checkFeasibility(wall).feasible);
+  EXPECT_LE(r.yNormalised, AnalysisOptions{}.solver.objectiveExitBelow);
+  EXPECT_LE(r.equilibriumResidual, 1e-8);
+  const double W = r.totalWeight, alpha = AnalysisOptions{}.friction;
+  Vec3 fromGround(0.0);
+  for (const InterfaceForces& f : r.interfaces) {
+    const bool aFixed = wall.blocks[std::size_t(f.a)].fixed, bFixed = wall.blocks[std::size_t(f.b)].fixed;
+    if (bFixed) fromGround -= f.resultant;  // the resultant acts on b; a (the wall) gets its opposite
+    if (aFixed) fromGround += f.resultant;
+    for (const VertexForce& v : f.vertices) {
+      EXPECT_GE(v.compression, 0);
+      EXPECT_LE(v.tension, 1e-6 * W);
+      EXPECT_LE(std::abs(v.t1), alpha * v.compression + 1e-12 * W);
+      EXPECT_LE(std::abs(v.t2), alpha * v.compression + 1e-12 * W);
+    }
+  }
+  const Vec3 up = -wall.gravity / wall.gravity.norm();
+  EXPECT_NEAR(dot(fromGround, up), W, 1e-8 * W);
+  EXPECT_NEAR((fromGround - up * dot(fromGround, up)).norm(), 0, 1e-8 * W);
+
+  const AnalysisResult tipped = analyse(stack(0, 0.7)), tippedWithout = analyse(stack(0, 0.7), off);
+  EXPECT_EQ(tipped.iterations, tippedWithout.iterations);
+  EXPECT_EQ(tipped.yNormalised, tippedWithout.yNormalised);
+  EXPECT_NEAR(tipped.yNormalised, 1.0 / 18, 1e-7);
+}
+
 // The strongly infeasible examples (docs/statics.md, the solver's known weakness) stop short
 // of the tolerances; they must end `reduced accuracy` — in equilibrium, the gap within 1e-3
 // of y — never a failure.
