@@ -117,7 +117,16 @@ Session::Session(statics::Assembly design, SimSettings settings) : design_(std::
   BBox box;
   for (const statics::Block& b : design_.blocks)
     for (const Vec3& v : b.vertices) box.add(v);
-  statics::validateAssembly(design_, statics::lengthTolerance(box));
+  const auto props = statics::validateAssembly(design_, statics::lengthTolerance(box));
+  // Bullet's bodies here are convex hulls, and loads act at the centroid (baseGravity): a
+  // non-convex block or a point load would be simulated as something else, so refuse them.
+  for (std::size_t i = 0; i < design_.blocks.size(); ++i) {
+    const statics::Block& b = design_.blocks[i];
+    const std::string who = "block " + std::to_string(i) + (b.name.empty() ? "" : " \"" + b.name + "\"");
+    if (!props[i].convex) throw Error("simulate: " + who + " is not convex; the simulation takes convex blocks only");
+    if (!b.pointLoads.empty())
+      throw Error("simulate: " + who + " carries point loads; the simulation takes loads at the centroid only");
+  }
   for (const statics::Block& b : design_.blocks) mass_.push_back(sim::massProperties(b));
   reset();
 }

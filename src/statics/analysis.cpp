@@ -84,19 +84,67 @@ EquilibriumSystem prepareEquilibrium(const Assembly& as, const AnalysisOptions& 
     const Block& b = as.blocks[std::size_t(i)];
     const Vec3 f = gdir * (b.density * p.props[std::size_t(i)].volume * as.g) + b.liveLoad;
     for (int k = 0; k < 3; ++k) p.w[r + k] = f[k] / p.totalWeight;  // loads act at the centroid: no torque
+    // A point load adds its torque about the centroid.
+    for (const PointLoad& l : b.pointLoads) {
+      const Vec3 tq = cross(l.at - p.props[std::size_t(i)].centroid, l.force);
+      for (int k = 0; k < 3; ++k) {
+        p.w[r + k] += l.force[k] / p.totalWeight;
+        p.w[r + 3 + k] += tq[k] / p.totalWeight;
+      }
+    }
   }
   return p;
 }
 
 namespace {
 
-// The gauge of p about the polygon's area centroid c: max over edges of how far p − c reaches
-// towards the edge's line, in units of the centroid's distance to it (the polygon is convex).
+// The polygon's convex hull, counter-clockwise about its normal (Andrew's monotone chain in the
+// interface frame); the polygon itself where it is convex.
+std::vector<Vec3> convexHullOf(const Interface& itf) {
+  const std::size_t n = itf.polygon.size();
+  bool convex = true;
+  for (std::size_t k = 0; k < n && convex; ++k) {
+    const Vec3 a = itf.polygon[(k + n - 1) % n], b = itf.polygon[k], c = itf.polygon[(k + 1) % n];
+    convex = dot(cross(b - a, c - b), itf.normal) >= 0;
+  }
+  if (convex) return itf.polygon;
+  std::vector<std::size_t> idx(n);
+  std::iota(idx.begin(), idx.end(), std::size_t(0));
+  auto uv = [&](std::size_t i) {
+    const Vec3 d = itf.polygon[i] - itf.centroid;
+    return std::pair<double, double>(dot(d, itf.t1), dot(d, itf.t2));
+  };
+  std::sort(idx.begin(), idx.end(), [&](std::size_t x, std::size_t y) { return uv(x) < uv(y); });
+  auto turn = [&](std::size_t o, std::size_t a, std::size_t b) {
+    const auto [ox, oy] = uv(o);
+    const auto [ax, ay] = uv(a);
+    const auto [bx, by] = uv(b);
+    return (ax - ox) * (by - oy) - (ay - oy) * (bx - ox);
+  };
+  std::vector<std::size_t> h(2 * n);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    while (k >= 2 && turn(h[k - 2], h[k - 1], idx[i]) <= 0) --k;
+    h[k++] = idx[i];
+  }
+  for (std::size_t i = n - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && turn(h[k - 2], h[k - 1], idx[i]) <= 0) --k;
+    h[k++] = idx[i];
+  }
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i + 1 < k; ++i) out.push_back(itf.polygon[h[i]]);
+  return out;
+}
+
+// The gauge of p about the polygon's area centroid c: max over the edges of its convex hull of
+// how far p − c reaches towards the edge's line, in units of the centroid's distance to it (a
+// non-convex contact's resultant can lie anywhere in its hull, so the hull is the bound).
 double pressureGauge(const Interface& itf, const Vec3& p) {
   double g = 0;
-  const std::size_t n = itf.polygon.size();
+  const std::vector<Vec3> hull = convexHullOf(itf);
+  const std::size_t n = hull.size();
   for (std::size_t k = 0; k < n; ++k) {
-    const Vec3 a = itf.polygon[k], b = itf.polygon[(k + 1) % n];
+    const Vec3 a = hull[k], b = hull[(k + 1) % n];
     Vec3 out = cross(b - a, itf.normal);  // in-plane, away from the interior (counter-clockwise polygon)
     const double len = out.norm();
     if (len <= 0) continue;

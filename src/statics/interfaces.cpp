@@ -6,6 +6,11 @@
 
 #include "statics/tolerances.h"
 
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
 namespace corbel::statics {
 namespace {
 
@@ -21,6 +26,29 @@ double signedArea(const std::vector<Vec2>& p) {
   double s = 0;
   for (std::size_t i = 0; i < p.size(); ++i) s += cross2(p[i], p[(i + 1) % p.size()]);
   return 0.5 * s;
+}
+
+// `subject` without repeated points (within `tol`) and without points on the line of their
+// neighbours; empty when fewer than 3 are left.
+std::vector<Vec2> simplified(std::vector<Vec2> subject, double tol) {
+  // Drop repeated and collinear points.
+  bool changed = true;
+  while (changed && subject.size() >= 3) {
+    changed = false;
+    for (std::size_t k = 0; k < subject.size() && subject.size() >= 3; ++k) {
+      const Vec2 p = subject[(k + subject.size() - 1) % subject.size()], q = subject[k],
+                 r = subject[(k + 1) % subject.size()];
+      const double pr = (r - p).norm();
+      const bool repeated = (q - p).norm() <= tol;
+      const bool collinear = pr > tol && std::abs(cross2(r - p, q - p)) / pr <= tol;
+      if (repeated || collinear) {
+        subject.erase(subject.begin() + long(k));
+        changed = true;
+        break;
+      }
+    }
+  }
+  return subject.size() >= 3 ? subject : std::vector<Vec2>{};
 }
 
 // Sutherland–Hodgman clip of `subject` by the convex counter-clockwise polygon `clip`.
@@ -44,24 +72,59 @@ std::vector<Vec2> clipConvex(std::vector<Vec2> subject, const std::vector<Vec2>&
     }
     subject = std::move(out);
   }
-  // Drop repeated and collinear points.
-  bool changed = true;
-  while (changed && subject.size() >= 3) {
-    changed = false;
-    for (std::size_t k = 0; k < subject.size() && subject.size() >= 3; ++k) {
-      const Vec2 p = subject[(k + subject.size() - 1) % subject.size()], q = subject[k],
-                 r = subject[(k + 1) % subject.size()];
-      const double pr = (r - p).norm();
-      const bool repeated = (q - p).norm() <= tol;
-      const bool collinear = pr > tol && std::abs(cross2(r - p, q - p)) / pr <= tol;
-      if (repeated || collinear) {
-        subject.erase(subject.begin() + long(k));
-        changed = true;
-        break;
-      }
-    }
+  return simplified(std::move(subject), tol);
+}
+
+using ExactK = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactPolygon = CGAL::Polygon_2<ExactK>;
+
+ExactPolygon exactPolygon(const std::vector<Vec2>& p) {
+  ExactPolygon out;
+  for (const Vec2& q : p) out.push_back(ExactK::Point_2(q[0], q[1]));
+  return out;
+}
+
+// The intersection of two simple counter-clockwise polygons, either of them non-convex, by
+// CGAL's exact Boolean operations: one outer boundary per connected piece (a piece's holes do
+// not matter to the contact: forces at its outer vertices span the same convex hull), each
+// without repeated or collinear points. Shared edges that floating point left a few ulps
+// apart give slivers, which the caller drops by area.
+std::vector<std::vector<Vec2>> intersectGeneral(const std::vector<Vec2>& pa, const std::vector<Vec2>& pb, double tol) {
+  const ExactPolygon a = exactPolygon(pa), b = exactPolygon(pb);
+  std::vector<std::vector<Vec2>> out;
+  if (!a.is_simple() || !b.is_simple()) return out;  // validateAssembly refuses such faces first
+  std::vector<CGAL::Polygon_with_holes_2<ExactK>> pieces;
+  CGAL::intersection(a, b, std::back_inserter(pieces));
+  for (const auto& piece : pieces) {
+    std::vector<Vec2> poly;
+    for (auto v = piece.outer_boundary().vertices_begin(); v != piece.outer_boundary().vertices_end(); ++v)
+      poly.emplace_back(CGAL::to_double(v->x()), CGAL::to_double(v->y()));
+    poly = simplified(std::move(poly), tol);
+    if (!poly.empty()) out.push_back(std::move(poly));
   }
-  return subject.size() >= 3 ? subject : std::vector<Vec2>{};
+  return out;
+}
+
+// The distance between segments pq and rs in the plane.
+double segmentDistance2(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
+  auto toSegment = [](const Vec2& x, const Vec2& a, const Vec2& b) {
+    const Vec2 d = b - a;
+    const double len2 = d.dot(d);
+    const double t = len2 > 0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (x - (a + d * t)).norm();
+  };
+  const double o1 = cross2(q - p, r - p), o2 = cross2(q - p, s - p), o3 = cross2(s - r, p - r),
+               o4 = cross2(s - r, q - r);
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return 0.0;
+  return std::min({toSegment(p, r, s), toSegment(q, r, s), toSegment(r, p, q), toSegment(s, p, q)});
+}
+
+// Whether the boundaries of two polygons come within `tol` of each other.
+bool boundariesMeet(const std::vector<Vec2>& pa, const std::vector<Vec2>& pb, double tol) {
+  for (std::size_t i = 0; i < pa.size(); ++i)
+    for (std::size_t j = 0; j < pb.size(); ++j)
+      if (segmentDistance2(pa[i], pa[(i + 1) % pa.size()], pb[j], pb[(j + 1) % pb.size()]) <= tol) return true;
+  return false;
 }
 
 bool boxesTouch(const BBox& a, const BBox& b, double tol) {
@@ -128,52 +191,73 @@ Contacts findContacts(const Assembly& assembly, const std::vector<BlockPropertie
           for (const Vec3& q : fa.pts) pa.push_back(pl.to2(q));
           // b's face runs clockwise about a's normal: reverse it.
           for (auto it = fb.pts.rbegin(); it != fb.pts.rend(); ++it) pb.push_back(pl.to2(*it));
-          const std::vector<Vec2> poly = clipConvex(pa, pb, tolerance);
-          const double area = poly.empty() ? 0.0 : signedArea(poly);
-          if (poly.empty() || area <= tolerance * std::max(props[a].bounds.diagonal(), props[b].bounds.diagonal())) {
-            // Coplanar faces meeting along an edge or at a point: clip against b's face grown
-            // outwards by a few tolerances, so shared edges and corners survive the clip.
-            std::vector<Vec2> grown = pb;
-            Vec2 c(0.0);
-            for (const Vec2& q : pb) c += q;
-            c /= double(pb.size());
-            for (Vec2& q : grown) {
-              const Vec2 d = q - c;
-              const double len = d.norm();
-              if (len > 0) q += d * (4 * tolerance / len);
+          const double minArea = tolerance * std::max(props[a].bounds.diagonal(), props[b].bounds.diagonal());
+          const bool convexPair = props[a].convexFaces[ia] && props[b].convexFaces[ib];
+          std::vector<std::vector<Vec2>> pieces;
+          if (convexPair) {
+            std::vector<Vec2> poly = clipConvex(pa, pb, tolerance);
+            if (!poly.empty()) pieces.push_back(std::move(poly));
+          } else {
+            pieces = intersectGeneral(pa, pb, tolerance);
+          }
+          bool sliver = false;  // a piece with some area, too little to carry force
+          std::erase_if(pieces, [&](const std::vector<Vec2>& q) {
+            const double area = signedArea(q);
+            sliver = sliver || (area > 0 && area <= minArea);
+            return area <= minArea;
+          });
+          if (pieces.empty()) {
+            if (convexPair) {
+              // Coplanar faces meeting along an edge or at a point: clip against b's face grown
+              // outwards by a few tolerances, so shared edges and corners survive the clip.
+              std::vector<Vec2> grown = pb;
+              Vec2 c(0.0);
+              for (const Vec2& q : pb) c += q;
+              c /= double(pb.size());
+              for (Vec2& q : grown) {
+                const Vec2 d = q - c;
+                const double len = d.norm();
+                if (len > 0) q += d * (4 * tolerance / len);
+              }
+              if (sliver || !clipConvex(pa, grown, 0).empty()) touchedWithoutArea = true;
+            } else if (sliver || boundariesMeet(pa, pb, 4 * tolerance)) {
+              touchedWithoutArea = true;
             }
-            if (area > 0 || !clipConvex(pa, grown, 0).empty()) touchedWithoutArea = true;
             continue;
           }
-          Interface itf;
-          itf.a = a;
-          itf.b = b;
-          itf.faceA = int(ia);
-          itf.faceB = int(ib);
-          itf.normal = fa.n;
-          itf.area = area;
-          Vec2 c(0.0);
-          for (std::size_t k = 0; k < poly.size(); ++k) {
-            const Vec2 p = poly[k], q = poly[(k + 1) % poly.size()];
-            c += (p + q) * cross2(p, q);
+          for (const std::vector<Vec2>& poly : pieces) {
+            const double area = signedArea(poly);
+            Interface itf;
+            itf.a = a;
+            itf.b = b;
+            itf.faceA = int(ia);
+            itf.faceB = int(ib);
+            itf.normal = fa.n;
+            itf.area = area;
+            Vec2 c(0.0);
+            for (std::size_t k = 0; k < poly.size(); ++k) {
+              const Vec2 p = poly[k], q = poly[(k + 1) % poly.size()];
+              c += (p + q) * cross2(p, q);
+            }
+            c /= 6.0 * area;
+            itf.centroid = pl.to3(c);
+            for (const Vec2& q : poly) {
+              itf.polygon.push_back(pl.to3(q));
+              itf.points.push_back(pl.to3(c + (q - c) * (1.0 - kernShrink)));
+            }
+            itf.t1 = (itf.polygon[1] - itf.polygon[0]).normalized();
+            itf.t1 -= itf.normal * dot(itf.t1, itf.normal);
+            itf.t1.normalize();
+            itf.t2 = cross(itf.normal, itf.t1);
+            result.interfaces.push_back(std::move(itf));
           }
-          c /= 6.0 * area;
-          itf.centroid = pl.to3(c);
-          for (const Vec2& q : poly) {
-            itf.polygon.push_back(pl.to3(q));
-            itf.points.push_back(pl.to3(c + (q - c) * (1.0 - kernShrink)));
-          }
-          itf.t1 = (itf.polygon[1] - itf.polygon[0]).normalized();
-          itf.t1 -= itf.normal * dot(itf.t1, itf.normal);
-          itf.t1.normalize();
-          itf.t2 = cross(itf.normal, itf.t1);
-          result.interfaces.push_back(std::move(itf));
         }
       }
       if (touchedWithoutArea) result.zeroArea.push_back({a, b});
     }
   }
-  std::sort(result.interfaces.begin(), result.interfaces.end(), [](const Interface& x, const Interface& y) {
+  // Stable: the pieces of one pair of non-convex faces keep CGAL's order.
+  std::stable_sort(result.interfaces.begin(), result.interfaces.end(), [](const Interface& x, const Interface& y) {
     return std::tie(x.a, x.b, x.faceA, x.faceB) < std::tie(y.a, y.b, y.faceA, y.faceB);
   });
   std::sort(result.zeroArea.begin(), result.zeroArea.end(),

@@ -8,9 +8,9 @@
 namespace corbel::statics {
 
 // A planar contact between blocks a and b. `normal` points from a into b; `t1` runs along an
-// edge of the contact polygon and t2 = normal × t1. `polygon` is the contact polygon (convex,
-// counter-clockwise about the normal); `points` are where the vertex forces act: the polygon
-// scaled about its area centroid by (1 − kern shrink), Sec. 3.4.
+// edge of the contact polygon and t2 = normal × t1. `polygon` is the contact polygon (simple,
+// counter-clockwise about the normal; convex where both faces are); `points` are where the vertex forces act: the
+// polygon scaled about its area centroid by (1 − kern shrink), Sec. 3.4.
 struct Interface {
   int a = -1, b = -1;
   int faceA = -1, faceB = -1;  // the touching faces of a and b
@@ -33,10 +33,11 @@ struct Contacts {
 
 // Finds every contact between coplanar, opposite faces of two blocks (at least one of them
 // free) whose planes are within `tolerance`, with bounding boxes as the spatial filter. The
-// contact polygon is the intersection of the two convex faces, clipped exactly in the plane
-// of a's face. `kernShrink` in [0, 1) moves every force point towards the polygon centroid.
-// Interfaces come sorted by (a, b, faceA, faceB), so the same model gives the same order
-// whatever the spatial filter visits first (the parameter search relies on it).
+// contact polygon is the intersection of the two faces in the plane of a's face: a clip
+// where both are convex, CGAL's exact Boolean intersection otherwise (one interface per
+// connected piece, its outer boundary; slivers below `tolerance` × the blocks' size dropped). `kernShrink` in [0, 1)
+// moves every force point towards the polygon centroid. Interfaces come sorted by (a, b, faceA, faceB), so the same
+// model gives the same order whatever the spatial filter visits first (the parameter search relies on it).
 Contacts findContacts(const Assembly& assembly, const std::vector<BlockProperties>& props, double tolerance,
                       double kernShrink);
 

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -13,6 +14,34 @@ bool finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) &
 
 std::string blockLabel(const Block& b, std::size_t index) {
   return "block " + std::to_string(index) + (b.name.empty() ? "" : " \"" + b.name + "\"");
+}
+
+// The distance between segments pq and rs in space (0 when they cross).
+double segmentDistance(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
+  const Vec3 d1 = q - p, d2 = s - r, w = p - r;
+  const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, w);
+  double t = 0, u = 0;
+  if (a <= 0 && e <= 0) return (p - r).norm();
+  if (a <= 0) {
+    u = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = dot(d1, w);
+    if (e <= 0) {
+      t = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = dot(d1, d2), den = a * e - b * b;
+      t = den > 0 ? std::clamp((b * f - c * e) / den, 0.0, 1.0) : 0.0;
+      u = (b * t + f) / e;
+      if (u < 0) {
+        u = 0;
+        t = std::clamp(-c / a, 0.0, 1.0);
+      } else if (u > 1) {
+        u = 1;
+        t = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  return ((p + d1 * t) - (r + d2 * u)).norm();
 }
 
 }  // namespace
@@ -81,16 +110,33 @@ std::vector<BlockProperties> validateAssembly(const Assembly& assembly, double t
     if (!(p.volume > tolerance * tolerance * tolerance))
       throw Error(who + (vol6 < 0 ? ": faces point inwards (negative volume)" : ": the block has no volume"));
     p.centroid = o + moment / vol6;
-    // Convexity: the whole block lies behind every face's plane.
+    // Convexity of each face (every turn the same way about its normal) and of the block (the
+    // whole block behind every face's plane); a non-convex face must still be simple.
+    p.convexFaces.assign(b.faces.size(), true);
     for (std::size_t fi = 0; fi < b.faces.size(); ++fi) {
       std::vector<Vec3> poly;
       for (int i : b.faces[fi]) poly.push_back(b.vertices[std::size_t(i)]);
       const Vec3 n = newellNormal(poly).normalized();
-      for (std::size_t i = 0; i < b.vertices.size(); ++i)
-        if (dot(b.vertices[i] - poly[0], n) > tolerance)
-          throw Error(who + ": not convex (vertex " + std::to_string(i) + " lies outside the plane of face " +
-                      std::to_string(fi) + ")");
+      const std::size_t m = poly.size();
+      for (std::size_t k = 0; k < m; ++k) {
+        const Vec3 e0 = poly[k] - poly[(k + m - 1) % m], e1 = poly[(k + 1) % m] - poly[k];
+        if (dot(cross(e0, e1), n) < -tolerance * std::max(e0.norm(), e1.norm())) p.convexFaces[fi] = false;
+      }
+      if (!p.convexFaces[fi]) {
+        // Simple: no two edges that are not neighbours meet (within the tolerance).
+        for (std::size_t i = 0; i < m; ++i)
+          for (std::size_t j = i + 1; j < m; ++j) {
+            if (j == i + 1 || (i == 0 && j == m - 1)) continue;
+            if (segmentDistance(poly[i], poly[(i + 1) % m], poly[j], poly[(j + 1) % m]) <= tolerance)
+              throw Error(who + ": face " + std::to_string(fi) + " is not a simple polygon (edges " +
+                          std::to_string(i) + " and " + std::to_string(j) + " cross or touch)");
+          }
+      }
+      for (std::size_t i = 0; i < b.vertices.size() && p.convex; ++i)
+        if (dot(b.vertices[i] - poly[0], n) > tolerance) p.convex = false;
     }
+    for (const PointLoad& l : b.pointLoads)
+      if (!finite(l.at) || !finite(l.force)) throw Error(who + ": a point load is not finite");
     props.push_back(p);
   }
   return props;

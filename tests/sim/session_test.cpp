@@ -323,3 +323,38 @@ TEST(Session, BadRequestsSayWhatIsWrong) {
 
 }  // namespace
 }  // namespace corbel::sim
+
+namespace corbel::sim {
+namespace {
+
+// Bullet's bodies are convex hulls and loads act at centroids here: an L-shaped block (its hull
+// would fill the notch) and a point load (its torque would be lost) are refused by name.
+TEST(Session, NonConvexBlocksAndPointLoadsAreRefusedByName) {
+  statics::Assembly as = stack(1.0, {0.0});
+  statics::Block& cube = as.blocks[0];
+  // Push the top face's middle down into a notch: 8 + 2 vertices, an L in (x, z).
+  statics::Block l;
+  l.name = "notched";
+  l.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0.5), Vec3(0.5, 0, 0.5), Vec3(0.5, 0, 1), Vec3(0, 0, 1),
+                Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(1, 1, 0.5), Vec3(0.5, 1, 0.5), Vec3(0.5, 1, 1), Vec3(0, 1, 1)};
+  l.faces = {{0, 1, 2, 3, 4, 5}, {11, 10, 9, 8, 7, 6}};
+  for (int i = 0; i < 6; ++i) l.faces.push_back({(i + 1) % 6, i, 6 + i, 6 + (i + 1) % 6});
+  statics::Assembly notched;
+  notched.blocks = {l, ground()};
+  try {
+    Session s(notched);
+    FAIL() << "a non-convex block was simulated";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("\"notched\" is not convex"), std::string::npos) << e.what();
+  }
+  cube.pointLoads.push_back({Vec3(1, 0.5, 1), Vec3(0, 0, -100)});
+  try {
+    Session s(as);
+    FAIL() << "a point load was simulated";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("point loads"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace corbel::sim
