@@ -1,9 +1,13 @@
 // corbel-cli: headless entry points (render, export, check, extrude, statics, simulate, kifs, grow, complete, city). Thin: parse, call, report.
+#include "city/kernel.h"
 #include "cli/city_command.h"
 #include "cli/complete.h"
 #include "cli/grow.h"
 #include "cli/kifs_command.h"
 #include "cli/number_list.h"
+#include "cli/project_scene.h"
+#include "cli/simulate_cli.h"
+#include "cli/statics_cli.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
@@ -12,14 +16,11 @@
 #include "extrude/batch.h"
 #include "extrude/footprints.h"
 #include "extrude/kernel.h"
-#include "statics/kernel.h"
-#include "city/kernel.h"
 #include "growth/kernel.h"
 #include "kifs/kernel.h"
 #include "render/headless_context.h"
 #include "render/kifs_pass.h"
-#include "cli/statics_cli.h"
-#include "cli/simulate_cli.h"
+#include "statics/kernel.h"
 
 #include <nlohmann/json.hpp>
 
@@ -80,6 +81,12 @@ usage:
                     the analysis or search: blocks by their share of tension, compression red,
                     tension blue, ground reactions green. --landscape samples y/W² on an N x N
                     grid of two parameters (Fig. 8; NAME=LO:HI sets a range): red stands.
+  corbel-cli statics PROJECT.corbel --scene [--structural NAME ...] [--nonstructural NAME ...]
+                    [--density MATERIAL=KG_PER_M3 ...] [--kern S] [--friction A] [--json]
+                    The project as built: every connected piece of its block objects (or of
+                    the objects --structural names, any kind) a rigid block, convex or not,
+                    weighing by its material; pieces tagged "ground" fixed, else a ground plane
+                    under the lowest point; --nonstructural objects carried as loads.
   corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
                     [--view-maps exact|raster|gl] [--pixel M]
                     Grows housing units on a site (docs/growth.md); prints one JSON line.
@@ -137,32 +144,8 @@ std::vector<double> parseNumbers(const std::string& text, char sep, const std::s
   return *v;
 }
 
-struct Loaded {
-  Document doc;
-  Scene scene;
-  std::shared_ptr<city::TownCache> towns;  // their styles' tag textures
-};
-
-Loaded load(const std::string& path) {
-  Loaded l;
-  LoadedProject p = loadProject(path);
-  for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << path << ": " << w << "\n";
-  l.doc = std::move(p.document);
-  SceneSync sync;
-  extrude::registerKernel(sync);
-  statics::registerKernel(sync);
-  kifs::registerKernel(sync);
-  growth::registerKernel(sync);
-  l.towns = city::registerKernel(sync);
-  sync.update(l.doc, l.scene);
-  for (const auto& [id, st] : sync.status()) {
-    const DocObject* o = l.doc.find(id);
-    const std::string name = o ? o->name : std::to_string(id);
-    for (const auto& w : st.warnings) std::cerr << "corbel-cli: warning: " << name << ": " << w << "\n";
-    if (!st.error.empty()) throw Error(path + ": object \"" + name + "\": " + st.error);
-  }
-  return l;
-}
+using Loaded = cli::LoadedScene;
+Loaded load(const std::string& path) { return cli::loadScene(path); }
 
 std::optional<ObjectId> objectByName(const Document& doc, const Args& a) {
   auto it = a.options.find("--object");

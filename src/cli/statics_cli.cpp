@@ -4,6 +4,7 @@
 
 #include "cli/guarded.h"
 #include "cli/number_list.h"
+#include "cli/project_scene.h"
 #include "cli/statics_png.h"
 #include "core/error.h"
 #include "core/project_io.h"
@@ -14,6 +15,7 @@
 #include "statics/arch.h"
 #include "statics/examples.h"
 #include "statics/kernel.h"
+#include "statics/scene_blocks.h"
 #include "statics/search.h"
 #include "statics/thresholds.h"
 
@@ -42,6 +44,7 @@ struct Options {
   std::vector<std::string> positional;
   std::map<std::string, std::string> values;  // last value of each single option; flags map to ""
   std::vector<std::string> frees, sets;       // --free and --set, repeatable
+  std::vector<std::string> structural, nonstructural, densities;  // --structural, --nonstructural, --density
   std::vector<std::string> landscape;         // --landscape NAME1 NAME2 PNG
 };
 
@@ -72,6 +75,12 @@ Options parse(int argc, char** argv, const std::map<std::string, bool>& known) {
       o.frees.push_back(v);
     else if (s == "--set")
       o.sets.push_back(v);
+    else if (s == "--structural")
+      o.structural.push_back(v);
+    else if (s == "--nonstructural")
+      o.nonstructural.push_back(v);
+    else if (s == "--density")
+      o.densities.push_back(v);
     else
       o.values[s] = v;
   }
@@ -399,22 +408,126 @@ int projectCommand(const Options& a) {
   return code;
 }
 
+// statics PROJECT --scene: the project built into the Scene, its blocks read from there
+// (statics/scene_blocks.h): every object of kind block, or the objects --structural names
+// (any kind: boxes, shells), with those --nonstructural names carried as loads.
+int sceneCommand(const Options& a) {
+  for (const char* o : {"--optimize", "--free", "--set", "--render", "--landscape", "--object"})
+    if (a.values.count(o) || (std::string(o) == "--free" && !a.frees.empty()) ||
+        (std::string(o) == "--set" && !a.sets.empty()))
+      throw UsageError(std::string("statics --scene: ") + o +
+                       " works on a masonry object's parameters; --scene analyses the built geometry as it is");
+  const LoadedScene l = loadScene(a.positional[0]);
+  auto idOf = [&](const std::string& name, const char* option) {
+    const DocObject* o = l.doc.findByName(name);
+    if (!o) {
+      std::string names;
+      for (const auto& obj : l.doc.objects) names += (names.empty() ? "" : ", ") + ("\"" + obj.name + "\"");
+      throw Error(std::string(option) + ": no object named \"" + name +
+                  "\" (objects: " + (names.empty() ? "none" : names) + ")");
+    }
+    return o->id;
+  };
+  statics::SceneBlockOptions o;
+  for (const std::string& n : a.structural) o.objects.push_back(idOf(n, "--structural"));
+  for (const std::string& n : a.nonstructural) o.nonstructural.push_back(idOf(n, "--nonstructural"));
+  for (const std::string& d : a.densities) {
+    const auto eq = d.find('=');
+    char* end = nullptr;
+    const std::string v = eq == std::string::npos ? "" : d.substr(eq + 1);
+    const double rho = std::strtod(v.c_str(), &end);
+    if (eq == 0 || eq == std::string::npos || v.empty() || *end != '\0' || !std::isfinite(rho) || rho <= 0)
+      throw UsageError("--density: expected MATERIAL=KG_PER_M3 with a positive number, got '" + d + "'");
+    o.densities[d.substr(0, eq)] = rho;
+  }
+  statics::AnalysisOptions opt;
+  opt.kernShrink = number(a, "--kern", 0.0, 0, 0.99);
+  opt.friction = number(a, "--friction", 0.7, 0, 100);
+  opt.frictionSides = sides(a);
+  const statics::SceneAssembly s = statics::assemblyFromScene(l.scene, o);
+  const statics::AnalysisResult r = statics::analyse(s.assembly, opt);
+  const statics::FeasibilityResult strict = statics::checkFeasibility(s.assembly, opt);
+  int fixed = 0;
+  for (const statics::Block& b : s.assembly.blocks) fixed += b.fixed;
+  nlohmann::ordered_json out;
+  out["blocks"] = s.assembly.blocks.size() - std::size_t(fixed);
+  out["fixed"] = fixed;
+  out["ground_plane"] = s.groundPlaneAdded;
+  out["nonstructural"] = s.nonstructuralPieces;
+  out["nonstructural_weight"] = s.nonstructuralWeight;
+  out["weight"] = r.totalWeight;
+  out["measure"] = r.yNormalised;
+  out["y"] = r.y;
+  out["stands"] = r.feasible;
+  out["stands_strictly"] = strict.feasible;
+  out["status"] = statics::toString(r.status);
+  out["iterations"] = r.iterations;
+  out["gap"] = r.gap;
+  out["interfaces"] = r.interfaces.size();
+  out["tension_sites"] = r.tensionSites.size();
+  double gauge = 0;
+  for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
+  out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
+  // Large models have hundreds of edge-only contacts (courses meeting at their corners): the
+  // first few are named, the rest counted.
+  std::vector<std::string> shown(r.warnings.begin(),
+                                 r.warnings.begin() + long(std::min<std::size_t>(r.warnings.size(), 5)));
+  if (r.warnings.size() > shown.size())
+    shown.push_back("... and " + std::to_string(r.warnings.size() - shown.size()) + " more warnings like these");
+  out["warnings"] = shown;
+  if (a.values.count("--json")) {
+    std::cout << out.dump() << "\n";
+    return 0;
+  }
+  for (const std::string& w : shown) std::cerr << "corbel-cli: warning: " << w << "\n";
+  char text[96];
+  std::snprintf(text, sizeof text, "%.6g", r.yNormalised);
+  std::cout << "scene: " << out["blocks"].get<std::size_t>() << " blocks, " << fixed << " fixed"
+            << (s.groundPlaneAdded ? " (a ground plane under the lowest point)" : "") << ", " << s.nonstructuralPieces
+            << " nonstructural carried as loads\n"
+            << "y/W²: " << text << "\nstatus: " << statics::toString(r.status) << "\n"
+            << "stands: " << (r.feasible ? "yes" : "no") << " (strict LP test: " << (strict.feasible ? "yes" : "no")
+            << ")\niterations: " << r.iterations << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int runStatics(int argc, char** argv) {
   return guarded<UsageError>([&] {
     const Options a = parse(argc, argv,
-                            {{"--blocks", true}, {"--thickness", true}, {"--tilt", true}, {"--friction", true},
-                             {"--kern", true}, {"--min-thickness", false}, {"--critical-tilt", false},
-                             {"--optimize", false}, {"--free", true}, {"--set", true}, {"--json", false},
-                             {"--algorithm", true}, {"--max-evaluations", true}, {"--max-seconds", true},
-                             {"--friction-sides", true}, {"--object", true}, {"--render", true}, {"--size", true},
-                             {"--landscape", false}, {"--samples", true}});
+                            {{"--blocks", true},
+                             {"--thickness", true},
+                             {"--tilt", true},
+                             {"--friction", true},
+                             {"--kern", true},
+                             {"--min-thickness", false},
+                             {"--critical-tilt", false},
+                             {"--optimize", false},
+                             {"--free", true},
+                             {"--set", true},
+                             {"--json", false},
+                             {"--algorithm", true},
+                             {"--max-evaluations", true},
+                             {"--max-seconds", true},
+                             {"--friction-sides", true},
+                             {"--object", true},
+                             {"--render", true},
+                             {"--size", true},
+                             {"--landscape", false},
+                             {"--samples", true},
+                             {"--scene", false},
+                             {"--structural", true},
+                             {"--nonstructural", true},
+                             {"--density", true}});
+    if (a.values.count("--scene") == 0 && (!a.structural.empty() || !a.nonstructural.empty() || !a.densities.empty()))
+      throw UsageError("statics: --structural, --nonstructural and --density go with --scene");
     if (!a.positional.empty() && a.positional[0] == "arch" && a.positional.size() == 1) return archCommand(a);
     if (!a.positional.empty() && a.positional[0] == "example") return exampleCommand(a);
     if (a.positional.size() == 1 && a.positional[0].size() > 7 &&
         a.positional[0].compare(a.positional[0].size() - 7, 7, ".corbel") == 0)
-      return projectCommand(a);
+      return a.values.count("--scene") ? sceneCommand(a) : projectCommand(a);
+    if (a.values.count("--scene")) throw UsageError("statics: --scene goes with a PROJECT.corbel");
     throw UsageError("statics: expected 'arch' (statics arch --blocks N --thickness T ...), 'example NAME' or a PROJECT.corbel");
   });
 }
