@@ -82,12 +82,14 @@ namespace {
 
 // The search settings of a spec, reporting evaluations to `progress` and stopping when it is
 // cancelled.
-statics::SearchOptions searchOptionsOf(const MasonrySpec& spec, Progress* progress, int maxEvaluations) {
+statics::SearchOptions searchOptionsOf(const MasonrySpec& spec, Progress* progress, int maxEvaluations,
+                                       SearchTrace* trace = nullptr) {
   statics::SearchOptions options;
   options.analysis.friction = spec.friction;
   options.analysis.kernShrink = spec.kern;
   options.maxEvaluations = maxEvaluations;
-  options.progress = [progress, maxEvaluations](const statics::SearchProgress& p) {
+  options.progress = [progress, maxEvaluations, trace](const statics::SearchProgress& p) {
+    if (trace) trace->add(p.measure, p.values);
     if (!progress) return true;
     progress->report(std::min(1.0, double(p.evaluation) / maxEvaluations), "searching");
     return !progress->cancelled();
@@ -104,10 +106,11 @@ statics::SearchResult cancelledSearch() {
 
 }  // namespace
 
-statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress, int maxEvaluations) {
+statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress, int maxEvaluations,
+                                    SearchTrace* trace) {
   const statics::ParametricModel model = statics::modelOf(spec);
   if (progress && progress->cancelled()) return cancelledSearch();
-  return statics::searchParameters(model, searchFreeOf(spec), searchOptionsOf(spec, progress, maxEvaluations),
+  return statics::searchParameters(model, searchFreeOf(spec), searchOptionsOf(spec, progress, maxEvaluations, trace),
                                    &model.parameters);
 }
 

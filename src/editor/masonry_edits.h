@@ -8,6 +8,7 @@
 #include "core/progress.h"
 #include "statics/search.h"
 
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -31,10 +32,36 @@ std::pair<double, double> defaultBounds(const statics::Parameter& p,
 // The free parameters a search moves: the spec's, or the model's suggestion when it frees none.
 std::vector<statics::FreeParameter> searchFreeOf(const MasonrySpec& spec);
 
+// The evaluations of a running search as they come (y/W² and the free values of each), written
+// by the search's thread and read by the panel's while it runs, for the infeasibility history.
+class SearchTrace {
+ public:
+  void add(double measure, std::vector<double> values) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    measures_.push_back(measure);
+    values_.push_back(std::move(values));
+  }
+  std::vector<double> measures() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return measures_;
+  }
+  std::vector<std::vector<double>> values() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return values_;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<double> measures_;
+  std::vector<std::vector<double>> values_;
+};
+
 // "Make it stand" (Sec. 4): the search from the spec's values over searchFreeOf(spec), with
 // the spec's friction and kern. Progress gets the evaluation count as a fraction of the cap
-// and the search stops (status Cancelled) when the progress is cancelled.
-statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress = nullptr, int maxEvaluations = 200);
+// and the search stops (status Cancelled) when the progress is cancelled; `trace`, when given,
+// gets every evaluation as it is made (the same ones, in order, as the result's history).
+statics::SearchResult searchMasonry(const MasonrySpec& spec, Progress* progress = nullptr, int maxEvaluations = 200,
+                                    SearchTrace* trace = nullptr);
 
 // Interactive editing (Sec. 5, Fig. 13): the user has just set the fixed parameter `name` (the
 // spec holds its new value); the free parameters are searched again from the spec's values,

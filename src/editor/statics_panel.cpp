@@ -254,9 +254,11 @@ void StaticsPanel::makeItStand(const StaticsHost& host) {
   auto result = std::make_shared<statics::SearchResult>();
   searchResult_ = result;
   const MasonrySpec start = *spec;
+  auto trace = std::make_shared<SearchTrace>();
+  searchTrace_ = trace;
   host.log("Make " + o->name + " stand…", false);
-  search_ = std::make_unique<BackgroundJob>("Make it stand", [result, start](Progress& progress) {
-    *result = searchMasonry(start, &progress);
+  search_ = std::make_unique<BackgroundJob>("Make it stand", [result, start, trace](Progress& progress) {
+    *result = searchMasonry(start, &progress, 200, trace.get());
     if (result->status == statics::SearchStatus::Cancelled) progress.cancel();
   });
   if (host.wait) finishSearch(host);
@@ -526,6 +528,14 @@ void StaticsPanel::drawSearch(const StaticsHost& host) {
                        ("evaluating " + search_->progress().stage()).c_str());
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) cancelSearch();
+    // The infeasibility history as the evaluations come (Fig. 8's descent), before the end.
+    const std::vector<double> live = searchTrace_ ? searchTrace_->measures() : std::vector<double>{};
+    if (!live.empty()) {
+      std::vector<float> h(live.begin(), live.end());
+      ImGui::Text("%zu evaluations so far, y/W² %.3g", live.size(), live.back());
+      ImGui::PlotLines("##live-history", h.data(), int(h.size()), 0, "y/W² per evaluation", 0.0f, FLT_MAX,
+                       ImVec2(ImGui::GetContentRegionAvail().x, 60));
+    }
   } else {
     if (ImGui::Button("Make it stand")) makeItStand(host);
     ImGui::SameLine();

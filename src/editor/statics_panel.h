@@ -13,6 +13,7 @@
 // interface forces and the ground reactions.
 #include "core/document.h"
 #include "core/progress.h"
+#include "editor/masonry_edits.h"
 #include "editor/masonry_view.h"
 #include "editor/simulation.h"
 #include "render/overlay.h"
@@ -118,6 +119,7 @@ class StaticsPanel {
   ObjectId searchObject_ = 0;
   MasonrySpec searchStart_;
   std::shared_ptr<statics::SearchResult> searchResult_;
+  std::shared_ptr<SearchTrace> searchTrace_;  // the running search's evaluations, drawn live
   std::optional<statics::SearchResult> lastSearch_;
 
   bool interactive_ = false;

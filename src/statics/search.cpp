@@ -186,6 +186,13 @@ SearchResult searchParameters(const ParametricModel& model, const std::vector<Fr
   } else {
     s.evaluations = 1;
     s.history.push_back(first.measure);
+    if (options.progress) {  // the one evaluation, reported like the optimizer's
+      SearchProgress p;
+      p.evaluation = 1;
+      p.measure = first.measure;
+      p.values = x;
+      options.progress(p);
+    }
     s.bestMeasure = first.measure;
     s.bestY = first.analysis.y;
   }

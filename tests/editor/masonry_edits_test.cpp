@@ -136,6 +136,27 @@ TEST(MakeItStand, TheExampleArchIsAppliedAsOneChangeAndThenStandsStrictly) {
   EXPECT_EQ(history.current(), e.doc);
 }
 
+// The panel draws the history from the trace while the search runs: it must be the search's
+// own record, evaluation by evaluation, with the free values each was made at.
+TEST(MakeItStand, TheLiveTraceIsTheSearchsHistoryAsItCame) {
+  Example e;
+  SearchTrace trace;
+  const statics::SearchResult r = searchMasonry(e.spec(), nullptr, 200, &trace);
+  ASSERT_EQ(r.status, statics::SearchStatus::Feasible) << r.message;
+  EXPECT_EQ(trace.measures(), r.history);
+  ASSERT_EQ(trace.values().size(), r.history.size());
+  for (const auto& v : trace.values()) EXPECT_EQ(v.size(), r.free.size());
+  // Already standing: one evaluation, reported too.
+  MasonrySpec standing = e.spec();
+  for (const statics::FreeParameter& f : r.free)
+    for (MasonryParameter& p : standing.parameters)
+      if (p.name == f.name) p.value = r.values[f.name];
+  SearchTrace again;
+  const statics::SearchResult s = searchMasonry(standing, nullptr, 200, &again);
+  EXPECT_EQ(s.evaluations, 1);
+  EXPECT_EQ(again.measures(), s.history);
+}
+
 TEST(MakeItStand, ACancelledSearchChangesNothing) {
   Example e;
   Progress progress;
