@@ -228,13 +228,7 @@ void drawPictures(const Pictures& pictures, const MasonrySpec& base, const stati
     statics::ParametricModel at = model;
     at.parameters = values;
     const editor::LandscapeGrid grid = editor::sampleLandscapeGrid(at, options, x, y);
-    std::vector<std::pair<double, double>> drawn;
-    if (free.size() == 2 && !path.empty()) {
-      const int ix = free[0].name == x.parameter ? 0 : free[1].name == x.parameter ? 1 : -1;
-      const int iy = free[0].name == y.parameter ? 0 : free[1].name == y.parameter ? 1 : -1;
-      if (ix >= 0 && iy >= 0 && ix != iy)
-        for (const std::vector<double>& p : path) drawn.emplace_back(p[ix], p[iy]);
-    }
+    const std::vector<std::pair<double, double>> drawn = editor::searchPathOnGrid(grid, free, path);
     const int side = std::max(x.samples, y.samples);
     render::writePng(landscapeImage(grid, std::max(1, 480 / side), drawn), pictures.landscape[2]);
     nlohmann::ordered_json l;

@@ -130,9 +130,12 @@ int main(int argc, char** argv) {
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; no imgui.ini next to projects
   ImGui::StyleColorsDark();
   {
-    // DejaVu Sans (fonts-dejavu-core) has the degree, superscript, dash and ellipsis glyphs
-    // the panels use; ImGui's built-in font is ASCII only.
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2010, 0x2027, 0x2212, 0x2212, 0};
+    // DejaVu Sans (fonts-dejavu-core) has the glyphs the panels use: Latin-1 (degree, ², ×),
+    // Greek (α, θ, μ), dashes and ellipsis, super- and subscripts (f_n⁻), arrows and the math
+    // operators (≤, ≥, √, ∞); ImGui's built-in font is ASCII only, and a glyph outside these
+    // ranges shows as "?".
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070,
+                                     0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
     const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     if (FILE* f = std::fopen(font, "rb")) {
       std::fclose(f);

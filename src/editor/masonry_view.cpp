@@ -282,4 +282,17 @@ std::vector<std::array<float, 4>> landscapeColors(const LandscapeGrid& grid) {
   return out;
 }
 
+std::vector<std::pair<double, double>> searchPathOnGrid(const LandscapeGrid& grid,
+                                                        const std::vector<statics::FreeParameter>& free,
+                                                        const std::vector<std::vector<double>>& values) {
+  std::vector<std::pair<double, double>> out;
+  if (free.size() != 2) return out;
+  const int ix = free[0].name == grid.x.parameter ? 0 : free[1].name == grid.x.parameter ? 1 : -1;
+  const int iy = free[0].name == grid.y.parameter ? 0 : free[1].name == grid.y.parameter ? 1 : -1;
+  if (ix < 0 || iy < 0 || ix == iy) return out;
+  for (const std::vector<double>& v : values)
+    if (v.size() == 2) out.emplace_back(v[std::size_t(ix)], v[std::size_t(iy)]);
+  return out;
+}
+
 }  // namespace corbel::editor

@@ -130,6 +130,13 @@ LandscapeGrid sampleLandscapeGrid(const statics::ParametricModel& model, const s
 LandscapeGrid sampleLandscapeGrid(const MasonrySpec& spec, const LandscapeAxis& x, const LandscapeAxis& y,
                                   Progress* progress = nullptr, int threads = 0);
 
+// A search's evaluations (`values[k]`: the values of `free`, in order) as points (x value,
+// y value) on the grid's two parameters — Fig. 8's optimisation path. Empty unless the search
+// moved exactly the grid's two parameters (in either order).
+std::vector<std::pair<double, double>> searchPathOnGrid(const LandscapeGrid& grid,
+                                                        const std::vector<statics::FreeParameter>& free,
+                                                        const std::vector<std::vector<double>>& values);
+
 // The colour of each sample of a grid, x fastest: standing samples red (Fig. 8's zero plane),
 // the others by log10(y/W²) from the smallest positive to the largest measure of the grid on a
 // dark-blue-to-yellow ramp with no red in it, NaN dark grey.

@@ -256,6 +256,11 @@ void StaticsPanel::makeItStand(const StaticsHost& host) {
   const MasonrySpec start = *spec;
   auto trace = std::make_shared<SearchTrace>();
   searchTrace_ = trace;
+  try {
+    searchFree_ = searchFreeOf(*spec);
+  } catch (const std::exception&) {
+    searchFree_.clear();  // the search itself reports what is wrong with the spec
+  }
   host.log("Make " + o->name + " stand…", false);
   search_ = std::make_unique<BackgroundJob>("Make it stand", [result, start, trace](Progress& progress) {
     *result = searchMasonry(start, &progress, 200, trace.get());
@@ -568,7 +573,7 @@ void StaticsPanel::drawSearch(const StaticsHost& host) {
   }
 }
 
-void StaticsPanel::drawGrid(const LandscapeGrid& g) {
+void StaticsPanel::drawGrid(const LandscapeGrid& g, const std::vector<std::pair<double, double>>& path) {
   const std::vector<std::array<float, 4>> colours = landscapeColors(g);
   const float side = std::min(ImGui::GetContentRegionAvail().x, 260.0f);
   const float cw = side / float(g.x.samples), ch = side / float(g.y.samples);
@@ -581,6 +586,23 @@ void StaticsPanel::drawGrid(const LandscapeGrid& g) {
       dl->AddRectFilled(a, ImVec2(a.x + cw + 0.5f, a.y + ch + 0.5f),
                         colorU32(colours[static_cast<std::size_t>(j) * g.x.samples + i]));
     }
+  // The search's evaluations over the grid, in order (Fig. 8's optimisation path): white
+  // dots joined by lines on black rings, the last one larger.
+  const auto place = [](const LandscapeAxis& a, double v) {
+    return a.hi > a.lo ? (v - a.lo) / (a.hi - a.lo) * (a.samples - 1) : 0.0;
+  };
+  const auto screen = [&](const std::pair<double, double>& p) {
+    return ImVec2(at.x + cw * float(place(g.x, p.first) + 0.5),
+                  at.y + ch * float(g.y.samples - 1 - place(g.y, p.second) + 0.5));
+  };
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const float r = k + 1 == path.size() ? 4.5f : 2.5f;
+    dl->AddCircleFilled(screen(path[k]), r + 1.5f, IM_COL32(0, 0, 0, 255));
+  }
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    if (k > 0) dl->AddLine(screen(path[k - 1]), screen(path[k]), IM_COL32(255, 255, 255, 255), 1.5f);
+    dl->AddCircleFilled(screen(path[k]), k + 1 == path.size() ? 4.5f : 2.5f, IM_COL32(255, 255, 255, 255));
+  }
   ImGui::InvisibleButton("##grid", ImVec2(side, side));
   if (ImGui::IsItemHovered()) {
     const ImVec2 m = ImGui::GetIO().MousePos;
@@ -654,7 +676,8 @@ void StaticsPanel::drawLandscape(const MasonrySpec& spec) {
     return;
   }
   if (range2) {
-    drawGrid(*grid_);
+    drawGrid(*grid_, searchTrace_ ? searchPathOnGrid(*grid_, searchFree_, searchTrace_->values())
+                                  : std::vector<std::pair<double, double>>{});
     return;
   }
   std::vector<float> m;

@@ -97,7 +97,7 @@ class StaticsPanel {
   std::optional<Range> landscape2For(const MasonrySpec& spec) const;
   std::optional<Range> rangeOf(const MasonrySpec& spec, const std::string& name) const;
   bool gridMatches(const std::optional<Range>& x, const std::optional<Range>& y) const;
-  void drawGrid(const LandscapeGrid& grid);
+  void drawGrid(const LandscapeGrid& grid, const std::vector<std::pair<double, double>>& path);
 
   struct AnalysisWork {
     MasonrySpec spec;
@@ -119,7 +119,8 @@ class StaticsPanel {
   ObjectId searchObject_ = 0;
   MasonrySpec searchStart_;
   std::shared_ptr<statics::SearchResult> searchResult_;
-  std::shared_ptr<SearchTrace> searchTrace_;  // the running search's evaluations, drawn live
+  std::shared_ptr<SearchTrace> searchTrace_;        // the last search's evaluations, drawn live
+  std::vector<statics::FreeParameter> searchFree_;  // what it moves (for its path on the grid)
   std::optional<statics::SearchResult> lastSearch_;
 
   bool interactive_ = false;

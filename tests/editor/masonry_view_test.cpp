@@ -407,3 +407,28 @@ TEST(LandscapeColors, StandingIsRedMissingGreyAndTheRampRisesWithoutRed) {
 
 }  // namespace
 }  // namespace corbel::editor
+
+namespace corbel::editor {
+namespace {
+
+// Fig. 8's path on the panel's grid: each evaluation's values of the grid's two parameters,
+// whichever order the search listed them in; nothing for a search over other parameters.
+TEST(SearchPathOnGrid, TakesEachEvaluationsValuesOfTheGridsParameters) {
+  LandscapeGrid g;
+  g.x = {"thickness", 0.05, 0.5, 4};
+  g.y = {"columnWidth", 0.1, 1.5, 3};
+  const std::vector<std::vector<double>> evaluations = {{0.3, 0.2}, {0.4, 0.25}};
+  const std::vector<statics::FreeParameter> swapped = {{"columnWidth", 0.1, 1.5}, {"thickness", 0.05, 0.5}};
+  const auto path = searchPathOnGrid(g, swapped, evaluations);
+  ASSERT_EQ(path.size(), 2u);
+  EXPECT_EQ(path[0], std::make_pair(0.2, 0.3));  // thickness is the second value listed
+  EXPECT_EQ(path[1], std::make_pair(0.25, 0.4));
+  const std::vector<statics::FreeParameter> same = {{"thickness", 0.05, 0.5}, {"columnWidth", 0.1, 1.5}};
+  EXPECT_EQ(searchPathOnGrid(g, same, evaluations)[1], std::make_pair(0.4, 0.25));
+  const std::vector<statics::FreeParameter> other = {{"thickness", 0.05, 0.5}, {"span", 1, 3}};
+  EXPECT_TRUE(searchPathOnGrid(g, other, evaluations).empty());
+  EXPECT_TRUE(searchPathOnGrid(g, {same[0]}, {{0.3}}).empty());
+}
+
+}  // namespace
+}  // namespace corbel::editor
