@@ -253,6 +253,22 @@ void drawPictures(const Pictures& pictures, const MasonrySpec& base, const stati
   }
 }
 
+// One analysis's figures in the commands' JSON: the measure, y, the verdict, the solver's
+// status, iterations and gap, the tension sites and the largest pressure gauge (null when a
+// contact carries no compression).
+void putAnalysis(const statics::AnalysisResult& r, nlohmann::ordered_json& out) {
+  out["measure"] = r.yNormalised;
+  out["y"] = r.y;
+  out["stands"] = r.feasible;
+  out["status"] = statics::toString(r.status);
+  out["iterations"] = r.iterations;
+  out["gap"] = r.gap;
+  out["tension_sites"] = r.tensionSites.size();
+  double gauge = 0;
+  for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
+  out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
+}
+
 // Analyses (or, with --optimize, searches) one model: an example by name, or a project's
 // masonry object (`base`: its spec, for the pictures). `free` and the analysis settings are
 // the defaults the command line overrides.
@@ -291,17 +307,7 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
   out["example"] = model.name;
   out["blocks"] = model.build(values).blocks.size();
   if (!optimize) {
-    const statics::AnalysisResult r = statics::analyse(model.build(values), options.analysis);
-    out["measure"] = r.yNormalised;
-    out["y"] = r.y;
-    out["stands"] = r.feasible;
-    out["status"] = statics::toString(r.status);
-    out["iterations"] = r.iterations;
-    out["gap"] = r.gap;
-    out["tension_sites"] = r.tensionSites.size();
-    double gauge = 0;
-    for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
-    out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
+    putAnalysis(statics::analyse(model.build(values), options.analysis), out);
     drawPictures(pictures, base, model, values, free, options.analysis, out);
   } else {
     if (!a.frees.empty()) free.clear();
@@ -450,18 +456,9 @@ int sceneCommand(const Options& a) {
   out["nonstructural"] = s.nonstructuralPieces;
   out["nonstructural_weight"] = s.nonstructuralWeight;
   out["weight"] = r.totalWeight;
-  out["measure"] = r.yNormalised;
-  out["y"] = r.y;
-  out["stands"] = r.feasible;
-  out["stands_strictly"] = strict.feasible;
-  out["status"] = statics::toString(r.status);
-  out["iterations"] = r.iterations;
-  out["gap"] = r.gap;
   out["interfaces"] = r.interfaces.size();
-  out["tension_sites"] = r.tensionSites.size();
-  double gauge = 0;
-  for (const statics::InterfaceForces& f : r.interfaces) gauge = std::max(gauge, f.pressureGauge);
-  out["max_pressure_gauge"] = std::isfinite(gauge) ? nlohmann::json(gauge) : nlohmann::json(nullptr);
+  putAnalysis(r, out);
+  out["stands_strictly"] = strict.feasible;
   // Large models have hundreds of edge-only contacts (courses meeting at their corners): the
   // first few are named, the rest counted.
   std::vector<std::string> shown(r.warnings.begin(),
