@@ -127,12 +127,6 @@ bool boundariesMeet(const std::vector<Vec2>& pa, const std::vector<Vec2>& pb, do
   return false;
 }
 
-bool boxesTouch(const BBox& a, const BBox& b, double tol) {
-  for (int k = 0; k < 3; ++k)
-    if (a.lo[k] > b.hi[k] + tol || b.lo[k] > a.hi[k] + tol) return false;
-  return true;
-}
-
 struct FaceGeom {
   Vec3 n;                 // unit outward normal
   std::vector<Vec3> pts;  // counter-clockwise about n
@@ -150,6 +144,12 @@ std::vector<FaceGeom> faceGeometry(const Block& b) {
 }
 
 }  // namespace
+
+bool boxesTouch(const BBox& a, const BBox& b, double tol) {
+  for (int k = 0; k < 3; ++k)
+    if (a.lo[k] > b.hi[k] + tol || b.lo[k] > a.hi[k] + tol) return false;
+  return true;
+}
 
 Contacts findContacts(const Assembly& assembly, const std::vector<BlockProperties>& props, double tolerance,
                       double kernShrink) {

@@ -31,6 +31,9 @@ struct Contacts {
   std::vector<ZeroAreaContact> zeroArea;
 };
 
+// Whether two bounding boxes overlap or come within `tol` of each other on every axis.
+bool boxesTouch(const BBox& a, const BBox& b, double tol);
+
 // Finds every contact between coplanar, opposite faces of two blocks (at least one of them
 // free) whose planes are within `tolerance`, with bounding boxes as the spatial filter. The
 // contact polygon is the intersection of the two faces in the plane of a's face: a clip

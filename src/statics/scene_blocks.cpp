@@ -23,12 +23,6 @@ constexpr DensityEntry kDensities[] = {{"stone", 2400},     {"concrete", 2400}, 
                                        {"roof_tile", 1900}, {"slate", 2800},    {"plaster", 1200},
                                        {"timber", 600},     {"glass", 2500},    {"metal", 7850}};
 
-bool intersects(const BBox& a, const BBox& b, double tol) {
-  for (int k = 0; k < 3; ++k)
-    if (a.lo[k] > b.hi[k] + tol || b.lo[k] > a.hi[k] + tol) return false;
-  return true;
-}
-
 struct Piece {
   ObjectId object = 0;
   int index = 0;
@@ -186,7 +180,7 @@ SceneAssembly assemblyFromScene(const Scene& scene, const SceneBlockOptions& opt
     BBox lb;
     for (const Vec3& v : load.block.vertices) lb.add(v);
     for (std::size_t i = 0; i < out.assembly.blocks.size(); ++i)
-      if (intersects(props[i].bounds, lb, tol)) {
+      if (boxesTouch(props[i].bounds, lb, tol)) {
         local.blocks.push_back(out.assembly.blocks[i]);
         toGlobal.push_back(int(i));
       }

@@ -189,22 +189,27 @@ TEST(BlockStatics, SolverTimeCapStopsWithItsStatus) {
   EXPECT_EQ(toString(r.status), "time limit");
 }
 
+// A running-bond wall of half-metre blocks, 0.4 m thick, on the ground.
+Assembly runningBondWall(double length, int courses, double height) {
+  WallSpec w;
+  w.blockLength = 0.5;
+  w.length = length;
+  w.courses = courses;
+  w.height = height;
+  w.thickness = 0.4;
+  StructureBuilder b;
+  b.add("wall", wallBlocks(w));
+  b.groundUnder(1.0);
+  return b.build();
+}
+
 // The early exit on a certified small objective (IpmOptions::objectiveExitBelow,
 // docs/statics.md): on a standing wall it must stop sooner than the full tolerances, with y
 // within its reported bound of the fully converged y (the oracle: the same QP with the exit
 // off) and in equilibrium; on a model that does not stand (y/W² = 1/18 for the tipped
 // overhang) it must not fire, so the result is the same bit for bit.
 TEST(BlockStatics, EarlyExitStopsSoonerWithinItsCertifiedBound) {
-  WallSpec w;
-  w.blockLength = 0.5;
-  w.length = 5;
-  w.courses = 10;
-  w.height = 2.5;
-  w.thickness = 0.4;
-  StructureBuilder b;
-  b.add("wall", wallBlocks(w));
-  b.groundUnder(1.0);
-  const Assembly wall = b.build();
+  const Assembly wall = runningBondWall(5, 10, 2.5);
   AnalysisOptions off;
   off.solver.objectiveExitBelow = 0;
   const AnalysisResult full = analyse(wall, off), early = analyse(wall);
@@ -235,16 +240,7 @@ TEST(BlockStatics, EarlyExitStopsSoonerWithinItsCertifiedBound) {
 // start fails, and the iterates, so the result, must be those of the solve without it, bit for
 // bit.
 TEST(BlockStatics, LeastSquaresStartCertifiesAStandingWallBeforeAnyIteration) {
-  WallSpec w;
-  w.blockLength = 0.5;
-  w.length = 8;
-  w.courses = 16;
-  w.height = 4;
-  w.thickness = 0.4;
-  StructureBuilder b;
-  b.add("wall", wallBlocks(w));
-  b.groundUnder(1.0);
-  const Assembly wall = b.build();
+  const Assembly wall = runningBondWall(8, 16, 4);
   ASSERT_GT(wall.blocks.size(), 250u);
   AnalysisOptions off;
   off.solver.feasibilityCorrections = 0;
