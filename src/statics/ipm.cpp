@@ -41,6 +41,11 @@ constexpr double kReducedPrimal = 1e-9;
 constexpr double kReducedDual = 1e-7;
 constexpr double kReducedGap = 1e-3;
 
+// The polish (see solveBlockQP): rounds of active-set changes, proximal steps per round, and
+// the proximal weight δ relative to the largest diagonal entry of Q.
+constexpr int kPolishRounds = 4;
+constexpr int kPolishSteps = 12;
+constexpr double kPolishProximal = 1e-8;
 
 double maxStep(const VectorXd& v, const VectorXd& dv) {
   double a = std::numeric_limits<double>::infinity();
@@ -89,6 +94,57 @@ Mat4 blockInverse(const Mat4& H, int size) {
     default:
       return fixedInverse<4>(H);
   }
+}
+
+// min ‖E z − f‖ subject to z ≥ 0 for the polish's tiny systems (E: a block's ≤ 4 variables ×
+// its active rows), by Lawson and Hanson's active-set method (Solving Least Squares Problems,
+// 1974, ch. 23). Debian 12's Eigen 3.4.0 has no NNLS (it came to unsupported/ after 3.4), and
+// these systems are at most 4 × 10, so the method is written out here.
+Eigen::VectorXd smallNnls(const Eigen::MatrixXd& E, const Eigen::VectorXd& f) {
+  const Eigen::Index p = E.cols();
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(p);
+  if (p == 0) return z;
+  std::vector<char> passive(static_cast<std::size_t>(p), 0);
+  const double tol = 1e-14 * (1 + f.cwiseAbs().maxCoeff()) * std::max(1.0, E.cwiseAbs().maxCoeff());
+  // The least-squares solution on the passive columns, zero elsewhere.
+  auto solvePassive = [&]() {
+    std::vector<Eigen::Index> idx;
+    for (Eigen::Index i = 0; i < p; ++i)
+      if (passive[std::size_t(i)]) idx.push_back(i);
+    Eigen::MatrixXd Ep(E.rows(), Eigen::Index(idx.size()));
+    for (std::size_t k = 0; k < idx.size(); ++k) Ep.col(Eigen::Index(k)) = E.col(idx[k]);
+    const Eigen::VectorXd sp = Ep.completeOrthogonalDecomposition().solve(f);
+    Eigen::VectorXd s = Eigen::VectorXd::Zero(p);
+    for (std::size_t k = 0; k < idx.size(); ++k) s[idx[k]] = sp[Eigen::Index(k)];
+    return s;
+  };
+  for (int outer = 0; outer < 3 * int(p) + 3; ++outer) {
+    const Eigen::VectorXd wv = E.transpose() * (f - E * z);
+    Eigen::Index t = -1;
+    double wmax = tol;
+    for (Eigen::Index i = 0; i < p; ++i)
+      if (!passive[std::size_t(i)] && wv[i] > wmax) wmax = wv[i], t = i;
+    if (t < 0) break;
+    passive[std::size_t(t)] = 1;
+    for (int inner = 0; inner < int(p) + 1; ++inner) {
+      const Eigen::VectorXd s = solvePassive();
+      double alpha = 1;
+      bool clipped = false;
+      for (Eigen::Index i = 0; i < p; ++i)
+        if (passive[std::size_t(i)] && s[i] <= 0) {
+          clipped = true;
+          alpha = std::min(alpha, z[i] / (z[i] - s[i]));
+        }
+      if (!clipped) {
+        z = s;
+        break;
+      }
+      z += alpha * (s - z);
+      for (Eigen::Index i = 0; i < p; ++i)
+        if (passive[std::size_t(i)] && z[i] <= 0) passive[std::size_t(i)] = 0, z[i] = 0;
+    }
+  }
+  return z;
 }
 
 // One interface to the factorisations of S (IpmOptions::schurSolver). S arrives as the lower
@@ -363,21 +419,11 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   std::vector<std::vector<int>> blockSlots;
 
   IpmResult best;
+  VectorXd bestS, bestZ;  // the best iterate's slacks and inequality multipliers (for the polish)
   double bestMerit = std::numeric_limits<double>::infinity();
   IpmResult res;
   res.status = SolveStatus::IterationLimit;
   double regularisation = 0;
-  // Stopping short of the tolerances: the best iterate, called `reduced accuracy` when it is
-  // within kReducedPrimal, kReducedDual and kReducedGap.
-  auto stop = [&](SolveStatus why) {
-    best.regularisations = res.regularisations;
-    const bool close = best.x.size() == n && best.primalResidual <= kReducedPrimal &&
-                       best.dualResidual <= kReducedDual &&
-                       best.gap <= std::max(options.gapTolerance, kReducedGap * std::abs(best.objective));
-    best.status = close && why != SolveStatus::TimeLimit ? SolveStatus::ReducedAccuracy : why;
-    return best;
-  };
-
   auto record = [&](int iter, const VectorXd& rp, const VectorXd& rd, double gap) {
     const double pr = rp.size() ? rp.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
     const double dr = rd.size() ? rd.lpNorm<Eigen::Infinity>() / (1 + cnorm) : 0.0;
@@ -392,6 +438,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       best.dualResidual = dr;
       best.gap = gap;
       best.iterations = iter;
+      bestS = s;
+      bestZ = z;
     }
     return pr <= options.residualTolerance && dr <= options.residualTolerance &&
            (gap <= options.gapTolerance || gap <= options.relativeGapTolerance * std::abs(obj));
@@ -498,6 +546,290 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     early.corrections = res.corrections;
     return true;
   };
+  auto factor = [&]() {
+    if (blockwise) return factorBlockwise(regularisation);
+    double* val = S.valuePtr();
+    std::fill(val, val + S.nonZeros(), 0.0);
+    for (int r = 0; r < m; ++r) val[diagSlot[std::size_t(r)]] += regularisation;
+    for (int j = 0; j < nb; ++j) {
+      const auto& bc = cols[j];
+      const int sz = qp.blocks[j].size;
+      // A vertex block touches the 12 rows of its two blocks: fixed-capacity, no allocation.
+      using Cols = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 4>;
+      using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
+      if (bc.rows.size() <= 12) {
+        const Cols AH = bc.vals.leftCols(sz).lazyProduct(hinv[j].topLeftCorner(sz, sz));
+        const Square block = AH.lazyProduct(bc.vals.leftCols(sz).transpose());
+        std::size_t k = 0;
+        for (std::size_t p = 0; p < bc.rows.size(); ++p)
+          for (std::size_t q = 0; q <= p; ++q)
+            val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+        continue;
+      }
+      const Eigen::MatrixXd AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
+      const Eigen::MatrixXd block = AH * bc.vals.leftCols(sz).transpose();
+      std::size_t k = 0;
+      for (std::size_t p = 0; p < bc.rows.size(); ++p)
+        for (std::size_t q = 0; q <= p; ++q)
+          val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
+    }
+    return ldlt.factorize(S);
+  };
+  // M v block by block, for M = H⁻¹ or H.
+  auto applyBlocks = [&](const std::vector<Mat4>& M, const VectorXd& v, VectorXd& out) {
+    for (int j = 0; j < nb; ++j) {
+      const VarBlock& blk = qp.blocks[j];
+      Eigen::Vector4d in = Eigen::Vector4d::Zero();
+      for (int k = 0; k < blk.size; ++k) in[k] = v[blk.offset + k];
+      const Eigen::Vector4d o = M[std::size_t(j)] * in;
+      for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
+    }
+  };
+  auto applyHinv = [&](const VectorXd& v, VectorXd& out) { applyBlocks(hinv, v, out); };
+  auto applyH = [&](const VectorXd& v, VectorXd& out) { applyBlocks(hess, v, out); };
+  // S dy = rhs with one step of iterative refinement against S applied as A H⁻¹ Aᵀ (near the
+  // optimum S mixes entries of very different sizes, z/s → 0 or ∞).
+  // On the block path, A H⁻¹ u, A H⁻¹ Aᵀ v and H⁻¹(u + Aᵀ v) in one pass over the blocks'
+  // dense 12×4 columns each, instead of two or three sparse products with temporaries.
+  using V12 = Eigen::Matrix<double, 12, 1>;
+  auto gather = [&](const BlockCols12& bc, const VectorXd& v) {
+    V12 g;
+    g.head<6>() = v.segment<6>(bc.row0);
+    if (bc.groups == 2)
+      g.tail<6>() = v.segment<6>(bc.row1);
+    else
+      g.tail<6>().setZero();
+    return g;
+  };
+  auto scatterAdd = [&](const BlockCols12& bc, const V12& o, VectorXd& out) {
+    out.segment<6>(bc.row0) += o.head<6>();
+    if (bc.groups == 2) out.segment<6>(bc.row1) += o.tail<6>();
+  };
+  auto blockIn = [&](int j, const VectorXd& u) {
+    const VarBlock& blk = qp.blocks[std::size_t(j)];
+    Eigen::Vector4d in = Eigen::Vector4d::Zero();
+    for (int k = 0; k < blk.size; ++k) in[k] = u[blk.offset + k];
+    return in;
+  };
+  // The three products write `out` (never one of their inputs); the scalar path uses sn1, sn2.
+  auto applyAHinv = [&](const VectorXd& u, VectorXd& out) {
+    if (!blockwise) {
+      applyHinv(u, sn1);
+      out.noalias() = qp.A * sn1;
+      return;
+    }
+    out.setZero();
+    for (int j = 0; j < nb; ++j) {
+      const BlockCols12& bc = cols12[std::size_t(j)];
+      if (bc.groups == 0) continue;
+      scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * blockIn(j, u)), out);
+    }
+  };
+  auto applySchur = [&](const VectorXd& v, VectorXd& out) {
+    if (!blockwise) {
+      sn1.noalias() = qp.A.transpose() * v;
+      applyHinv(sn1, sn2);
+      out.noalias() = qp.A * sn2;
+      return;
+    }
+    out.setZero();
+    for (int j = 0; j < nb; ++j) {
+      const BlockCols12& bc = cols12[std::size_t(j)];
+      if (bc.groups == 0) continue;
+      scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * (bc.vals.transpose() * gather(bc, v))), out);
+    }
+  };
+  auto hinvPlusAT = [&](const VectorXd& u, const VectorXd& v, VectorXd& out) {
+    if (!blockwise) {
+      sn1 = u;
+      sn1.noalias() += qp.A.transpose() * v;
+      applyHinv(sn1, out);
+      return;
+    }
+    for (int j = 0; j < nb; ++j) {
+      const BlockCols12& bc = cols12[std::size_t(j)];
+      Eigen::Vector4d in = blockIn(j, u);
+      if (bc.groups != 0) in.noalias() += bc.vals.transpose() * gather(bc, v);
+      const Eigen::Vector4d o = hinv[std::size_t(j)] * in;
+      const VarBlock& blk = qp.blocks[std::size_t(j)];
+      for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
+    }
+  };
+  // S out = rhs, refined once against S (uses tm, tm2).
+  auto solveSchur = [&](const VectorXd& rhsv, VectorXd& out) {
+    ldlt.solve(rhsv, out);
+    applySchur(out, tm);
+    tm2 = rhsv - tm - (regularisation)*out;
+    ldlt.solve(tm2, tm);
+    out += tm;
+  };
+  // The polish (docs/statics.md, "The polish"): where the iterations stop short, the best
+  // iterate's slacks and multipliers name the rows that hold with equality (z > s); the QP
+  // with those rows as equalities and the others dropped is an equality-constrained QP, solved
+  // by proximal steps x⁺ = argmin ½xᵀQx + cᵀx + ½δ‖x − x⁻‖² on A x = b, G_act x = 0 with the
+  // same block machinery (H_j⁻¹ replaced by N_j (N_jᵀQ_jN_j + δI)⁻¹ N_jᵀ, N_j an orthonormal
+  // basis of the block's admissible directions). The point it ends at is optimal when it
+  // satisfies the dropped rows and the active rows' multipliers, found per block by NNLS on
+  // the stationarity residual, are ≥ 0 with the residual within the tolerance: those are the
+  // QP's KKT conditions, sufficient for a convex QP. Rows that fail are moved between the two
+  // sets and the polish tried again (kPolishRounds); a polish that never passes changes nothing.
+  VectorXd px(n), py(m), pxPrev(n), pgx(mi), pz(mi), pres(n), ptn(n), prhs(m), pddy(m), pcorr(n);
+  std::vector<Mat4> polishProjector(static_cast<std::size_t>(nb));  // N_j N_jᵀ
+  auto polish = [&]() -> bool {
+    if (best.x.size() != n || bestS.size() != mi || mi == 0) return false;
+    std::vector<char> active(static_cast<std::size_t>(mi));
+    for (int i = 0; i < mi; ++i) active[std::size_t(i)] = bestZ[i] > bestS[i];
+    const double delta = kPolishProximal * std::max(1.0, qdiag.size() ? qdiag.maxCoeff() : 0.0);
+    for (int round = 0; round < kPolishRounds; ++round) {
+      // The blocks' projected inverses, in hinv (the iteration's are not needed any more).
+      for (int j = 0; j < nb; ++j) {
+        const VarBlock& blk = qp.blocks[std::size_t(j)];
+        const int k = blk.size;
+        Eigen::MatrixXd GtG = Eigen::MatrixXd::Zero(k, k);
+        for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+          if (!active[std::size_t(rowStart[j]) + r]) continue;
+          const Eigen::Map<const Eigen::VectorXd> g(blk.rows[r].data(), k);
+          GtG += g * g.transpose();
+        }
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(GtG);
+        const double top = std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
+        std::vector<Eigen::Index> free;
+        for (Eigen::Index e = 0; e < k; ++e)
+          if (es.eigenvalues()[e] <= 1e-12 * top) free.push_back(e);
+        Mat4 P = Mat4::Zero();
+        polishProjector[std::size_t(j)].setZero();
+        if (!free.empty()) {
+          Eigen::MatrixXd N(k, Eigen::Index(free.size()));
+          for (std::size_t e = 0; e < free.size(); ++e) N.col(Eigen::Index(e)) = es.eigenvectors().col(free[e]);
+          Eigen::MatrixXd M = N.transpose() * Eigen::Map<const Eigen::VectorXd>(blk.hessian.data(), k).asDiagonal() * N;
+          M.diagonal().array() += delta;
+          P.topLeftCorner(k, k) = N * M.ldlt().solve(N.transpose());
+          polishProjector[std::size_t(j)].topLeftCorner(k, k) = N * N.transpose();
+        }
+        hinv[std::size_t(j)] = P;
+      }
+      regularisation = 0;
+      bool ok = factor();
+      for (int attempt = 0; !ok && attempt < 4; ++attempt) {
+        regularisation = regularisation > 0 ? regularisation * 100 : 1e-12;
+        ok = factor();
+      }
+      if (!ok) return false;
+      // Proximal steps from the best iterate: x = P(Aᵀy + δx⁻ − c) with S y = b − A P(δx⁻ − c),
+      // each followed by a correction that restores A x = b with the same factorisation.
+      pxPrev = best.x;
+      for (int step = 0; step < kPolishSteps; ++step) {
+        ptn = delta * pxPrev - c;
+        applyAHinv(ptn, tm);
+        prhs = qp.b - tm;
+        solveSchur(prhs, py);
+        hinvPlusAT(ptn, py, px);
+        for (int fix = 0; fix < 2; ++fix) {
+          prhs = qp.b;
+          prhs.noalias() -= qp.A * px;
+          ldlt.solve(prhs, pddy);
+          hinvPlusAT(zeroN, pddy, pcorr);
+          px += pcorr;
+          py += pddy;
+        }
+        const double change = (px - pxPrev).lpNorm<Eigen::Infinity>();
+        pxPrev = px;
+        if (!(delta * change > 1e-3 * options.residualTolerance)) break;
+      }
+      // P's entries reach 1/δ, so P v leaves the admissible directions by about 1e-16/δ of v's
+      // part across them (Aᵀy's, which the active rows' multipliers balance): the active rows
+      // were off by 1e-11 on the thin-buttressed vault. So x is projected onto them exactly
+      // (N Nᵀ x: rounding of x itself) and A x = b restored by one more correction, whose
+      // right-hand side is that small.
+      for (int j = 0; j < nb; ++j) {
+        const VarBlock& blk = qp.blocks[std::size_t(j)];
+        const Eigen::Vector4d o = polishProjector[std::size_t(j)] * blockIn(j, px);
+        for (int k = 0; k < blk.size; ++k) px[blk.offset + k] = o[k];
+      }
+      prhs = qp.b;
+      prhs.noalias() -= qp.A * px;
+      ldlt.solve(prhs, pddy);
+      hinvPlusAT(zeroN, pddy, pcorr);
+      px += pcorr;
+      py += pddy;
+      if (!allFinite(px) || !allFinite(py)) return false;
+      // The KKT conditions at px: equilibrium, the dropped rows, the active rows' multipliers.
+      rpt.noalias() = qp.A * px;
+      rpt -= qp.b;
+      const double pr = rpt.size() ? rpt.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
+      Gx(px, pgx);
+      pres = qdiag.cwiseProduct(px) + c;
+      pres.noalias() -= qp.A.transpose() * py;
+      const double xscale = std::max(1.0, px.lpNorm<Eigen::Infinity>());
+      const double rowTol = options.residualTolerance * xscale;
+      double dr = 0;
+      bool changed = false;
+      pz.setZero();
+      for (int j = 0; j < nb; ++j) {
+        const VarBlock& blk = qp.blocks[std::size_t(j)];
+        const int k = blk.size;
+        std::vector<std::size_t> act;
+        for (std::size_t r = 0; r < blk.rows.size(); ++r)
+          if (active[std::size_t(rowStart[j]) + r]) act.push_back(r);
+        Eigen::MatrixXd E(k, Eigen::Index(act.size()));
+        for (std::size_t a = 0; a < act.size(); ++a)
+          for (int q = 0; q < k; ++q) E(q, Eigen::Index(a)) = blk.rows[act[a]][q];
+        const Eigen::VectorXd g = pres.segment(blk.offset, k);
+        const Eigen::VectorXd zj = smallNnls(E, g);
+        const double r = (g - E * zj).lpNorm<Eigen::Infinity>() / (1 + cnorm);
+        dr = std::max(dr, r);
+        for (std::size_t a = 0; a < act.size(); ++a) pz[rowStart[j] + int(act[a])] = zj[Eigen::Index(a)];
+        if (r > options.residualTolerance) {
+          // Stationarity fails on this block: release the active rows that carry no multiplier.
+          for (std::size_t a = 0; a < act.size(); ++a)
+            if (zj[Eigen::Index(a)] <= 0) active[std::size_t(rowStart[j]) + act[a]] = 0, changed = true;
+        }
+        for (std::size_t r = 0; r < blk.rows.size(); ++r) {
+          const std::size_t i = std::size_t(rowStart[j]) + r;
+          if (!active[i] && pgx[Eigen::Index(i)] < -rowTol) active[i] = 1, changed = true;
+        }
+      }
+      double gap = 0;
+      for (int i = 0; i < mi; ++i) gap += pz[i] * std::abs(pgx[i]);
+      const double obj = 0.5 * px.dot(qdiag.cwiseProduct(px)) + c.dot(px);
+      const bool passes = !changed && pr <= options.residualTolerance && dr <= options.residualTolerance &&
+                          (gap <= options.gapTolerance || gap <= options.relativeGapTolerance * std::abs(obj));
+      if (passes) {
+        // Rows short of 0 by rounding moved inside along the blocks' interior directions
+        // (which leave A x unchanged for the penalty QP); the objective is taken after.
+        repair(px);
+        rpt.noalias() = qp.A * px;
+        rpt -= qp.b;
+        const double prRepaired = rpt.size() ? rpt.lpNorm<Eigen::Infinity>() / (1 + bnorm) : 0.0;
+        if (!(prRepaired <= options.residualTolerance)) return false;
+        best.x = px;
+        best.multipliers = py;
+        best.objective = 0.5 * px.dot(qdiag.cwiseProduct(px)) + c.dot(px);
+        best.primalResidual = prRepaired;
+        best.dualResidual = dr;
+        best.gap = gap;
+        best.polished = true;
+        return true;
+      }
+      if (!changed) return false;
+    }
+    return false;
+  };
+  // Stopping short of the tolerances: the best iterate, called `reduced accuracy` when it is
+  // within kReducedPrimal, kReducedDual and kReducedGap.
+  auto stop = [&](SolveStatus why) {
+    best.regularisations = res.regularisations;
+    if (why != SolveStatus::TimeLimit && options.polish && polish()) {
+      best.status = SolveStatus::Optimal;
+      return best;
+    }
+    const bool close = best.x.size() == n && best.primalResidual <= kReducedPrimal &&
+                       best.dualResidual <= kReducedDual &&
+                       best.gap <= std::max(options.gapTolerance, kReducedGap * std::abs(best.objective));
+    best.status = close && why != SolveStatus::TimeLimit ? SolveStatus::ReducedAccuracy : why;
+    return best;
+  };
+
   double lastProjected = std::numeric_limits<double>::infinity();
   const auto started = std::chrono::steady_clock::now();
   for (int iter = 0;; ++iter) {
@@ -568,35 +900,6 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       ldlt.analyze(S);
       analysed = true;
     }
-    auto factor = [&]() {
-      if (blockwise) return factorBlockwise(regularisation);
-      double* val = S.valuePtr();
-      std::fill(val, val + S.nonZeros(), 0.0);
-      for (int r = 0; r < m; ++r) val[diagSlot[std::size_t(r)]] += regularisation;
-      for (int j = 0; j < nb; ++j) {
-        const auto& bc = cols[j];
-        const int sz = qp.blocks[j].size;
-        // A vertex block touches the 12 rows of its two blocks: fixed-capacity, no allocation.
-        using Cols = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 4>;
-        using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
-        if (bc.rows.size() <= 12) {
-          const Cols AH = bc.vals.leftCols(sz).lazyProduct(hinv[j].topLeftCorner(sz, sz));
-          const Square block = AH.lazyProduct(bc.vals.leftCols(sz).transpose());
-          std::size_t k = 0;
-          for (std::size_t p = 0; p < bc.rows.size(); ++p)
-            for (std::size_t q = 0; q <= p; ++q)
-              val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
-          continue;
-        }
-        const Eigen::MatrixXd AH = bc.vals.leftCols(sz) * hinv[j].topLeftCorner(sz, sz);
-        const Eigen::MatrixXd block = AH * bc.vals.leftCols(sz).transpose();
-        std::size_t k = 0;
-        for (std::size_t p = 0; p < bc.rows.size(); ++p)
-          for (std::size_t q = 0; q <= p; ++q)
-            val[blockSlots[std::size_t(j)][k++]] += block(Eigen::Index(p), Eigen::Index(q));
-      }
-      return ldlt.factorize(S);
-    };
     bool ok = factor();
     for (int attempt = 0; !ok && attempt < 8; ++attempt) {
       regularisation = regularisation > 0 ? regularisation * 100 : 1e-12;
@@ -609,94 +912,6 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     regularisation *= 0.1;  // relax again once things go well
     if (regularisation < 1e-14) regularisation = 0;
 
-    // M v block by block, for M = H⁻¹ or H.
-    auto applyBlocks = [&](const std::vector<Mat4>& M, const VectorXd& v, VectorXd& out) {
-      for (int j = 0; j < nb; ++j) {
-        const VarBlock& blk = qp.blocks[j];
-        Eigen::Vector4d in = Eigen::Vector4d::Zero();
-        for (int k = 0; k < blk.size; ++k) in[k] = v[blk.offset + k];
-        const Eigen::Vector4d o = M[std::size_t(j)] * in;
-        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
-      }
-    };
-    auto applyHinv = [&](const VectorXd& v, VectorXd& out) { applyBlocks(hinv, v, out); };
-    auto applyH = [&](const VectorXd& v, VectorXd& out) { applyBlocks(hess, v, out); };
-    // S dy = rhs with one step of iterative refinement against S applied as A H⁻¹ Aᵀ (near the
-    // optimum S mixes entries of very different sizes, z/s → 0 or ∞).
-    // On the block path, A H⁻¹ u, A H⁻¹ Aᵀ v and H⁻¹(u + Aᵀ v) in one pass over the blocks'
-    // dense 12×4 columns each, instead of two or three sparse products with temporaries.
-    using V12 = Eigen::Matrix<double, 12, 1>;
-    auto gather = [&](const BlockCols12& bc, const VectorXd& v) {
-      V12 g;
-      g.head<6>() = v.segment<6>(bc.row0);
-      if (bc.groups == 2)
-        g.tail<6>() = v.segment<6>(bc.row1);
-      else
-        g.tail<6>().setZero();
-      return g;
-    };
-    auto scatterAdd = [&](const BlockCols12& bc, const V12& o, VectorXd& out) {
-      out.segment<6>(bc.row0) += o.head<6>();
-      if (bc.groups == 2) out.segment<6>(bc.row1) += o.tail<6>();
-    };
-    auto blockIn = [&](int j, const VectorXd& u) {
-      const VarBlock& blk = qp.blocks[std::size_t(j)];
-      Eigen::Vector4d in = Eigen::Vector4d::Zero();
-      for (int k = 0; k < blk.size; ++k) in[k] = u[blk.offset + k];
-      return in;
-    };
-    // The three products write `out` (never one of their inputs); the scalar path uses sn1, sn2.
-    auto applyAHinv = [&](const VectorXd& u, VectorXd& out) {
-      if (!blockwise) {
-        applyHinv(u, sn1);
-        out.noalias() = qp.A * sn1;
-        return;
-      }
-      out.setZero();
-      for (int j = 0; j < nb; ++j) {
-        const BlockCols12& bc = cols12[std::size_t(j)];
-        if (bc.groups == 0) continue;
-        scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * blockIn(j, u)), out);
-      }
-    };
-    auto applySchur = [&](const VectorXd& v, VectorXd& out) {
-      if (!blockwise) {
-        sn1.noalias() = qp.A.transpose() * v;
-        applyHinv(sn1, sn2);
-        out.noalias() = qp.A * sn2;
-        return;
-      }
-      out.setZero();
-      for (int j = 0; j < nb; ++j) {
-        const BlockCols12& bc = cols12[std::size_t(j)];
-        if (bc.groups == 0) continue;
-        scatterAdd(bc, bc.vals * (hinv[std::size_t(j)] * (bc.vals.transpose() * gather(bc, v))), out);
-      }
-    };
-    auto hinvPlusAT = [&](const VectorXd& u, const VectorXd& v, VectorXd& out) {
-      if (!blockwise) {
-        sn1 = u;
-        sn1.noalias() += qp.A.transpose() * v;
-        applyHinv(sn1, out);
-        return;
-      }
-      for (int j = 0; j < nb; ++j) {
-        const BlockCols12& bc = cols12[std::size_t(j)];
-        Eigen::Vector4d in = blockIn(j, u);
-        if (bc.groups != 0) in.noalias() += bc.vals.transpose() * gather(bc, v);
-        const Eigen::Vector4d o = hinv[std::size_t(j)] * in;
-        const VarBlock& blk = qp.blocks[std::size_t(j)];
-        for (int k = 0; k < blk.size; ++k) out[blk.offset + k] = o[k];
-      }
-    };
-    // S out = rhs, refined once against S (uses tm, tm2).
-    auto solveSchur = [&](const VectorXd& rhsv, VectorXd& out) {
-      ldlt.solve(rhsv, out);
-      applySchur(out, tm);
-      tm2 = rhsv - tm - (regularisation)*out;
-      ldlt.solve(tm2, tm);
-      out += tm;
-    };
     // `refine`: false for the predictor, whose step only sets the centring σ and the
     // second-order term of the corrector (its errors perturb the centring, not the iterate):
     // one plain solve with the factorisation, no refinement. Writes dx, dy, dz, ds.

@@ -83,6 +83,11 @@ struct IpmOptions {
   // certificate; a point that fails it is dropped. 0 turns it off.
   int feasibilityCorrections = 1;
   double correctBelow = 1e-8;
+  // Where the iterations stop short of the tolerances (a failed factorisation or the iteration
+  // cap, not the time cap), the best iterate's active rows are taken as equalities and the
+  // equality-constrained QP solved ("the polish", docs/statics.md); its point is returned as
+  // `optimal` when it passes the KKT conditions to the tolerances, else nothing changes.
+  bool polish = true;
 };
 
 struct IpmResult {
@@ -93,6 +98,7 @@ struct IpmResult {
   int iterations = 0;
   int regularisations = 0;  // factorisations that needed a diagonal shift
   int corrections = 0;      // feasibility-correction rounds tried
+  bool polished = false;    // the point is the polish's (IpmOptions::polish), not an iterate
 };
 
 IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options = {});

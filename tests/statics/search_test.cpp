@@ -119,6 +119,25 @@ TEST(ParameterSearch, EnvelopeGradientMatchesDifferencesOnTheArchOnColumns) {
   expectGradientMatchesDifferences(m, m.parameters, m.suggestedFree, 1e-5);
 }
 
+// Where the iterations stop short (strongly infeasible, vertical interfaces: docs/statics.md,
+// "The polish") the gradient is the polished optimum's: it must match differences of y to
+// 1e-5 as everywhere else (before the polish these agreed to about 1e-4).
+TEST(ParameterSearch, EnvelopeGradientMatchesDifferencesOnTheThinButtressedVault) {
+  const ParametricModel m = barrelVaultExample();
+  expectGradientMatchesDifferences(m, m.parameters, m.suggestedFree, 1e-5);
+}
+
+TEST(ParameterSearch, EnvelopeGradientMatchesDifferencesOnTheLeaningTower) {
+  const ParametricModel m = towerExample();
+  // The first and the top levels' offsets: the base carries every level above it, the top
+  // only itself.
+  std::vector<FreeParameter> free;
+  for (const FreeParameter& f : m.suggestedFree)
+    if (f.name[0] == 'x') free.push_back(f);
+  ASSERT_EQ(free.size(), 16u);
+  expectGradientMatchesDifferences(m, m.parameters, free, 1e-5);
+}
+
 // The top cube tips past offset 1/2 (blocks_test): from 0.8 the search must come back to
 // at most 1/2, and the strict LP test must agree that the result stands.
 TEST(ParameterSearch, OverhangSearchStopsFeasibleInsideTheTippingOffset) {
