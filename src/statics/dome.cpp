@@ -52,7 +52,8 @@ std::vector<Block> drumBlocks(const DrumSpec& spec) {
   const bool windows = spec.windowWidth != 0;
   if (windows) {
     if (!positive(spec.windowWidth)) throw Error("drum: the window width must be a positive number (0: no windows)");
-    if (spec.bond) throw Error("drum: windows need stack bond (a running bond would put a joint in every other opening)");
+    if (spec.bond)
+      throw Error("drum: windows need stack bond (a running bond would put a joint in every other opening)");
     if (spec.windowEvery < 1 || spec.windowEvery > spec.segments)
       throw Error("drum: windows must be in every 1st to every " + std::to_string(spec.segments) + "th segment");
     if (spec.windowSill < 0 || spec.windowHead <= spec.windowSill || spec.windowHead >= spec.courses)
@@ -73,9 +74,10 @@ std::vector<Block> drumBlocks(const DrumSpec& spec) {
         const double mid = 2 * std::numbers::pi * (j + 0.5) / spec.segments, w = spec.windowWidth / 2;
         const Vec3 u(std::cos(mid), std::sin(mid), 0.0), v(-std::sin(mid), std::cos(mid), 0.0);
         auto at = [&](double a, double b) { return a * u + b * v + Vec3(0.0, 0.0, c * h); };
-        const double ui = ri * std::cos(half), uo = ro * std::cos(half), si = ri * std::sin(half), so = ro * std::sin(half);
-        out.push_back(prismBlock(name + " jamb 0", {at(ui, -si), at(uo, -so), at(uo, -w), at(ui, -w)}, Vec3(0.0, 0.0, h),
-                                 spec.density));
+        const double ui = ri * std::cos(half), uo = ro * std::cos(half), si = ri * std::sin(half),
+                     so = ro * std::sin(half);
+        out.push_back(prismBlock(name + " jamb 0", {at(ui, -si), at(uo, -so), at(uo, -w), at(ui, -w)},
+                                 Vec3(0.0, 0.0, h), spec.density));
         out.push_back(prismBlock(name + " jamb 1", {at(ui, w), at(uo, w), at(uo, so), at(ui, si)}, Vec3(0.0, 0.0, h),
                                  spec.density));
         continue;

@@ -29,15 +29,19 @@ std::vector<Block> squareHallBlocks(const SquareHallSpec& spec) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0; };
   if (!positive(spec.radius) || !positive(spec.wallThickness) || spec.wallThickness >= spec.radius)
     throw Error("hall: radius and wall thickness must be positive, the walls thinner than the radius");
-  if (!positive(spec.height) || !positive(spec.slabThickness)) throw Error("hall: height and slab thickness must be positive");
-  if (spec.courses < 3 || spec.courses > 1000) throw Error("hall: the number of courses must be in 3..1000 (a window needs three)");
-  if (!(std::isfinite(spec.windowWidth) && spec.windowWidth >= 0)) throw Error("hall: the window width must be a number ≥ 0");
+  if (!positive(spec.height) || !positive(spec.slabThickness))
+    throw Error("hall: height and slab thickness must be positive");
+  if (spec.courses < 3 || spec.courses > 1000)
+    throw Error("hall: the number of courses must be in 3..1000 (a window needs three)");
+  if (!(std::isfinite(spec.windowWidth) && spec.windowWidth >= 0))
+    throw Error("hall: the window width must be a number ≥ 0");
   if (!positive(spec.density)) throw Error("hall: the density must be a positive number");
   const double a = spec.radius + spec.wallThickness / 2, b = spec.radius - spec.wallThickness / 2, c = spec.cornerLine;
   // The octagon needs its diagonal sides to cut the square's corners, not pass them.
   if (!(std::isfinite(c) && c > b && c < 2 * b))
-    throw Error("hall: the corner slabs' line |x| + |y| = " + std::to_string(c) + " must lie between the walls' inner face (" +
-                std::to_string(b) + ") and the inner corner (" + std::to_string(2 * b) + ")");
+    throw Error("hall: the corner slabs' line |x| + |y| = " + std::to_string(c) +
+                " must lie between the walls' inner face (" + std::to_string(b) + ") and the inner corner (" +
+                std::to_string(2 * b) + ")");
   WallSpec wall;
   wall.length = a + b;
   wall.thickness = spec.wallThickness;
@@ -65,7 +69,8 @@ std::vector<Block> squareHallBlocks(const SquareHallSpec& spec) {
   quadrant.push_back(halfspaceBlock("corner slab", corner, spec.density));
   // The side slab on the east wall's middle, between the corner slabs' lines (a triangle with
   // its apex on the axis where c ≤ a).
-  quadrant.push_back(halfspaceBlock("side slab", {below, above, {-X, -b}, {X, a}, {X + Y, c}, {X - Y, c}}, spec.density));
+  quadrant.push_back(
+      halfspaceBlock("side slab", {below, above, {-X, -b}, {X, a}, {X + Y, c}, {X - Y, c}}, spec.density));
   for (int k = 0; k < 4; ++k)
     for (Block& blk : quarterTurned(quadrant, k)) {
       blk.name = "slabs " + std::to_string(k) + "/" + blk.name;
@@ -75,10 +80,12 @@ std::vector<Block> squareHallBlocks(const SquareHallSpec& spec) {
 }
 
 double squinchLine(const SquareHallSpec& hall, double drumInner, double drumOuter, int segments) {
-  if (segments < 4 || segments % 4) throw Error("hall: the drum's segments must be a multiple of 4 to sit on a square hall");
+  if (segments < 4 || segments % 4)
+    throw Error("hall: the drum's segments must be a multiple of 4 to sit on a square hall");
   const double a = hall.radius + hall.wallThickness / 2, b = hall.radius - hall.wallThickness / 2;
-  if (!(drumOuter <= a)) throw Error("hall: the drum (outer radius " + std::to_string(drumOuter) +
-                                     " m) is wider than the hall's walls (outer half side " + std::to_string(a) + " m)");
+  if (!(drumOuter <= a))
+    throw Error("hall: the drum (outer radius " + std::to_string(drumOuter) +
+                " m) is wider than the hall's walls (outer half side " + std::to_string(a) + " m)");
   // x + y is linear, so its least value over the part of the ring off the walls (x, y < b in
   // the first quadrant) is at a corner of the inner polygon or where one of its sides crosses
   // x = b or y = b; the outer polygon lies farther out along every ray.
@@ -99,8 +106,9 @@ double squinchLine(const SquareHallSpec& hall, double drumInner, double drumOute
   }
   if (!std::isfinite(least)) throw Error("hall: the drum lies wholly on the walls; no corner slabs are needed");
   if (!(least > b))
-    throw Error("hall: the drum's inner face (radius " + std::to_string(drumInner) + " m) reaches inside the walls' inner face (" +
-                std::to_string(b) + " m from the centre); make the walls at least as thick as the drum");
+    throw Error("hall: the drum's inner face (radius " + std::to_string(drumInner) +
+                " m) reaches inside the walls' inner face (" + std::to_string(b) +
+                " m from the centre); make the walls at least as thick as the drum");
   return least;
 }
 

@@ -1,11 +1,11 @@
 // The square hall under a drum (hall.h) against hand computations: block counts from the wall
 // template, the slab course's area from the octagon it leaves open, the corner slabs' line
 // from the drum's polygon, and the drum wholly on walls and slabs (contact areas).
+#include "statics/hall.h"
 #include "core/error.h"
 #include "statics/builder.h"
 #include "statics/dome.h"
 #include "statics/equilibrium.h"
-#include "statics/hall.h"
 #include "statics/tolerances.h"
 #include "statics/wall.h"
 

@@ -255,7 +255,8 @@ TEST(ParameterSearch, TheMosqueHallsSearchNarrowsItsWindows) {
         return checkFeasibility(m.build(p)).feasible;
       },
       0.1, 0.9, 0.005, "windowWidth");
-  std::printf("mosque hall: the search's windows %.3f m, the widest that stand %.3f m\n", r.values["windowWidth"], widest);
+  std::printf("mosque hall: the search's windows %.3f m, the widest that stand %.3f m\n", r.values["windowWidth"],
+              widest);
   EXPECT_LT(r.values["windowWidth"], 0.9);
   EXPECT_LE(r.values["windowWidth"], widest + 0.005);
   EXPECT_GE(r.values["windowWidth"], 0.1);

@@ -372,7 +372,8 @@ TEST(Templates, DrumWindowsCutTheirOpeningsAndTheLintelsBearOnTheJambs) {
     if ((a == "t/course 4 block 1") != (b == "t/course 4 block 1") &&
         (a.rfind("t/course 3 block 1 jamb", 0) == 0 || b.rfind("t/course 3 block 1 jamb", 0) == 0))
       lintel += f.area;
-    if ((a == "t/course 4 block 2" && b == "t/course 3 block 2") || (b == "t/course 4 block 2" && a == "t/course 3 block 2"))
+    if ((a == "t/course 4 block 2" && b == "t/course 3 block 2") ||
+        (b == "t/course 4 block 2" && a == "t/course 3 block 2"))
       plain += f.area;
   }
   EXPECT_NEAR(plain, ring / 16, 1e-12);
@@ -423,7 +424,8 @@ TEST(Templates, ExamplesHaveThePapersBlockCounts) {
   EXPECT_EQ(abbeyExample().build(abbeyExample().parameters).blocks.size(), 26u * (12 + 2 * (5 + 5 + 3)) + 1);
   // Fig. 10 (c): 5 drum courses and 8 dome rings of 16, and 8 flyers of 5 voussoirs on 3
   // courses; 8 windows through 3 courses each add a jamb a course.
-  EXPECT_EQ(mosqueExample().build(mosqueExample().parameters).blocks.size(), 16u * 5 + 8 * 3 + 16 * 8 + 8 * (5 + 3) + 1);
+  EXPECT_EQ(mosqueExample().build(mosqueExample().parameters).blocks.size(),
+            16u * 5 + 8 * 3 + 16 * 8 + 8 * (5 + 3) + 1);
   // Fig. 10 (a, d): no flyers; the hall's four walls (each the wall template, a + b = 6 m long,
   // 0.8 m thick, 4 courses of 1 m and a 1 m window) and 8 slabs under the drum.
   {
