@@ -69,8 +69,9 @@ usage:
                     [--kern S] [--friction A] [--friction-sides 4|8] [--json]
                     NAME: tower (Fig. 11), arch-on-columns (Fig. 8), barrel-vault (Fig. 13),
                     flying-buttresses (Fig. 13 with flyers), bezier-arch (Fig. 12), chapel
-                    (Fig. 9, 480 blocks), abbey (Fig. 1, 988 blocks), mosque (Fig. 10, 272),
-                    groin-vault (a groin vault on four corner piers, 80).
+                    (Fig. 9, 480 blocks), abbey (Fig. 1, 988 blocks), mosque (Fig. 10 c, a
+                    windowed drum with flyers, 296), mosque-hall (Fig. 10 a, d, on a square
+                    hall, 336), groin-vault (a groin vault on four corner piers, 80).
                     Prints y/W² and the solver status; --optimize searches the free
                     parameters (the example's own when no --free) until it stands (Sec. 4)
                     and prints the status (feasible or local minimum), iterations, values.

@@ -48,14 +48,44 @@ std::vector<Block> drumBlocks(const DrumSpec& spec) {
   if (!positive(spec.height)) throw Error("drum: the height must be a positive number");
   if (!positive(spec.density)) throw Error("drum: the density must be a positive number");
   const double ri = spec.radius - spec.thickness / 2, ro = spec.radius + spec.thickness / 2, h = spec.height / spec.courses;
+  const double half = std::numbers::pi / spec.segments;  // half a segment's angle
+  const bool windows = spec.windowWidth != 0;
+  if (windows) {
+    if (!positive(spec.windowWidth)) throw Error("drum: the window width must be a positive number (0: no windows)");
+    if (spec.bond)
+      throw Error("drum: windows need stack bond (a running bond would put a joint in every other opening)");
+    if (spec.windowEvery < 1 || spec.windowEvery > spec.segments)
+      throw Error("drum: windows must be in every 1st to every " + std::to_string(spec.segments) + "th segment");
+    if (spec.windowSill < 0 || spec.windowHead <= spec.windowSill || spec.windowHead >= spec.courses)
+      throw Error("drum: windows need 0 ≤ sill < head < courses (the head course holds the lintels)");
+    const double chord = 2 * ri * std::sin(half);
+    if (spec.windowWidth > 0.9 * chord)
+      throw Error("drum: a window of " + std::to_string(spec.windowWidth) + " m leaves jambs thinner than 5 % of the " +
+                  std::to_string(chord) + " m inner chord of a segment");
+  }
   std::vector<Block> out;
   for (int c = 0; c < spec.courses; ++c) {
     const double shift = spec.bond && c % 2 ? 0.5 : 0.0;
     for (int j = 0; j < spec.segments; ++j) {
+      const std::string name = "course " + std::to_string(c) + " block " + std::to_string(j);
+      if (windows && j % spec.windowEvery == spec.windowEvery / 2 && c >= spec.windowSill && c < spec.windowHead) {
+        // The two jambs in the segment's own frame: u along its mid-plane, v across it; the
+        // faces are the chords u = ri cos(half), ro cos(half).
+        const double mid = 2 * std::numbers::pi * (j + 0.5) / spec.segments, w = spec.windowWidth / 2;
+        const Vec3 u(std::cos(mid), std::sin(mid), 0.0), v(-std::sin(mid), std::cos(mid), 0.0);
+        auto at = [&](double a, double b) { return a * u + b * v + Vec3(0.0, 0.0, c * h); };
+        const double ui = ri * std::cos(half), uo = ro * std::cos(half), si = ri * std::sin(half),
+                     so = ro * std::sin(half);
+        out.push_back(prismBlock(name + " jamb 0", {at(ui, -si), at(uo, -so), at(uo, -w), at(ui, -w)},
+                                 Vec3(0.0, 0.0, h), spec.density));
+        out.push_back(prismBlock(name + " jamb 1", {at(ui, w), at(uo, w), at(uo, so), at(ui, si)}, Vec3(0.0, 0.0, h),
+                                 spec.density));
+        continue;
+      }
       const double a0 = 2 * std::numbers::pi * (j + shift) / spec.segments, a1 = 2 * std::numbers::pi * (j + 1 + shift) / spec.segments;
       const std::vector<Vec3> base = {Vec3(ri * std::cos(a0), ri * std::sin(a0), c * h), Vec3(ro * std::cos(a0), ro * std::sin(a0), c * h),
                                       Vec3(ro * std::cos(a1), ro * std::sin(a1), c * h), Vec3(ri * std::cos(a1), ri * std::sin(a1), c * h)};
-      out.push_back(prismBlock("course " + std::to_string(c) + " block " + std::to_string(j), base, Vec3(0.0, 0.0, h), spec.density));
+      out.push_back(prismBlock(name, base, Vec3(0.0, 0.0, h), spec.density));
     }
   }
   return out;

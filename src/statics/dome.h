@@ -28,6 +28,12 @@ std::vector<Block> domeBlocks(const DomeSpec& spec);
 // radius ∓ thickness / 2, so a dome of the same radius, thickness and segments sits on it
 // face to face). Course c is turned by half a block when `bond` and c is odd (running bond
 // round the drum). Block (c, j) spans the polygons' corners j and j + 1, z ∈ [c h, (c+1) h].
+//
+// Windows (stack bond only): with windowWidth > 0, segments j ≡ windowEvery / 2 (mod
+// windowEvery) have an opening of that width through courses windowSill .. windowHead − 1,
+// centred on the segment and cut square to its faces (by the two planes parallel to its
+// radial mid-plane at ± windowWidth / 2). Each such course of the segment is two jambs; the
+// segment's block in course windowHead spans the opening as its lintel, bearing on both.
 struct DrumSpec {
   int courses = 4;
   int segments = 16;
@@ -35,6 +41,10 @@ struct DrumSpec {
   double thickness = 0.3;  // m
   double height = 2.0;     // m
   bool bond = true;
+  double windowWidth = 0;  // m; 0: no windows. At most 90 % of a segment's inner chord.
+  int windowEvery = 2;     // a window in every windowEvery-th segment
+  int windowSill = 1;      // first open course
+  int windowHead = 3;      // the course over the openings (their lintels), below `courses`
   double density = 2400.0;
 };
 

@@ -7,6 +7,7 @@
 #include "statics/column.h"
 #include "statics/dome.h"
 #include "statics/groin.h"
+#include "statics/hall.h"
 #include "statics/shapes.h"
 #include "statics/vault.h"
 #include "statics/wall.h"
@@ -296,7 +297,9 @@ ParametricModel abbeyExample() {
 ParametricModel mosqueExample() {
   ParametricModel m;
   m.name = "mosque";
-  m.description = "Fig. 10 (c): a dome with an oculus on a round drum, propped by radial flying buttresses on piers";
+  m.description =
+      "Fig. 10 (c): a dome with an oculus on a round drum pierced by windows, propped by radial flying buttresses on "
+      "piers";
   m.parameters.add(param("radius", 3.0, 0.5, 30.0, "middle-surface radius of the dome and the drum, m"));
   m.parameters.add(param("domeThickness", 0.25, 0.02, 3.0, "thickness of the dome, m"));
   m.parameters.add(param("drumHeight", 5.0, 0.5, 60.0, "height of the drum, m"));
@@ -304,10 +307,24 @@ ParametricModel mosqueExample() {
   m.parameters.add(param("courses", 5, 1, 100, "courses of the drum", false));
   m.parameters.add(param("segments", 16, 6, 400, "blocks round the drum and the dome", false));
   m.parameters.add(param("rings", 8, 1, 100, "rings of the dome up to its oculus", false));
+  m.parameters.add(
+      param("windowWidth", 0.5, 0.0, 20.0, "width of the windows in every other segment of the drum (0: none), m"));
+  m.parameters.add(param("windowSill", 1, 0, 99, "first course of the drum the windows open", false));
+  m.parameters.add(
+      param("windowHead", 4, 1, 99, "course of the drum over the windows, whose blocks are their lintels", false));
   m.parameters.add(param("flyers", 8, 0, 200, "radial flying buttresses, on every (segments / flyers)-th face of the drum", false));
   m.parameters.add(param("reach", 1.0, 0.2, 40.0, "radius of the flyers' quarter arcs: their reach from the drum and their rise, m"));
   m.parameters.add(param("flyerThickness", 0.4, 0.05, 3.0, "thickness of the flyers, m"));
   m.parameters.add(param("pierWidth", 0.6, 0.05, 10.0, "width of the flyers' piers, m"));
+  m.parameters.add(param("hall", 0, 0, 1, "a square hall under the drum (1) or the drum on the ground (0)", false));
+  m.parameters.add(param("hallHeight", 4.0, 0.5, 60.0, "height of the hall's walls, m"));
+  m.parameters.add(
+      param("hallWallThickness", 0.8, 0.05, 10.0, "thickness of the hall's walls (at least the drum's), m"));
+  m.parameters.add(param("hallCourses", 4, 3, 100, "courses of the hall's walls", false));
+  m.parameters.add(
+      param("hallWindowWidth", 1.0, 0.0, 50.0, "width of the window in each of the hall's walls (0: none), m"));
+  m.parameters.add(
+      param("slabThickness", 0.4, 0.05, 5.0, "thickness of the corner slabs (squinches) the drum sits on, m"));
   m.suggestedFree = {{"drumThickness", 0.3, 1.5}, {"reach", 0.5, 3.0}};
   m.build = [](const ParameterSet& p) {
     const int segments = count(p, "segments"), flyers = count(p, "flyers");
@@ -318,8 +335,14 @@ ParametricModel mosqueExample() {
     drum.thickness = p["drumThickness"];
     drum.height = p["drumHeight"];
     // Stack bond: every course has its faces in the same vertical planes, so a flyer's head
-    // lies flat against the drum whatever courses it spans.
+    // lies flat against the drum whatever courses it spans, and a window's jambs stand in
+    // their segment.
     drum.bond = false;
+    // Windows in the segments between the flyers' faces (those start at segment 0).
+    drum.windowWidth = p["windowWidth"];
+    drum.windowEvery = 2;
+    drum.windowSill = count(p, "windowSill");
+    drum.windowHead = count(p, "windowHead");
     DomeSpec dome;
     dome.rings = count(p, "rings");
     dome.segments = segments;
@@ -329,20 +352,40 @@ ParametricModel mosqueExample() {
       throw Error("mosque: the dome (" + std::to_string(dome.thickness) + " m) is thicker than the drum that carries it (" +
                   std::to_string(drum.thickness) + " m)");
     StructureBuilder b;
-    b.add("drum", drumBlocks(drum));
-    b.add("dome", domeBlocks(dome), Vec3(0.0, 0.0, drum.height));
+    double base = 0;        // where the drum stands
+    double hallCorner = 0;  // the hall's outer corner's distance from the axis
+    if (count(p, "hall")) {
+      SquareHallSpec hall;
+      hall.radius = drum.radius;
+      hall.wallThickness = p["hallWallThickness"];
+      hall.height = p["hallHeight"];
+      hall.courses = count(p, "hallCourses");
+      hall.windowWidth = p["hallWindowWidth"];
+      hall.slabThickness = p["slabThickness"];
+      hall.cornerLine = squinchLine(hall, drum.radius - drum.thickness / 2, drum.radius + drum.thickness / 2, segments);
+      b.add("hall", squareHallBlocks(hall));
+      base = hall.height + hall.slabThickness;
+      hallCorner = (hall.radius + hall.wallThickness / 2) * std::numbers::sqrt2;
+    }
+    b.add("drum", drumBlocks(drum), Vec3(0.0, 0.0, base));
+    b.add("dome", domeBlocks(dome), Vec3(0.0, 0.0, base + drum.height));
     if (flyers > 0) {
       if (segments % flyers) throw Error("mosque: " + std::to_string(flyers) + " flyers do not divide " + std::to_string(segments) + " segments");
       FlyingButtressSpec f;
       f.radius = p["reach"];
       f.thickness = p["flyerThickness"];
       f.pierWidth = p["pierWidth"];
-      f.pierHeight = drum.height - f.thickness / 2 - f.radius;
+      f.pierHeight = base + drum.height - f.thickness / 2 - f.radius;
       if (!(f.pierHeight > 0)) throw Error("mosque: the flyers' reach leaves no pier (reach ≥ drum height − flyer thickness / 2)");
       const double face = 2 * (drum.radius + drum.thickness / 2) * std::sin(std::numbers::pi / segments);
       f.depth = std::min(0.6, 0.5 * face);
       // The drum's outer faces lie at the apothem of its outer polygon.
       const double apothem = (drum.radius + drum.thickness / 2) * std::cos(std::numbers::pi / segments);
+      // The piers stand on the ground outside the hall: clear of its corners' circle.
+      if (hallCorner > 0 && apothem + f.radius < hallCorner)
+        throw Error("mosque: the flyers' piers (from " + std::to_string(apothem + f.radius) +
+                    " m out) would stand in the hall (its corners " + std::to_string(hallCorner) +
+                    " m out); reach further");
       for (int k = 0; k < flyers; ++k) {
         const double angle = 2 * std::numbers::pi * (k * (segments / flyers) + 0.5) / segments;
         b.add("flyer " + std::to_string(k), rotatedZ(placed(flyingButtressBlocks(f), Vec3(apothem, -f.depth / 2, 0.0)), angle));
@@ -351,6 +394,21 @@ ParametricModel mosqueExample() {
     b.groundUnder(1.0);
     return b.build();
   };
+  return m;
+}
+
+ParametricModel mosqueHallExample() {
+  // Fig. 10 (a, d): the mosque's dome and windowed drum on a square hall, without flyers.
+  ParametricModel m = mosqueExample();
+  m.name = "mosque-hall";
+  m.description =
+      "Fig. 10 (a, d): a dome on a windowed drum over a square hall (corner slabs turn its walls' square into an "
+      "octagon), "
+      "no flyers";
+  for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double>>{
+           {"hall", 1}, {"flyers", 0}, {"drumThickness", 0.5}, {"windowWidth", 0.9}})
+    m.parameters.set(name, value);
+  m.suggestedFree = {{"windowWidth", 0.1, 0.9}};
   return m;
 }
 
@@ -393,7 +451,8 @@ ParametricModel groinVaultExample() {
 }
 
 std::vector<std::string> exampleNames() {
-  return {"tower", "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch", "chapel", "abbey", "mosque", "groin-vault"};
+  return {"tower",  "arch-on-columns", "barrel-vault", "flying-buttresses", "bezier-arch",
+          "chapel", "abbey",           "mosque",       "mosque-hall",       "groin-vault"};
 }
 
 ParametricModel exampleByName(const std::string& name) {
@@ -405,6 +464,7 @@ ParametricModel exampleByName(const std::string& name) {
   if (name == "chapel") return chapelExample();
   if (name == "abbey") return abbeyExample();
   if (name == "mosque") return mosqueExample();
+  if (name == "mosque-hall") return mosqueHallExample();
   if (name == "groin-vault") return groinVaultExample();
   std::string known;
   for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;

@@ -50,9 +50,18 @@ ParametricModel abbeyExample();
 
 // Fig. 10 (c): a hemispherical dome (`rings` rings of `segments` voussoirs up to a 10° oculus)
 // on a round drum of `courses` courses, propped by `flyers` radial flying buttresses whose
-// heads lie against the drum's faces at its top and whose piers stand on the ground (272
-// blocks by default). Free by default: drumThickness and reach.
+// heads lie against the drum's faces at its top and whose piers stand on the ground. Every
+// other segment of the drum (those between the flyers) has a window of `windowWidth` from
+// course `windowSill` to a lintel in course `windowHead` (drumBlocks). With `hall` = 1 the
+// drum stands on a square hall (squareHallBlocks: walls with a window each, corner slabs
+// under the drum; hall.h). 296 blocks by default (0.5 m windows, no hall). Free by default:
+// drumThickness and reach.
 ParametricModel mosqueExample();
+
+// Fig. 10 (a, d): mosqueExample with its square hall and no flyers, a 0.5 m drum and 0.9 m
+// windows (which do not stand). Free by default: windowWidth in [0.1, 0.9] (the search
+// narrows the windows).
+ParametricModel mosqueHallExample();
 
 // A groin vault (groin.h) of `voussoirs` rows per web and `courses` along each web's axis on
 // four square corner piers of `pierWidth` and `pierHeight` in `drums` courses (12 voussoirs,

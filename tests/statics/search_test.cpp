@@ -215,10 +215,11 @@ TEST(ParameterSearch, ChapelOfFourParametersIsMadeToStand) {
 
 // Fig. 10 (c, d): radial flying buttresses carry the dome's thrust away from the drum, so the
 // drum it needs is thinner with them than without. The least drum thickness that stands (LP
-// bisection, the flyers' reach fixed) is the oracle for both.
+// bisection, the flyers' reach fixed, no windows) is the oracle for both.
 TEST(ParameterSearch, RadialFlyersLetTheMosquesDrumBeThinner) {
   ParametricModel m = mosqueExample();
   m.parameters.set("reach", 1.7);
+  m.parameters.set("windowWidth", 0.0);
   auto least = [&](int flyers) {
     ParameterSet p = m.parameters;
     p.set("flyers", flyers);
@@ -234,6 +235,50 @@ TEST(ParameterSearch, RadialFlyersLetTheMosquesDrumBeThinner) {
   EXPECT_LT(with, without - 0.05) << "with flyers " << with << " m, without " << without << " m";
   // And the search makes the default (a 0.3 m drum) stand.
   expectMadeToStand(mosqueExample());
+}
+
+// Fig. 10 (c, d): with the flyers the drum's windows can be as wide as the template allows
+// (jambs of 5 % of a segment's inner chord), without them a 0.5 m drum stands only with
+// windows about half as wide: the widest window that stands (LP bisection over its width,
+// the drum and the flyers' reach fixed) is the oracle.
+TEST(ParameterSearch, WithoutFlyersTheMosquesDrumNeedsSmallerWindows) {
+  ParametricModel m = mosqueExample();
+  m.parameters.set("reach", 1.7);
+  m.parameters.set("drumThickness", 0.5);
+  const double widest = 0.95;  // 0.9 of the inner chord 2 · 2.75 m · sin 11.25° = 1.073 m is 0.966 m
+  auto standsWith = [&](int flyers, double width) {
+    ParameterSet p = m.parameters;
+    p.set("flyers", flyers);
+    p.set("windowWidth", width);
+    return checkFeasibility(m.build(p)).feasible;
+  };
+  EXPECT_TRUE(standsWith(8, widest));
+  EXPECT_FALSE(standsWith(0, widest));
+  const double without = bisectThreshold([&](double w) { return standsWith(0, w); }, 0.0, widest, 0.01, "windowWidth");
+  std::printf("widest window in a 0.5 m drum: %.3f m without flyers, at least %.2f m with\n", without, widest);
+  EXPECT_LT(without, widest - 0.2);
+  EXPECT_GT(without, 0.1);  // a drum this thick does take some window
+}
+
+// Fig. 10 (a, d): the domed square hall without flyers does not stand with 0.9 m windows in
+// its 0.5 m drum; the search narrows them until it stands, no wider than the widest window
+// that stands (LP bisection).
+TEST(ParameterSearch, TheMosqueHallsSearchNarrowsItsWindows) {
+  const ParametricModel m = mosqueHallExample();
+  ASSERT_EQ(m.suggestedFree.size(), 1u);
+  const SearchResult r = expectMadeToStand(m);
+  const double widest = bisectThreshold(
+      [&](double w) {
+        ParameterSet p = m.parameters;
+        p.set("windowWidth", w);
+        return checkFeasibility(m.build(p)).feasible;
+      },
+      0.1, 0.9, 0.005, "windowWidth");
+  std::printf("mosque hall: the search's windows %.3f m, the widest that stand %.3f m\n", r.values["windowWidth"],
+              widest);
+  EXPECT_LT(r.values["windowWidth"], 0.9);
+  EXPECT_LE(r.values["windowWidth"], widest + 0.005);
+  EXPECT_GE(r.values["windowWidth"], 0.1);
 }
 
 // Fig. 13: as the span of the vault grows, the buttress width is searched again from the last

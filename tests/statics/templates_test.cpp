@@ -317,6 +317,78 @@ TEST(Templates, DomeVolumeApproachesItsShellAndHasTheHandCountedContacts) {
   EXPECT_GT(previous, 0.98 * shell);
 }
 
+// A drum's blocks are prisms on the ring between two regular n-gons, (n/2)(ro² − ri²) sin(2π/n)
+// in plan. A window cuts, through each course it opens, a slab w wide across the segment
+// between its inner and outer chords, w·t·cos(π/n) in plan, and splits the segment's block
+// into two jambs; the block over it (its lintel) bears on both jambs, over the segment's
+// plan less the opening. Mirror symmetry: the jambs are mirror images in the segment's plane.
+TEST(Templates, DrumWindowsCutTheirOpeningsAndTheLintelsBearOnTheJambs) {
+  DrumSpec d;
+  d.courses = 5;
+  d.segments = 16;
+  d.radius = 3.0;
+  d.thickness = 0.4;
+  d.height = 5.0;
+  d.bond = false;
+  const double ri = d.radius - d.thickness / 2, ro = d.radius + d.thickness / 2, h = d.height / d.courses;
+  const double ring = 8 * (ro * ro - ri * ri) * std::sin(2 * std::numbers::pi / 16);
+  const double opening = d.thickness * std::cos(std::numbers::pi / 16);  // per metre of window width
+  EXPECT_NEAR(totalVolume(onGround(drumBlocks(d))), ring * d.height, 1e-9);
+  d.windowWidth = 0.7;
+  d.windowSill = 1;
+  d.windowHead = 4;
+  const std::vector<Block> blocks = drumBlocks(d);
+  const int windows = 8, openCourses = 3;
+  EXPECT_EQ(blocks.size(), std::size_t(16 * 5 + windows * openCourses));
+  const Assembly as = onGround(blocks);
+  EXPECT_NEAR(totalVolume(as), ring * d.height - windows * openCourses * h * d.windowWidth * opening, 1e-9);
+  // Segment 1 (the first window) in course 1: its jambs mirror each other in the plane at
+  // angle 3π/16, and the gap between them is the window's width.
+  const double mid = 3 * std::numbers::pi / 16;
+  const Vec3 u(std::cos(mid), std::sin(mid), 0.0), v(-std::sin(mid), std::cos(mid), 0.0);
+  const Block* jamb[2] = {nullptr, nullptr};
+  for (const Block& b : as.blocks) {
+    if (b.name == "t/course 1 block 1 jamb 0") jamb[0] = &b;
+    if (b.name == "t/course 1 block 1 jamb 1") jamb[1] = &b;
+  }
+  ASSERT_TRUE(jamb[0] && jamb[1]);
+  double inner0 = -1e9, inner1 = 1e9;
+  for (const Vec3& p : jamb[0]->vertices) {
+    inner0 = std::max(inner0, dot(p, v));
+    const Vec3 mirrored = p - 2 * dot(p, v) * v;
+    bool found = false;
+    for (const Vec3& q : jamb[1]->vertices) found = found || (q - mirrored).norm() < 1e-12;
+    EXPECT_TRUE(found) << p;
+  }
+  for (const Vec3& p : jamb[1]->vertices) inner1 = std::min(inner1, dot(p, v));
+  EXPECT_NEAR(inner1 - inner0, d.windowWidth, 1e-12);
+  // Course 4's block over the window touches the two jambs below it over its plan less the
+  // opening; the neighbouring segments' blocks touch theirs over the whole plan.
+  const std::vector<Interface> contacts = prepareEquilibrium(as, {}).contacts.interfaces;
+  double lintel = 0, plain = 0;
+  for (const Interface& f : contacts) {
+    const std::string& a = as.blocks[std::size_t(f.a)].name;
+    const std::string& b = as.blocks[std::size_t(f.b)].name;
+    if ((a == "t/course 4 block 1") != (b == "t/course 4 block 1") &&
+        (a.rfind("t/course 3 block 1 jamb", 0) == 0 || b.rfind("t/course 3 block 1 jamb", 0) == 0))
+      lintel += f.area;
+    if ((a == "t/course 4 block 2" && b == "t/course 3 block 2") ||
+        (b == "t/course 4 block 2" && a == "t/course 3 block 2"))
+      plain += f.area;
+  }
+  EXPECT_NEAR(plain, ring / 16, 1e-12);
+  EXPECT_NEAR(lintel, ring / 16 - d.windowWidth * opening, 1e-12);
+  EXPECT_TRUE(stands(as));
+  d.windowWidth = 0.95 * 2 * ri * std::sin(std::numbers::pi / 16);  // jambs under 5 % of the inner chord
+  EXPECT_THROW(drumBlocks(d), Error);
+  d.windowWidth = 0.7;
+  d.bond = true;
+  EXPECT_THROW(drumBlocks(d), Error);
+  d.bond = false;
+  d.windowHead = 5;  // no course over the windows
+  EXPECT_THROW(drumBlocks(d), Error);
+}
+
 // Heyman (The Stone Skeleton, 1995): a hemispherical masonry dome needs t/R ≥ 0.042. A dome
 // of 10 rings × 16 voussoirs with a 2° oculus (nearly closed) stands from the same thickness.
 TEST(Templates, HemisphericalDomeMinimumThicknessIsHeymans) {
@@ -350,8 +422,17 @@ TEST(Templates, ExamplesHaveThePapersBlockCounts) {
   // Fig. 1 (Table 1: 986): 26 rings of 12 voussoirs, 5 wall courses, 5 flyer voussoirs and 3
   // pier courses a side.
   EXPECT_EQ(abbeyExample().build(abbeyExample().parameters).blocks.size(), 26u * (12 + 2 * (5 + 5 + 3)) + 1);
-  // Fig. 10 (c): 5 drum courses and 8 dome rings of 16, and 8 flyers of 5 voussoirs on 3 courses.
-  EXPECT_EQ(mosqueExample().build(mosqueExample().parameters).blocks.size(), 16u * 5 + 16 * 8 + 8 * (5 + 3) + 1);
+  // Fig. 10 (c): 5 drum courses and 8 dome rings of 16, and 8 flyers of 5 voussoirs on 3
+  // courses; 8 windows through 3 courses each add a jamb a course.
+  EXPECT_EQ(mosqueExample().build(mosqueExample().parameters).blocks.size(),
+            16u * 5 + 8 * 3 + 16 * 8 + 8 * (5 + 3) + 1);
+  // Fig. 10 (a, d): no flyers; the hall's four walls (each the wall template, a + b = 6 m long,
+  // 0.8 m thick, 4 courses of 1 m and a 1 m window) and 8 slabs under the drum.
+  {
+    const WallSpec wall{6.0, 0.8, 4.0, 4, 1.0, {{2.6 - 0.5, 1.0, 1, 3}}, 2400.0};
+    EXPECT_EQ(mosqueHallExample().build(mosqueHallExample().parameters).blocks.size(),
+              16u * 5 + 8 * 3 + 16 * 8 + 4 * wallBlocks(wall).size() + 8 + 1);
+  }
   EXPECT_THROW(exampleByName("cathedral"), Error);
 }
 
