@@ -695,6 +695,15 @@ void App::registerActions() {
        [this] { statics_.toggleLandscapeGrid(staticsHost()); },
        masonrySelected,
        [this] { return statics_.landscapeGridChosen(); }});
+  add({"statics.analyse_scene",
+       "Statics",
+       "Analyse Every Block in the Scene",
+       "Analyse every object of kind Block in the Scene together (each connected piece one block, density by "
+       "material, the objects ticked in the statics panel carried as loads), and show it in the view.",
+       {},
+       false,
+       [this] { statics_.analyseScene(staticsHost()); },
+       masonrySelected});
   add({"statics.sim_close",
        "Statics",
        "Simulate: Close",
@@ -1459,6 +1468,7 @@ const DocObject* App::selectedMasonry() const {
 StaticsHost App::staticsHost() {
   StaticsHost host;
   host.doc = &history_.current();
+  host.scene = &scene_;
   host.object = selected_.value_or(0);
   host.wait = scripted();
   host.frameSeconds = frameSeconds_;

@@ -22,6 +22,49 @@ statics::AnalysisOptions analysisOptionsOf(const MasonrySpec& spec) {
   return options;
 }
 
+namespace {
+
+// The view's blocks (faces, fixed) and model size from an assembly.
+void fillBlocks(MasonryView& view, const statics::Assembly& assembly) {
+  BBox box;
+  for (const statics::Block& b : assembly.blocks) {
+    std::vector<std::vector<Vec3>> faces;
+    for (const auto& f : b.faces) {
+      std::vector<Vec3> corners;
+      for (int v : f) corners.push_back(b.vertices[static_cast<std::size_t>(v)]);
+      faces.push_back(std::move(corners));
+    }
+    for (const Vec3& p : b.vertices) box.add(p);
+    view.blockFaces.push_back(std::move(faces));
+    view.fixed.push_back(b.fixed);
+  }
+  view.modelSize = box.empty() ? 1.0 : std::max(box.diagonal(), 1e-9);
+}
+
+}  // namespace
+
+MasonryView analyseSceneBlocks(const Scene& scene, const statics::SceneBlockOptions& blocks,
+                               const statics::AnalysisOptions& options, Progress* progress) {
+  MasonryView view;
+  view.fromScene = true;
+  try {
+    const statics::SceneAssembly sa = statics::assemblyFromScene(scene, blocks);
+    view.sceneLoads = sa.nonstructuralPieces;
+    view.sceneLoadWeight = sa.nonstructuralWeight;
+    view.groundPlaneAdded = sa.groundPlaneAdded;
+    fillBlocks(view, sa.assembly);
+    if (progress && progress->cancelled()) throw Cancelled();
+    view.result = statics::analyse(sa.assembly, options);
+    view.tensionShare = blockTensionShares(sa.assembly.blocks.size(), view.result);
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const std::exception& e) {
+    view.error = e.what();
+    view.tensionShare.assign(view.blockFaces.size(), 0.0);
+  }
+  return view;
+}
+
 MasonryView analyseMasonry(const MasonrySpec& spec, Progress* progress) {
   return analyseMasonry(spec, analysisOptionsOf(spec), progress);
 }
@@ -34,19 +77,7 @@ MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptio
     view.parameters = model.parameters.all();
     view.suggestedFree = model.suggestedFree;
     const statics::Assembly assembly = model.build(model.parameters);
-    BBox box;
-    for (const statics::Block& b : assembly.blocks) {
-      std::vector<std::vector<Vec3>> faces;
-      for (const auto& f : b.faces) {
-        std::vector<Vec3> corners;
-        for (int v : f) corners.push_back(b.vertices[static_cast<std::size_t>(v)]);
-        faces.push_back(std::move(corners));
-      }
-      for (const Vec3& p : b.vertices) box.add(p);
-      view.blockFaces.push_back(std::move(faces));
-      view.fixed.push_back(b.fixed);
-    }
-    view.modelSize = box.empty() ? 1.0 : std::max(box.diagonal(), 1e-9);
+    fillBlocks(view, assembly);
     if (progress && progress->cancelled()) throw Cancelled();
     view.result = statics::analyse(assembly, options);
     view.tensionShare = blockTensionShares(assembly.blocks.size(), view.result);

@@ -9,6 +9,7 @@
 #include "core/progress.h"
 #include "statics/analysis.h"
 #include "statics/parameters.h"
+#include "statics/scene_blocks.h"
 
 #include <array>
 #include <string>
@@ -28,6 +29,11 @@ struct MasonryView {
   statics::AnalysisResult result;
   double modelSize = 1.0;  // the model's bounding-box diagonal, m
   std::string error;       // the model could not be built or analysed ("" = fine)
+  // Set by analyseSceneBlocks: the blocks are the Scene's (no spec, no parameters).
+  bool fromScene = false;
+  int sceneLoads = 0;             // nonstructural pieces carried as point loads
+  double sceneLoadWeight = 0;     // their weight, N
+  bool groundPlaneAdded = false;  // no piece was tagged "ground": a ground slab was added
 };
 
 // Builds and analyses the spec's model with its friction and kern. A model that cannot be
@@ -37,6 +43,14 @@ MasonryView analyseMasonry(const MasonrySpec& spec, Progress* progress = nullptr
 // The same with analysis settings of the caller's (the CLI's --friction-sides and overrides).
 MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptions& options,
                            Progress* progress = nullptr);
+
+// The analysis of the blocks of a Scene (statics/scene_blocks.h: every connected piece of the
+// objects of kind Block one block with its material's density, pieces tagged "ground" fixed,
+// nonstructural shapes carried as loads), as the same view: the assembly of several masonry
+// objects together, or of blocks that no template made. No spec and no parameters. A Scene
+// whose blocks cannot be made or analysed gives a view with `error` naming the object and piece.
+MasonryView analyseSceneBlocks(const Scene& scene, const statics::SceneBlockOptions& blocks,
+                               const statics::AnalysisOptions& options, Progress* progress = nullptr);
 
 // Each block's tension T_b = Σ f_n⁻ over the contact vertices of every interface it takes
 // part in, divided by the largest T_b. All zero when no vertex carries more than the tension

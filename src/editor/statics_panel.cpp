@@ -44,7 +44,7 @@ bool collect(std::unique_ptr<BackgroundJob>& job, bool wait, std::string* error)
 }  // namespace
 
 StaticsPanel::~StaticsPanel() {
-  for (auto* job : {&analysis_, &search_, &resolve_})
+  for (auto* job : {&analysis_, &search_, &resolve_, &sceneJob_})
     if (*job) {
       (*job)->progress().cancel();
       (*job)->wait();
@@ -62,6 +62,8 @@ void StaticsPanel::reset() {
   landscapeChoice2_.clear();
   sim_.reset();
   removeChoice_.clear();
+  if (sceneJob_) sceneJob_->progress().cancel();
+  sceneView_.reset();
 }
 
 void StaticsPanel::toggleLandscapeGrid(const StaticsHost& host) {
@@ -199,7 +201,42 @@ void StaticsPanel::updateResolve(const StaticsHost& host) {
   if (host.wait) updateResolve(host);
 }
 
+void StaticsPanel::analyseScene(const StaticsHost& host) {
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec || !host.scene || sceneJob_) return;
+  statics::SceneBlockOptions blocks;
+  for (ObjectId id : sceneLoads_)
+    if (host.scene->hasObject(id)) blocks.nonstructural.push_back(id);
+  const statics::AnalysisOptions options = analysisOptionsOf(*spec);
+  auto scene = std::make_shared<Scene>(*host.scene);  // the worker's own copy
+  auto result = std::make_shared<MasonryView>();
+  sceneResult_ = result;
+  sceneJobRevision_ = host.scene->revision();
+  sceneJob_ =
+      std::make_unique<BackgroundJob>("Statics of the Scene", [scene, blocks, options, result](Progress& progress) {
+        *result = analyseSceneBlocks(*scene, blocks, options, &progress);
+      });
+  if (host.wait) {
+    std::string error;
+    if (collect(sceneJob_, true, &error)) {
+      sceneView_ = std::move(*sceneResult_);
+      sceneRevision_ = sceneJobRevision_;
+    }
+  }
+}
+
 void StaticsPanel::update(const StaticsHost& host) {
+  if (sceneJob_) {
+    std::string error;
+    if (collect(sceneJob_, host.wait, &error)) {
+      sceneView_ = std::move(*sceneResult_);
+      sceneRevision_ = sceneJobRevision_;
+      if (!sceneView_->error.empty()) host.log("Statics of the Scene: " + sceneView_->error, true);
+    } else if (!error.empty()) {
+      host.log("Statics of the Scene: " + error, true);
+    }
+  }
   if (sim_) {
     const DocObject* o = objectOf(host);
     const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
@@ -392,6 +429,13 @@ void StaticsPanel::drawSimulation(const StaticsHost& host) {
 }
 
 void StaticsPanel::drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const {
+  if (sceneShown()) {
+    if (!sceneView_->error.empty()) return;
+    const MasonryPicture picture = masonryPicture(*sceneView_, colours_, arrows_);
+    for (const ColouredPolygon& p : picture.polygons) overlay.polygon(p.corners, p.color);
+    for (const ForceArrow& a : picture.arrows) onTop.arrow(a.from, a.to, arrowColor(a), 0.25);
+    return;
+  }
   if (!view_ || !(view_->spec == spec) || !view_->error.empty()) return;
   if (shownSimulation(spec)) return;  // the analysis is of the design, not of the moving blocks
   const MasonryPicture picture = masonryPicture(*view_, colours_, arrows_);
@@ -692,6 +736,58 @@ void StaticsPanel::drawLandscape(const MasonrySpec& spec) {
   ImGui::Text("stands at %zu of %zu samples", standing, landscape_->measure.size());
 }
 
+void StaticsPanel::drawScene(const StaticsHost& host) {
+  ImGui::Separator();
+  ImGui::TextDisabled("Every block in the Scene");
+  if (!host.scene) return;
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextDisabled(
+      "Every object of kind Block analysed together (each connected piece one block, density "
+      "by material; pieces tagged \"ground\" fixed, else a ground plane), with the objects "
+      "ticked below carried as loads by the blocks under them.");
+  ImGui::PopTextWrapPos();
+  int others = 0;
+  for (const auto& [id, info] : host.scene->objects()) {
+    if (info.kind == Kind::Block) continue;
+    if (others++ == 0) ImGui::TextDisabled("carried as loads:");
+    bool load = sceneLoads_.count(id) > 0;
+    ImGui::PushID(static_cast<int>(id));
+    if (ImGui::Checkbox(info.name.empty() ? "(unnamed)" : info.name.c_str(), &load)) {
+      if (load)
+        sceneLoads_.insert(id);
+      else
+        sceneLoads_.erase(id);
+    }
+    ImGui::PopID();
+  }
+  if (sceneJob_) {
+    ImGui::TextDisabled("analysing the Scene...");
+  } else if (ImGui::Button("Analyse the Scene")) {
+    analyseScene(host);
+  }
+  if (!sceneView_) return;
+  ImGui::SameLine();
+  ImGui::Checkbox("Show in the view", &showScene_);
+  if (sceneRevision_ != host.scene->revision()) ImGui::TextDisabled("(the Scene has changed since: analyse again)");
+  const MasonryView& v = *sceneView_;
+  if (!v.error.empty()) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored(kBad, "%s", v.error.c_str());
+    ImGui::PopTextWrapPos();
+    return;
+  }
+  const statics::AnalysisResult& r = v.result;
+  if (r.feasible)
+    ImGui::TextColored(kGood, "the Scene's blocks stand together");
+  else
+    ImGui::TextColored(kBad, "the Scene's blocks do not stand: they need tension to hold");
+  ImGui::Text("y/W² = %.4g, W = %.4g N, %zu blocks%s", r.yNormalised, r.totalWeight, v.blockFaces.size(),
+              v.groundPlaneAdded ? " (with a ground plane)" : "");
+  ImGui::Text("%zu interfaces, %zu tension sites; solver: %s", r.interfaces.size(), r.tensionSites.size(),
+              statics::toString(r.status).c_str());
+  if (v.sceneLoads > 0) ImGui::Text("%d pieces carried as loads, %.4g N", v.sceneLoads, v.sceneLoadWeight);
+}
+
 void StaticsPanel::draw(const StaticsHost& host, float x, float y, float w, float h) {
   const DocObject* o = objectOf(host);
   const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
@@ -702,6 +798,7 @@ void StaticsPanel::draw(const StaticsHost& host, float x, float y, float w, floa
   ImGui::Text("%s: masonry model \"%s\"", o->name.c_str(), spec->model.c_str());
   drawParameters(host, *spec);
   drawAnalysis(*spec);
+  drawScene(host);
   drawSearch(host);
   drawSimulation(host);
   drawLandscape(*spec);

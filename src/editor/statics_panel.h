@@ -20,15 +20,18 @@
 #include "statics/search.h"
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace corbel::editor {
 
 struct StaticsHost {
   const Document* doc = nullptr;
+  const Scene* scene = nullptr;  // the built Scene (for "Every block in the Scene")
   ObjectId object = 0;
   bool wait = false;        // scripted runs: wait for the workers so every frame shows the current state
   double frameSeconds = 0;  // wall time since the last frame (the simulation plays by it)
@@ -70,6 +73,12 @@ class StaticsPanel {
   void simulateShake(const StaticsHost& host);
   void simulateRemove(const StaticsHost& host);  // the block chosen in the list (the top one at first)
   void closeSimulation() { sim_.reset(); }
+  // "Every block in the Scene" (statics/scene_blocks.h): every object of kind Block analysed
+  // together, with the objects chosen in the list carried as loads, the selected object's
+  // friction and kern; on a worker. While its result is shown, the view draws it in place of
+  // the selected model's analysis.
+  void analyseScene(const StaticsHost& host);
+  bool sceneShown() const { return sceneView_.has_value() && showScene_; }
   bool simulating() const { return sim_ != nullptr; }
   bool simulationPlaying() const { return sim_ && sim_->playing(); }
   // The simulation to draw in place of the object's design, when there is one of `spec`.
@@ -88,6 +97,7 @@ class StaticsPanel {
   void drawSearch(const StaticsHost& host);
   void drawLandscape(const MasonrySpec& spec);
   void drawSimulation(const StaticsHost& host);
+  void drawScene(const StaticsHost& host);
   Simulation* simulationFor(const StaticsHost& host);               // made on first use; null when it cannot be
   using Range = std::pair<std::string, std::pair<double, double>>;  // a parameter and its bounds
   // The landscape's parameter and range for a spec: the chosen one, else the first free one.
@@ -134,6 +144,14 @@ class StaticsPanel {
   std::unique_ptr<Simulation> sim_;
   std::string removeChoice_;  // the block the remove tool takes ("" = the top one)
   bool removeOnClick_ = false;
+
+  std::unique_ptr<BackgroundJob> sceneJob_;
+  std::shared_ptr<MasonryView> sceneResult_;
+  std::uint64_t sceneJobRevision_ = 0;
+  std::optional<MasonryView> sceneView_;
+  std::uint64_t sceneRevision_ = 0;  // the Scene's revision when sceneView_ was analysed
+  std::set<ObjectId> sceneLoads_;    // objects carried as loads
+  bool showScene_ = true;
 
   bool colours_ = true, arrows_ = true;
 };

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -428,6 +429,84 @@ TEST(SearchPathOnGrid, TakesEachEvaluationsValuesOfTheGridsParameters) {
   const std::vector<statics::FreeParameter> other = {{"thickness", 0.05, 0.5}, {"span", 1, 3}};
   EXPECT_TRUE(searchPathOnGrid(g, other, evaluations).empty());
   EXPECT_TRUE(searchPathOnGrid(g, {same[0]}, {{0.3}}).empty());
+}
+
+// ---- Every block in the Scene (analyseSceneBlocks) ----
+
+// Three unit cubes, each shifted by `shift` further in x, from (x0, 0, 0).
+MeshData stackMesh(double x0, double shift) {
+  MeshData m;
+  const int stone = m.addMaterial("stone");
+  for (int k = 0; k < 3; ++k) {
+    const statics::Block b = statics::boxBlock("c", Vec3(x0 + k * shift, 0, k), Vec3(x0 + k * shift + 1, 1, k + 1));
+    const int first = int(m.points.size());
+    for (const Vec3& v : b.vertices) m.addPoint(v);
+    for (const auto& f : b.faces) {
+      std::vector<int> loop;
+      for (int v : f) loop.push_back(first + v);
+      m.addFace(loop, 0, stone);
+    }
+  }
+  return m;
+}
+
+statics::Assembly stackAssembly(double shift) {
+  statics::Assembly a;
+  for (int k = 0; k < 3; ++k)
+    a.blocks.push_back(statics::boxBlock("c", Vec3(k * shift, 0, k), Vec3(k * shift + 1, 1, k + 1)));
+  a.blocks.push_back(statics::boxBlock("ground", Vec3(-3, -3, -1), Vec3(4, 4, 0), 2400.0, true));
+  return a;
+}
+
+// Two stacks ten metres apart share only the fixed ground, so the penalty QP splits into the
+// two stacks' own: y of the Scene is the sum of each stack's y analysed alone (both past
+// tipping: the upper pair's centroid 0.5 + 1.5 s lies beyond the bottom cube for s > 1/3).
+TEST(SceneStatics, TwoSeparateStructuresMeasureTheSumOfTheirOwnTension) {
+  Scene scene;
+  scene.replaceObject(1, Kind::Block, "left", stackMesh(0, 0.45));
+  scene.replaceObject(2, Kind::Block, "right", stackMesh(10, 0.6));
+  const MasonryView v = analyseSceneBlocks(scene, {}, {});
+  ASSERT_TRUE(v.error.empty()) << v.error;
+  EXPECT_TRUE(v.fromScene);
+  EXPECT_TRUE(v.groundPlaneAdded);
+  ASSERT_EQ(v.blockFaces.size(), 7u);  // six cubes and the ground plane
+  EXPECT_EQ(std::count(v.fixed.begin(), v.fixed.end(), true), 1);
+  const statics::AnalysisResult a = statics::analyse(stackAssembly(0.45)), b = statics::analyse(stackAssembly(0.6));
+  ASSERT_GT(a.y, 0.0);
+  ASSERT_GT(b.y, 0.0);
+  EXPECT_FALSE(v.result.feasible);
+  EXPECT_NEAR(v.result.y, a.y + b.y, 1e-7 * (a.y + b.y));
+  EXPECT_NEAR(v.result.totalWeight, 6 * 2400 * 9.81, 1e-9);
+  EXPECT_DOUBLE_EQ(*std::max_element(v.tensionShare.begin(), v.tensionShare.end()), 1.0);
+}
+
+// A shape chosen as a load is carried by the blocks (its weight counted apart) and adds none; a Scene without blocks is
+// an error in the view, not an exception.
+TEST(SceneStatics, LoadsAddWeightAndNoBlocksIsAnError) {
+  Scene scene;
+  scene.replaceObject(1, Kind::Block, "stack", stackMesh(0, 0.0));
+  MeshData statue;
+  const int metal = statue.addMaterial("metal");
+  const statics::Block cube = statics::boxBlock("s", Vec3(0.25, 0.25, 3), Vec3(0.75, 0.75, 3.5));
+  for (const Vec3& p : cube.vertices) statue.addPoint(p);
+  for (const auto& f : cube.faces) statue.addFace(std::vector<int>(f.begin(), f.end()), 0, metal);
+  scene.replaceObject(2, Kind::Mass, "statue", statue);
+  statics::SceneBlockOptions blocks;
+  blocks.nonstructural = {2};
+  const MasonryView v = analyseSceneBlocks(scene, blocks, {});
+  ASSERT_TRUE(v.error.empty()) << v.error;
+  EXPECT_EQ(v.sceneLoads, 1);
+  EXPECT_NEAR(v.sceneLoadWeight, 0.125 * 7850 * 9.81, 1e-9);
+  EXPECT_EQ(v.blockFaces.size(), 4u);
+  // W, by which y is normalised, is the blocks' weight; the load comes on top of it.
+  EXPECT_NEAR(v.result.totalWeight, 3 * 2400 * 9.81, 1e-8);
+  EXPECT_TRUE(v.result.feasible);  // centred on a straight stack
+
+  Scene empty;
+  empty.replaceObject(2, Kind::Mass, "statue", statue);
+  const MasonryView none = analyseSceneBlocks(empty, {}, {});
+  EXPECT_FALSE(none.error.empty());
+  EXPECT_TRUE(none.blockFaces.empty());
 }
 
 }  // namespace
