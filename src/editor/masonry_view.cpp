@@ -43,40 +43,13 @@ void fillBlocks(MasonryView& view, const statics::Assembly& assembly) {
 
 }  // namespace
 
-MasonryView analyseSceneBlocks(const Scene& scene, const statics::SceneBlockOptions& blocks,
-                               const statics::AnalysisOptions& options, Progress* progress) {
-  MasonryView view;
-  view.fromScene = true;
+// Makes the assembly with `make` (which may fill in more of the view) and analyses it into
+// the view: the blocks, the result, the tension shares. An error other than Cancelled goes to
+// view.error, with what could be filled in kept.
+template <class Make>
+void analyseInto(MasonryView& view, const statics::AnalysisOptions& options, Progress* progress, Make make) {
   try {
-    const statics::SceneAssembly sa = statics::assemblyFromScene(scene, blocks);
-    view.sceneLoads = sa.nonstructuralPieces;
-    view.sceneLoadWeight = sa.nonstructuralWeight;
-    view.groundPlaneAdded = sa.groundPlaneAdded;
-    fillBlocks(view, sa.assembly);
-    if (progress && progress->cancelled()) throw Cancelled();
-    view.result = statics::analyse(sa.assembly, options);
-    view.tensionShare = blockTensionShares(sa.assembly.blocks.size(), view.result);
-  } catch (const Cancelled&) {
-    throw;
-  } catch (const std::exception& e) {
-    view.error = e.what();
-    view.tensionShare.assign(view.blockFaces.size(), 0.0);
-  }
-  return view;
-}
-
-MasonryView analyseMasonry(const MasonrySpec& spec, Progress* progress) {
-  return analyseMasonry(spec, analysisOptionsOf(spec), progress);
-}
-
-MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptions& options, Progress* progress) {
-  MasonryView view;
-  view.spec = spec;
-  try {
-    const statics::ParametricModel model = statics::modelOf(spec);
-    view.parameters = model.parameters.all();
-    view.suggestedFree = model.suggestedFree;
-    const statics::Assembly assembly = model.build(model.parameters);
+    const statics::Assembly assembly = make();
     fillBlocks(view, assembly);
     if (progress && progress->cancelled()) throw Cancelled();
     view.result = statics::analyse(assembly, options);
@@ -87,6 +60,35 @@ MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptio
     view.error = e.what();
     view.tensionShare.assign(view.blockFaces.size(), 0.0);
   }
+}
+
+MasonryView analyseSceneBlocks(const Scene& scene, const statics::SceneBlockOptions& blocks,
+                               const statics::AnalysisOptions& options, Progress* progress) {
+  MasonryView view;
+  view.fromScene = true;
+  analyseInto(view, options, progress, [&] {
+    statics::SceneAssembly sa = statics::assemblyFromScene(scene, blocks);
+    view.sceneLoads = sa.nonstructuralPieces;
+    view.sceneLoadWeight = sa.nonstructuralWeight;
+    view.groundPlaneAdded = sa.groundPlaneAdded;
+    return std::move(sa.assembly);
+  });
+  return view;
+}
+
+MasonryView analyseMasonry(const MasonrySpec& spec, Progress* progress) {
+  return analyseMasonry(spec, analysisOptionsOf(spec), progress);
+}
+
+MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptions& options, Progress* progress) {
+  MasonryView view;
+  view.spec = spec;
+  analyseInto(view, options, progress, [&] {
+    const statics::ParametricModel model = statics::modelOf(spec);
+    view.parameters = model.parameters.all();
+    view.suggestedFree = model.suggestedFree;
+    return model.build(model.parameters);
+  });
   return view;
 }
 
