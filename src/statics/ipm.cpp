@@ -673,10 +673,16 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // the stationarity residual, are ≥ 0 with the residual within the tolerance: those are the
   // QP's KKT conditions, sufficient for a convex QP. Rows that fail are moved between the two
   // sets and the polish tried again (kPolishRounds); a polish that never passes changes nothing.
-  VectorXd px(n), py(m), pxPrev(n), pgx(mi), pz(mi), pres(n), ptn(n), prhs(m), pddy(m), pcorr(n);
-  std::vector<Mat4> polishProjector(static_cast<std::size_t>(nb));  // N_j N_jᵀ
+  // The polish's vectors, sized only when it runs (a fresh vector costs its page faults on
+  // every solve, and most solves never polish).
+  VectorXd px, py, pxPrev, pgx, pz, pres, ptn, prhs, pddy, pcorr;
+  std::vector<Mat4> polishProjector;  // N_j N_jᵀ
   auto polish = [&]() -> bool {
     if (best.x.size() != n || bestS.size() != mi || mi == 0) return false;
+    for (VectorXd* v : {&px, &pxPrev, &pres, &ptn, &pcorr}) v->resize(n);
+    for (VectorXd* v : {&py, &prhs, &pddy}) v->resize(m);
+    for (VectorXd* v : {&pgx, &pz}) v->resize(mi);
+    polishProjector.resize(static_cast<std::size_t>(nb));
     std::vector<char> active(static_cast<std::size_t>(mi));
     for (int i = 0; i < mi; ++i) active[std::size_t(i)] = bestZ[i] > bestS[i];
     const double delta = kPolishProximal * std::max(1.0, qdiag.size() ? qdiag.maxCoeff() : 0.0);
