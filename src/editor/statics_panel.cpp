@@ -217,26 +217,22 @@ void StaticsPanel::analyseScene(const StaticsHost& host) {
       std::make_unique<BackgroundJob>("Statics of the Scene", [scene, blocks, options, result](Progress& progress) {
         *result = analyseSceneBlocks(*scene, blocks, options, &progress);
       });
-  if (host.wait) {
-    std::string error;
-    if (collect(sceneJob_, true, &error)) {
-      sceneView_ = std::move(*sceneResult_);
-      sceneRevision_ = sceneJobRevision_;
-    }
+  if (host.wait) collectScene(host);
+}
+
+void StaticsPanel::collectScene(const StaticsHost& host) {
+  std::string error;
+  if (collect(sceneJob_, host.wait, &error)) {
+    sceneView_ = std::move(*sceneResult_);
+    sceneRevision_ = sceneJobRevision_;
+    if (!sceneView_->error.empty()) host.log("Statics of the Scene: " + sceneView_->error, true);
+  } else if (!error.empty()) {
+    host.log("Statics of the Scene: " + error, true);
   }
 }
 
 void StaticsPanel::update(const StaticsHost& host) {
-  if (sceneJob_) {
-    std::string error;
-    if (collect(sceneJob_, host.wait, &error)) {
-      sceneView_ = std::move(*sceneResult_);
-      sceneRevision_ = sceneJobRevision_;
-      if (!sceneView_->error.empty()) host.log("Statics of the Scene: " + sceneView_->error, true);
-    } else if (!error.empty()) {
-      host.log("Statics of the Scene: " + error, true);
-    }
-  }
+  if (sceneJob_) collectScene(host);
   if (sim_) {
     const DocObject* o = objectOf(host);
     const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
@@ -429,16 +425,14 @@ void StaticsPanel::drawSimulation(const StaticsHost& host) {
 }
 
 void StaticsPanel::drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const {
-  if (sceneShown()) {
-    if (!sceneView_->error.empty()) return;
-    const MasonryPicture picture = masonryPicture(*sceneView_, colours_, arrows_);
-    for (const ColouredPolygon& p : picture.polygons) overlay.polygon(p.corners, p.color);
-    for (const ForceArrow& a : picture.arrows) onTop.arrow(a.from, a.to, arrowColor(a), 0.25);
-    return;
+  const MasonryView* shown = sceneShown() ? &*sceneView_ : nullptr;
+  if (!shown) {
+    if (!view_ || !(view_->spec == spec)) return;
+    if (shownSimulation(spec)) return;  // the analysis is of the design, not of the moving blocks
+    shown = &*view_;
   }
-  if (!view_ || !(view_->spec == spec) || !view_->error.empty()) return;
-  if (shownSimulation(spec)) return;  // the analysis is of the design, not of the moving blocks
-  const MasonryPicture picture = masonryPicture(*view_, colours_, arrows_);
+  if (!shown->error.empty()) return;
+  const MasonryPicture picture = masonryPicture(*shown, colours_, arrows_);
   for (const ColouredPolygon& p : picture.polygons) overlay.polygon(p.corners, p.color);
   for (const ForceArrow& a : picture.arrows) onTop.arrow(a.from, a.to, arrowColor(a), 0.25);
 }

@@ -98,6 +98,7 @@ class StaticsPanel {
   void drawLandscape(const MasonrySpec& spec);
   void drawSimulation(const StaticsHost& host);
   void drawScene(const StaticsHost& host);
+  void collectScene(const StaticsHost& host);                       // a finished "Analyse the Scene" into sceneView_
   Simulation* simulationFor(const StaticsHost& host);               // made on first use; null when it cannot be
   using Range = std::pair<std::string, std::pair<double, double>>;  // a parameter and its bounds
   // The landscape's parameter and range for a spec: the chosen one, else the first free one.
