@@ -50,7 +50,7 @@ usage:
   corbel-cli export PROJECT --out FILE.{obj,ply,off,glb} [--object NAME]
   corbel-cli check PROJECT        validate the file and every object's shell (JSON lines)
   corbel-cli extrude INPUT [--pitch DEG] [--wall-height M] [--out FILE.{obj,ply,off,glb}] [--stats]
-                    [--jobs N] [--library PROJECT] [--merge-coplanar] [--no-retry]
+                    [--jobs N] [--library PROJECT] [--merge-coplanar] [--no-retry] [--winding-rule]
                     INPUT: a project (its extrusion objects) or GeoJSON footprints (meters).
                     --pitch gives every edge one roof slope (default 45 for GeoJSON) over walls
                     --wall-height high (default 0). --stats prints one JSON line per building.
@@ -58,6 +58,8 @@ usage:
                     --merge-coplanar writes neighbouring faces in one plane as one face.
                     A building whose shell fails is rebuilt with 10-1000x tolerances and kept
                     only where two rebuilds agree (a warning says so); --no-retry does not.
+                    --winding-rule rebuilds a plan that overlaps itself after an event by the
+                    winding rule (Sec. 4.4) instead of warning; off by default (docs/extrude.md).
   corbel-cli statics arch --blocks N --thickness T [--tilt DEG] [--friction A] [--kern S]
                     [--friction-sides 4|8] [--min-thickness | --critical-tilt]
                     A semicircular arch of N voussoirs (centreline radius 1, radial joints) on
@@ -315,6 +317,7 @@ int cmdExtrude(const Args& a) {
   options.keepMeshes = !out.empty();
   options.mergeCoplanar = a.options.count("--merge-coplanar") > 0;
   if (a.options.count("--no-retry")) options.retryFactors.clear();
+  options.windingRule = a.options.count("--winding-rule") > 0;
   const auto t0 = std::chrono::steady_clock::now();
   const auto results = extrude::extrudeBatch(items, options);
   const double batchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -456,7 +459,8 @@ int main(int argc, char** argv) {
                                    {"--jobs", true},
                                    {"--library", true},
                                    {"--merge-coplanar", false},
-                                   {"--no-retry", false}}));
+                                   {"--no-retry", false},
+                                   {"--winding-rule", false}}));
     if (cmd == "kifs") return corbel::cli::kifsCommand(argc, argv);
     if (cmd == "statics") return cli::runStatics(argc, argv);
     if (cmd == "simulate") return cli::runSimulate(argc, argv);

@@ -28,10 +28,10 @@ struct Attempt {
   MeshData mesh;
 };
 
-Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge, double timeLimit) {
+Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge, double timeLimit, bool windingRule) {
   Attempt a;
   try {
-    const ExtrusionResult er = extrude(item.spec, nullptr, ExtrudeOptions{timeLimit, factor});
+    const ExtrusionResult er = extrude(item.spec, nullptr, ExtrudeOptions{timeLimit, factor, windingRule});
     a.warnings = er.shell.warnings;
     a.anchors = er.anchors;
     a.measures = measure(er.shell);
@@ -105,7 +105,7 @@ void runOne(const BatchItem& item, BatchResult& r, const BatchOptions& o) {
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  Attempt first = attempt(item, 1.0, o.keepMeshes, o.mergeCoplanar, o.timeLimitSeconds);
+  Attempt first = attempt(item, 1.0, o.keepMeshes, o.mergeCoplanar, o.timeLimitSeconds, o.windingRule);
   r.builds = 1;
   if (!first.ok && first.retryable && !o.retryFactors.empty()) {
     // Rebuild with every factor in turn, stopping at the first that fails or disagrees with
@@ -114,7 +114,7 @@ void runOne(const BatchItem& item, BatchResult& r, const BatchOptions& o) {
     double worstVolume = 0, worstRoof = 0;
     bool agreed = true;
     for (std::size_t i = 0; i < o.retryFactors.size() && agreed; ++i) {
-      rebuilt.push_back(attempt(item, o.retryFactors[i], o.keepMeshes && i == 0, o.mergeCoplanar, o.timeLimitSeconds));
+      rebuilt.push_back(attempt(item, o.retryFactors[i], o.keepMeshes && i == 0, o.mergeCoplanar, o.timeLimitSeconds, o.windingRule));
       ++r.builds;
       agreed = rebuilt.back().ok;
       if (!agreed || i == 0) continue;

@@ -46,6 +46,9 @@ struct BatchOptions {
   // rarely make the same wrong one. Empty: no rebuilds. docs/extrude.md has the measurements.
   std::vector<double> retryFactors{10.0, 100.0, 1000.0};
   double retryAgreement = 1e-6;
+  // Every build with ExtrudeOptions::windingRule (corbel-cli extrude --winding-rule): off by
+  // default, see docs/extrude.md, "Rebuilding by the winding rule".
+  bool windingRule = false;
 };
 
 std::vector<BatchResult> extrudeBatch(const std::vector<BatchItem>& items, const BatchOptions& options,

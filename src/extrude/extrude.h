@@ -35,6 +35,12 @@ struct ExtrudeOptions {
   // larger factors are for rebuilding a shell that failed validation (extrude/batch.cpp), and
   // their results need checking (docs/extrude.md, "Rebuilding with wider tolerances").
   double toleranceFactor = 1.0;
+  // Where the post inter-chain check (Sec. 4.4) finds the active plan overlapping itself,
+  // rebuild it there by the winding rule (extrude/winding.h) instead of sweeping on with a
+  // warning. Off in a first build: the overlap comes from an earlier degenerate event, and the
+  // rule makes a valid plan of what is there, not always the right one; the batch uses it as
+  // a last rebuild, checked by agreement (docs/extrude.md, "Rebuilding by the winding rule").
+  bool windingRule = false;
 };
 
 // Validates the spec (throws InputError naming the loop/edge/point), expands its repeats
@@ -42,7 +48,7 @@ struct ExtrudeOptions {
 // index in `spec`.
 ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, const ExtrudeOptions& options);
 inline ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress = nullptr, double timeLimitSeconds = 0.0) {
-  return extrude(spec, progress, ExtrudeOptions{timeLimitSeconds, 1.0});
+  return extrude(spec, progress, ExtrudeOptions{timeLimitSeconds, 1.0, false});
 }
 
 // Areas and volume of a shell, from its planar faces (holes included).

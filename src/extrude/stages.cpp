@@ -13,6 +13,7 @@
 // seam in one plane are joined into one face.
 #include "core/error.h"
 #include "extrude/extrude.h"
+#include "extrude/winding.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_set_2.h>
@@ -50,6 +51,19 @@ struct Active {
 };
 using Plan = std::vector<std::vector<Active>>;
 
+// Appends a corner to a loop being built at a seam, dropping the edge before it where the two
+// welded into one vertex (a zero-length edge).
+void pushCorner(std::vector<Active>& loop, const Active& a) {
+  if (!loop.empty() && loop.back().vertex == a.vertex) loop.pop_back();
+  loop.push_back(a);
+}
+
+// Drops the closing edge of such a loop while it has no length; true where a loop is left.
+bool closeLoop(std::vector<Active>& loop) {
+  while (loop.size() > 1 && loop.back().vertex == loop.front().vertex) loop.pop_back();
+  return loop.size() >= 3;
+}
+
 // A profile segment in absolute heights.
 struct Seg {
   double lo, hi;  // hi = +inf for the last one
@@ -68,8 +82,8 @@ struct Located {
 
 class Stager {
  public:
-  Stager(const ExtrusionSpec& spec, const Tolerances& tol, Progress* progress, double timeLimit)
-      : spec_(spec), tol_(tol), progress_(progress), timeLimit_(timeLimit),
+  Stager(const ExtrusionSpec& spec, const Tolerances& tol, Progress* progress, double timeLimit, bool windingRule)
+      : spec_(spec), tol_(tol), progress_(progress), timeLimit_(timeLimit), windingRule_(windingRule),
         started_(std::chrono::steady_clock::now()) {}
 
   ExtrusionResult run(double scale);
@@ -85,7 +99,11 @@ class Stager {
   void addFace(RawFace f);
   void addFlatFace(std::vector<int> loop, bool up, const ShellFace& info);
 
-  Plan runStage(const Plan& plan, double z, double next, bool first);
+  // Sweeps from z towards `next`; `reached` says how far it got (below `next` where the plan
+  // overlapped itself and is to be rebuilt by the winding rule there).
+  Plan runStage(const Plan& plan, double z, double next, bool first, double& reached);
+  Plan windingRebuild(const Plan& plan, double h);
+  void startMerging();
   // Runs one sweep (a stage or a recursive extrusion) under the remaining time, keeping its
   // faces raw; its events, divergence and warnings (with `context` appended) join the shell's.
   SweepOutput runSweep(SweepInput& in, const std::string& context);
@@ -104,6 +122,7 @@ class Stager {
   const Tolerances& tol_;
   Progress* progress_;
   double timeLimit_;
+  bool windingRule_;  // ExtrudeOptions::windingRule
   std::chrono::steady_clock::time_point started_;
 
   std::vector<Vec3> points_;
@@ -117,7 +136,12 @@ class Stager {
   std::vector<AnchorFrame> frames_;
   std::vector<char> stepDone_;
   std::size_t events_ = 0;
+  int repairs_ = 0;  // winding-rule rebuilds so far
 };
+
+// A plan that keeps overlapping itself after this many winding-rule rebuilds is swept on with
+// the post inter-chain warning instead (each rebuild costs a stage; real plans need none).
+constexpr int kMaxRepairs = 16;
 
 std::vector<Seg> Stager::segs(const Active& a) const {
   const Profile& p = spec_.profiles[a.profile];
@@ -253,11 +277,12 @@ SweepOutput Stager::runSweep(SweepInput& in, const std::string& context) {
 }
 
 // One stage of the sweep from z up to `next`; returns the active plan at `next`.
-Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
+Plan Stager::runStage(const Plan& plan, double z, double next, bool first, double& reached) {
   SweepInput in;
   in.baseZ = z;
   in.emitBase = first;
   in.stopZ = next;
+  in.stopAtOverlap = windingRule_ && repairs_ < kMaxRepairs;
   std::vector<const Active*> flat;
   for (const auto& loop : plan) {
     std::vector<SweepEdge> l;
@@ -291,12 +316,14 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
     }
     frame(probe, in.probes[i]);
   }
+  const double top = std::isnan(out.stoppedAt) ? next : out.stoppedAt;
+  reached = top;
   std::vector<int> map(out.points.size());
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     const Vec3& p = out.points[i];
     if (first && std::abs(p[2] - z) <= tol_.height) map[i] = point(p);  // the base: no seam below
     else if (std::abs(p[2] - z) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), z);
-    else if (std::abs(p[2] - next) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), next);
+    else if (std::abs(p[2] - top) <= tol_.height) map[i] = weld(Vec2(p[0], p[1]), top);
     else map[i] = point(p);
   }
   for (RawFace& f : out.raw) {
@@ -310,14 +337,64 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first) {
       Active a = *flat[c.input];
       a.start = c.p;
       a.vertex = map[c.vertex];
-      if (!l.empty() && l.back().vertex == a.vertex) l.pop_back();  // a zero-length edge
-      l.push_back(a);
+      pushCorner(l, a);
     }
-    while (l.size() > 1 && l.back().vertex == l.front().vertex) l.pop_back();
-    if (l.size() >= 3) result.push_back(std::move(l));
-    else warnings_.push_back("a sliver of the plan vanished at height " + std::to_string(next));
+    if (closeLoop(l)) result.push_back(std::move(l));
+    else if (top == next)  // (where the sweep stopped for the winding rule, it takes what is left)
+      warnings_.push_back("a sliver of the plan vanished at height " + std::to_string(top));
   }
   return result;
+}
+
+// Post inter-chain repair (Sec. 4.4): the plan at h overlaps itself, so its valid region is
+// taken by the winding rule. Its boundary is the new plan, each edge keeping the old edge it
+// lies on (and so its direction plane and profile); the faces that ended inside the region,
+// or in a part turned inside out, are closed by flat caps at h.
+Plan Stager::windingRebuild(const Plan& plan, double h) {
+  ++repairs_;
+  std::vector<std::vector<Vec2>> loops;
+  std::vector<const Active*> flat;
+  for (const auto& loop : plan) {
+    loops.emplace_back();
+    for (const Active& a : loop) {
+      loops.back().push_back(a.start);
+      flat.push_back(&a);
+    }
+  }
+  const WindingResult r = windingRule(loops);
+  for (const WindingCap& cap : r.caps) {
+    RawFace f;
+    f.info.angle = cap.level > 0 ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+    f.info.normal = Vec3(0, 0, cap.level > 0 ? 1 : -1);
+    for (const auto& [a, b] : cap.pieces) {
+      const int u = weld(a, h), v = weld(b, h);
+      if (u != v) f.segments.emplace_back(u, v);
+    }
+    addFace(std::move(f));
+  }
+  Plan result;
+  for (const auto& loop : r.loops) {
+    std::vector<Active> l;
+    for (const WindingEdge& e : loop) {
+      Active a = *flat[e.source];
+      a.start = e.start;
+      a.vertex = weld(e.start, h);
+      pushCorner(l, a);
+    }
+    if (closeLoop(l)) result.push_back(std::move(l));
+  }
+  return result;
+}
+
+// From the first seam on, faces that continue across one are joined: index those made so far.
+void Stager::startMerging() {
+  if (merging_) return;
+  merging_ = true;
+  for (int k = 0; k < static_cast<int>(faces_.size()); ++k) {
+    const ShellFace& i = faces_[k].info;
+    if (!i.base && (i.segment >= 0 || i.step >= 0))
+      byKey_.emplace(std::make_tuple(i.sourceLoop, i.sourceEdge, i.step, i.profile, i.segment), k);
+  }
 }
 
 std::optional<Located> Stager::locate(const Plan& plan, const Anchor& a) const {
@@ -1026,18 +1103,18 @@ ExtrusionResult Stager::run(double scale) {
       const double ho = spec_.baseZ + o.height;
       if (ho > z + tol_.height) next = std::min(next, ho);
     }
-    plan = runStage(plan, z, next, first);
+    double reached = next;
+    plan = runStage(plan, z, next, first, reached);
     first = false;
-    if (!std::isfinite(next)) break;
-    if (!merging_) {
-      // From here on, faces that continue across a seam are joined: index those made so far.
-      merging_ = true;
-      for (int k = 0; k < static_cast<int>(faces_.size()); ++k) {
-        const ShellFace& i = faces_[k].info;
-        if (!i.base && (i.segment >= 0 || i.step >= 0))
-          byKey_.emplace(std::make_tuple(i.sourceLoop, i.sourceEdge, i.step, i.profile, i.segment), k);
-      }
+    if (reached < next) {
+      // The plan overlapped itself below `next`: rebuilt there, the sweep goes on from it.
+      startMerging();
+      plan = windingRebuild(plan, reached);
+      z = reached;
+      continue;
     }
+    if (!std::isfinite(next)) break;
+    startMerging();
     z = next;
     plan = change(plan, z, false);
     plan = forcedSteps(plan, z, false);
@@ -1080,14 +1157,14 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, const Ext
   const bool repeats = std::any_of(spec.steps.begin(), spec.steps.end(), [](const PlanStep& st) { return st.repeat.kind != RepeatKind::None; }) ||
                        std::any_of(spec.anchors.begin(), spec.anchors.end(), [](const MeshAnchor& m) { return m.repeat.kind != RepeatKind::None; });
   if (!repeats) {
-    Stager stager(spec, tol, progress, timeLimitSeconds);
+    Stager stager(spec, tol, progress, timeLimitSeconds, options.windingRule);
     ExtrusionResult r = stager.run(box.diagonal());
     for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = static_cast<int>(k);
     r.toleranceFactor = options.toleranceFactor;
     return r;
   }
   const ExpandedSpec expanded = expandRepeats(spec);
-  Stager stager(expanded.spec, tol, progress, timeLimitSeconds);
+  Stager stager(expanded.spec, tol, progress, timeLimitSeconds, options.windingRule);
   ExtrusionResult r = stager.run(box.diagonal());
   for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = expanded.anchorSource[k];
   for (ShellFace& f : r.shell.faces)

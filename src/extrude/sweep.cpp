@@ -109,7 +109,7 @@ struct Candidate {
 class Sweeper {
  public:
   Sweeper(const SweepInput& in, const Tolerances& tol, Progress* progress)
-      : in_(in), tol_(tol), progress_(progress) {}
+      : in_(in), tol_(tol), progress_(progress), stopZ_(in.stopZ) {}
 
   SweepOutput run();
 
@@ -192,6 +192,10 @@ class Sweeper {
   double recentZ_ = std::numeric_limits<double>::quiet_NaN();
   std::size_t overlaps_ = 0;  // events after which the plan overlapped itself
   Vec3 firstOverlap_;
+  // The height the sweep stops at: SweepInput::stopZ, or lower where the plan overlapped
+  // itself and SweepInput::stopAtOverlap hands it back for the winding rule.
+  double stopZ_;
+  bool stoppedAtOverlap_ = false;
 };
 
 // ------------------------------------------------------------------ geometry
@@ -839,7 +843,20 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   const double next = queue_.empty() ? std::numeric_limits<double>::infinity() : queue_.top().z;
   if (next - z > 1e3 * tol_.height && !locallySimple(made, l, z, 0.25 * (next - z))) {
     SWEEP_TRACE("  post inter-chain check: the plan overlaps itself above (%g, %g, %g)", l[0], l[1], z);
-    if (overlaps_++ == 0) firstOverlap_ = Vec3(l[0], l[1], z);
+    if (in_.stopAtOverlap && !stoppedAtOverlap_) {
+      // Stop halfway to whatever comes next (an event, an edge direction event, the stop
+      // height), where the overlap has grown but nothing else has happened yet: the stager
+      // rebuilds the plan there by the winding rule and sweeps on from it.
+      double upto = std::min(next, stopZ_);
+      for (double d : directionHeights_)
+        if (d > z + tol_.height) upto = std::min(upto, d);
+      if (!std::isfinite(upto)) upto = z + 1e-3 * (tol_.cluster / 1e-8);
+      stopZ_ = z + 0.5 * (upto - z);
+      stoppedAtOverlap_ = true;
+      SWEEP_TRACE("  stopping at %.12g for the winding rule", stopZ_);
+    } else if (overlaps_++ == 0) {
+      firstOverlap_ = Vec3(l[0], l[1], z);
+    }
   }
   return true;
 }
@@ -1089,16 +1106,16 @@ SweepOutput Sweeper::run() {
       double upcoming = nextEventZ;
       if (nextDirection < directionHeights_.size()) upcoming = std::min(upcoming, directionHeights_[nextDirection]);
       while (probed.size() < in_.probes.size() && in_.probes[probed.size()] + tol_.height < upcoming &&
-             in_.probes[probed.size()] < in_.stopZ)
+             in_.probes[probed.size()] < stopZ_)
         probed.push_back(snapshot(in_.probes[probed.size()]));
     }
     if (nextDirection < directionHeights_.size() && directionHeights_[nextDirection] <= nextEventZ + tol_.height &&
-        directionHeights_[nextDirection] < in_.stopZ - tol_.height) {
+        directionHeights_[nextDirection] < stopZ_ - tol_.height) {
       z_ = std::max(z_, directionHeights_[nextDirection]);
       handleDirectionChanges(directionHeights_[nextDirection++]);
       continue;
     }
-    if (!any || nextEventZ > in_.stopZ + tol_.height) break;
+    if (!any || nextEventZ > stopZ_ + tol_.height) break;
     if (++popped > cap) {
       warnings_.push_back("event limit reached; the result is incomplete");
       break;
@@ -1109,7 +1126,7 @@ SweepOutput Sweeper::run() {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
         throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
     }
-    if (cand.z > divergedZ && std::isinf(in_.stopZ)) {
+    if (cand.z > divergedZ && std::isinf(stopZ_)) {
       // What is left is capped where the last real event was (capRemaining says so).
       std::ostringstream m;
       m << "the sweep diverged: the next event was at height " << cand.z << ", far above the plan";
@@ -1141,9 +1158,12 @@ SweepOutput Sweeper::run() {
   }
   SweepOutput out;
   // Probes above the last event: the plan is empty if the roof closed, else as it stands.
-  while (probed.size() < in_.probes.size()) probed.push_back(snapshot(in_.probes[probed.size()]));
+  // (A sweep stopped for the winding rule leaves the probes above its stop to the next one.)
+  while (probed.size() < in_.probes.size() && !(stoppedAtOverlap_ && in_.probes[probed.size()] >= stopZ_))
+    probed.push_back(snapshot(in_.probes[probed.size()]));
   out.probed = std::move(probed);
-  if (std::isfinite(in_.stopZ)) capRemaining(in_.stopZ, &out.plan);
+  if (stoppedAtOverlap_) out.stoppedAt = stopZ_;
+  if (std::isfinite(stopZ_)) capRemaining(stopZ_, &out.plan);
   else capRemaining(z_);
   buildFaces(out);
   out.warnings = warnings_;

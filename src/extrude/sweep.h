@@ -40,6 +40,11 @@ struct SweepInput {
   // plan) with the faces left open along it, for a recursive or staged extrusion (Sec. 4.5.2,
   // 4.6, 4.7). Events at the stop height itself are handled first.
   double stopZ = std::numeric_limits<double>::infinity();
+  // Where the post inter-chain check (Sec. 4.4) finds the plan overlapping itself above an
+  // event, stop there instead (halfway to whatever comes next) and hand back the plan, for the
+  // winding rule (extrude/winding.h) to rebuild; SweepOutput::stoppedAt says where. Otherwise
+  // the sweep carries on and warns.
+  bool stopAtOverlap = false;
   // Keep the faces as untraced boundary pieces (SweepOutput::raw) instead of tracing them.
   bool keepRaw = false;
   // Heights (ascending, above baseZ) at which to read the active plan without stopping the
@@ -85,7 +90,10 @@ struct SweepOutput {
   std::size_t events = 0;  // generalized intersection events handled
   bool diverged = false;   // events ran away far above the plan; the rest was capped
   std::vector<RawFace> raw;                     // with SweepInput::keepRaw
-  std::vector<std::vector<PlanCorner>> plan;    // with a finite SweepInput::stopZ
+  std::vector<std::vector<PlanCorner>> plan;    // with a finite SweepInput::stopZ, or stoppedAt
+  // With SweepInput::stopAtOverlap: the height below stopZ where the sweep stopped because
+  // the plan overlapped itself (NaN: it did not).
+  double stoppedAt = std::numeric_limits<double>::quiet_NaN();
   // One active plan per SweepInput::probes entry (no loops once the roof has closed below
   // it); corners carry no vertex (-1).
   std::vector<std::vector<std::vector<PlanCorner>>> probed;

@@ -143,7 +143,7 @@ struct Build {
 Build buildAt(const ExtrusionSpec& spec, double factor) {
   Build b;
   try {
-    const ExtrusionResult er = extrude(spec, nullptr, ExtrudeOptions{kUsers.timeLimitSeconds, factor});
+    const ExtrusionResult er = extrude(spec, nullptr, ExtrudeOptions{kUsers.timeLimitSeconds, factor, false});
     const ShellMeasures m = measure(er.shell);
     b.volume = m.volume;
     b.roofArea = m.roofArea;

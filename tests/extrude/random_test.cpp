@@ -209,7 +209,7 @@ TEST(RandomRobustness, HundredThousandFootprints) {
       // measures.roofArea etc. are plain areas; the projection identity needs area·cos φ,
       // which the batch does not keep: recompute for a sample to bound the cost.
       if (i % 50 == 0 || r.toleranceFactor > 1) {
-        const ExtrusionResult er = extrude(items[i].spec, nullptr, ExtrudeOptions{0.0, r.toleranceFactor});
+        const ExtrusionResult er = extrude(items[i].spec, nullptr, ExtrudeOptions{0.0, r.toleranceFactor, false});
         double projected = 0;
         for (const ShellFace& f : er.shell.faces)
           if (!f.base) projected += faceArea(er.shell, f) * f.normal[2];

@@ -5,6 +5,7 @@
 // independent volume (volume_oracle.h: CGAL's skeleton under the one profile, or the
 // unperturbed orthogonal plan). A rebuild that wider rebuilds contradict is refused; bad input
 // is never rebuilt; a building that passes is built once and keeps its shell.
+#include "cli_support.h"
 #include "core/project_io.h"
 #include "core/scene.h"
 #include "core/scene_sync.h"
@@ -66,7 +67,7 @@ void expectRebuiltAndRight(const std::string& name, const std::string& firstBuil
     EXPECT_NEAR(r.measures.roofArea, o.roofArea, 1e-6 * o.roofArea);
   }
   // The roof still projects onto the footprint once (vertices moved by at most the wider δ2).
-  const ExtrusionResult er = extrude(spec, nullptr, ExtrudeOptions{0.0, r.toleranceFactor});
+  const ExtrusionResult er = extrude(spec, nullptr, ExtrudeOptions{0.0, r.toleranceFactor, false});
   double projected = 0, footprint = 0;
   for (const ShellFace& f : er.shell.faces)
     if (!f.base) projected += faceArea(er.shell, f) * f.normal[2];
@@ -213,14 +214,7 @@ TEST(Rebuilt, APlanThatPassesIsBuiltOnceAndKeepsItsShell) {
 // gives the first build's failure.
 TEST(Rebuilt, CorbelCliExtrudeRebuildsAndNoRetryDoesNot) {
   auto stats = [](const std::string& extra) {
-    const std::string cmd = std::string(CORBEL_CLI) + " extrude " + CORBEL_SOURCE_DIR +
-                            "/tests/data/extrude/rebuilt/random21797.corbel --stats" + extra;
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
-    if (p) pclose(p);
-    return nlohmann::json::parse(out.substr(0, out.find('\n')));
+    return cliExtrudeStats("tests/data/extrude/rebuilt/random21797.corbel", extra);
   };
   const auto rebuilt = stats("");
   EXPECT_FALSE(rebuilt.contains("error")) << rebuilt;
