@@ -56,8 +56,8 @@ usage:
                     --wall-height high (default 0). --stats prints one JSON line per building.
                     GeoJSON features may name a profile of the --library project ("profile").
                     --merge-coplanar writes neighbouring faces in one plane as one face.
-                    A building whose shell fails is rebuilt with 10-1000x tolerances and kept
-                    only where two rebuilds agree (a warning says so); --no-retry does not.
+                    A building whose shell fails is rebuilt with 10-10000x tolerances and kept
+                    only where three rebuilds agree (a warning says so); --no-retry does not.
                     --winding-rule rebuilds a plan that overlaps itself after an event by the
                     winding rule (Sec. 4.4) instead of warning; off by default (docs/extrude.md).
   corbel-cli statics arch --blocks N --thickness T [--tilt DEG] [--friction A] [--kern S]

@@ -108,45 +108,63 @@ void runOne(const BatchItem& item, BatchResult& r, const BatchOptions& o) {
   Attempt first = attempt(item, 1.0, o.keepMeshes, o.mergeCoplanar, o.timeLimitSeconds, o.windingRule);
   r.builds = 1;
   if (!first.ok && first.retryable && !o.retryFactors.empty()) {
-    // Rebuild with every factor in turn, stopping at the first that fails or disagrees with
-    // the first rebuild; keep the first rebuild only if all passed and agreed.
-    std::vector<Attempt> rebuilt;
+    // Rebuild with a window of consecutive factors, stopping at the first rebuild that fails
+    // or disagrees with the window's first; keep that first only if all passed and agreed.
+    // Where the window's first rebuild fails outright (it says nothing about the answer, unlike
+    // a disagreement), the window moves one factor up while there is room.
+    const std::vector<double>& f = o.retryFactors;
+    const std::size_t window = std::clamp<std::size_t>(o.retryWindow, 1, f.size());
+    std::size_t start = 0;
+    std::vector<Attempt> rebuilt;  // of the current window
+    std::string skipped;           // the factors whose rebuild failed before the window moved up
     double worstVolume = 0, worstRoof = 0;
     bool agreed = true;
-    for (std::size_t i = 0; i < o.retryFactors.size() && agreed; ++i) {
-      rebuilt.push_back(attempt(item, o.retryFactors[i], o.keepMeshes && i == 0, o.mergeCoplanar, o.timeLimitSeconds, o.windingRule));
-      ++r.builds;
-      agreed = rebuilt.back().ok;
-      if (!agreed || i == 0) continue;
-      worstVolume = std::max(worstVolume, relativeDifference(rebuilt[0].measures.volume, rebuilt[i].measures.volume));
-      worstRoof = std::max(worstRoof, relativeDifference(rebuilt[0].measures.roofArea, rebuilt[i].measures.roofArea));
-      agreed = worstVolume <= o.retryAgreement && worstRoof <= o.retryAgreement;
+    while (true) {
+      rebuilt.clear();
+      agreed = true;
+      for (std::size_t i = 0; i < window && agreed; ++i) {
+        rebuilt.push_back(attempt(item, f[start + i], o.keepMeshes && i == 0, o.mergeCoplanar, o.timeLimitSeconds,
+                                  o.windingRule));
+        ++r.builds;
+        agreed = rebuilt.back().ok;
+        if (!agreed || i == 0) continue;
+        worstVolume = std::max(worstVolume, relativeDifference(rebuilt[0].measures.volume, rebuilt[i].measures.volume));
+        worstRoof = std::max(worstRoof, relativeDifference(rebuilt[0].measures.roofArea, rebuilt[i].measures.roofArea));
+        agreed = worstVolume <= o.retryAgreement && worstRoof <= o.retryAgreement;
+      }
+      if (rebuilt.size() == 1 && !agreed && start + window < f.size()) {
+        skipped += (skipped.empty() ? "" : ", ") + times(f[start]);
+        ++start;
+        continue;
+      }
+      break;
     }
     if (agreed) {
       Attempt* chosen = &rebuilt[0];
-      r.toleranceFactor = o.retryFactors[0];
+      r.toleranceFactor = f[start];
       std::string others;
-      for (std::size_t i = 1; i < o.retryFactors.size(); ++i)
-        others += (i > 1 ? (i + 1 == o.retryFactors.size() ? " and " : ", ") : "") + times(o.retryFactors[i]);
+      for (std::size_t i = 1; i < window; ++i)
+        others += (i > 1 ? (i + 1 == window ? " and " : ", ") : "") + times(f[start + i]);
       char agree[96];
       std::snprintf(agree, sizeof agree, " agree on volume within %.1e and roof area within %.1e", worstVolume,
                     worstRoof);
       chosen->warnings.insert(chosen->warnings.begin(),
                               "rebuilt with " + times(r.toleranceFactor) +
                                   " tolerances (the first build failed: " + first.error + ")" +
+                                  (skipped.empty() ? std::string() : "; the " + skipped + " rebuild failed too") +
                                   (others.empty() ? std::string() : "; rebuilds with " + others + agree));
       finish(r, *chosen, t0);
       return;
     }
     // Say why no rebuild was kept; the first build's error and warnings stand.
-    const double at = o.retryFactors[rebuilt.size() - 1];
+    const double at = f[start + rebuilt.size() - 1];
     char why[128];
     if (!rebuilt.back().ok)
       std::snprintf(why, sizeof why, " (rebuilt with wider tolerances: the %s rebuild failed too)", times(at).c_str());
     else
       std::snprintf(why, sizeof why,
                     " (rebuilt with wider tolerances: %s and %s disagree, volume by %.1e, roof area by %.1e)",
-                    times(o.retryFactors[0]).c_str(), times(at).c_str(), worstVolume, worstRoof);
+                    times(f[start]).c_str(), times(at).c_str(), worstVolume, worstRoof);
     first.error += why;
   }
   finish(r, first, t0);

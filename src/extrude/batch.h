@@ -39,12 +39,15 @@ struct BatchOptions {
   bool mergeCoplanar = false;    // kept meshes only: coplanar neighbours merged (export option)
   double timeLimitSeconds = 10.0;  // per building and attempt
   // A building whose first build fails validation (not closed, not a 2-manifold, or an error
-  // of the sweep; never bad input or the time limit) is rebuilt with each of these tolerance
-  // factors in turn (Tolerances::forScale). A rebuild is accepted only when the next factor's
-  // rebuild passes too and both agree on volume and roof area within `retryAgreement`
-  // (relative): wider tolerances can close a shell around the wrong roof, and two of them
-  // rarely make the same wrong one. Empty: no rebuilds. docs/extrude.md has the measurements.
-  std::vector<double> retryFactors{10.0, 100.0, 1000.0};
+  // of the sweep; never bad input or the time limit) is rebuilt with tolerance factors
+  // (Tolerances::forScale) from a window of `retryWindow` consecutive entries, in turn. The
+  // window's first rebuild is accepted only when the others pass too and all agree on volume
+  // and roof area within `retryAgreement` (relative): wider tolerances can close a shell around
+  // the wrong roof, and several of them rarely make the same wrong one. Where the window's
+  // first rebuild fails outright, the window moves one entry up while the list allows (a
+  // disagreement never moves it). Empty: no rebuilds. docs/extrude.md has the measurements.
+  std::vector<double> retryFactors{10.0, 100.0, 1000.0, 10000.0};
+  std::size_t retryWindow = 3;
   double retryAgreement = 1e-6;
   // Every build with ExtrudeOptions::windingRule (corbel-cli extrude --winding-rule): off by
   // default, see docs/extrude.md, "Rebuilding by the winding rule".

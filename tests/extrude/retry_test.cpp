@@ -210,6 +210,31 @@ TEST(Rebuilt, APlanThatPassesIsBuiltOnceAndKeepsItsShell) {
   }
 }
 
+// A window whose first rebuild fails outright moves one factor up (a failure says nothing about
+// the answer; a disagreement would refuse). random54107, a perturbed orthogonal plan saved by the
+// random test: its first build and its 10× rebuild are left open; 100×, 1000× and 10000× close and
+// agree, and the 100× shell is its unperturbed plan's within 1e-6 (volume_oracle.h).
+TEST(Rebuilt, AWindowWhoseFirstRebuildFailsMovesUpAFactor) {
+  const ExtrusionSpec spec = saved("random/random54107.corbel");
+  ASSERT_FALSE(buildOne(spec, false).ok) << "the first build passes now";
+  BatchOptions tenOnly;
+  tenOnly.jobs = 1;
+  tenOnly.retryFactors = {10.0};
+  const BatchResult ten = extrudeBatch({{"case", spec, ""}}, tenOnly)[0];
+  ASSERT_FALSE(ten.ok) << "the 10× rebuild closes now: the case no longer moves the window";
+  const BatchResult r = buildOne(spec, true);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.toleranceFactor, 100.0);
+  EXPECT_EQ(r.builds, 5) << "the first build, then 10×, 100×, 1000× and 10000×";
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings[0].find("; the 10× rebuild failed too; rebuilds with 1000× and 10000× agree"), std::string::npos)
+      << r.warnings[0];
+  const VolumeOracle o = independentVolume(spec);
+  ASSERT_EQ(o.kind, VolumeOracle::Unperturbed);
+  EXPECT_NEAR(r.measures.volume, o.volume, 1e-6 * o.volume);
+  EXPECT_NEAR(r.measures.roofArea, o.roofArea, 1e-6 * o.roofArea);
+}
+
 // corbel-cli extrude goes through the batch: it rebuilds, says so in --stats, and --no-retry
 // gives the first build's failure.
 TEST(Rebuilt, CorbelCliExtrudeRebuildsAndNoRetryDoesNot) {
