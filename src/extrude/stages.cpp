@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_set_2.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <functional>
 #include <cmath>
@@ -1012,9 +1013,15 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
 // events left a long top opposite several short ones (ambiguous events along one line,
 // Fig. 22). A piece and its reverse then cancel when the face is traced.
 void Stager::fixTJunctions() {
-  std::vector<int> sorted(points_.size());
-  for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = static_cast<int>(i);
-  std::sort(sorted.begin(), sorted.end(), [&](int a, int b) { return points_[a][0] < points_[b][0]; });
+  // The vertices by x and by y: a piece looks only among those within its bounding box on
+  // the axis where the box is narrower (by x alone, the eaves of a ring of walls running
+  // north-south scan a fifth of the shell each), and tests the box before the distance.
+  std::array<std::vector<int>, 2> sorted;
+  for (int axis = 0; axis < 2; ++axis) {
+    sorted[axis].resize(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) sorted[axis][i] = static_cast<int>(i);
+    std::sort(sorted[axis].begin(), sorted[axis].end(), [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
+  }
   std::vector<std::pair<double, int>> on;
   // A tenth of δ2: vertices of one event lie on their edges to rounding, seam vertices to
   // the weld; a wider net would split edges at vertices that merely pass close (measured on
@@ -1037,12 +1044,20 @@ void Stager::fixTJunctions() {
       const double len2 = d.sqrnorm();
       on.clear();
       if (len2 > 0) {
-        const double lo = std::min(a[0], b[0]) - tol_.cluster, hi = std::max(a[0], b[0]) + tol_.cluster;
-        auto first = std::lower_bound(sorted.begin(), sorted.end(), lo, [&](int w, double x) { return points_[w][0] < x; });
-        for (auto it = first; it != sorted.end() && points_[*it][0] <= hi; ++it) {
+        // Every vertex within splitTol of the piece lies in its box widened by δ2 > splitTol.
+        Vec3 lo, hi;
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(a[k], b[k]) - tol_.cluster;
+          hi[k] = std::max(a[k], b[k]) + tol_.cluster;
+        }
+        const int axis = hi[1] - lo[1] < hi[0] - lo[0] ? 1 : 0;
+        const auto& order = sorted[axis];
+        auto first = std::lower_bound(order.begin(), order.end(), lo[axis], [&](int w, double x) { return points_[w][axis] < x; });
+        for (auto it = first; it != order.end() && points_[*it][axis] <= hi[axis]; ++it) {
           const int w = *it;
           if (w == u || w == v) continue;
           const Vec3& p = points_[w];
+          if (p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2] || p[2] > hi[2]) continue;
           const double t = OpenMesh::dot(p - a, d) / len2;
           if (t <= 0 || t >= 1) continue;
           if ((a + d * t - p).norm() <= splitTol) on.emplace_back(t, w);
