@@ -14,6 +14,8 @@ from pathlib import Path
 
 def classify(error, warnings):
     w = " ".join(warnings)
+    if "the roof cannot close" in error:
+        return "roof cannot close"
     if "cascade" in error or "cycle" in error:
         return "event cycle"
     if "time limit" in error:

@@ -155,6 +155,7 @@ class Sweeper {
   // Closes every loop still open at z: with a flat cap (and a warning) when the sweep ran out
   // of events, or, at a stop height, by handing the loops back as the active plan.
   void capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan = nullptr);
+  void refuseStandingLoop(const std::vector<int>& loop) const;
   void buildFaces(SweepOutput& out);
   // The active plan at height z (between events), for SweepInput::probes.
   std::vector<std::vector<PlanCorner>> snapshot(double z) const;
@@ -1054,6 +1055,39 @@ void Sweeper::handleDirectionChanges(double h) {
   predictAgainst(planes);
 }
 
+// A loop left at the base when no event is left, every edge of which is vertical for good: it
+// never rises, and capping it would make a shell of no volume. That is the spec's doing, not
+// rounding's: each straight run of the plan mixes sloped edges with gables (vertical last
+// segments), and the priority (Sec. 4.8) gives the run to a gable at the base, as volume
+// maximising does (random33502, random35776). Said as bad input, naming the edges.
+void Sweeper::refuseStandingLoop(const std::vector<int>& loop) const {
+  std::vector<int> sources;
+  const SweepEdge* first = nullptr;
+  for (int ci : loop) {
+    const Edge& e = edges_[corners_[ci].next];
+    const SweepEdge& in = *inputs_[e.src];
+    if (e.k != 0 || e.step + 1 < static_cast<int>(in.steps.size())) return;  // it rises, or will
+    if (!first) first = &in;
+    if (in.step != first->step || in.sourceLoop != first->sourceLoop) first = nullptr;
+    if (!first) return;  // pieces of several loops or steps: not a plan's own loop
+    sources.push_back(in.sourceEdge);
+  }
+  if (!first) return;
+  std::sort(sources.begin(), sources.end());
+  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+  std::ostringstream where, why;
+  if (first->step >= 0) where << "steps[" << first->step << "]";
+  else where << "loops[" << first->sourceLoop << "]";
+  why << "the roof cannot close: every edge left of this loop at its base is vertical for good (edge";
+  if (sources.size() > 1) why << "s";
+  for (std::size_t i = 0; i < sources.size() && i < 12; ++i) why << (i ? ", " : " ") << sources[i];
+  if (sources.size() > 12) why << ", ...";
+  why << "), the sloped edges in line with them having given way by priority (Sec. 4.8), so nothing "
+         "rises; give each straight run a sloped last segment, or let the sloped edges win "
+         "(priority minimise_volume, or manual with their segments tagged high)";
+  throw InputError(where.str(), why.str());
+}
+
 // Loops still open when no event is left (a missed event in a degenerate configuration):
 // close each with a flat cap so the shell stays closed, and say so.
 void Sweeper::capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan) {
@@ -1069,6 +1103,7 @@ void Sweeper::capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan)
       cur = edges_[corners_[cur].next].end;
       if (cur < 0) break;
     }
+    if (!plan && in_.emitBase && z <= in_.baseZ + tol_.height) refuseStandingLoop(loop);
     FaceBuild cap;
     cap.normal = Vec3(0, 0, 1);
     cap.segment = -2;
@@ -1279,17 +1314,22 @@ void Sweeper::buildFaces(SweepOutput& out) {
 
 void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& raw, const Tolerances& tol_,
                 std::vector<ShellFace>& faces, std::vector<std::string>& warnings) {
+  // Working lists shared by the faces (cleared for each): a shell has a few dozen faces of a
+  // few pieces each, and allocating them anew for every face cost more than the tracing.
+  std::vector<std::pair<int, int>> all, segs;
+  std::vector<char> usedSeg;
+  std::vector<int> outers, holes;
   for (const RawFace& rf : raw) {
     const ShellFace& f = rf.info;
     // Drop zero-length pieces and pieces cancelled by their reverse (a face folded onto itself):
     // each piece keeps its count less its reverse's. Sorted vectors, not maps: faces are small
     // and this runs for every face of every shell.
-    std::vector<std::pair<int, int>> all;
+    all.clear();
     all.reserve(rf.segments.size());
     for (auto [u, v] : rf.segments)
       if (u != v && (points_[u] - points_[v]).norm() > tol_.cluster * 1e-3) all.emplace_back(u, v);
     std::sort(all.begin(), all.end());
-    std::vector<std::pair<int, int>> segs;
+    segs.clear();
     for (std::size_t i = 0; i < all.size();) {
       std::size_t j = i;
       while (j < all.size() && all[j] == all[i]) ++j;
@@ -1312,7 +1352,7 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
     const Vec3 w = OpenMesh::cross(f.normal, u);
     auto flat = [&](int v) { return Vec2(OpenMesh::dot(points_[v], u), OpenMesh::dot(points_[v], w)); };
 
-    std::vector<char> usedSeg(segs.size(), 0);
+    usedSeg.assign(segs.size(), 0);
     std::vector<std::vector<int>> loops;
     for (int s0 = 0; s0 < static_cast<int>(segs.size()); ++s0) {
       if (usedSeg[s0]) continue;
@@ -1373,7 +1413,8 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
       for (std::size_t i = 0; i < loop.size(); ++i) a += cross2(flat(loop[i]), flat(loop[(i + 1) % loop.size()]));
       return 0.5 * a;
     };
-    std::vector<int> outers, holes;
+    outers.clear();
+    holes.clear();
     for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
       const double a = signedArea(loops[i]);
       if (std::abs(a) <= tol_.cluster * tol_.cluster) continue;

@@ -91,6 +91,35 @@ TEST(BadInput, Profiles) {
                "profiles[0].points[2]: a profile may not end with a horizontal segment");
 }
 
+// Each side of a square is two colinear edges, a gable (vertical for good) and a 45° hip. Volume
+// maximising gives each side to its gable at the base (Sec. 4.8), so no edge of what is left
+// ever rises: said as bad input naming the edges left, not capped into a shell of no volume.
+// Minimising gives each side to its hip, and the roof is the pyramid: 10² × 5 / 3 m³ exactly,
+// its roof area the footprint's over cos 45°.
+TEST(BadInput, StraightRunsWhoseGablesWinByPriorityCannotClose) {
+  ExtrusionSpec s;
+  Profile gable;
+  gable.name = "gable";
+  gable.points = {{0, 0}, {0, 1}};
+  s.profiles = {hipProfile(45 * kDeg), gable};
+  s.loops = {{{Vec2(0, 0), Vec2(5, 0), Vec2(10, 0), Vec2(10, 5), Vec2(10, 10), Vec2(5, 10), Vec2(0, 10), Vec2(0, 5)},
+              {1, 0, 1, 0, 1, 0, 1, 0}}};
+  s.priority = Priority::MaximiseVolume;
+  EXPECT_FAULT(s,
+               "loops[0]: the roof cannot close: every edge left of this loop at its base is vertical for good "
+               "(edges 0, 2, 4, 6), the sloped edges in line with them having given way by priority (Sec. 4.8), "
+               "so nothing rises; give each straight run a sloped last segment, or let the sloped edges win "
+               "(priority minimise_volume, or manual with their segments tagged high)");
+  s.priority = Priority::MinimiseVolume;
+  const ExtrusionResult r = extrude(s);
+  EXPECT_TRUE(r.shell.warnings.empty());
+  EXPECT_EQ(unpairedEdges(r.shell), 0u);
+  const ShellMeasures m = measure(r.shell);
+  EXPECT_NEAR(m.volume, 500.0 / 3.0, 1e-9 * 500.0 / 3.0);
+  EXPECT_NEAR(m.roofArea, 100.0 * std::sqrt(2.0), 1e-9 * 100.0 * std::sqrt(2.0));
+  EXPECT_NEAR(r.shell.maxHeight, 5.0, 1e-9 * 5.0);
+}
+
 TEST(BadInput, StepsAndAnchors) {
   const ExtrusionSpec house = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
   PlanStep ok;

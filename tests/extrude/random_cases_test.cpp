@@ -98,6 +98,7 @@ std::string failureClass(const std::string& error, const std::vector<std::string
   std::string w;
   for (const std::string& s : warnings) w += s + " ";
   auto has = [](const std::string& s, const char* t) { return s.find(t) != std::string::npos; };
+  if (has(error, "the roof cannot close")) return "roof cannot close";
   if (has(error, "cascade") || has(error, "cycle")) return "event cycle";
   if (has(error, "time limit")) return "time limit";
   if (has(w, "diverged")) return "diverged";
@@ -109,7 +110,8 @@ std::string failureClass(const std::string& error, const std::vector<std::string
   return "other: " + error.substr(0, 60);
 }
 
-const std::set<std::string> kClasses{"event cycle",
+const std::set<std::string> kClasses{"roof cannot close",
+                                     "event cycle",
                                      "time limit",
                                      "diverged",
                                      "capped",
@@ -247,6 +249,16 @@ void expectRefusedTheRightWay(const std::string& name, const std::string& listed
   EXPECT_EQ(failureClass(first.error, first.warnings), listedClass)
       << "its first build is in another class now (error: " << first.error
       << "): change its class in still_failing.txt";
+  if (listedClass == "roof cannot close") {
+    // The spec's own fault (Sweeper::refuseStandingLoop): bad input, the same at any
+    // tolerance, so built once and never rebuilt, and the loop named.
+    const Build here = buildAt(spec, 1.0);
+    EXPECT_EQ(here.why.rfind("bad input: loops[", 0), 0u) << here.why;
+    EXPECT_EQ(r.builds, 1);
+    EXPECT_EQ(r.error, first.error);
+    EXPECT_TRUE(r.warnings.empty());
+    return;
+  }
   // The first build fails here too, through the kernel directly.
   const Build here = buildAt(spec, 1.0);
   EXPECT_FALSE(here.closed) << "the kernel's own first build closes, but the batch refused it: " << r.error;
