@@ -1068,8 +1068,7 @@ void Sweeper::refuseStandingLoop(const std::vector<int>& loop) const {
     const SweepEdge& in = *inputs_[e.src];
     if (e.k != 0 || e.step + 1 < static_cast<int>(in.steps.size())) return;  // it rises, or will
     if (!first) first = &in;
-    if (in.step != first->step || in.sourceLoop != first->sourceLoop) first = nullptr;
-    if (!first) return;  // pieces of several loops or steps: not a plan's own loop
+    else if (in.step != first->step || in.sourceLoop != first->sourceLoop) return;  // not one loop of the spec's
     sources.push_back(in.sourceEdge);
   }
   if (!first) return;
