@@ -74,6 +74,51 @@ struct Seg {
   int index;
 };
 
+// A profile segment before it is placed on an edge (Stager::segs adds the edge's z0): what
+// does not depend on the edge, worked out once per profile instead of at every look.
+struct SegShape {
+  double qz, rz, z0;  // the segment's ends' heights and the profile's first point's
+  bool last;
+  double angle, dw;
+  bool horizontal;
+  int index;
+};
+
+// The segments of one edge's profile, placed at its z0, as a range of Seg values.
+class SegRange {
+ public:
+  SegRange(const std::vector<SegShape>& shapes, double z0) : shapes_(&shapes), z0_(z0) {}
+  class Iterator {
+   public:
+    Iterator(const SegShape* s, double z0) : s_(s), z0_(z0) {}
+    Seg operator*() const {
+      Seg g;
+      g.lo = z0_ + s_->qz - s_->z0;
+      g.hi = s_->last ? std::numeric_limits<double>::infinity() : z0_ + s_->rz - s_->z0;
+      g.horizontal = s_->horizontal;
+      g.dw = s_->dw;
+      g.angle = s_->angle;
+      g.index = s_->index;
+      return g;
+    }
+    Iterator& operator++() {
+      ++s_;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const { return s_ != o.s_; }
+
+   private:
+    const SegShape* s_;
+    double z0_;
+  };
+  Iterator begin() const { return {shapes_->data(), z0_}; }
+  Iterator end() const { return {shapes_->data() + shapes_->size(), z0_}; }
+
+ private:
+  const std::vector<SegShape>* shapes_;
+  double z0_;
+};
+
 struct Located {
   int loop = -1, index = -1;
   double t = 0;  // metres from the edge's start
@@ -85,12 +130,31 @@ class Stager {
  public:
   Stager(const ExtrusionSpec& spec, const Tolerances& tol, Progress* progress, double timeLimit, bool windingRule)
       : spec_(spec), tol_(tol), progress_(progress), timeLimit_(timeLimit), windingRule_(windingRule),
-        started_(std::chrono::steady_clock::now()) {}
+        started_(std::chrono::steady_clock::now()) {
+    shapes_.resize(spec_.profiles.size());
+    for (std::size_t k = 0; k < spec_.profiles.size(); ++k) {
+      const auto& pts = spec_.profiles[k].points;
+      for (std::size_t s = 0; s + 1 < pts.size(); ++s) {
+        const Vec2 &q = pts[s], &r = pts[s + 1];
+        SegShape g;
+        g.qz = q[1];
+        g.rz = r[1];
+        g.z0 = pts[0][1];
+        g.last = s + 2 == pts.size();
+        g.horizontal = r[1] == q[1];
+        g.dw = g.horizontal ? r[0] - q[0] : 0.0;
+        g.angle = g.horizontal ? std::copysign(std::numbers::pi / 2, g.dw) : segmentAngle(q, r);
+        g.index = static_cast<int>(s);
+        shapes_[k].push_back(g);
+      }
+    }
+  }
 
   ExtrusionResult run(double scale);
 
  private:
-  std::vector<Seg> segs(const Active& a) const;
+  SegRange segs(const Active& a) const { return {shapes_[a.profile], a.z0}; }
+  std::vector<std::vector<SegShape>> shapes_;  // per profile of the spec
   double priorityOf(const Active& a, double z) const;
   SweepEdge sweepEdge(const Active& a, double za) const;
   double remaining() const;
@@ -143,23 +207,6 @@ class Stager {
 // A plan that keeps overlapping itself after this many winding-rule rebuilds is swept on with
 // the post inter-chain warning instead (each rebuild costs a stage; real plans need none).
 constexpr int kMaxRepairs = 16;
-
-std::vector<Seg> Stager::segs(const Active& a) const {
-  const Profile& p = spec_.profiles[a.profile];
-  std::vector<Seg> out;
-  for (std::size_t s = 0; s + 1 < p.points.size(); ++s) {
-    const Vec2 &q = p.points[s], &r = p.points[s + 1];
-    Seg g;
-    g.lo = a.z0 + q[1] - p.points[0][1];
-    g.hi = s + 2 == p.points.size() ? std::numeric_limits<double>::infinity() : a.z0 + r[1] - p.points[0][1];
-    g.horizontal = r[1] == q[1];
-    g.dw = g.horizontal ? r[0] - q[0] : 0.0;
-    g.angle = g.horizontal ? std::copysign(std::numbers::pi / 2, g.dw) : segmentAngle(q, r);
-    g.index = static_cast<int>(s);
-    out.push_back(g);
-  }
-  return out;
-}
 
 double Stager::priorityOf(const Active& a, double z) const {
   const Profile& p = spec_.profiles[a.profile];

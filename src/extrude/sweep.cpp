@@ -1356,6 +1356,7 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
     for (int s0 = 0; s0 < static_cast<int>(segs.size()); ++s0) {
       if (usedSeg[s0]) continue;
       std::vector<int> loop;
+      loop.reserve(segs.size() - s0);  // at most the pieces not used yet: one allocation, not a doubling per few
       int s = s0;
       while (s >= 0 && !usedSeg[s]) {
         usedSeg[s] = 1;
