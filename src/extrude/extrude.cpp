@@ -25,53 +25,54 @@ bool finite(const Vec2& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); 
 }  // namespace
 
 std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
-  std::ostringstream m;
+  // Every extrusion (each building of a batch) passes here, so the messages' paths are only
+  // spelled out once something is wrong.
   if (spec.loops.empty()) return "loops: a plan needs at least one loop";
   if (spec.profiles.empty()) return "profiles: at least one profile is needed";
   for (std::size_t pi = 0; pi < spec.profiles.size(); ++pi) {
     const Profile& p = spec.profiles[pi];
-    const std::string at = "profiles[" + std::to_string(pi) + "]";
-    if (p.points.size() < 2) return at + ".points: a profile needs at least two points";
+    const auto at = [pi] { return "profiles[" + std::to_string(pi) + "]"; };
+    if (p.points.size() < 2) return at() + ".points: a profile needs at least two points";
     for (std::size_t i = 0; i < p.points.size(); ++i)
-      if (!finite(p.points[i])) return at + ".points[" + std::to_string(i) + "]: coordinates must be finite";
+      if (!finite(p.points[i])) return at() + ".points[" + std::to_string(i) + "]: coordinates must be finite";
     for (std::size_t i = 0; i + 1 < p.points.size(); ++i) {
       const Vec2 &a = p.points[i], &b = p.points[i + 1];
-      const std::string seg = at + ".points[" + std::to_string(i + 1) + "]";
-      if (b[1] < a[1]) return seg + ": profiles must be vertically monotone (z may not decrease)";
-      if (b[1] == a[1] && b[0] == a[0]) return seg + ": repeats the previous point";
+      const auto seg = [&at, i] { return at() + ".points[" + std::to_string(i + 1) + "]"; };
+      if (b[1] < a[1]) return seg() + ": profiles must be vertically monotone (z may not decrease)";
+      if (b[1] == a[1] && b[0] == a[0]) return seg() + ": repeats the previous point";
       if (b[1] == a[1]) {
-        if (i == 0) return seg + ": a profile may not start with a horizontal segment (move the plan instead)";
-        if (i + 2 == p.points.size()) return seg + ": a profile may not end with a horizontal segment";
-        if (std::abs(b[0] - a[0]) > 1e6) return seg + ": the horizontal segment is longer than 1e6 m";
+        if (i == 0) return seg() + ": a profile may not start with a horizontal segment (move the plan instead)";
+        if (i + 2 == p.points.size()) return seg() + ": a profile may not end with a horizontal segment";
+        if (std::abs(b[0] - a[0]) > 1e6) return seg() + ": the horizontal segment is longer than 1e6 m";
         continue;
       }
       const double theta = segmentAngle(a, b);
       if (std::abs(theta) > kHalfPi - 1e-6)
-        return seg + ": the segment is too close to horizontal (" + std::to_string(theta * 180 / std::numbers::pi) +
+        return seg() + ": the segment is too close to horizontal (" + std::to_string(theta * 180 / std::numbers::pi) +
                "°)";
     }
     // The last segment may stand vertical (a gable end, closed by its neighbours) but not
     // lean outward: such an edge would grow for ever.
     const double last = segmentAngle(p.points[p.points.size() - 2], p.points.back());
-    if (last < 0) return at + ": the last segment leans outward (angle < 0), so the roof could never close";
+    if (last < 0) return at() + ": the last segment leans outward (angle < 0), so the roof could never close";
   }
   std::vector<std::vector<Vec2>> loops;
   double scale = 0;
   BBox box;
   for (std::size_t li = 0; li < spec.loops.size(); ++li) {
     const PlanLoop& l = spec.loops[li];
-    const std::string at = "loops[" + std::to_string(li) + "]";
-    if (l.points.size() < 3) return at + ".points: a loop needs at least three corners";
+    const auto at = [li] { return "loops[" + std::to_string(li) + "]"; };
+    if (l.points.size() < 3) return at() + ".points: a loop needs at least three corners";
     if (l.profile.size() != l.points.size())
-      return at + ".profile: one profile per edge is needed (" + std::to_string(l.points.size()) + " edges, " +
+      return at() + ".profile: one profile per edge is needed (" + std::to_string(l.points.size()) + " edges, " +
              std::to_string(l.profile.size()) + " profiles)";
     for (std::size_t i = 0; i < l.points.size(); ++i) {
-      if (!finite(l.points[i])) return at + ".points[" + std::to_string(i) + "]: coordinates must be finite";
+      if (!finite(l.points[i])) return at() + ".points[" + std::to_string(i) + "]: coordinates must be finite";
       if (std::abs(l.points[i][0]) > 1e7 || std::abs(l.points[i][1]) > 1e7)
-        return at + ".points[" + std::to_string(i) + "]: coordinates must be within 1e7 m";
+        return at() + ".points[" + std::to_string(i) + "]: coordinates must be within 1e7 m";
       box.add(Vec3(l.points[i][0], l.points[i][1], 0));
       if (l.profile[i] < 0 || static_cast<std::size_t>(l.profile[i]) >= spec.profiles.size())
-        return at + ".profile[" + std::to_string(i) + "]: no profile number " + std::to_string(l.profile[i]);
+        return at() + ".profile[" + std::to_string(i) + "]: no profile number " + std::to_string(l.profile[i]);
     }
     loops.push_back(l.points);
   }
@@ -89,6 +90,7 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
   for (std::size_t li = 0; li < loops.size(); ++li)
     for (std::size_t i = 0; i < loops[li].size(); ++i)
       if ((loops[li][(i + 1) % loops[li].size()] - loops[li][i]).norm() <= tol.minEdge) {
+        std::ostringstream m;
         m << "loops[" << li << "].points[" << (i + 1) % loops[li].size() << "]: zero-length edge (repeats points["
           << i << "])";
         return m.str();

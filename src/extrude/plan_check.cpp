@@ -41,6 +41,9 @@ std::optional<std::string> checkPlanTopology(const std::vector<std::vector<Vec2>
     int loop, edge, n;
   };
   std::vector<Seg> segs;
+  std::size_t total = 0;
+  for (const auto& l : loops) total += l.size();
+  segs.reserve(total);
   for (int li = 0; li < static_cast<int>(loops.size()); ++li) {
     const int n = static_cast<int>(loops[li].size());
     for (int i = 0; i < n; ++i) {
@@ -60,6 +63,11 @@ std::optional<std::string> checkPlanTopology(const std::vector<std::vector<Vec2>
       const int j = order[oj];
       const Seg &a = segs[i], &b = segs[j];
       const bool sameLoop = a.loop == b.loop;
+      // Apart in y (compared exactly), they cannot meet: most pairs end here, cheaper than
+      // the exact test.
+      if (std::max(a.s.source().y(), a.s.target().y()) < std::min(b.s.source().y(), b.s.target().y()) ||
+          std::max(b.s.source().y(), b.s.target().y()) < std::min(a.s.source().y(), a.s.target().y()))
+        continue;
       const bool adjacent = sameLoop && ((a.edge + 1) % a.n == b.edge || (b.edge + 1) % b.n == a.edge);
       if (!CGAL::do_intersect(a.s, b.s)) continue;
       if (adjacent) {
@@ -82,9 +90,13 @@ std::optional<std::string> checkPlanTopology(const std::vector<std::vector<Vec2>
       return m.str();
     }
   }
-  const std::vector<int> depth = nestingDepths(loops);
+  // One loop is outer; with more, each one's depth decides its orientation.
+  const std::vector<int> depth = loops.size() > 1 ? nestingDepths(loops) : std::vector<int>(1, 0);
+  std::vector<P2> poly;
+  poly.reserve(total);
   for (int li = 0; li < static_cast<int>(loops.size()); ++li) {
-    const auto poly = toCgal(loops[li]);
+    poly.clear();
+    for (const Vec2& p : loops[li]) poly.emplace_back(p[0], p[1]);
     const auto o = CGAL::orientation_2(poly.begin(), poly.end(), K());
     const bool hole = depth[li] % 2 == 1;
     if (o == CGAL::COLLINEAR) return "loops[" + std::to_string(li) + "]: the loop encloses no area";

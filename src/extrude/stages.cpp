@@ -172,9 +172,10 @@ class Stager {
   // Runs one sweep (a stage or a recursive extrusion) under the remaining time, keeping its
   // faces raw; its events, divergence and warnings (with `context` appended) join the shell's.
   SweepOutput runSweep(SweepInput& in, const std::string& context);
-  Plan change(const Plan& plan, double h, bool atBase);
+  // Both take the plan by value and hand it back as it was where nothing happens at h.
+  Plan change(Plan plan, double h, bool atBase);
   Plan offset(const Plan& plan, double h, const OffsetEvent& ev, std::size_t index);
-  Plan forcedSteps(const Plan& plan, double h, bool atBase);
+  Plan forcedSteps(Plan plan, double h, bool atBase);
   Plan rebuild(const Plan& old, const EPolygonSet& next, double h, const std::function<Active(const Vec2&)>& other,
               bool atBase = false);
   void addFlatRegion(const EPolygonH& region, double h, bool up, const ShellFace& info);
@@ -237,6 +238,7 @@ SweepEdge Stager::sweepEdge(const Active& a, double za) const {
   e.sourceEdge = a.sourceEdge;
   e.profile = a.profile;
   e.step = a.step;
+  e.steps.reserve(shapes_[a.profile].size());
   for (const Seg& g : segs(a)) {
     if (g.horizontal || g.hi <= za + tol_.height) continue;
     e.steps.push_back({std::max(g.lo, za), g.angle, g.index});
@@ -332,8 +334,13 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first, doubl
   in.stopZ = next;
   in.stopAtOverlap = windingRule_ && repairs_ < kMaxRepairs;
   std::vector<const Active*> flat;
+  std::size_t edges = 0;
+  for (const auto& loop : plan) edges += loop.size();
+  flat.reserve(edges);
+  in.loops.reserve(plan.size());
   for (const auto& loop : plan) {
     std::vector<SweepEdge> l;
+    l.reserve(loop.size());
     for (const Active& a : loop) {
       l.push_back(sweepEdge(a, z));
       flat.push_back(&a);
@@ -367,6 +374,8 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first, doubl
   const double top = std::isnan(out.stoppedAt) ? next : out.stoppedAt;
   reached = top;
   std::vector<int> map(out.points.size());
+  points_.reserve(points_.size() + out.points.size());
+  faces_.reserve(faces_.size() + out.raw.size());
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     const Vec3& p = out.points[i];
     if (first && std::abs(p[2] - z) <= tol_.height) map[i] = point(p);  // the base: no seam below
@@ -381,6 +390,7 @@ Plan Stager::runStage(const Plan& plan, double z, double next, bool first, doubl
   Plan result;
   for (const auto& loop : out.plan) {
     std::vector<Active> l;
+    l.reserve(loop.size());
     for (const PlanCorner& c : loop) {
       Active a = *flat[c.input];
       a.start = c.p;
@@ -541,8 +551,21 @@ void checkMitre(const std::vector<std::vector<Item>>& loops, double h, double ba
 
 // The discrete changes at height h: horizontal moves of edges and plan steps, made together by
 // one recursive extrusion (Sec. 4.5.2, 4.7).
-Plan Stager::change(const Plan& plan, double h, bool atBase) {
+Plan Stager::change(Plan plan, double h, bool atBase) {
   frame(plan, h);
+  // Most heights (every stage of a plain roof) change nothing: no edge moves there and no
+  // natural step stands there.
+  auto moves = [&](const Active& a) {
+    double k = 0;
+    for (const Seg& g : segs(a))
+      if (g.horizontal && std::abs(g.lo - h) <= tol_.height) k += g.dw;
+    return k != 0;
+  };
+  const bool stepHere = std::any_of(spec_.steps.begin(), spec_.steps.end(), [&](const PlanStep& st) {
+    return st.shape != StepShape::Forced && std::abs(spec_.baseZ + st.anchor.height - h) <= tol_.height;
+  });
+  if (!stepHere && std::none_of(plan.begin(), plan.end(), [&](const auto& l) { return std::any_of(l.begin(), l.end(), moves); }))
+    return plan;
   struct Item {
     Active a;      // what the edge will be in the new plan
     double k = 0;  // its move over the unit height of the recursive extrusion
@@ -889,7 +912,7 @@ Plan Stager::rebuild(const Plan& old, const EPolygonSet& next, double h, const s
 // Forced steps (Sec. 3.5, 4.7): arbitrary polygons, placed in the frame of their anchor,
 // unioned with the active plan (exactly, so the plan never self-intersects); the part outside
 // the old plan gets a soffit, the new edges the step's front profile.
-Plan Stager::forcedSteps(const Plan& plan, double h, bool atBase) {
+Plan Stager::forcedSteps(Plan plan, double h, bool atBase) {
   struct Placed {
     std::size_t si;
     std::vector<Vec2> pts;
@@ -1063,11 +1086,12 @@ void Stager::fixTJunctions() {
   // The vertices by x and by y: a piece looks only among those within its bounding box on
   // the axis where the box is narrower (by x alone, the eaves of a ring of walls running
   // north-south scan a fifth of the shell each), and tests the box before the distance.
-  std::array<std::vector<int>, 2> sorted;
+  // Each list holds the coordinate beside the vertex, so the scan reads one array in order.
+  std::array<std::vector<std::pair<double, int>>, 2> sorted;
   for (int axis = 0; axis < 2; ++axis) {
     sorted[axis].resize(points_.size());
-    for (std::size_t i = 0; i < points_.size(); ++i) sorted[axis][i] = static_cast<int>(i);
-    std::sort(sorted[axis].begin(), sorted[axis].end(), [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
+    for (std::size_t i = 0; i < points_.size(); ++i) sorted[axis][i] = {points_[i][axis], static_cast<int>(i)};
+    std::sort(sorted[axis].begin(), sorted[axis].end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   }
   std::vector<std::pair<double, int>> on;
   // A tenth of δ2: vertices of one event lie on their edges to rounding, seam vertices to
@@ -1076,9 +1100,9 @@ void Stager::fixTJunctions() {
   // at 5e-11 and two footprints that failed before close).
   const double splitTol = 0.1 * tol_.cluster;
   std::size_t visited = 0;
+  std::vector<std::pair<int, int>> out;
   for (RawFace& f : faces_) {
-    std::vector<std::pair<int, int>> out;
-    out.reserve(f.segments.size());
+    out.clear();
     for (auto [u, v] : f.segments) {
       // A runaway shell (a sweep that diverged far beyond its plan) can make this quadratic:
       // honour the time limit and cancellation here too.
@@ -1099,9 +1123,9 @@ void Stager::fixTJunctions() {
         }
         const int axis = hi[1] - lo[1] < hi[0] - lo[0] ? 1 : 0;
         const auto& order = sorted[axis];
-        auto first = std::lower_bound(order.begin(), order.end(), lo[axis], [&](int w, double x) { return points_[w][axis] < x; });
-        for (auto it = first; it != order.end() && points_[*it][axis] <= hi[axis]; ++it) {
-          const int w = *it;
+        auto first = std::lower_bound(order.begin(), order.end(), lo[axis], [](const auto& w, double x) { return w.first < x; });
+        for (auto it = first; it != order.end() && it->first <= hi[axis]; ++it) {
+          const int w = it->second;
           if (w == u || w == v) continue;
           const Vec3& p = points_[w];
           if (p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2] || p[2] > hi[2]) continue;
@@ -1118,7 +1142,8 @@ void Stager::fixTJunctions() {
       }
       out.emplace_back(prev, v);
     }
-    f.segments = std::move(out);
+    // Most faces gain no piece: copied back into their own storage, no allocation.
+    f.segments.assign(out.begin(), out.end());
   }
 }
 
@@ -1133,6 +1158,7 @@ ExtrusionResult Stager::run(double scale) {
   for (std::size_t li = 0; li < spec_.loops.size(); ++li) {
     const PlanLoop& l = spec_.loops[li];
     std::vector<Active> loop;
+    loop.reserve(l.points.size());
     for (std::size_t i = 0; i < l.points.size(); ++i) {
       Active a;
       a.start = l.points[i];
@@ -1145,8 +1171,8 @@ ExtrusionResult Stager::run(double scale) {
     plan.push_back(std::move(loop));
   }
   double z = spec_.baseZ;
-  plan = change(plan, z, true);  // steps standing on the base (buttresses, bays)
-  plan = forcedSteps(plan, z, true);
+  plan = change(std::move(plan), z, true);  // steps standing on the base (buttresses, bays)
+  plan = forcedSteps(std::move(plan), z, true);
   bool first = true;
   while (!plan.empty()) {
     double next = std::numeric_limits<double>::infinity();
@@ -1178,8 +1204,8 @@ ExtrusionResult Stager::run(double scale) {
     if (!std::isfinite(next)) break;
     startMerging();
     z = next;
-    plan = change(plan, z, false);
-    plan = forcedSteps(plan, z, false);
+    plan = change(std::move(plan), z, false);
+    plan = forcedSteps(std::move(plan), z, false);
     for (std::size_t k = 0; k < spec_.offsets.size(); ++k)
       if (!plan.empty() && std::abs(spec_.baseZ + spec_.offsets[k].height - z) <= tol_.height)
         plan = offset(plan, z, spec_.offsets[k], k);

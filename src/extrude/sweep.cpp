@@ -84,6 +84,7 @@ struct FaceBuild {
 // Flags over corner or edge ids, cleared in O(1) by moving to a new generation.
 class Marks {
  public:
+  void reserve(std::size_t n) { v_.reserve(n); }
   void reset(std::size_t n) {
     if (v_.size() < n) v_.resize(n, 0);
     ++gen_;
@@ -105,6 +106,18 @@ struct Candidate {
   int corner;  // the corner whose motion predicted it (a cheap staleness test)
   unsigned id = 0;
   bool operator>(const Candidate& o) const { return z > o.z; }
+};
+
+// A chain of an event (Sec. 4.4): the edge arriving at its point and the edge leaving it.
+struct Chain {
+  int in, out;
+};
+
+// A chain's arriving or leaving edge as a direction out of the event point.
+struct Ray {
+  double angle;
+  int chain;
+  bool incoming;
 };
 
 // A corner's path x(z) = q + v z, and the heights between which its predictions count.
@@ -175,6 +188,9 @@ class Sweeper {
   std::vector<std::vector<Candidate>> pending_;
   std::vector<CornerPath> paths_;  // predictAgainst's scratch, kept to save the allocations
   std::vector<int> arriving_, involvedList_, splitList_;  // handleIntersection's, likewise
+  std::vector<int> signature_, newCorners_, made_;
+  std::vector<Chain> chains_;
+  std::vector<Ray> rays_;
   // Live corners and edges in id order (dead ones dropped when met), so an event scans the
   // plan as it is, not everything it ever was.
   std::vector<int> liveCorners_, liveEdges_;
@@ -323,6 +339,7 @@ int Sweeper::addFace(int src, int segment, double angle, const Edge& e) {
   // Outward normal of the direction plane n·x − k z = c is −(n, −k), normalised.
   f.normal = Vec3(-e.n[0], -e.n[1], e.k);
   f.normal.normalize();
+  f.segments.reserve(4);  // its bottom, two sides and a top, in the common case
   faces_.push_back(std::move(f));
   return static_cast<int>(faces_.size()) - 1;
 }
@@ -774,7 +791,8 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   {
     // Relinking the same edges again and again, each time a sliver higher, never ends the
     // sweep (it would crawl up at 1e-7 m per event): stop with a reason after 64 rounds.
-    std::vector<int> sig = involved;
+    std::vector<int>& sig = signature_;
+    sig.assign(involved.begin(), involved.end());
     std::sort(sig.begin(), sig.end());
     bool again = false;
     for (int k = 0; k < 2; ++k) again = again || (sig == lastInvolved_[k] && z - lastInvolvedZ_[k] <= 1e3 * tol_.cluster);
@@ -785,9 +803,10 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
         << " edges are relinked back and forth (the active plan overlaps itself along a line there)";
       throw Error(m.str());
     }
-    lastInvolved_[1] = std::move(lastInvolved_[0]);
+    // The three lists trade places, so none is allocated again.
+    lastInvolved_[1].swap(lastInvolved_[0]);
     lastInvolvedZ_[1] = lastInvolvedZ_[0];
-    lastInvolved_[0] = std::move(sig);
+    lastInvolved_[0].swap(sig);
     lastInvolvedZ_[0] = z;
   }
   ++events_;
@@ -797,10 +816,8 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   for (int ci : K) killCorner(ci, vl);
 
   // Chains: follow arriving corners from each edge whose start did not arrive.
-  struct Chain {
-    int in, out;  // the edge arriving at l and the edge leaving it
-  };
-  std::vector<Chain> chains;
+  std::vector<Chain>& chains = chains_;
+  chains.clear();
   Marks& used = used_;
   used.reset(edges_.size());
   for (int ei : involved) {
@@ -847,18 +864,15 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
 
   // Relink: each arriving edge pairs with the leaving edge next to it clockwise around l, so
   // no region between them contains another edge.
-  struct Ray {
-    double angle;
-    int chain;
-    bool incoming;
-  };
-  std::vector<Ray> rays;
+  std::vector<Ray>& rays = rays_;
+  rays.clear();
   for (int i = 0; i < static_cast<int>(chains.size()); ++i) {
     const Vec2 back = -edges_[chains[i].in].d, fwd = edges_[chains[i].out].d;
     rays.push_back({std::atan2(back[1], back[0]), i, true});
     rays.push_back({std::atan2(fwd[1], fwd[0]), i, false});
   }
-  std::vector<int> newCorners;
+  std::vector<int>& newCorners = newCorners_;
+  newCorners.clear();
   if (chains.size() == 1) {
     newCorners.push_back(newCorner(chains[0].in, chains[0].out, vl, l, z));
   } else if (chains.size() == 2) {
@@ -890,7 +904,8 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
   // Post inter-chain validation (Sec. 4.4): the corners made at l must keep the plan simple
   // just above it, below the next event. Where they do not, an earlier configuration was
   // already degenerate; the sweep says so.
-  std::vector<int> made;
+  std::vector<int>& made = made_;
+  made.clear();
   for (std::size_t ci = firstMade; ci < corners_.size(); ++ci)
     if (corners_[ci].alive && corners_[ci].vertex == vl) made.push_back(static_cast<int>(ci));
   if (traceOn()) {
@@ -1139,14 +1154,40 @@ void Sweeper::capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan)
 
 SweepOutput Sweeper::run() {
   z_ = in_.baseZ;
+  // Room for what a plan of n edges usually makes (an event ends or splits an edge and makes
+  // a corner or two; a face has a few pieces), so a small shell grows no list piece by piece.
+  std::size_t n = 0, faces = 1;
+  for (const auto& loop : in_.loops) {
+    n += loop.size();
+    for (const SweepEdge& e : loop) faces += e.steps.size();
+  }
+  const std::size_t room = 2 * n + 8;
+  inputs_.reserve(n);
+  edges_.reserve(room);
+  corners_.reserve(room);
+  pending_.reserve(room);
+  points_.reserve(room);
+  faces_.reserve(faces);
+  liveCorners_.reserve(room);
+  liveEdges_.reserve(room);
+  recent_.reserve(n);
+  for (Marks* m : {&inK_, &involved_, &used_}) m->reserve(room);
+  {
+    std::vector<Candidate> heads;
+    heads.reserve(room);
+    queue_ = decltype(queue_)(std::greater<Candidate>(), std::move(heads));
+  }
   // Input edges, their first faces, and the base.
   FaceBuild base;
   base.base = true;
   base.normal = Vec3(0, 0, -1);
+  base.segments.reserve(n);
+  std::vector<int> verts;
   for (const auto& loop : in_.loops) {
     const int first = static_cast<int>(edges_.size());
     const int n = static_cast<int>(loop.size());
-    std::vector<int> verts;
+    verts.clear();
+    verts.reserve(n);
     for (int i = 0; i < n; ++i) verts.push_back(addVertex(loop[i].start, z_));
     for (int i = 0; i < n; ++i) {
       inputs_.push_back(&loop[i]);
@@ -1262,7 +1303,7 @@ SweepOutput Sweeper::run() {
   if (std::isfinite(stopZ_)) capRemaining(stopZ_, &out.plan);
   else capRemaining(z_);
   buildFaces(out);
-  out.warnings = warnings_;
+  out.warnings = std::move(warnings_);
   out.events = events_;
   out.diverged = diverged_;
   return out;
@@ -1286,8 +1327,8 @@ std::vector<std::vector<PlanCorner>> Sweeper::snapshot(double z) const {
 // ------------------------------------------------------------------ faces
 
 void Sweeper::buildFaces(SweepOutput& out) {
-  out.points = points_;
-  for (const Vec3& p : points_) out.maxHeight = std::max(out.maxHeight, p[2]);
+  out.points = std::move(points_);
+  for (const Vec3& p : out.points) out.maxHeight = std::max(out.maxHeight, p[2]);
   std::vector<RawFace> raw;
   raw.reserve(faces_.size());
   for (FaceBuild& f : faces_) {
@@ -1306,7 +1347,7 @@ void Sweeper::buildFaces(SweepOutput& out) {
     raw.push_back(std::move(r));
   }
   if (in_.keepRaw) out.raw = std::move(raw);
-  else traceFaces(points_, raw, tol_, out.faces, warnings_);
+  else traceFaces(out.points, raw, tol_, out.faces, warnings_);
 }
 
 }  // namespace
@@ -1317,7 +1358,9 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
   // few pieces each, and allocating them anew for every face cost more than the tracing.
   std::vector<std::pair<int, int>> all, segs;
   std::vector<char> usedSeg;
-  std::vector<int> outers, holes;
+  std::vector<int> outers, holes, loop, verts;
+  std::vector<std::size_t> starts;
+  faces.reserve(faces.size() + raw.size());
   for (const RawFace& rf : raw) {
     const ShellFace& f = rf.info;
     // Drop zero-length pieces and pieces cancelled by their reverse (a face folded onto itself):
@@ -1352,11 +1395,17 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
     auto flat = [&](int v) { return Vec2(OpenMesh::dot(points_[v], u), OpenMesh::dot(points_[v], w)); };
 
     usedSeg.assign(segs.size(), 0);
-    std::vector<std::vector<int>> loops;
+    // The face's loops, end to end in `verts` (loop k is [starts[k], starts[k + 1])).
+    verts.clear();
+    starts.assign(1, 0);
+    auto keep = [&](auto first, auto last) {
+      if (last - first < 3) return;
+      verts.insert(verts.end(), first, last);
+      starts.push_back(verts.size());
+    };
     for (int s0 = 0; s0 < static_cast<int>(segs.size()); ++s0) {
       if (usedSeg[s0]) continue;
-      std::vector<int> loop;
-      loop.reserve(segs.size() - s0);  // at most the pieces not used yet: one allocation, not a doubling per few
+      loop.clear();
       int s = s0;
       while (s >= 0 && !usedSeg[s]) {
         usedSeg[s] = 1;
@@ -1389,42 +1438,55 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
       }
       // A loop that passes one vertex twice (a dormer's ridge reaching the top of the wall it
       // stands on) is two loops touching there: a polygon mesh takes each as its own face.
-      std::vector<std::vector<int>> pending{std::move(loop)};
+      // Split at the first repeat, the part after it first, until none is left (rare: the
+      // common loop goes straight to `verts`).
+      auto repeatIn = [](const std::vector<int>& l) {
+        for (std::size_t i = 0; i < l.size(); ++i)
+          for (std::size_t j = i + 1; j < l.size(); ++j)
+            if (l[i] == l[j]) return std::make_pair(i, j);
+        return std::make_pair(l.size(), l.size());
+      };
+      if (repeatIn(loop).first == loop.size()) {
+        keep(loop.begin(), loop.end());
+        continue;
+      }
+      std::vector<std::vector<int>> pending{loop};
       while (!pending.empty()) {
         std::vector<int> l = std::move(pending.back());
         pending.pop_back();
-        bool split = false;
-        for (std::size_t i = 0; i < l.size() && !split; ++i)
-          for (std::size_t j = i + 1; j < l.size() && !split; ++j)
-            if (l[i] == l[j]) {
-              pending.emplace_back(l.begin() + i, l.begin() + j);
-              std::vector<int> rest(l.begin(), l.begin() + i);
-              rest.insert(rest.end(), l.begin() + j, l.end());
-              pending.push_back(std::move(rest));
-              split = true;
-            }
-        if (!split && l.size() >= 3) loops.push_back(std::move(l));
+        const auto [i, j] = repeatIn(l);
+        if (i == l.size()) {
+          keep(l.begin(), l.end());
+          continue;
+        }
+        pending.emplace_back(l.begin() + i, l.begin() + j);
+        std::vector<int> rest(l.begin(), l.begin() + i);
+        rest.insert(rest.end(), l.begin() + j, l.end());
+        pending.push_back(std::move(rest));
       }
     }
+    const int loopCount = static_cast<int>(starts.size()) - 1;
+    auto begin = [&](int k) { return verts.begin() + static_cast<std::ptrdiff_t>(starts[k]); };
+    auto end = [&](int k) { return verts.begin() + static_cast<std::ptrdiff_t>(starts[k + 1]); };
     // Outer loops are counter-clockwise in the face frame; holes go to the outer loop that
     // contains them.
-    auto signedArea = [&](const std::vector<int>& loop) {
+    auto signedArea = [&](auto first, auto last) {
       double a = 0;
-      for (std::size_t i = 0; i < loop.size(); ++i) a += cross2(flat(loop[i]), flat(loop[(i + 1) % loop.size()]));
+      for (auto it = first; it != last; ++it) a += cross2(flat(*it), flat(it + 1 == last ? *first : *(it + 1)));
       return 0.5 * a;
     };
     outers.clear();
     holes.clear();
-    for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
-      const double a = signedArea(loops[i]);
+    for (int i = 0; i < loopCount; ++i) {
+      const double a = signedArea(begin(i), end(i));
       if (std::abs(a) <= tol_.cluster * tol_.cluster) continue;
       (a > 0 ? outers : holes).push_back(i);
     }
-    std::vector<ShellFace> made;
+    // The faces made here go straight to the output, from `made` on.
+    const std::size_t made = faces.size();
     for (int o : outers) {
-      ShellFace sf = f;
-      sf.loops.assign(1, loops[o]);
-      made.push_back(std::move(sf));
+      faces.push_back(f);
+      faces.back().loops.emplace_back(begin(o), end(o));
     }
     auto inside = [&](const Vec2& p, const std::vector<int>& loop) {
       bool in = false;
@@ -1437,24 +1499,24 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
     for (int h : holes) {
       // A hole's test point: the midpoint of its first edge nudged to its inside is robust
       // against holes touching their outer loop at a vertex.
-      const auto& hl = loops[h];
+      const auto hl = begin(h);
       Vec2 probe = (flat(hl[0]) + flat(hl[1])) * 0.5;
       int owner = -1;
       double ownerArea = 1e300;
-      for (std::size_t k = 0; k < made.size(); ++k) {
-        if (!inside(probe, made[k].loops[0])) continue;
-        const double a = signedArea(made[k].loops[0]);
+      for (std::size_t k = made; k < faces.size(); ++k) {
+        const std::vector<int>& outer = faces[k].loops[0];
+        if (!inside(probe, outer)) continue;
+        const double a = signedArea(outer.begin(), outer.end());
         if (a < ownerArea) {
           ownerArea = a;
           owner = static_cast<int>(k);
         }
       }
-      if (owner >= 0) made[owner].loops.push_back(hl);
-      else if (!made.empty()) {
+      if (owner >= 0) faces[owner].loops.emplace_back(begin(h), end(h));
+      else if (faces.size() > made) {
         warnings.push_back("a face boundary piece could not be placed (hole outside its face)");
       }
     }
-    for (auto& m : made) faces.push_back(std::move(m));
   }
 }
 
