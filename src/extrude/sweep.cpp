@@ -1360,6 +1360,7 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
   std::vector<char> usedSeg;
   std::vector<int> outers, holes, loop, verts;
   std::vector<std::size_t> starts;
+  std::vector<Vec2> flat2D;
   faces.reserve(faces.size() + raw.size());
   for (const RawFace& rf : raw) {
     const ShellFace& f = rf.info;
@@ -1411,7 +1412,6 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
         usedSeg[s] = 1;
         loop.push_back(segs[s].first);
         const int at = segs[s].second;
-        const Vec2 back = flat(segs[s].first) - flat(at);  // used when several pieces leave `at`
         // Among the pieces leaving `at`, the first one clockwise from the way back.
         int best = -1, candidates = 0;
         const auto range = leaving(at);
@@ -1421,6 +1421,7 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
             best = static_cast<int>(it - segs.begin());
           }
         if (candidates > 1) {
+          const Vec2 back = flat(segs[s].first) - flat(at);
           double bestTurn = 1e9;
           for (auto it = range.first; it != range.second; ++it) {
             const int k = static_cast<int>(it - segs.begin());
@@ -1469,16 +1470,20 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
     auto begin = [&](int k) { return verts.begin() + static_cast<std::ptrdiff_t>(starts[k]); };
     auto end = [&](int k) { return verts.begin() + static_cast<std::ptrdiff_t>(starts[k + 1]); };
     // Outer loops are counter-clockwise in the face frame; holes go to the outer loop that
-    // contains them.
-    auto signedArea = [&](auto first, auto last) {
+    // contains them. Each vertex of a loop in the face's frame is worked out once (flat2D[i]
+    // for verts[i]).
+    flat2D.resize(verts.size());
+    for (std::size_t i = 0; i < verts.size(); ++i) flat2D[i] = flat(verts[i]);
+    auto signedArea = [&](int k) {
+      const std::size_t first = starts[k], last = starts[k + 1];
       double a = 0;
-      for (auto it = first; it != last; ++it) a += cross2(flat(*it), flat(it + 1 == last ? *first : *(it + 1)));
+      for (std::size_t i = first; i < last; ++i) a += cross2(flat2D[i], flat2D[i + 1 == last ? first : i + 1]);
       return 0.5 * a;
     };
     outers.clear();
     holes.clear();
     for (int i = 0; i < loopCount; ++i) {
-      const double a = signedArea(begin(i), end(i));
+      const double a = signedArea(i);
       if (std::abs(a) <= tol_.cluster * tol_.cluster) continue;
       (a > 0 ? outers : holes).push_back(i);
     }
@@ -1506,7 +1511,7 @@ void traceFaces(const std::vector<Vec3>& points_, const std::vector<RawFace>& ra
       for (std::size_t k = made; k < faces.size(); ++k) {
         const std::vector<int>& outer = faces[k].loops[0];
         if (!inside(probe, outer)) continue;
-        const double a = signedArea(outer.begin(), outer.end());
+        const double a = signedArea(outers[k - made]);
         if (a < ownerArea) {
           ownerArea = a;
           owner = static_cast<int>(k);
