@@ -92,13 +92,20 @@ void Hip6000_Corbel_OneThread(benchmark::State& state) {
 }
 BENCHMARK(Hip6000_Corbel_OneThread)->Unit(benchmark::kMillisecond);
 
-void Hip6000_Corbel_AllCores(benchmark::State& state) {
+// The batch (each shell also built into a half-edge mesh and validated) on `jobs` threads:
+// with Hip6000_Batch_OneJob, how far the batch scales over the cores.
+void runBatch(benchmark::State& state, unsigned jobs) {
   std::vector<BatchItem> items;
   for (const auto& l : batch()) items.push_back({"", hipSpec(l), ""});
-  for (auto _ : state) benchmark::DoNotOptimize(extrudeBatch(items, {}).size());
+  BatchOptions o;
+  o.jobs = jobs;
+  for (auto _ : state) benchmark::DoNotOptimize(extrudeBatch(items, o).size());
   state.SetItemsProcessed(state.iterations() * static_cast<long>(items.size()));
 }
+void Hip6000_Corbel_AllCores(benchmark::State& state) { runBatch(state, 0); }
+void Hip6000_Batch_OneJob(benchmark::State& state) { runBatch(state, 1); }
 BENCHMARK(Hip6000_Corbel_AllCores)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Hip6000_Batch_OneJob)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void Hip6000_CgalStraightSkeleton(benchmark::State& state) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
