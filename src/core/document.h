@@ -45,18 +45,28 @@ struct PlanBackground {
   bool operator==(const PlanBackground&) const = default;
 };
 
+// A key of a project file that this build does not know (written by a newer corbel, or by
+// hand), kept as read so that saving writes it back where it was (core/project_io.h).
+struct KeptKey {
+  std::string pointer;  // JSON pointer (RFC 6901) from the object, or from the file's root
+  std::string json;     // the value, as JSON text
+  bool operator==(const KeptKey&) const = default;
+};
+
 struct DocObject {
   ObjectId id = 0;
   std::string name;
   bool visible = true;
   Spec spec;
   std::optional<PlanBackground> background;
+  std::vector<KeptKey> kept;  // unknown keys of its entry in the file
   bool operator==(const DocObject&) const = default;
 };
 
 struct Document {
   std::string name = "untitled";
   std::vector<DocObject> objects;
+  std::vector<KeptKey> kept;  // unknown keys at the file's top level
 
   DocObject* find(ObjectId id);
   const DocObject* find(ObjectId id) const;

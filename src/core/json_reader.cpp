@@ -40,25 +40,48 @@ std::string childPath(const std::string& path, const std::string& key) {
 
 }  // namespace
 
+JsonReader JsonReader::child(const nlohmann::json& value, std::string path,
+                             const nlohmann::json::json_pointer& pointer) const {
+  JsonReader r(value, std::move(path), unknown_);
+  r.pointer_ = pointer;
+  return r;
+}
+
 JsonReader JsonReader::at(const std::string& key) const {
   expectObject();
   auto it = v_.find(key);
   if (it == v_.end()) throw InputError(childPath(path_, key), "missing");
-  return JsonReader(*it, childPath(path_, key));
+  return child(*it, childPath(path_, key), pointer_ / key);
 }
 
 std::optional<JsonReader> JsonReader::find(const std::string& key) const {
   expectObject();
   auto it = v_.find(key);
   if (it == v_.end()) return std::nullopt;
-  return JsonReader(*it, childPath(path_, key));
+  return child(*it, childPath(path_, key), pointer_ / key);
+}
+
+JsonReader JsonReader::member(const std::string& key, std::string path) const {
+  expectObject();
+  auto it = v_.find(key);
+  if (it == v_.end()) throw InputError(path, "missing");
+  return child(*it, std::move(path), pointer_ / key);
+}
+
+JsonReader JsonReader::element(std::size_t index) const {
+  if (!v_.is_array()) fail("expected an array, found " + typeName(v_));
+  if (index >= v_.size()) fail("has no entry " + std::to_string(index));
+  return child(v_[index], path_ + "[" + std::to_string(index) + "]", pointer_ / index);
 }
 
 std::vector<std::string> JsonReader::unknownKeys(const std::set<std::string>& known) const {
   std::vector<std::string> out;
   if (!v_.is_object()) return out;
   for (auto it = v_.begin(); it != v_.end(); ++it)
-    if (!known.count(it.key())) out.push_back(childPath(path_, it.key()));
+    if (!known.count(it.key())) {
+      out.push_back(childPath(path_, it.key()));
+      if (unknown_) unknown_->push_back({pointer_ / it.key(), it.value()});
+    }
   return out;
 }
 
@@ -68,7 +91,7 @@ std::vector<JsonReader> JsonReader::array(std::size_t maxCount) const {
     fail("has " + std::to_string(v_.size()) + " entries, more than the limit of " + std::to_string(maxCount));
   std::vector<JsonReader> out;
   out.reserve(v_.size());
-  for (std::size_t i = 0; i < v_.size(); ++i) out.emplace_back(v_[i], path_ + "[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < v_.size(); ++i) out.push_back(child(v_[i], path_ + "[" + std::to_string(i) + "]", pointer_ / i));
   return out;
 }
 

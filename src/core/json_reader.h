@@ -13,11 +13,24 @@
 
 namespace corbel {
 
+// A key a reader did not know: where it was (as a JSON pointer from the root reader) and its
+// value. Project files keep such keys so a save by this build writes them back
+// (core/project_io.h).
+struct UnknownKey {
+  nlohmann::json::json_pointer pointer;
+  nlohmann::json value;
+};
+
 class JsonReader {
  public:
   JsonReader(const nlohmann::json& value, std::string path) : v_(value), path_(std::move(path)) {}
+  // A root reader whose unknownKeys() calls, on it and on every reader derived from it, also
+  // record each unknown key and its value in `unknown`.
+  JsonReader(const nlohmann::json& value, std::string path, std::vector<UnknownKey>* unknown)
+      : v_(value), path_(std::move(path)), unknown_(unknown) {}
 
   const std::string& path() const { return path_; }
+  const nlohmann::json::json_pointer& pointer() const { return pointer_; }
   const nlohmann::json& raw() const { return v_; }
   [[noreturn]] void fail(const std::string& reason) const { throw InputError(path_, reason); }
 
@@ -25,8 +38,14 @@ class JsonReader {
   JsonReader at(const std::string& key) const;
   std::optional<JsonReader> find(const std::string& key) const;
   void expectObject() const;
-  // Keys present in the object but not in `known`, as full paths (for warnings).
+  // Keys present in the object but not in `known`, as full paths (for warnings); recorded
+  // with their values where the root reader was given a list for them.
   std::vector<std::string> unknownKeys(const std::set<std::string>& known) const;
+
+  // The member `key` of an object, or the entry `index` of an array, reported at `path` (for
+  // maps keyed by names the caller writes its own form, like overrides["osm:w1"]).
+  JsonReader member(const std::string& key, std::string path) const;
+  JsonReader element(std::size_t index) const;
 
   // Array access.
   std::vector<JsonReader> array(std::size_t maxCount) const;
@@ -42,8 +61,11 @@ class JsonReader {
 
  private:
   static std::string typeName(const nlohmann::json& v);
+  JsonReader child(const nlohmann::json& value, std::string path, const nlohmann::json::json_pointer& pointer) const;
   const nlohmann::json& v_;
   std::string path_;
+  nlohmann::json::json_pointer pointer_;
+  std::vector<UnknownKey>* unknown_ = nullptr;
 };
 
 // Parses text as JSON with a nesting limit (deeply nested input is refused before parsing,

@@ -45,7 +45,7 @@ ojson masonryToJson(const MasonrySpec& m) {
 MasonrySpec masonryFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
   for (auto& k : r.unknownKeys({"model", "parameters", "free", "friction", "kern", "material"}))
-    warnings.push_back(k + ": unknown key ignored");
+    warnings.push_back(k + ": unknown key kept");
   MasonrySpec m;
   const JsonReader model = r.at("model");
   m.model = model.string(limits::kMaxNameLength);
@@ -60,7 +60,7 @@ MasonrySpec masonryFromJson(const JsonReader& r, std::vector<std::string>& warni
     for (auto it = o.raw().begin(); it != o.raw().end(); ++it) {
       if (it.key().empty() || it.key().size() > limits::kMaxNameLength)
         o.fail("a parameter name must have 1 to " + std::to_string(limits::kMaxNameLength) + " characters");
-      out.emplace_back(it.key(), JsonReader(it.value(), o.path() + "." + it.key()));
+      out.emplace_back(it.key(), o.member(it.key(), o.path() + "." + it.key()));
     }
     return out;
   };
@@ -84,7 +84,7 @@ MasonrySpec masonryFromJson(const JsonReader& r, std::vector<std::string>& warni
 BoxSpec boxFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
   for (auto& k : r.unknownKeys({"origin", "size", "rotation", "material", "repeat"}))
-    warnings.push_back(k + ": unknown key ignored");
+    warnings.push_back(k + ": unknown key kept");
   BoxSpec b;
   if (auto v = r.find("origin")) b.origin = v->vec3();
   b.size = r.at("size").vec3();
@@ -92,7 +92,7 @@ BoxSpec boxFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   if (auto v = r.find("material")) b.material = v->string(limits::kMaxNameLength);
   if (auto rep = r.find("repeat")) {
     rep->expectObject();
-    for (auto& k : rep->unknownKeys({"count", "spacing"})) warnings.push_back(k + ": unknown key ignored");
+    for (auto& k : rep->unknownKeys({"count", "spacing"})) warnings.push_back(k + ": unknown key kept");
     if (auto c = rep->find("count")) {
       auto [nx, ny] = c->integerPair(1, limits::kMaxRepeat);
       if (nx * ny > limits::kMaxRepeat)
@@ -156,13 +156,13 @@ KifsSpec kifsFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   const std::set<std::string> top = {"preset", "iterations", "scale",  "centre",      "r1",    "r2",
                                      "bailout", "mass",      "facade", "floors", "curvilinear", "trace",
                                      "meshResolution", "material"};
-  for (auto& k : r.unknownKeys(top)) warnings.push_back(k + ": unknown key ignored");
+  for (auto& k : r.unknownKeys(top)) warnings.push_back(k + ": unknown key kept");
   KifsSpec k;
   auto group = [&](const char* key, const std::set<std::string>& known) -> std::optional<JsonReader> {
     auto g = r.find(key);
     if (!g) return std::nullopt;
     g->expectObject();
-    for (auto& u : g->unknownKeys(known)) warnings.push_back(u + ": unknown key ignored");
+    for (auto& u : g->unknownKeys(known)) warnings.push_back(u + ": unknown key kept");
     return g;
   };
   auto number = [](const std::optional<JsonReader>& g, const char* key, double& out) {
@@ -235,7 +235,7 @@ ojson growthToJson(const GrowthSpec& g) {
 // The site's own keys are checked by the growth kernel (growth/site.h) when it builds the object.
 GrowthSpec growthFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"site", "seed", "steps"})) warnings.push_back(k + ": unknown key ignored");
+  for (auto& k : r.unknownKeys({"site", "seed", "steps"})) warnings.push_back(k + ": unknown key kept");
   GrowthSpec g;
   const JsonReader site = r.at("site");
   site.expectObject();
@@ -257,7 +257,7 @@ ojson unitToJson(const UnitSpec& u) {
 
 UnitSpec unitFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"parts", "material"})) warnings.push_back(k + ": unknown key ignored");
+  for (auto& k : r.unknownKeys({"parts", "material"})) warnings.push_back(k + ": unknown key kept");
   UnitSpec u;
   for (const JsonReader& p : r.at("parts").array(limits::kMaxUnitParts)) {
     const std::vector<JsonReader> v = p.array(6);
@@ -346,7 +346,7 @@ ojson townToJson(const TownSpec& t, const std::string& folder) {
 TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vector<std::string>& warnings) {
   r.expectObject();
   for (auto& k : r.unknownKeys({"footprints", "style", "seed", "detail", "overrides", "streets"}))
-    warnings.push_back(k + ": unknown key ignored");
+    warnings.push_back(k + ": unknown key kept");
   TownSpec t;
   const auto pathOrText = [&](const JsonReader& v, std::string& path, std::string& text) {
     if (v.raw().is_string()) path = resolvedPath(v, folder);
@@ -368,11 +368,11 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
     ov->expectObject();
     if (ov->raw().size() > limits::kMaxTownOverrides) ov->fail("too many overrides");
     for (const auto& [id, value] : ov->raw().items()) {
-      const JsonReader o(value, ov->path() + "[\"" + id + "\"]");
+      const JsonReader o = ov->member(id, ov->path() + "[\"" + id + "\"]");
       o.expectObject();
       if (id.empty()) o.fail("a footprint id must not be empty");
       if (id.size() > limits::kMaxNameLength) o.fail("the footprint id is too long");
-      for (auto& k : o.unknownKeys({"type", "profiles", "edges"})) warnings.push_back(k + ": unknown key ignored");
+      for (auto& k : o.unknownKeys({"type", "profiles", "edges"})) warnings.push_back(k + ": unknown key kept");
       TownOverride over;
       if (auto ty = o.find("type")) {
         over.type = ty->string(limits::kMaxNameLength);
@@ -381,7 +381,7 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
       if (auto pr = o.find("profiles")) {
         pr->expectObject();
         for (const auto& [side, name] : pr->raw().items()) {
-          const JsonReader n(name, pr->path() + "." + side);
+          const JsonReader n = pr->member(side, pr->path() + "." + side);
           if (side != "street" && side != "side" && side != "back")
             n.fail("expected \"street\", \"side\" or \"back\", found \"" + side + "\"");
           const std::string profile = n.string(limits::kMaxNameLength);
@@ -392,7 +392,7 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
       if (auto ed = o.find("edges")) {
         ed->expectObject();
         for (const auto& [key, name] : ed->raw().items()) {
-          const JsonReader n(name, ed->path() + "[\"" + key + "\"]");
+          const JsonReader n = ed->member(key, ed->path() + "[\"" + key + "\"]");
           if (!parseTownEdgeKey(key)) n.fail("expected an edge \"LOOP:EDGE\" (as \"0:3\"), found \"" + key + "\"");
           const std::string profile = n.string(limits::kMaxNameLength);
           if (profile.empty()) n.fail("the profile name must not be empty");
@@ -407,21 +407,21 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
     if (!sv->raw().is_array()) sv->fail("expected an array of streets");
     if (sv->raw().size() > limits::kMaxTownStreets) sv->fail("too many streets (at most 256)");
     for (std::size_t k = 0; k < sv->raw().size(); ++k) {
-      const JsonReader st(sv->raw()[k], sv->path() + "[" + std::to_string(k) + "]");
+      const JsonReader st = sv->element(k);
       st.expectObject();
       for (auto& key : st.unknownKeys({"points", "width", "setback", "depth", "plot_width", "both_sides", "plots"}))
-        warnings.push_back(key + ": unknown key ignored");
+        warnings.push_back(key + ": unknown key kept");
       TownStreet street;
       const JsonReader pts = st.at("points");
       if (!pts.raw().is_array()) pts.fail("expected an array of [x, y] points");
       if (pts.raw().size() < 2 || pts.raw().size() > limits::kMaxStreetPoints)
         pts.fail("expected 2 to 64 control points, found " + std::to_string(pts.raw().size()));
       for (std::size_t i = 0; i < pts.raw().size(); ++i) {
-        const JsonReader p(pts.raw()[i], pts.path() + "[" + std::to_string(i) + "]");
+        const JsonReader p = pts.element(i);
         if (!p.raw().is_array() || p.raw().size() != 2) p.fail("expected [x, y]");
         std::array<double, 2> xy{};
         for (int c = 0; c < 2; ++c)
-          xy[std::size_t(c)] = JsonReader(p.raw()[std::size_t(c)], p.path() + "[" + std::to_string(c) + "]")
+          xy[std::size_t(c)] = p.element(std::size_t(c))
                                    .number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
         if (!street.points.empty() && street.points.back() == xy) p.fail("repeats the point before it");
         street.points.push_back(xy);
@@ -566,7 +566,7 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
 ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
   for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles", "steps", "offsets", "anchors"}))
-    warnings.push_back(k + ": unknown key ignored");
+    warnings.push_back(k + ": unknown key kept");
   ExtrusionSpec e;
   if (auto v = r.find("material")) e.material = v->string(limits::kMaxNameLength);
   if (auto v = r.find("roof_material")) e.roofMaterial = v->string(limits::kMaxNameLength);
@@ -581,7 +581,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   std::map<std::string, int> byName;
   for (const JsonReader& pr : r.at("profiles").array(limits::kMaxProfiles)) {
     pr.expectObject();
-    for (auto& k : pr.unknownKeys({"name", "points", "tags"})) warnings.push_back(k + ": unknown key ignored");
+    for (auto& k : pr.unknownKeys({"name", "points", "tags"})) warnings.push_back(k + ": unknown key kept");
     Profile p;
     const JsonReader nameReader = pr.at("name");
     p.name = nameReader.string(limits::kMaxNameLength);
@@ -595,7 +595,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   }
   const JsonReader plan = r.at("plan");
   plan.expectObject();
-  for (auto& k : plan.unknownKeys({"loops", "profile", "edge_profiles"})) warnings.push_back(k + ": unknown key ignored");
+  for (auto& k : plan.unknownKeys({"loops", "profile", "edge_profiles"})) warnings.push_back(k + ": unknown key kept");
   auto profileIndex = [&](const JsonReader& nameReader) {
     const std::string n = nameReader.string(limits::kMaxNameLength);
     auto it = byName.find(n);
@@ -632,7 +632,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   auto anchorFrom = [&](const JsonReader& ar, std::set<std::string> extra) {
     ar.expectObject();
     extra.insert({"loop", "edge", "fraction", "at", "height"});
-    for (auto& k : ar.unknownKeys(extra)) warnings.push_back(k + ": unknown key ignored");
+    for (auto& k : ar.unknownKeys(extra)) warnings.push_back(k + ": unknown key kept");
     Anchor a;
     a.loop = static_cast<int>(ar.at("loop").integer(0, static_cast<long>(limits::kMaxLoops)));
     a.edge = static_cast<int>(ar.at("edge").integer(0, static_cast<long>(limits::kMaxLoopPoints)));
@@ -651,7 +651,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   auto repeatFrom = [&](const JsonReader& rr, const Anchor& a) {
     rr.expectObject();
     for (auto& k : rr.unknownKeys({"kind", "along", "spacing", "height", "row_spacing"}))
-      warnings.push_back(k + ": unknown key ignored");
+      warnings.push_back(k + ": unknown key kept");
     Repeat rep;
     const JsonReader kindReader = rr.at("kind");
     const std::string kind = kindReader.string(32);
@@ -674,7 +674,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
     for (const JsonReader& sr : steps->array(limits::kMaxSteps)) {
       sr.expectObject();
       for (auto& k : sr.unknownKeys({"name", "anchor", "shape", "width", "depth", "cant", "front_profile", "side_profile", "points", "repeat"}))
-        warnings.push_back(k + ": unknown key ignored");
+        warnings.push_back(k + ": unknown key kept");
       PlanStep st;
       if (auto v = sr.find("name")) st.name = v->string(limits::kMaxNameLength);
       st.anchor = anchorFrom(sr.at("anchor"), {});
@@ -700,14 +700,14 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   if (auto offsets = r.find("offsets")) {
     for (const JsonReader& orr : offsets->array(limits::kMaxSteps)) {
       orr.expectObject();
-      for (auto& k : orr.unknownKeys({"height", "side_profile", "edges"})) warnings.push_back(k + ": unknown key ignored");
+      for (auto& k : orr.unknownKeys({"height", "side_profile", "edges"})) warnings.push_back(k + ": unknown key kept");
       OffsetEvent o;
       o.height = orr.at("height").number(0.0, limits::kMaxCoordinate);
       o.sideProfile = profileIndex(orr.at("side_profile"));
       for (const JsonReader& tr : orr.at("edges").array(limits::kMaxProfiles)) {
         tr.expectObject();
         for (auto& k : tr.unknownKeys({"profile", "inside", "outside", "inside_profile", "outside_profile"}))
-          warnings.push_back(k + ": unknown key ignored");
+          warnings.push_back(k + ": unknown key kept");
         OffsetEdge t;
         t.profile = profileIndex(tr.at("profile"));
         t.inside = tr.at("inside").number(-limits::kMaxCoordinate, limits::kMaxCoordinate);
@@ -762,7 +762,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
 
 PlanBackground backgroundFromJson(const JsonReader& r, const std::string& folder, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"image", "scale", "origin", "opacity"})) warnings.push_back(k + ": unknown key ignored");
+  for (auto& k : r.unknownKeys({"image", "scale", "origin", "opacity"})) warnings.push_back(k + ": unknown key kept");
   PlanBackground b;
   const JsonReader image = r.at("image");
   b.image = image.string(limits::kMaxPathLength);
@@ -800,11 +800,92 @@ std::string absoluteFolderOf(const std::string& path) {
   return ec ? std::string() : abs.parent_path().lexically_normal().string();
 }
 
+// The unknown keys recorded under `base` (an object's entry, or the root), relative to it and
+// in the order they were met; they leave `unknown`.
+std::vector<KeptKey> keptUnder(std::vector<UnknownKey>& unknown, const nlohmann::json::json_pointer& base) {
+  std::vector<KeptKey> kept;
+  const std::string prefix = base.to_string();
+  std::erase_if(unknown, [&](const UnknownKey& k) {
+    const std::string at = k.pointer.to_string();
+    if (at.compare(0, prefix.size(), prefix) != 0 || at.size() == prefix.size() || at[prefix.size()] != '/')
+      return false;
+    kept.push_back({at.substr(prefix.size()), k.value.dump()});
+    return true;
+  });
+  return kept;
+}
+
+// Writes kept keys back into `j` (an object's entry or the root) where their parent still is an
+// object without that key; a key whose place is gone with an edit (a profile deleted, say) is
+// dropped.
+void putKept(ojson& j, const std::vector<KeptKey>& kept) {
+  for (const KeptKey& k : kept) {
+    const ojson::json_pointer at(k.pointer);
+    const ojson::json_pointer parent = at.parent_pointer();
+    if (!j.contains(parent)) continue;
+    ojson& holder = j[parent];
+    if (holder.is_object() && !holder.contains(at.back())) holder[at.back()] = ojson::parse(k.json);
+  }
+}
+
+// The file's layout: a value goes on one line when that line stays within kLineWidth columns
+// (a point, a short list, a small object); otherwise an object takes a line per key and an
+// array a line per entry. Scalars are nlohmann's own (shortest round-trip numbers), so only
+// whitespace differs from a plain dump.
+constexpr std::size_t kLineWidth = 100;
+
+std::string scalarText(const ojson& v) { return v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
+
+std::string flatText(const ojson& v) {
+  if (v.is_object()) {
+    std::string out = "{";
+    for (auto it = v.begin(); it != v.end(); ++it)
+      out += (it == v.begin() ? "" : ", ") + scalarText(ojson(it.key())) + ": " + flatText(it.value());
+    return out + "}";
+  }
+  if (v.is_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + flatText(v[i]);
+    return out + "]";
+  }
+  return scalarText(v);
+}
+
+// Writes `v`, which starts `column` columns into its line, at `indent`.
+void writeValue(std::string& out, const ojson& v, std::size_t indent, std::size_t column) {
+  if ((!v.is_object() && !v.is_array()) || v.empty()) {
+    out += v.is_object() ? "{}" : v.is_array() ? "[]" : scalarText(v);
+    return;
+  }
+  if (indent > 0) {  // the root object is always broken into lines
+    const std::string flat = flatText(v);
+    if (column + flat.size() + 1 <= kLineWidth) {  // + 1 for a comma after it
+      out += flat;
+      return;
+    }
+  }
+  const std::string inner(indent + 2, ' ');
+  out += v.is_object() ? "{\n" : "[\n";
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    out += inner;
+    std::size_t at = inner.size();
+    if (v.is_object()) {
+      const std::string key = scalarText(ojson(it.key())) + ": ";
+      out += key;
+      at += key.size();
+    }
+    writeValue(out, it.value(), indent + 2, at);
+    out += std::next(it) == v.end() ? "\n" : ",\n";
+  }
+  out += std::string(indent, ' ') + (v.is_object() ? "}" : "]");
+}
+
 }  // namespace
 
 LoadedProject parseProject(const std::string& text, const std::string& folder) {
   const nlohmann::json root = parseJsonText(text);
-  JsonReader r(root, "");
+  std::vector<UnknownKey> unknown;  // every unknown key the readers below meet, in file order
+  JsonReader r(root, "", &unknown);
   if (!root.is_object()) r.fail("a project file must hold a JSON object");
   LoadedProject out;
   const std::string format = r.at("format").string(64);
@@ -816,7 +897,7 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
                          ". Update corbel to open it.");
   if (version < 1) r.at("version").fail("format version must be at least 1");
   for (auto& k : r.unknownKeys({"format", "version", "name", "objects"}))
-    out.warnings.push_back(k + ": unknown key ignored");
+    out.warnings.push_back(k + ": unknown key kept");
 
   Document& doc = out.document;
   if (auto n = r.find("name")) doc.name = n->string(limits::kMaxNameLength);
@@ -850,10 +931,12 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
       if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
       for (auto& k :
            o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "unit", "town", "plan_background"}))
-        out.warnings.push_back(k + ": unknown key ignored");
+        out.warnings.push_back(k + ": unknown key kept");
+      obj.kept = keptUnder(unknown, o.pointer());
       doc.objects.push_back(std::move(obj));
     }
   }
+  doc.kept = keptUnder(unknown, r.pointer());
   return out;
 }
 
@@ -885,10 +968,14 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     else if (const auto* t = std::get_if<TownSpec>(&o.spec)) j["town"] = townToJson(*t, folder);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
+    putKept(j, o.kept);
     objects.push_back(std::move(j));
   }
   root["objects"] = std::move(objects);
-  return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  putKept(root, doc.kept);
+  std::string text;
+  writeValue(text, root, 0, 0);
+  return text + "\n";
 }
 
 void saveProject(const Document& doc, const std::string& path) {

@@ -63,8 +63,8 @@ KifsParams loadPreset(const std::string& file) {
     const KifsSpec spec = kifsFromJson(root, unknown);
     // In a preset an unknown key is a typo that would silently fall back to a default.
     if (!unknown.empty()) {
-      const std::string& u = unknown.front();  // "kifs.mass.wings: unknown key ignored"
-      throw Error(u.substr(0, u.rfind(" ignored")) + " (a preset may hold only the keys of a KIFS spec)");
+      const std::string& u = unknown.front();  // "kifs.mass.wings: unknown key kept"
+      throw Error(u.substr(0, u.rfind(": ")) + ": unknown key (a preset may hold only the keys of a KIFS spec)");
     }
     return paramsOf(spec);
   } catch (const Error& e) {

@@ -299,7 +299,15 @@ void runShard(unsigned seed) {
                << "\nserialised: " << excerpt(text);
       }
       ASSERT_EQ(again.document, p.document) << "input: " << excerpt(input);
-      ASSERT_TRUE(again.warnings.empty()) << "input: " << excerpt(input);
+      // Unknown keys are kept: the re-saved file names the same ones again, and nothing else
+      // (what was ignored, like a featureless anchor's size, is not written).
+      auto kept = [](const std::vector<std::string>& warnings) {
+        std::vector<std::string> out;
+        for (const std::string& w : warnings)
+          if (w.ends_with(": unknown key kept")) out.push_back(w);
+        return out;
+      };
+      ASSERT_EQ(again.warnings, kept(p.warnings)) << "input: " << excerpt(input);
       ASSERT_EQ(corbel::serializeProject(again.document), text) << "input: " << excerpt(input);
     } catch (const corbel::InputError& e) {
       ++rejected;

@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <random>
@@ -173,6 +174,20 @@ TEST(ProjectIo, ExamplesSaveLoadSaveIsByteIdentical) {
     EXPECT_FALSE(a.empty());
     EXPECT_EQ(a, b);
     EXPECT_EQ(a, corbel::serializeProject(loaded.document, dir.path()));  // file paths relative to it
+  }
+}
+
+// Every example is written by the current writer: loading it and saving it beside itself gives
+// the file's own bytes. A change to the format re-saves the examples in the same commit.
+TEST(ProjectIo, ExamplesAreWhatTheCurrentWriterWrites) {
+  const auto examples = corbel::test::exampleProjects();
+  ASSERT_FALSE(examples.empty());
+  for (const std::string& path : examples) {
+    SCOPED_TRACE(path);
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    const std::string text = readText(path);
+    EXPECT_EQ(corbel::serializeProject(corbel::parseProject(text, folder).document, folder), text)
+        << "re-save the example with the current writer";
   }
 }
 
@@ -409,9 +424,77 @@ TEST(ProjectIo, UnknownKeysAreWarningsWithPaths) {
                    "box": {"size": [1, 1, 1], "height": 3, "repeat": {"count": [1, 1], "offset": 2}}}]})");
   EXPECT_EQ(p.document.objects.size(), 1u);
   const std::set<std::string> warnings(p.warnings.begin(), p.warnings.end());
-  EXPECT_EQ(warnings, (std::set<std::string>{"author: unknown key ignored", "objects[0].colour: unknown key ignored",
-                                             "objects[0].box.height: unknown key ignored",
-                                             "objects[0].box.repeat.offset: unknown key ignored"}));
+  EXPECT_EQ(warnings, (std::set<std::string>{"author: unknown key kept", "objects[0].colour: unknown key kept",
+                                             "objects[0].box.height: unknown key kept",
+                                             "objects[0].box.repeat.offset: unknown key kept"}));
+}
+
+// Keys this build does not know (from a newer corbel, or added by hand) are kept: each is
+// warned about, and a save writes it back at the same place with the same value, even after
+// edits to the object that holds it. The oracle is the input text read by nlohmann::json.
+TEST(ProjectIo, UnknownKeysAreKeptAndWrittenBack) {
+  const std::string text = R"({"format": "corbel", "version": 1, "author": {"name": "me", "tags": [1, 2]},
+      "objects": [
+        {"id": 4, "name": "A", "placement": {"at": [1, 2, 3], "turn": 90},
+         "box": {"size": [1, 2, 3], "height": 3, "repeat": {"count": [1, 1], "offset": null}}},
+        {"id": 7, "name": "B",
+         "extrusion": {"plan": {"loops": [[[0, 0], [4, 0], [4, 3], [0, 3]]], "grid": 0.5},
+                       "profiles": [{"name": "p", "points": [[0, 0], [0, 3]], "curve": "arc"}]}}],
+      "z-last": "~/tilde and slash"})";
+  const corbel::LoadedProject p = corbel::parseProject(text);
+  const std::set<std::string> warnings(p.warnings.begin(), p.warnings.end());
+  EXPECT_EQ(warnings, (std::set<std::string>{
+                          "author: unknown key kept", "z-last: unknown key kept", "objects[0].placement: unknown key kept",
+                          "objects[0].box.height: unknown key kept", "objects[0].box.repeat.offset: unknown key kept",
+                          "objects[1].extrusion.plan.grid: unknown key kept",
+                          "objects[1].extrusion.profiles[0].curve: unknown key kept"}));
+  const nlohmann::json in = nlohmann::json::parse(text);
+  const std::vector<std::string> pointers = {"/author",
+                                             "/z-last",
+                                             "/objects/0/placement",
+                                             "/objects/0/box/height",
+                                             "/objects/0/box/repeat/offset",
+                                             "/objects/1/extrusion/plan/grid",
+                                             "/objects/1/extrusion/profiles/0/curve"};
+  auto expectKept = [&](const std::string& saved) {
+    const nlohmann::json out = nlohmann::json::parse(saved);
+    for (const std::string& at : pointers) {
+      SCOPED_TRACE(at);
+      const nlohmann::json::json_pointer ptr(at);
+      ASSERT_TRUE(out.contains(ptr));
+      EXPECT_EQ(out[ptr], in[ptr]);
+    }
+  };
+  const std::string saved = corbel::serializeProject(p.document);
+  expectKept(saved);
+  // Edits to the objects that hold them keep them; the save is stable from then on.
+  Document d = p.document;
+  d.find(4)->name = "A2";
+  std::get<BoxSpec>(d.find(4)->spec).size = Vec3(5, 5, 5);
+  d.find(7)->visible = false;
+  const std::string edited = corbel::serializeProject(d);
+  expectKept(edited);
+  const nlohmann::json e = nlohmann::json::parse(edited);
+  EXPECT_EQ(e["objects"][0]["name"], "A2");
+  EXPECT_EQ(e["objects"][0]["box"]["size"], nlohmann::json::parse("[5.0, 5.0, 5.0]"));
+  const corbel::LoadedProject again = corbel::parseProject(edited);
+  EXPECT_EQ(again.document, d);
+  EXPECT_EQ(corbel::serializeProject(again.document), edited);
+}
+
+// A kept key whose place is gone (its profile deleted) is dropped, never written elsewhere
+// as a known key or into another entry's place that no longer exists.
+TEST(ProjectIo, AKeptKeyWhosePlaceIsGoneIsDropped) {
+  const corbel::LoadedProject p = corbel::parseProject(R"({"format": "corbel", "version": 1, "objects": [
+      {"id": 1, "name": "E", "extrusion": {"plan": {"loops": [[[0, 0], [4, 0], [4, 3], [0, 3]]], "profile": "p"},
+       "profiles": [{"name": "p", "points": [[0, 0], [0, 3]]}, {"name": "q", "points": [[0, 0], [0, 2]], "curve": 1}]}}]})");
+  Document d = p.document;
+  auto& e = std::get<corbel::ExtrusionSpec>(d.objects[0].spec);
+  ASSERT_EQ(e.profiles.size(), 2u);
+  e.profiles.pop_back();
+  const nlohmann::json out = nlohmann::json::parse(corbel::serializeProject(d));
+  EXPECT_EQ(out["objects"][0]["extrusion"]["profiles"].size(), 1u);
+  EXPECT_FALSE(out["objects"][0]["extrusion"]["profiles"][0].contains("curve"));
 }
 
 TEST(ProjectIo, LoadProjectReportsFileProblems) {
@@ -697,7 +780,7 @@ TEST(ProjectIoErrors, PlanBackgroundFaultsNameTheirPath) {
   EXPECT_FAULT_CONTAINS(with(R"({"image": "a.png", "opacity": 1.5})"), "objects[0].plan_background.opacity", "is outside [0, 1]");
   const corbel::LoadedProject w = corbel::parseProject(with(R"({"image": "a.png", "rotation": 5})"));
   ASSERT_EQ(w.warnings.size(), 1u);
-  EXPECT_EQ(w.warnings[0], "objects[0].plan_background.rotation: unknown key ignored");
+  EXPECT_EQ(w.warnings[0], "objects[0].plan_background.rotation: unknown key kept");
 }
 
 }  // namespace background
@@ -798,8 +881,8 @@ TEST(ProjectIo, KifsSpecsRoundTripEveryField) {
   EXPECT_EQ(std::get<corbel::KifsSpec>(minimal.document.objects[0].spec), corbel::KifsSpec{});
   const auto unknown = corbel::parseProject(withKifs(R"("mass": {"roof": 1}, "colour": 2)"));
   ASSERT_EQ(unknown.warnings.size(), 2u);
-  EXPECT_EQ(unknown.warnings[0], "objects[0].kifs.colour: unknown key ignored");
-  EXPECT_EQ(unknown.warnings[1], "objects[0].kifs.mass.roof: unknown key ignored");
+  EXPECT_EQ(unknown.warnings[0], "objects[0].kifs.colour: unknown key kept");
+  EXPECT_EQ(unknown.warnings[1], "objects[0].kifs.mass.roof: unknown key kept");
 }
 
 TEST(ProjectIoErrors, KifsFaultsNameTheirPath) {
@@ -852,7 +935,7 @@ TEST(ProjectIoErrors, GrowthFaultsNameTheirPath) {
   EXPECT_FAULT_CONTAINS(withGrowth(R"("site": {}, "steps": 1.5)"), "objects[0].growth.steps", "integer");
   const auto w = corbel::parseProject(withGrowth(R"("site": {}, "speed": 2)"));
   ASSERT_EQ(w.warnings.size(), 1u);
-  EXPECT_EQ(w.warnings[0], "objects[0].growth.speed: unknown key ignored");
+  EXPECT_EQ(w.warnings[0], "objects[0].growth.speed: unknown key kept");
 }
 
 TEST(ProjectIo, UnitSpecsRoundTripAsRowsOfBoxes) {
@@ -981,5 +1064,5 @@ TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
                "objects[0].town.streets[0].both_sides", "expected true or false, found a number");
   const auto w = corbel::parseProject(withTown(R"("footprints": "f.geojson", "style": "s.json", "colour": 1)"));
   ASSERT_EQ(w.warnings.size(), 1u);
-  EXPECT_EQ(w.warnings[0], "objects[0].town.colour: unknown key ignored");
+  EXPECT_EQ(w.warnings[0], "objects[0].town.colour: unknown key kept");
 }
