@@ -50,11 +50,17 @@ const Action* ActionRegistry::find(const std::string& id) const {
   return nullptr;
 }
 
+bool ActionRegistry::run(const Action& a) {
+  if (!isEnabled(a) || !a.run) return false;
+  lastRun_ = a.id;
+  ++runCount_;
+  a.run();
+  return true;
+}
+
 bool ActionRegistry::trigger(const std::string& id) {
   const Action* a = find(id);
-  if (!a || !isEnabled(*a) || !a->run) return false;
-  a->run();
-  return true;
+  return a && run(*a);
 }
 
 const Action* ActionRegistry::match(int key, bool ctrl, bool shift, bool alt) const {

@@ -36,13 +36,20 @@ class ActionRegistry {
   const Action* find(const std::string& id) const;
   const std::vector<Action>& all() const { return actions_; }
   bool isEnabled(const Action& a) const { return !a.enabled || a.enabled(); }
+  // Runs the action if it is enabled; returns whether it ran. Every way of running an action
+  // (menu, shortcut, script) comes here, so the last one run and the count are known.
+  bool run(const Action& a);
   // Runs the action if it exists and is enabled; returns whether it ran.
   bool trigger(const std::string& id);
+  const std::string& lastRun() const { return lastRun_; }
+  std::size_t runCount() const { return runCount_; }
   // The action bound to a key press, or nullptr.
   const Action* match(int key, bool ctrl, bool shift, bool alt) const;
 
  private:
   std::vector<Action> actions_;
+  std::string lastRun_;
+  std::size_t runCount_ = 0;
 };
 
 }  // namespace corbel::editor

@@ -1,6 +1,11 @@
 #pragma once
 // The editor application: one Document with undo history, the Scene derived from it, the
-// renderer, and the ImGui shell (menu bar, left panel, status/log bar, 3D viewport).
+// renderer, and the ImGui shell (menu bar, left panel, status/log bar, 3D viewport). App wires
+// the editor's rooms together each frame: the input queue (glfw_input.h), the view and its
+// tool (viewport.h, navigate_tool.h), the selection (selection.h), the layout (layout.h) and
+// scripted runs (script_runner.h, test_log.h). Its members are spread over app.cpp (life,
+// files, jobs, the frame), app_actions.cpp (commands, menus, shortcuts), app_panels.cpp (the
+// left panel, status bar and dialogs) and app_view.cpp (the 3D view).
 #include "city/kernel.h"
 #include "core/app_state.h"
 #include "core/history.h"
@@ -13,12 +18,18 @@
 #include "editor/completion_panel.h"
 #include "editor/extrusion_panes.h"
 #include "editor/file_dialog.h"
+#include "editor/glfw_input.h"
 #include "editor/growth_panel.h"
 #include "editor/kifs_panel.h"
+#include "editor/layout.h"
+#include "editor/navigate_tool.h"
+#include "editor/script_runner.h"
+#include "editor/selection.h"
 #include "editor/statics_panel.h"
+#include "editor/test_log.h"
 #include "editor/town_panel.h"
 #include "editor/view_map_context.h"
-#include "render/camera.h"
+#include "editor/viewport.h"
 #include "render/kifs_layer.h"
 #include "render/kifs_pass.h"
 #include "render/renderer.h"
@@ -49,6 +60,8 @@ struct EditorOptions {
   enum class Recover { Ask, Yes, No } recover = Recover::Ask;
   std::string stateDir;  // recovery and recent files ("" = defaultStateDir())
   std::string select;    // select the object of this name at start
+  std::string testLog;   // write a line per settled frame here (editor/test_log.h)
+  int frameDelayMs = 0;  // sleep this long in every frame, as a slow machine would (for tests)
 };
 
 class App {
@@ -72,10 +85,11 @@ class App {
 
   // Frame.
   void registerActions();
+  void runAction(const Action& a);  // every way an action runs (menu, shortcut, script)
   void handleShortcuts();
-  void handleViewportInput();
-  // The ray under window point (x, y) of the 3D view, as an origin and a unit direction.
-  std::pair<Vec3, Vec3> viewRay(float x, float y) const;
+  // This frame's input events to the 3D view's tool (what a click or a drag there means).
+  void handleViewInput();
+  void drawView();
   void drawMenuBar();
   void drawLeftPanel();
   void drawObjectProperties(const DocObject& object);
@@ -89,9 +103,11 @@ class App {
   // milliseconds keeps the last result on screen, marked as updating), or, with wait, at once.
   void syncScene(bool wait = false);
   bool scripted() const;  // a scripted or screenshot run: every frame shows the current state
+  bool settled() const;   // nothing builds, runs, moves or waits in the input queue
+  void writeTestLog();
   void frameAll();
   void takeScreenshot(const std::string& path);
-  void runScriptLine();
+  std::optional<ObjectId> selected() const { return selection_.active(); }
   // The selected object when it is masonry, for the statics panel.
   const DocObject* selectedMasonry() const;
   StaticsHost staticsHost();
@@ -123,7 +139,13 @@ class App {
   SceneSync sync_;
   LiveSync live_{sync_};  // after sync_: its builds use it
   std::unique_ptr<render::Renderer> renderer_;
-  render::OrbitCamera camera_;
+  std::unique_ptr<GlfwInput> input_;
+  InputBatch batch_;  // this frame's events
+  Viewport view_;
+  NavigateTool tool_;
+  Selection selection_;
+  ScriptRunner script_;
+  std::unique_ptr<TestLog> testLog_;
   render::RenderSettings settings_;
   // The sun of the shadows (degrees; azimuth from +X towards +Y): the studio sun's direction.
   double sunAzimuth_ = -37.9, sunElevation_ = 55.2;
@@ -133,7 +155,6 @@ class App {
   RecentFiles recent_;
 
   std::string path_;  // current file ("" = never saved)
-  std::optional<ObjectId> selected_;
   std::uint64_t autosavedState_ = 0;
   std::chrono::steady_clock::time_point lastAutosave_;
 
@@ -156,10 +177,7 @@ class App {
   bool showHelp_ = false;
   bool quitRequested_ = false;
 
-  // Viewport rectangle in window pixels (top-left origin).
-  float vpX_ = 0, vpY_ = 0, vpW_ = 1, vpH_ = 1;
   int frame_ = 0;
-  std::size_t scriptedIndex_ = 0;
   ExtrusionPanes panes_;
   std::optional<ObjectId> panesFor_;
   std::vector<std::function<void()>> deferred_;  // the panels' commits of this frame (deferredCommit)
@@ -192,12 +210,7 @@ class App {
   std::chrono::steady_clock::time_point kifsChanged_{};
   unsigned long kifsGeneration_ = 0;
   bool kifsFailed_ = false;  // its shader did not build (logged once)
-  std::vector<std::string> scriptLines_;
-  std::size_t scriptLine_ = 0;
-  int shotAtFrame_ = -1;
-  std::string shotPath_;
-  int shotCount_ = 0;
-  bool scriptFailed_ = false;
+  bool kifsRefining_ = false;  // the march is coarse and will sharpen once the view is still
   bool firstFrame_ = true;
 };
 

@@ -2,7 +2,6 @@
 #include "editor/app.h"
 
 #include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
@@ -29,6 +28,8 @@ options:
   --recover ask|yes|no    what to do with unsaved work found from a crash (default ask)
   --state-dir DIR         where recovery and recent files live (default $XDG_STATE_HOME/corbel)
   --select NAME           select the object called NAME (its panel opens)
+  --test-log FILE         write a JSON line per settled frame (selection, camera, last action)
+  --frame-delay MS        sleep MS milliseconds in every frame, as a slow machine would (tests)
   --help
 )";
 
@@ -92,6 +93,14 @@ int main(int argc, char** argv) {
       options.stateDir = value();
     } else if (a == "--select") {
       options.select = value();
+    } else if (a == "--test-log") {
+      options.testLog = value();
+    } else if (a == "--frame-delay") {
+      options.frameDelayMs = std::atoi(value().c_str());
+      if (options.frameDelayMs < 0 || options.frameDelayMs > 10000) {
+        std::fprintf(stderr, "corbel: --frame-delay expects milliseconds from 0 to 10000\n");
+        return 2;
+      }
     } else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "corbel: unknown option %s (try --help)\n", a.c_str());
       return 2;
@@ -143,7 +152,8 @@ int main(int argc, char** argv) {
     }
   }
   ImGui::GetStyle().WindowRounding = 0.0f;
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  // The platform side of ImGui (input, display size, cursors) is the editor's own input queue
+  // (editor/glfw_input.h), made by the App; the renderer side is ImGui's OpenGL 3 backend.
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
   int code = 0;
@@ -156,7 +166,6 @@ int main(int argc, char** argv) {
   }
 
   ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   glfwDestroyWindow(window);
   glfwTerminate();

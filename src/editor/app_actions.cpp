@@ -1,0 +1,709 @@
+// The editor's commands: every action registered once (app.h, actions.h), and the menus,
+// shortcuts and help built from that registry.
+#include "editor/app.h"
+
+#include "extrude/edit.h"
+#include "kifs/kernel.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace corbel::editor {
+
+void App::runAction(const Action& a) { actions_.run(a); }
+
+// ---------------------------------------------------------------- actions
+
+void App::registerActions() {
+  auto doc = [this] { return history_.current(); };
+  auto add = [this](Action a) { actions_.add(std::move(a)); };
+  add({"file.new", "File", "New", "Start an empty project.", {GLFW_KEY_N, true}, false, [this] { newDocument(); }});
+  add({"file.open", "File", "Open…", "Open a project file (.corbel).", {GLFW_KEY_O, true}, false, [this] {
+         guardUnsaved([this] {
+           fileDialog_.open(FileDialog::Mode::Open, "Open project", {".corbel"}, path_, [this](const std::string& p) {
+             // The unsaved-changes question was already answered.
+             history_.markSaved();
+             openFile(p);
+           });
+         });
+       }});
+  add({"file.save",
+       "File",
+       "Save",
+       "Save the project (atomic: the old file stays intact until the new one is complete).",
+       {GLFW_KEY_S, true},
+       false,
+       [this] { save(); }});
+  add({"file.save_as",
+       "File",
+       "Save As…",
+       "Save the project under a new name.",
+       {GLFW_KEY_S, true, true},
+       false,
+       [this] { saveAs(); }});
+  add({"file.export",
+       "File",
+       "Export…",
+       "Export the visible objects to glTF (.glb), OBJ, PLY or OFF.",
+       {GLFW_KEY_E, true},
+       false,
+       [this] { exportScene(); },
+       {},
+       {},
+       true});
+  add({"file.quit",
+       "File",
+       "Quit",
+       "Close corbel (asks before discarding changes).",
+       {GLFW_KEY_Q, true},
+       false,
+       [this] { guardUnsaved([this] { quitRequested_ = true; }); },
+       {},
+       {},
+       true});
+
+  add({"edit.undo",
+       "Edit",
+       "Undo",
+       "Undo the last change to the document.",
+       {GLFW_KEY_Z, true},
+       false,
+       [this] {
+         if (history_.undo()) log("Undo");
+       },
+       [this] { return history_.canUndo(); }});
+  add({"edit.redo",
+       "Edit",
+       "Redo",
+       "Redo the change undone last.",
+       {GLFW_KEY_Z, true, true},
+       false,
+       [this] {
+         if (history_.redo()) log("Redo");
+       },
+       [this] { return history_.canRedo(); }});
+  add({"edit.redo_y",
+       "",
+       "Redo",
+       "Redo the change undone last (Ctrl+Y, as on Windows).",
+       {GLFW_KEY_Y, true},
+       false,
+       [this] {
+         if (history_.redo()) log("Redo");
+       },
+       [this] { return history_.canRedo(); }});
+
+  add({"object.add_box",
+       "Object",
+       "Add Box",
+       "Add a mass-model box next to the existing objects.",
+       {GLFW_KEY_B, true},
+       true,
+       [this, doc] {
+         Document d = doc();
+         BoxSpec b;
+         BBox box = scene_.bounds();
+         if (!box.empty()) b.origin = Vec3(box.hi[0] + 4.0 + b.size[0] / 2, box.center()[1], 0.0);
+         const ObjectId id = d.add("Box", b);
+         commit(std::move(d), "Add box");
+         selection_.select(id);
+       }});
+  add({"object.add_extrusion",
+       "Object",
+       "Add Extrusion",
+       "Add a procedural extrusion (a 12 × 8 m plan on the hip profile) next to the existing objects; edit it in the "
+       "plan and profile panes.",
+       {GLFW_KEY_X, true, true},
+       false,
+       [this, doc] {
+         Document d = doc();
+         ExtrusionSpec e;
+         e.profiles.push_back(extrude::edit::profileLibrary()[1]);
+         e.roofMaterial = "roof_tile";
+         const BBox box = scene_.bounds();
+         const double x0 = box.empty() ? 0.0 : box.hi[0] + 4.0, y0 = box.empty() ? 0.0 : box.center()[1] - 4.0;
+         e.loops.push_back({{Vec2(x0, y0), Vec2(x0 + 12, y0), Vec2(x0 + 12, y0 + 8), Vec2(x0, y0 + 8)}, {0, 0, 0, 0}});
+         const ObjectId id = d.add("Extrusion", e);
+         commit(std::move(d), "Add extrusion");
+         selection_.select(id);
+         if (box.empty()) firstFrame_ = true;  // frame the first object of a new scene
+       }});
+  add({"object.add_kifs",
+       "Object",
+       "Add KIFS Building",
+       "Add a KIFS fractal building (McGraw; the box preset) at the origin; edit it in the KIFS panel.",
+       {},
+       true,
+       [this, doc] {
+         Document d = doc();
+         const ObjectId id = d.add("KIFS building", kifs::specOf(kifs::preset("box"), "box"));
+         commit(std::move(d), "Add KIFS building");
+         selection_.select(id);
+         firstFrame_ = true;
+       }});
+  add({"object.add_town",
+       "Object",
+       "Add Town...",
+       "Add a town (Kelly & Wonka Sec. 3.7): choose a GeoJSON footprint file; it is styled with "
+       "assets/styles/mixed.json until another style is picked in the Town panel.",
+       {},
+       false,
+       [this, doc] {
+         fileDialog_.open(FileDialog::Mode::Open, "Open footprints", {".geojson", ".json"}, path_,
+                          [this, doc](const std::string& path) {
+                            Document d = doc();
+                            TownSpec t;
+                            t.footprints = path;
+                            t.style = std::string(CORBEL_ASSETS_DIR) + "/styles/mixed.json";
+                            const ObjectId id = d.add("Town", t);
+                            commit(std::move(d), "Add town");
+                            selection_.select(id);
+                            firstFrame_ = true;
+                          });
+       }});
+  add({"object.duplicate",
+       "Object",
+       "Duplicate",
+       "Copy the selected object beside itself.",
+       {GLFW_KEY_D, true},
+       true,
+       [this, doc] {
+         Document d = doc();
+         const DocObject* o = d.find(*selected());
+         DocObject copy = *o;
+         const BBox box = scene_.bounds(copy.id);
+         const double shift = box.empty() ? 10.0 : box.size()[0] + 2.0;
+         if (auto* b = std::get_if<BoxSpec>(&copy.spec)) b->origin[0] += shift;
+         if (auto* e = std::get_if<ExtrusionSpec>(&copy.spec))
+           for (auto& loop : e->loops)
+             for (auto& p : loop.points) p[0] += shift;
+         const ObjectId id = d.add(o->name, copy.spec);
+         commit(std::move(d), "Duplicate " + copy.name);
+         selection_.select(id);
+       },
+       [this] { return selected().has_value(); }});
+  add({"object.delete",
+       "Object",
+       "Delete",
+       "Delete the selected object.",
+       {GLFW_KEY_DELETE},
+       true,
+       [this, doc] {
+         Document d = doc();
+         const std::string name = d.find(*selected())->name;
+         d.remove(*selected());
+         selection_.clear();
+         commit(std::move(d), "Delete " + name);
+       },
+       [this] { return selected().has_value(); }});
+
+  auto preset = [this](render::CameraPreset p) {
+    return [this, p] {
+      render::applyPreset(view_.camera, p);
+      frameAll();
+    };
+  };
+  add({"view.frame", "View", "Frame All", "Fit the visible objects in the view.", {GLFW_KEY_HOME}, false, [this] {
+         frameAll();
+       }});
+  add({"view.perspective",
+       "View",
+       "Perspective",
+       "Look from above at an angle.",
+       {GLFW_KEY_KP_5},
+       false,
+       preset(render::CameraPreset::Perspective),
+       {},
+       {},
+       true});
+  add({"view.front", "View", "Front", "Look along +Y.", {GLFW_KEY_KP_1}, false, preset(render::CameraPreset::Front)});
+  add({"view.right", "View", "Right", "Look along −X.", {GLFW_KEY_KP_3}, false, preset(render::CameraPreset::Right)});
+  add({"view.top", "View", "Top", "Look straight down.", {GLFW_KEY_KP_7}, false, preset(render::CameraPreset::Top)});
+  add({"view.wireframe",
+       "View",
+       "Wireframe",
+       "Draw edges only.",
+       {GLFW_KEY_W, false, false, true},
+       false,
+       [this] { settings_.wireframe = !settings_.wireframe; },
+       {},
+       [this] { return settings_.wireframe; },
+       true});
+  add({"view.edges",
+       "View",
+       "Edges",
+       "Outline every face.",
+       {},
+       false,
+       [this] { settings_.edges = !settings_.edges; },
+       {},
+       [this] { return settings_.edges; }});
+  add({"view.grid",
+       "View",
+       "Ground Grid",
+       "Show the ground grid at z = 0.",
+       {},
+       false,
+       [this] { settings_.grid = !settings_.grid; },
+       {},
+       [this] { return settings_.grid; }});
+  // Shadows from a movable sun (Ng, Fig. 8.5); the growth panel's Grow tab has the sun's sliders.
+  add({"view.shadows",
+       "View",
+       "Shadows",
+       "Cast shadows from the sun onto the model and the ground.",
+       {},
+       false,
+       [this] { settings_.shadows = !settings_.shadows; },
+       {},
+       [this] { return settings_.shadows; },
+       true});
+  add({"view.sun_later", "View", "Sun Later", "Move the sun 15° on (its azimuth, towards +Y).", {}, false, [this] {
+         sunAzimuth_ = std::remainder(sunAzimuth_ + 15.0, 360.0);
+       }});
+  add({"view.sun_earlier", "View", "Sun Earlier", "Move the sun 15° back.", {}, false, [this] {
+         sunAzimuth_ = std::remainder(sunAzimuth_ - 15.0, 360.0);
+       }});
+  add({"view.sun_lower",
+       "View",
+       "Sun Lower",
+       "Lower the sun by 10° (at least 5° above the ground).",
+       {},
+       false,
+       [this] { sunElevation_ = std::max(5.0, sunElevation_ - 10.0); }});
+
+  add({"tools.validate",
+       "Tools",
+       "Validate All Objects",
+       "Check every object's shell (closed, 2-manifold, Euler characteristic), in the background.",
+       {},
+       false,
+       [this] {
+         auto snapshot = std::make_shared<Scene>(scene_);
+         auto lines = std::make_shared<std::vector<std::string>>();
+         startJob(
+             "Validating objects",
+             [snapshot, lines](Progress& progress) {
+               std::size_t i = 0;
+               const std::size_t n = snapshot->objects().size();
+               for (const auto& [id, info] : snapshot->objects()) {
+                 if (progress.cancelled()) throw Cancelled();
+                 const ValidityReport r = snapshot->validate(id);
+                 std::string line = info.name + ": " + (r.closedManifold() ? "closed 2-manifold" : "PROBLEMS") + ", " +
+                                    std::to_string(r.faces) + " faces, Euler " + std::to_string(r.euler);
+                 for (const auto& p : r.problems()) line += "; " + p;
+                 lines->push_back(line);
+                 progress.report(double(++i) / n, info.name);
+               }
+             },
+             [this, lines] {
+               for (const auto& l : *lines) log(l, l.find("PROBLEMS") != std::string::npos);
+             });
+       }});
+  add({"statics.make_stand",
+       "Statics",
+       "Make It Stand",
+       "Search the selected masonry object's free parameters, within their bounds, for a structure that stands "
+       "(in the background; one undo step).",
+       {GLFW_KEY_M, true, true},
+       true,
+       [this] { statics_.makeItStand(staticsHost()); },
+       [this] { return selectedMasonry() && !statics_.searching(); }});
+  add({"statics.cancel",
+       "Statics",
+       "Cancel Search",
+       "Stop the running search; nothing changes.",
+       {},
+       false,
+       [this] { statics_.cancelSearch(); },
+       [this] { return statics_.searching(); }});
+  // The collapse simulation (Sec. 5): never a Document change, so none is undoable.
+  auto masonrySelected = [this] { return selectedMasonry() != nullptr; };
+  add({"statics.sim_play",
+       "Statics",
+       "Simulate: Play / Pause",
+       "Play the selected masonry object's collapse simulation in real time (as fast as the frame budget "
+       "allows); again to pause.",
+       {},
+       false,
+       [this] { statics_.simulatePlay(staticsHost()); },
+       masonrySelected,
+       [this] { return statics_.simulationPlaying(); },
+       true});
+  add({"statics.sim_step",
+       "Statics",
+       "Simulate: Step",
+       "Advance the simulation by one fixed step (1/240 s).",
+       {},
+       false,
+       [this] { statics_.simulateStep(staticsHost()); },
+       masonrySelected});
+  add({"statics.simulate",
+       "Statics",
+       "Simulate: Run 1 s",
+       "Advance the simulation by one simulated second at once (240 steps; the window waits for it).",
+       {},
+       false,
+       [this] { statics_.simulateStep(staticsHost(), 240); },
+       masonrySelected});
+  add({"statics.sim_reset",
+       "Statics",
+       "Simulate: Reset",
+       "Return the simulation to the design state, paused.",
+       {},
+       false,
+       [this] { statics_.simulateReset(staticsHost()); },
+       masonrySelected});
+  add({"statics.sim_shake",
+       "Statics",
+       "Simulate: Shake",
+       "Shake the ground as in the paper (4 m/s within 1/60 s on a 10 m model, scaled to this one).",
+       {},
+       false,
+       [this] { statics_.simulateShake(staticsHost()); },
+       masonrySelected});
+  add({"statics.sim_remove",
+       "Statics",
+       "Simulate: Remove Block",
+       "Take the block chosen in the Simulate section (at first the top one) out of the simulation.",
+       {},
+       false,
+       [this] { statics_.simulateRemove(staticsHost()); },
+       masonrySelected});
+  add({"statics.landscape_grid",
+       "Statics",
+       "Energy Landscape over Two Parameters",
+       "Sample y/W² over a grid of the selected masonry object's first two free parameters (Fig. 8) in the "
+       "statics panel; again for the landscape over one parameter.",
+       {},
+       false,
+       [this] { statics_.toggleLandscapeGrid(staticsHost()); },
+       masonrySelected,
+       [this] { return statics_.landscapeGridChosen(); }});
+  add({"statics.analyse_scene",
+       "Statics",
+       "Analyse Every Block in the Scene",
+       "Analyse every object of kind Block in the Scene together (each connected piece one block, density by "
+       "material, the objects ticked in the statics panel carried as loads), and show it in the view.",
+       {},
+       false,
+       [this] { statics_.analyseScene(staticsHost()); },
+       masonrySelected});
+  add({"statics.sim_close",
+       "Statics",
+       "Simulate: Close",
+       "Stop simulating and show the design again.",
+       {},
+       false,
+       [this] { statics_.closeSimulation(); },
+       [this] { return statics_.simulating(); }});
+  auto growthSelected = [this] { return selectedGrowth() != nullptr; };
+  add({"growth.step",
+       "Growth",
+       "Step",
+       "Grow the selected site one step more (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.step(growthHost()); },
+       growthSelected});
+  add({"growth.run",
+       "Growth",
+       "Run / Pause",
+       "Grow the selected site step by step as the view catches up, until every unit stops; again to pause.",
+       {},
+       true,
+       [this] { growthPanel_.toggleRun(growthHost()); },
+       growthSelected,
+       [this] { return growthPanel_.running(); }});
+  // The site editor, the slice, the statistics and the view maps of the selected growth site.
+  add({"growth.add_core",
+       "Growth",
+       "Add Core",
+       "Add a 3 x 3 m core at the first free place of the selected site (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Core); },
+       growthSelected,
+       {},
+       true});
+  add({"growth.add_circulation",
+       "Growth",
+       "Add Circulation",
+       "Add a 3 x 3 m landing, one storey high, on the Site tab's plan storey (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Circulation); },
+       growthSelected});
+  add({"growth.add_seed",
+       "Growth",
+       "Add Seed",
+       "Add a 3 x 3 m seed of 60 m² at the first free, supported place on the plan storey (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.add(growthHost(), SiteItem::Seed); },
+       growthSelected});
+  add({"growth.delete",
+       "Growth",
+       "Delete Site Entry",
+       "Delete the core, circulation or seed picked in the Site tab.",
+       {},
+       true,
+       [this] { growthPanel_.removeSelected(growthHost()); },
+       [this, growthSelected] { return growthSelected() && growthPanel_.hasSelection(); }});
+  add({"growth.add_storey",
+       "Growth",
+       "Add a Storey",
+       "Give the selected site one storey more, of the same height (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.addStorey(growthHost()); },
+       growthSelected});
+  add({"growth.widen_site",
+       "Growth",
+       "Widen the Site by 5 m",
+       "Make the selected site's box envelope 5 m longer in x (one undo step).",
+       {},
+       true,
+       [this] { growthPanel_.widenSite(growthHost(), 5.0); },
+       growthSelected});
+  add({"growth.site",
+       "Growth",
+       "Show the Site",
+       "Show the Site tab: cores, circulation and seeds.",
+       {},
+       false,
+       [this] { growthPanel_.showTab(1); },
+       growthSelected});
+  add({"growth.slice_down",
+       "Growth",
+       "Slice a Storey Lower",
+       "Hide one storey more of the selected site in the 3D view (Fig. 8.3; a view setting).",
+       {},
+       false,
+       [this] { growthPanel_.sliceStorey(growthHost(), -1); },
+       growthSelected,
+       {},
+       true});
+  add({"growth.slice_up",
+       "Growth",
+       "Slice a Storey Higher",
+       "Show one storey more; past the top, no slice.",
+       {},
+       false,
+       [this] { growthPanel_.sliceStorey(growthHost(), 1); },
+       growthSelected});
+  add({"growth.statistics",
+       "Growth",
+       "Statistics",
+       "Show Table 8.1 for the model as grown.",
+       {},
+       false,
+       [this] { growthPanel_.showTab(2); },
+       growthSelected});
+  add({"growth.gl_view_maps",
+       "Growth",
+       "GL View Maps",
+       "Grow and measure growth sites on view maps rendered with OpenGL (unchecked: the exact CPU maps).",
+       {},
+       false,
+       [this] { glViewMaps_ = !glViewMaps_; },
+       [this] { return glMaps_ != nullptr; },
+       [this] { return glMaps_ && glViewMaps_; }});
+  add({"growth.gl_pixel_next",
+       "Growth",
+       "GL View Map Pixels: Next Size",
+       "The next pixel size of the GL view maps (0.1, 0.25, 0.5 m, then 0.1 again); the sites regrow on it.",
+       {},
+       false,
+       [this] {
+         const auto& sizes = kEditorViewMapPixels;
+         const auto at = std::find(std::begin(sizes), std::end(sizes), glPixel_);
+         glPixel_ = at == std::end(sizes) || at + 1 == std::end(sizes) ? sizes[0] : *(at + 1);
+       },
+       [this] { return glMaps_ && glViewMaps_; }});
+  add({"growth.view_maps",
+       "Growth",
+       "View Maps",
+       "Show the four view maps (Sec. 5.2) of the model as grown, unit ids in false colour.",
+       {},
+       false,
+       [this] { growthPanel_.toggleViewMaps(); },
+       growthSelected,
+       [this] { return growthPanel_.viewMapsShown(); }});
+  // Form completion (Ch. 7, Fig. 8.6) in a region of the selected growth site.
+  add({"completion.seeds",
+       "Growth",
+       "Completion: Seeds From the Model",
+       "Grow the selected site's model (in the background) and take the entrances its units open onto the "
+       "completion region as the seeds.",
+       {},
+       false,
+       [this] { completion_.takeSeeds(completionHost()); },
+       growthSelected});
+  add({"completion.generate",
+       "Growth",
+       "Completion: Generate Forms",
+       "Generate forms of the chosen complexity range from the seeds (in the background, with Cancel).",
+       {},
+       false,
+       [this] { completion_.generate(completionHost()); },
+       [this, growthSelected] { return growthSelected() && !job_; }});
+  add({"completion.fit",
+       "Growth",
+       "Completion: Fit to Region",
+       "Fit the picked form into the completion region and size it (Fig. 8.6).",
+       {},
+       false,
+       [this] { completion_.fit(completionHost()); },
+       [this, growthSelected] { return growthSelected() && completion_.canFit(); }});
+  add({"completion.extrude",
+       "Growth",
+       "Completion: Extrude to Units",
+       "Add the fitted form's units to the model as unit objects (one undo step).",
+       {},
+       true,
+       [this] { completion_.extrude(completionHost()); },
+       [this, growthSelected] { return growthSelected() && completion_.canExtrude(); }});
+  // The Town panel (Kelly & Wonka Sec. 3.7): its building list and override, for scripts.
+  const auto townSelected = [this] { return selectedTown() != nullptr; };
+  add({"town.next",
+       "Town",
+       "Select Next Building",
+       "Select the next building of the selected town.",
+       {},
+       false,
+       [this] { townPanel_.selectNext(townHost()); },
+       townSelected});
+  add({"town.next_type",
+       "Town",
+       "Override: Next Type",
+       "Give the selected building the style's next building type (an undoable override).",
+       {},
+       false,
+       [this] { townPanel_.overrideNextType(townHost()); },
+       townSelected});
+  add({"town.next_edge",
+       "Town",
+       "Pick Next Edge",
+       "Pick the selected building's next edge in the Town panel's plan view.",
+       {},
+       false,
+       [this] { townPanel_.selectNextEdge(townHost()); },
+       townSelected});
+  add({"town.next_edge_profile",
+       "Town",
+       "Override: Next Edge Profile",
+       "Give the picked edge of the selected building the style's next profile (an undoable override of that edge).",
+       {},
+       false,
+       [this] { townPanel_.overrideNextEdgeProfile(townHost()); },
+       townSelected});
+  add({"town.add_street",
+       "Town",
+       "Add Street",
+       "Add a street along the selected town's south side (Fig. 26).",
+       {},
+       false,
+       [this] { townPanel_.addStreet(townHost()); },
+       townSelected});
+  add({"town.bend_street",
+       "Town",
+       "Bend Street",
+       "Move the chosen street's middle point 10 m south.",
+       {},
+       false,
+       [this] { townPanel_.bendStreet(townHost()); },
+       townSelected});
+  add({"help.shortcuts",
+       "Help",
+       "Keyboard Shortcuts",
+       "List every command and its shortcut.",
+       {GLFW_KEY_F1},
+       false,
+       [this] { showHelp_ = true; }});
+}
+
+void App::handleShortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput || fileDialog_.isOpen()) return;
+  for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
+    if (!ImGui::IsKeyPressed(key, false)) continue;
+    const Action* a = actions_.match(key, io.KeyCtrl, io.KeyShift, io.KeyAlt);
+    if (a && actions_.isEnabled(*a) && a->run) {
+      runAction(*a);
+      break;
+    }
+  }
+}
+
+void App::drawMenuBar() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  std::vector<std::string> menus;
+  for (const Action& a : actions_.all())
+    if (!a.menu.empty() && std::find(menus.begin(), menus.end(), a.menu) == menus.end()) menus.push_back(a.menu);
+  for (const std::string& menu : menus) {
+    if (!ImGui::BeginMenu(menu.c_str())) continue;
+    for (const Action& a : actions_.all()) {
+      if (a.menu != menu) continue;
+      if (a.separatorBefore) ImGui::Separator();
+      std::string label = a.label;
+      if (a.id == "edit.undo" && history_.canUndo()) label += " " + history_.undoLabel();
+      if (a.id == "edit.redo" && history_.canRedo()) label += " " + history_.redoLabel();
+      const std::string shortcut = a.shortcut.text();
+      if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), a.checked && a.checked(),
+                          actions_.isEnabled(a)) &&
+          a.run)
+        runAction(a);
+      if (ImGui::IsItemHovered() && !a.help.empty()) ImGui::SetTooltip("%s", a.help.c_str());
+      if (a.id == "file.open") {
+        if (ImGui::BeginMenu("Open Recent", !recent_.paths().empty())) {
+          for (const std::string& p : recent_.paths())
+            if (ImGui::MenuItem(p.c_str())) {
+              const std::string chosen = p;
+              openFile(chosen);
+              break;
+            }
+          ImGui::EndMenu();
+        }
+      }
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
+void App::drawHelp() {
+  if (!showHelp_) return;
+  ImGui::SetNextWindowSize(ImVec2(560, 440), ImGuiCond_Appearing);
+  if (ImGui::Begin("Keyboard shortcuts", &showHelp_)) {
+    if (ImGui::BeginTable("actions", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders)) {
+      ImGui::TableSetupColumn("Command");
+      ImGui::TableSetupColumn("Shortcut");
+      ImGui::TableSetupColumn("What it does");
+      ImGui::TableHeadersRow();
+      for (const Action& a : actions_.all()) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%s > %s", a.menu.c_str(), a.label.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(a.shortcut.text().c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", a.help.c_str());
+      }
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted("Viewport");
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted("mouse");
+      ImGui::TableNextColumn();
+      ImGui::TextWrapped("Left drag: orbit. Right or middle drag (or Shift+left): pan. Wheel: zoom.");
+      ImGui::EndTable();
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace corbel::editor

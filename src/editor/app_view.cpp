@@ -1,0 +1,153 @@
+// The 3D view of the editor: its input (the tool), what it shows, and screenshots.
+#include "editor/app.h"
+
+#include "render/gl.h"
+#include "render/image.h"
+#include "render/kifs_layer.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+
+namespace corbel::editor {
+
+void App::handleViewInput() {
+  ToolContext c;
+  c.viewport = &view_;
+  // A press on a growth site's entry or envelope corner (its Site tab shown) drags that entry;
+  // elsewhere the tool orbits.
+  c.grab = [this](const Ray& r) {
+    return selectedGrowth() && growthPanel_.siteShown() && growthPanel_.beginViewDrag(growthHost(), r.origin, r.direction);
+  };
+  c.dragTo = [this](const Ray& r) {
+    if (selectedGrowth()) growthPanel_.viewDrag(growthHost(), r.origin, r.direction);
+  };
+  c.release = [this] {
+    if (growthPanel_.viewDragging()) growthPanel_.endViewDrag(growthHost());
+  };
+  c.click = [this](const Ray& r) {
+    // On the selected extrusion a click picks a face: its provenance is logged and its plan
+    // edge and profile segment are highlighted in the panes.
+    const DocObject* o = selected() ? history_.current().find(*selected()) : nullptr;
+    if (const auto* spec = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr) {
+      const std::string what = panes_.pick(*spec, r.origin, r.direction);
+      if (!what.empty()) log(o->name + ": picked " + what);
+    }
+    // On a town it picks one of its buildings for the Town panel.
+    if (selectedTown()) townPanel_.pick(townHost(), r.origin, r.direction);
+    // On a simulated masonry object it chooses a block for the remove-block tool.
+    if (selectedMasonry() && statics_.simulating()) statics_.pickBlock(staticsHost(), r.origin, r.direction);
+  };
+  const bool overUi = ImGui::GetIO().WantCaptureMouse;
+  for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
+  // The growth site was deselected (a menu, a shortcut) during the drag.
+  if (growthPanel_.viewDragging() && !selectedGrowth()) growthPanel_.endViewDrag(growthHost());
+}
+
+const Scene& App::shownScene() {
+  // The selected growth site sliced at a height (Fig. 8.3): its faces below the cut only.
+  if (const auto h = growthFor_ && selected() == growthFor_ ? growthPanel_.sliceHeight() : std::nullopt;
+      h && scene_.hasObject(*growthFor_)) {
+    if (sliceSceneOf_ != scene_.revision() || sliceHeightOf_ != *h || sliceObjectOf_ != *growthFor_) {
+      sliceScene_ = scene_;
+      const Scene::ObjectInfo& info = scene_.objects().at(*growthFor_);
+      sliceScene_.replaceObject(*growthFor_, info.kind, info.name, sliceBelow(objectMesh(scene_, *growthFor_), *h));
+      sliceSceneOf_ = scene_.revision();
+      sliceHeightOf_ = *h;
+      sliceObjectOf_ = *growthFor_;
+    }
+    return sliceScene_;
+  }
+  const DocObject* m = selectedMasonry();
+  const Simulation* sim = m && m->visible ? statics_.shownSimulation(std::get<MasonrySpec>(m->spec)) : nullptr;
+  if (!sim) return scene_;
+  if (simSceneOf_ != scene_.revision() || simRevisionOf_ != sim->revision() || simObjectOf_ != m->id) {
+    simScene_ = scene_;
+    showSimulation(simScene_, m->id, *sim);
+    simSceneOf_ = scene_.revision();
+    simRevisionOf_ = sim->revision();
+    simObjectOf_ = m->id;
+  }
+  return simScene_;
+}
+
+void App::drawView() {
+  int fbw = 0, fbh = 0;
+  glfwGetFramebufferSize(window_, &fbw, &fbh);
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const float sx = fbw / std::max(vp->Size.x, 1.0f), sy = fbh / std::max(vp->Size.y, 1.0f);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fbw, fbh);
+  glClearColor(0.11f, 0.11f, 0.12f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const Document& doc = history_.current();
+  // The sun of the shadows; without them the studio sun, so the model looks as it always did.
+  settings_.sun =
+      settings_.shadows ? std::optional<Vec3>(render::sunDirection(sunAzimuth_, sunElevation_)) : std::nullopt;
+  // A selected town is not tinted as a whole: its picked building is outlined instead.
+  settings_.highlight = selectedTown() ? std::nullopt : selected();
+  // Tension colours and force arrows of the selected masonry object, when it is shown.
+  renderer_->overlay().clear();
+  renderer_->overlayOnTop().clear();
+  if (const DocObject* m = selectedMasonry(); m && m->visible)
+    statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
+  if (growthFor_ && selected() == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
+  if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
+  if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
+  renderer_->setScene(shownScene(), settings_);
+  const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),
+            pw = int(view_.width() * sx), ph = int(view_.height() * sy);
+  renderer_->draw(view_.camera, px, py, pw, ph, settings_);
+  // KIFS buildings that are not meshed: ray-marched over the Scene, depth-tested against it.
+  const render::RaymarchedKifs raymarched = render::raymarchedKifs(doc, settings_.visible);
+  if (!raymarched.buildings.empty() && !kifsFailed_) {
+    try {
+      if (!kifsPass_) kifsPass_ = std::make_unique<render::KifsPass>();
+      if (!kifsLayer_) kifsLayer_ = std::make_unique<render::KifsLayer>();
+      // Progressive refinement: march again only when the buildings, the camera or the
+      // viewport changed; coarse (1/4 of the pixels each way) while they keep changing, full
+      // size once they have been still for a moment. Other frames reuse the cached layer.
+      std::vector<KifsSpec> specs;
+      for (const DocObject& o : doc.objects)
+        if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0 && settings_.visible(o.id))
+          specs.push_back(*k);
+      const std::array<double, 9> view{
+          view_.camera.target[0], view_.camera.target[1], view_.camera.target[2], view_.camera.azimuth_deg, view_.camera.elevation_deg,
+          view_.camera.distance,  view_.camera.fov_deg,   double(pw),        double(ph)};
+      const auto now = std::chrono::steady_clock::now();
+      if (specs != kifsSpecs_ || view != kifsView_) {
+        kifsSpecs_ = std::move(specs);
+        kifsView_ = view;
+        kifsChanged_ = now;
+        ++kifsGeneration_;
+      }
+      const bool still = now - kifsChanged_ > std::chrono::milliseconds(300);
+      std::vector<kifs::KifsParams> buildings;
+      for (const kifs::KifsParams& p : raymarched.buildings) buildings.push_back(render::kifsForView(p, view_.camera, ph));
+      kifsLayer_->update(*kifsPass_, buildings, view_.camera, pw, ph, still ? 1 : 4, render::KifsMode::Shaded,
+                         std::to_string(kifsGeneration_));
+      kifsLayer_->composite(px, py, pw, ph);
+    } catch (const std::exception& e) {
+      log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);
+      kifsFailed_ = true;
+    }
+  }
+}
+
+void App::takeScreenshot(const std::string& path) {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  render::Image img(w, h);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  img.flipVertically();
+  for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+  render::writePng(img, path);
+}
+
+}  // namespace corbel::editor

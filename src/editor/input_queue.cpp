@@ -1,0 +1,43 @@
+#include "editor/input_queue.h"
+
+#include <set>
+
+namespace corbel::editor {
+
+InputBatch InputQueue::takeFrame() {
+  InputBatch batch;
+  std::set<int> keys, buttons;  // changed in this batch
+  bool scrolled = false;
+  using T = InputEvent::Type;
+  while (!queue_.empty()) {
+    const InputEvent& e = queue_.front();
+    bool stop = false;
+    switch (e.type) {
+      case T::Key:
+        stop = keys.count(e.code) || !buttons.empty();
+        break;
+      case T::Char:
+        stop = !buttons.empty();
+        break;
+      case T::Button:
+        stop = buttons.count(e.code) || scrolled;
+        break;
+      case T::Move:
+      case T::Leave:
+        stop = !buttons.empty() || scrolled;
+        break;
+      case T::Scroll:
+        stop = !buttons.empty();
+        break;
+    }
+    if (stop && !batch.empty()) break;
+    if (e.type == T::Key) keys.insert(e.code);
+    if (e.type == T::Button) buttons.insert(e.code);
+    if (e.type == T::Scroll) scrolled = true;
+    batch.events.push_back(e);
+    queue_.pop_front();
+  }
+  return batch;
+}
+
+}  // namespace corbel::editor

@@ -1,0 +1,49 @@
+#include "editor/test_log.h"
+
+#include "core/error.h"
+
+#include <nlohmann/json.hpp>
+
+namespace corbel::editor {
+
+namespace {
+
+nlohmann::ordered_json stateOf(const SettledFrame& s) {
+  nlohmann::ordered_json j;
+  j["selection"] = s.selection;
+  j["active"] = s.active.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.active);
+  const render::OrbitCamera& c = s.camera;
+  j["camera"] = {{"target", {c.target[0], c.target[1], c.target[2]}},
+                 {"azimuth", c.azimuth_deg},
+                 {"elevation", c.elevation_deg},
+                 {"distance", c.distance}};
+  j["last_action"] = s.lastAction;
+  j["actions_run"] = s.actionsRun;
+  j["objects"] = s.objects;
+  j["dirty"] = s.dirty;
+  j["undo"] = s.undo;
+  return j;
+}
+
+}  // namespace
+
+std::string testLogLine(const SettledFrame& s) {
+  nlohmann::ordered_json j;
+  j["frame"] = s.frame;
+  const nlohmann::ordered_json state = stateOf(s);
+  for (const auto& [key, value] : state.items()) j[key] = value;
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+TestLog::TestLog(const std::string& path) : out_(path, std::ios::trunc) {
+  if (!out_) throw Error("--test-log: cannot write " + path);
+}
+
+void TestLog::write(const SettledFrame& s) {
+  const std::string state = stateOf(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (state == last_) return;
+  last_ = state;
+  out_ << testLogLine(s) << "\n" << std::flush;
+}
+
+}  // namespace corbel::editor

@@ -1,0 +1,41 @@
+#pragma once
+// The editor's test log (--test-log FILE): one JSON line for each settled frame (no build,
+// job, animation or queued input left) whose state differs from the line before, so a test
+// that drives the real window waits for the line it expects instead of sleeping. No GL.
+#include "render/camera.h"
+
+#include <cstddef>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace corbel::editor {
+
+struct SettledFrame {
+  int frame = 0;
+  std::vector<std::string> selection;  // the selected objects' names, the active one last
+  std::string active;                  // "" = none
+  render::OrbitCamera camera;
+  std::string lastAction;              // the id of the last action run ("" = none yet)
+  std::size_t actionsRun = 0;          // how many actions have run, by any means
+  std::size_t objects = 0;             // in the document
+  bool dirty = false;                  // unsaved changes
+  std::string undo;                    // the label of the step Undo would revert ("" = none)
+};
+
+// The line for `s` (one JSON object, no newline).
+std::string testLogLine(const SettledFrame& s);
+
+class TestLog {
+ public:
+  // Opens (truncates) `path`; throws corbel::Error naming it when it cannot be written.
+  explicit TestLog(const std::string& path);
+  // Writes `s` unless everything but its frame number equals the last line's; flushed at once.
+  void write(const SettledFrame& s);
+
+ private:
+  std::ofstream out_;
+  std::string last_;  // the last line without its frame
+};
+
+}  // namespace corbel::editor

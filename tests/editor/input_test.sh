@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# The editor's input through real key presses and mouse moves under Xvfb (xdotool), with every
+# frame slowed to about 5 fps (--frame-delay 200), read back from its test log (--test-log):
+#  1. three boxes added by scripted actions, then three quick Ctrl+Z typed while one frame
+#     lasts: all three are undone (the input queue keeps every tap), and the document is the
+#     example again (not dirty);
+#  2. a left drag of 100 px across the 3D view turns the camera by 40 degrees of azimuth (the
+#     orbit rate, 0.4 degrees a pixel), and a wheel step zooms it in by the wheel's factor;
+#  3. Ctrl+Q with nothing unsaved quits at once, with exit code 0.
+set -euo pipefail
+editor=$1 example=$2 work=$3
+if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
+  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
+  command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/setup installs it)"; exit 1; }
+  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
+fi
+rm -rf "$work" && mkdir -p "$work"
+export CORBEL_STATE_DIR=$work/state
+log=$work/test-log.jsonl
+
+# The last line of the test log, and a field of it (python3 reads the JSON).
+field() { python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).read().splitlines()[-1])'"$1"')' "$log"; }
+# Waits until the last line of the log makes the Python expression $1 (over `j`) true.
+wait_for() {
+  local what=$1 deadline=$((SECONDS + 90))
+  while ((SECONDS < deadline)); do
+    kill -0 "$pid" 2>/dev/null || { echo "the editor exited while waiting for: $what"; exit 1; }
+    if [[ -s $log ]] && python3 -c 'import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); sys.exit(0 if ('"$what"') else 1)' "$log"; then
+      return 0
+    fi
+    sleep 0.2
+  done
+  echo "timed out waiting for: $what"
+  echo "last line: $(tail -1 "$log" 2>/dev/null)"
+  exit 1
+}
+
+objects=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1]))["objects"]))' "$example")
+"$editor" --size 1280x800 --recover no --frame-delay 200 --autosave-seconds 3600 --test-log "$log" \
+  --actions object.add_box,object.add_box,object.add_box "$example" &
+pid=$!
+trap 'kill $pid 2>/dev/null || true' EXIT
+
+echo "== three boxes added, then three quick Ctrl+Z at 5 fps"
+wait_for "j['actions_run'] == 3 and j['objects'] == $objects + 3 and j['dirty']"
+wid=$(xdotool search --sync --onlyvisible --name 'corbel' | head -1)
+xdotool mousemove --sync --window "$wid" 640 400
+xdotool windowfocus --sync "$wid" 2>/dev/null || true
+start=$(date +%s%N)
+xdotool key --clearmodifiers --delay 15 ctrl+z ctrl+z ctrl+z
+typed=$((($(date +%s%N) - start) / 1000000))
+echo "typed three Ctrl+Z in $typed ms (a frame lasts at least 200 ms)"
+wait_for "j['actions_run'] == 6 and j['last_action'] == 'edit.undo' and j['objects'] == $objects and not j['dirty']"
+echo "all three undone: $(tail -1 "$log")"
+
+echo "== a 100 px drag orbits by 40 degrees, a wheel step zooms by 0.88"
+azimuth=$(field "['camera']['azimuth']")
+distance=$(field "['camera']['distance']")
+xdotool mousemove --sync --window "$wid" 600 400
+xdotool mousedown 1
+sleep 0.5
+xdotool mousemove --sync --window "$wid" 700 400
+sleep 0.5
+xdotool mouseup 1
+wait_for "abs(((j['camera']['azimuth'] - ($azimuth) + 40) + 180) % 360 - 180) < 1e-6"
+xdotool click 4  # the wheel, away from the user: zoom in
+wait_for "abs(j['camera']['distance'] - ($distance) * 0.88) < 1e-9 * ($distance)"
+echo "orbited and zoomed: $(tail -1 "$log")"
+
+echo "== Ctrl+Q with nothing unsaved quits"
+xdotool key --clearmodifiers ctrl+q
+for _ in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
+if kill -0 "$pid" 2>/dev/null; then echo "the editor did not quit on Ctrl+Q"; exit 1; fi
+trap - EXIT
+wait "$pid" || { echo "the editor exited with $?"; exit 1; }
+echo "input test passed"
