@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <set>
 
 namespace corbel {
 
@@ -43,14 +46,137 @@ std::size_t fitting(double span, double spacing) {
   return static_cast<std::size_t>(std::min(n, 1e9));
 }
 
-double inputEdgeLength(const ExtrusionSpec& spec, const Anchor& a) {
-  if (a.loop < 0 || a.loop >= static_cast<int>(spec.loops.size())) return 0;
-  const auto& pts = spec.loops[a.loop].points;
-  if (a.edge < 0 || a.edge >= static_cast<int>(pts.size())) return 0;
-  return (pts[(a.edge + 1) % pts.size()] - pts[a.edge]).norm();
+double inputEdgeLength(const ExtrusionSpec& spec, const Anchor& a) { return wallRun(spec, a.loop, a.edge).length; }
+
+Vec2 edgeVector(const PlanLoop& l, int e) { return l.points[(e + 1) % l.points.size()] - l.points[e]; }
+
+// The edge of the run holding `along` and how far into it the point lies, m.
+std::optional<std::pair<int, double>> placeOnRun(const ExtrusionSpec& spec, const Anchor& a) {
+  const WallRun run = wallRun(spec, a.loop, a.edge);
+  if (run.edges.empty()) return std::nullopt;
+  double s = a.absolute ? a.along : a.along * run.length;
+  if (!std::isfinite(s)) s = 0;
+  const PlanLoop& l = spec.loops[a.loop];
+  for (std::size_t k = 0; k < run.edges.size(); ++k) {
+    const double len = edgeVector(l, run.edges[k]).norm();
+    if (s <= len || k + 1 == run.edges.size()) return std::make_pair(run.edges[k], std::clamp(s, 0.0, len));
+    s -= len;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
+
+int wallOf(const PlanLoop& loop, int edge) {
+  if (edge < 0 || edge >= static_cast<int>(loop.points.size())) return 0;
+  return loop.walls.size() == loop.points.size() ? loop.walls[edge] : -(edge + 1);  // own, distinct, negative
+}
+
+WallRun wallRun(const ExtrusionSpec& spec, int loop, int edge) {
+  WallRun run;
+  if (loop < 0 || loop >= static_cast<int>(spec.loops.size())) return run;
+  const PlanLoop& l = spec.loops[loop];
+  const int n = static_cast<int>(l.points.size());
+  if (edge < 0 || edge >= n) return run;
+  run.loop = loop;
+  const int id = wallOf(l, edge);
+  int first = edge, count = 1;
+  // Back to the run's first edge (a loop that is all one wall starts at edge 0), then forward.
+  while (count < n && wallOf(l, (first + n - 1) % n) == id) first = (first + n - 1) % n, ++count;
+  if (count == n) first = 0;
+  for (int k = 0; k < n; ++k) {
+    const int e = (first + k) % n;
+    if (wallOf(l, e) != id) break;
+    run.edges.push_back(e);
+    run.length += edgeVector(l, e).norm();
+  }
+  return run;
+}
+
+std::optional<Vec2> anchorPoint(const ExtrusionSpec& spec, const Anchor& a) {
+  const auto at = placeOnRun(spec, a);
+  if (!at) return std::nullopt;
+  const PlanLoop& l = spec.loops[a.loop];
+  const Vec2 d = edgeVector(l, at->first);
+  const double len = d.norm();
+  return len > 0 ? l.points[at->first] + d * (at->second / len) : l.points[at->first];
+}
+
+std::optional<Vec2> anchorDirection(const ExtrusionSpec& spec, const Anchor& a) {
+  const auto at = placeOnRun(spec, a);
+  if (!at) return std::nullopt;
+  Vec2 d = edgeVector(spec.loops[a.loop], at->first);
+  const double len = d.norm();
+  return len > 0 ? d / len : Vec2(1, 0);
+}
+
+double alongWall(const ExtrusionSpec& spec, int loop, int edge, double metres) {
+  const WallRun run = wallRun(spec, loop, edge);
+  double before = 0;
+  for (int e : run.edges) {
+    if (e == edge) break;
+    before += edgeVector(spec.loops[loop], e).norm();
+  }
+  return before + metres;
+}
+
+WallPoint nearestOnWall(const ExtrusionSpec& spec, const WallRun& run, const Vec2& p) {
+  WallPoint best;
+  if (run.edges.empty()) return best;
+  const PlanLoop& l = spec.loops[run.loop];
+  best.point = l.points[run.edges.front()];
+  double bestDistance = std::numeric_limits<double>::infinity(), before = 0;
+  for (int e : run.edges) {
+    const Vec2 a = l.points[e], d = edgeVector(l, e);
+    const double len = d.norm();
+    const double t = len > 0 ? std::clamp(OpenMesh::dot(p - a, d) / len, 0.0, len) : 0.0;
+    const Vec2 q = len > 0 ? a + d * (t / len) : a;
+    if ((q - p).norm() < bestDistance) bestDistance = (q - p).norm(), best = {q, before + t};
+    before += len;
+  }
+  return best;
+}
+
+int nextWallId(const ExtrusionSpec& spec) {
+  int next = 1;
+  for (const PlanLoop& l : spec.loops)
+    for (int w : l.walls) next = std::max(next, w + 1);
+  return next;
+}
+
+void assignWalls(ExtrusionSpec& spec) {
+  int next = nextWallId(spec);
+  for (PlanLoop& l : spec.loops)
+    if (l.walls.size() != l.points.size()) {
+      l.walls.resize(l.points.size());
+      for (int& w : l.walls) w = next++;
+    }
+}
+
+bool wallsAreEdges(const ExtrusionSpec& spec) {
+  std::set<int> seen;
+  for (const PlanLoop& l : spec.loops)
+    for (int w : l.walls)
+      if (!seen.insert(w).second) return false;
+  return true;
+}
+
+void canonicalWalls(ExtrusionSpec& spec) {
+  if (!wallsAreEdges(spec)) return;
+  for (PlanLoop& l : spec.loops) l.walls.clear();
+}
+
+std::vector<std::vector<int>> numberedWalls(const ExtrusionSpec& spec) {
+  ExtrusionSpec s = spec;
+  assignWalls(s);
+  std::map<int, int> number;
+  std::vector<std::vector<int>> out;
+  for (const PlanLoop& l : s.loops) {
+    out.emplace_back();
+    for (int w : l.walls) out.back().push_back(number.emplace(w, static_cast<int>(number.size()) + 1).first->second);
+  }
+  return out;
+}
 
 RepeatGrid repeatGrid(const ExtrusionSpec& spec, const Anchor& anchor, const Repeat& repeat) {
   RepeatGrid g;

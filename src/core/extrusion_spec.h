@@ -26,8 +26,15 @@ struct Profile {
 };
 
 struct PlanLoop {
+  PlanLoop() = default;
+  PlanLoop(std::vector<Vec2> corners, std::vector<int> profiles, std::vector<int> wallIds = {})
+      : points(std::move(corners)), profile(std::move(profiles)), walls(std::move(wallIds)) {}
   std::vector<Vec2> points;  // corners; outer loops counter-clockwise, holes clockwise
   std::vector<int> profile;  // per edge i (points[i] → points[i+1]): index into profiles
+  // The wall of each edge: an id (≥ 1, unique to this loop within the spec) that edits keep.
+  // Splitting an edge gives both halves its wall; deleting a corner between two walls merges
+  // them. Empty: every edge is a wall of its own (as specs made by program are).
+  std::vector<int> walls;
   bool operator==(const PlanLoop&) const = default;
 };
 
@@ -36,12 +43,14 @@ struct PlanLoop {
 // volume maximising.
 enum class Priority { MaximiseVolume, MinimiseVolume, Manual };
 
-// Where a feature sits on the shell (Sec. 3.4): on the active-plan edge that descends from an
-// input plan edge, at a profile height above the base.
+// Where a feature sits on the shell (Sec. 3.4): on the wall of an input plan edge, at a
+// profile height above the base. A wall is the run of consecutive edges that share the edge's
+// wall id (PlanLoop::walls): one edge until an edit splits it. `along` measures the whole run,
+// so splitting an edge moves nothing.
 struct Anchor {
-  int loop = 0, edge = 0;  // the input plan edge
-  bool absolute = false;   // false: `along` is a fraction of the active edge; true: metres
-                           // along the input edge's line from its start (a plane across it)
+  int loop = 0, edge = 0;  // an input plan edge of the wall
+  bool absolute = false;   // false: `along` is a fraction of the wall's active edge; true:
+                           // metres along the wall's run of input edges from its start
   double along = 0.5;
   double height = 0.0;     // above the extrusion's base
   bool operator==(const Anchor&) const = default;
@@ -147,8 +156,42 @@ struct ExtrusionSpec {
   bool operator==(const ExtrusionSpec&) const = default;
 };
 
+// Walls (PlanLoop::walls). The wall id of an edge (its own when the loop has none), the run
+// of consecutive edges with that id (in order, from the run's first edge; a loop that is one
+// wall runs from edge 0), and where an anchor lies on the plan along its run.
+int wallOf(const PlanLoop& loop, int edge);
+struct WallRun {
+  int loop = -1;
+  std::vector<int> edges;  // empty when the anchor's loop or edge does not exist
+  double length = 0;       // of the input edges, m
+};
+WallRun wallRun(const ExtrusionSpec& spec, int loop, int edge);
+// The point of the plan at `along` on the wall (a fraction of the run's length, or metres for
+// an absolute anchor), clamped to the run; nullopt when the anchor names no edge.
+std::optional<Vec2> anchorPoint(const ExtrusionSpec& spec, const Anchor& anchor);
+// The run's direction at that point (the direction of the edge holding it).
+std::optional<Vec2> anchorDirection(const ExtrusionSpec& spec, const Anchor& anchor);
+// How far along its wall's run (m) a point `metres` into input edge (loop, edge) lies.
+double alongWall(const ExtrusionSpec& spec, int loop, int edge, double metres);
+// The point of a run nearest `p`, and how far along the run it lies (m).
+struct WallPoint {
+  Vec2 point{0.0, 0.0};
+  double along = 0.0;
+};
+WallPoint nearestOnWall(const ExtrusionSpec& spec, const WallRun& run, const Vec2& p);
+// Gives every loop without wall ids fresh ones (one per edge, unique in the spec), so edits
+// can keep them; loops that have them keep them.
+void assignWalls(ExtrusionSpec& spec);
+// Whether every wall is one edge (as when no loop has ids). Specs keep that case as empty
+// `walls` (canonicalWalls), so a split undone by deleting the corner is the spec it was.
+bool wallsAreEdges(const ExtrusionSpec& spec);
+void canonicalWalls(ExtrusionSpec& spec);
+// The ids renumbered 1, 2, ... in order of first use (as the project file writes them).
+std::vector<std::vector<int>> numberedWalls(const ExtrusionSpec& spec);
+int nextWallId(const ExtrusionSpec& spec);
+
 // Columns and rows of a repeat at an anchor (1 × 1 when it does not repeat). Columns of a
-// relative anchor count on the input edge's length (0 when the edge does not exist). Counts
+// relative anchor count on its wall's length (0 when the edge does not exist). Counts
 // are capped at 1e9 each so absurd spacings stay representable for the limit checks.
 struct RepeatGrid {
   std::size_t columns = 1, rows = 1;

@@ -470,6 +470,8 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
     plan["profile"] = e.profiles[e.loops.front().profile.front()].name;
   else
     plan["edge_profiles"] = std::move(edgeProfiles);
+  // Walls are written once an edit has made them other than one per edge, numbered in order.
+  if (!wallsAreEdges(e)) plan["walls"] = numberedWalls(e);
   j["plan"] = std::move(plan);
   ojson profiles = ojson::array();
   for (const Profile& p : e.profiles) {
@@ -595,7 +597,8 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   }
   const JsonReader plan = r.at("plan");
   plan.expectObject();
-  for (auto& k : plan.unknownKeys({"loops", "profile", "edge_profiles"})) warnings.push_back(k + ": unknown key kept");
+  for (auto& k : plan.unknownKeys({"loops", "profile", "edge_profiles", "walls"}))
+    warnings.push_back(k + ": unknown key kept");
   auto profileIndex = [&](const JsonReader& nameReader) {
     const std::string n = nameReader.string(limits::kMaxNameLength);
     auto it = byName.find(n);
@@ -628,6 +631,34 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
   } else if (uniform < 0) {
     plan.fail("name the edges' profile: \"profile\" for all edges or \"edge_profiles\" per edge");
   }
+  // Walls: one list of ids per loop; each wall's edges follow each other in one loop.
+  if (auto wr = plan.find("walls")) {
+    const auto lists = wr->array(limits::kMaxLoops);
+    if (lists.size() != e.loops.size())
+      wr->fail("expected one list per loop (" + std::to_string(e.loops.size()) + "), found " + std::to_string(lists.size()));
+    std::map<int, std::size_t> loopOfWall;
+    for (std::size_t li = 0; li < lists.size(); ++li) {
+      const auto ids = lists[li].array(limits::kMaxLoopPoints);
+      if (ids.size() != e.loops[li].points.size())
+        lists[li].fail("expected one wall per edge (" + std::to_string(e.loops[li].points.size()) + "), found " +
+                       std::to_string(ids.size()));
+      std::vector<int>& walls = e.loops[li].walls;
+      for (const JsonReader& id : ids) walls.push_back(static_cast<int>(id.integer(1, 1L << 30)));
+      const std::size_t n = walls.size();
+      std::size_t runs = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        runs += walls[i] != walls[(i + n - 1) % n];
+        const auto [it, fresh] = loopOfWall.emplace(walls[i], li);
+        if (!fresh && it->second != li)
+          ids[i].fail("wall " + std::to_string(walls[i]) + " is in loops " + std::to_string(it->second) + " and " +
+                      std::to_string(li) + " (a wall belongs to one loop)");
+      }
+      std::set<int> distinct(walls.begin(), walls.end());
+      if (runs > 0 && runs != distinct.size())
+        lists[li].fail("each wall's edges must follow each other (a wall is one run of edges)");
+    }
+  }
+  canonicalWalls(e);
   // Anchors: {loop, edge, fraction | at, height}; the kernel checks that they name real edges.
   auto anchorFrom = [&](const JsonReader& ar, std::set<std::string> extra) {
     ar.expectObject();

@@ -45,22 +45,114 @@ bool inside(const Vec2& q, const std::vector<Vec2>& poly) {
 
 }  // namespace
 
-ExtrusionSpec insertCorner(ExtrusionSpec s, int loop, int edge, const Vec2& at) {
+namespace {
+
+// Every anchored thing of a spec (steps, then mesh anchors) with a name for the log.
+template <class F>
+void forEachAnchor(ExtrusionSpec& s, F&& f) {
+  for (std::size_t k = 0; k < s.steps.size(); ++k)
+    f(s.steps[k].anchor, "steps[" + std::to_string(k) + "] \"" + s.steps[k].name + "\"");
+  for (std::size_t k = 0; k < s.anchors.size(); ++k)
+    f(s.anchors[k].anchor, "anchors[" + std::to_string(k) + "] \"" + s.anchors[k].name + "\"");
+}
+
+// Removes the anchored things `gone` marks (steps first, then mesh anchors, as forEachAnchor
+// counts them), noting each.
+void removeAnchored(ExtrusionSpec& s, const std::vector<char>& gone, const std::string& why, std::vector<std::string>* notes) {
+  std::size_t k = 0;
+  std::vector<PlanStep> steps;
+  for (PlanStep& st : s.steps)
+    if (gone[k++]) {
+      if (notes) notes->push_back("removed step \"" + st.name + "\": " + why);
+    } else {
+      steps.push_back(std::move(st));
+    }
+  std::vector<MeshAnchor> anchors;
+  for (MeshAnchor& m : s.anchors)
+    if (gone[k++]) {
+      if (notes) notes->push_back("removed feature \"" + m.name + "\": " + why);
+    } else {
+      anchors.push_back(std::move(m));
+    }
+  s.steps = std::move(steps);
+  s.anchors = std::move(anchors);
+}
+
+double planScale(const ExtrusionSpec& s) {
+  BBox box;
+  for (const PlanLoop& l : s.loops)
+    for (const Vec2& p : l.points) box.add(Vec3(p[0], p[1], 0));
+  return std::max(box.diagonal(), 1.0);
+}
+
+}  // namespace
+
+ExtrusionSpec insertCorner(ExtrusionSpec s, int loop, int edge, const Vec2& at, std::vector<std::string>*) {
   PlanLoop& l = loopAt(s, loop);
   if (edge < 0 || edge >= static_cast<int>(l.points.size())) fail("edge", "loop " + std::to_string(loop) + " has no edge " + std::to_string(edge));
   if (!finite(at)) fail("point", "coordinates must be finite");
+  assignWalls(s);
+  // Both halves belong to the edge's wall, so every anchor keeps its place along the wall.
   l.points.insert(l.points.begin() + edge + 1, at);
   l.profile.insert(l.profile.begin() + edge + 1, l.profile[edge]);
+  l.walls.insert(l.walls.begin() + edge + 1, l.walls[edge]);
+  forEachAnchor(s, [&](Anchor& a, const std::string&) {
+    if (a.loop == loop && a.edge > edge) ++a.edge;
+  });
+  canonicalWalls(s);
   return s;
 }
 
-ExtrusionSpec deleteCorner(ExtrusionSpec s, int loop, int corner) {
+ExtrusionSpec deleteCorner(ExtrusionSpec s, int loop, int corner, std::vector<std::string>* notes) {
   PlanLoop& l = loopAt(s, loop);
-  if (corner < 0 || corner >= static_cast<int>(l.points.size())) fail("corner", "no corner " + std::to_string(corner));
-  if (l.points.size() <= 3) fail("corner", "a loop needs at least three corners (delete the loop instead)");
-  // The edge arriving at the corner now runs on to the next one and keeps its profile.
+  const int n = static_cast<int>(l.points.size());
+  if (corner < 0 || corner >= n) fail("corner", "no corner " + std::to_string(corner));
+  if (n <= 3) fail("corner", "a loop needs at least three corners (delete the loop instead)");
+  assignWalls(s);
+  // The edge arriving at the corner now runs on to the next one and keeps its profile and
+  // wall; the wall of the edge leaving it, when another, merges into that one.
+  const int prev = (corner + n - 1) % n;
+  const int survive = l.walls[prev], absorbed = l.walls[corner];
+  // Before the change: where each anchor on either wall lies.
+  std::vector<std::optional<Vec2>> before;
+  std::vector<int> wallBefore;
+  forEachAnchor(s, [&](Anchor& a, const std::string&) {
+    const bool mine = a.loop == loop && a.edge >= 0 && a.edge < n;
+    wallBefore.push_back(mine ? l.walls[a.edge] : 0);
+    before.push_back(mine ? anchorPoint(s, a) : std::nullopt);
+  });
   l.points.erase(l.points.begin() + corner);
   l.profile.erase(l.profile.begin() + corner);
+  l.walls.erase(l.walls.begin() + corner);
+  for (int& w : l.walls)
+    if (w == absorbed) w = survive;
+  const int merged = prev < corner ? prev : prev - 1;
+  forEachAnchor(s, [&](Anchor& a, const std::string&) {
+    if (a.loop != loop) return;
+    if (a.edge == corner) a.edge = merged;
+    else if (a.edge > corner) --a.edge;
+  });
+  canonicalWalls(s);
+  if (survive == absorbed) return s;  // a corner within one wall: fractions along it stay
+  // Two walls become one: an anchor whose point lies on it keeps that point; one of the
+  // surviving wall keeps its place along the edge that moved; one of the other wall is gone.
+  const WallRun run = wallRun(s, loop, merged);
+  const double near = 1e-9 * planScale(s);
+  std::vector<char> gone;
+  std::size_t k = 0;
+  forEachAnchor(s, [&](Anchor& a, const std::string&) {
+    const std::size_t i = k++;
+    gone.push_back(0);
+    if (!before[i] || (wallBefore[i] != survive && wallBefore[i] != absorbed)) return;
+    const auto [q, t] = nearestOnWall(s, run, *before[i]);
+    if ((q - *before[i]).norm() <= near) {
+      a.along = a.absolute ? t : (run.length > 0 ? std::clamp(t / run.length, 0.0, 1.0) : 0.0);
+      a.edge = merged;
+    } else if (wallBefore[i] == absorbed) {
+      gone.back() = 1;
+    }
+  });
+  removeAnchored(s, gone, "its wall went with corner " + std::to_string(corner) + " of loop " + std::to_string(loop), notes);
   return s;
 }
 
@@ -68,7 +160,7 @@ ExtrusionSpec moveCorner(ExtrusionSpec s, int loop, int corner, const Vec2& to) 
   PlanLoop& l = loopAt(s, loop);
   if (corner < 0 || corner >= static_cast<int>(l.points.size())) fail("corner", "no corner " + std::to_string(corner));
   if (!finite(to)) fail("point", "coordinates must be finite");
-  l.points[corner] = to;
+  l.points[corner] = to;  // anchors keep their fractions along their walls
   return s;
 }
 
@@ -81,21 +173,27 @@ ExtrusionSpec addLoop(ExtrusionSpec s, std::vector<Vec2> points, int profile) {
   for (const PlanLoop& l : s.loops) depth += inside(points[0], l.points);
   const bool hole = depth % 2 == 1;
   if ((signedArea(points) > 0) == hole) std::reverse(points.begin(), points.end());
+  assignWalls(s);
   PlanLoop l;
   l.profile.assign(points.size(), profile);
+  for (int next = nextWallId(s); l.walls.size() < points.size();) l.walls.push_back(next++);
   l.points = std::move(points);
   s.loops.push_back(std::move(l));
+  canonicalWalls(s);
   return s;
 }
 
-ExtrusionSpec deleteLoop(ExtrusionSpec s, int loop) {
+ExtrusionSpec deleteLoop(ExtrusionSpec s, int loop, std::vector<std::string>* notes) {
   loopAt(s, loop);
   if (s.loops.size() == 1) fail("loop", "the plan's last loop cannot be deleted (delete the object instead)");
   s.loops.erase(s.loops.begin() + loop);
-  for (PlanStep& st : s.steps)
-    if (st.anchor.loop > loop) --st.anchor.loop;
-  for (MeshAnchor& m : s.anchors)
-    if (m.anchor.loop > loop) --m.anchor.loop;
+  std::vector<char> gone;
+  forEachAnchor(s, [&](Anchor& a, const std::string&) {
+    gone.push_back(a.loop == loop);
+    if (a.loop > loop) --a.loop;
+  });
+  removeAnchored(s, gone, "its loop " + std::to_string(loop) + " was deleted", notes);
+  canonicalWalls(s);
   return s;
 }
 
@@ -357,7 +455,8 @@ ForcedStepFrame forcedStepFrame(const ExtrusionSpec& s, int loop, int edge, cons
     }
   }
   ForcedStepFrame f;
-  f.anchor = Anchor{loop, edge, false, at / len, height};
+  const double run = wallRun(s, loop, edge).length;  // the anchor measures the whole wall
+  f.anchor = Anchor{loop, edge, false, run > 0 ? std::clamp(alongWall(s, loop, edge, at) / run, 0.0, 1.0) : at / len, height};
   const Vec2 origin = p + d * at;
   for (const Vec2& w : world) f.points.emplace_back(OpenMesh::dot(w - origin, d), OpenMesh::dot(w - origin, out));
   return f;
@@ -572,7 +671,7 @@ FeatureSize sizeFrom(const nlohmann::json& j) {
 
 }  // namespace
 
-std::string applyEdit(Document& doc, const nlohmann::json& op) {
+std::string applyEdit(Document& doc, const nlohmann::json& op, std::vector<std::string>* notes) {
   if (!op.is_object()) fail("op", "an edit is a JSON object");
   const std::string kind = text(op, "op");
   if (kind == "new_extrusion") {
@@ -614,11 +713,14 @@ std::string applyEdit(Document& doc, const nlohmann::json& op) {
   ExtrusionSpec& s = *sp;
   std::string label;
   if (kind == "insert_corner") {
-    s = insertCorner(s, integer(op, "loop"), integer(op, "edge"), vec2(op["at"], "at"));
+    s = insertCorner(s, integer(op, "loop"), integer(op, "edge"), vec2(op["at"], "at"), notes);
     label = "Insert corner";
   } else if (kind == "delete_corner") {
-    s = deleteCorner(s, integer(op, "loop"), integer(op, "corner"));
+    s = deleteCorner(s, integer(op, "loop"), integer(op, "corner"), notes);
     label = "Delete corner";
+  } else if (kind == "delete_loop") {
+    s = deleteLoop(s, integer(op, "loop"), notes);
+    label = "Delete loop";
   } else if (kind == "move_corner") {
     s = moveCorner(s, integer(op, "loop"), integer(op, "corner"), vec2(op["to"], "to"));
     label = "Move corner";

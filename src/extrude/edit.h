@@ -17,14 +17,22 @@ namespace corbel::extrude::edit {
 
 using EdgeRef = std::pair<int, int>;  // (loop, edge)
 
-// Plan.
-ExtrusionSpec insertCorner(ExtrusionSpec s, int loop, int edge, const Vec2& at);  // splits the edge
-ExtrusionSpec deleteCorner(ExtrusionSpec s, int loop, int corner);
+// Plan. Anchored things (steps, mesh anchors) belong to walls (core/extrusion_spec.h):
+// - insertCorner splits an edge; both halves stay on its wall, so nothing anchored moves;
+// - deleteCorner: the edge arriving at the corner runs on to the next one. Within one wall,
+//   anchors keep their places along it. Where it joins two walls, an anchor whose point lies
+//   on the joined wall keeps that point, one of the arriving edge's wall keeps its place along
+//   the edge that turned, and one of the other wall is removed;
+// - moveCorner keeps every anchor's fraction along its wall;
+// - deleteLoop removes what is anchored on the loop.
+// What is removed is named in `notes` ("removed feature \"door\": its wall went with ...").
+ExtrusionSpec insertCorner(ExtrusionSpec s, int loop, int edge, const Vec2& at, std::vector<std::string>* notes = nullptr);
+ExtrusionSpec deleteCorner(ExtrusionSpec s, int loop, int corner, std::vector<std::string>* notes = nullptr);
 ExtrusionSpec moveCorner(ExtrusionSpec s, int loop, int corner, const Vec2& to);
-// A new loop with every edge on `profile`; drawn inside an odd number of loops it is a hole,
-// so its orientation is set to match whichever way it was drawn.
+// A new loop with every edge on `profile` and a wall of its own; drawn inside an odd number
+// of loops it is a hole, so its orientation is set to match whichever way it was drawn.
 ExtrusionSpec addLoop(ExtrusionSpec s, std::vector<Vec2> points, int profile);
-ExtrusionSpec deleteLoop(ExtrusionSpec s, int loop);
+ExtrusionSpec deleteLoop(ExtrusionSpec s, int loop, std::vector<std::string>* notes = nullptr);
 ExtrusionSpec setEdgeProfile(ExtrusionSpec s, const std::vector<EdgeRef>& edges, int profile);
 
 // Profiles. Point 0 stays at (0, 0); z never decreases along a profile (a dragged point is
@@ -100,7 +108,7 @@ std::vector<Profile> profileLibrary();
 // Applies one edit-script operation to a document, e.g.
 //   {"op": "move_corner", "object": "House", "loop": 0, "corner": 2, "to": [10, 6]}
 // Operations: new_extrusion {name, points, profile: library name}, insert_corner, delete_corner,
-// move_corner, add_loop {points, profile}, set_edge_profile {edges: [[loop, edge]...], profile},
+// move_corner, add_loop {points, profile}, delete_loop {loop}, set_edge_profile {edges: [[loop, edge]...], profile},
 // add_profile {from: library name, as: name}, insert_profile_point {profile, after, at},
 // move_profile_point {profile, point, to}, delete_profile_point, add_overhang {height, depth},
 // set_tag {profile, segment, tag}, add_step {step: as in the project file}, add_forced_step
@@ -111,7 +119,8 @@ std::vector<Profile> profileLibrary();
 // {kind: "row" | "grid" | "none", along, spacing, height, row_spacing} as in the project file.
 // set_background {image, scale, origin, opacity} (the plan pane's tracing image; fields left
 // out keep their value) and clear_background change the object, not its spec.
-// Profiles are named; the label for undo is returned.
-std::string applyEdit(Document& doc, const nlohmann::json& op);
+// Profiles are named; the label for undo is returned, and what an edit removed (anchored
+// things whose wall went) is named in `notes`.
+std::string applyEdit(Document& doc, const nlohmann::json& op, std::vector<std::string>* notes = nullptr);
 
 }  // namespace corbel::extrude::edit

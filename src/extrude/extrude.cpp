@@ -66,6 +66,9 @@ std::optional<std::string> checkSpec(const ExtrusionSpec& spec) {
     if (l.profile.size() != l.points.size())
       return at() + ".profile: one profile per edge is needed (" + std::to_string(l.points.size()) + " edges, " +
              std::to_string(l.profile.size()) + " profiles)";
+    if (!l.walls.empty() && l.walls.size() != l.points.size())
+      return at() + ".walls: one wall per edge is needed (" + std::to_string(l.points.size()) + " edges, " +
+             std::to_string(l.walls.size()) + " walls)";
     for (std::size_t i = 0; i < l.points.size(); ++i) {
       if (!finite(l.points[i])) return at() + ".points[" + std::to_string(i) + "]: coordinates must be finite";
       if (std::abs(l.points[i][0]) > 1e7 || std::abs(l.points[i][1]) > 1e7)

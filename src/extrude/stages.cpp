@@ -13,6 +13,7 @@
 // seam in one plane are joined into one face.
 #include "core/error.h"
 #include "extrude/extrude.h"
+#include "extrude/walls.h"
 #include "extrude/winding.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -1315,23 +1316,35 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, const Ext
   for (const auto& l : spec.loops)
     for (const Vec2& p : l.points) box.add(Vec3(p[0], p[1], 0));
   const Tolerances tol = Tolerances::forScale(box.diagonal(), options.toleranceFactor);
-  // Repeats expand into single instances first; a spec without any (most of them, and every
-  // footprint of a batch) is used as it is, without a copy.
+  // Repeats expand into single instances first (their columns counted along whole walls), then
+  // walls of several edges join into kernel edges (extrude/walls.h). A spec with neither (most
+  // of them, and every footprint of a batch) is used as it is, without a copy.
   const bool repeats = std::any_of(spec.steps.begin(), spec.steps.end(), [](const PlanStep& st) { return st.repeat.kind != RepeatKind::None; }) ||
                        std::any_of(spec.anchors.begin(), spec.anchors.end(), [](const MeshAnchor& m) { return m.repeat.kind != RepeatKind::None; });
-  if (!repeats) {
-    Stager stager(spec, tol, progress, timeLimitSeconds, options.windingRule);
-    ExtrusionResult r = stager.run(box.diagonal());
-    for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = static_cast<int>(k);
-    r.toleranceFactor = options.toleranceFactor;
-    return r;
+  std::optional<ExpandedSpec> expanded;
+  if (repeats) expanded = expandRepeats(spec);
+  const ExtrusionSpec& unrolled = expanded ? expanded->spec : spec;
+  const std::optional<KernelWalls> walls = kernelWalls(unrolled, 1e-9 * std::max(box.diagonal(), 1.0));
+  ExtrusionResult r;
+  try {
+    Stager stager(walls ? walls->spec : unrolled, tol, progress, timeLimitSeconds, options.windingRule);
+    r = stager.run(box.diagonal());
+  } catch (const InputError& e) {
+    if (!walls) throw;
+    throw InputError(walls->inputPath(e.where), e.reason);  // the user's corners, not the kernel's
   }
-  const ExpandedSpec expanded = expandRepeats(spec);
-  Stager stager(expanded.spec, tol, progress, timeLimitSeconds, options.windingRule);
-  ExtrusionResult r = stager.run(box.diagonal());
-  for (std::size_t k = 0; k < r.anchors.size(); ++k) r.anchors[k].source = expanded.anchorSource[k];
-  for (ShellFace& f : r.shell.faces)
-    if (f.step >= 0 && f.step < static_cast<int>(expanded.stepSource.size())) f.step = expanded.stepSource[f.step];
+  // A plan so thin that every edge meets its neighbours at once leaves nothing to build.
+  if (r.shell.faces.empty())
+    throw InputError("loops", "the plan is too thin to build: its walls meet each other at the ground (no faces)");
+  for (std::size_t k = 0; k < r.anchors.size(); ++k)
+    r.anchors[k].source = expanded ? expanded->anchorSource[k] : static_cast<int>(k);
+  for (ShellFace& f : r.shell.faces) {
+    if (walls && f.step < 0 && f.sourceLoop >= 0 && f.sourceLoop < static_cast<int>(walls->inputCorner.size()) &&
+        f.sourceEdge >= 0 && f.sourceEdge < static_cast<int>(walls->inputCorner[f.sourceLoop].size()))
+      f.sourceEdge = walls->inputCorner[f.sourceLoop][f.sourceEdge];
+    if (expanded && f.step >= 0 && f.step < static_cast<int>(expanded->stepSource.size()))
+      f.step = expanded->stepSource[f.step];
+  }
   r.toleranceFactor = options.toleranceFactor;
   return r;
 }
