@@ -86,6 +86,7 @@ App::App(GLFWwindow* window, EditorOptions options)
     else
       log("--select: the project has no object named \"" + options_.select + "\"", true);
   }
+  claimRecovery();
   syncScene(true);
   frameAll();
   checkRecovery();
@@ -170,6 +171,7 @@ void App::newDocument() {
     path_.clear();
     selection_.clear();
     recovery_.discard();
+    claimRecovery();
     syncScene(true);
     frameAll();
     log("New document");
@@ -193,6 +195,7 @@ void App::openFile(const std::string& path) {
           selection_.clear();
           recent_.add(path);
           recovery_.discard();
+          claimRecovery();
           syncScene(true);
           frameAll();
           log("Opened " + path);
@@ -205,10 +208,12 @@ bool App::saveTo(const std::string& path) {
     Document doc = history_.current();
     if (doc.name == "untitled" || doc.name.empty()) doc.name = std::filesystem::path(path).stem().string();
     saveProject(doc, path);
+    const bool moved = path != path_;
     path_ = path;
     history_.markSaved();
     recent_.add(path);
     recovery_.discard();
+    if (moved) claimRecovery();  // the autosaves of this document now go to its new file's slot
     log("Saved " + path);
     return true;
   } catch (const std::exception& e) {
@@ -269,25 +274,55 @@ void App::autosaveIfDue() {
   }
 }
 
+// This document's recovery slot: one per open document, so two editors never autosave over
+// each other; a second editor on the same file is told.
+void App::claimRecovery() {
+  try {
+    if (const auto other = recovery_.claim(path_)) {
+      const std::string name = std::filesystem::path(path_).filename().string();
+      errorMessage_ = name + " is open in another corbel (process " + std::to_string(*other) +
+                      "). This window autosaves apart from it, but saving here and there overwrites one with the other.";
+      showError_ = true;
+      log("warning: " + errorMessage_, true);
+      std::fprintf(stderr, "corbel: warning: %s\n", errorMessage_.c_str());
+    }
+  } catch (const std::exception& e) {
+    log(std::string("Autosave is off: ") + e.what(), true);
+  }
+}
+
+// Brings a recovered document into this window; the editor autosaves it in its slot from now on.
+void App::recover(const RecoveredWork& work) {
+  try {
+    recovery_.adopt(work);
+  } catch (const std::exception& e) {
+    log(e.what(), true);
+    return;
+  }
+  history_.reset(history_.current());
+  commit(work.document, "Recover unsaved work");
+  path_ = work.originalPath;
+  selection_.clear();
+  syncScene(true);
+  frameAll();
+  log("Recovered unsaved work" + (work.originalPath.empty() ? std::string() : " of " + work.originalPath) +
+      (work.savedAt.empty() ? std::string() : " from " + work.savedAt));
+}
+
 void App::checkRecovery() {
-  std::string problem;
-  auto found = recovery_.find(&problem);
-  if (!problem.empty()) log("A recovery file exists but cannot be read: " + problem, true);
-  if (!found) return;
+  std::vector<std::string> problems;
+  std::vector<RecoveredWork> found = recovery_.orphans(&problems);
+  for (const std::string& p : problems) log("A recovery file exists but cannot be read: " + p, true);
+  if (found.empty()) return;
   switch (options_.recover) {
     case EditorOptions::Recover::No:
-      recovery_.discard();
+      for (const RecoveredWork& w : found) recovery_.discardOrphan(w);
       break;
-    case EditorOptions::Recover::Yes:
-      history_.reset(Document{});
-      commit(found->document, "Recover unsaved work");
-      path_ = found->originalPath;
-      syncScene(true);
-      frameAll();
-      log("Recovered unsaved work from " + found->savedAt);
+    case EditorOptions::Recover::Yes:  // the newest; the others wait for the next start
+      recover(found.front());
       break;
     case EditorOptions::Recover::Ask:
-      recoveryOffer_ = std::move(found);
+      recoveryOffers_ = std::move(found);
       break;
   }
 }
@@ -457,6 +492,7 @@ void App::writeTestLog() {
   s.objects = doc.objects.size();
   s.dirty = history_.dirty();
   s.undo = history_.canUndo() ? history_.undoLabel() : "";
+  if (panesFor_) s.planCorners = panes_.cornersOnScreen();
   testLog_->write(s);
 }
 
@@ -505,7 +541,6 @@ int App::run() {
     ImGui::NewFrame();
 
     script_.startFrame(frame_, scriptHost);
-    handleShortcuts();
     pollJob();
     syncScene();
 
@@ -589,6 +624,10 @@ int App::run() {
     }
     for (auto& change : deferred_) change();
     deferred_.clear();
+    // Shortcuts after the panels: a key the pane under the pointer or with focus takes (Delete
+    // on a selected corner) is not also a command.
+    paneHasKeys_ = layout.rightPaneShown && rightPaneHasKeys(pane);
+    handleShortcuts();
     drawHelp();
     drawModals();
     syncScene();  // edits made by the panels this frame

@@ -81,12 +81,15 @@ class App {
   void exportScene();
   void guardUnsaved(std::function<void()> then);  // asks before discarding changes
   void autosaveIfDue();
+  void claimRecovery();
   void checkRecovery();
+  void recover(const RecoveredWork& work);
 
   // Frame.
   void registerActions();
   void runAction(const Action& a);  // every way an action runs (menu, shortcut, script)
   void handleShortcuts();
+  bool rightPaneHasKeys(const Rect& pane) const;
   // This frame's input events to the 3D view's tool (what a click or a drag there means).
   void handleViewInput();
   void drawView();
@@ -173,11 +176,12 @@ class App {
   bool showUnsavedPrompt_ = false;
   std::string errorMessage_;
   bool showError_ = false;
-  std::optional<RecoveredWork> recoveryOffer_;
+  std::vector<RecoveredWork> recoveryOffers_;  // work of editors that are gone, newest first
   bool showHelp_ = false;
   bool quitRequested_ = false;
 
   int frame_ = 0;
+  bool paneHasKeys_ = false;  // a kernel's pane is under the pointer or has focus (this frame)
   ExtrusionPanes panes_;
   std::optional<ObjectId> panesFor_;
   std::vector<std::function<void()>> deferred_;  // the panels' commits of this frame (deferredCommit)

@@ -7,6 +7,7 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -188,7 +189,7 @@ void App::registerActions() {
   add({"object.delete",
        "Object",
        "Delete",
-       "Delete the selected object.",
+       "Delete the selected object (one undo step). Over a kernel's pane, Delete removes what is selected there instead.",
        {GLFW_KEY_DELETE},
        true,
        [this, doc] {
@@ -197,6 +198,7 @@ void App::registerActions() {
          d.remove(*selected());
          selection_.clear();
          commit(std::move(d), "Delete " + name);
+         log("Deleted " + name + " (Edit > Undo brings it back)");
        },
        [this] { return selected().has_value(); }});
 
@@ -632,11 +634,24 @@ void App::handleShortcuts() {
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (!ImGui::IsKeyPressed(key, false)) continue;
     const Action* a = actions_.match(key, io.KeyCtrl, io.KeyShift, io.KeyAlt);
+    // A key without Ctrl or Alt belongs to the kernel's pane under the pointer or with focus
+    // (Delete there removes a corner, not the object).
+    if (a && paneHasKeys_ && !a->shortcut.ctrl && !a->shortcut.alt) continue;
     if (a && actions_.isEnabled(*a) && a->run) {
       runAction(*a);
       break;
     }
   }
+}
+
+// Whether the window under the pointer or with focus is one of the right pane's (a kernel's
+// panel), after the panels of this frame are drawn.
+bool App::rightPaneHasKeys(const Rect& pane) const {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  auto inPane = [&](const ImGuiWindow* w) {
+    return w && w->RootWindow && w->RootWindow->Pos.x >= pane.x - 1 && w->RootWindow->Pos.y >= pane.y - 1;
+  };
+  return inPane(g.HoveredWindow) || inPane(g.NavWindow);
 }
 
 void App::drawMenuBar() {

@@ -3,6 +3,7 @@
 #include "editor/app.h"
 
 #include "core/materials.h"
+#include "editor/fields.h"
 
 #include <imgui.h>
 
@@ -23,10 +24,7 @@ void App::drawObjectProperties(const DocObject& object) {
     field = fieldName;
   };
 
-  char name[limits::kMaxNameLength + 1];
-  std::snprintf(name, sizeof name, "%s", o->name.c_str());
-  if (ImGui::InputText("Name", name, sizeof name, ImGuiInputTextFlags_EnterReturnsTrue)) {
-    std::string n = name;
+  if (std::string n; commitText("Name", o->name, n, limits::kMaxNameLength)) {
     if (n.empty())
       log("An object needs a name.", true);
     else if (n != o->name && d.findByName(n))
@@ -271,29 +269,42 @@ void App::drawModals() {
     ImGui::EndPopup();
   }
 
-  if (recoveryOffer_) {
-    ImGui::OpenPopup("Recover unsaved work?");
-  }
+  if (!recoveryOffers_.empty() && !ImGui::IsPopupOpen("Recover unsaved work?")) ImGui::OpenPopup("Recover unsaved work?");
   if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("corbel found work that was not saved (autosaved %s%s%s).", recoveryOffer_->savedAt.c_str(),
-                recoveryOffer_->originalPath.empty() ? "" : ", from ", recoveryOffer_->originalPath.c_str());
-    ImGui::Text("%zu objects. Recover it? (Your current document is kept until you choose.)",
-                recoveryOffer_->document.objects.size());
-    if (ImGui::Button("Recover")) {
-      history_.reset(history_.current());
-      commit(recoveryOffer_->document, "Recover unsaved work");
-      path_ = recoveryOffer_->originalPath;
-      syncScene(true);
-      frameAll();
-      log("Recovered unsaved work");
-      recoveryOffer_.reset();
+    ImGui::Text("corbel found work that was not saved when its window closed:");
+    ImGui::Text("(this window's document is kept until you choose)");
+    std::optional<std::size_t> recovered, dropped;
+    if (ImGui::BeginTable("recoverable", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders)) {
+      for (std::size_t i = 0; i < recoveryOffers_.size(); ++i) {
+        const RecoveredWork& w = recoveryOffers_[i];
+        ImGui::PushID(static_cast<int>(i));
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%s", w.originalPath.empty() ? "a new project" : w.originalPath.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%s, %zu objects", w.savedAt.empty() ? "autosaved" : w.savedAt.c_str(), w.document.objects.size());
+        ImGui::TableNextColumn();
+        if (ImGui::Button("Recover")) recovered = i;
+        ImGui::SameLine();
+        if (ImGui::Button("Discard")) dropped = i;
+        ImGui::PopID();
+      }
+      ImGui::EndTable();
+    }
+    if (recoveryOffers_.size() > 1)
+      ImGui::TextWrapped("The work not recovered now is offered again the next time corbel starts.");
+    if (ImGui::Button("Later")) {
+      recoveryOffers_.clear();
       ImGui::CloseCurrentPopup();
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Discard")) {
-      recovery_.discard();
-      recoveryOffer_.reset();
+    if (recovered) {
+      recover(recoveryOffers_[*recovered]);
+      recoveryOffers_.clear();  // the rest stay on disk for the next start
       ImGui::CloseCurrentPopup();
+    } else if (dropped) {
+      recovery_.discardOrphan(recoveryOffers_[*dropped]);
+      recoveryOffers_.erase(recoveryOffers_.begin() + static_cast<long>(*dropped));
+      if (recoveryOffers_.empty()) ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
   }

@@ -1,5 +1,7 @@
 #include "editor/extrusion_panes.h"
 
+#include "editor/fields.h"
+
 #include "core/error.h"
 #include "extrude/edit.h"
 #include "extrude/extrude.h"
@@ -33,20 +35,20 @@ static bool repeatFields(Repeat& rep, const Anchor& anchor, const std::string& i
   }
   rep.kind = static_cast<RepeatKind>(kind);
   if (rep.kind == RepeatKind::None) return changed;
-  float v[2] = {float(rep.along), float(rep.spacing)};
+  const float was[2] = {float(rep.along), float(rep.spacing)};
+  float v[2];
   ImGui::SameLine();
   ImGui::SetNextItemWidth(140);
-  if (ImGui::InputFloat2(((anchor.absolute ? "last at, spacing" : "last fraction, spacing") + id).c_str(), v, "%.2f",
-                         ImGuiInputTextFlags_EnterReturnsTrue)) {
+  if (commitFloats(((anchor.absolute ? "last at, spacing" : "last fraction, spacing") + id).c_str(), was, v, 2)) {
     rep.along = v[0];
     rep.spacing = v[1];
     changed = true;
   }
   if (rep.kind == RepeatKind::Grid) {
-    float g[2] = {float(rep.height), float(rep.rowSpacing)};
+    const float was2[2] = {float(rep.height), float(rep.rowSpacing)};
+    float g[2];
     ImGui::SetNextItemWidth(140);
-    if (ImGui::InputFloat2(("last row height, row spacing" + id).c_str(), g, "%.2f",
-                           ImGuiInputTextFlags_EnterReturnsTrue)) {
+    if (commitFloats(("last row height, row spacing" + id).c_str(), was2, g, 2)) {
       rep.height = g[0];
       rep.rowSpacing = g[1];
       changed = true;
@@ -56,6 +58,10 @@ static bool repeatFields(Repeat& rep, const Anchor& anchor, const std::string& i
 }
 
 namespace {
+
+// Keys go to the pane under the pointer or with focus (Delete there removes the selected
+// corner, point, step or feature, never the object).
+bool keysHere() { return ImGui::IsWindowFocused() || ImGui::IsWindowHovered(); }
 
 // Edge colours by profile index (the paper's colour coding of Fig. 4).
 ImU32 profileColor(int i) {
@@ -170,16 +176,8 @@ const FeatureKind kFeatureKinds[] = {FeatureKind::Door, FeatureKind::Window, Fea
                                      FeatureKind::ChimneyPot};
 const char* const kFeatureLabels = "door\0window\0roof window\0chimney pot\0";
 
-// Where an anchor lies on its input edge in the plan (the plan pane draws input edges).
-std::optional<Vec2> anchorOnPlan(const ExtrusionSpec& spec, const Anchor& a) {
-  if (a.loop < 0 || a.loop >= static_cast<int>(spec.loops.size())) return std::nullopt;
-  const auto& pts = spec.loops[a.loop].points;
-  if (a.edge < 0 || a.edge >= static_cast<int>(pts.size())) return std::nullopt;
-  const Vec2 p = pts[a.edge], q = pts[(a.edge + 1) % pts.size()];
-  const Vec2 d = q - p;
-  const double len = d.norm();
-  return a.absolute ? p + d / std::max(len, 1e-9) * a.along : p + d * a.along;
-}
+// Where an anchor lies on its wall in the plan (the plan pane draws input edges).
+std::optional<Vec2> anchorOnPlan(const ExtrusionSpec& spec, const Anchor& a) { return anchorPoint(spec, a); }
 
 }  // namespace
 
@@ -194,9 +192,10 @@ void ExtrusionPanes::featureFields(const PaneHost& host, const ExtrusionSpec& sp
   ImGui::Separator();
   ImGui::Text("Feature \"%s\": %s", m.name.c_str(), featureName(m.feature));
   if (m.feature != FeatureKind::None) {
-    float size[3] = {float(m.size.width), float(m.size.height), float(m.size.depth)};
+    const float was[3] = {float(m.size.width), float(m.size.height), float(m.size.depth)};
+    float size[3];
     ImGui::SetNextItemWidth(220);
-    if (ImGui::InputFloat3("W, H, D (m)", size, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    if (commitFloats("W, H, D (m)", was, size, 3)) {
       const FeatureSize fs{size[0], size[1], size[2]};
       apply(
           host, [&](const ExtrusionSpec& s) { return ed::setFeatureSize(s, k, fs); }, "Resize " + m.name);
@@ -310,13 +309,14 @@ void ExtrusionPanes::backgroundFields(const PaneHost& host, const DocObject& obj
   }
   double scale = b.scale;
   ImGui::SetNextItemWidth(140);
-  if (ImGui::InputDouble("metres per pixel", &scale, 0, 0, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+  if (commitDouble("metres per pixel", b.scale, scale, "%.5f")) {
     b.scale = scale;
     setBackground(host, b, "Scale background");
   }
-  float origin[2] = {float(b.origin[0]), float(b.origin[1])};
+  const float wasOrigin[2] = {float(b.origin[0]), float(b.origin[1])};
+  float origin[2];
   ImGui::SetNextItemWidth(140);
-  if (ImGui::InputFloat2("lower-left corner (m)", origin, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+  if (commitFloats("lower-left corner (m)", wasOrigin, origin, 2)) {
     b.origin = Vec2(origin[0], origin[1]);
     setBackground(host, b, "Move background");
   }
@@ -388,9 +388,7 @@ void ExtrusionPanes::fit(const ExtrusionSpec& spec, const PlanBackground* backgr
   for (const PlanStep& st : spec.steps) {
     const auto at = st.shape == StepShape::Forced ? anchorOnPlan(spec, st.anchor) : std::nullopt;
     if (!at) continue;
-    const auto& pts = spec.loops[st.anchor.loop].points;
-    Vec2 d = pts[(st.anchor.edge + 1) % pts.size()] - pts[st.anchor.edge];
-    d /= std::max(d.norm(), 1e-12);
+    const Vec2 d = *anchorDirection(spec, st.anchor);
     for (const Vec2& q : st.points) grow(*at + d * q[0] + Vec2(d[1], -d[0]) * q[1]);
   }
   // And the tracing image, once it is loaded.
@@ -736,8 +734,11 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       const float dx = b.x - a.x, dy = b.y - a.y, len = std::max(1e-3f, std::sqrt(dx * dx + dy * dy));
       dl->AddLine(mid, ImVec2(mid.x + dy / len * 6, mid.y - dx / len * 6), profileColor(l.profile[i]), 1.5f);
     }
+    if (li == 0) cornersOnScreen_.clear();
+    cornersOnScreen_.emplace_back();
     for (int i = 0; i < static_cast<int>(l.points.size()); ++i) {
       const ImVec2 p = toScreen(l.points[i]);
+      cornersOnScreen_.back().push_back({p.x, p.y});
       const bool isFaulty = faulty && faulty->first == li && faulty->second == i;
       const bool sel = selectedCorner_ && *selectedCorner_ == std::make_pair(li, i);
       const bool hot = hotCorner && *hotCorner == std::make_pair(li, i);
@@ -757,9 +758,7 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     if (!at) continue;
     const ImU32 col = IM_COL32(240, 80, 240, 255);
     if (st.shape == StepShape::Forced && st.points.size() >= 3) {
-      const auto& pts = spec.loops[st.anchor.loop].points;
-      Vec2 d = pts[(st.anchor.edge + 1) % pts.size()] - pts[st.anchor.edge];
-      d /= std::max(d.norm(), 1e-12);
+      const Vec2 d = *anchorDirection(spec, st.anchor);
       const Vec2 out(d[1], -d[0]);
       std::vector<ImVec2> poly;
       for (const Vec2& q : st.points) poly.push_back(toScreen(*at + d * q[0] + out * q[1]));
@@ -958,12 +957,12 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
         ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
       const int k = *dragFeature_;
       Anchor a = spec.anchors[k].anchor;
-      const auto& pts = spec.loops[a.loop].points;
-      const Vec2 p = pts[a.edge], d = pts[(a.edge + 1) % pts.size()] - p;
-      const double len2 = std::max(OpenMesh::dot(d, d), 1e-18);
-      double t = OpenMesh::dot(toWorld(mouse) - p, d) / len2;
-      if (!io.KeyAlt) t = std::round(t * std::sqrt(len2) / grid_) * grid_ / std::sqrt(len2);
-      const double along = a.absolute ? t * std::sqrt(len2) : std::clamp(t, 0.0, 1.0);
+      // The point of its wall under the pointer, in metres from the wall's start (on the grid
+      // unless Alt is held).
+      const WallRun run = wallRun(spec, a.loop, a.edge);
+      double metres = nearestOnWall(spec, run, toWorld(mouse)).along;
+      if (!io.KeyAlt) metres = std::round(metres / grid_) * grid_;
+      const double along = a.absolute ? metres : std::clamp(metres / std::max(run.length, 1e-9), 0.0, 1.0);
       if (std::abs(along - a.along) > 1e-12) {
         a.along = along;
         apply(
@@ -975,25 +974,27 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       dragFeature_.reset();
       host.endDrag();
     }
-    if (ImGui::IsWindowFocused() && !selectedCorner_ && !selectedFeature_ && selectedStep_ &&
+    if (keysHere() && !selectedCorner_ && !selectedFeature_ && selectedStep_ &&
         (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const int k = *selectedStep_;
       apply(
           host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
       selectedStep_.reset();
     }
-    if (ImGui::IsWindowFocused() && !selectedCorner_ && selectedFeature_ &&
+    if (keysHere() && !selectedCorner_ && selectedFeature_ &&
         (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const int k = *selectedFeature_;
       apply(
           host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete feature");
       selectedFeature_.reset();
     }
-    if (ImGui::IsWindowFocused() && selectedCorner_ &&
+    if (keysHere() && selectedCorner_ &&
         (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const auto [li, ci] = *selectedCorner_;
+      std::vector<std::string> notes;  // what went with the corner's wall (undo brings it back)
       apply(
-          host, [&](const ExtrusionSpec& s) { return ed::deleteCorner(s, li, ci); }, "Delete corner");
+          host, [&](const ExtrusionSpec& s) { return ed::deleteCorner(s, li, ci, &notes); }, "Delete corner");
+      for (const std::string& n : notes) host.log(n + " (Undo restores it)", false);
       selectedCorner_.reset();
     }
   }
@@ -1102,20 +1103,18 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
   if (selectedPoint_ && *selectedPoint_ >= static_cast<int>(p.points.size())) selectedPoint_.reset();
   if (selectedPoint_) {
     const int i = *selectedPoint_;
-    float wz[2] = {float(p.points[i][0]), float(p.points[i][1])};
+    const float was[2] = {float(p.points[i][0]), float(p.points[i][1])};
+    float wz[2];
     ImGui::SetNextItemWidth(160);
-    if (ImGui::InputFloat2("w, z (m)", wz, "%.2f", ImGuiInputTextFlags_EnterReturnsTrue))
+    if (commitFloats("w, z (m)", was, wz, 2))
       apply(
           host, [&](const ExtrusionSpec& s) { return ed::moveProfilePoint(s, profile_, i, Vec2(wz[0], wz[1])); },
           "Set profile point");
     if (i > 0) {
       ImGui::SameLine();
-      char tag[64];
-      std::snprintf(tag, sizeof tag, "%s",
-                    static_cast<std::size_t>(i - 1) < p.tags.size() ? p.tags[i - 1].c_str() : "");
+      const std::string was = static_cast<std::size_t>(i - 1) < p.tags.size() ? p.tags[i - 1] : "";
       ImGui::SetNextItemWidth(110);
-      if (ImGui::InputText("tag below", tag, sizeof tag, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        const std::string t = tag;
+      if (std::string t; commitText("tag below", was, t, 63)) {
         apply(
             host, [&](const ExtrusionSpec& s) { return ed::setSegmentTag(s, profile_, i - 1, t); }, "Set tag");
       }
@@ -1261,7 +1260,7 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     dragPoint_.reset();
     host.endDrag();
   }
-  if (ImGui::IsWindowFocused() && selectedPoint_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+  if (keysHere() && selectedPoint_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
     const int i = *selectedPoint_;
     apply(
         host, [&](const ExtrusionSpec& s) { return ed::deleteProfilePoint(s, profile_, i); }, "Delete profile point");

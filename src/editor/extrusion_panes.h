@@ -7,6 +7,7 @@
 #include "core/geometry.h"
 #include "editor/file_dialog.h"
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <set>
@@ -35,6 +36,9 @@ class ExtrusionPanes {
   // provenance is exact) selects its plan edge and profile segment. Returns a description, or
   // "" when the ray misses.
   std::string pick(const ExtrusionSpec& spec, const Vec3& origin, const Vec3& direction);
+  // Where the plan pane drew each corner last frame (window pixels, loop by loop): for tests
+  // that click them (the test log, editor/test_log.h).
+  const std::vector<std::vector<std::array<float, 2>>>& cornersOnScreen() const { return cornersOnScreen_; }
 
  private:
   void drawPlan(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h);
@@ -94,6 +98,7 @@ class ExtrusionPanes {
   float featureSize_[3] = {1.2f, 1.4f, 0.12f};
   std::optional<int> selectedFeature_, dragFeature_, dragFeatureHeight_;
   void featureFields(const PaneHost& host, const ExtrusionSpec& spec);
+  std::vector<std::vector<std::array<float, 2>>> cornersOnScreen_;
 };
 
 }  // namespace corbel::editor

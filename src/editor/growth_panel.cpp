@@ -1,5 +1,7 @@
 #include "editor/growth_panel.h"
 
+#include "editor/fields.h"
+
 #include "core/error.h"
 #include "editor/completion_view.h"
 #include "editor/view_map_context.h"
@@ -261,7 +263,7 @@ void GrowthPanel::drawGrow(const GrowthHost& host, const GrowthSpec& spec) {
   const DocObject* o = host.doc->find(host.object);
   int seed = static_cast<int>(spec.seed);
   ImGui::SetNextItemWidth(160);
-  if (ImGui::InputInt("Seed", &seed, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && seed >= 0) {
+  if (commitInt("Seed", static_cast<int>(spec.seed), seed) && seed >= 0) {
     Document d = *host.doc;
     std::get<GrowthSpec>(d.find(host.object)->spec).seed = static_cast<std::uint64_t>(seed);
     host.commit(std::move(d), "Seed " + o->name, "");
@@ -669,9 +671,7 @@ void GrowthPanel::drawSite(const GrowthHost& host, const GrowthSpec& spec) {
       }
       s.targetArea = byVolume ? 0 : target;
       s.targetVolume = byVolume ? target : 0;
-      char behaviour[64];
-      std::snprintf(behaviour, sizeof behaviour, "%s", s.behaviour.c_str());
-      if (ImGui::InputText("behaviour", behaviour, sizeof behaviour, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      if (std::string behaviour; commitText("behaviour", s.behaviour, behaviour, 63)) {
         s.behaviour = behaviour;
         changed = true;
       }

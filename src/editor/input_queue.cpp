@@ -4,17 +4,21 @@
 
 namespace corbel::editor {
 
+bool isModifierKey(int code) { return code >= kFirstModifierKey && code <= kLastModifierKey; }
+
 InputBatch InputQueue::takeFrame() {
   InputBatch batch;
   std::set<int> keys, buttons;  // changed in this batch
-  bool scrolled = false;
+  bool scrolled = false, keyPressed = false;
   using T = InputEvent::Type;
   while (!queue_.empty()) {
     const InputEvent& e = queue_.front();
     bool stop = false;
     switch (e.type) {
       case T::Key:
-        stop = keys.count(e.code) || !buttons.empty();
+        // A modifier after another key's change would be seen with that key: Ctrl let go
+        // after Z would make Ctrl+Z a plain Z.
+        stop = keys.count(e.code) || !buttons.empty() || (isModifierKey(e.code) && keyPressed);
         break;
       case T::Char:
         stop = !buttons.empty();
@@ -31,7 +35,7 @@ InputBatch InputQueue::takeFrame() {
         break;
     }
     if (stop && !batch.empty()) break;
-    if (e.type == T::Key) keys.insert(e.code);
+    if (e.type == T::Key) keys.insert(e.code), keyPressed = keyPressed || !isModifierKey(e.code);
     if (e.type == T::Button) buttons.insert(e.code);
     if (e.type == T::Scroll) scrolled = true;
     batch.events.push_back(e);

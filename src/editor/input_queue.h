@@ -28,16 +28,22 @@ struct InputBatch {
   bool empty() const { return events.empty(); }
 };
 
+// GLFW's codes of Shift, Control, Alt and Super, left and right.
+inline constexpr int kFirstModifierKey = 340, kLastModifierKey = 347;
+bool isModifierKey(int code);
+
 class InputQueue {
  public:
   void push(const InputEvent& e) { queue_.push_back(e); }
   bool empty() const { return queue_.empty(); }
   std::size_t size() const { return queue_.size(); }
   // The events this frame shows, taken from the front of the queue. It stops before an event
-  // that would hide one already taken: a second change of the same key or button; a key,
-  // character, move or scroll after a button change (a press is seen where and with what keys
-  // it happened); a move after a scroll (the wheel zooms at the pointer it was turned at); a
-  // button change after a scroll. The first event is always taken, so the queue drains.
+  // that would hide one already taken: a second change of the same key or button; a change of
+  // a modifier (Ctrl, Shift, Alt, Super) after another key's change (a key is seen with the
+  // modifiers it was pressed with); a key, character, move or scroll after a button change (a
+  // press is seen where and with what keys it happened); a move after a scroll (the wheel
+  // zooms at the pointer it was turned at); a button change after a scroll. The first event is
+  // always taken, so the queue drains.
   InputBatch takeFrame();
 
  private:

@@ -22,6 +22,7 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   j["objects"] = s.objects;
   j["dirty"] = s.dirty;
   j["undo"] = s.undo;
+  if (!s.planCorners.empty()) j["plan_corners"] = s.planCorners;
   return j;
 }
 

@@ -5,6 +5,7 @@
 #include "render/camera.h"
 
 #include <cstddef>
+#include <array>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct SettledFrame {
   std::size_t objects = 0;             // in the document
   bool dirty = false;                  // unsaved changes
   std::string undo;                    // the label of the step Undo would revert ("" = none)
+  // Where the plan pane shows the active extrusion's corners (window pixels, per loop), for a
+  // test to click; empty when no plan pane is open.
+  std::vector<std::vector<std::array<float, 2>>> planCorners;
 };
 
 // The line for `s` (one JSON object, no newline).

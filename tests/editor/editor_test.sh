@@ -42,6 +42,8 @@ rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
 run() { xvfb-run -a -s "-screen 0 1440x900x24" "$editor" --size 1440x900 "$@"; }
+# The autosaved document of the last run (one recovery slot per open document), or "".
+recovery() { ls "$work"/state/recovery/*.corbel 2>/dev/null | head -1; }
 
 echo "== screenshot of the example and of an empty project"
 run --recover no --screenshot "$work/model.png" --quit-after-frames 8 "$example"
@@ -51,13 +53,13 @@ run --recover no --screenshot "$work/empty.png" --quit-after-frames 8
 echo "== autosave of unsaved work, then recovery"
 objects_before=$("$cli" check "$example" | tail -1)
 run --recover no --actions object.add_box --autosave-seconds 0 --quit-after-frames 8 "$example"
-test -f "$work/state/recovery.corbel" || { echo "no recovery file was written"; exit 1; }
-objects_after=$("$cli" check "$work/state/recovery.corbel" | tail -1)
+test -f "$(recovery)" || { echo "no recovery file was written"; exit 1; }
+objects_after=$("$cli" check "$(recovery)" | tail -1)
 echo "example: $objects_before; recovery: $objects_after"
 before=$(sed -E 's/.*"objects":([0-9]+).*/\1/' <<<"$objects_before")
 after=$(sed -E 's/.*"objects":([0-9]+).*/\1/' <<<"$objects_after")
 [[ $after -eq $((before + 1)) ]] || { echo "recovery file should hold the added box"; exit 1; }
-cmp -s "$example" "$work/state/recovery.corbel" && { echo "recovery must not be the untouched example"; exit 1; }
+cmp -s "$example" "$(recovery)" && { echo "recovery must not be the untouched example"; exit 1; }
 run --recover yes --screenshot "$work/recovered.png" --quit-after-frames 8
 "$check" "$work/recovered.png" "$work/empty.png" 0.05
 if [[ -n $script ]]; then
@@ -67,8 +69,8 @@ if [[ -n $script ]]; then
   shots=("$work"/shots/*.png)
   [[ ${#shots[@]} -eq 4 ]] || { echo "expected a screenshot per stage (4), found ${#shots[@]}"; exit 1; }
   for s in "${shots[@]}"; do "$check" "$s" "$work/empty.png" 0.05; done
-  test -f "$work/state/recovery.corbel" || { echo "the scripted document was not autosaved"; exit 1; }
-  summary=$("$cli" check "$work/state/recovery.corbel" | tail -1)
+  test -f "$(recovery)" || { echo "the scripted document was not autosaved"; exit 1; }
+  summary=$("$cli" check "$(recovery)" | tail -1)
   echo "scripted house: $summary"
   [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the scripted house should be one closed shell"; exit 1; }
 fi
@@ -84,9 +86,9 @@ trace() {  # $1: the image (or nothing), $2: the shots folder
   run --recover no --script "$work/trace.jsonl" --script-shots "$2" --autosave-seconds 0 --quit-after-frames 30 > "$work/trace.log" 2>&1
 }
 trace "$image" "$work/traced"
-summary=$("$cli" check "$work/state/recovery.corbel" | tail -1)
+summary=$("$cli" check "$(recovery)" | tail -1)
 [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the traced plan with its forced step should be one closed shell: $summary"; exit 1; }
-grep -q '"plan_background"' "$work/state/recovery.corbel" || { echo "the background was not saved with the object"; exit 1; }
+grep -q '"plan_background"' "$(recovery)" || { echo "the background was not saved with the object"; exit 1; }
 trace "" "$work/untraced"
 "$check" "$work/traced/01-traced.png" "$work/untraced/01-traced.png" 0.02
 trace "$work/no-such-image.png" "$work/missing"
@@ -99,15 +101,15 @@ run --recover no --select "Arch on columns" --screenshot "$work/masonry.png" --q
 rm -rf "$work/state"
 run --recover no --select "Arch on columns" --actions statics.make_stand --autosave-seconds 0 \
   --screenshot "$work/masonry-standing.png" --quit-after-frames 8 "$masonry"
-test -f "$work/state/recovery.corbel" || { echo "Make It Stand changed nothing (no recovery file)"; exit 1; }
-stood=$("$cli" statics "$work/state/recovery.corbel" --json)
+test -f "$(recovery)" || { echo "Make It Stand changed nothing (no recovery file)"; exit 1; }
+stood=$("$cli" statics "$(recovery)" --json)
 echo "after Make It Stand: $stood"
 grep -q '"stands":true' <<<"$stood" || { echo "the arch should stand after Make It Stand"; exit 1; }
 echo "== the energy landscape over the arch's two free parameters (Fig. 8)"
 rm -rf "$work/state"
 run --recover no --select "Arch on columns" --actions statics.landscape_grid --autosave-seconds 0 \
   --screenshot "$work/masonry-grid.png" --quit-after-frames 8 "$masonry"
-test ! -e "$work/state/recovery.corbel" || { echo "choosing the landscape's parameters must not change the Document"; exit 1; }
+test ! -e "$(recovery)" || { echo "choosing the landscape's parameters must not change the Document"; exit 1; }
 # The grid of coloured cells replaces the one-parameter plot in the panel.
 "$check" "$work/masonry-grid.png" "$work/masonry.png" 0.005
 echo "== the collapse simulation: the arch without its keystone, a second on"
@@ -116,7 +118,7 @@ run --recover no --select "Arch on columns" --actions statics.sim_remove --autos
   --screenshot "$work/collapse-0s.png" --quit-after-frames 8 "$masonry"
 run --recover no --select "Arch on columns" --actions statics.sim_remove,statics.simulate --autosave-seconds 0 \
   --screenshot "$work/collapse-1s.png" --quit-after-frames 8 "$masonry"
-test ! -e "$work/state/recovery.corbel" || { echo "a simulation must not change the Document (it was autosaved)"; exit 1; }
+test ! -e "$(recovery)" || { echo "a simulation must not change the Document (it was autosaved)"; exit 1; }
 # Only the 3D view counts (the statics panel's numbers change too): the falling voussoirs and the
 # gap they leave differ from the arch as built.
 "$check" "$work/collapse-1s.png" "$work/collapse-0s.png" 0.01 460
@@ -133,17 +135,17 @@ sed 's/"steps": -1/"steps": 10/' "$alpha" > "$work/alpha10.corbel"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.step,growth.step --autosave-seconds 0 \
   --screenshot "$work/growth.png" --quit-after-frames 8 "$work/alpha10.corbel"
-test -f "$work/state/recovery.corbel" || { echo "Step changed nothing (no recovery file)"; exit 1; }
-grep -q '"steps": 12' "$work/state/recovery.corbel" || { echo "two steps should make 12"; exit 1; }
-summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+test -f "$(recovery)" || { echo "Step changed nothing (no recovery file)"; exit 1; }
+grep -q '"steps": 12' "$(recovery)" || { echo "two steps should make 12"; exit 1; }
+summary=$("$cli" check "$(recovery)" 2>/dev/null | tail -1)
 [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the grown site should be closed shells: $summary"; exit 1; }
 echo "== form completion: seeds from the model, generate, fit, extrude, undo, redo"
 completing=(completion.seeds,completion.generate,completion.fit,completion.extrude)
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions "${completing[0]}" --autosave-seconds 0 \
   --screenshot "$work/completion.png" --quit-after-frames 12 "$alpha"
-test -f "$work/state/recovery.corbel" || { echo "Extrude to units changed nothing (no recovery file)"; exit 1; }
-cp "$work/state/recovery.corbel" "$work/completed.corbel"
+test -f "$(recovery)" || { echo "Extrude to units changed nothing (no recovery file)"; exit 1; }
+cp "$(recovery)" "$work/completed.corbel"
 summary=$("$cli" check "$work/completed.corbel" 2>/dev/null | tail -1)
 echo "completed: $summary"
 units=$(sed -E 's/.*"objects":([0-9]+).*/\1/' <<<"$summary")
@@ -153,10 +155,10 @@ run --recover no --select "Alpha" --screenshot "$work/site.png" --quit-after-fra
 "$check" "$work/completion.png" "$work/site.png" 0.01
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions "${completing[0]},edit.undo" --autosave-seconds 0 --quit-after-frames 12 "$alpha"
-test -f "$work/state/recovery.corbel" && { echo "undo should leave the example untouched (a recovery file was written)"; exit 1; }
+test -f "$(recovery)" && { echo "undo should leave the example untouched (a recovery file was written)"; exit 1; }
 run --recover no --select "Alpha" --actions "${completing[0]},edit.undo,edit.redo_y" --autosave-seconds 0 \
   --quit-after-frames 14 "$alpha"
-cmp -s "$work/state/recovery.corbel" "$work/completed.corbel" || { echo "redo should bring back the same units"; exit 1; }
+cmp -s "$(recovery)" "$work/completed.corbel" || { echo "redo should bring back the same units"; exit 1; }
 echo "== growth view maps: GL (the default) against exact, a setting that changes nothing in the document"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.statistics,growth.view_maps --autosave-seconds 0 \
@@ -165,52 +167,52 @@ run --recover no --select "Alpha" --actions growth.gl_view_maps,growth.statistic
   --screenshot "$work/maps-exact.png" --quit-after-frames 30 "$alpha"
 run --recover no --select "Alpha" --actions growth.gl_pixel_next,growth.statistics,growth.view_maps --autosave-seconds 0 \
   --screenshot "$work/maps-gl-coarse.png" --quit-after-frames 30 "$alpha"
-test -f "$work/state/recovery.corbel" && { echo "switching the view maps should leave the document untouched"; exit 1; }
+test -f "$(recovery)" && { echo "switching the view maps should leave the document untouched"; exit 1; }
 "$check" "$work/maps-gl.png" "$work/maps-exact.png" 0.01
 "$check" "$work/maps-gl.png" "$work/maps-gl-coarse.png" 0.01
 echo "== growth site editor: add a core, slice, statistics, view maps, undo"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.add_core,growth.slice_down,growth.slice_down,growth.statistics,growth.view_maps \
   --autosave-seconds 0 --screenshot "$work/growth-editor.png" --quit-after-frames 12 "$alpha"
-test -f "$work/state/recovery.corbel" || { echo "Add Core changed nothing (no recovery file)"; exit 1; }
-tr -d ' \n' < "$work/state/recovery.corbel" | grep -q '{"at":\[0.0,0.0\],"name":"core5","size":\[3.0,3.0\]}' ||
+test -f "$(recovery)" || { echo "Add Core changed nothing (no recovery file)"; exit 1; }
+tr -d ' \n' < "$(recovery)" | grep -q '{"at":\[0.0,0.0\],"name":"core5","size":\[3.0,3.0\]}' ||
   { echo "the added core should be saved at (0, 0), 3 x 3 m"; exit 1; }
-summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+summary=$("$cli" check "$(recovery)" 2>/dev/null | tail -1)
 [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the site with a new core should build as closed shells: $summary"; exit 1; }
 "$check" "$work/growth-editor.png" "$work/site.png" 0.01
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.add_core,edit.undo --autosave-seconds 0 --quit-after-frames 8 "$alpha"
-test -f "$work/state/recovery.corbel" && { echo "undoing Add Core should leave the example untouched"; exit 1; }
+test -f "$(recovery)" && { echo "undoing Add Core should leave the example untouched"; exit 1; }
 echo "== growth site frame: a storey more, a wider envelope, undo"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.site,growth.add_storey,growth.widen_site --autosave-seconds 0 \
   --screenshot "$work/growth-frame.png" --quit-after-frames 12 "$alpha"
-test -f "$work/state/recovery.corbel" || { echo "the frame edits changed nothing (no recovery file)"; exit 1; }
-frame=$(tr -d ' \n' < "$work/state/recovery.corbel")
+test -f "$(recovery)" || { echo "the frame edits changed nothing (no recovery file)"; exit 1; }
+frame=$(tr -d ' \n' < "$(recovery)")
 grep -q '"envelope":{"origin":\[0.0,0.0\],"size":\[95.0,50.0\]}' <<<"$frame" ||
   { echo "the widened envelope should be saved as a 95 x 50 m box"; exit 1; }
 grep -Eq '"storeys":6[,}]' <<<"$frame" || { echo "the site should be saved with 6 storeys"; exit 1; }
-summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+summary=$("$cli" check "$(recovery)" 2>/dev/null | tail -1)
 [[ $summary == '{"objects":1,"failed":0}' ]] || { echo "the wider, taller site should build as closed shells: $summary"; exit 1; }
 "$check" "$work/growth-frame.png" "$work/site.png" 0.01
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions growth.add_storey,growth.widen_site,edit.undo,edit.undo --autosave-seconds 0 \
   --quit-after-frames 10 "$alpha"
-test -f "$work/state/recovery.corbel" && { echo "undoing the frame edits should leave the example untouched"; exit 1; }
+test -f "$(recovery)" && { echo "undoing the frame edits should leave the example untouched"; exit 1; }
 echo "== shadows from a lowered sun (a view setting: nothing to recover)"
 rm -rf "$work/state"
 run --recover no --select "Alpha" --actions view.shadows,view.sun_lower,view.sun_lower --autosave-seconds 0 \
   --screenshot "$work/growth-shadows.png" --quit-after-frames 8 "$alpha"
-test -f "$work/state/recovery.corbel" && { echo "shadows should not change the document"; exit 1; }
+test -f "$(recovery)" && { echo "shadows should not change the document"; exit 1; }
 "$check" "$work/growth-shadows.png" "$work/site.png" 0.05
 echo "== a town: pick a building, override its type, undo"
 town=$(dirname "$example")/town-oldtown.corbel
 rm -rf "$work/state"
 run --recover no --select "Town" --actions town.next,town.next_type --autosave-seconds 0 \
   --screenshot "$work/town-override.png" --quit-after-frames 10 "$town"
-test -f "$work/state/recovery.corbel" || { echo "the override changed nothing (no recovery file)"; exit 1; }
-grep -q '"overrides": {' "$work/state/recovery.corbel" || { echo "no override was saved"; exit 1; }
-summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+test -f "$(recovery)" || { echo "the override changed nothing (no recovery file)"; exit 1; }
+grep -q '"overrides": {' "$(recovery)" || { echo "no override was saved"; exit 1; }
+summary=$("$cli" check "$(recovery)" 2>/dev/null | tail -1)
 echo "overridden: $summary"
 [[ $summary == *'"failed":0}' ]] || { echo "the overridden town should build: $summary"; exit 1; }
 run --recover no --select "Town" --actions town.next --autosave-seconds 0 --screenshot "$work/town.png" \
@@ -220,24 +222,24 @@ run --recover no --select "Town" --actions town.next --autosave-seconds 0 --scre
 rm -rf "$work/state"
 run --recover no --select "Town" --actions town.next,town.next_type,edit.undo --autosave-seconds 0 \
   --quit-after-frames 12 "$town"
-test -f "$work/state/recovery.corbel" && { echo "undo should leave the town example untouched (a recovery file was written)"; exit 1; }
+test -f "$(recovery)" && { echo "undo should leave the town example untouched (a recovery file was written)"; exit 1; }
 echo "== a town: pick a building's edge in the plan view and override its profile"
 rm -rf "$work/state"
 run --recover no --select "Town" --actions town.next,town.next_edge,town.next_edge_profile --autosave-seconds 0 \
   --screenshot "$work/town-edge.png" --quit-after-frames 10 "$town"
-test -f "$work/state/recovery.corbel" || { echo "the edge override changed nothing (no recovery file)"; exit 1; }
-grep -q '"edges": {' "$work/state/recovery.corbel" || { echo "no edge override was saved"; exit 1; }
-grep -q '"0:0": "' "$work/state/recovery.corbel" || { echo "the edge override should name edge 0:0"; exit 1; }
-summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+test -f "$(recovery)" || { echo "the edge override changed nothing (no recovery file)"; exit 1; }
+grep -q '"edges": {' "$(recovery)" || { echo "no edge override was saved"; exit 1; }
+grep -q '"0:0": "' "$(recovery)" || { echo "the edge override should name edge 0:0"; exit 1; }
+summary=$("$cli" check "$(recovery)" 2>/dev/null | tail -1)
 echo "edge overridden: $summary"
 [[ $summary == *'"failed":0}' ]] || { echo "the town with an edge override should build: $summary"; exit 1; }
 echo "== a town: add a street beside it and bend it; its plots are built as houses"
 rm -rf "$work/state"
 run --recover no --select "Town" --actions town.next,town.add_street,town.bend_street --autosave-seconds 0 \
   --screenshot "$work/town-street.png" --quit-after-frames 12 "$town"
-test -f "$work/state/recovery.corbel" || { echo "adding a street changed nothing (no recovery file)"; exit 1; }
-grep -q '"streets": \[' "$work/state/recovery.corbel" || { echo "no street was saved"; exit 1; }
-summary=$("$cli" check "$work/state/recovery.corbel" 2>/dev/null | tail -1)
+test -f "$(recovery)" || { echo "adding a street changed nothing (no recovery file)"; exit 1; }
+grep -q '"streets": \[' "$(recovery)" || { echo "no street was saved"; exit 1; }
+summary=$("$cli" check "$(recovery)" 2>/dev/null | tail -1)
 echo "with a street: $summary"
 [[ $summary == *'"failed":0}' ]] || { echo "the town with a street should build: $summary"; exit 1; }
 # The street's houses stand south of the town, in the 3D view.
@@ -245,5 +247,5 @@ echo "with a street: $summary"
 rm -rf "$work/state"
 run --recover no --select "Town" --actions town.add_street,town.bend_street,edit.undo,edit.undo --autosave-seconds 0 \
   --quit-after-frames 12 "$town"
-test -f "$work/state/recovery.corbel" && { echo "undoing the street should leave the town untouched"; exit 1; }
+test -f "$(recovery)" && { echo "undoing the street should leave the town untouched"; exit 1; }
 echo "editor test passed"
