@@ -252,7 +252,7 @@ void declareKifs(CLI::App& app, Requests& requests) {
       "line, world coordinates, Z up) of the file POINTS.");
   KifsRequest& r = requests.add<KifsRequest>(c);
   CLI::Option* source = positional(*c, "SOURCE", r.source,
-                                   "A preset's name or a project (.corbel).");
+                                   "A preset's name, a preset file (NAME.json) or a project (.corbel).");
   text(*c, "--preset", r.preset, "NAME", "A preset's name (as SOURCE).")->excludes(source);
   text(*c, "--out", r.out, "PNG", "Render the building to this image.");
   addSize(*c, "--size", r.size, 1, 8192, "The image's size.");

@@ -95,7 +95,7 @@ struct SimulateRequest {
 };
 
 struct KifsRequest {
-  std::string source;  // a preset's name or a project (.corbel)
+  std::string source;  // a preset's name, a preset file (.json) or a project (.corbel)
   std::string preset, out, mode = "shaded", camera, eval, mesh;
   Size size{640, 640};
   std::optional<int> frames;

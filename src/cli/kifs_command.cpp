@@ -1,4 +1,4 @@
-// corbel-cli kifs: a KIFS building (a preset or a project's) rendered headless,
+// corbel-cli kifs: a KIFS building (a preset, a preset file or a project's) rendered headless,
 // meshed into a file, or its CPU distance evaluated at given points (docs/kifs.md).
 #include "cli/guarded.h"
 #include "cli/number_list.h"
@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -36,7 +37,7 @@ bool endsWith(const std::string& text, const std::string& end) {
   return text.size() > end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// A preset's name or a project (its first KIFS object).
+// A preset's name, a preset file or a project (its first KIFS object).
 kifs::KifsParams paramsFrom(const std::string& source) {
   if (endsWith(source, ".corbel")) {
     const LoadedProject project = loadProject(source);
@@ -46,6 +47,11 @@ kifs::KifsParams paramsFrom(const std::string& source) {
     if (!spec) throw Error(source + ": the project has no KIFS object");
     return kifs::paramsOf(*spec);
   }
+  // A preset's name has no '/' and no extension (kifs/params.h); anything else is a file.
+  std::error_code ec;
+  if (endsWith(source, ".json") || source.find('/') != std::string::npos ||
+      std::filesystem::is_regular_file(source, ec))
+    return kifs::loadPreset(source);
   return kifs::preset(source);
 }
 
