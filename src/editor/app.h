@@ -15,6 +15,7 @@
 #include "editor/file_dialog.h"
 #include "editor/growth_panel.h"
 #include "editor/kifs_panel.h"
+#include "editor/options.h"
 #include "editor/statics_panel.h"
 #include "editor/town_panel.h"
 #include "editor/view_map_context.h"
@@ -37,19 +38,6 @@
 struct GLFWwindow;
 
 namespace corbel::editor {
-
-struct EditorOptions {
-  std::string project;               // opened at start ("" = a new document)
-  std::string screenshot;            // write the window to this PNG, then quit
-  int quitAfterFrames = -1;          // quit after this many frames (> 0)
-  std::vector<std::string> actions;  // action ids run one per frame at start (scripted use)
-  std::string script;                // an edit script (JSON lines, extrude/edit.h) run one line per frame
-  std::string scriptShots;           // a folder: a screenshot after each stage of the script
-  double autosaveSeconds = 60.0;
-  enum class Recover { Ask, Yes, No } recover = Recover::Ask;
-  std::string stateDir;  // recovery and recent files ("" = defaultStateDir())
-  std::string select;    // select the object of this name at start
-};
 
 class App {
  public:
