@@ -1,9 +1,8 @@
-// corbel-cli complete (--seeds N [--entrance X,Y ...] | --from PROJECT [--object NAME] [--storey K])
-//                     --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S] [--out FILE]
-//                     [--render PNG]
-#include "cli/complete.h"
-
+// corbel-cli complete: the form completion engine (Ch. 7, docs/growth.md) from seed units or a
+// grown model's gap; one JSON line.
 #include "cli/grow.h"
+#include "cli/guarded.h"
+#include "cli/run.h"
 #include "cli/scene_png.h"
 
 #include "core/error.h"
@@ -31,28 +30,13 @@ namespace corbel::cli {
 
 namespace {
 
-constexpr const char* kCompleteUsage =
-    "usage: corbel-cli complete (--seeds N [--entrance X,Y ...] | --from PROJECT [--object NAME] [--storey K])\n"
-    "                           --complexity LO:HI [--count K] [--region X0,Y0,X1,Y1] [--seed S]\n"
-    "                           [--out FILE.{obj,ply,off,glb}] [--render PNG]\n";
-
-struct BadArgument {
-  std::string message;
-};
+// A usage fault of complete, named as the other commands name theirs.
+UsageError bad(const std::string& message) { return UsageError("complete: " + message); }
 
 double number(const std::string& flag, const std::string& s) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || !std::isfinite(v)) throw BadArgument{flag + ": expected a number, not '" + s + "'"};
-  return v;
-}
-
-long long whole(const std::string& flag, const std::string& s, long long lo, long long hi) {
-  char* end = nullptr;
-  const long long v = std::strtoll(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || v < lo || v > hi)
-    throw BadArgument{flag + ": expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                      "], not '" + s + "'"};
+  if (s.empty() || *end != '\0' || !std::isfinite(v)) throw bad(flag + ": expected a number, not '" + s + "'");
   return v;
 }
 
@@ -73,89 +57,53 @@ const char* const kPalette[] = {"brick", "glass",     "grass", "timber",  "slate
 
 }  // namespace
 
-int complete(int argc, char** argv) {
+int run(const CompleteRequest& r) {
   growth::FormRequest rq;
-  rq.count = 4;
-  bool haveSeeds = false, haveRange = false;
+  rq.count = r.count;
+  rq.seed = std::uint64_t(r.seed);
   growth::PlanRect region{0, 0, 24, 16};
-  bool haveRegion = false;
-  std::string out, png, from, objectName;
-  int storey = 0;
-  bool haveStorey = false;
+  const bool haveRegion = !r.region.empty();
+  const std::string& out = r.out;
+  const std::string& png = r.render;
+  const std::string& from = r.from;
+  const std::string& objectName = r.object;
+  const int storey = r.storey.value_or(0);
   std::vector<Vec2> doors;  // --entrance points, or the grown model's entrances
-  try {
-    for (int i = 2; i < argc; ++i) {
-      const std::string a = argv[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw BadArgument{a + " needs a value"};
-        return argv[++i];
-      };
-      if (a == "--seeds") {
-        rq.seeds = int(whole(a, value(), 1, 12));
-        haveSeeds = true;
-      } else if (a == "--count") {
-        rq.count = int(whole(a, value(), 1, 64));
-      } else if (a == "--seed") {
-        rq.seed = std::uint64_t(whole(a, value(), 0, 1ll << 62));
-      } else if (a == "--complexity") {
-        const std::string v = value();
-        const auto parts = splitOn(v, ':');
-        if (parts.size() != 2) throw BadArgument{"--complexity: expected LO:HI, not '" + v + "'"};
-        const double lo = number("--complexity", parts[0]), hi = number("--complexity", parts[1]);
-        if (lo < 0 || hi < lo) throw BadArgument{"--complexity: expected 0 <= LO <= HI, not '" + v + "'"};
-        if (hi >= 0.5)
-          throw BadArgument{"--complexity: HI must stay below 0.5 (Type I moves approach 1/2, Sec. 7.2.1)"};
-        rq.lo = fractionOf(lo);
-        rq.hi = fractionOf(hi);
-        haveRange = true;
-      } else if (a == "--region") {
-        const std::string v = value();
-        const auto parts = splitOn(v, ',');
-        if (parts.size() != 4) throw BadArgument{"--region: expected X0,Y0,X1,Y1, not '" + v + "'"};
-        region = {number("--region", parts[0]), number("--region", parts[1]), number("--region", parts[2]),
-                  number("--region", parts[3])};
-        if (region.x1 - region.x0 < 3 || region.y1 - region.y0 < 3)
-          throw BadArgument{"--region: expected X1 >= X0 + 3 and Y1 >= Y0 + 3 (meters), not '" + v + "'"};
-        haveRegion = true;
-      } else if (a == "--from") {
-        from = value();
-      } else if (a == "--object") {
-        objectName = value();
-      } else if (a == "--storey") {
-        storey = int(whole(a, value(), 0, 1000));
-        haveStorey = true;
-      } else if (a == "--entrance") {
-        const std::string v = value();
-        const auto parts = splitOn(v, ',');
-        if (parts.size() != 2) throw BadArgument{"--entrance: expected X,Y, not '" + v + "'"};
-        doors.push_back(Vec2(number("--entrance", parts[0]), number("--entrance", parts[1])));
-      } else if (a == "--out") {
-        out = value();
-        exportFormatFor(out);
-      } else if (a == "--render") {
-        png = value();
-      } else {
-        throw BadArgument{"unexpected argument " + a};
-      }
+  if (r.seeds) rq.seeds = *r.seeds;
+  {
+    const auto parts = splitOn(r.complexity, ':');
+    if (parts.size() != 2) throw bad("--complexity: expected LO:HI, not '" + r.complexity + "'");
+    const double lo = number("--complexity", parts[0]), hi = number("--complexity", parts[1]);
+    if (lo < 0 || hi < lo) throw bad("--complexity: expected 0 <= LO <= HI, not '" + r.complexity + "'");
+    if (hi >= 0.5) throw bad("--complexity: HI must stay below 0.5 (Type I moves approach 1/2, Sec. 7.2.1)");
+    rq.lo = fractionOf(lo);
+    rq.hi = fractionOf(hi);
+  }
+  if (haveRegion) {
+    const auto parts = splitOn(r.region, ',');
+    if (parts.size() != 4) throw bad("--region: expected X0,Y0,X1,Y1, not '" + r.region + "'");
+    region = {number("--region", parts[0]), number("--region", parts[1]), number("--region", parts[2]),
+              number("--region", parts[3])};
+    if (region.x1 - region.x0 < 3 || region.y1 - region.y0 < 3)
+      throw bad("--region: expected X1 >= X0 + 3 and Y1 >= Y0 + 3 (meters), not '" + r.region + "'");
+  }
+  for (const std::string& v : r.entrances) {
+    const auto parts = splitOn(v, ',');
+    if (parts.size() != 2) throw bad("--entrance: expected X,Y, not '" + v + "'");
+    doors.push_back(Vec2(number("--entrance", parts[0]), number("--entrance", parts[1])));
+  }
+  if (!out.empty()) {
+    try {
+      exportFormatFor(out);
+    } catch (const Error& e) {
+      throw bad(e.what());
     }
-    if (!from.empty()) {
-      if (haveSeeds) throw BadArgument{"--seeds: with --from the seeds are the grown model's entrances"};
-      if (!doors.empty()) throw BadArgument{"--entrance: with --from the entrances are the grown model's"};
-    } else {
-      if (!objectName.empty()) throw BadArgument{"--object names a growth object of a --from PROJECT"};
-      if (haveStorey) throw BadArgument{"--storey is a storey of a --from PROJECT"};
-      if (!haveSeeds) throw BadArgument{"--seeds N (or --from PROJECT) is required"};
-      if (doors.size() > std::size_t(rq.seeds))
-        throw BadArgument{"--entrance: " + std::to_string(doors.size()) + " entrances for " + std::to_string(rq.seeds) +
-                          " seeds (each entrance goes to a different unit)"};
-    }
-    if (!haveRange) throw BadArgument{"--complexity LO:HI is required"};
-  } catch (const BadArgument& e) {
-    std::cerr << "corbel-cli: complete: " << e.message << "\n" << kCompleteUsage;
-    return 2;
-  } catch (const Error& e) {
-    std::cerr << "corbel-cli: complete: " << e.what() << "\n";
-    return 2;
+  }
+  if (from.empty()) {
+    if (!r.seeds) throw bad("--seeds N (or --from PROJECT) is required");
+    if (doors.size() > std::size_t(rq.seeds))
+      throw bad("--entrance: " + std::to_string(doors.size()) + " entrances for " + std::to_string(rq.seeds) +
+                " seeds (each entrance goes to a different unit)");
   }
 
   // From a grown model: its growth object grown as the editor grows it, the region (default: the

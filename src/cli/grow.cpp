@@ -1,6 +1,8 @@
-// corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE] [--render PNG]
+// corbel-cli grow: the growth kernel on a site file (docs/growth.md); one JSON line.
 #include "cli/grow.h"
 
+#include "cli/guarded.h"
+#include "cli/run.h"
 #include "cli/scene_png.h"
 
 #include "core/error.h"
@@ -22,16 +24,6 @@
 namespace corbel::cli {
 
 namespace {
-
-constexpr const char* kGrowUsage =
-    "usage: corbel-cli grow SITE.json [--seed N] [--steps K] [--stats] [--out FILE.{obj,ply,off,glb}] "
-    "[--render PNG] [--view-maps exact|raster|gl] [--pixel M]\n";
-
-bool wholeNumber(const std::string& s, long long lo, long long hi, long long& out) {
-  char* end = nullptr;
-  out = std::strtoll(s.c_str(), &end, 10);
-  return !s.empty() && *end == '\0' && out >= lo && out <= hi;
-}
 
 nlohmann::ordered_json statisticsJson(const growth::Statistics& st) {
   nlohmann::ordered_json j;
@@ -77,64 +69,16 @@ Scene modelScene(const growth::Site& site, const std::vector<growth::Unit>& unit
   return scene;
 }
 
-int grow(int argc, char** argv) {
-  std::string sitePath, out, png, maps = "exact";
-  double pixel = 0.1;
-  long long seed = 1, steps = 100000;
-  bool stats = false;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::cerr << "corbel-cli: grow: " << a << " needs a value\n" << kGrowUsage;
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--seed" || a == "--steps") {
-      const std::string v = value();
-      long long& target = a == "--seed" ? seed : steps;
-      if (!wholeNumber(v, 0, a == "--seed" ? (1ll << 62) : 100000000ll, target)) {
-        std::cerr << "corbel-cli: grow: " << a << ": expected a whole number, not '" << v << "'\n";
-        return 2;
-      }
-    } else if (a == "--view-maps") {
-      maps = value();
-      if (maps != "exact" && maps != "raster" && maps != "gl") {
-        std::cerr << "corbel-cli: grow: --view-maps: expected exact, raster or gl\n";
-        return 2;
-      }
-    } else if (a == "--pixel") {
-      const std::string v = value();
-      char* end = nullptr;
-      pixel = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end != '\0' || !(pixel >= 0.01 && pixel <= 10)) {
-        std::cerr << "corbel-cli: grow: --pixel: expected meters in [0.01, 10], not '" << v << "'\n";
-        return 2;
-      }
-    } else if (a == "--stats") {
-      stats = true;
-    } else if (a == "--out") {
-      out = value();
-    } else if (a == "--render") {
-      png = value();
-    } else if (a.rfind("--", 0) == 0 || !sitePath.empty()) {
-      std::cerr << "corbel-cli: grow: unexpected argument " << a << "\n" << kGrowUsage;
-      return 2;
-    } else {
-      sitePath = a;
-    }
-  }
-  if (sitePath.empty()) {
-    std::cerr << "corbel-cli: grow: expected one SITE.json\n" << kGrowUsage;
-    return 2;
-  }
+int run(const GrowRequest& r) {
+  const std::string& sitePath = r.site;
+  const std::string& out = r.out;
+  const std::string& png = r.render;
+  const std::string& maps = r.viewMaps;
   if (!out.empty()) {
     try {
       exportFormatFor(out);
     } catch (const Error& e) {
-      std::cerr << "corbel-cli: grow: " << e.what() << "\n";
-      return 2;
+      throw UsageError("grow: " + std::string(e.what()));
     }
   }
 
@@ -142,21 +86,21 @@ int grow(int argc, char** argv) {
   const growth::Site site = growth::loadSite(sitePath, &warnings);
   for (const auto& w : warnings) std::cerr << "corbel-cli: warning: " << sitePath << ": " << w << "\n";
   growth::GrowthOptions options;
-  options.seed = std::uint64_t(seed);
+  options.seed = std::uint64_t(r.seed);
   // View maps: exact (default), the CPU rasterizer, or GL through OSMesa, at `pixel` meters.
   std::unique_ptr<render::HeadlessContext> context;
   std::unique_ptr<growth::ViewMapper> mapper;
   if (maps == "gl") {
     context = std::make_unique<render::HeadlessContext>();
-    mapper = std::make_unique<render::GlViewMapper>(pixel);
+    mapper = std::make_unique<render::GlViewMapper>(r.pixel);
   } else if (maps == "raster") {
-    mapper = std::make_unique<growth::RasterViewMapper>(pixel);
+    mapper = std::make_unique<growth::RasterViewMapper>(r.pixel);
   } else {
     mapper = std::make_unique<growth::ExactViewMapper>();
   }
   const auto t0 = std::chrono::steady_clock::now();
   growth::GrowthEngine engine(site, options, mapper.get());
-  const int ran = engine.run(int(steps));
+  const int ran = engine.run(int(r.steps));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const std::vector<growth::Unit> units = engine.units();
   int reached = 0, stuck = 0;
@@ -168,7 +112,7 @@ int grow(int argc, char** argv) {
 
   nlohmann::ordered_json j;
   j["site"] = sitePath;
-  j["seed"] = seed;
+  j["seed"] = r.seed;
   j["steps"] = ran;
   j["moves"] = engine.commits();
   j["finished"] = engine.done();
@@ -177,7 +121,7 @@ int grow(int argc, char** argv) {
   j["constraints_hold"] = violations.empty();
   j["view_maps"] = maps;
   j["grow_ms"] = ms;
-  if (stats) j["statistics"] = statisticsJson(growth::computeStatistics(site, units, engine.views()));
+  if (r.stats) j["statistics"] = statisticsJson(growth::computeStatistics(site, units, engine.views()));
 
   if (!out.empty() || !png.empty()) {
     const Scene scene = modelScene(site, units);

@@ -1,11 +1,13 @@
-#include "cli/kifs_command.h"
-
+// corbel-cli kifs: a KIFS building (a preset, a preset file or a project's) rendered headless,
+// meshed into a file, or its CPU distance evaluated at given points (docs/kifs.md).
 #include "cli/guarded.h"
 #include "cli/number_list.h"
-
+#include "cli/run.h"
 #include "core/error.h"
 #include "core/export.h"
+#include "core/project_io.h"
 #include "core/scene.h"
+#include "kifs/kernel.h"
 #include "kifs/mesher.h"
 #include "kifs/trace.h"
 #include "render/headless_context.h"
@@ -14,47 +16,43 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <sstream>
-#include "core/project_io.h"
-#include "kifs/kernel.h"
 #include <string>
 #include <vector>
 
 namespace corbel::cli {
 
-const char* const kKifsUsage =
-    R"(  corbel-cli kifs [PRESET|PROJECT.corbel] --out PNG [--preset NAME] [--size WxH] [--mode shaded|preview|facades|floors|cost]
-                    [--camera AZ,EL] [--frames N]
-                    A KIFS building (McGraw) raymarched on the GPU path (OSMesa). Presets: the files
-                    assets/kifs/NAME.json (box, menger, t, h, polar, curved, sparse, crumbling,
-                    turned, star; default box);
-                    a project gives its first KIFS object (every form below takes it too).
-                    --frames N renders N times after one untimed frame (the first draw
-                    compiles the shader) and prints the mean milliseconds per frame.
-                    --mode preview shades without soft shadow and occlusion, as the
-                    editor's coarse frames do; --mode cost writes a heat map of distance evaluations per pixel and prints
-                    their means (JSON).
-  corbel-cli kifs --mesh FILE.{obj,ply,off,glb} [--preset NAME] [--resolution N]
-                    Meshes the building (marching tetrahedra, N cells along the longest side,
-                    default 128) and exports it; prints one JSON line (faces, closed, seconds).
-  corbel-cli kifs --eval POINTS [--preset NAME]
-                    Prints the CPU distance bound and estimate ("bound surface") of each point
-                    "x y z" (one a line, world coordinates, Z up) of the file POINTS.
-)";
-
 namespace {
-
-struct Usage : Error {
-  using Error::Error;
-};
 
 std::vector<double> numbers(const std::string& text, char sep, const std::string& what) {
   const auto v = numberList(text, sep);
-  if (!v) throw Usage(what + ": '" + text + "' is not a list of numbers");
+  if (!v) throw UsageError(what + ": '" + text + "' is not a list of numbers");
   return *v;
+}
+
+bool endsWith(const std::string& text, const std::string& end) {
+  return text.size() > end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+// A preset's name, a preset file or a project (its first KIFS object).
+kifs::KifsParams paramsFrom(const std::string& source) {
+  if (endsWith(source, ".corbel")) {
+    const LoadedProject project = loadProject(source);
+    const KifsSpec* spec = nullptr;
+    for (const DocObject& o : project.document.objects)
+      if ((spec = std::get_if<KifsSpec>(&o.spec))) break;
+    if (!spec) throw Error(source + ": the project has no KIFS object");
+    return kifs::paramsOf(*spec);
+  }
+  // A preset's name has no '/' and no extension (kifs/params.h); anything else is a file.
+  std::error_code ec;
+  if (endsWith(source, ".json") || source.find('/') != std::string::npos ||
+      std::filesystem::is_regular_file(source, ec))
+    return kifs::loadPreset(source);
+  return kifs::preset(source);
 }
 
 int evalPoints(const kifs::Building& b, const std::string& path) {
@@ -74,90 +72,42 @@ int evalPoints(const kifs::Building& b, const std::string& path) {
   return 0;
 }
 
-int meshToFile(const kifs::Building& b, std::map<std::string, std::string>& opt) {
-  int resolution = 128;
-  if (opt.count("--resolution")) {
-    const auto v = numbers(opt["--resolution"], ',', "--resolution");
-    if (v.size() != 1 || v[0] < 1 || v[0] > kifs::kMaxMeshResolution || v[0] != int(v[0]))
-      throw Usage("--resolution: expected a whole number in 1.." + std::to_string(kifs::kMaxMeshResolution));
-    resolution = int(v[0]);
-  }
-  exportFormatFor(opt["--mesh"]);  // refuses an unknown extension before the work
+int meshToFile(const kifs::Building& b, const std::string& path, int resolution) {
+  exportFormatFor(path);  // refuses an unknown extension before the work
   const auto start = std::chrono::steady_clock::now();
   Scene scene;
   scene.replaceObject(1, Kind::Ornament, "kifs", kifs::meshBuilding(b, resolution));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  exportScene(scene, opt["--mesh"]);
+  exportScene(scene, path);
   const ValidityReport v = scene.validate(1);
   std::printf("{\"faces\": %zu, \"vertices\": %zu, \"closed_manifold\": %s, \"resolution\": %d, \"seconds\": %.2f}\n",
               v.faces, v.vertices, v.closedManifold() ? "true" : "false", resolution, seconds);
   return v.closedManifold() ? 0 : 1;
 }
 
-int run(int argc, char** argv) {
-  std::map<std::string, std::string> opt;
-  const std::map<std::string, bool> known = {{"--out", true},    {"--preset", true}, {"--size", true},
-                                             {"--mode", true},   {"--camera", true}, {"--frames", true},
-                                             {"--eval", true},   {"--mesh", true},   {"--resolution", true}};
-  std::string source;  // PRESET_OR_PROJECT, the optional first argument
-  for (int i = 2; i < argc; ++i) {
-    const std::string s = argv[i];
-    if (i == 2 && s.rfind("--", 0) != 0) {
-      source = s;
-      continue;
-    }
-    auto it = known.find(s);
-    if (it == known.end()) throw Usage("kifs: unknown argument " + s);
-    if (i + 1 >= argc) throw Usage("kifs: " + s + " needs a value");
-    opt[s] = argv[++i];
-  }
-  if (!source.empty() && opt.count("--preset")) throw Usage("kifs: give a preset or project, or --preset, not both");
-  std::string presetName = opt.count("--preset") ? opt["--preset"] : source.empty() ? "box" : source;
-  kifs::KifsParams params;
-  if (presetName.size() > 7 && presetName.substr(presetName.size() - 7) == ".corbel") {
-    // A project: its first KIFS object, with the parameters the project holds.
-    const LoadedProject project = loadProject(presetName);
-    const KifsSpec* spec = nullptr;
-    for (const DocObject& o : project.document.objects)
-      if ((spec = std::get_if<KifsSpec>(&o.spec))) break;
-    if (!spec) throw Error(presetName + ": the project has no KIFS object");
-    params = kifs::paramsOf(*spec);
-  } else {
-    params = kifs::preset(presetName);
-  }
-  if (opt.count("--eval")) return evalPoints(kifs::Building(params), opt["--eval"]);
-  if (opt.count("--mesh")) return meshToFile(kifs::Building(params), opt);
-  if (!opt.count("--out")) throw Usage("kifs: --out PNG (or --mesh FILE, --eval POINTS) is required");
+}  // namespace
 
-  int width = 640, height = 640;
-  if (opt.count("--size")) {
-    const auto v = numbers(opt["--size"], 'x', "--size");
-    if (v.size() != 2 || v[0] < 1 || v[1] < 1 || v[0] > 8192 || v[1] > 8192 || v[0] != int(v[0]) || v[1] != int(v[1]))
-      throw Usage("--size: expected WxH, whole numbers in 1..8192");
-    width = int(v[0]), height = int(v[1]);
-  }
+int run(const KifsRequest& r) {
+  static_assert(kifs::kMaxMeshResolution == 1024, "the --resolution declaration (cli/commands.cpp) says 1..1024");
+  const std::string presetName = !r.preset.empty() ? r.preset : r.source.empty() ? "box" : r.source;
+  const kifs::KifsParams params = paramsFrom(presetName);
+  if (!r.eval.empty()) return evalPoints(kifs::Building(params), r.eval);
+  if (!r.mesh.empty()) return meshToFile(kifs::Building(params), r.mesh, r.resolution);
+  if (r.out.empty()) throw UsageError("kifs: --out PNG (or --mesh FILE, --eval POINTS) is required");
+
+  const int width = r.size.width, height = r.size.height;
   render::KifsMode mode = render::KifsMode::Shaded;
-  if (opt.count("--mode")) {
-    const std::string m = opt["--mode"];
-    if (m == "shaded") mode = render::KifsMode::Shaded;
-    else if (m == "facades" || m == "ids") mode = render::KifsMode::Facades;
-    else if (m == "floors") mode = render::KifsMode::Floors;
-    else if (m == "cost") mode = render::KifsMode::Cost;
-    else if (m == "preview") mode = render::KifsMode::Preview;  // the editor's coarse frames' shading
-    else throw Usage("--mode: expected shaded, preview, facades, floors or cost, got '" + m + "'");
-  }
+  if (r.mode == "facades" || r.mode == "ids") mode = render::KifsMode::Facades;
+  else if (r.mode == "floors") mode = render::KifsMode::Floors;
+  else if (r.mode == "cost") mode = render::KifsMode::Cost;
+  else if (r.mode == "preview") mode = render::KifsMode::Preview;  // the editor's coarse frames' shading
   double az = -60.0, el = 22.0;
-  if (opt.count("--camera")) {
-    const auto v = numbers(opt["--camera"], ',', "--camera");
-    if (v.size() != 2 || v[1] < -89 || v[1] > 89) throw Usage("--camera: expected AZ,EL in degrees, EL in [-89, 89]");
+  if (!r.camera.empty()) {
+    const auto v = numbers(r.camera, ',', "--camera");
+    if (v.size() != 2 || v[1] < -89 || v[1] > 89) throw UsageError("--camera: expected AZ,EL in degrees, EL in [-89, 89]");
     az = v[0], el = v[1];
   }
-  int frames = 1;
-  if (opt.count("--frames")) {
-    const auto v = numbers(opt["--frames"], ',', "--frames");
-    if (v.size() != 1 || v[0] < 1 || v[0] > 1000 || v[0] != int(v[0])) throw Usage("--frames: expected 1..1000");
-    frames = int(v[0]);
-  }
+  const int frames = r.frames.value_or(1);
 
   const double aspect = double(width) / height;
   const render::OrbitCamera camera = render::kifsCamera(kifs::Building(params), aspect, az, el);
@@ -170,7 +120,7 @@ int run(int argc, char** argv) {
   settings.edges = false;
   if (mode == render::KifsMode::Cost) {
     const render::KifsCost c = render::measureKifsCost(pass, building, camera, width, height);
-    render::writePng(c.heat, opt["--out"]);
+    render::writePng(c.heat, r.out);
     std::printf("{\"hits\": %d, \"misses\": %d, \"evaluations_per_hit\": %.1f, \"evaluations_per_miss\": %.1f, "
                 "\"most_per_hit\": %d}\n",
                 c.hits, c.misses, c.meanHit, c.meanMiss, c.maxHit);
@@ -187,17 +137,11 @@ int run(int argc, char** argv) {
     image = render::renderKifsImage(renderer, pass, building, scene, camera, width, height, mode, settings);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const double cpuMs = 1000.0 * double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-  render::writePng(image, opt["--out"]);
-  if (opt.count("--frames"))
+  render::writePng(image, r.out);
+  if (r.frames)
     std::printf("%.1f ms/frame at %dx%d (%s, %d frames; %.1f ms CPU/frame, all threads)\n", ms / frames, width, height,
                 presetName.c_str(), frames, cpuMs / frames);
   return 0;
-}
-
-}  // namespace
-
-int kifsCommand(int argc, char** argv) {
-  return guarded<Usage>([&] { return run(argc, argv); });
 }
 
 }  // namespace corbel::cli

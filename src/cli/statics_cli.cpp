@@ -1,10 +1,9 @@
 // corbel-cli statics arch | example | PROJECT: parse, call the statics kernel, print; --render
 // and --landscape draw the editor's statics pictures headless (cli/statics_png.h).
-#include "cli/statics_cli.h"
-
 #include "cli/guarded.h"
 #include "cli/number_list.h"
 #include "cli/project_scene.h"
+#include "cli/run.h"
 #include "cli/statics_png.h"
 #include "core/error.h"
 #include "core/project_io.h"
@@ -36,104 +35,12 @@
 namespace corbel::cli {
 namespace {
 
-struct UsageError : Error {
-  using Error::Error;
-};
-
-struct Options {
-  std::vector<std::string> positional;
-  std::map<std::string, std::string> values;  // last value of each single option; flags map to ""
-  std::vector<std::string> frees, sets;       // --free and --set, repeatable
-  std::vector<std::string> structural, nonstructural, densities;  // --structural, --nonstructural, --density
-  std::vector<std::string> landscape;         // --landscape NAME1 NAME2 PNG
-};
-
-Options parse(int argc, char** argv, const std::map<std::string, bool>& known) {
-  Options o;
-  for (int i = 2; i < argc; ++i) {
-    const std::string s = argv[i];
-    if (s.rfind("--", 0) != 0) {
-      o.positional.push_back(s);
-      continue;
-    }
-    const auto it = known.find(s);
-    if (it == known.end()) throw UsageError("statics: unknown option " + s);
-    if (s == "--landscape") {
-      if (i + 3 >= argc) throw UsageError("statics: --landscape needs NAME1 NAME2 PNG");
-      o.landscape.assign(argv + i + 1, argv + i + 4);
-      o.values[s] = "";
-      i += 3;
-      continue;
-    }
-    if (!it->second) {
-      o.values[s] = "";
-      continue;
-    }
-    if (i + 1 >= argc) throw UsageError("statics: " + s + " needs a value");
-    const std::string v = argv[++i];
-    if (s == "--free")
-      o.frees.push_back(v);
-    else if (s == "--set")
-      o.sets.push_back(v);
-    else if (s == "--structural")
-      o.structural.push_back(v);
-    else if (s == "--nonstructural")
-      o.nonstructural.push_back(v);
-    else if (s == "--density")
-      o.densities.push_back(v);
-    else
-      o.values[s] = v;
-  }
-  return o;
-}
-
-double number(const Options& o, const char* opt, double def, double lo, double hi) {
-  const auto it = o.values.find(opt);
-  if (it == o.values.end()) return def;
-  char* end = nullptr;
-  const double v = std::strtod(it->second.c_str(), &end);
-  if (it->second.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
-    throw UsageError(std::string(opt) + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return v;
-}
-
-int sides(const Options& a) {
-  const double v = number(a, "--friction-sides", 4, 4, 8);
-  if (v != 4 && v != 8) throw UsageError("--friction-sides: expected 4 or 8");
-  return int(v);
-}
-
-int archCommand(const Options& a) {
-  const bool minThickness = a.values.count("--min-thickness") > 0, criticalTilt = a.values.count("--critical-tilt") > 0;
-  if (minThickness && criticalTilt) throw UsageError("statics: --min-thickness and --critical-tilt exclude each other");
-  if (!a.values.count("--blocks")) throw UsageError("statics arch: --blocks N is required");
-  for (const char* o : {"--render", "--size", "--landscape", "--samples"})
-    if (a.values.count(o))
-      throw UsageError(std::string("statics arch: ") + o + " is for 'statics example NAME' and 'statics PROJECT'");
-  if (!minThickness && !a.values.count("--thickness")) throw UsageError("statics arch: --thickness T is required");
-  statics::ArchSpec spec;
-  const double blocks = number(a, "--blocks", 100, 1, 100000);
-  if (blocks != std::floor(blocks)) throw UsageError("--blocks: expected a whole number");
-  spec.blocks = int(blocks);
-  spec.thickness = number(a, "--thickness", 0.2, 1e-6, 1.999);
-  spec.tiltDeg = number(a, "--tilt", 0, -89, 89);
+statics::AnalysisOptions analysisOptions(const StaticsAnalysis& a, double friction, double kern) {
   statics::AnalysisOptions options;
-  options.friction = number(a, "--friction", 0.7, 0, 100);
-  options.kernShrink = number(a, "--kern", 0, 0, 0.99);
-  options.frictionSides = sides(a);
-  char text[64];
-  if (minThickness) {
-    std::snprintf(text, sizeof text, "%.6f", statics::minimumArchThickness(spec, options, 1e-6));
-  } else if (criticalTilt) {
-    std::snprintf(text, sizeof text, "%.4f", statics::criticalArchTilt(spec, options, 1e-5));
-  } else {
-    const statics::AnalysisResult r = statics::analyse(statics::semicircularArch(spec), options);
-    if (r.status != statics::SolveStatus::Optimal)
-      std::cerr << "corbel-cli: warning: the solver stopped early (" << statics::toString(r.status) << ")\n";
-    std::snprintf(text, sizeof text, "%.6g", r.feasible ? 0.0 : r.yNormalised);
-  }
-  std::cout << text << "\n";
-  return 0;
+  options.friction = a.friction.value_or(friction);
+  options.kernShrink = a.kern.value_or(kern);
+  options.frictionSides = a.frictionSides;
+  return options;
 }
 
 bool endsWithPng(const std::string& path) {
@@ -151,31 +58,17 @@ struct Pictures {
   int samples = 41;
 };
 
-Pictures picturesOf(const Options& a) {
+Pictures picturesOf(const StaticsModelOptions& m) {
   Pictures p;
-  if (a.values.count("--render")) {
-    p.render = a.values.at("--render");
-    if (!endsWithPng(p.render)) throw UsageError("--render: expected a .png file, got '" + p.render + "'");
-  }
-  if (a.values.count("--size")) {
-    if (p.render.empty()) throw UsageError("statics: --size needs --render");
-    const auto v = numberList(a.values.at("--size"), 'x');
-    if (!v || v->size() != 2 || (*v)[0] < 16 || (*v)[1] < 16 || (*v)[0] > 8192 || (*v)[1] > 8192 ||
-        (*v)[0] != std::floor((*v)[0]) || (*v)[1] != std::floor((*v)[1]))
-      throw UsageError("--size: expected WxH with whole numbers in 16..8192, like 800x600, got '" +
-                       a.values.at("--size") + "'");
-    p.width = int((*v)[0]);
-    p.height = int((*v)[1]);
-  }
-  p.landscape = a.landscape;
+  p.render = m.render;
+  if (!p.render.empty() && !endsWithPng(p.render))
+    throw UsageError("--render: expected a .png file, got '" + p.render + "'");
+  p.width = m.size.width;
+  p.height = m.size.height;
+  p.landscape = m.landscape;
   if (!p.landscape.empty() && !endsWithPng(p.landscape[2]))
     throw UsageError("--landscape: expected NAME1 NAME2 PNG, and '" + p.landscape[2] + "' is not a .png file");
-  if (a.values.count("--samples")) {
-    if (p.landscape.empty()) throw UsageError("statics: --samples needs --landscape");
-    const double n = number(a, "--samples", 41, 2, 1024);
-    if (n != std::floor(n)) throw UsageError("--samples: expected a whole number");
-    p.samples = int(n);
-  }
+  p.samples = m.samples;
   return p;
 }
 
@@ -272,9 +165,8 @@ void putAnalysis(const statics::AnalysisResult& r, nlohmann::ordered_json& out) 
 // Analyses (or, with --optimize, searches) one model: an example by name, or a project's
 // masonry object (`base`: its spec, for the pictures). `free` and the analysis settings are
 // the defaults the command line overrides.
-int runModel(const Options& a, const statics::ParametricModel& model, std::vector<statics::FreeParameter> free,
-             const MasonrySpec& base, const std::string& object) {
-  const double friction = base.friction, kern = base.kern;
+int runModel(const StaticsModelOptions& a, const StaticsAnalysis& analysis, const statics::ParametricModel& model,
+             std::vector<statics::FreeParameter> free, const MasonrySpec& base, const std::string& object) {
   const Pictures pictures = picturesOf(a);
   statics::ParameterSet values = model.parameters;
   for (const std::string& s : a.sets) {
@@ -285,8 +177,7 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
     if (eq == std::string::npos || v.empty() || *end != '\0') throw UsageError("--set: expected NAME=VALUE, got '" + s + "'");
     values.set(s.substr(0, eq), d);
   }
-  const bool optimize = a.values.count("--optimize") > 0, json = a.values.count("--json") > 0;
-  if (!optimize && !a.frees.empty()) throw UsageError("statics: --free needs --optimize");
+  const bool optimize = a.optimize, json = a.json;
   if (!pictures.landscape.empty()) {
     // The landscape's parameters before any work: known, continuous, two different ones.
     const auto x = axisOf(pictures.landscape[0], values, free, model.suggestedFree, pictures.samples);
@@ -295,12 +186,10 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
       throw Error("--landscape: two different parameters are needed, not " + x.parameter + " twice");
   }
   statics::SearchOptions options;
-  options.analysis.kernShrink = number(a, "--kern", kern, 0, 0.99);
-  options.analysis.friction = number(a, "--friction", friction, 0, 100);
-  options.analysis.frictionSides = sides(a);
-  if (a.values.count("--algorithm")) options.algorithm = a.values.at("--algorithm");
-  options.maxEvaluations = int(number(a, "--max-evaluations", 200, 1, 1e6));
-  options.maxSeconds = number(a, "--max-seconds", 0, 0, 1e6);
+  options.analysis = analysisOptions(analysis, base.friction, base.kern);
+  options.algorithm = a.algorithm;
+  options.maxEvaluations = a.maxEvaluations;
+  options.maxSeconds = a.maxSeconds;
 
   nlohmann::ordered_json out;
   if (!object.empty()) out["object"] = object;
@@ -363,26 +252,21 @@ int runModel(const Options& a, const statics::ParametricModel& model, std::vecto
   return 0;
 }
 
-int exampleCommand(const Options& a) {
-  picturesOf(a);
-  if (a.positional.size() != 2) {
-    std::string names;
-    for (const std::string& n : statics::exampleNames()) names += " " + n;
-    throw UsageError("statics example: expected one example name (" + names.substr(1) + ")");
-  }
+int exampleCommand(const StaticsExampleRequest& r) {
+  picturesOf(r.model);
   MasonrySpec base;
-  base.model = a.positional[1];
-  return runModel(a, statics::exampleByName(a.positional[1]), {}, base, "");
+  base.model = r.name;
+  return runModel(r.model, r.analysis, statics::exampleByName(r.name), {}, base, "");
 }
 
 // statics PROJECT: every masonry object of the project (or the one --object names), with its
 // own parameters, free bounds, friction and kern (core/masonry_spec.h).
-int projectCommand(const Options& a) {
-  picturesOf(a);  // a bad --render, --size or --landscape before any work
-  const LoadedProject p = loadProject(a.positional[0]);
-  for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << a.positional[0] << ": " << w << "\n";
-  const std::string only = a.values.count("--object") ? a.values.at("--object") : "";
-  if (a.values.count("--render") || a.values.count("--landscape")) {
+int projectCommand(const StaticsProjectRequest& r) {
+  picturesOf(r.model);  // a bad --render or --landscape before any work
+  const LoadedProject p = loadProject(r.project);
+  for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << r.project << ": " << w << "\n";
+  const std::string& only = r.object;
+  if (!r.model.render.empty() || !r.model.landscape.empty()) {
     int matching = 0;
     for (const DocObject& o : p.document.objects)
       matching += std::holds_alternative<MasonrySpec>(o.spec) && (only.empty() || o.name == only);
@@ -397,7 +281,7 @@ int projectCommand(const Options& a) {
     std::vector<statics::FreeParameter> free;
     for (const MasonryFree& f : spec->free) free.push_back({f.name, f.lo, f.hi});
     try {
-      code = std::max(code, runModel(a, statics::modelOf(*spec), free, *spec, o.name));
+      code = std::max(code, runModel(r.model, r.analysis, statics::modelOf(*spec), free, *spec, o.name));
     } catch (const InputError& e) {
       throw InputError(o.name + ": " + e.where, e.reason);
     }
@@ -411,13 +295,15 @@ int projectCommand(const Options& a) {
 // statics PROJECT --scene: the project built into the Scene, its blocks read from there
 // (statics/scene_blocks.h): every object of kind block, or the objects --structural names
 // (any kind: boxes, shells), with those --nonstructural names carried as loads.
-int sceneCommand(const Options& a) {
-  for (const char* o : {"--optimize", "--free", "--set", "--render", "--landscape", "--object"})
-    if (a.values.count(o) || (std::string(o) == "--free" && !a.frees.empty()) ||
-        (std::string(o) == "--set" && !a.sets.empty()))
+int sceneCommand(const StaticsProjectRequest& request) {
+  const StaticsModelOptions& m = request.model;
+  for (const auto& [given, o] : {std::pair{m.optimize, "--optimize"}, {!m.frees.empty(), "--free"},
+                                 {!m.sets.empty(), "--set"}, {!m.render.empty(), "--render"},
+                                 {!m.landscape.empty(), "--landscape"}, {!request.object.empty(), "--object"}})
+    if (given)
       throw UsageError(std::string("statics --scene: ") + o +
                        " works on a masonry object's parameters; --scene analyses the built geometry as it is");
-  const LoadedScene l = loadScene(a.positional[0]);
+  const LoadedScene l = loadScene(request.project);
   auto idOf = [&](const std::string& name, const char* option) {
     const DocObject* o = l.doc.findByName(name);
     if (!o) {
@@ -429,9 +315,9 @@ int sceneCommand(const Options& a) {
     return o->id;
   };
   statics::SceneBlockOptions o;
-  for (const std::string& n : a.structural) o.objects.push_back(idOf(n, "--structural"));
-  for (const std::string& n : a.nonstructural) o.nonstructural.push_back(idOf(n, "--nonstructural"));
-  for (const std::string& d : a.densities) {
+  for (const std::string& n : request.structural) o.objects.push_back(idOf(n, "--structural"));
+  for (const std::string& n : request.nonstructural) o.nonstructural.push_back(idOf(n, "--nonstructural"));
+  for (const std::string& d : request.densities) {
     const auto eq = d.find('=');
     char* end = nullptr;
     const std::string v = eq == std::string::npos ? "" : d.substr(eq + 1);
@@ -440,10 +326,7 @@ int sceneCommand(const Options& a) {
       throw UsageError("--density: expected MATERIAL=KG_PER_M3 with a positive number, got '" + d + "'");
     o.densities[d.substr(0, eq)] = rho;
   }
-  statics::AnalysisOptions opt;
-  opt.kernShrink = number(a, "--kern", 0.0, 0, 0.99);
-  opt.friction = number(a, "--friction", 0.7, 0, 100);
-  opt.frictionSides = sides(a);
+  const statics::AnalysisOptions opt = analysisOptions(request.analysis, 0.7, 0.0);
   const statics::SceneAssembly s = statics::assemblyFromScene(l.scene, o);
   const statics::AnalysisResult r = statics::analyse(s.assembly, opt);
   const statics::FeasibilityResult strict = statics::checkFeasibility(s.assembly, opt);
@@ -466,7 +349,7 @@ int sceneCommand(const Options& a) {
   if (r.warnings.size() > shown.size())
     shown.push_back("... and " + std::to_string(r.warnings.size() - shown.size()) + " more warnings like these");
   out["warnings"] = shown;
-  if (a.values.count("--json")) {
+  if (m.json) {
     std::cout << out.dump() << "\n";
     return 0;
   }
@@ -484,43 +367,36 @@ int sceneCommand(const Options& a) {
 
 }  // namespace
 
-int runStatics(int argc, char** argv) {
-  return guarded<UsageError>([&] {
-    const Options a = parse(argc, argv,
-                            {{"--blocks", true},
-                             {"--thickness", true},
-                             {"--tilt", true},
-                             {"--friction", true},
-                             {"--kern", true},
-                             {"--min-thickness", false},
-                             {"--critical-tilt", false},
-                             {"--optimize", false},
-                             {"--free", true},
-                             {"--set", true},
-                             {"--json", false},
-                             {"--algorithm", true},
-                             {"--max-evaluations", true},
-                             {"--max-seconds", true},
-                             {"--friction-sides", true},
-                             {"--object", true},
-                             {"--render", true},
-                             {"--size", true},
-                             {"--landscape", false},
-                             {"--samples", true},
-                             {"--scene", false},
-                             {"--structural", true},
-                             {"--nonstructural", true},
-                             {"--density", true}});
-    if (a.values.count("--scene") == 0 && (!a.structural.empty() || !a.nonstructural.empty() || !a.densities.empty()))
-      throw UsageError("statics: --structural, --nonstructural and --density go with --scene");
-    if (!a.positional.empty() && a.positional[0] == "arch" && a.positional.size() == 1) return archCommand(a);
-    if (!a.positional.empty() && a.positional[0] == "example") return exampleCommand(a);
-    if (a.positional.size() == 1 && a.positional[0].size() > 7 &&
-        a.positional[0].compare(a.positional[0].size() - 7, 7, ".corbel") == 0)
-      return a.values.count("--scene") ? sceneCommand(a) : projectCommand(a);
-    if (a.values.count("--scene")) throw UsageError("statics: --scene goes with a PROJECT.corbel");
+int run(const StaticsArchRequest& r) {
+  if (!r.minThickness && !r.thickness) throw UsageError("statics arch: --thickness T is required");
+  statics::ArchSpec spec;
+  spec.blocks = r.blocks;
+  spec.thickness = r.thickness.value_or(0.2);
+  spec.tiltDeg = r.tilt;
+  const statics::AnalysisOptions options = analysisOptions(r.analysis, 0.7, 0.0);
+  char text[64];
+  if (r.minThickness) {
+    std::snprintf(text, sizeof text, "%.6f", statics::minimumArchThickness(spec, options, 1e-6));
+  } else if (r.criticalTilt) {
+    std::snprintf(text, sizeof text, "%.4f", statics::criticalArchTilt(spec, options, 1e-5));
+  } else {
+    const statics::AnalysisResult a = statics::analyse(statics::semicircularArch(spec), options);
+    if (a.status != statics::SolveStatus::Optimal)
+      std::cerr << "corbel-cli: warning: the solver stopped early (" << statics::toString(a.status) << ")\n";
+    std::snprintf(text, sizeof text, "%.6g", a.feasible ? 0.0 : a.yNormalised);
+  }
+  std::cout << text << "\n";
+  return 0;
+}
+
+int run(const StaticsExampleRequest& r) { return exampleCommand(r); }
+
+int run(const StaticsProjectRequest& r) {
+  if (r.project.empty())
     throw UsageError("statics: expected 'arch' (statics arch --blocks N --thickness T ...), 'example NAME' or a PROJECT.corbel");
-  });
+  if (r.project.size() <= 7 || r.project.compare(r.project.size() - 7, 7, ".corbel") != 0)
+    throw UsageError("statics: expected 'arch', 'example NAME' or a PROJECT.corbel, not '" + r.project + "'");
+  return r.scene ? sceneCommand(r) : projectCommand(r);
 }
 
 }  // namespace corbel::cli

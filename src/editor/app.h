@@ -25,6 +25,7 @@
 #include "editor/navigate_tool.h"
 #include "editor/script_runner.h"
 #include "editor/selection.h"
+#include "editor/options.h"
 #include "editor/statics_panel.h"
 #include "editor/test_log.h"
 #include "editor/town_panel.h"
@@ -48,21 +49,6 @@
 struct GLFWwindow;
 
 namespace corbel::editor {
-
-struct EditorOptions {
-  std::string project;               // opened at start ("" = a new document)
-  std::string screenshot;            // write the window to this PNG, then quit
-  int quitAfterFrames = -1;          // quit after this many frames (> 0)
-  std::vector<std::string> actions;  // action ids run one per frame at start (scripted use)
-  std::string script;                // an edit script (JSON lines, extrude/edit.h) run one line per frame
-  std::string scriptShots;           // a folder: a screenshot after each stage of the script
-  double autosaveSeconds = 60.0;
-  enum class Recover { Ask, Yes, No } recover = Recover::Ask;
-  std::string stateDir;  // recovery and recent files ("" = defaultStateDir())
-  std::string select;    // select the object of this name at start
-  std::string testLog;   // write a line per settled frame here (editor/test_log.h)
-  int frameDelayMs = 0;  // sleep this long in every frame, as a slow machine would (for tests)
-};
 
 class App {
  public:

@@ -29,6 +29,8 @@ bool plainName(const std::string& name) {
 }
 
 std::string readText(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw Error(file.string() + ": no such file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(file.string() + ": cannot read the preset file");
   std::ostringstream s;

@@ -171,5 +171,5 @@ TEST(RealData, TheCliGrowsStreetPlotsBySkeleton) {
   EXPECT_EQ(run("--street \"0,0;40,20;80,10\" --plots voronoi"), 2);
   EXPECT_NE(error().find("--plots: expected normals or skeleton"), std::string::npos) << error();
   EXPECT_EQ(run(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/town-moosburg.geojson --plots skeleton"), 2);
-  EXPECT_NE(error().find("--plots: only with --street"), std::string::npos) << error();
+  EXPECT_NE(error().find("--plots requires --street"), std::string::npos) << error();
 }

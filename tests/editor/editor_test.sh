@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The editor under Xvfb, as a user would meet it:
+# The editor under Xvfb, as a user would meet it (its command line first: --help, --version and
+# bad options exit 2 before any window opens):
 #  1. it opens the example and its screenshot shows the model (compared with an empty project);
 #  2. an edit made by a scripted action is autosaved to the recovery file while unsaved, and a
 #     new session recovers it;
@@ -44,6 +45,18 @@ command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup ins
 run() { xvfb-run -a -s "-screen 0 1440x900x24" "$editor" --size 1440x900 "$@"; }
 # The autosaved document of the last run (one recovery slot per open document), or "".
 recovery() { ls "$work"/state/recovery/*.corbel 2>/dev/null | head -1; }
+
+echo "== the command line: --help, --version and bad options, before any window opens"
+"$editor" --help | grep -q -- "--recover" || { echo "corbel --help does not list --recover"; exit 1; }
+"$editor" --version | grep -q "^corbel [0-9.]* (project format [0-9]*)$" || { echo "corbel --version"; exit 1; }
+for bad in "--bogus" "--size 100x100" "--recover maybe" "--quit-after-frames" "a.corbel b.corbel"; do
+  set +e
+  # shellcheck disable=SC2086
+  message=$("$editor" $bad 2>&1 >/dev/null)
+  code=$?
+  set -e
+  [[ $code -eq 2 && $message == "corbel: "* ]] || { echo "corbel $bad: exit $code, '$message' (expected 2)"; exit 1; }
+done
 
 echo "== screenshot of the example and of an empty project"
 run --recover no --screenshot "$work/model.png" --quit-after-frames 8 "$example"

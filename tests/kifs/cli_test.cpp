@@ -100,6 +100,29 @@ TEST(KifsCli, TakesAPresetOrAProjectAsItsFirstArgument) {
   EXPECT_EQ(cli("kifs h --preset box --out x.png").code, 2);  // both
 }
 
+// A preset file's path evaluates as the preset's name does; a missing or malformed file exits 1
+// naming its path.
+TEST(KifsCli, TakesAPresetFilesPath) {
+  const fs::path points = fs::temp_directory_path() / ("corbel_kifs_points3_" + std::to_string(getpid()) + ".txt");
+  const fs::path bad = fs::temp_directory_path() / ("corbel_kifs_bad_" + std::to_string(getpid()) + ".json");
+  {
+    std::ofstream(points) << "1 2 5\n5.5 -5.5 20\n2.9 5.9 13\n";  // the last two near the facades
+    std::ofstream(bad) << "{\"scale\": ";
+  }
+  const CliRun byName = cli("kifs turned --eval " + points.string());
+  const CliRun byPath = cli(std::string("kifs '") + CORBEL_SOURCE_DIR + "/assets/kifs/turned.json' --eval " + points.string());
+  ASSERT_EQ(byName.code, 0) << byName.out;
+  ASSERT_EQ(byPath.code, 0) << byPath.out;
+  EXPECT_EQ(byPath.out, byName.out);
+  EXPECT_NE(byName.out, cli("kifs box --eval " + points.string()).out);  // the preset matters
+  const CliRun missing = cli("kifs /nonexistent/turned.json --eval " + points.string());
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_EQ(missing.out, "corbel-cli: error: /nonexistent/turned.json: no such file\n");
+  const CliRun malformed = cli("kifs " + bad.string() + " --eval " + points.string());
+  EXPECT_EQ(malformed.code, 1);
+  EXPECT_EQ(malformed.out.rfind("corbel-cli: error: " + bad.string() + ": ", 0), 0u) << malformed.out;
+}
+
 TEST(KifsCli, BadCommandLinesAreRefused) {
   EXPECT_EQ(cli("kifs").code, 2);                                  // no --out
   EXPECT_EQ(cli("kifs --out x.png --mode glossy").code, 2);        // unknown mode

@@ -1,0 +1,151 @@
+#pragma once
+// corbel-cli's command line, declared once: a request per subcommand (plain fields the parse
+// fills) and declareCommands, which gives CLI11 every subcommand, positional and option with
+// its description. The usage text, `SUB --help` and docs/cli.md all come from here; the kernels
+// do not (cli/run.h holds the run function of each request).
+//
+// A new subcommand: its request struct below (and in Request), its declaration in
+// commands.cpp, its run function (cli/run.h).
+#include "core/command_line.h"
+
+#include <CLI/CLI.hpp>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace corbel::cli {
+
+struct RenderRequest {
+  std::string project, out, camera, object;
+  Size size{800, 600};
+  bool noGrid = false, noEdges = false, wireframe = false;
+  std::string textures = "off";
+};
+
+struct ExportRequest {
+  std::string project, out, object;
+};
+
+struct CheckRequest {
+  std::string project;
+};
+
+struct ExtrudeRequest {
+  std::string input, out, library;
+  std::optional<double> pitch, wallHeight;  // given: every edge gets this roof over walls
+  unsigned jobs = 0;
+  bool stats = false, mergeCoplanar = false, noRetry = false, windingRule = false;
+};
+
+// The analysis settings every statics form takes; unset: the model's own (0.7 and 0 for arch).
+struct StaticsAnalysis {
+  std::optional<double> friction, kern;
+  int frictionSides = 4;
+};
+
+struct StaticsArchRequest {
+  int blocks = 0;
+  std::optional<double> thickness;
+  double tilt = 0;
+  StaticsAnalysis analysis;
+  bool minThickness = false, criticalTilt = false;
+};
+
+// The search and the pictures of statics example NAME and statics PROJECT.
+struct StaticsModelOptions {
+  std::vector<std::string> sets, frees;
+  bool optimize = false;
+  std::string algorithm = "mma";
+  int maxEvaluations = 200;
+  double maxSeconds = 0;
+  std::string render;
+  Size size{1200, 800};
+  std::vector<std::string> landscape;  // NAME1 NAME2 PNG
+  int samples = 41;
+  bool json = false;
+};
+
+struct StaticsExampleRequest {
+  std::string name;
+  StaticsAnalysis analysis;
+  StaticsModelOptions model;
+};
+
+// statics PROJECT.corbel, its masonry objects (or with --scene, the built geometry).
+struct StaticsProjectRequest {
+  std::string project, object;
+  StaticsAnalysis analysis;
+  StaticsModelOptions model;
+  bool scene = false;
+  std::vector<std::string> structural, nonstructural, densities;
+};
+
+struct SimulateRequest {
+  std::string project, object, example;
+  std::vector<std::string> sets, removes, breaks;
+  double seconds = 5, at = 0, fps = 30;
+  std::string shake, drop, frames;
+  double dropMass = 100, dropHeight = 0.5;
+  std::optional<double> friction;
+  Size size{640, 480};
+};
+
+struct KifsRequest {
+  std::string source;  // a preset's name, a preset file (.json) or a project (.corbel)
+  std::string preset, out, mode = "shaded", camera, eval, mesh;
+  Size size{640, 640};
+  std::optional<int> frames;
+  int resolution = 128;
+};
+
+struct GrowRequest {
+  std::string site, out, render, viewMaps = "exact";
+  long long seed = 1, steps = 100000;
+  double pixel = 0.1;
+  bool stats = false;
+};
+
+struct CompleteRequest {
+  std::optional<int> seeds, storey;
+  std::vector<std::string> entrances;
+  std::string from, object, complexity, region, out, render;
+  int count = 4;
+  long long seed = 0;
+};
+
+struct CityRequest {
+  std::string footprints, style, out, tiles, render, around, street, plots, report;
+  std::string coordinates = "auto", detail = "full", textures = "on", renderTextures = "off";
+  long long seed = 1;
+  unsigned jobs = 0;
+  double tileSize = 500;
+};
+
+using Request = std::variant<RenderRequest, ExportRequest, CheckRequest, ExtrudeRequest, StaticsArchRequest,
+                             StaticsExampleRequest, StaticsProjectRequest, SimulateRequest, KifsRequest, GrowRequest,
+                             CompleteRequest, CityRequest>;
+
+// The requests of the declared subcommands, each where the parse writes it.
+class Requests {
+ public:
+  // A new request of type R, filled when `command` is parsed.
+  template <class R>
+  R& add(const CLI::App* command) {
+    auto& slot = byCommand_[command] = std::make_unique<Request>(R{});
+    return std::get<R>(*slot);
+  }
+  // After the parse: the request of the subcommand chosen, nullptr when there is none.
+  const Request* chosen(const CLI::App& app) const;
+
+ private:
+  std::map<const CLI::App*, std::unique_ptr<Request>> byCommand_;
+};
+
+// corbel-cli on `app`: its name, description and subcommands, with --help and --version on each.
+void declareCommands(CLI::App& app, Requests& requests);
+
+}  // namespace corbel::cli
