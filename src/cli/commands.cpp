@@ -95,6 +95,20 @@ void declareCheck(CLI::App& app, Requests& requests) {
   positional(*c, "PROJECT", r.project, "The project file (.corbel).")->required();
 }
 
+void declareEdit(CLI::App& app, Requests& requests) {
+  CLI::App* c = command(
+      app, "edit", "Apply an edit script to a project, as the editor applies it, and save the result.",
+      "The script is JSON lines, one edit each (the operations of docs/user-guide.md: corners, loops,\n"
+      "profiles, steps, features, backgrounds). Each line is applied in turn as the editor commits it;\n"
+      "a bad line is refused with its number and nothing is written. What an edit removed (a feature\n"
+      "whose wall went with a corner) is named on stderr. Prints one JSON line: edits, objects, out.\n"
+      "With an empty script, re-saves the project by this version's writer.");
+  EditRequest& r = requests.add<EditRequest>(c);
+  positional(*c, "PROJECT", r.project, "The project file (.corbel).")->required();
+  text(*c, "--script", r.script, "EDITS.jsonl", "The edits, one JSON object a line.")->required();
+  text(*c, "--out", r.out, "OUT.corbel", "Where to save the edited project (atomically; may be PROJECT).")->required();
+}
+
 void declareExtrude(CLI::App& app, Requests& requests) {
   CLI::App* c = command(
       app, "extrude", "Procedural extrusion of a project's extrusion objects or of GeoJSON footprints.",
@@ -348,6 +362,7 @@ void declareCommands(CLI::App& app, Requests& requests) {
   declareRender(app, requests);
   declareExport(app, requests);
   declareCheck(app, requests);
+  declareEdit(app, requests);
   declareExtrude(app, requests);
   declareStatics(app, requests);
   declareSimulate(app, requests);

@@ -34,6 +34,11 @@ struct CheckRequest {
   std::string project;
 };
 
+// Edit scripts (extrude/edit.h's JSON lines) applied to a project without a window.
+struct EditRequest {
+  std::string project, script, out;
+};
+
 struct ExtrudeRequest {
   std::string input, out, library;
   std::optional<double> pitch, wallHeight;  // given: every edge gets this roof over walls
@@ -125,7 +130,7 @@ struct CityRequest {
   double tileSize = 500;
 };
 
-using Request = std::variant<RenderRequest, ExportRequest, CheckRequest, ExtrudeRequest, StaticsArchRequest,
+using Request = std::variant<RenderRequest, ExportRequest, CheckRequest, EditRequest, ExtrudeRequest, StaticsArchRequest,
                              StaticsExampleRequest, StaticsProjectRequest, SimulateRequest, KifsRequest, GrowRequest,
                              CompleteRequest, CityRequest>;
 

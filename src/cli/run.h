@@ -9,6 +9,7 @@ namespace corbel::cli {
 int run(const RenderRequest& r);    // scene_commands.cpp
 int run(const ExportRequest& r);    // scene_commands.cpp
 int run(const CheckRequest& r);     // scene_commands.cpp
+int run(const EditRequest& r);      // edit_command.cpp
 int run(const ExtrudeRequest& r);   // extrude_command.cpp
 int run(const StaticsArchRequest& r);     // statics_cli.cpp
 int run(const StaticsExampleRequest& r);  // statics_cli.cpp
