@@ -509,8 +509,10 @@ int App::run() {
   // panes show it.
   scriptHost.edit = [this](const nlohmann::json& op) {
     Document d = history_.current();
-    const std::string label = extrude::edit::applyEdit(d, op);
+    std::vector<std::string> removed;
+    const std::string label = extrude::edit::applyEdit(d, op, &removed);
     commit(std::move(d), label);
+    for (const std::string& n : removed) log("script: " + n + " (Undo restores it)");
     history_.closeMerge();
     const std::string object = op.contains("object") ? op["object"].get<std::string>() : op.value("name", "");
     if (const DocObject* o = history_.current().findByName(object)) selection_.select(o->id);

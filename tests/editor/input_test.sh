@@ -6,7 +6,11 @@
 #     example again (not dirty);
 #  2. a left drag of 100 px across the 3D view turns the camera by 40 degrees of azimuth (the
 #     orbit rate, 0.4 degrees a pixel), and a wheel step zooms it in by the wheel's factor;
-#  3. Ctrl+Q with nothing unsaved quits at once, with exit code 0.
+#  3. Ctrl+Q with nothing unsaved quits at once, with exit code 0;
+#  4. on the Fig. 1 house, Delete with a plan corner selected and the pointer over the plan pane
+#     deletes the corner, not the house; after a click in the 3D view it deletes the house, one
+#     undo step that Ctrl+Z takes back;
+#  5. a name typed into the Name field and left by a click elsewhere (no Enter) is kept.
 set -euo pipefail
 editor=$1 example=$2 work=$3
 if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
@@ -73,4 +77,39 @@ for _ in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
 if kill -0 "$pid" 2>/dev/null; then echo "the editor did not quit on Ctrl+Q"; exit 1; fi
 trap - EXIT
 wait "$pid" || { echo "the editor exited with $?"; exit 1; }
+
+echo "== Delete over the plan pane removes the selected corner, not the house"
+cp "$(dirname "$example")/house.corbel" "$work/house.corbel"
+log=$work/house-log.jsonl
+"$editor" --size 1280x800 --recover no --autosave-seconds 3600 --select House --test-log "$log" "$work/house.corbel" &
+pid=$!
+trap 'kill $pid 2>/dev/null || true' EXIT
+wait_for "'plan_corners' in j and j['active'] == 'House'"
+wid=$(xdotool search --sync --onlyvisible --name 'house.corbel' | head -1)
+corner=$(field "['plan_corners'][0][1]" | tr -d '[] ' | tr ',' ' ')
+read -r cx cy <<<"$corner"
+xdotool mousemove --sync --window "$wid" "${cx%.*}" "${cy%.*}"
+xdotool click 1
+xdotool key Delete
+wait_for "j['objects'] == 2 and j['undo'] == 'Delete corner (House)' and len(j['plan_corners'][0]) == 3"
+echo "corner deleted: $(tail -1 "$log" | cut -c1-160)"
+
+echo "== Delete after a click in the 3D view deletes the house; Ctrl+Z brings it back"
+xdotool mousemove --sync --window "$wid" 560 100 click 1  # the sky: the plan pane loses the keys
+xdotool key Delete
+wait_for "j['objects'] == 1 and j['undo'] == 'Delete House' and j['active'] is None"
+xdotool key --clearmodifiers ctrl+z
+wait_for "j['objects'] == 2 and j['undo'] == 'Delete corner (House)'"
+
+echo "== a name typed and left by a click is kept"
+xdotool mousemove --sync --window "$wid" 100 62 click 1  # House in the object list
+wait_for "j['active'] == 'House'"
+xdotool mousemove --sync --window "$wid" 100 112 click 1  # its Name field
+xdotool key --clearmodifiers ctrl+a
+xdotool type --delay 30 Manor
+xdotool mousemove --sync --window "$wid" 560 560 click 1  # the 3D view: the field is left
+wait_for "j['active'] == 'Manor' and j['undo'] == 'Edit name of House'"
+echo "renamed: $(tail -1 "$log" | cut -c1-120)"
+kill "$pid"
+trap - EXIT
 echo "input test passed"
