@@ -85,6 +85,11 @@ void declareExport(CLI::App& app, Requests& requests) {
   positional(*c, "PROJECT", r.project, "The project file (.corbel).")->required();
   text(*c, "--out", r.out, kExportTypes, "The file to write; its extension names the format.")->required();
   text(*c, "--object", r.object, "NAME", "Export only this object.");
+  c->add_option("--up", r.up,
+                "The axis that points up in an OBJ, PLY or OFF file (default: y for OBJ, z for PLY and OFF; "
+                "glb is always y).")
+      ->check(oneOf({"y", "z"}))
+      ->type_name("y|z");
 }
 
 void declareCheck(CLI::App& app, Requests& requests) {

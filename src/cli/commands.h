@@ -28,6 +28,7 @@ struct RenderRequest {
 
 struct ExportRequest {
   std::string project, out, object;
+  std::string up;  // "y" or "z"; "" = the format's own (docs/export.md)
 };
 
 struct CheckRequest {

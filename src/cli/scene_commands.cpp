@@ -88,6 +88,7 @@ int run(const ExportRequest& r) {
   LoadedScene l = loadScene(r.project);
   const std::optional<ObjectId> only = objectByName(l.doc, r.object);
   ExportOptions options;
+  if (!r.up.empty()) options.up = r.up == "y" ? UpAxis::Y : UpAxis::Z;
   options.include = [&](ObjectId id) {
     if (only) return id == *only;
     const DocObject* o = l.doc.find(id);

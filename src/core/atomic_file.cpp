@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -30,6 +31,22 @@ void fsyncDirectoryOf(const std::string& path) {
     ::fsync(fd);
     ::close(fd);
   }
+}
+
+// The mode a new file gets from open(2) under this process's umask: 0666 without the umask's
+// bits. Read from /proc (umask(2) can only be read by setting it, which races with threads).
+mode_t newFileMode() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("Umask:", 0) == 0) return 0666 & ~static_cast<mode_t>(std::stoul(line.substr(6), nullptr, 8));
+  return 0644;
+}
+
+// The mode of the file a save replaces (its owner chose it), else a new file's.
+mode_t modeFor(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) return st.st_mode & 07777;
+  return newFileMode();
 }
 
 // mkstemps with the target's extension kept (OpenMesh picks its writer by extension).
@@ -82,10 +99,7 @@ void writeFileAtomic(const std::string& path, std::string_view data, const Atomi
     }
   }
   if (::fsync(fd) != 0) failWith(sysError("cannot flush", temp));
-  // Keep the permissions of the file we replace.
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) ::fchmod(fd, st.st_mode & 07777);
-  else ::fchmod(fd, 0644);
+  ::fchmod(fd, modeFor(path));  // mkstemp made it 0600
   if (::close(fd) != 0) {
     ::unlink(temp.c_str());
     throw Error(sysError("cannot close", temp));
@@ -102,9 +116,11 @@ std::string makeTempSibling(const std::string& path) {
 
 void commitTempFile(const std::string& temp, const std::string& path) {
   {
-    // Flush what another writer put there before the rename makes it visible.
+    // Flush what another writer put there before the rename makes it visible, with the mode a
+    // new file or the one it replaces would have (mkstemp made it 0600).
     const int fd = ::open(temp.c_str(), O_RDONLY);
     if (fd >= 0) {
+      ::fchmod(fd, modeFor(path));
       ::fsync(fd);
       ::close(fd);
     }

@@ -4,14 +4,16 @@
 #include "core/error.h"
 #include "core/materials.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstring>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace corbel {
@@ -35,44 +37,93 @@ Rgb faceColor(const Scene& scene, PolyMesh::FaceHandle f) {
   return materialColor(scene.faceMaterial(f), scene.faceKind(f));
 }
 
+// The faces to write, object by object (in id order), each object's grouped by material so a
+// reader makes one draw per material; their vertices in the order first used.
+struct Written {
+  struct Object {
+    ObjectId id;
+    std::string name;
+    std::vector<PolyMesh::FaceHandle> faces;
+  };
+  std::vector<Object> objects;
+  std::vector<PolyMesh::VertexHandle> vertices;
+  std::vector<int> index;  // per scene vertex: its number in `vertices` (from 0), or -1
+};
+
+Written collect(const Scene& scene, const ExportOptions& options) {
+  Written w;
+  const PolyMesh& mesh = scene.mesh();
+  w.index.assign(mesh.n_vertices(), -1);
+  const auto byObject = scene.facesByObject();
+  for (const auto& [id, info] : scene.objects()) {
+    if (!included(options, id)) continue;
+    const auto found = byObject.find(id);
+    if (found == byObject.end()) continue;
+    Written::Object o{id, info.name, found->second};
+    std::stable_sort(o.faces.begin(), o.faces.end(), [&](auto a, auto b) {
+      return materialLabel(scene, a) < materialLabel(scene, b);
+    });
+    for (auto f : o.faces)
+      for (auto v : mesh.fv_range(f))
+        if (w.index[v.idx()] < 0) {
+          w.index[v.idx()] = static_cast<int>(w.vertices.size());
+          w.vertices.push_back(v);
+        }
+    w.objects.push_back(std::move(o));
+  }
+  return w;
+}
+
+// A point in the file's frame: corbel's Z up, or Y up as (x, z, -y).
+Vec3 framed(const Vec3& p, bool yUp) { return yUp ? Vec3(p[0], p[2], -p[1]) : p; }
+
+// Names made unique after objToken (two objects "A B" and "A:B" would both be "A_B").
+class UniqueTokens {
+ public:
+  std::string operator()(const std::string& name) {
+    std::string t = objToken(name);
+    for (int k = 2; !used_.insert(t).second; ++k) t = objToken(name) + "_" + std::to_string(k);
+    return t;
+  }
+
+ private:
+  std::set<std::string> used_;
+};
+
 // OBJ has object names ("o") and materials ("usemtl" + .mtl); OpenMesh's OBJ writer knows
 // neither, so this one is ours (a few lines of a plain text format).
 void writeObj(const Scene& scene, const std::string& path, const ExportOptions& options) {
   const std::filesystem::path p(path);
-  const std::string mtlName = p.stem().string() + ".mtl";
+  const std::string mtlName = objToken(p.stem().string()) + ".mtl";  // mtllib takes one token
   const std::string mtlPath = (p.parent_path() / mtlName).string();
   const PolyMesh& mesh = scene.mesh();
+  const bool yUp = options.up != UpAxis::Z;
+  const Written w = collect(scene, options);
 
   std::ostringstream obj;
   obj.precision(17);
-  obj << "# corbel export: meters, Z up\nmtllib " << mtlName << "\n";
-  std::map<std::string, Rgb> usedMaterials;
-  std::vector<int> index(mesh.n_vertices(), 0);
-  int next = 1;
-  const auto byObject = scene.facesByObject();
-  for (const auto& [id, info] : scene.objects()) {
-    if (!included(options, id)) continue;
-    static const std::vector<PolyMesh::FaceHandle> none;
-    const auto found = byObject.find(id);
-    const auto& faces = found == byObject.end() ? none : found->second;
-    obj << "o " << info.name << "\n";
-    for (auto f : faces)
-      for (auto v : mesh.fv_range(f))
-        if (!index[v.idx()]) {
-          index[v.idx()] = next++;
-          const auto& q = mesh.point(v);
-          obj << "v " << q[0] << ' ' << q[1] << ' ' << q[2] << "\n";
-        }
+  obj << "# corbel export: meters, " << (yUp ? "Y" : "Z") << " up\nmtllib " << objToken(mtlName) << "\n";
+  for (auto v : w.vertices) {
+    const Vec3 q = framed(mesh.point(v), yUp);
+    obj << "v " << q[0] << ' ' << q[1] << ' ' << q[2] << "\n";
+  }
+  std::map<std::string, Rgb> usedMaterials;  // by token
+  std::map<std::string, std::string> materialToken;
+  UniqueTokens objectTokens, materialTokens;
+  for (const Written::Object& o : w.objects) {
+    obj << "o " << objectTokens(o.name) << "\n";
     std::string current;
-    for (auto f : faces) {
+    for (auto f : o.faces) {
       const std::string m = materialLabel(scene, f);
-      usedMaterials.emplace(m, faceColor(scene, f));
-      if (m != current) {
-        obj << "usemtl " << m << "\n";
+      auto [it, fresh] = materialToken.emplace(m, "");
+      if (fresh) it->second = materialTokens(m);
+      usedMaterials.emplace(it->second, faceColor(scene, f));
+      if (m != current || current.empty()) {
+        obj << "usemtl " << it->second << "\n";
         current = m;
       }
       obj << "f";
-      for (auto v : mesh.fv_range(f)) obj << ' ' << index[v.idx()];
+      for (auto v : mesh.fv_range(f)) obj << ' ' << w.index[v.idx()] + 1;
       obj << "\n";
     }
   }
@@ -84,53 +135,75 @@ void writeObj(const Scene& scene, const std::string& path, const ExportOptions& 
   writeFileAtomic(path, obj.str());
 }
 
-// PLY and OFF through OpenMesh IO: a copy of the included faces with face colors and, for
-// PLY, the object id, kind and material index as persistent custom face properties.
-void writeWithOpenMesh(const Scene& scene, const std::string& path, ExportFormat format,
-                       const ExportOptions& options) {
-  PolyMesh out;
-  out.request_face_colors();
-  OpenMesh::FPropHandleT<int> objectProp, materialProp;
-  OpenMesh::FPropHandleT<unsigned char> kindProp;
-  if (format == ExportFormat::Ply) {
-    out.add_property(objectProp, "object_id");
-    out.add_property(kindProp, "kind");
-    out.add_property(materialProp, "material_id");
-    out.property(objectProp).set_persistent(true);
-    out.property(kindProp).set_persistent(true);
-    out.property(materialProp).set_persistent(true);
-  }
+unsigned char colorByte(float x) { return static_cast<unsigned char>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f)); }
+
+template <class T>
+void put(std::string& out, T value) {
+  static_assert(std::endian::native == std::endian::little, "binary PLY is written little-endian");
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+// Binary little-endian PLY, written here: OpenMesh's writer put a uchar custom property into
+// ASCII files as a raw byte. Vertices as doubles; per face its colour and corbel's object id,
+// kind and material index.
+void writePly(const Scene& scene, const std::string& path, const ExportOptions& options) {
   const PolyMesh& mesh = scene.mesh();
-  std::vector<PolyMesh::VertexHandle> map(mesh.n_vertices());
-  std::vector<PolyMesh::VertexHandle> loop;
-  for (auto f : mesh.faces()) {
-    const ObjectId id = scene.faceObject(f);
-    if (!included(options, id)) continue;
-    loop.clear();
-    for (auto v : mesh.fv_range(f)) {
-      if (!map[v.idx()].is_valid()) map[v.idx()] = out.add_vertex(mesh.point(v));
-      loop.push_back(map[v.idx()]);
-    }
-    auto nf = out.add_face(loop);
-    if (!nf.is_valid()) continue;  // cannot happen: the scene is already a valid half-edge mesh
-    const Rgb c = faceColor(scene, f);
-    // PolyMesh::Color is 8-bit (0..255); the writer turns it into floats for ColorFloat.
-    auto byte = [](float x) { return static_cast<unsigned char>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f)); };
-    out.set_color(nf, PolyMesh::Color(byte(c[0]), byte(c[1]), byte(c[2])));
-    if (format == ExportFormat::Ply) {
-      out.property(objectProp, nf) = static_cast<int>(id);
-      out.property(kindProp, nf) = static_cast<unsigned char>(scene.faceKind(f));
-      out.property(materialProp, nf) = scene.faceMaterialIndex(f);
-    }
+  const bool yUp = options.up == UpAxis::Y;
+  const Written w = collect(scene, options);
+  std::size_t faces = 0;
+  for (const Written::Object& o : w.objects) faces += o.faces.size();
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\ncomment corbel export: meters, " << (yUp ? "Y" : "Z") << " up\n"
+         << "element vertex " << w.vertices.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
+         << "element face " << faces << "\nproperty list uchar int vertex_indices\n"
+         << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+         << "property int object_id\nproperty uchar kind\nproperty int material_id\nend_header\n";
+  std::string out = header.str();
+  for (auto v : w.vertices) {
+    const Vec3 q = framed(mesh.point(v), yUp);
+    for (int k = 0; k < 3; ++k) put<double>(out, q[k]);
   }
-  OpenMesh::IO::Options opt = OpenMesh::IO::Options::FaceColor | OpenMesh::IO::Options::ColorFloat;
-  if (format == ExportFormat::Ply) opt += OpenMesh::IO::Options::Custom;
-  const std::string temp = makeTempSibling(path);
-  if (!OpenMesh::IO::write_mesh(out, temp, opt, 17)) {
-    std::remove(temp.c_str());
-    throw Error("cannot write '" + path + "' (OpenMesh writer failed)");
+  for (const Written::Object& o : w.objects)
+    for (auto f : o.faces) {
+      const std::size_t n = mesh.valence(f);
+      if (n > 255) throw Error("cannot write '" + path + "': a face of " + o.name + " has more than 255 corners");
+      put<unsigned char>(out, static_cast<unsigned char>(n));
+      for (auto v : mesh.fv_range(f)) put<std::int32_t>(out, w.index[v.idx()]);
+      const Rgb c = faceColor(scene, f);
+      for (int k = 0; k < 3; ++k) put<unsigned char>(out, colorByte(c[k]));
+      put<std::int32_t>(out, static_cast<std::int32_t>(o.id));
+      put<unsigned char>(out, static_cast<unsigned char>(scene.faceKind(f)));
+      put<std::int32_t>(out, scene.faceMaterialIndex(f));
+    }
+  writeFileAtomic(path, out);
+}
+
+// OFF with a colour per face (red, green and blue, floats in [0, 1] after each face's corners):
+// the header is "OFF", since "COFF" announces colours per vertex.
+void writeOff(const Scene& scene, const std::string& path, const ExportOptions& options) {
+  const PolyMesh& mesh = scene.mesh();
+  const bool yUp = options.up == UpAxis::Y;
+  const Written w = collect(scene, options);
+  std::size_t faces = 0;
+  for (const Written::Object& o : w.objects) faces += o.faces.size();
+  std::ostringstream off;
+  off.precision(17);
+  off << "OFF\n" << w.vertices.size() << ' ' << faces << " 0\n";
+  for (auto v : w.vertices) {
+    const Vec3 q = framed(mesh.point(v), yUp);
+    off << q[0] << ' ' << q[1] << ' ' << q[2] << "\n";
   }
-  commitTempFile(temp, path);
+  off.precision(4);
+  for (const Written::Object& o : w.objects)
+    for (auto f : o.faces) {
+      off << mesh.valence(f);
+      for (auto v : mesh.fv_range(f)) off << ' ' << w.index[v.idx()];
+      const Rgb c = faceColor(scene, f);
+      off << ' ' << c[0] << ' ' << c[1] << ' ' << c[2] << "\n";
+    }
+  writeFileAtomic(path, off.str());
 }
 
 }  // namespace
@@ -149,10 +222,16 @@ ExportFormat exportFormatFor(const std::string& path) {
 void exportScene(const Scene& scene, const std::string& path, const ExportOptions& options) {
   switch (exportFormatFor(path)) {
     case ExportFormat::Obj: writeObj(scene, path, options); break;
-    case ExportFormat::Ply: writeWithOpenMesh(scene, path, ExportFormat::Ply, options); break;
-    case ExportFormat::Off: writeWithOpenMesh(scene, path, ExportFormat::Off, options); break;
+    case ExportFormat::Ply: writePly(scene, path, options); break;
+    case ExportFormat::Off: writeOff(scene, path, options); break;
     case ExportFormat::Glb: writeGlb(scene, path, options); break;
   }
+}
+
+std::string objToken(const std::string& name) {
+  std::string t;
+  for (unsigned char c : name) t += std::isalnum(c) || c == '-' || c == '_' || c == '.' ? static_cast<char>(c) : '_';
+  return t.empty() ? "_" : t;
 }
 
 }  // namespace corbel

@@ -1,6 +1,7 @@
 #pragma once
-// Export of the Scene: OBJ (+ .mtl), PLY, OFF and binary glTF 2.0, chosen by extension.
-// OBJ, PLY and OFF keep corbel's frame (meters, Z up); glTF is Y up as its spec requires.
+// Export of the Scene: OBJ (+ .mtl), PLY, OFF and binary glTF 2.0, chosen by extension
+// (docs/export.md). Meters; OBJ is Y up by default (the convention of the programs that read
+// it), PLY and OFF keep corbel's Z up, glTF is Y up as its spec requires.
 #include "core/scene.h"
 #include "core/textures.h"
 
@@ -9,9 +10,14 @@
 
 namespace corbel {
 
+enum class UpAxis { Default, Y, Z };
+
 struct ExportOptions {
   // Which objects to write (all when empty).
   std::function<bool(ObjectId)> include;
+  // OBJ, PLY and OFF: the axis that points up in the file. Default: Y for OBJ, Z for PLY and
+  // OFF. glb is always Y up.
+  UpAxis up = UpAxis::Default;
   // glb only: a procedural texture (core/textures.h) per built-in material, embedded as PNG,
   // with TEXCOORD_0 from each face's plane in its material's primitives.
   bool textures = false;
@@ -26,5 +32,9 @@ ExportFormat exportFormatFor(const std::string& path);
 
 // Writes atomically (a temporary sibling renamed over the target). Throws corbel::Error.
 void exportScene(const Scene& scene, const std::string& path, const ExportOptions& options = {});
+
+// A name as one token for OBJ's `o` and `usemtl`: letters, digits, '-', '_' and '.' are kept,
+// anything else (spaces, ':', '#', other bytes) becomes '_'; an empty name becomes "_".
+std::string objToken(const std::string& name);
 
 }  // namespace corbel

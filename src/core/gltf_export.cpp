@@ -127,7 +127,9 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
       const SurfaceTexture* own =
           options.textures && options.tagTextures ? options.tagTextures(id, scene.faceTag(f)) : nullptr;
       const TextureUse use = options.textures ? textureFor(own, m) : TextureUse{};
-      if (use.own) label += " (texture " + std::string(use.name) + ")";
+      // Textured and plain materials never share a name (Godot shares materials by name across
+      // files, so a plain house would pick up a town's textured brick).
+      if (use.texture) label += " (texture " + std::string(use.name) + ")";
       if (!materialIndex.count(label)) {
         tinygltf::Material mat;
         mat.name = label;

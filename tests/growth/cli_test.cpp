@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <map>
 #include <string>
 #include <tuple>
@@ -55,7 +56,7 @@ TEST(GrowCli, AlphaGrowsToCompletionWithConsistentStatistics) {
   std::string line;
   int units = 0, others = 0;
   while (std::getline(in, line))
-    if (line.rfind("o unit ", 0) == 0)
+    if (line.rfind("o unit_", 0) == 0)  // names as OBJ tokens (docs/export.md)
       ++units;
     else if (line.rfind("o ", 0) == 0)
       ++others;
@@ -142,7 +143,7 @@ TEST(CompleteCli, FormsInRangeAndClearErrors) {
   std::ifstream in(obj);
   std::string line;
   int units = 0;
-  while (std::getline(in, line)) units += line.rfind("o form ", 0) == 0 && line.find(" unit ") != std::string::npos;
+  while (std::getline(in, line)) units += line.rfind("o form_", 0) == 0 && line.find("_unit_") != std::string::npos;
   EXPECT_EQ(units, 3 * 4);
 
   for (const auto& [args, flag] :
@@ -163,17 +164,26 @@ TEST(CompleteCli, FormsInRangeAndClearErrors) {
 
 namespace {
 
-// Vertices per object of an OBJ file ("o NAME" starts an object; vertex indices are global).
+// Vertices per object of an OBJ file, in corbel's frame (Z up; the file says which way it is
+// up). "o NAME" starts an object's faces; each face's corners are indices into the file's
+// vertices, so an object's vertices are those its faces use.
 std::map<std::string, std::vector<std::array<double, 3>>> objVertices(const std::string& path) {
   std::map<std::string, std::vector<std::array<double, 3>>> out;
   std::ifstream in(path);
   std::string line, current;
+  std::vector<std::array<double, 3>> all;
+  bool yUp = false;
   while (std::getline(in, line)) {
+    if (line.rfind("# corbel export:", 0) == 0) yUp = line.find("Y up") != std::string::npos;
     if (line.rfind("o ", 0) == 0) current = line.substr(2);
     if (line.rfind("v ", 0) == 0) {
       std::array<double, 3> v{};
       std::sscanf(line.c_str(), "v %lf %lf %lf", &v[0], &v[1], &v[2]);
-      out[current].push_back(v);
+      all.push_back(yUp ? std::array<double, 3>{v[0], -v[2], v[1]} : v);
+    }
+    if (line.rfind("f ", 0) == 0) {
+      std::istringstream corners(line.substr(2));
+      for (std::size_t i; corners >> i;) out[current].push_back(all.at(i - 1));
     }
   }
   return out;
@@ -225,7 +235,7 @@ TEST(CompleteCli, FromAGrownModelMeetsTheDoorsOfItsEntrances) {
       const int side = d["side"];
       const double from = d["door"][0], to = d["door"][1];
       const double at = side == 0 ? y0 : side == 1 ? x1 : side == 2 ? y1 : x0;
-      const auto it = objects.find("form " + std::to_string(best) + " unit " + std::to_string(d["unit"].get<int>()));
+      const auto it = objects.find("form_" + std::to_string(best) + "_unit_" + std::to_string(d["unit"].get<int>()));
       ASSERT_NE(it, objects.end());
       double lo = INFINITY, hi = -INFINITY;
       for (const auto& v : it->second) {
@@ -239,8 +249,8 @@ TEST(CompleteCli, FromAGrownModelMeetsTheDoorsOfItsEntrances) {
   EXPECT_GE(met, 1);
   int grown = 0, formUnits = 0;
   for (const auto& [name, v] : objects) {
-    grown += name.rfind("unit ", 0) == 0;
-    formUnits += name.rfind("form ", 0) == 0;
+    grown += name.rfind("unit_", 0) == 0;
+    formUnits += name.rfind("form_", 0) == 0;
   }
   EXPECT_GT(grown, 10);
   EXPECT_EQ(formUnits, int(seeds));

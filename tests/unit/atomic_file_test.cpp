@@ -85,9 +85,24 @@ TEST(AtomicFile, KeepsTheReplacedFilesPermissions) {
   ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
   corbel::writeFileAtomic(path, "newer");
   EXPECT_EQ(modeOf(path), 0600u);
-  // A new file gets rw-r--r--, not mkstemp's private 0600.
-  corbel::writeFileAtomic(dir.file("fresh.txt"), "x");
-  EXPECT_EQ(modeOf(dir.file("fresh.txt")), 0644u);
+}
+
+// A new file gets what open(2) would give it under the umask, not mkstemp's private 0600:
+// for the writer's files and for those written through a temporary sibling (glb, tiles).
+TEST(AtomicFile, ANewFileFollowsTheUmask) {
+  TempDir dir;
+  for (const mode_t mask : {mode_t(022), mode_t(002), mode_t(077)}) {
+    const mode_t old = ::umask(mask);
+    const std::string a = dir.file("fresh" + std::to_string(mask) + ".txt");
+    corbel::writeFileAtomic(a, "x");
+    EXPECT_EQ(modeOf(a), 0666u & ~mask);
+    const std::string b = dir.file("sibling" + std::to_string(mask) + ".bin");
+    const std::string temp = corbel::makeTempSibling(b);
+    writeText(temp, "y");
+    corbel::commitTempFile(temp, b);
+    EXPECT_EQ(modeOf(b), 0666u & ~mask);
+    ::umask(old);
+  }
 }
 
 TEST(AtomicFile, MissingFolderFailsClearlyWithoutLeftovers) {

@@ -1,5 +1,6 @@
-// export.h: every format read back by an independent reader (OpenMesh IO, tinygltf) and
-// compared with the scene's counts, analytic areas, names, materials and bounds.
+// export.h: every format read back by independent readers (assimp for OBJ, PLY and OFF, as
+// Blender's and Godot's importers read them; tinygltf for glb; OpenMesh IO for PLY's custom
+// properties) and compared with the scene's counts, analytic areas, names, materials and bounds.
 #include "core/export.h"
 
 #include "core/error.h"
@@ -7,11 +8,16 @@
 #include "core/textures.h"
 #include "test_support.h"
 
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 
 #include <cmath>
+#include <sys/stat.h>
+#include <tuple>
 #include <cstring>
 #include <map>
 #include <set>
@@ -86,16 +92,6 @@ Scene testScene(std::vector<Expected>* expected = nullptr) {
   return s;
 }
 
-double meshArea(const corbel::PolyMesh& mesh) {
-  double area = 0;
-  for (auto f : mesh.faces()) {
-    std::vector<Vec3> poly;
-    for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
-    area += 0.5 * corbel::newellNormal(poly).norm();
-  }
-  return area;
-}
-
 struct Totals {
   std::size_t faces = 0, vertices = 0, triangles = 0;
   double area = 0;
@@ -113,12 +109,65 @@ Totals totals(const std::vector<Expected>& e, const std::set<std::string>& only 
   return t;
 }
 
+// What assimp makes of a file, triangulated: its triangles, their area, the names of the nodes
+// that hold meshes (OBJ's objects), and the materials' names and diffuse colours.
+struct AssimpRead {
+  bool ok = false;
+  std::string error;
+  std::size_t triangles = 0;
+  double area = 0;
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  std::vector<std::string> nodes;
+  std::map<std::string, corbel::Rgb> materials;
+};
+
+void collectNodes(const aiNode* n, std::vector<std::string>& out) {
+  if (n->mNumMeshes > 0) out.push_back(n->mName.C_Str());
+  for (unsigned i = 0; i < n->mNumChildren; ++i) collectNodes(n->mChildren[i], out);
+}
+
+AssimpRead readWithAssimp(const std::string& path) {
+  AssimpRead r;
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
+  if (!scene || !scene->mRootNode) {
+    r.error = importer.GetErrorString();
+    return r;
+  }
+  r.ok = true;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+      for (int k = 0; k < 3; ++k) {
+        r.lo[k] = std::min(r.lo[k], double(mesh->mVertices[v][k]));
+        r.hi[k] = std::max(r.hi[k], double(mesh->mVertices[v][k]));
+      }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      ++r.triangles;
+      const aiVector3D a = mesh->mVertices[face.mIndices[0]], b = mesh->mVertices[face.mIndices[1]],
+                       c = mesh->mVertices[face.mIndices[2]];
+      r.area += 0.5 * ((b - a) ^ (c - a)).Length();
+    }
+  }
+  collectNodes(scene->mRootNode, r.nodes);
+  for (unsigned m = 0; m < scene->mNumMaterials; ++m) {
+    aiString name;
+    aiColor3D kd(0, 0, 0);
+    scene->mMaterials[m]->Get(AI_MATKEY_NAME, name);
+    scene->mMaterials[m]->Get(AI_MATKEY_COLOR_DIFFUSE, kd);
+    r.materials[name.C_Str()] = {kd.r, kd.g, kd.b};
+  }
+  return r;
+}
+
+// The file holds the scene's triangles and area, as assimp reads it (area kept in 32-bit floats).
 void expectReadBack(const std::string& path, const Totals& t) {
-  corbel::PolyMesh back;
-  ASSERT_TRUE(OpenMesh::IO::read_mesh(back, path)) << path;
-  EXPECT_EQ(back.n_faces(), t.faces) << path;
-  EXPECT_EQ(back.n_vertices(), t.vertices) << path;
-  EXPECT_NEAR(meshArea(back), t.area, 1e-9 * t.area) << path;
+  const AssimpRead r = readWithAssimp(path);
+  ASSERT_TRUE(r.ok) << path << ": " << r.error;
+  EXPECT_EQ(r.triangles, t.triangles) << path;
+  EXPECT_NEAR(r.area, t.area, 1e-6 * t.area) << path;
 }
 
 TEST(Export, FormatFromExtension) {
@@ -170,7 +219,9 @@ TEST(Export, ObjNamesObjectsAndMtlListsMaterials) {
     if (line == "mtllib village.mtl") mtllib = true;
   }
   EXPECT_TRUE(mtllib);
-  EXPECT_EQ(objects, (std::vector<std::string>{"Hall", "Tower Top", "Porch", "Ground"}));
+  // One token each (docs/export.md): assimp cuts a name at its first space.
+  EXPECT_EQ(objects, (std::vector<std::string>{"Hall", "Tower_Top", "Porch", "Ground"}));
+  EXPECT_EQ(readWithAssimp(dir.file("village.obj")).nodes, objects);
   EXPECT_EQ(used, (std::set<std::string>{"stone", "brick", "glass", "site"}));
 
   // The .mtl: one newmtl per used material, Kd = the palette's color.
@@ -228,19 +279,48 @@ TEST(Export, PlyAndOffKeepFaceColors) {
   }
   const std::set<std::tuple<int, int, int>> distinct(want.begin(), want.end());
   ASSERT_EQ(distinct.size(), 4u);
-  for (const char* name : {"colors.ply", "colors.off"}) {
-    SCOPED_TRACE(name);
-    corbel::exportScene(s, dir.file(name));
+  {  // PLY through OpenMesh's reader, which reads face colours and the custom properties.
+    corbel::exportScene(s, dir.file("colors.ply"));
     corbel::PolyMesh back;
     back.request_face_colors();
     OpenMesh::IO::Options opt = OpenMesh::IO::Options::FaceColor;
-    ASSERT_TRUE(OpenMesh::IO::read_mesh(back, dir.file(name), opt));
+    ASSERT_TRUE(OpenMesh::IO::read_mesh(back, dir.file("colors.ply"), opt));
     ASSERT_TRUE(opt.check(OpenMesh::IO::Options::FaceColor));
     std::multiset<std::tuple<int, int, int>> got;
     for (auto f : back.faces()) {
       const auto c = back.color(f);
       got.insert(key(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f));
     }
+    EXPECT_EQ(got, want);
+    EXPECT_NE(readText(dir.file("colors.ply")).find("format binary_little_endian 1.0\n"), std::string::npos);
+  }
+  {  // OFF as Geomview's format defines it: "OFF", then each face's corners and its colour.
+    corbel::exportScene(s, dir.file("colors.off"));
+    std::istringstream in(readText(dir.file("colors.off")));
+    std::string header;
+    std::size_t nv = 0, nf = 0, ne = 0;
+    in >> header >> nv >> nf >> ne;
+    EXPECT_EQ(header, "OFF");
+    for (std::size_t i = 0; i < nv; ++i) {
+      double x, y, z;
+      in >> x >> y >> z;
+    }
+    std::multiset<std::tuple<int, int, int>> got;
+    for (std::size_t i = 0; i < nf; ++i) {
+      std::size_t n = 0;
+      in >> n;
+      for (std::size_t k = 0; k < n; ++k) {
+        std::size_t index;
+        in >> index;
+        EXPECT_LT(index, nv);
+      }
+      float r, g, b;
+      in >> r >> g >> b;
+      got.insert(key(r, g, b));
+    }
+    EXPECT_TRUE(in) << "the file ended early";
+    std::string rest;
+    EXPECT_FALSE(in >> rest) << "more than the header says: " << rest;
     EXPECT_EQ(got, want);
   }
 }
@@ -347,6 +427,82 @@ TEST(Export, GlbLoadsWithNamesMaterialsTrianglesAndBounds) {
   EXPECT_NEAR(area, totals(expected).area, 1e-5 * totals(expected).area);
 }
 
+// OBJ is Y up unless asked (Blender, Godot and f3d read OBJ as Y up); PLY and OFF keep Z up
+// unless asked. The scene spans z in [-0.5, 9.5] and y in [-20, 20] (the ground).
+TEST(Export, EachFormatIsUpAsItsReadersExpect) {
+  TempDir dir;
+  const Scene s = testScene();
+  auto bounds = [&](const std::string& name, corbel::UpAxis up) {
+    corbel::ExportOptions o;
+    o.up = up;
+    corbel::exportScene(s, dir.file(name), o);
+    const AssimpRead r = readWithAssimp(dir.file(name));
+    EXPECT_TRUE(r.ok) << r.error;
+    return std::make_pair(r.lo, r.hi);
+  };
+  const double tol = 1e-5;
+  for (const auto& [name, up, yUp] : {std::tuple{"a.obj", corbel::UpAxis::Default, true},
+                                      std::tuple{"b.obj", corbel::UpAxis::Z, false},
+                                      std::tuple{"c.ply", corbel::UpAxis::Default, false},
+                                      std::tuple{"d.ply", corbel::UpAxis::Y, true},
+                                      std::tuple{"e.off", corbel::UpAxis::Default, false},
+                                      std::tuple{"f.off", corbel::UpAxis::Y, true}}) {
+    SCOPED_TRACE(name);
+    const auto [lo, hi] = bounds(name, up);
+    const int upAxis = yUp ? 1 : 2;
+    EXPECT_NEAR(lo[upAxis], -0.5, tol);
+    EXPECT_NEAR(hi[upAxis], 9.5, tol);
+    EXPECT_NEAR(lo[yUp ? 2 : 1], -20, tol);  // the ground's y, as -z when Y is up
+    EXPECT_NEAR(hi[yUp ? 2 : 1], 20, tol);
+  }
+  EXPECT_NE(readText(dir.file("a.obj")).find("# corbel export: meters, Y up"), std::string::npos);
+}
+
+// Faces come grouped by material within each object: one `usemtl` per object and material,
+// so a reader makes one draw per material, not one per change.
+TEST(Export, ObjGroupsEachObjectsFacesByMaterial) {
+  TempDir dir;
+  Scene s;
+  MeshData m = prism(kPentagon, 0, 3, "brick");
+  const int glass = m.addMaterial("glass");
+  for (std::size_t f = 0; f < m.faceMaterial.size(); f += 2) m.faceMaterial[f] = glass;  // alternate
+  s.replaceObject(1, Kind::Shell, "striped", m);
+  corbel::exportScene(s, dir.file("s.obj"));
+  std::istringstream obj(readText(dir.file("s.obj")));
+  std::vector<std::string> usemtl;
+  for (std::string line; std::getline(obj, line);)
+    if (line.rfind("usemtl ", 0) == 0) usemtl.push_back(line.substr(7));
+  EXPECT_EQ(usemtl, (std::vector<std::string>{"brick", "glass"}));
+}
+
+// Names as one token; two names that map alike stay apart.
+TEST(Export, ObjNamesAreOneTokenEach) {
+  EXPECT_EQ(corbel::objToken("Tower Top"), "Tower_Top");
+  EXPECT_EQ(corbel::objToken("osm:w1#2"), "osm_w1_2");
+  EXPECT_EQ(corbel::objToken("Fenêtre-1.b"), "Fen__tre-1.b");  // UTF-8 bytes, each replaced
+  EXPECT_EQ(corbel::objToken(""), "_");
+  TempDir dir;
+  Scene s;
+  s.replaceObject(1, Kind::Mass, "A B", handBox(Vec3(0, 0, 0), Vec3(1, 1, 1), "stone"));
+  s.replaceObject(2, Kind::Mass, "A:B", handBox(Vec3(2, 0, 0), Vec3(3, 1, 1), "stone"));
+  corbel::exportScene(s, dir.file("n.obj"));
+  EXPECT_EQ(readWithAssimp(dir.file("n.obj")).nodes, (std::vector<std::string>{"A_B", "A_B_2"}));
+}
+
+// New files are readable as the user's umask allows, like any other file they make.
+TEST(Export, FilesFollowTheUmask) {
+  TempDir dir;
+  const mode_t old = ::umask(022);
+  const Scene s = testScene();
+  for (const char* name : {"u.obj", "u.ply", "u.off", "u.glb"}) {
+    corbel::exportScene(s, dir.file(name));
+    struct stat st {};
+    ASSERT_EQ(::stat(dir.file(name).c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0644u) << name;
+  }
+  ::umask(old);
+}
+
 TEST(Export, IncludeFilterWritesOnlyThoseObjects) {
   TempDir dir;
   std::vector<Expected> expected;
@@ -362,7 +518,7 @@ TEST(Export, IncludeFilterWritesOnlyThoseObjects) {
   std::vector<std::string> objects;
   for (std::string line; std::getline(obj, line);)
     if (line.rfind("o ", 0) == 0) objects.push_back(line.substr(2));
-  EXPECT_EQ(objects, (std::vector<std::string>{"Tower Top", "Porch"}));
+  EXPECT_EQ(objects, (std::vector<std::string>{"Tower_Top", "Porch"}));
   const std::string mtl = readText(dir.file("part.mtl"));
   EXPECT_EQ(mtl.find("stone"), std::string::npos);
   EXPECT_NE(mtl.find("newmtl brick"), std::string::npos);
@@ -463,7 +619,17 @@ TEST(Export, GlbTexturesPerMaterialWithPlaneUvs) {
   EXPECT_EQ(m.images.size(), texturedNames.size());
   EXPECT_EQ(m.textures.size(), texturedNames.size());
   std::map<std::string, int> materialByName;
-  for (std::size_t i = 0; i < m.materials.size(); ++i) materialByName[m.materials[i].name] = static_cast<int>(i);
+  // A textured material is named "M (texture T)", never as a plain one: the rest are plain.
+  for (std::size_t i = 0; i < m.materials.size(); ++i) {
+    std::string name = m.materials[i].name;
+    if (const auto t = name.find(" (texture "); t != std::string::npos) {
+      EXPECT_EQ(name, name.substr(0, t) + " (texture " + name.substr(0, t) + ")");
+      name = name.substr(0, t);
+    } else {
+      EXPECT_FALSE(texturedNames.count(name)) << "a textured material named as a plain one: " << name;
+    }
+    materialByName[name] = static_cast<int>(i);
+  }
   ASSERT_EQ(materialByName.size(), 5u);
   for (const auto& [name, index] : materialByName) {
     SCOPED_TRACE(name);
@@ -496,7 +662,8 @@ TEST(Export, GlbTexturesPerMaterialWithPlaneUvs) {
   for (const tinygltf::Mesh& mesh : m.meshes)
     for (const tinygltf::Primitive& p : mesh.primitives) {
       SCOPED_TRACE(mesh.name);
-      const std::string& name = m.materials.at(p.material).name;
+      const std::string full = m.materials.at(p.material).name;
+      const std::string name = full.substr(0, full.find(" (texture "));
       const auto uv = p.attributes.find("TEXCOORD_0");
       if (!texturedNames.count(name)) {
         EXPECT_EQ(uv, p.attributes.end());
