@@ -90,6 +90,8 @@ void declareExport(CLI::App& app, Requests& requests) {
                 "glb is always y).")
       ->check(oneOf({"y", "z"}))
       ->type_name("y|z");
+  whole(*c, "--kifs-resolution", r.kifsResolution, 1, 1024, "N",
+        "Cells along the longest side of a ray-marched KIFS building, meshed for the file.");
 }
 
 void declareCheck(CLI::App& app, Requests& requests) {

@@ -29,6 +29,7 @@ struct RenderRequest {
 struct ExportRequest {
   std::string project, out, object;
   std::string up;  // "y" or "z"; "" = the format's own (docs/export.md)
+  int kifsResolution = 96;  // compose::kExportKifsResolution
 };
 
 struct CheckRequest {

@@ -3,6 +3,7 @@
 #include "cli/guarded.h"
 #include "cli/number_list.h"
 #include "cli/project_scene.h"
+#include "compose/export_scene.h"
 #include "cli/run.h"
 #include "core/error.h"
 #include "core/export.h"
@@ -87,14 +88,22 @@ int run(const ExportRequest& r) {
   }
   LoadedScene l = loadScene(r.project);
   const std::optional<ObjectId> only = objectByName(l.doc, r.object);
+  // Everything the view shows goes into the file: ray-marched KIFS buildings meshed, towns one
+  // object per building, textured as `city` writes them (compose/export_scene.h).
+  compose::ExportableScene e = compose::exportableScene(
+      l.doc, l.scene, l.towns.get(),
+      [&](ObjectId id) {
+        if (only) return id == *only;
+        const DocObject* o = l.doc.find(id);
+        return o && o->visible;
+      },
+      r.kifsResolution);
+  for (const std::string& note : e.notes) std::cerr << "corbel-cli: export: " << note << "\n";
   ExportOptions options;
   if (!r.up.empty()) options.up = r.up == "y" ? UpAxis::Y : UpAxis::Z;
-  options.include = [&](ObjectId id) {
-    if (only) return id == *only;
-    const DocObject* o = l.doc.find(id);
-    return o && o->visible;
-  };
-  exportScene(l.scene, r.out, options);
+  options.textured = e.textured;
+  options.tagTextures = e.tagTextures;
+  exportScene(e.scene, r.out, options);
   std::cout << r.out << "\n";
   return 0;
 }

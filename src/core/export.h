@@ -21,6 +21,8 @@ struct ExportOptions {
   // glb only: a procedural texture (core/textures.h) per built-in material, embedded as PNG,
   // with TEXCOORD_0 from each face's plane in its material's primitives.
   bool textures = false;
+  // glb only: which objects are textured, in place of `textures` (null: `textures` for all).
+  std::function<bool(ObjectId)> textured;
   // With textures: the texture an object's tagged faces show in place of their material's (a
   // city style's tag_textures); none when empty or null.
   TagTextures tagTextures;

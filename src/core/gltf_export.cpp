@@ -39,9 +39,47 @@ int addView(tinygltf::Model& model, const void* data, std::size_t bytes, int tar
   return static_cast<int>(model.bufferViews.size()) - 1;
 }
 
-int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bool withBounds) {
-  tinygltf::Accessor a;
-  a.bufferView = addView(model, values.data(), values.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+// The geometry of every primitive shares three buffer views (vec3 attributes, texture
+// coordinates, indices): a view per accessor made a town's JSON chunk a third view records.
+// Accessors point at a Shared kind until finish() writes the views and sets the indices.
+class SharedViews {
+ public:
+  enum Kind { Vec3, Vec2, Index, kKinds };
+
+  int accessor(tinygltf::Model& model, Kind kind, const void* data, std::size_t bytes) {
+    std::vector<unsigned char>& b = bytes_[kind];
+    tinygltf::Accessor a;
+    a.byteOffset = b.size();
+    const auto* p = static_cast<const unsigned char*>(data);
+    b.insert(b.end(), p, p + bytes);
+    model.accessors.push_back(a);
+    const int index = static_cast<int>(model.accessors.size()) - 1;
+    users_[kind].push_back(index);
+    return index;
+  }
+
+  void finish(tinygltf::Model& model) {
+    static constexpr int kStride[kKinds] = {12, 8, 0};
+    static constexpr int kTarget[kKinds] = {TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_TARGET_ARRAY_BUFFER,
+                                            TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER};
+    for (int k = 0; k < kKinds; ++k) {
+      if (bytes_[k].empty()) continue;
+      const int view = addView(model, bytes_[k].data(), bytes_[k].size(), kTarget[k]);
+      // Vertex attributes sharing a view need its stride (glTF 2.0, 3.6.2.4).
+      if (kStride[k]) model.bufferViews[view].byteStride = kStride[k];
+      for (int a : users_[k]) model.accessors[a].bufferView = view;
+      std::vector<unsigned char>().swap(bytes_[k]);
+    }
+  }
+
+ private:
+  std::vector<unsigned char> bytes_[kKinds];
+  std::vector<int> users_[kKinds];
+};
+
+int addVec3Accessor(tinygltf::Model& model, SharedViews& views, const std::vector<float>& values, bool withBounds) {
+  const int index = views.accessor(model, SharedViews::Vec3, values.data(), values.size() * sizeof(float));
+  tinygltf::Accessor& a = model.accessors[index];
   a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
   a.count = values.size() / 3;
   a.type = TINYGLTF_TYPE_VEC3;
@@ -54,18 +92,26 @@ int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bo
     a.minValues = lo;
     a.maxValues = hi;
   }
-  model.accessors.push_back(a);
-  return static_cast<int>(model.accessors.size()) - 1;
+  return index;
 }
 
-int addVec2Accessor(tinygltf::Model& model, const std::vector<float>& values) {
-  tinygltf::Accessor a;
-  a.bufferView = addView(model, values.data(), values.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+int addVec2Accessor(tinygltf::Model& model, SharedViews& views, const std::vector<float>& values) {
+  const int index = views.accessor(model, SharedViews::Vec2, values.data(), values.size() * sizeof(float));
+  tinygltf::Accessor& a = model.accessors[index];
   a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
   a.count = values.size() / 2;
   a.type = TINYGLTF_TYPE_VEC2;
-  model.accessors.push_back(a);
-  return static_cast<int>(model.accessors.size()) - 1;
+  return index;
+}
+
+int addIndexAccessor(tinygltf::Model& model, SharedViews& views, const std::vector<std::uint32_t>& indices) {
+  const int index =
+      views.accessor(model, SharedViews::Index, indices.data(), indices.size() * sizeof(std::uint32_t));
+  tinygltf::Accessor& a = model.accessors[index];
+  a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  a.count = indices.size();
+  a.type = TINYGLTF_TYPE_SCALAR;
+  return index;
 }
 
 // The texture as a PNG image in the binary buffer, a repeating sampler and a texture.
@@ -110,10 +156,12 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
   model.defaultScene = 0;
   std::map<std::string, int> materialIndex, textureIndex;  // by glTF material label, by texture name
   const PolyMesh& mesh = scene.mesh();
+  SharedViews views;
 
   const auto byObject = scene.facesByObject();
   for (const auto& [id, info] : scene.objects()) {
     if (options.include && !options.include(id)) continue;
+    const bool textured = options.textured ? options.textured(id) : options.textures;
     std::map<std::string, PrimitiveData> byMaterial;
     std::vector<Vec3> poly;
     std::vector<Vec2> uv;
@@ -125,8 +173,8 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
       // A face with a texture of its own (a style's tag texture) gets a glTF material of its own,
       // whatever its material's colour: the texture carries the colour.
       const SurfaceTexture* own =
-          options.textures && options.tagTextures ? options.tagTextures(id, scene.faceTag(f)) : nullptr;
-      const TextureUse use = options.textures ? textureFor(own, m) : TextureUse{};
+          textured && options.tagTextures ? options.tagTextures(id, scene.faceTag(f)) : nullptr;
+      const TextureUse use = textured ? textureFor(own, m) : TextureUse{};
       // Textured and plain materials never share a name (Godot shares materials by name across
       // files, so a plain house would pick up a town's textured brick).
       if (use.texture) label += " (texture " + std::string(use.name) + ")";
@@ -172,17 +220,10 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
       tinygltf::Primitive p;
       p.mode = TINYGLTF_MODE_TRIANGLES;
       p.material = materialIndex[label];
-      p.attributes["POSITION"] = addVec3Accessor(model, prim.positions, true);
-      p.attributes["NORMAL"] = addVec3Accessor(model, prim.normals, false);
-      if (!prim.uvs.empty()) p.attributes["TEXCOORD_0"] = addVec2Accessor(model, prim.uvs);
-      tinygltf::Accessor idx;
-      idx.bufferView = addView(model, prim.indices.data(), prim.indices.size() * sizeof(std::uint32_t),
-                               TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-      idx.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-      idx.count = prim.indices.size();
-      idx.type = TINYGLTF_TYPE_SCALAR;
-      model.accessors.push_back(idx);
-      p.indices = static_cast<int>(model.accessors.size()) - 1;
+      p.attributes["POSITION"] = addVec3Accessor(model, views, prim.positions, true);
+      p.attributes["NORMAL"] = addVec3Accessor(model, views, prim.normals, false);
+      if (!prim.uvs.empty()) p.attributes["TEXCOORD_0"] = addVec2Accessor(model, views, prim.uvs);
+      p.indices = addIndexAccessor(model, views, prim.indices);
       gm.primitives.push_back(p);
     }
     if (gm.primitives.empty()) continue;
@@ -196,6 +237,7 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
     model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
   }
 
+  views.finish(model);
   // Nothing exported: glTF forbids an empty buffer (byteLength >= 1), so write none; and a
   // named scene, since tinygltf writes a scene without nodes or name as null.
   if (model.buffers[0].data.empty()) model.buffers.clear();

@@ -1,5 +1,6 @@
 #include "editor/app.h"
 
+#include "compose/export_scene.h"
 #include "core/error.h"
 #include "core/export.h"
 #include "core/materials.h"
@@ -241,22 +242,29 @@ void App::exportScene() {
       path_.empty() ? std::string("scene.glb") : std::filesystem::path(path_).replace_extension(".glb").string();
   fileDialog_.open(FileDialog::Mode::Save, "Export scene", {".glb", ".obj", ".ply", ".off"}, start,
                    [this](const std::string& p) {
+                     // What the view shows, all of it (compose/export_scene.h): ray-marched KIFS
+                     // buildings are meshed and towns split into buildings, in the background.
                      auto snapshot = std::make_shared<Scene>(scene_);
-                     std::vector<ObjectId> visible;
-                     for (const DocObject& o : history_.current().objects)
-                       if (o.visible) visible.push_back(o.id);
+                     auto doc = std::make_shared<Document>(history_.current());
+                     auto notes = std::make_shared<std::vector<std::string>>();
                      startJob(
                          "Exporting " + std::filesystem::path(p).filename().string(),
-                         [snapshot, visible, p](Progress& progress) {
-                           progress.report(0.2, "writing");
+                         [snapshot, doc, notes, towns = townCache_, p](Progress& progress) {
+                           progress.report(0.1, "preparing");
+                           const compose::ExportableScene e =
+                               compose::exportableScene(*doc, *snapshot, towns.get(), nullptr);
+                           *notes = e.notes;
+                           progress.report(0.6, "writing");
                            ExportOptions opt;
-                           opt.include = [visible](ObjectId id) {
-                             return std::find(visible.begin(), visible.end(), id) != visible.end();
-                           };
-                           corbel::exportScene(*snapshot, p, opt);
+                           opt.textured = e.textured;
+                           opt.tagTextures = e.tagTextures;
+                           corbel::exportScene(e.scene, p, opt);
                            progress.report(1.0, "done");
                          },
-                         [this, p] { log("Exported " + p); });
+                         [this, p, notes] {
+                           for (const std::string& n : *notes) log("Export: " + n);
+                           log("Exported " + p);
+                         });
                    });
 }
 

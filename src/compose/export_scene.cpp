@@ -1,0 +1,50 @@
+#include "compose/export_scene.h"
+
+#include "kifs/kernel.h"
+#include "kifs/mesher.h"
+
+#include <map>
+
+namespace corbel::compose {
+
+ExportableScene exportableScene(const Document& doc, const Scene& built, const city::TownCache* towns,
+                                const std::function<bool(ObjectId)>& include, int kifsResolution) {
+  ExportableScene out;
+  out.scene = built;
+  const int resolution = kifsResolution > 0 ? kifsResolution : kExportKifsResolution;
+  auto picked = [&](const DocObject& o) { return include ? include(o.id) : o.visible; };
+  for (const auto& [id, info] : built.objects()) {
+    const DocObject* o = doc.find(id);
+    if (!o || !picked(*o)) out.scene.removeObject(id);
+  }
+  ObjectId next = doc.nextId();
+  std::map<ObjectId, ObjectId> townOf;  // a building's object → its town's
+  for (const DocObject& o : doc.objects) {
+    if (!picked(o)) continue;
+    if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0) {
+      out.scene.replaceObject(o.id, Kind::Ornament, o.name,
+                              kifs::meshBuilding(kifs::Building(kifs::paramsOf(*k)), resolution));
+      out.notes.push_back("KIFS building \"" + o.name + "\" is ray-marched in the view: meshed at " +
+                          std::to_string(resolution) + " cells along its longest side for the file");
+    } else if (std::holds_alternative<TownSpec>(o.spec) && towns) {
+      out.scene.removeObject(o.id);
+      std::size_t split = 0;
+      for (const city::BuiltBuilding& b : towns->buildings(o.id)) {
+        if (!b.error.empty()) continue;
+        out.scene.replaceObject(next, Kind::Shell, b.id, towns->mesh(o.id, b.id));
+        townOf[next++] = o.id;
+        ++split;
+      }
+      out.notes.push_back("town \"" + o.name + "\": one object per building (" + std::to_string(split) + ")");
+    }
+  }
+  out.textured = [townOf](ObjectId id) { return townOf.count(id) > 0; };
+  if (towns && !townOf.empty())
+    out.tagTextures = [townOf, base = towns->tagTextures()](ObjectId id, const std::string& tag) -> const SurfaceTexture* {
+      const auto it = townOf.find(id);
+      return base ? base(it == townOf.end() ? id : it->second, tag) : nullptr;
+    };
+  return out;
+}
+
+}  // namespace corbel::compose
