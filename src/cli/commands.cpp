@@ -316,7 +316,7 @@ void declareComplete(CLI::App& app, Requests& requests) {
   text(*c, "--complexity", r.complexity, "LO:HI", "The range of F_q, 0 <= LO <= HI < 0.5.")->required();
   whole(*c, "--count", r.count, 1, 64, "K", "How many forms.");
   text(*c, "--region", r.region, "X0,Y0,X1,Y1", "The region in meters (default 0,0,24,16; with --from, the gap).");
-  whole(*c, "--seed", r.seed, 0, 1ll << 62, "S", "The random seed.")->default_str("1");
+  whole(*c, "--seed", r.seed, 0, 1ll << 62, "S", "The random seed.");
   text(*c, "--out", r.out, kExportTypes, "Write the forms.");
   text(*c, "--render", r.render, "PNG", "Render the forms.");
 }

@@ -121,7 +121,7 @@ struct CompleteRequest {
   std::vector<std::string> entrances;
   std::string from, object, complexity, region, out, render;
   int count = 4;
-  long long seed = 0;
+  long long seed = 1;
 };
 
 struct CityRequest {

@@ -10,10 +10,12 @@
 #include "core/project_io.h"
 #include "core/scene.h"
 #include "growth/completion.h"
+#include "growth/constraints.h"
 #include "growth/entrances.h"
 #include "growth/form_fit.h"
 #include "growth/kernel.h"
 #include "growth/sizing.h"
+#include "growth/tolerances.h"
 #include "render/headless_context.h"
 
 #include <nlohmann/json.hpp>
@@ -136,9 +138,12 @@ int run(const CompleteRequest& r) {
     const growth::EntranceOptions eo = growth::storeyOptions(site, storey);
     const std::vector<growth::Box> obstacles = growth::entranceObstacles(site);
     if (!haveRegion) {
+      // The gap keeps the clearance the growth keeps from cores and circulation.
       const growth::Box b = site.bounds();
-      if (!growth::findGap(model.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, growth::kGapMinSide, growth::kGapMaxSide, region)) {
-        std::cerr << "corbel-cli: complete: no empty region of 5 to 16 m on storey " << storey
+      if (!growth::findGap(model.units, growth::clearanceZones(site), {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo,
+                           growth::kGapMinSide, growth::kGapMaxSide, region)) {
+        std::cerr << "corbel-cli: complete: no empty region of " << growth::kGapMinSide << " to " << growth::kGapMaxSide
+                  << " m on storey " << storey
                   << " of the grown model; give one with --region\n";
         return 1;
       }
@@ -188,6 +193,7 @@ int run(const CompleteRequest& r) {
   const double w = region.x1 - region.x0, h = region.y1 - region.y0, gap = 0.25 * std::min(w, h);
   j["forms"] = nlohmann::ordered_json::array();
   std::vector<growth::FittedForm> fitted;
+  std::vector<bool> fits;  // per form: it obeys the growth rules (always, without a model)
   int best = -1;
   for (std::size_t k = 0; k < set.forms.size(); ++k) {
     const growth::Form& f = set.forms[k];
@@ -195,8 +201,12 @@ int run(const CompleteRequest& r) {
     growth::FitOptions fo;
     fo.z0 = z0;
     fo.storeyHeight = storeyHeight;
+    if (!from.empty()) fo.roomWidth = growth::kMinPartWidth;  // among grown units, rooms as growth makes them
     fitted.push_back(growth::fitForm(f.plan, region, doors, fo));
     const growth::FittedForm& fit = fitted.back();
+    // Among a grown model the form obeys the growth rules, or it is refused.
+    const std::vector<std::string> broken =
+        from.empty() ? std::vector<std::string>{} : growth::formViolations(model.site, model.units, fit);
     int met = 0;
     for (const growth::EntranceFit& e : fit.entranceFits) met += e.realized;
 
@@ -227,17 +237,20 @@ int run(const CompleteRequest& r) {
     }
     nlohmann::ordered_json uj = nlohmann::ordered_json::array();
     for (const growth::Unit& u : fit.units)
-      uj.push_back({{"id", u.id}, {"area", u.floorArea()}, {"parts", u.parts.size()}});
-    fj["units"] = uj;
-    j["forms"].push_back(fj);
-    if (best < 0) {
-      best = int(k);
-    } else {
-      int bestMet = 0;
-      for (const growth::EntranceFit& e : fitted[std::size_t(best)].entranceFits) bestMet += e.realized;
-      if (met > bestMet || (met == bestMet && fit.areaError < fitted[std::size_t(best)].areaError)) best = int(k);
+    {
+      double least = INFINITY;  // the narrowest room, which the growth rules keep at 3 m or more
+      for (const growth::Box& b : u.parts) least = std::min({least, b.size(0), b.size(1)});
+      uj.push_back({{"id", u.id}, {"area", u.floorArea()}, {"parts", u.parts.size()}, {"least_width", least}});
     }
+    fj["units"] = uj;
+    if (!from.empty()) {
+      fj["fits_growth_rules"] = broken.empty();
+      if (!broken.empty()) fj["violations"] = broken;
+    }
+    j["forms"].push_back(fj);
+    fits.push_back(broken.empty());
   }
+  best = growth::bestFit(fitted, fits);
   if (best >= 0) j["best"] = best + 1;
 
   auto place = [&](std::vector<growth::Unit> units, std::size_t k, double dx, double dy) {
@@ -290,6 +303,12 @@ int run(const CompleteRequest& r) {
   std::cout << j.dump() << "\n";
   if (set.forms.empty()) {
     std::cerr << "corbel-cli: complete: no form reached the complexity range (" << set.note << ")\n";
+    return 1;
+  }
+  if (!from.empty() && best < 0) {
+    std::cerr << "corbel-cli: complete: none of the " << set.forms.size()
+              << " forms obeys the growth rules in the region (each form's \"violations\" say why); "
+                 "try another --region, --complexity, --seed or a larger --count\n";
     return 1;
   }
   return 0;

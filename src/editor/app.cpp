@@ -22,6 +22,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <thread>
 
@@ -97,6 +98,8 @@ App::~App() = default;
 
 void App::log(const std::string& line, bool error) {
   log_.push_back({line, error});
+  // A scripted run (tests, CI) has no one to read the panel: its log goes to stderr too.
+  if (scripted()) std::fprintf(stderr, "corbel: %s%s\n", error ? "error: " : "", line.c_str());
   while (log_.size() > 200) log_.pop_front();
 }
 

@@ -3,12 +3,15 @@
 #include "core/materials.h"
 #include "editor/completion_edits.h"
 #include "editor/completion_view.h"
+#include "growth/constraints.h"
+#include "growth/tolerances.h"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace corbel::editor {
 
@@ -67,11 +70,12 @@ std::pair<growth::EntranceOptions, std::vector<growth::Box>> CompletionPanel::en
 
 void CompletionPanel::gapRegion() {
   if (!model_) return;
-  const auto [eo, obstacles] = entranceSetup();
+  const growth::EntranceOptions eo = entranceSetup().first;
   const growth::Box b = model_->grown.site.bounds();
   growth::PlanRect gap;
-  if (growth::findGap(model_->grown.units, obstacles, {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, growth::kGapMinSide,
-                      growth::kGapMaxSide, gap)) {
+  // The gap keeps the clearance the growth keeps from cores and circulation.
+  if (growth::findGap(model_->grown.units, growth::clearanceZones(model_->grown.site),
+                      {b.lo[0], b.lo[1], b.hi[0], b.hi[1]}, eo, growth::kGapMinSide, growth::kGapMaxSide, gap)) {
     region_ = gap;
     regionSet_ = true;
   }
@@ -157,8 +161,30 @@ void CompletionPanel::generate(const CompletionHost& host) {
   rq.seed = std::uint64_t(std::max(0, seed_));
   auto result = std::make_shared<growth::FormSet>();
   const int seeds = rq.seeds;
+  // Among a grown model, batches from the next seeds follow (at most kRounds) until a form obeys
+  // the growth rules in the region: a shallow gap leaves many forms with a room under 3 m.
+  std::shared_ptr<const Model> model = fromModel_ ? model_ : nullptr;
+  auto work = [result, rq, model, region = region_, at = doors(), fo = fitOptions()](Progress& p) {
+    constexpr int kRounds = 4;
+    growth::FormRequest r = rq;
+    std::set<std::string> seen;
+    for (int round = 0; round < kRounds; ++round, ++r.seed) {
+      growth::FormSet batch = growth::generateForms(r, &p);
+      result->attempts += batch.attempts;
+      if (result->note.empty()) result->note = batch.note;
+      bool fits = false;
+      for (growth::Form& f : batch.forms) {
+        if (!seen.insert(f.topology).second) continue;
+        if (model && !fits)
+          fits = growth::formViolations(model->grown.site, model->grown.units, growth::fitForm(f.plan, region, at, fo))
+                     .empty();
+        result->forms.push_back(std::move(f));
+      }
+      if (!model || fits || p.cancelled()) break;
+    }
+  };
   run(
-      host, "Generating forms", [result, rq](Progress& p) { *result = growth::generateForms(rq, &p); },
+      host, "Generating forms", work,
       [this, result, seeds, log = host.log] {
         forms_ = std::move(*result);
         formsSeeds_ = seeds;
@@ -166,21 +192,61 @@ void CompletionPanel::generate(const CompletionHost& host) {
         fitted_.reset();
         status_ = std::to_string(forms_.forms.size()) + " forms of " + std::to_string(seeds) + " units" +
                   (forms_.note.empty() ? "" : " (" + forms_.note + ")");
+        judgeForms();
+        if (!formFits_.empty()) {
+          const int fitting = int(std::count(formFits_.begin(), formFits_.end(), true));
+          status_ += "; " + std::to_string(fitting) + (fitting == 1 ? " obeys" : " obey") +
+                     " the growth rules in the region";
+        }
         log("Form completion: " + status_, forms_.forms.empty());
       });
+}
+
+std::vector<Vec2> CompletionPanel::doors() const {
+  std::vector<Vec2> at;
+  if (fromModel_)
+    for (const growth::Entrance& e : entrances_) at.push_back(e.at);
+  return at;
+}
+
+growth::FitOptions CompletionPanel::fitOptions() const {
+  growth::FitOptions fo;
+  fo.z0 = storeyZ();
+  if (model_) {
+    fo.storeyHeight = model_->grown.site.storeyHeight;
+    fo.roomWidth = growth::kMinPartWidth;  // rooms as the growth makes them
+  }
+  return fo;
+}
+
+// Among a grown model each form is fitted into the region and judged by the growth rules; the
+// pick is the best that obeys them (as corbel-cli complete --from places it).
+void CompletionPanel::judgeForms() {
+  formFits_.clear();
+  if (!model_ || !fromModel_ || forms_.forms.empty()) return;
+  updateEntrances();
+  std::vector<growth::FittedForm> fitted;
+  for (const growth::Form& f : forms_.forms) {
+    try {
+      fitted.push_back(growth::fitForm(f.plan, region_, doors(), fitOptions()));
+      formFits_.push_back(growth::formViolations(model_->grown.site, model_->grown.units, fitted.back()).empty());
+    } catch (const std::exception&) {
+      fitted.emplace_back();
+      formFits_.push_back(false);
+    }
+  }
+  const int best = growth::bestFit(fitted, formFits_);
+  if (best >= 0) picked_ = best;
 }
 
 void CompletionPanel::fit(const CompletionHost& host) {
   if (!canFit()) return;
   updateEntrances();
-  std::vector<Vec2> at;
-  if (fromModel_)
-    for (const growth::Entrance& e : entrances_) at.push_back(e.at);
-  growth::FitOptions fo;
-  fo.z0 = storeyZ();
-  if (model_) fo.storeyHeight = model_->grown.site.storeyHeight;
+  const std::vector<Vec2> at = doors();
+  const growth::FitOptions fo = fitOptions();
   try {
     fitted_ = growth::fitForm(forms_.forms[std::size_t(picked_)].plan, region_, at, fo);
+    fittedViolations_.clear();
     fittedForm_ = picked_;
     fittedZ_ = fo.z0;
     fittedRegion_ = region_;
@@ -196,15 +262,15 @@ void CompletionPanel::fit(const CompletionHost& host) {
         if (!e.realized)
           host.log("Fit to region: entrance " + std::to_string(e.entrance + 1) + " not met: " + e.why, false);
     }
-    // The fit fills the region: say when grown units stand in it.
+    // Among a grown model the form obeys the growth rules (clearance, rooms 3 m wide, envelope,
+    // supports, no overlap), or it is not extruded: each broken rule goes to the log.
     if (model_) {
-      int clashes = 0;
-      for (const growth::Unit& f : fitted_->units)
-        for (const growth::Box& a : f.parts)
-          for (const growth::Unit& g : model_->grown.units)
-            for (const growth::Box& b : g.parts) clashes += growth::interiorsOverlap(a, b, 1e-6) ? 1 : 0;
-      if (clashes)
-        status_ += "; overlaps grown units in " + std::to_string(clashes) + " places (choose an empty region)";
+      fittedViolations_ = growth::formViolations(model_->grown.site, model_->grown.units, *fitted_);
+      if (!fittedViolations_.empty()) {
+        status_ += "; breaks " + std::to_string(fittedViolations_.size()) +
+                   " growth rules (see the log): choose another region or form";
+        for (const std::string& v : fittedViolations_) host.log("Fit to region: " + v, true);
+      }
     }
   } catch (const std::exception& e) {
     host.log(std::string("Fit to region: ") + e.what(), true);
@@ -387,9 +453,11 @@ void CompletionPanel::drawThumbnails(float w) {
       if (picked_ != i) fitted_.reset();
       picked_ = i;
     }
+    const bool breaks = i < int(formFits_.size()) && !formFits_[std::size_t(i)];
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("form %d: %s, %d moves\ntopology %s", i + 1, fq(f.complexity).c_str(), f.moves,
-                        f.topology.substr(0, 60).c_str());
+      ImGui::SetTooltip("form %d: %s, %d moves\ntopology %s%s", i + 1, fq(f.complexity).c_str(), f.moves,
+                        f.topology.substr(0, 60).c_str(),
+                        breaks ? "\nbreaks the growth rules in this region (Fit to region says which)" : "");
     const bool sel = picked_ == i;
     dl->AddRectFilled(p, ImVec2(p.x + cw, p.y + ch), sel ? IM_COL32(55, 60, 75, 255) : IM_COL32(36, 38, 44, 255));
     for (const CellRect& r : thumbnailRects(f.plan, {p.x, p.y, cw, ch}, 5.0f)) {
@@ -399,8 +467,10 @@ void CompletionPanel::drawThumbnails(float w) {
     if (sel) dl->AddRect(p, ImVec2(p.x + cw, p.y + ch), IM_COL32(255, 215, 50, 255), 0, 0, 2.0f);
     const growth::Fraction v = f.complexity.value();
     char text[48];
-    std::snprintf(text, sizeof text, "F_q %lld/%lld", static_cast<long long>(v.num), static_cast<long long>(v.den));
-    dl->AddText(ImVec2(p.x + 2, p.y + ch + 2), IM_COL32(220, 220, 220, 255), text);
+    std::snprintf(text, sizeof text, "F_q %lld/%lld%s", static_cast<long long>(v.num), static_cast<long long>(v.den),
+                  breaks ? " (breaks rules)" : "");
+    dl->AddText(ImVec2(p.x + 2, p.y + ch + 2), breaks ? IM_COL32(240, 110, 100, 255) : IM_COL32(220, 220, 220, 255),
+                text);
     ImGui::PopID();
   }
 }

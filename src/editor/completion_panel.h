@@ -53,7 +53,9 @@ class CompletionPanel {
   void fit(const CompletionHost& host);
   void extrude(const CompletionHost& host);
   bool canFit() const { return picked_ >= 0 && picked_ < int(forms_.forms.size()); }
-  bool canExtrude() const { return fitted_.has_value(); }
+  // A fitted form may become units when it obeys the growth rules among the grown model's.
+  bool canExtrude() const { return fitted_.has_value() && fittedViolations_.empty(); }
+  const std::vector<std::string>& fittedViolations() const { return fittedViolations_; }
 
  private:
   struct Model {
@@ -98,6 +100,11 @@ class CompletionPanel {
   int formsSeeds_ = 0;
   int picked_ = -1;
   std::optional<growth::FittedForm> fitted_;
+  std::vector<std::string> fittedViolations_;  // growth::formViolations of fitted_ in the model
+  std::vector<bool> formFits_;  // per form, among a grown model: it obeys the growth rules in the region
+  std::vector<Vec2> doors() const;               // the entrances a fit is to meet
+  growth::FitOptions fitOptions() const;
+  void judgeForms();
   int fittedForm_ = -1;
   double fittedZ_ = 0;
   growth::PlanRect fittedRegion_{};

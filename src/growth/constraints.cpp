@@ -7,11 +7,14 @@
 
 namespace corbel::growth {
 
-ConstraintEnforcer::ConstraintEnforcer(const Site& site) : site_(site) {
-  for (std::size_t i = 0; i < site.cores.size(); ++i)
-    zones_.push_back(grownInPlan(site.coreBox(i), site.coreClearance));
-  for (const Box& c : site.circulation) zones_.push_back(grownInPlan(c, site.circulationClearance));
+std::vector<Box> clearanceZones(const Site& site) {
+  std::vector<Box> zones;
+  for (std::size_t i = 0; i < site.cores.size(); ++i) zones.push_back(grownInPlan(site.coreBox(i), site.coreClearance));
+  for (const Box& c : site.circulation) zones.push_back(grownInPlan(c, site.circulationClearance));
+  return zones;
 }
+
+ConstraintEnforcer::ConstraintEnforcer(const Site& site) : site_(site), zones_(clearanceZones(site)) {}
 
 namespace {
 

@@ -27,6 +27,9 @@
 
 namespace corbel::growth {
 
+// The cores and the circulation grown by their clearances: where no unit may be.
+std::vector<Box> clearanceZones(const Site& site);
+
 struct Verdict {
   bool ok = false;
   Move move;           // the move to commit (an advance may be trimmed)

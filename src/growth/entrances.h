@@ -33,8 +33,10 @@ struct EntranceOptions {
 // `corbel-cli complete --from` read a grown model through these.
 EntranceOptions storeyOptions(const Site& site, int storey);
 std::vector<Box> entranceObstacles(const Site& site);
-// The sides of a gap the completion looks for in a grown model (findGap), metres.
-inline constexpr double kGapMinSide = 5, kGapMaxSide = 16;
+// The sides of a gap the completion looks for in a grown model (findGap), metres: at least two
+// rooms of the growth's least width (kMinPartWidth, 3 m) and a metre between, so a form whose
+// rooms stand two deep fits (a 6 m gap left every such form with a room under 3 m).
+inline constexpr double kGapMinSide = 7, kGapMaxSide = 16;
 
 // Ordered by unit id. Obstacles (cores, circulation) block a face like another unit does.
 std::vector<Entrance> entrancesInRegion(const std::vector<Unit>& units, const PlanRect& region,

@@ -1,11 +1,13 @@
 #include "growth/form_fit.h"
 
 #include "core/error.h"
+#include "growth/constraints.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace corbel::growth {
 
@@ -262,31 +264,83 @@ FittedForm fitForm(const Floorplan& plan, const PlanRect& region, const std::vec
   const Layout grid = Layout::of(Cartogram::of(plan));
 
   FittedForm out;
-  double bestCost = std::numeric_limits<double>::infinity();
+  const double minWidth = std::min(0.5, 0.05 * std::min(region.x1 - region.x0, region.y1 - region.y0));
+  SizingOptions so;
+  so.minWidth = minWidth;
+  so.roomWidth = options.roomWidth;
+  // With a room width every orientation is sized and the one whose rooms fall least short of
+  // it wins (a form laid across a shallow region has rooms a metre wide); then the entrances.
+  const bool byRooms = options.size && options.roomWidth > 0;
+  double bestShort = std::numeric_limits<double>::infinity(), bestCost = bestShort;
   const int first = options.orientation >= 0 ? options.orientation : 0;
-  const int last = options.orientation >= 0 ? options.orientation : (entrances.empty() ? 0 : 7);
+  const int last = options.orientation >= 0 ? options.orientation : (entrances.empty() && !byRooms ? 0 : 7);
   for (int g = first; g <= last; ++g) {
     Layout l = laidOut(grid, g, region);
+    SizingResult sized;
+    if (byRooms) sized = sizeGeometry(l, so);
+    const double shortfall = byRooms ? roomShortfall(l, options.roomWidth) : 0.0;
     std::vector<int> taken;
     const double cost = assign(l, region, n, entrances, options.doorWidth, taken);
-    if (cost < bestCost - 1e-9) {
+    if (shortfall < bestShort - 1e-9 || (shortfall < bestShort + 1e-9 && cost < bestCost - 1e-9)) {
+      bestShort = shortfall;
       bestCost = cost;
       out.layout = std::move(l);
       out.orientation = g;
+      out.sizing = sized;
     }
   }
-  const double minWidth = std::min(0.5, 0.05 * std::min(region.x1 - region.x0, region.y1 - region.y0));
-  if (options.size) {
-    SizingOptions so;
-    so.minWidth = minWidth;
-    out.sizing = sizeGeometry(out.layout, so);
-  }
+  if (options.size && !byRooms) out.sizing = sizeGeometry(out.layout, so);
   out.entranceCost = assign(out.layout, region, n, entrances, options.doorWidth, out.entranceOf, &out.entranceDistance);
   if (options.realizeEntrances && !entrances.empty())
     out.entranceFits = realizeEntrances(out.layout, region, entrances, out.entranceOf, options.doorWidth, minWidth);
   out.areaError = maxAreaError(out.layout);
   out.units = sizedUnits(out.layout, n, options.z0, options.storeyHeight);
   return out;
+}
+
+std::vector<std::string> formViolations(const Site& site, const std::vector<Unit>& units, const FittedForm& form) {
+  const ConstraintEnforcer rules(site);
+  int maxId = 0;
+  for (const Unit& u : units) maxId = std::max(maxId, u.id);
+  // The form's units first, so a clash between one and a model's unit is reported as the form's.
+  std::vector<Unit> all;
+  for (const Unit& u : form.units) {
+    all.push_back(u);
+    all.back().id = maxId + u.id;
+  }
+  all.insert(all.end(), units.begin(), units.end());
+  std::set<std::string> before;  // what the model breaks on its own is not the form's
+  for (std::string& v : rules.violations(units)) before.insert(std::move(v));
+  std::vector<std::string> out;
+  for (std::string& v : rules.violations(all)) {
+    if (before.count(v)) continue;
+    // "unit N ..." of a form unit → "form unit K ..."
+    if (v.rfind("unit ", 0) == 0) {
+      const std::size_t end = v.find_first_not_of("0123456789", 5);
+      const int id = std::stoi(v.substr(5, end - 5));
+      if (id > maxId) v = "form unit " + std::to_string(id - maxId) + v.substr(end);
+    }
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+int bestFit(const std::vector<FittedForm>& forms, const std::vector<bool>& fits) {
+  auto met = [](const FittedForm& f) {
+    return std::count_if(f.entranceFits.begin(), f.entranceFits.end(), [](const EntranceFit& e) { return e.realized; });
+  };
+  int best = -1;
+  for (std::size_t k = 0; k < forms.size() && k < fits.size(); ++k) {
+    if (!fits[k]) continue;
+    if (best < 0) {
+      best = int(k);
+      continue;
+    }
+    const FittedForm& a = forms[k];
+    const FittedForm& b = forms[std::size_t(best)];
+    if (met(a) > met(b) || (met(a) == met(b) && a.areaError < b.areaError)) best = int(k);
+  }
+  return best;
 }
 
 }  // namespace corbel::growth

@@ -9,6 +9,7 @@
 // staircase edge moves of realizeBySegments, keeping the entrances realized before it in place.
 #include "growth/cartogram.h"
 #include "growth/floorplan.h"
+#include "growth/site.h"
 #include "growth/sizing.h"
 #include "growth/unit.h"
 
@@ -23,6 +24,7 @@ struct FitOptions {
   int orientation = -1;          // 0 .. 7 to force one (bit 2: mirror x; bits 0-1: quarter turns); -1: choose
   bool realizeEntrances = true;  // move the layout's segments so each unit opens onto its entrance
   double doorWidth = 1.0;        // how much of the region's side a unit must share at its entrance (m)
+  double roomWidth = 0;          // SizingOptions::roomWidth: kMinPartWidth in a grown model, 0 alone
 };
 
 // What became of one taken entrance.
@@ -57,5 +59,15 @@ Vec2 orient(int orientation, const Vec2& p);
 // Throws InputError for an empty plan or a degenerate region.
 FittedForm fitForm(const Floorplan& plan, const PlanRect& region, const std::vector<Vec2>& entrances = {},
                    const FitOptions& options = {});
+
+// The growth rules (growth/constraints.h: envelope, clearance from cores and circulation, no
+// overlap, rooms at least 3 m x 3 m, supports) that the fitted form's units break among the
+// grown model's `units`, one sentence each; the form's units are named "form unit K" (K from
+// 1), the model's "unit ID". Empty: the form may stand in the model.
+std::vector<std::string> formViolations(const Site& site, const std::vector<Unit>& units, const FittedForm& form);
+
+// The form to place among fitted ones: of those that obey the growth rules (fits[k]), the one
+// that meets the most doors, then has the least area error (the first of equals); -1 if none.
+int bestFit(const std::vector<FittedForm>& forms, const std::vector<bool>& fits);
 
 }  // namespace corbel::growth

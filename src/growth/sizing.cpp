@@ -12,8 +12,11 @@ namespace corbel::growth {
 namespace {
 
 struct Score {
+  double narrow = 0;  // Σ over sub-unit rectangles of how much narrower than the room width they are
   double worst = 0, squares = 0;
   bool operator<(const Score& o) const {
+    if (narrow < o.narrow - 1e-12) return true;
+    if (narrow > o.narrow + 1e-12) return false;
     if (worst < o.worst - 1e-12) return true;
     if (worst > o.worst + 1e-12) return false;
     return squares < o.squares - 1e-12;
@@ -41,13 +44,14 @@ double rectError(const Layout& l, std::size_t i, double M, double m) {
   return l.unit[i] >= 0 ? std::abs(a - M) / M : std::max(0.0, a - m) / M;
 }
 
-Score score(const Layout& l, double M, double m) {
+Score score(const Layout& l, double M, double m, double roomWidth) {
   Score s;
   for (std::size_t i = 0; i < l.rects.size(); ++i) {
     const double e = rectError(l, i, M, m);
     if (l.unit[i] >= 0) s.worst = std::max(s.worst, e);
     s.squares += e * e;
   }
+  s.narrow = roomShortfall(l, roomWidth);
   return s;
 }
 
@@ -100,9 +104,11 @@ std::vector<Segment> segmentsOf(const Layout& l, const Box2& box) {
   return out;
 }
 
-// How far a segment may move: its neighbouring rectangles keep minWidth, and its ends stay
-// between the nearest other corners on the lines they lie on.
-std::pair<double, double> range(const Layout& l, const Segment& s, double minWidth) {
+// How far a segment may move: its neighbouring rectangles keep minWidth (sub-unit rectangles
+// roomWidth, when larger; one already narrower may only widen), and its ends stay between the
+// nearest other corners on the lines they lie on.
+std::pair<double, double> range(const Layout& l, const Segment& s, double minWidth, double roomWidth = 0) {
+  auto widthOf = [&](std::size_t i) { return l.unit[i] >= 0 ? std::max(minWidth, roomWidth) : minWidth; };
   PlanRect any = l.rects[s.before.empty() ? s.after[0] : s.before[0]];
   const double c = s.before.empty() ? lowSide(any, s.axis) : highSide(any, s.axis);
   // Its ends now (the segments it ends on may have moved since it was found).
@@ -113,11 +119,11 @@ std::pair<double, double> range(const Layout& l, const Segment& s, double minWid
   double lo = -INFINITY, hi = INFINITY;
   for (std::size_t i : s.before) {
     PlanRect r = l.rects[i];
-    lo = std::max(lo, lowSide(r, s.axis) + minWidth);
+    lo = std::max(lo, lowSide(r, s.axis) + widthOf(i));
   }
   for (std::size_t i : s.after) {
     PlanRect r = l.rects[i];
-    hi = std::min(hi, highSide(r, s.axis) - minWidth);
+    hi = std::min(hi, highSide(r, s.axis) - widthOf(i));
   }
   for (const PlanRect& r0 : l.rects) {
     PlanRect r = r0;
@@ -243,6 +249,13 @@ int Layout::subUnits() const {
   return int(std::count_if(unit.begin(), unit.end(), [](int u) { return u >= 0; }));
 }
 
+double roomShortfall(const Layout& l, double roomWidth) {
+  double sum = 0;
+  for (std::size_t i = 0; i < l.rects.size(); ++i)
+    if (l.unit[i] >= 0) sum += std::max(0.0, roomWidth - std::min(l.rects[i].x1 - l.rects[i].x0, l.rects[i].y1 - l.rects[i].y0));
+  return sum;
+}
+
 double maxAreaError(const Layout& l) {
   const double M = target(l);
   double worst = 0;
@@ -259,7 +272,7 @@ SizingResult sizeGeometry(Layout& l, const SizingOptions& o) {
   out.before = maxAreaError(l);
   const std::vector<Segment> segs = segmentsOf(l, box);  // the arrangement never changes
   out.segments = int(segs.size());
-  Score now = score(l, M, m);
+  Score now = score(l, M, m, o.roomWidth);
   double delta = 0.125 * std::min(box.x1 - box.x0, box.y1 - box.y0);
   const double stop = 1e-4 * std::max(box.x1 - box.x0, box.y1 - box.y0);
   while (out.passes < o.maxPasses && delta > stop) {
@@ -276,14 +289,14 @@ SizingResult sizeGeometry(Layout& l, const SizingOptions& o) {
     bool moved = false;
     for (std::size_t k : order) {
       const Segment& s = segs[k];
-      const auto [lo, hi] = range(l, s, o.minWidth);
+      const auto [lo, hi] = range(l, s, o.minWidth, o.roomWidth);
       double bestD = 0;
       Score best = now;
       for (double step : {delta, -delta}) {
         const double d = std::clamp(step, std::min(0.0, lo), std::max(0.0, hi));
         if (d == 0) continue;
         shift(l, s, d);
-        const Score sc = score(l, M, m);
+        const Score sc = score(l, M, m, o.roomWidth);
         shift(l, s, -d);
         if (sc < best) best = sc, bestD = d;
       }

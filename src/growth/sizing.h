@@ -7,7 +7,7 @@
 // collinear rectangle sides inside the box; moving it moves every side on it. Each pass
 // visits the segments next to the worst-sized rectangles first and moves one by ±δ when that
 // lowers the largest sub-unit error |A − M| / M (ties: the sum of squared errors of all
-// rectangles); δ halves after a pass with no move. A segment keeps every rectangle next to
+// rectangles; with a room width, the rooms' shortfall from it first); δ halves after a pass with no move. A segment keeps every rectangle next to
 // it at least minWidth wide and never slides past a corner on the segments its ends lie on,
 // so no rectangle inverts and the order of corners along every segment, hence ≺x and ≺z,
 // is kept.
@@ -28,6 +28,10 @@ struct SizingOptions {
   int maxPasses = 400;
   double minWidth = 0.5;
   double seaShare = 0.05;
+  // The least width of a room (a sub-unit rectangle) where the form is to obey the growth
+  // rules (kMinPartWidth); 0: none. Moves that widen a narrower room come before any other
+  // (the sum of the rooms' shortfalls is compared first), and none makes a room narrower.
+  double roomWidth = 0;
 };
 
 struct SizingResult {
@@ -47,6 +51,8 @@ bool realizeBySegments(Layout& l, const std::vector<Correspondence>& targets, do
                        std::string* why = nullptr);
 
 double maxAreaError(const Layout& l);
+// How much narrower than `roomWidth` the sub-unit rectangles are, summed (0: none is).
+double roomShortfall(const Layout& l, double roomWidth);
 SizingResult sizeGeometry(Layout& l, const SizingOptions& options = {});
 
 // Stretches the cartogram onto `region` (its outer lines onto the region's sides).

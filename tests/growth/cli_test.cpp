@@ -199,7 +199,7 @@ std::map<std::string, std::vector<std::array<double, 3>>> objVertices(const std:
 TEST(CompleteCli, FromAGrownModelMeetsTheDoorsOfItsEntrances) {
   const std::string project = std::string(CORBEL_SOURCE_DIR) + "/assets/examples/housing-alpha.corbel";
   const std::string obj = testing::TempDir() + "complete-alpha.obj";
-  const CliRun r = cli("complete --from " + project + " --storey 1 --complexity 0.25:0.40 --count 3 --out " + obj);
+  const CliRun r = cli("complete --from " + project + " --storey 0 --complexity 0.2:0.45 --count 8 --out " + obj);
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   const auto& region = j["region"];
@@ -247,6 +247,7 @@ TEST(CompleteCli, FromAGrownModelMeetsTheDoorsOfItsEntrances) {
     }
   }
   EXPECT_GE(met, 1);
+  EXPECT_TRUE(j["forms"][best - 1]["fits_growth_rules"].get<bool>());
   int grown = 0, formUnits = 0;
   for (const auto& [name, v] : objects) {
     grown += name.rfind("unit_", 0) == 0;
@@ -254,6 +255,26 @@ TEST(CompleteCli, FromAGrownModelMeetsTheDoorsOfItsEntrances) {
   }
   EXPECT_GT(grown, 10);
   EXPECT_EQ(formUnits, int(seeds));
+}
+
+// The region the completion finds on storey 1 has no grown unit under it: no form placed there
+// is supported, and none is placed.
+TEST(CompleteCli, FormsThatBreakTheGrowthRulesAreRefused) {
+  const std::string project = std::string(CORBEL_SOURCE_DIR) + "/assets/examples/housing-alpha.corbel";
+  const CliRun ground = cli("complete --from " + project + " --storey 0 --complexity 0.2:0.45 --count 8");
+  const CliRun above = cli("complete --from " + project + " --storey 1 --complexity 0.2:0.45 --count 8");
+  ASSERT_EQ(ground.code, 0) << ground.out;
+  ASSERT_EQ(above.code, 1) << above.out;
+  EXPECT_NE(above.out.find("forms obeys the growth rules"), std::string::npos) << above.out;
+  const auto a = nlohmann::json::parse(above.out.substr(0, above.out.find('\n')));
+  EXPECT_FALSE(a.contains("best"));
+  for (const auto& f : a["forms"]) {
+    EXPECT_FALSE(f["fits_growth_rules"].get<bool>());
+    bool unsupported = false;
+    for (const auto& v : f["violations"])
+      unsupported = unsupported || v.get<std::string>().find("reaches beyond its supports") != std::string::npos;
+    EXPECT_TRUE(unsupported) << f["violations"];
+  }
 }
 
 TEST(CompleteCli, EntrancesAndModelsAreCheckedBeforeAnythingRuns) {
