@@ -349,6 +349,18 @@ TEST(TownLimits, TheCliBuildsTheSharpCornerAndRefusesTheHugeFootprintCheaply) {
   while (std::getline(report, line)) {
     const nlohmann::json j = nlohmann::json::parse(line);
     EXPECT_TRUE(j["ok"].get<bool>()) << line;
+    // Each line gives the footprint's area and depth: the 12 x 9 m house is 108 m² and 9 m deep
+    // (its shorter side; the depth is found to 5 cm of radius, written to 1 cm); the triangle 60 m x 60 tan 4° has area
+    // 1800 tan 4° = 125.87 m² and depth twice its inradius, 2 area / semi-perimeter.
+    if (j["id"] == "house") {
+      EXPECT_EQ(j["area"], 108) << line;
+      EXPECT_NEAR(j["depth"].get<double>(), 9, 0.105) << line;
+    }
+    if (j["id"] == "sharp") {
+      const double h = 60 * std::tan(4 * kDeg), area = 30 * h, semi = (60 + h + std::hypot(60, h)) / 2;
+      EXPECT_NEAR(j["area"].get<double>(), area, 0.005) << line;
+      EXPECT_NEAR(j["depth"].get<double>(), 2 * area / semi, 0.105) << line;
+    }
     if (j["id"] == "sharp")
       warned = j.contains("warnings") &&
                j["warnings"][0].get<std::string>().find("without their overhang") != std::string::npos;
@@ -364,4 +376,28 @@ TEST(TownLimits, TheCliBuildsTheSharpCornerAndRefusesTheHugeFootprintCheaply) {
   EXPECT_EQ(summary["refused"], 1);
   ASSERT_GT(plain.peakKb, 0);
   EXPECT_LT(big.peakKb, plain.peakKb * 6 / 5) << big.peakKb << " kB against " << plain.peakKb << " kB";
+}
+
+// Corners from just above the clean-up's 3° spike limit up: a triangle 60 m long with such a
+// corner builds in every shipped style, at every level of detail, whatever type it draws.
+TEST(TownLimits, SharpCornersBuildInEveryShippedStyle) {
+  for (const char* name : {"suburban", "oldtown", "modern", "mixed"}) {
+    const Style style = loadStyle(kStyles + name + ".json");
+    for (const double degrees : {3.01, 3.5, 4.0, 6.0, 10.0}) {
+      Town town;
+      for (std::uint64_t seed = 0; seed < 3; ++seed) {
+        // Each a copy 100 m apart, so the seed draws vary with the id.
+        std::vector<Vec2> ring{{0, 0}, {60, 0}, {0, 60 * std::tan(degrees * kDeg)}};
+        for (Vec2& p : ring) p += Vec2(100.0 * static_cast<double>(seed), 0);
+        town.buildings.push_back(building("sharp " + std::to_string(seed), ring));
+        ASSERT_EQ(town.buildings.back().problem, "") << degrees;
+      }
+      std::vector<BuildingLabels> labels;
+      for (const Building& b : town.buildings) labels.push_back(labelsOf(b));
+      const TownSummary sum = buildTown(town, labels, style, {}, [&](const BuildingReport& r, MeshData*) {
+        EXPECT_TRUE(r.ok) << name << " " << degrees << "° " << r.id << " (" << r.type << "): " << r.error;
+      });
+      EXPECT_EQ(sum.ok, town.buildings.size()) << name << " " << degrees;
+    }
+  }
 }
