@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <queue>
 
 namespace corbel::city {
 
@@ -46,6 +47,20 @@ std::string describe(double v) {
   return buf;
 }
 
+// Two decimals.
+std::string decimals(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+// Whole metres up to 10,000 km, else three significant digits.
+std::string metres(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, v < 1e7 ? "%.0f" : "%.3g", v);
+  return buf;
+}
+
 // Drops corners of one ring as `drop(prev, p, next)` says, until none is dropped; returns how many.
 std::size_t dropCorners(std::vector<Vec2>& ring,
                         const std::function<bool(const Vec2&, const Vec2&, const Vec2&)>& drop) {
@@ -67,6 +82,33 @@ std::size_t dropCorners(std::vector<Vec2>& ring,
   return removed;
 }
 
+double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+// Distance from p to the segment ab (to a when the segment has no length).
+double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double len2 = d.sqrnorm();
+  if (len2 == 0) return (p - a).norm();
+  const double t = std::clamp((p - a).dot(d) / len2, 0.0, 1.0);
+  return (p - (a + d * t)).norm();
+}
+
+// Signed distance from p to the loops' boundary: positive inside (even-odd over all loops).
+double signedBoundaryDistance(const Vec2& p, const std::vector<std::vector<Vec2>>& loops) {
+  bool inside = false;
+  double best = INFINITY;
+  for (const auto& ring : loops)
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const Vec2 &a = ring[i], &b = ring[j];
+      if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
+        inside = !inside;
+      best = std::min(best, segmentDistance(p, a, b));
+    }
+  return inside ? best : -best;
+}
+
 }  // namespace
 
 double haversine(double lon1, double lat1, double lon2, double lat2, double radius) {
@@ -81,8 +123,140 @@ Vec2 project(const Frame& f, double lon, double lat) {
   return {f.radius * std::cos(f.lat0 * kDeg) * (lon - f.lon0) * kDeg, f.radius * (lat - f.lat0) * kDeg};
 }
 
+double diameter(const std::vector<Vec2>& points) {
+  std::vector<Vec2> p(points);
+  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p.size() == 2 ? (p[1] - p[0]).norm() : 0.0;
+  // Andrew's monotone chain: the hull counter-clockwise, without colinear points.
+  std::vector<Vec2> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  const std::size_t h = hull.size();
+  if (h < 3) return (hull.back() - hull.front()).norm();
+  // Rotating calipers: for each hull edge the vertex farthest from its line, found by walking on.
+  double best = 0;
+  for (std::size_t i = 0, j = 1; i < h; ++i) {
+    const Vec2 &a = hull[i], &b = hull[(i + 1) % h];
+    while (cross(a, b, hull[(j + 1) % h]) > cross(a, b, hull[j])) j = (j + 1) % h;
+    best = std::max({best, (hull[j] - a).norm(), (hull[j] - b).norm()});
+  }
+  return best;
+}
+
+std::vector<Vec2> simplifyRing(const std::vector<Vec2>& ring, double tolerance, double* worst) {
+  const std::size_t n = ring.size();
+  if (worst) *worst = 0;
+  if (n <= 3) return ring;
+  // Two corners that any simplification keeps: the lowest-leftmost (a vertex of the convex hull)
+  // and the corner farthest from it. Each of the two chains between them is split at its corner
+  // farthest from the chord until every corner lies within the tolerance of its chord.
+  std::size_t a = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (ring[i][0] < ring[a][0] || (ring[i][0] == ring[a][0] && ring[i][1] < ring[a][1])) a = i;
+  std::size_t b = a;
+  for (std::size_t i = 0; i < n; ++i)
+    if ((ring[i] - ring[a]).sqrnorm() > (ring[b] - ring[a]).sqrnorm()) b = i;
+  if (b == a) return {ring[a]};
+  std::vector<char> keep(n, 0);
+  keep[a] = keep[b] = 1;
+  double far = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> todo{{a, b}, {b, a}};  // chains from first to second, forward
+  while (!todo.empty()) {
+    const auto [from, to] = todo.back();
+    todo.pop_back();
+    std::size_t split = n;
+    double most = -1;
+    for (std::size_t k = (from + 1) % n; k != to; k = (k + 1) % n)
+      if (const double d = segmentDistance(ring[k], ring[from], ring[to]); d > most) {
+        most = d;
+        split = k;
+      }
+    if (split == n) continue;  // neighbours
+    if (most > tolerance) {
+      keep[split] = 1;
+      todo.push_back({from, split});
+      todo.push_back({split, to});
+    } else {
+      far = std::max(far, most);
+    }
+  }
+  // The two starting corners go too where the outline stays within the tolerance without them.
+  std::size_t kept = 0;
+  for (char c : keep) kept += c;
+  for (const std::size_t s : {a, b}) {
+    if (kept <= 3) break;
+    std::size_t prev = (s + n - 1) % n, next = (s + 1) % n;
+    while (!keep[prev]) prev = (prev + n - 1) % n;
+    while (!keep[next]) next = (next + 1) % n;
+    double most = 0;
+    for (std::size_t k = (prev + 1) % n; k != next; k = (k + 1) % n)
+      most = std::max(most, segmentDistance(ring[k], ring[prev], ring[next]));
+    if (most <= tolerance) {
+      keep[s] = 0;
+      --kept;
+      far = std::max(far, most);
+    }
+  }
+  std::vector<Vec2> out;
+  out.reserve(kept);
+  for (std::size_t i = 0; i < n; ++i)
+    if (keep[i]) out.push_back(ring[i]);
+  if (worst) *worst = far;
+  return out;
+}
+
+double inscribedDepth(const std::vector<std::vector<Vec2>>& loops, double precision) {
+  if (loops.empty() || loops[0].size() < 3) return 0;
+  Vec2 lo = loops[0][0], hi = loops[0][0];
+  for (const Vec2& p : loops[0]) {
+    lo = lo.min(p);
+    hi = hi.max(p);
+  }
+  const double size = std::min(hi[0] - lo[0], hi[1] - lo[1]);
+  if (!(size > 0)) return 0;
+  struct Cell {
+    Vec2 c;
+    double half, d, bound;  // half its side; the distance at its centre; the most any point in it can have
+  };
+  auto cell = [&](const Vec2& c, double half) {
+    const double d = signedBoundaryDistance(c, loops);
+    return Cell{c, half, d, d + half * std::numbers::sqrt2};
+  };
+  auto lower = [](const Cell& x, const Cell& y) { return x.bound < y.bound; };
+  std::priority_queue<Cell, std::vector<Cell>, decltype(lower)> cells(lower);
+  for (double x = lo[0]; x < hi[0]; x += size)
+    for (double y = lo[1]; y < hi[1]; y += size) cells.push(cell(Vec2(x + size / 2, y + size / 2), size / 2));
+  Cell best = cell((lo + hi) / 2, 0);
+  while (!cells.empty()) {
+    const Cell c = cells.top();
+    cells.pop();
+    if (c.d > best.d) best = c;
+    if (c.bound - best.d <= precision) continue;
+    const double h = c.half / 2;
+    for (const Vec2 off : {Vec2(-h, -h), Vec2(h, -h), Vec2(-h, h), Vec2(h, h)}) cells.push(cell(c.c + off, h));
+  }
+  return 2 * std::max(best.d, 0.0);
+}
+
 void cleanBuilding(Building& b, const CleanupOptions& o) {
   if (!b.problem.empty()) return;
+  // Its size first, before any work that grows with it (the neighbour grid of the labels, rows
+  // of windows and dormers).
+  if (!b.loops.empty())
+    if (const double across = diameter(b.loops[0]); !(across <= o.maxAcross)) {
+      b.problem = "too large: " + metres(across) + " m across (the farthest two corners), over the " +
+                  metres(o.maxAcross) + " m a building may span";
+      return;
+    }
   std::vector<std::vector<Vec2>> kept;
   for (std::size_t li = 0; li < b.loops.size(); ++li) {
     auto& ring = b.loops[li];
@@ -106,18 +280,20 @@ void cleanBuilding(Building& b, const CleanupOptions& o) {
     if (spikes)
       b.notes.push_back(where + std::to_string(spikes) + " spike corner(s) sharper than " + describe(o.spikeDegrees) +
                         "° removed");
-    // Colinear corners: within `colinear` of the chord between their neighbours, and between them.
-    const std::size_t straight = dropCorners(ring, [&](const Vec2& a, const Vec2& p, const Vec2& c) {
-      const Vec2 d = c - a;
-      const double len = d.norm();
-      if (len == 0) return false;
-      const double t = (p - a).dot(d) / (len * len);
-      const double off = std::abs(d[0] * (p[1] - a[1]) - d[1] * (p[0] - a[0])) / len;
-      return t > 0 && t < 1 && off < o.colinear;
-    });
-    if (straight)
-      b.notes.push_back(where + std::to_string(straight) + " colinear corner(s) within " + describe(o.colinear) +
-                        " m of their neighbours' line removed");
+    // Corners the outline does without: Douglas-Peucker within `colinear`, which never chains
+    // (each dropped corner is measured against the corners kept around it, not against a
+    // neighbour that was itself dropped), so a dense ring keeps its shape.
+    if (ring.size() > 3) {
+      double off = 0;
+      std::vector<Vec2> simple = simplifyRing(ring, o.colinear, &off);
+      if (simple.size() != ring.size()) {
+        const double before = std::abs(signedArea(ring)), after = std::abs(signedArea(simple));
+        b.notes.push_back(where + std::to_string(ring.size() - simple.size()) + " corner(s) within " +
+                          describe(o.colinear) + " m of the outline through the corners kept removed (the farthest " +
+                          describe(off) + " m off; area " + decimals(before) + " -> " + decimals(after) + " m²)");
+        ring = std::move(simple);
+      }
+    }
     const double area = std::abs(signedArea(ring));
     if (ring.size() < 3 || area == 0) {
       if (li == 0) {
@@ -144,9 +320,19 @@ void cleanBuilding(Building& b, const CleanupOptions& o) {
     b.problem = "tiny building: " + describe(area) + " m² is under " + describe(o.minArea) + " m²";
     return;
   }
-  if (const double width = 2 * area / per; width < o.minWidth)
+  if (const double width = 2 * area / per; width < o.minWidth) {
     b.problem = "sliver: about " + describe(width) + " m wide on average (2 area / perimeter), under " +
                 describe(o.minWidth) + " m";
+    return;
+  }
+  // Depth to 5 cm or half a percent of the outline's narrower extent, whichever is more: size
+  // rules need no finer, and the search's cost grows as the ridge's length over the precision.
+  Vec2 lo = b.loops[0][0], hi = b.loops[0][0];
+  for (const Vec2& p : b.loops[0]) {
+    lo = lo.min(p);
+    hi = hi.max(p);
+  }
+  b.depth = inscribedDepth(b.loops, std::max(0.05, 0.005 * std::min(hi[0] - lo[0], hi[1] - lo[1])));
 }
 
 Town readTown(const std::string& text, Coordinates coordinates, const CleanupOptions& options) {

@@ -37,6 +37,11 @@ struct Building {
   std::vector<std::string> notes;  // what the reader and the clean-up changed, with why
   std::string problem;             // why it is not built ("" = usable)
   double area = 0;                 // outer minus holes, m², after clean-up
+  // Twice the radius of the largest circle inside the cleaned outline (clear of its courtyards),
+  // m, to 5 cm or half a percent of the outline's narrower extent: the span a roof climbs over
+  // from eaves to ridge (a hipped roof of pitch a on a convex outline rises depth / 2 · tan a; a
+  // rectangle's depth is its shorter side).
+  double depth = 0;
 };
 
 struct Street {
@@ -52,12 +57,31 @@ struct Town {
 
 // Thresholds of the clean-up, metres.
 struct CleanupOptions {
+  // A building wider than this (the largest distance between two of its corners) is refused
+  // before any other work: no building is 5 km across, and a typo in a coordinate that makes one
+  // 10^9 m wide would otherwise cost gigabytes of neighbour grid and window rows.
+  double maxAcross = 5000.0;
   double duplicate = 0.001;   // consecutive corners closer than this are one
-  double colinear = 0.01;     // a corner within this of the line of its neighbours is dropped
+  // Corners are dropped where the outline stays within this of where it was: a Douglas-Peucker
+  // simplification of each ring at this tolerance (every dropped corner lies within it of the
+  // segment between the corners kept around it). The area changes by at most the ring's
+  // perimeter times this, however dense the ring.
+  double colinear = 0.01;
   double spikeDegrees = 3.0;  // a corner sharper than this (interior angle) is dropped
   double minArea = 4.0;       // a smaller building is refused (m²); a smaller courtyard dropped
   double minWidth = 1.0;      // a building whose mean width 2A/P is less is a sliver, refused
 };
+
+// The largest distance between two of the points (convex hull and rotating calipers), m.
+double diameter(const std::vector<Vec2>& points);
+// The corners of a closed ring that a Douglas-Peucker simplification at `tolerance` keeps, in
+// order; every other corner lies within `tolerance` of the segment between the kept corners on
+// either side of it. `worst` (when given) gets the largest such distance of a dropped corner.
+std::vector<Vec2> simplifyRing(const std::vector<Vec2>& ring, double tolerance, double* worst = nullptr);
+// Twice the distance from the boundary of the point of the loops (outer and holes, even-odd)
+// farthest inside them, found to within `precision` m (the pole of inaccessibility, searched by
+// halving square cells and dropping those that cannot beat the best point found).
+double inscribedDepth(const std::vector<std::vector<Vec2>>& loops, double precision = 0.01);
 
 // Cleans one building in place: fixes go to notes, a refusal to problem.
 void cleanBuilding(Building& b, const CleanupOptions& options = {});

@@ -163,6 +163,7 @@ BuildResult TownCache::build(const DocObject& object, Progress* progress, std::s
   std::vector<std::uint64_t> hashes(n, 0);
   std::vector<std::size_t> misses;
   std::vector<char> extruded(n, 0);  // styled without a problem: the batch extrudes it
+  std::vector<std::vector<std::string>> adapted(n);  // what the styling changed to build it
   {
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < n; ++i) {
@@ -173,6 +174,7 @@ BuildResult TownCache::build(const DocObject& object, Progress* progress, std::s
         StyledBuilding s = styleBuilding(in->style, b, in->labels[i], spec.seed, it == overrides.end() ? nullptr : &it->second);
         type = s.type;
         problem = s.problem;
+        adapted[i] = std::move(s.warnings);
         if (problem.empty()) hashes[i] = inputHash(s.spec, s.type, detail), extruded[i] = 1;
       }
       if (!problem.empty()) hashes[i] = fnv1a(problem + type);
@@ -227,6 +229,7 @@ BuildResult TownCache::build(const DocObject& object, Progress* progress, std::s
       bb.faceCount = e.mesh.faces.size();
       for (const Vec3& p : e.mesh.points) bb.bounds.add(p);
       out.mesh.append(e.mesh);
+      for (const std::string& w : adapted[i]) out.warnings.push_back("building " + b.id + ": " + w);
     } else {
       out.warnings.push_back("building " + b.id + ": " + bb.error);
     }

@@ -51,6 +51,8 @@ class TownCache {
   // Builds a town object: every building whose input hash is not cached is extruded (in chunks
   // of `chunk`, reporting progress and honouring cancellation between chunks; what was built
   // before a cancel stays cached). Throws InputError for bad inputs, Cancelled when cancelled.
+  // The result's warnings name each building not built ("building ID: why") and what the
+  // styling changed to build one (an overhang taken off a sharp corner, rows thinned).
   BuildResult build(const DocObject& object, Progress* progress, std::size_t chunk = 8);
   // The buildings of the object's last completed build, in footprint order.
   std::vector<BuiltBuilding> buildings(ObjectId object) const;

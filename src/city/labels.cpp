@@ -1,5 +1,6 @@
 #include "city/labels.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <numbers>
@@ -18,9 +19,18 @@ template <class T>
 class Grid {
  public:
   explicit Grid(double cell) : cell_(cell) {}
-  void add(const Vec2& lo, const Vec2& hi, const T& item) {
-    for (long x = key(lo[0]); x <= key(hi[0]); ++x)
-      for (long y = key(lo[1]); y <= key(hi[1]); ++y) cells_[pack(x, y)].push_back(item);
+  // The item in every cell the segment ab passes through (column by column), so a long diagonal
+  // costs cells in proportion to its length, not to its bounding box.
+  void addSegment(const Vec2& a, const Vec2& b, const T& item) {
+    const Vec2 &p = a[0] <= b[0] ? a : b, &q = a[0] <= b[0] ? b : a;
+    const double slope = q[0] > p[0] ? (q[1] - p[1]) / (q[0] - p[0]) : 0;
+    const double pad = cell_ * 1e-9;  // a cell boundary crossed within rounding counts on both sides
+    for (long x = key(p[0]); x <= key(q[0]); ++x) {
+      const double from = std::max(p[0], static_cast<double>(x) * cell_), to = std::min(q[0], static_cast<double>(x + 1) * cell_);
+      double y0 = p[1] + slope * (from - p[0]), y1 = p[1] + slope * (to - p[0]);
+      if (q[0] == p[0]) y0 = p[1], y1 = q[1];
+      for (long y = key(std::min(y0, y1) - pad); y <= key(std::max(y0, y1) + pad); ++y) cells_[pack(x, y)].push_back(item);
+    }
   }
   template <class F>
   void near(const Vec2& p, double reach, F&& f) const {
@@ -116,19 +126,37 @@ std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o, u
     Vec2 a, b;
   };
   Grid<Segment> walls(o.gapReach / 2);
+  Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);  // the usable buildings' corners
   for (std::size_t i = 0; i < bs.size(); ++i)
     if (bs[i].problem.empty()) {
       const auto& r = bs[i].loops[0];
       for (std::size_t k = 0; k < r.size(); ++k) {
         const Vec2 &a = r[k], &b = r[(k + 1) % r.size()];
-        walls.add(a.min(b), a.max(b), {i, a, b});
+        walls.addSegment(a, b, {i, a, b});
+        lo = lo.min(a);
+        hi = hi.max(a);
       }
     }
+  // Streets only matter within reach of a building: each segment is clipped to the buildings'
+  // box widened by the reach (Liang-Barsky), so a street drawn far past the town costs nothing.
   Grid<Segment> streets(50.0);
+  lo -= Vec2(o.streetReach + 1, o.streetReach + 1);
+  hi += Vec2(o.streetReach + 1, o.streetReach + 1);
   for (const Street& s : town.streets)
-    for (std::size_t k = 0; k + 1 < s.points.size(); ++k) {
-      const Vec2 &a = s.points[k], &b = s.points[k + 1];
-      streets.add(a.min(b), a.max(b), {0, a, b});
+    for (std::size_t k = 0; k + 1 < s.points.size() && lo[0] <= hi[0]; ++k) {
+      const Vec2 &a = s.points[k], &b = s.points[k + 1], d = b - a;
+      double t0 = 0, t1 = 1;
+      for (int axis = 0; axis < 2 && t0 <= t1; ++axis) {
+        if (d[axis] == 0) {
+          if (a[axis] < lo[axis] || a[axis] > hi[axis]) t0 = 2;
+          continue;
+        }
+        double ta = (lo[axis] - a[axis]) / d[axis], tb = (hi[axis] - a[axis]) / d[axis];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+      }
+      if (t0 <= t1) streets.addSegment(a + d * t0, a + d * t1, {0, a, b});
     }
 
   // Each building's labels depend only on the grids, which are read-only from here: the

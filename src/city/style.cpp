@@ -6,7 +6,10 @@
 #include "core/textures.h"
 
 #include <cmath>
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <set>
 
 namespace corbel::city {
@@ -40,8 +43,9 @@ BuildingCondition buildingCondition(const std::optional<JsonReader>& r) {
   BuildingCondition c;
   if (!r) return c;
   r->expectObject();
-  rejectUnknown(*r, {"area", "property"});
+  rejectUnknown(*r, {"area", "depth", "property"});
   if (auto a = r->find("area")) std::tie(c.minArea, c.maxArea) = range(*a, 0, 1e12);
+  if (auto d = r->find("depth")) std::tie(c.minDepth, c.maxDepth) = range(*d, 0, 1e12);
   if (auto p = r->find("property")) {
     p->expectObject();
     for (auto& [key, value] : p->raw().items()) {
@@ -142,7 +146,7 @@ SurfaceTexture tagTexture(const JsonReader& r) {
 void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, int depth) {
   JsonReader r(root, "");
   r.expectObject();
-  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "assign", "tag_materials", "tag_textures"});
+  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "by_size", "assign", "tag_materials", "tag_textures"});
   // The styles this one uses first, so its own name and labels win.
   if (auto u = r.find("use")) {
     if (depth > 8) u->fail("styles use each other more than 8 deep (a cycle?)");
@@ -280,14 +284,19 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
       s.types.push_back(std::move(t));
     }
 
-  if (auto as = r.find("assign")) {
-    s.assign.clear();  // the using style's assignment replaces those of the styles it uses
+  // The using style's rules replace those of the styles it uses.
+  auto rules = [&](const char* key, std::vector<AssignRule>& out) {
+    const auto as = r.find(key);
+    if (!as) return;
+    out.clear();
     for (const auto& ar : as->array(1000)) {
       ar.expectObject();
       rejectUnknown(ar, {"when", "types"});
-      s.assign.push_back({buildingCondition(ar.find("when")), weighted(ar.at("types"), typeNames, "building type")});
+      out.push_back({buildingCondition(ar.find("when")), weighted(ar.at("types"), typeNames, "building type")});
     }
-  }
+  };
+  rules("by_size", s.bySize);
+  rules("assign", s.assign);
 }
 
 bool sameValue(const nlohmann::json& a, const nlohmann::json& b) {
@@ -295,10 +304,139 @@ bool sameValue(const nlohmann::json& a, const nlohmann::json& b) {
   return a == b;
 }
 
+
+// The net horizontal move of a profile at each height where it has one, m (negative outward);
+// consecutive horizontal segments at one height add up, as in the kernel.
+std::map<double, double> horizontalMoves(const extrude::Profile& p) {
+  std::map<double, double> moves;
+  for (std::size_t i = 0; i + 1 < p.points.size(); ++i)
+    if (p.points[i + 1][1] == p.points[i][1]) moves[p.points[i][1]] += p.points[i + 1][0] - p.points[i][0];
+  std::erase_if(moves, [](const auto& m) { return m.second == 0; });
+  return moves;
+}
+
+bool movesOutward(const std::map<double, double>& moves) {
+  return std::any_of(moves.begin(), moves.end(), [](const auto& m) { return m.second < 0; });
+}
+
+std::string decimals(double v, int digits) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+// Takes the overhangs off both edges of every convex corner that the kernel's mitre limit would
+// refuse (see styleBuilding), until none is left; each corner so treated gets a warning.
+void clipSharpOverhangs(extrude::ExtrusionSpec& spec, std::vector<std::string>& warnings) {
+  std::map<int, std::map<double, double>> moves;
+  auto movesOf = [&](int p) -> const std::map<double, double>& {
+    auto it = moves.find(p);
+    if (it == moves.end()) it = moves.emplace(p, horizontalMoves(spec.profiles[p])).first;
+    return it->second;
+  };
+  std::map<int, int> variant;  // profile -> its variant without overhang
+  auto plain = [&](int p) {
+    if (!movesOutward(movesOf(p))) return p;
+    auto it = variant.find(p);
+    if (it == variant.end()) {
+      spec.profiles.push_back(withoutOverhang(spec.profiles[p]));
+      it = variant.emplace(p, static_cast<int>(spec.profiles.size() - 1)).first;
+    }
+    return it->second;
+  };
+  for (bool again = true; again;) {
+    again = false;
+    for (std::size_t li = 0; li < spec.loops.size(); ++li) {
+      auto& loop = spec.loops[li];
+      const std::size_t n = loop.points.size();
+      for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t ea = (j + n - 1) % n, eb = j;
+        const Vec2 da = loop.points[j] - loop.points[ea], db = loop.points[(j + 1) % n] - loop.points[j];
+        const auto &ma = movesOf(loop.profile[ea]), &mb = movesOf(loop.profile[eb]);
+        std::set<double> heights;
+        for (const auto& m : ma) heights.insert(m.first);
+        for (const auto& m : mb) heights.insert(m.first);
+        for (const double h : heights) {
+          const double ka = ma.count(h) ? ma.at(h) : 0.0, kb = mb.count(h) ? mb.at(h) : 0.0;
+          if (!(ka < 0 || kb < 0)) continue;
+          const double move = std::max(std::abs(ka), std::abs(kb)), pushed = cornerMove(da, db, ka, kb);
+          if (pushed <= kMitreLimit * move) continue;
+          const double degrees = std::acos(std::clamp(-da.dot(db) / (da.norm() * db.norm()), -1.0, 1.0)) * 180 /
+                                 std::numbers::pi;
+          const std::string before = spec.profiles[loop.profile[ea]].name, after = spec.profiles[loop.profile[eb]].name;
+          loop.profile[ea] = plain(loop.profile[ea]);
+          loop.profile[eb] = plain(loop.profile[eb]);
+          warnings.push_back("loops[" + std::to_string(li) + "].points[" + std::to_string(j) + "]: at height " +
+                             decimals(h, 2) + " m the " + decimals(move, 2) + " m overhang would push this " +
+                             decimals(degrees, 1) + "° corner " + decimals(pushed, 1) + " m out, more than the mitre limit of " +
+                             decimals(kMitreLimit, 0) + " times the overhang: edges " + std::to_string(ea) + " and " +
+                             std::to_string(eb) + " are built without their overhang");
+          again = true;
+          break;
+        }
+      }
+    }
+  }
+}
+
+// Fits a repeat within `budget` instances: a grid that would pass it is spread over the same
+// span with fewer, wider-spaced columns (all its rows kept), or left with none when not one
+// column of its rows fits. Returns how many it has.
+std::size_t fitRepeat(const extrude::ExtrusionSpec& spec, const extrude::Anchor& anchor, extrude::Repeat& repeat,
+                      std::size_t budget) {
+  const RepeatGrid wanted = repeatGrid(spec, anchor, repeat);
+  if (wanted.count() <= budget) return wanted.count();
+  if (wanted.rows > budget) return 0;
+  const std::size_t columns = budget / wanted.rows;
+  if (columns <= 1) {
+    repeat.along = anchor.along;
+  } else {
+    repeat.spacing = (repeat.along - anchor.along) / static_cast<double>(columns - 1);
+    while (repeatGrid(spec, anchor, repeat).count() > budget) repeat.spacing *= 1 + 1e-9;
+  }
+  return repeatGrid(spec, anchor, repeat).count();
+}
+
+// Keeps the instances of `items` (the spec's mesh anchors or steps) within `limit`: when their
+// repeats would make more, each repeat is thinned in proportion (its share of what the single
+// items leave is its share of what the repeats wanted, rounded down), so every edge keeps some
+// where the limit allows; a repeat left with none is dropped. One warning says how many were
+// wanted and how many are left.
+template <class Item>
+void thinRepeats(const extrude::ExtrusionSpec& spec, std::vector<Item>& items, std::size_t limit, const char* what,
+                 std::vector<std::string>& warnings) {
+  double repeated = 0;
+  std::size_t single = 0;
+  for (const Item& it : items) {
+    const std::size_t n = repeatGrid(spec, it.anchor, it.repeat).count();
+    if (it.repeat.kind == extrude::RepeatKind::None) single += n;
+    else repeated += static_cast<double>(n);
+  }
+  if (static_cast<double>(single) + repeated <= static_cast<double>(limit)) return;
+  const double room = static_cast<double>(limit > single ? limit - single : 0);
+  std::vector<Item> kept;
+  std::size_t left = 0;
+  for (Item& it : items) {
+    std::size_t n = 1;
+    if (it.repeat.kind != extrude::RepeatKind::None) {
+      const double share = static_cast<double>(repeatGrid(spec, it.anchor, it.repeat).count()) / repeated;
+      n = fitRepeat(spec, it.anchor, it.repeat, static_cast<std::size_t>(std::floor(share * room)));
+    }
+    if (n > 0 && left + n <= limit) {
+      left += n;
+      kept.push_back(std::move(it));
+    }
+  }
+  warnings.push_back(std::to_string(static_cast<std::size_t>(repeated) + single) + " " + what + " thinned to " +
+                     std::to_string(left) + " (at most " + std::to_string(limit) + " per building)");
+  items = std::move(kept);
+}
+
 }  // namespace
 
 bool BuildingCondition::matches(const Building& b) const {
   if (b.area < minArea || b.area > maxArea) return false;
+  if (b.depth < minDepth || b.depth > maxDepth) return false;
   for (const auto& [key, values] : property) {
     auto it = b.properties.find(key);
     if (it == b.properties.end()) return false;
@@ -334,6 +472,39 @@ TagTextures tagTexturesOf(const Style& style) {
     const auto it = table->find(tag);
     return it == table->end() ? nullptr : &it->second;
   };
+}
+
+double cornerMove(const Vec2& daIn, const Vec2& dbIn, double ka, double kb) {
+  if (daIn.norm() == 0 || dbIn.norm() == 0) return 0;
+  const Vec2 da = daIn / daIn.norm(), db = dbIn / dbIn.norm();
+  const double sine = da[0] * db[1] - da[1] * db[0];
+  if (sine <= 0 || da.dot(db) > 0) return 0;
+  // Where the two moved lines meet: n·v = k for each, n the inward (left) normal.
+  const Vec2 na(-da[1], da[0]), nb(-db[1], db[0]);
+  const double det = na[0] * nb[1] - na[1] * nb[0];
+  return Vec2((ka * nb[1] - kb * na[1]) / det, (na[0] * kb - nb[0] * ka) / det).norm();
+}
+
+extrude::Profile withoutOverhang(const extrude::Profile& p) {
+  const std::map<double, double> moves = horizontalMoves(p);
+  extrude::Profile out;
+  out.name = p.name + " (no overhang)";
+  if (p.points.empty()) return out;
+  out.points.push_back(p.points[0]);
+  double shift = 0;
+  for (std::size_t i = 0; i + 1 < p.points.size(); ++i) {
+    const Vec2 &a = p.points[i], &b = p.points[i + 1];
+    if (b[1] == a[1]) {
+      const auto m = moves.find(a[1]);
+      if (m != moves.end() && m->second < 0) {
+        shift -= b[0] - a[0];
+        continue;
+      }
+    }
+    out.points.push_back(b + Vec2(shift, 0));
+    if (i < p.tags.size()) out.tags.push_back(p.tags[i]);
+  }
+  return out;
 }
 
 Style parseStyle(const std::string& text, const std::string& folder) {
@@ -379,6 +550,8 @@ std::size_t BuildingRandom::pick(const std::vector<Weighted>& choices) {
 }
 
 std::optional<std::size_t> assignType(const Style& style, const Building& b, BuildingRandom& random) {
+  for (const auto& rule : style.bySize)
+    if (rule.when.matches(b)) return static_cast<std::size_t>(rule.types[random.pick(rule.types)].index);
   if (!style.assign.empty()) {
     for (const auto& rule : style.assign)
       if (rule.when.matches(b)) return static_cast<std::size_t>(rule.types[random.pick(rule.types)].index);
@@ -430,8 +603,9 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
       if (auto it = override->edges.find({e.loop, e.edge}); it != override->edges.end()) p = it->second;
     }
     spec.loops[e.loop].profile[e.edge] = p;
-    used.insert(p);
   }
+  clipSharpOverhangs(spec, out.warnings);
+  for (const auto& loop : spec.loops) used.insert(loop.profile.begin(), loop.profile.end());
   if (t.parapet) {
     extrude::OffsetEvent ev;
     ev.height = t.parapet->height;
@@ -510,6 +684,8 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
       spec.steps.push_back(step);
     }
   }
+  thinRepeats(spec, spec.anchors, kMaxFeatureInstances, "feature instances (windows, doors)", out.warnings);
+  thinRepeats(spec, spec.steps, kMaxStepInstances, "steps (dormers, chimneys)", out.warnings);
   return out;
 }
 

@@ -20,6 +20,7 @@ namespace corbel::city {
 // A condition on a footprint (all given parts must hold).
 struct BuildingCondition {
   double minArea = 0, maxArea = INFINITY;                       // m²
+  double minDepth = 0, maxDepth = INFINITY;                     // m, Building::depth
   std::map<std::string, std::vector<nlohmann::json>> property;  // key → accepted values
   bool matches(const Building& b) const;
 };
@@ -91,6 +92,10 @@ struct Style {
   LabelOptions labels;
   std::vector<extrude::Profile> profiles;
   std::vector<BuildingType> types;
+  // Size rules, before any other assignment: the first whose condition holds (by footprint area
+  // or depth) picks one of its types, so a style can give buildings past a size a roof that
+  // stays low (flat inside a parapet) whatever else they would be.
+  std::vector<AssignRule> bySize;
   std::vector<AssignRule> assign;  // empty: any type whose own condition holds, by weight
   // Faces with one of these tags take that material (chimneys of brick, copings of stone),
   // so the glb's materials follow the tags.
@@ -141,8 +146,30 @@ struct StyledBuilding {
   std::string type;  // "" when it could not be styled
   extrude::ExtrusionSpec spec;
   std::string problem;  // why not
+  // What the styling changed to keep the building within the kernel's limits: overhangs taken
+  // off the edges of corners past the mitre limit, rows of windows or dormers thinned to the
+  // instance limits.
+  std::vector<std::string> warnings;
 };
+// Styles one building. After the profiles are drawn, every convex corner whose edges' outward
+// horizontal moves (overhangs) would push it out by more than kMitreLimit times the move (the
+// kernel refuses such a spec: docs/extrude.md, "Mitre limit") has the overhangs taken off both its
+// edges: they get a variant of their profile without outward moves ("NAME (no overhang)"), and
+// a warning names the corner. Windows and doors stay within kMaxFeatureInstances per building
+// and dormer rows within kMaxStepInstances (core/extrusion_spec.h): a row that would pass the
+// limit is spread more thinly, with a warning.
 StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed,
                              const BuildingOverride* override = nullptr);
+
+// The kernel's mitre limit (extrude/stages.cpp, checkMitre): an overhang may push a corner out by
+// at most this many times its own size.
+inline constexpr double kMitreLimit = 20.0;
+// How far an outward move of ka on the edge into a corner and kb on the edge out of it pushes the
+// corner (m; the edges' directions da and db, inside on their left; moves negative outward), as
+// the kernel works it out; 0 where the corner is reflex or not sharp (90° or more).
+double cornerMove(const Vec2& da, const Vec2& db, double ka, double kb);
+// The profile without its outward horizontal moves: each height's net outward move is dropped
+// and the points above it shifted back in by it, so the slopes stay as they were.
+extrude::Profile withoutOverhang(const extrude::Profile& profile);
 
 }  // namespace corbel::city

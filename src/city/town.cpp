@@ -3,6 +3,7 @@
 #include "extrude/batch.h"
 
 #include <future>
+#include <iterator>
 #include <memory>
 #include <numeric>
 
@@ -75,6 +76,7 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
         if (auto it = options.overrides->find(b.id); it != options.overrides->end()) over = &it->second;
       StyledBuilding s = styleBuilding(style, b, labels[order[k]], options.seed, over);
       r.type = s.type;
+      r.warnings = std::move(s.warnings);
       item.spec = std::move(s.spec);
       if (options.detail != Detail::Full) item.spec.anchors.clear();
       if (options.detail == Detail::Massing) item.spec.steps.clear();
@@ -103,7 +105,8 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
       extrude::BatchResult& res = results[k];
       r.ok = res.ok;
       r.error = res.error;
-      r.warnings = std::move(res.warnings);
+      r.warnings.insert(r.warnings.end(), std::make_move_iterator(res.warnings.begin()),
+                        std::make_move_iterator(res.warnings.end()));
       if (!current->items[k].problem.empty())
         ++sum.refused;
       else if (!res.ok)

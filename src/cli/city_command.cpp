@@ -155,6 +155,11 @@ int run(const CityRequest& r) {
       j["id"] = b.id;
       j["type"] = b.type;
       j["ok"] = b.ok;
+      if (const city::Building& f = town.buildings[b.index]; f.problem.empty()) {
+        // What the style's size rules look at, to the centimetre.
+        j["area"] = std::round(f.area * 100) / 100;
+        j["depth"] = std::round(f.depth * 100) / 100;
+      }
       if (!b.ok) j["error"] = b.error;
       if (!b.notes.empty()) j["notes"] = b.notes;
       if (!b.warnings.empty()) j["warnings"] = b.warnings;

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
+#include <numbers>
 #include <set>
 #include <thread>
 
@@ -447,6 +449,37 @@ TEST(TownStreets, BadStreetsAreNamedByTheirPath) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.where, "town.streets[0].depth");
   }
+}
+
+}  // namespace
+}  // namespace corbel::city
+
+namespace corbel::city {
+namespace {
+
+// A town object with a footprint whose 4° corner is too sharp for the old town's 0.3 m
+// overhangs builds it (without them on that corner's edges) and says so in the object's
+// warnings, by building; a plain house beside it adds none.
+TEST(TownKernel, ASharpCornerBuildsAndTheObjectWarnsByBuilding) {
+  DocObject town = squareTown({{100, 0, 112, 9}});
+  TownSpec& t = std::get<TownSpec>(town.spec);
+  nlohmann::json fc = nlohmann::json::parse(t.footprintsJson);
+  const double h = 60 * std::tan(4 * std::numbers::pi / 180);
+  fc["features"].push_back({{"type", "Feature"},
+                            {"id", "sharp"},
+                            {"properties", nlohmann::json::object()},
+                            {"geometry", {{"type", "Polygon"}, {"coordinates", {{{0, 0}, {60, 0}, {0, h}, {0, 0}}}}}}});
+  t.footprintsJson = fc.dump();
+  TownCache cache;
+  const BuildResult r = cache.build(town, nullptr);
+  EXPECT_EQ(builtCount(cache, town.id), 2u);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].rfind("building sharp: loops[0].points[1]: at height ", 0), 0u) << r.warnings[0];
+  EXPECT_NE(r.warnings[0].find(" m the 0.30 m overhang would push this 4.0° corner 8.6 m out"), std::string::npos)
+      << r.warnings[0];
+  EXPECT_NE(r.warnings[0].find("edges 0 and 1 are built without their overhang"), std::string::npos) << r.warnings[0];
+  // Built again from the cache, it still says so.
+  EXPECT_EQ(cache.build(town, nullptr).warnings, r.warnings);
 }
 
 }  // namespace

@@ -103,3 +103,24 @@ TEST(Labels, ThreadsDoNotChangeTheLabels) {
     for (std::size_t k = 0; k < one[i].edges.size(); ++k) EXPECT_EQ(one[i].edges[k].angle, two[i].edges[k].angle);
   }
 }
+
+// A street drawn far past the town (a diagonal 2e9 m long, and one of 1e9 m beyond it) labels
+// the buildings as the same street drawn 200 m long does: only what lies within reach of a
+// building is gridded, and a diagonal costs cells along its length, not its bounding box.
+TEST(Labels, AStreetFarLongerThanTheTownLabelsAsAShortOne) {
+  Town near, far;
+  for (Town* t : {&near, &far}) {
+    t->buildings.push_back(box("a", 0, 0, 14, 8));
+    t->buildings.push_back(box("b", 30, 40, 10, 10));
+  }
+  near.streets.push_back({"s", {{-100, -110}, {100, 90}}});
+  far.streets.push_back({"s", {{-1e9, -1e9 - 10}, {1e9, 1e9 - 10}}});
+  far.streets.push_back({"t", {{5e8, 0}, {1.5e9, 0}}});
+  const auto a = labelTown(near), b = labelTown(far);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_TRUE(b[i].fromStreet);
+    EXPECT_NEAR((a[i].front - b[i].front).norm(), 0, 1e-6) << i;  // rounding along 2e9 m
+    ASSERT_EQ(a[i].edges.size(), b[i].edges.size());
+    for (std::size_t k = 0; k < a[i].edges.size(); ++k) EXPECT_EQ(a[i].edges[k].orientation, b[i].edges[k].orientation);
+  }
+}

@@ -1,10 +1,11 @@
-// Every one of the 10,524 real footprints is either built as a closed shell or reported with a
-// reason, with the three-style rule set; and the CLI writes the town and its tiles.
+// The 10,524 real footprints with the three-style rule set: all built but the two pinned slivers;
+// and the CLI writes the town and its tiles.
 #include "city/town.h"
 #include "core/materials.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -16,11 +17,60 @@
 using namespace corbel;
 using namespace corbel::city;
 
-TEST(RealData, EveryBuildingIsClosedOrReportedWithAReason) {
+namespace {
+
+// The footprints of a file whose mean width 2A/P (A the outer ring's shoelace area less its
+// holes', P every ring's perimeter), worked out here from the raw coordinates and not through the
+// importer, is under `width` m, or whose area is under `area` m²: the clean-up's refusals.
+std::map<std::string, std::string> slivers(const std::string& path, double width, double area) {
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  auto ringArea = [](const nlohmann::json& r) {  // closed: the first corner repeated last
+    double twice = 0;
+    for (std::size_t i = 0; i + 1 < r.size(); ++i)
+      twice += r[i][0].get<double>() * r[i + 1][1].get<double>() - r[i + 1][0].get<double>() * r[i][1].get<double>();
+    return std::abs(twice) / 2;
+  };
+  auto ringLength = [](const nlohmann::json& r) {
+    double l = 0;
+    for (std::size_t i = 0; i + 1 < r.size(); ++i)
+      l += std::hypot(r[i + 1][0].get<double>() - r[i][0].get<double>(), r[i + 1][1].get<double>() - r[i][1].get<double>());
+    return l;
+  };
+  std::map<std::string, std::string> out;
+  for (const auto& f : j["features"]) {
+    const auto& rings = f["geometry"]["coordinates"];
+    double a = ringArea(rings[0]), p = 0;
+    for (std::size_t k = 0; k < rings.size(); ++k) {
+      if (k) a -= ringArea(rings[k]);
+      p += ringLength(rings[k]);
+    }
+    const std::string id = f["properties"]["source_id"].get<std::string>() + "#" + f["properties"]["part"].dump();
+    if (a < area) out[id] = "tiny building";
+    else if (2 * a / p < width) out[id] = "sliver";
+  }
+  return out;
+}
+
+}  // namespace
+
+// Every one of the 10,524 real footprints is built as a closed shell except the clean-up's
+// refusals, which are pinned: the two Moosburg footprints whose mean width the raw coordinates
+// put under the 1 m sliver limit (osm:w837228584, 0.876 m; osm:w1017574047, 0.993 m; the next
+// narrowest is 1.115 m wide, Kathmandu's narrowest 1.41 m, none under 4 m²). The kernel refuses
+// and fails nothing.
+TEST(RealData, EveryBuildingIsBuiltButThePinnedSlivers) {
   const Style style = loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/mixed.json");
   std::size_t total = 0, ok = 0;
+  std::map<std::string, std::string> refused;
   for (const char* file : {"kathmandu_np.geojson", "moosburg_de.geojson"}) {
-    const Town t = readTownFile(std::string(CORBEL_FOOTPRINTS) + "/" + file);
+    const std::string path = std::string(CORBEL_FOOTPRINTS) + "/" + file;
+    const Town t = readTownFile(path);
+    for (const auto& [id, why] : slivers(path, CleanupOptions().minWidth, CleanupOptions().minArea))
+      EXPECT_EQ(refused.emplace(id, why).second, true) << id;
+    std::map<std::string, std::string> got;
+    for (const Building& b : t.buildings)
+      if (!b.problem.empty()) got[b.id] = b.problem;
     const auto labels = labelTown(t, style.labels);
     std::size_t seen = 0;
     const TownSummary s = buildTown(t, labels, style, {}, [&](const BuildingReport& r, MeshData* m) {
@@ -30,18 +80,25 @@ TEST(RealData, EveryBuildingIsClosedOrReportedWithAReason) {
         EXPECT_FALSE(m->faces.empty());
       } else {
         EXPECT_EQ(m, nullptr);
-        EXPECT_FALSE(r.error.empty()) << r.id;
+        EXPECT_TRUE(got.count(r.id)) << r.id << ": " << r.error;  // only the clean-up refuses
       }
     });
     EXPECT_EQ(seen, t.buildings.size());
-    EXPECT_EQ(s.ok + s.refused + s.failed, t.buildings.size());
+    EXPECT_EQ(s.failed, 0u) << file;
+    EXPECT_EQ(s.ok + s.refused, t.buildings.size());
+    EXPECT_EQ(s.refused, got.size()) << file;
+    for (const auto& [id, problem] : got) {
+      ASSERT_TRUE(refused.count(id)) << id << ": " << problem;
+      EXPECT_EQ(problem.rfind(refused[id] + ":", 0), 0u) << id << ": " << problem;
+    }
     total += seen;
     ok += s.ok;
     std::printf("%s: %zu buildings, %zu built, %zu refused, %zu failed\n", file, s.buildings, s.ok, s.refused,
                 s.failed);
   }
+  EXPECT_EQ(refused, (std::map<std::string, std::string>{{"osm:w1017574047#0", "sliver"}, {"osm:w837228584#0", "sliver"}}));
   EXPECT_EQ(total, 10524u);  // 3,544 + 6,980 (the data's README)
-  EXPECT_GT(ok, 10524u * 98 / 100);
+  EXPECT_EQ(ok, 10522u);
 }
 
 TEST(RealData, TheCliWritesTheTownAndItsTiles) {
@@ -173,4 +230,30 @@ TEST(RealData, TheCliGrowsStreetPlotsBySkeleton) {
   EXPECT_NE(error().find("--plots: expected normals or skeleton"), std::string::npos) << error();
   EXPECT_EQ(run(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/town-moosburg.geojson --plots skeleton"), 2);
   EXPECT_NE(error().find("--plots requires --street"), std::string::npos) << error();
+}
+
+// The largest real footprint, Moosburg's 45,710 m² factory (osm:w122035562, `src_building`
+// manufacture; its area_m2 from the data's source), is a "hall" in the old-town style by its size
+// (by_size: from 2,000 m² or 20 m deep), not a gabled town house: built closed, its highest point
+// is the coping of the hall wall profile at 9 m, where its 0.3 m move inward closes over the
+// parapet ring (0.3 m wide, cut at 8 m; the flat roof inside it at 8 m), where a town house's 50°
+// roof would climb half its depth.
+TEST(RealData, TheOldTownGivesTheFactoryAFlatRoof) {
+  const Town all = readTownFile(std::string(CORBEL_FOOTPRINTS) + "/moosburg_de.geojson");
+  Town t;
+  for (const Building& b : all.buildings)
+    if (b.id == "osm:w122035562#0") t.buildings.push_back(b);
+  ASSERT_EQ(t.buildings.size(), 1u);
+  const Building& factory = t.buildings[0];
+  EXPECT_NEAR(factory.area, 45710.468, 0.5);
+  EXPECT_GT(factory.depth, 20);
+  const Style style = loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/oldtown.json");
+  double top = -INFINITY;
+  const TownSummary s = buildTown(t, labelTown(t, style.labels), style, {}, [&](const BuildingReport& r, MeshData* m) {
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.type, "hall");
+    for (const Vec3& p : m->points) top = std::max(top, p[2]);
+  });
+  EXPECT_EQ(s.ok, 1u);
+  EXPECT_NEAR(top, 9, 1e-6);
 }

@@ -200,7 +200,9 @@ TEST(Style, TheShippedStylesLoad) {
     const Style s = loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/" + name + ".json");
     EXPECT_FALSE(s.types.empty()) << name;
   }
-  EXPECT_EQ(loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/mixed.json").types.size(), 7u);
+  // Suburban's bungalow, two-storey house and store, the old town's two town houses and hall, and
+  // modern's block, tower block and garage.
+  EXPECT_EQ(loadStyle(std::string(CORBEL_SOURCE_DIR) + "/assets/styles/mixed.json").types.size(), 9u);
 }
 
 namespace {
@@ -278,4 +280,59 @@ TEST(Style, TagTextureFaultsNameTheirKey) {
             "tag_textures.roof.scale: unknown key (expected one of: metres, texture)");
   EXPECT_EQ(parseError(withTagTextures(R"({"": "slate"})")),
             "tag_textures[\"\"]: the empty tag names no faces (faces without a tag keep their material's texture)");
+}
+
+// by_size rules come before assign (and before the types' weights) and choose by area and depth:
+// a building they take gets their type whatever its properties; one they do not take is
+// assigned as before, drawing the same numbers.
+TEST(Style, SizeRulesComeFirstByAreaAndDepth) {
+  const std::string assign = R"({"when": {"property": {"use": "shop"}}, "types": "shop"}, {"types": "house"})";
+  const Style s = parseStyle(std::string(kStyle).insert(std::string(kStyle).rfind('}'),
+      R"(, "by_size": [{"when": {"area": [1000, 1e12]}, "types": "shed"}, {"when": {"depth": [20, 1e12]}, "types": {"shed": 1}}],
+          "assign": [)" + assign + "]"));
+  ASSERT_EQ(s.bySize.size(), 2u);
+  auto typeOf = [&](Building b, double depth) {
+    b.depth = depth;
+    BuildingRandom r(1, b.id);
+    return s.types[*assignType(s, b, r)].name;
+  };
+  EXPECT_EQ(typeOf(box("a", 30, 19.9), 19.9), "house");      // 597 m², 19.9 m deep
+  EXPECT_EQ(typeOf(box("b", 30, 20), 20), "shed");           // 20 m deep
+  EXPECT_EQ(typeOf(box("c", 100, 10), 10), "shed");          // 1,000 m², 10 m deep
+  EXPECT_EQ(typeOf(box("d", 30, 10, {{"use", "shop"}}), 10), "shop");
+  EXPECT_EQ(typeOf(box("e", 100, 10, {{"use", "shop"}}), 10), "shed");
+  // A type's own `when` takes a depth too.
+  const Style deep = parseStyle(withType(R"({"name": "deep", "when": {"depth": [5, 8]}, "edges": [{"profiles": "hip"}]})"));
+  Building b = box("f", 10, 6);
+  BuildingRandom r(1, "f");
+  b.depth = 4.9;
+  EXPECT_FALSE(assignType(deep, b, r));
+  b.depth = 6;
+  EXPECT_EQ(assignType(deep, b, r), 0u);
+}
+
+TEST(Style, SizeRuleFaultsAreNamed) {
+  const std::string base = std::string(kStyle).substr(0, std::string(kStyle).rfind('}'));
+  EXPECT_NE(parseError(base + R"(, "by_size": [{"when": {"depth": [20, 10]}, "types": "shed"}]})").find("by_size[0].when.depth"),
+            std::string::npos);
+  EXPECT_NE(parseError(base + R"(, "by_size": [{"when": {"height": [1, 2]}, "types": "shed"}]})").find("by_size[0].when"),
+            std::string::npos);
+  EXPECT_NE(parseError(base + R"(, "by_size": [{"types": "barn"}]})").find("by_size[0].types"), std::string::npos);
+  EXPECT_NE(parseError(base + R"(, "by_size": {"types": "shed"}})").find("by_size"), std::string::npos);
+}
+
+// A style that uses another keeps its by_size rules unless it has its own, which replace them.
+TEST(Style, SizeRulesAreInheritedOrReplaced) {
+  const auto dir = std::filesystem::temp_directory_path() / "corbel_style_by_size_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "base.json") << std::string(kStyle).insert(std::string(kStyle).rfind('}'),
+      R"(, "by_size": [{"when": {"area": [1000, 1e12]}, "types": "shed"}])");
+  std::ofstream(dir / "keeps.json") << R"({"use": ["base.json"]})";
+  std::ofstream(dir / "own.json") << R"({"use": ["base.json"], "by_size": [{"when": {"depth": [30, 1e12]}, "types": "house"}]})";
+  const Style keeps = loadStyle((dir / "keeps.json").string()), own = loadStyle((dir / "own.json").string());
+  ASSERT_EQ(keeps.bySize.size(), 1u);
+  EXPECT_EQ(keeps.bySize[0].when.minArea, 1000);
+  ASSERT_EQ(own.bySize.size(), 1u);
+  EXPECT_EQ(own.bySize[0].when.minDepth, 30);
+  EXPECT_EQ(own.bySize[0].when.minArea, 0);
 }
