@@ -340,7 +340,9 @@ void declareCity(CLI::App& app, Requests& requests) {
   text(*c, "--render", r.render, "PNG", "Render the town.");
   text(*c, "--around", r.around, "X,Y,R", "Only the buildings within R meters of (X, Y).");
   choice(*c, "--coordinates", r.coordinates, {"auto", "lonlat", "metric"}, "How to read the footprints' coordinates.");
-  text(*c, "--report", r.report, "FILE.jsonl", "One JSON line per building: type, notes, warnings, error.");
+  text(*c, "--report", r.report, "FILE.jsonl",
+       "One JSON line per building: type, notes, warnings, error, and the footprint's `area` (m²) and `depth` (m, "
+       "`docs/city.md`) for every building the clean-up kept.");
   choice(*c, "--detail", r.detail, {"massing", "steps", "full"}, "How much of each building to build.");
   choice(*c, "--textures", r.textures, {"on", "off"}, "Textures in the glb files.");
   choice(*c, "--render-textures", r.renderTextures, {"on", "off"}, "Textures in the --render image.");
