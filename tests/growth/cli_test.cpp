@@ -303,3 +303,94 @@ TEST(CompleteCli, EntrancesAndModelsAreCheckedBeforeAnythingRuns) {
   EXPECT_EQ(j["entrances"].size(), 2u);
   for (const auto& f : j["forms"]) EXPECT_EQ(f["doors"].size(), 2u);
 }
+
+namespace {
+
+// The numbers in a table cell, in order ("22 / 27 / 22 (1 under 30 m²)" → 22, 27, 22, 1, 30).
+std::vector<double> numbersIn(const std::string& cell) {
+  std::vector<double> out;
+  std::size_t i = 0;
+  while (i < cell.size()) {
+    if (std::isdigit(static_cast<unsigned char>(cell[i]))) {
+      std::size_t used = 0;
+      std::string digits;
+      while (i + used < cell.size() && (std::isdigit(static_cast<unsigned char>(cell[i + used])) ||
+                                        cell[i + used] == '.' || cell[i + used] == ','))
+        if (cell[i + used] != ',') digits += cell[i + used++];
+        else ++used;
+      out.push_back(std::stod(digits));
+      i += used;
+    } else {
+      ++i;
+    }
+  }
+  return out;
+}
+
+// docs/growth.md's Table 8.1 for our sites: row label → the cells of one column.
+std::map<std::string, std::string> docsColumn(const std::string& header) {
+  std::ifstream in(std::string(CORBEL_SOURCE_DIR) + "/docs/growth.md");
+  std::string line;
+  int column = -1;
+  std::map<std::string, std::string> out;
+  auto cells = [](const std::string& row) {
+    std::vector<std::string> c;
+    std::stringstream s(row);
+    std::string cell;
+    while (std::getline(s, cell, '|')) {
+      const auto a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
+      c.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+    }
+    return c;
+  };
+  while (std::getline(in, line)) {
+    if (line.rfind("|", 0) != 0) {
+      if (column >= 0) break;  // the table ended
+      continue;
+    }
+    const std::vector<std::string> c = cells(line);
+    if (column < 0) {
+      for (std::size_t k = 0; k < c.size(); ++k)
+        if (c[k] == header) column = int(k);
+      continue;
+    }
+    if (int(c.size()) > column) out[c[1]] = c[std::size_t(column)];
+  }
+  return out;
+}
+
+}  // namespace
+
+// The Table 8.1 figures docs/growth.md gives for the shipped Alpha-like and Beta-like sites are
+// what `corbel-cli grow --stats` computes for them (the statistics themselves are held to hand
+// computations in statistics_test.cpp; this keeps the published table true).
+TEST(GrowCli, TheDocsTable81IsWhatTheShippedSitesGrowInto) {
+  for (const auto& [file, header] : {std::pair{"growth-alpha.json", "Alpha-like, seed 1"},
+                                     std::pair{"growth-beta.json", "Beta-like, seed 1"}}) {
+    SCOPED_TRACE(file);
+    const auto table = docsColumn(header);
+    ASSERT_GE(table.size(), 10u) << "no column \"" << header << "\" in docs/growth.md";
+    const CliRun r = cli("grow " + std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + file + " --stats");
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out.substr(r.out.find('{')));
+    const auto& s = j["statistics"];
+    auto first = [&](const std::string& row, std::size_t k = 0) {
+      const std::vector<double> n = numbersIn(table.at(row));
+      return k < n.size() ? n[k] : NAN;
+    };
+    EXPECT_EQ(first("units"), s["units"].get<double>());
+    EXPECT_EQ(first("units", 1), j["reached"].get<double>());
+    EXPECT_EQ(first("units", 2), j["stuck"].get<double>());
+    EXPECT_EQ(first("occupants"), s["occupants"].get<double>());
+    EXPECT_NEAR(first("occupancy ratio"), s["occupancy_ratio"].get<double>(), 0.5e-4);  // printed to 4 places
+    EXPECT_EQ(first("type A / B / C"), s["type_a"].get<double>());
+    EXPECT_EQ(first("type A / B / C", 1), s["type_b"].get<double>());
+    EXPECT_EQ(first("type A / B / C", 2), s["type_c"].get<double>());
+    EXPECT_NEAR(first("average view"), s["average_view"].get<double>(), 0.05);  // printed to 0.1 m²
+    EXPECT_EQ(first("two / three views"), s["two_views"].get<double>());
+    EXPECT_EQ(first("two / three views", 1), s["three_views"].get<double>());
+    EXPECT_NEAR(first("average floor area"), s["average_floor_area"].get<double>(), 0.05);
+    EXPECT_EQ(first("double volume"), s["double_volume"].get<double>());
+    EXPECT_EQ(first("outdoor space"), s["outdoor_space"].get<double>());
+  }
+}
