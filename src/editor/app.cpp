@@ -504,6 +504,7 @@ void App::writeTestLog() {
   s.dirty = history_.dirty();
   s.undo = history_.canUndo() ? history_.undoLabel() : "";
   if (panesFor_) s.planCorners = panes_.cornersOnScreen();
+  s.view = {float(view_.x()), float(view_.y()), float(view_.width()), float(view_.height())};
   testLog_->write(s);
 }
 

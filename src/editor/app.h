@@ -78,6 +78,10 @@ class App {
   bool rightPaneHasKeys(const Rect& pane) const;
   // This frame's input events to the 3D view's tool (what a click or a drag there means).
   void handleViewInput();
+  // A click in the 3D view: selects what the ray meets first (Shift adds, Ctrl toggles, empty
+  // space clears); on the active object itself, that kind's own pick (a face, a building, a block).
+  void clickInView(const Ray& r);
+  std::optional<ObjectId> objectUnder(const Ray& r);
   void drawView();
   void drawMenuBar();
   void drawLeftPanel();

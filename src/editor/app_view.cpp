@@ -1,7 +1,12 @@
 // The 3D view of the editor: its input (the tool), what it shows, and screenshots.
 #include "editor/app.h"
 
+#include "core/scene_pick.h"
+#include "kifs/distance.h"
+#include "kifs/kernel.h"
+#include "kifs/trace.h"
 #include "render/gl.h"
+#include "render/kifs_pass.h"
 #include "render/image.h"
 #include "render/kifs_layer.h"
 
@@ -11,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <limits>
 
 namespace corbel::editor {
 
@@ -28,10 +34,49 @@ void App::handleViewInput() {
   c.release = [this] {
     if (growthPanel_.viewDragging()) growthPanel_.endViewDrag(growthHost());
   };
-  c.click = [this](const Ray& r) {
-    // On the selected extrusion a click picks a face: its provenance is logged and its plan
-    // edge and profile segment are highlighted in the panes.
-    const DocObject* o = selected() ? history_.current().find(*selected()) : nullptr;
+  c.click = [this](const Ray& r) { clickInView(r); };
+  const bool overUi = ImGui::GetIO().WantCaptureMouse;
+  for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
+  // The growth site was deselected (a menu, a shortcut) during the drag.
+  if (growthPanel_.viewDragging() && !selectedGrowth()) growthPanel_.endViewDrag(growthHost());
+}
+
+std::optional<ObjectId> App::objectUnder(const Ray& r) {
+  const Vec3 d = r.direction.normalized();
+  std::optional<ObjectId> hit;
+  double nearest = std::numeric_limits<double>::infinity();
+  if (const auto p = pickScene(shownScene(), r.origin, d, settings_.visible)) {
+    hit = p->object;
+    nearest = p->t;
+  }
+  // KIFS buildings drawn by ray marching have no faces: the CPU twin of the shader marches the ray.
+  for (const DocObject& o : history_.current().objects) {
+    const auto* k = std::get_if<KifsSpec>(&o.spec);
+    if (!k || k->meshResolution > 0 || (settings_.visible && !settings_.visible(o.id))) continue;
+    try {
+      kifs::KifsParams params = render::kifsForView(kifs::paramsOf(*k), view_.camera, std::max(1, int(view_.height())));
+      const kifs::Building b(params);
+      const kifs::Hit h = kifs::trace(b, {{r.origin[0], r.origin[1], r.origin[2]}, {d[0], d[1], d[2]}});
+      if (h.hit && h.t < nearest) {
+        nearest = h.t;
+        hit = o.id;
+      }
+    } catch (const std::exception&) {
+      // a spec the kernel refuses is not drawn, so it cannot be clicked
+    }
+  }
+  return hit;
+}
+
+void App::clickInView(const Ray& r) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool add = io.KeyShift, toggle = io.KeyCtrl;
+  const std::optional<ObjectId> hit = objectUnder(r);
+  const std::optional<ObjectId> active = selected();
+  if (hit && hit == active && !add && !toggle) {
+    // On the active extrusion a click picks a face: its provenance is logged and its plan edge
+    // and profile segment are highlighted in the panes.
+    const DocObject* o = history_.current().find(*active);
     if (const auto* spec = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr) {
       const std::string what = panes_.pick(*spec, r.origin, r.direction);
       if (!what.empty()) log(o->name + ": picked " + what);
@@ -40,11 +85,15 @@ void App::handleViewInput() {
     if (selectedTown()) townPanel_.pick(townHost(), r.origin, r.direction);
     // On a simulated masonry object it chooses a block for the remove-block tool.
     if (selectedMasonry() && statics_.simulating()) statics_.pickBlock(staticsHost(), r.origin, r.direction);
-  };
-  const bool overUi = ImGui::GetIO().WantCaptureMouse;
-  for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
-  // The growth site was deselected (a menu, a shortcut) during the drag.
-  if (growthPanel_.viewDragging() && !selectedGrowth()) growthPanel_.endViewDrag(growthHost());
+    return;
+  }
+  if (!hit) {
+    if (!add && !toggle) selection_.clear();
+    return;
+  }
+  if (toggle) selection_.toggle(*hit);
+  else if (add) selection_.add(*hit);
+  else selection_.select(*hit);
 }
 
 const Scene& App::shownScene() {

@@ -3,6 +3,7 @@
 #include "core/materials.h"
 #include "editor/completion_edits.h"
 #include "editor/completion_view.h"
+#include "editor/pane_window.h"
 #include "growth/constraints.h"
 #include "growth/tolerances.h"
 
@@ -480,8 +481,7 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
   if (!spec) return;
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Form completion", nullptr,
-               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Form completion", nullptr, kPaneFlags);
   if (!regionSet_) {
     try {
       defaultRegion(growth::parseSite(spec->site));

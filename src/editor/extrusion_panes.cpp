@@ -1,6 +1,7 @@
 #include "editor/extrusion_panes.h"
 
 #include "editor/fields.h"
+#include "editor/pane_window.h"
 
 #include "core/error.h"
 #include "extrude/edit.h"
@@ -417,7 +418,7 @@ void ExtrusionPanes::draw(const PaneHost& host, float x, float y, float w, float
 void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Plan", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Plan", nullptr, kPaneFlags);
   const DocObject* object = host.doc->find(host.object);
   // Toolbar.
   if (ImGui::Button("Fit")) fitted_ = false;
@@ -1054,7 +1055,7 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
 void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Profile", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Profile", nullptr, kPaneFlags);
   if (spec.profiles.empty()) {
     ImGui::End();
     return;

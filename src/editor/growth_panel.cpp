@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "editor/completion_view.h"
+#include "editor/pane_window.h"
 #include "editor/view_map_context.h"
 #include "growth/kernel.h"
 #include "growth/site.h"
@@ -774,7 +775,7 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
   parseSite(*spec);
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Growth", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Growth", nullptr, kPaneFlags);
   ImGui::Text("%s: growth site (Ng, Ch. 4)", o->name.c_str());
   if (!summary_.empty()) ImGui::TextWrapped("%s", summary_.c_str());
   if (!host.error.empty()) {

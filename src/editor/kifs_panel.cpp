@@ -1,6 +1,7 @@
 #include "editor/kifs_panel.h"
 
 #include "editor/kifs_edits.h"
+#include "editor/pane_window.h"
 #include "kifs/mesher.h"
 #include "kifs/params.h"
 
@@ -32,8 +33,7 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
   if (!current) return;
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("KIFS building", nullptr,
-               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("KIFS building", nullptr, kPaneFlags);
   ImGui::PushItemWidth(-150.0f);
   const std::string key = "kifs" + std::to_string(host.object) + ".";
   KifsSpec s = *current;

@@ -1,6 +1,7 @@
 #include "editor/statics_panel.h"
 
 #include "editor/masonry_edits.h"
+#include "editor/pane_window.h"
 #include "statics/tolerances.h"
 
 #include <imgui.h>
@@ -788,7 +789,7 @@ void StaticsPanel::draw(const StaticsHost& host, float x, float y, float w, floa
   if (!spec) return;
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Statics", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Statics", nullptr, kPaneFlags);
   ImGui::Text("%s: masonry model \"%s\"", o->name.c_str(), spec->model.c_str());
   drawParameters(host, *spec);
   drawAnalysis(*spec);

@@ -23,6 +23,7 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   j["dirty"] = s.dirty;
   j["undo"] = s.undo;
   if (!s.planCorners.empty()) j["plan_corners"] = s.planCorners;
+  j["view"] = s.view;
   return j;
 }
 

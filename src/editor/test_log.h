@@ -25,6 +25,8 @@ struct SettledFrame {
   // Where the plan pane shows the active extrusion's corners (window pixels, per loop), for a
   // test to click; empty when no plan pane is open.
   std::vector<std::vector<std::array<float, 2>>> planCorners;
+  // The 3D view's rectangle in window pixels: x, y (top left), width, height.
+  std::array<float, 4> view{};
 };
 
 // The line for `s` (one JSON object, no newline).

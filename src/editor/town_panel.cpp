@@ -2,6 +2,7 @@
 
 #include "city/street.h"
 #include "core/error.h"
+#include "editor/pane_window.h"
 #include "editor/town_edits.h"
 
 #include <imgui.h>
@@ -416,7 +417,7 @@ void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
   const DocObject* o = host.doc->find(host.object);
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Town", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Town", nullptr, kPaneFlags);
   ImGui::PushItemWidth(-110.0f);
   ImGui::Text("%s: town from footprints (Kelly & Wonka 3.7)", o->name.c_str());
   const ObjectId id = host.object;

@@ -8,8 +8,9 @@
 #     orbit rate, 0.4 degrees a pixel), and a wheel step zooms it in by the wheel's factor;
 #  3. Ctrl+Q with nothing unsaved quits at once, with exit code 0;
 #  4. on the Fig. 1 house, Delete with a plan corner selected and the pointer over the plan pane
-#     deletes the corner, not the house; after a click in the 3D view it deletes the house, one
-#     undo step that Ctrl+Z takes back;
+#     deletes the corner, not the house; a click on the sky clears the selection, one on the house
+#     selects it and Ctrl+click takes it out again; after a click on it Delete deletes the house,
+#     one undo step that Ctrl+Z takes back;
 #  5. a name typed into the Name field and left by a click elsewhere (no Enter) is kept.
 set -euo pipefail
 editor=$1 example=$2 work=$3
@@ -94,8 +95,24 @@ xdotool key Delete
 wait_for "j['objects'] == 2 and j['undo'] == 'Delete corner (House)' and len(j['plan_corners'][0]) == 3"
 echo "corner deleted: $(tail -1 "$log" | cut -c1-160)"
 
-echo "== Delete after a click in the 3D view deletes the house; Ctrl+Z brings it back"
-xdotool mousemove --sync --window "$wid" 560 100 click 1  # the sky: the plan pane loses the keys
+echo "== clicks in the 3D view select: the sky clears, the house selects, Ctrl toggles it out"
+# The 3D view's centre, where the camera looks at the house (the view narrows when the panes of
+# a selected extrusion open, so it is read again after each change of selection).
+centre() { field "['view']" | python3 -c 'import sys; x, y, w, h = eval(sys.stdin.read()); print(int(x + w / 2), int(y + h / 2))'; }
+xdotool mousemove --sync --window "$wid" 560 100 click 1  # the sky: nothing there
+wait_for "j['selection'] == [] and j['active'] is None"
+read -r mx my <<<"$(centre)"
+xdotool mousemove --sync --window "$wid" "$mx" "$my" click 1  # the house
+wait_for "j['selection'] == ['House'] and j['active'] == 'House'"
+read -r mx my <<<"$(centre)"
+xdotool mousemove --sync --window "$wid" "$mx" "$my" keydown ctrl click 1 keyup ctrl
+wait_for "j['selection'] == []"
+echo "selected and toggled by clicks: $(tail -1 "$log" | cut -c1-120)"
+
+echo "== Delete after a click on the house in the 3D view deletes it; Ctrl+Z brings it back"
+read -r mx my <<<"$(centre)"
+xdotool mousemove --sync --window "$wid" "$mx" "$my" click 1  # the view takes the keys from the plan pane
+wait_for "j['active'] == 'House'"
 xdotool key Delete
 wait_for "j['objects'] == 1 and j['undo'] == 'Delete House' and j['active'] is None"
 xdotool key --clearmodifiers ctrl+z
@@ -107,7 +124,8 @@ wait_for "j['active'] == 'House'"
 xdotool mousemove --sync --window "$wid" 100 112 click 1  # its Name field
 xdotool key --clearmodifiers ctrl+a
 xdotool type --delay 30 Manor
-xdotool mousemove --sync --window "$wid" 560 560 click 1  # the 3D view: the field is left
+read -r mx my <<<"$(centre)"
+xdotool mousemove --sync --window "$wid" "$mx" "$my" click 1  # the house in the 3D view: the field is left
 wait_for "j['active'] == 'Manor' and j['undo'] == 'Edit name of House'"
 echo "renamed: $(tail -1 "$log" | cut -c1-120)"
 kill "$pid"
