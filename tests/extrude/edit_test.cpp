@@ -3,6 +3,7 @@
 // the faces and tags each stage should give.
 #include "core/error.h"
 #include "core/history.h"
+#include "core/project_io.h"
 #include "core/scene.h"
 #include "core/scene_sync.h"
 #include "extrude/edit.h"
@@ -89,6 +90,74 @@ TEST(Edit, AddOverhangIsOneChangeToEveryProfile) {
   EXPECT_NEAR(m.soffitArea, 11 * 7 - 60, 1e-9);  // every edge overhangs: the ring around the plan
   EXPECT_THROW(ed::addOverhang(s, 0.0, 0.5), InputError);
   EXPECT_THROW(ed::addOverhang(s, 3.0, 0.0), InputError);
+}
+
+// Sec. 3.3: the overhang's "starting height will remain synchronized": every profile that spans
+// the height gets its horizontal segment at that absolute height. A step's profiles start at
+// the step's anchor, so they get it that much lower; profiles that start above it get none;
+// a profile that a main edge and a step share is copied for the step.
+TEST(Edit, AddOverhangIsAtOneAbsoluteHeightOnEveryProfile) {
+  auto horizontals = [](const Profile& p) {
+    std::vector<double> zs;
+    for (std::size_t i = 0; i + 1 < p.points.size(); ++i)
+      if (p.points[i][1] == p.points[i + 1][1]) zs.push_back(p.points[i][1]);
+    return zs;
+  };
+  // The Fig. 1 house: eaves and gables from the base, a bay at the base, dormers at 5.5 m, a
+  // chimney at 8.4 m.
+  const Document house = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/house.corbel").document;
+  const ExtrusionSpec s = std::get<ExtrusionSpec>(house.objects[0].spec);
+  const ExtrusionSpec o = ed::addOverhang(s, 3.0, 0.3);
+  ASSERT_EQ(o.profiles.size(), s.profiles.size()) << "no profile is shared between heights";
+  for (std::size_t k = 0; k < o.profiles.size(); ++k) {
+    SCOPED_TRACE(o.profiles[k].name);
+    std::vector<double> before = horizontals(s.profiles[k]), after = horizontals(o.profiles[k]);
+    const std::string& n = o.profiles[k].name;
+    if (n == "eaves" || n == "gable" || n == "bay") before.push_back(3.0);  // from the base
+    std::sort(before.begin(), before.end());
+    EXPECT_EQ(after, before);
+  }
+  // Built: every face looking straight down is at 3 m (the new overhang), 5.5 m (the eaves'
+  // own overhang and the dormers' undersides) or 8.4 m (the chimney's underside on the roof).
+  const ExtrusionResult r = extrude(o);
+  EXPECT_TRUE(r.shell.warnings.empty());
+  std::set<double> soffits;
+  for (const ShellFace& f : r.shell.faces)
+    if (!f.base && f.normal[2] < -1 + 1e-12)
+      for (const auto& l : f.loops)
+        for (int v : l) soffits.insert(std::round(r.shell.points[v][2] * 1e6) / 1e6);
+  EXPECT_EQ(soffits, (std::set<double>{3.0, 5.5, 8.4}));
+
+  // A profile shared by the main edges (from the base) and a step anchored at 1 m, and another
+  // shared with a step anchored at 4 m: the steps get copies, at 3 − 1 = 2 m and none.
+  ExtrusionSpec t;
+  t.profiles = {ed::profileLibrary()[1], ed::profileLibrary()[2]};  // hip (walls 3 m), gable
+  t.profiles[1].points = {{0, 0}, {0, 5}, {0, 6}};
+  t.loops.push_back({rectangle(10, 6), {0, 1, 0, 1}});
+  PlanStep oriel;
+  oriel.name = "oriel";
+  oriel.anchor = {0, 0, false, 0.5, 1.0};
+  oriel.width = 2;
+  oriel.depth = 0.5;
+  oriel.frontProfile = oriel.sideProfile = 0;
+  PlanStep dormer = oriel;
+  dormer.name = "dormer";
+  dormer.anchor = {0, 2, false, 0.5, 4.0};
+  dormer.frontProfile = dormer.sideProfile = 1;
+  t.steps = {oriel, dormer};
+  const ExtrusionSpec u = ed::addOverhang(t, 3.0, 0.3);
+  ASSERT_EQ(u.profiles.size(), 4u);
+  EXPECT_EQ(u.loops[0].profile, (std::vector<int>{0, 1, 0, 1})) << "the main edges keep theirs";
+  EXPECT_EQ(horizontals(u.profiles[0]), (std::vector<double>{3.0}));
+  EXPECT_EQ(horizontals(u.profiles[1]), (std::vector<double>{3.0}));
+  const Profile& orielP = u.profiles.at(u.steps[0].frontProfile);
+  const Profile& dormerP = u.profiles.at(u.steps[1].frontProfile);
+  EXPECT_EQ(u.steps[0].sideProfile, u.steps[0].frontProfile);
+  EXPECT_EQ(u.steps[1].sideProfile, u.steps[1].frontProfile);
+  EXPECT_EQ(horizontals(orielP), (std::vector<double>{2.0}));
+  EXPECT_EQ(dormerP.points, t.profiles[1].points) << "the dormer starts above the overhang";
+  EXPECT_NE(orielP.name, u.profiles[0].name);
+  EXPECT_NE(dormerP.name, u.profiles[1].name);
 }
 
 TEST(Edit, ScriptsRefuseBadOperationsWithAReason) {
