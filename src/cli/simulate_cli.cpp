@@ -10,6 +10,7 @@
 #include "sim/session.h"
 #include "statics/examples.h"
 #include "statics/kernel.h"
+#include "statics/thresholds.h"
 
 #include <nlohmann/json.hpp>
 
@@ -40,6 +41,7 @@ struct Model {
   statics::Assembly assembly;
   std::string label;  // "example NAME" or the object's name
   double friction = 0.7;
+  double kern = 0.0;  // the kern shrink the design is analysed with (the object's; 0 for an example)
 };
 
 void applySets(const SimulateRequest& r, statics::ParameterSet& values) {
@@ -88,6 +90,7 @@ Model modelFrom(const SimulateRequest& r) {
   m.assembly = model.build(values);
   m.label = masonry[0]->name;
   m.friction = spec.friction;
+  m.kern = spec.kern;
   return m;
 }
 
@@ -121,6 +124,9 @@ class FrameWriter {
   render::OrbitCamera camera_;
   Scene scene_;
 };
+
+// The resolution of the kern margin simulate reports (an LP bisection over [0, 0.95]).
+constexpr double kKernMarginStep = 0.01;
 
 }  // namespace
 
@@ -224,6 +230,29 @@ int run(const SimulateRequest& r) {
   }
   out["largest_displacement"] = largest;
   out["max_displacement"] = perBlock;
+  // What the statics analysis says of the design with the simulation's friction: whether it
+  // stands at its kern (strict LP) and its kern margin, the largest kern shrink at which it
+  // still stands (to 0.01). A design that stands only with the thrust on its joints' edges has
+  // no margin, and the simulation may settle or hinge where the analysis calls it standing.
+  statics::AnalysisOptions staticsOptions;
+  staticsOptions.friction = settings.friction;
+  staticsOptions.kernShrink = model.kern;
+  const bool standsAtKern = statics::checkFeasibility(model.assembly, staticsOptions).feasible;
+  const double margin = statics::largestKernMargin(model.assembly, staticsOptions, kKernMarginStep);
+  nlohmann::ordered_json st;
+  st["kern"] = model.kern;
+  st["stands"] = standsAtKern;
+  st["kern_margin"] = margin < 0 ? nlohmann::json(nullptr) : nlohmann::json(margin);
+  std::string note;
+  if (margin < 0)
+    note = "the statics analysis says it does not stand, even with no kern margin";
+  else if (margin < kKernMarginStep)
+    note = "no kern margin: it stands only with the thrust on its joints' edges (kern 0)";
+  if (!note.empty()) {
+    st["note"] = note;
+    std::cerr << "corbel-cli: simulate: " << model.label << ": " << note << "\n";
+  }
+  out["statics"] = st;
   out["frames"] = frames ? frames->count() : 0;
   out["wall_seconds"] = wall;
   out["simulated_seconds_per_wall_second"] = simulatedWall > 0 ? session.time() / simulatedWall : 0.0;

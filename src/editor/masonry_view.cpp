@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <limits>
 #include <mutex>
@@ -54,6 +55,8 @@ void analyseInto(MasonryView& view, const statics::AnalysisOptions& options, Pro
     if (progress && progress->cancelled()) throw Cancelled();
     view.result = statics::analyse(assembly, options);
     view.tensionShare = blockTensionShares(assembly.blocks.size(), view.result);
+    if (progress && progress->cancelled()) throw Cancelled();
+    view.strict = statics::checkFeasibility(assembly, options);
   } catch (const Cancelled&) {
     throw;
   } catch (const std::exception& e) {
@@ -90,6 +93,29 @@ MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptio
     return model.build(model.parameters);
   });
   return view;
+}
+
+std::vector<Verdict> staticsVerdicts(const MasonryView& view) {
+  std::vector<Verdict> out;
+  if (!view.error.empty()) return out;
+  char text[160];
+  const statics::AnalysisResult& r = view.result;
+  if (r.feasible)
+    out.push_back({"stands (penalty QP): a compression-only force field exists", true});
+  else
+    out.push_back({"does not stand (penalty QP): it needs tension (glue) to hold", false});
+  const statics::FeasibilityResult& lp = view.strict;
+  if (lp.feasible)
+    std::snprintf(text, sizeof text, "stands (strict LP): no tension variables, least violation %.2g W", lp.violation);
+  else if (lp.status == statics::SolveStatus::Optimal || lp.status == statics::SolveStatus::ReducedAccuracy)
+    std::snprintf(text, sizeof text, "does not stand (strict LP): without tension equilibrium misses by %.3g W",
+                  lp.violation);
+  else
+    std::snprintf(text, sizeof text, "strict LP: no verdict (solver %s)", statics::toString(lp.status).c_str());
+  out.push_back({text, lp.feasible});
+  if (r.feasible != lp.feasible)
+    out.push_back({"the QP and the LP disagree: the design sits on its threshold", false});
+  return out;
 }
 
 std::vector<double> blockTensionShares(std::size_t blocks, const statics::AnalysisResult& result) {

@@ -27,6 +27,10 @@ struct MasonryView {
   std::vector<bool> fixed;                                 // per block: ground or abutment
   std::vector<double> tensionShare;                        // per block, in [0, 1] (blockTensionShares)
   statics::AnalysisResult result;
+  // The strict LP phase-1 test of the same assembly (statics::checkFeasibility): a
+  // compression-only force field with no tension variables at all, the verdict the
+  // thresholds are decided by. Shown beside the QP's.
+  statics::FeasibilityResult strict;
   double modelSize = 1.0;  // the model's bounding-box diagonal, m
   std::string error;       // the model could not be built or analysed ("" = fine)
   // Set by analyseSceneBlocks: the blocks are the Scene's (no spec, no parameters).
@@ -51,6 +55,17 @@ MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptio
 // whose blocks cannot be made or analysed gives a view with `error` naming the object and piece.
 MasonryView analyseSceneBlocks(const Scene& scene, const statics::SceneBlockOptions& blocks,
                                const statics::AnalysisOptions& options, Progress* progress = nullptr);
+
+// The panel's two verdicts on a view without an error, the penalty QP's (Sec. 3.2: y/W² at most
+// statics::kFeasibleMeasure) and the strict LP's (violation at most statics::kFeasibleViolation
+// W), each one line and whether it says the structure stands; a third line when they differ
+// (the design sits on its threshold, where the QP's y ≈ 0 and the LP's violation ≈ 0 are
+// decided by their tolerances).
+struct Verdict {
+  std::string text;
+  bool stands = false;
+};
+std::vector<Verdict> staticsVerdicts(const MasonryView& view);
 
 // Each block's tension T_b = Σ f_n⁻ over the contact vertices of every interface it takes
 // part in, divided by the largest T_b. All zero when no vertex carries more than the tension

@@ -532,10 +532,7 @@ void StaticsPanel::drawAnalysis(const MasonrySpec& spec) {
     return;
   }
   const statics::AnalysisResult& r = view_->result;
-  if (r.feasible)
-    ImGui::TextColored(kGood, "stands: a compression-only force field exists");
-  else
-    ImGui::TextColored(kBad, "does not stand: it needs tension (glue) to hold");
+  for (const Verdict& v : staticsVerdicts(*view_)) ImGui::TextColored(v.stands ? kGood : kBad, "%s", v.text.c_str());
   ImGui::Text("y = %.4g N²    y/W² = %.4g", r.y, r.yNormalised);
   ImGui::Text("W = %.4g N, %zu blocks, %zu interfaces", r.totalWeight, view_->blockFaces.size(), r.interfaces.size());
   ImGui::Text("solver: %s, %d iterations, residual %.2g", statics::toString(r.status).c_str(), r.iterations,
@@ -776,6 +773,9 @@ void StaticsPanel::drawScene(const StaticsHost& host) {
     ImGui::TextColored(kGood, "the Scene's blocks stand together");
   else
     ImGui::TextColored(kBad, "the Scene's blocks do not stand: they need tension to hold");
+  const std::vector<Verdict> verdicts = staticsVerdicts(v);
+  for (std::size_t i = 1; i < verdicts.size(); ++i)  // the strict LP's, and whether they disagree
+    ImGui::TextColored(verdicts[i].stands ? kGood : kBad, "%s", verdicts[i].text.c_str());
   ImGui::Text("y/W² = %.4g, W = %.4g N, %zu blocks%s", r.yNormalised, r.totalWeight, v.blockFaces.size(),
               v.groundPlaneAdded ? " (with a ground plane)" : "");
   ImGui::Text("%zu interfaces, %zu tension sites; solver: %s", r.interfaces.size(), r.tensionSites.size(),

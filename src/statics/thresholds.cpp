@@ -40,4 +40,20 @@ double criticalArchTilt(ArchSpec spec, const AnalysisOptions& options, double to
       0.0, 60.0, toleranceDeg, "tilt (degrees)");
 }
 
+double largestKernMargin(const Assembly& assembly, AnalysisOptions options, double tolerance) {
+  if (!(tolerance > 0)) throw Error("kern margin: the tolerance must be positive");
+  auto stands = [&](double s) {
+    options.kernShrink = s;
+    return checkFeasibility(assembly, options).feasible;
+  };
+  if (!stands(0.0)) return -1.0;
+  if (stands(kMaxKernMargin)) return kMaxKernMargin;
+  double ok = 0.0, bad = kMaxKernMargin;
+  while (bad - ok > tolerance) {
+    const double mid = 0.5 * (ok + bad);
+    (stands(mid) ? ok : bad) = mid;
+  }
+  return ok;
+}
+
 }  // namespace corbel::statics

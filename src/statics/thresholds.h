@@ -20,4 +20,12 @@ double minimumArchThickness(ArchSpec spec, const AnalysisOptions& options = {}, 
 // The ground tilt in degrees at which the arch stops standing (spec.tiltDeg is ignored).
 double criticalArchTilt(ArchSpec spec, const AnalysisOptions& options = {}, double toleranceDeg = 1e-5);
 
+// The largest kern shrink s (Sec. 3.4: every contact polygon scaled by 1 − s about its
+// centroid) at which the assembly still stands by the strict LP test, with `options`' friction,
+// to `tolerance` (bisection over [0, kMaxKernMargin]; the value returned is the bracket's
+// standing end, so the assembly stands at it). −1 when it does not stand even at s = 0;
+// kMaxKernMargin when it stands there too.
+inline constexpr double kMaxKernMargin = 0.95;
+double largestKernMargin(const Assembly& assembly, AnalysisOptions options = {}, double tolerance = 0.01);
+
 }  // namespace corbel::statics

@@ -159,6 +159,45 @@ TEST(AnalyseMasonry, AThickArchOnWideColumnsStandsWithNoTensionShown) {
   for (double s : v.tensionShare) EXPECT_EQ(s, 0.0);
 }
 
+// The panel shows the strict LP's verdict beside the QP's: the thin example arch fails both
+// (the LP misses equilibrium by a positive violation), the thick one stands by both.
+TEST(AnalyseMasonry, ShowsTheStrictLpVerdictBesideTheQps) {
+  const MasonryView thin = analyseMasonry(exampleArch());
+  ASSERT_TRUE(thin.error.empty()) << thin.error;
+  EXPECT_FALSE(thin.strict.feasible);
+  EXPECT_GT(thin.strict.violation, statics::kFeasibleViolation);
+  std::vector<Verdict> v = staticsVerdicts(thin);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_FALSE(v[0].stands);
+  EXPECT_NE(v[0].text.find("penalty QP"), std::string::npos) << v[0].text;
+  EXPECT_FALSE(v[1].stands);
+  EXPECT_NE(v[1].text.find("does not stand (strict LP)"), std::string::npos) << v[1].text;
+
+  MasonrySpec spec = exampleArch();
+  spec.parameters = {{"columnWidth", 0.9}, {"thickness", 0.25}};
+  const MasonryView thick = analyseMasonry(spec);
+  EXPECT_TRUE(thick.strict.feasible);
+  EXPECT_LE(thick.strict.violation, statics::kFeasibleViolation);
+  v = staticsVerdicts(thick);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_TRUE(v[0].stands);
+  EXPECT_TRUE(v[1].stands);
+  EXPECT_NE(v[1].text.find("stands (strict LP)"), std::string::npos) << v[1].text;
+
+  // Where the two disagree (a design on its threshold) a third line says so.
+  MasonryView split = thick;
+  split.strict.feasible = false;
+  v = staticsVerdicts(split);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_TRUE(v[0].stands);
+  EXPECT_FALSE(v[1].stands);
+  EXPECT_NE(v[2].text.find("disagree"), std::string::npos) << v[2].text;
+  // A view with an error has no verdict.
+  MasonrySpec unknown;
+  unknown.model = "no-such-model";
+  EXPECT_TRUE(staticsVerdicts(analyseMasonry(unknown)).empty());
+}
+
 TEST(AnalyseMasonry, AnUnknownModelIsAnErrorInTheViewNamingIt) {
   MasonrySpec spec;
   spec.model = "no-such-model";

@@ -54,6 +54,35 @@ TEST(SimulateCli, WhatStaticsCallsStandingStaysPut) {
   EXPECT_LT(j["largest_displacement"].get<double>(), 1e-3);
   EXPECT_EQ(j["steps"], 1200);
   EXPECT_EQ(j["max_displacement"].size(), 10u) << "every block but the ground";
+
+  // simulate reports the design's statics: it stands, and its kern margin is where the statics
+  // command's verdict changes: standing at the margin, not 0.01 past it (the margin is an LP
+  // bisection to 0.01; the statics command's verdict is the QP's).
+  ASSERT_TRUE(j.contains("statics"));
+  EXPECT_TRUE(j["statics"]["stands"].get<bool>());
+  EXPECT_FALSE(j["statics"].contains("note"));
+  const double margin = j["statics"]["kern_margin"].get<double>();
+  EXPECT_GE(margin, 0.6667 - 0.01);
+  auto standsAt = [](double kern) {
+    const Outcome o = corbel("statics example arch-on-columns --set thickness=0.35 --set columnWidth=0.8 --kern " +
+                             std::to_string(kern) + " --json");
+    EXPECT_EQ(o.exit, 0) << o.stderrText;
+    return nlohmann::json::parse(o.stdoutText)["stands"].get<bool>();
+  };
+  EXPECT_TRUE(standsAt(margin));
+  EXPECT_FALSE(standsAt(margin + 0.01));
+}
+
+// A design the statics analysis does not call standing is said so, with no margin.
+TEST(SimulateCli, SaysWhenTheDesignHasNoMargin) {
+  const Outcome run =
+      corbel(std::string("simulate '") + CORBEL_SOURCE_DIR + "/assets/examples/masonry-arch.corbel' --seconds 0.05");
+  ASSERT_EQ(run.exit, 0) << run.stderrText;
+  const auto j = nlohmann::json::parse(run.stdoutText);
+  EXPECT_FALSE(j["statics"]["stands"].get<bool>());
+  EXPECT_TRUE(j["statics"]["kern_margin"].is_null());
+  EXPECT_NE(j["statics"]["note"].get<std::string>().find("does not stand"), std::string::npos);
+  EXPECT_NE(run.stderrText.find("does not stand"), std::string::npos) << run.stderrText;
 }
 
 TEST(SimulateCli, ArchWithoutItsKeystoneFallsAndFramesAreWritten) {

@@ -145,6 +145,21 @@ TEST(BlockStatics, KernShrinkTurnsAJustFeasibleOverhangInfeasible) {
   EXPECT_FALSE(analyse(stack(0, 0.49), kern).feasible);
 }
 
+// The kern margin of the same overhang (largestKernMargin): the top cube at offset u rests on
+// [u, 1], half-width (1 − u)/2 shrunk to (1 − u)(1 − s)/2 about its centre (1 + u)/2, with
+// its weight at u + 1/2, u/2 from that centre: it stands while s ≤ 1 − u/(1 − u) (the
+// ground's contact, 1 − u, allows more). By hand 0.75 at u = 0.2 and 0 at u = 1/2; past
+// 1/2 none (−1); a straight stack stands at the largest kern searched.
+TEST(BlockStatics, KernMarginOfAnOverhangIsTheHandComputedOne) {
+  const double m = largestKernMargin(stack(0, 0.2), {}, 1e-4);
+  EXPECT_LE(m, 0.75);
+  EXPECT_GE(m, 0.75 - 1e-4);  // the bracket's standing end, 1e-4 wide
+  EXPECT_LT(largestKernMargin(stack(0, 0.5 - 1e-3), {}, 1e-2), 1e-2);
+  EXPECT_EQ(largestKernMargin(stack(0, 0.6)), -1.0);
+  EXPECT_EQ(largestKernMargin(stack(0, 0)), kMaxKernMargin);
+  EXPECT_THROW(largestKernMargin(stack(0, 0.2), {}, 0.0), Error);
+}
+
 // The centre of pressure against the contact polygon: top cube at offset 0.3 rests on
 // [0.3, 1] (centroid 0.65) with its weight at 0.8: gauge 0.15/0.35; the ground carries both
 // cubes' centroid 0.65 on [0, 1] (centroid 0.5): gauge 0.15/0.5. A straight stack: 0.

@@ -210,7 +210,8 @@ double leastSlack(const OracleQP& q, const Eigen::VectorXd& x) {
 }
 
 // Solves the model both ways and compares. corbel must end `optimal` (where its iterations stop
-// short, the polish's point: docs/statics.md), y within 1e-6 relative, with an absolute floor of
+// short, the polish's point: docs/statics.md), y within 1e-8 relative (the largest difference
+// measured on these models is 5.8e-9, the thin-buttressed vault's), with an absolute floor of
 // kFeasibleMeasure (1e-10 in y/W², the resolution at which "stands" is decided: both solvers
 // stop at complementarity of that order, so y ≈ 0 cannot be compared relatively). Returns
 // Ipopt's y/W².
@@ -225,7 +226,7 @@ double compareWithIpopt(const Assembly& as, const AnalysisOptions& opt = {}) {
   EXPECT_EQ(ours.solution.size(), q.n);
   if (ours.solution.size() != q.n) return ip.y;
 
-  const double tol = std::max(1e-6 * ip.y, kFeasibleMeasure);
+  const double tol = std::max(1e-8 * ip.y, kFeasibleMeasure);
   std::printf(
       "  %d blocks, %d variables: corbel y/W² %.10g (%s, %d iterations, gap %.2g), Ipopt %.10g (%d iterations), "
       "difference %.2g (%.2g relative); residuals %.1e, %.1e\n",
@@ -332,7 +333,9 @@ Assembly twoCubes(double offset) {
 TEST(IpoptOracle, StackPastTipping) {
   // Offset 0.7 > 1/2: the top cube's weight (half of W) at 0.2 past the edge. The least tension
   // is 2/3 of the top cube's weight split over the two far corners: y/W² = 2 (1/6)² = 1/18.
-  EXPECT_NEAR(compareWithIpopt(twoCubes(0.7)), 1.0 / 18.0, 1e-7);
+  // Within Ipopt's own stopping tolerance (tol 1e-14 on the scaled KKT error) with room for
+  // rounding in y = Σ x²: measured 8e-12 relative.
+  EXPECT_NEAR(compareWithIpopt(twoCubes(0.7)), 1.0 / 18.0, 1e-10);
   EXPECT_LE(compareWithIpopt(twoCubes(0.4)), kFeasibleMeasure);
 }
 
