@@ -41,8 +41,9 @@ constexpr int kSize = 128;
 // coordinates here are at most about 80 m, where a float's ulp is 7.6e-6 m; the threshold at
 // kSize = 128 and 40° is at least 0.2 m on the building, so one ulp is 4e-5 thresholds and
 // kNoise allows about 250 ulps. A march whose every decision is further than this from
-// turning (Hit::margin) goes the same way in float. Measured over all presets and views: every
-// pixel whose GPU and CPU results differ at all had a margin below 3.3e-5 thresholds.
+// turning (Hit::margin) goes the same way in float. Measured over all presets and views: 90 of
+// 1 310 720 pixels differ at all; 86 had a margin of at most 4.2e-3 thresholds (a box pixel;
+// the next largest 1.5e-3), the other 4 a sample near a jump (Hit::wobble, below).
 constexpr double kNoise = 1e-2;
 // The estimate and the bound jump at storey and facade-id planes and where Algorithm 1 bails
 // out; a sample that float rounding can move across a jump is probed: the CPU march evaluates
@@ -60,13 +61,16 @@ struct Twin {
   int differing = 0;            // pixels differing (mask, or depth beyond the bound), compared or not
   double worstRatio = 0;        // max over GPU hits of the CPU estimate there / the threshold
   double worstDepth = 0;        // max |t_gpu − t_cpu| / threshold on conditioned hit pixels
-  double leastBadMargin = 1e300;  // least Hit::margin of a mismatching pixel (any), for the record
+  // Over the pixels that differ (compared or not), for the record: the largest Hit::margin, and
+  // how many were excluded by Hit::wobble alone (margin above kNoise).
+  double widestBadMargin = 0;
+  int differingByWobble = 0;
   void add(const Twin& o) {
     hits += o.hits, gpuHits += o.gpuHits, offSurface += o.offSurface, conditioned += o.conditioned;
     maskMismatch += o.maskMismatch, depthOutliers += o.depthOutliers, differing += o.differing;
     steps += o.steps, mostSteps = std::max(mostSteps, o.mostSteps);
     worstRatio = std::max(worstRatio, o.worstRatio), worstDepth = std::max(worstDepth, o.worstDepth);
-    leastBadMargin = std::min(leastBadMargin, o.leastBadMargin);
+    widestBadMargin = std::max(widestBadMargin, o.widestBadMargin), differingByWobble += o.differingByWobble;
   }
 };
 
@@ -137,7 +141,8 @@ Twin compare(const std::string& name, double azimuth, double elevation) {
                        (gpuHit && std::abs(t - hit.t) > hit.steps * kNoise * threshold(hit.t) + kDepthUlps * resolution);
       if (bad) {
         ++out.differing;
-        out.leastBadMargin = std::min(out.leastBadMargin, hit.margin);
+        out.widestBadMargin = std::max(out.widestBadMargin, hit.margin);
+        if (hit.margin > kNoise && hit.wobble > kNoise) ++out.differingByWobble;
       }
       if (hit.margin <= kNoise || hit.wobble > kNoise) continue;  // 2: only marches far from every turning point
       ++out.conditioned;
@@ -164,7 +169,8 @@ TEST_P(KifsTwin, ShaderDepthAgreesWithCpuTracingAtTheShippedThreshold) {
                 << " CPU hits, " << t.conditioned << " conditioned: " << t.maskMismatch << " mask mismatches, "
                 << t.depthOutliers << " depth outliers, worst depth difference " << t.worstDepth
                 << " thresholds; " << t.offSurface << " of " << t.gpuHits << " GPU hits off the CPU surface (worst "
-                << t.worstRatio << " thresholds); least margin of a differing pixel " << t.leastBadMargin << "\n";
+                << t.worstRatio << " thresholds); " << t.differing << " pixels differ (largest margin "
+                << t.widestBadMargin << ", " << t.differingByWobble << " near a jump)\n";
       EXPECT_GT(t.hits, kSize * kSize / 20) << "az " << azimuth << " el " << elevation;
       // Most pixels are compared (about 99 % in every view): the exclusions stay exceptions.
       EXPECT_GT(t.conditioned, kSize * kSize * 9 / 10) << "az " << azimuth << " el " << elevation;
@@ -174,8 +180,8 @@ TEST_P(KifsTwin, ShaderDepthAgreesWithCpuTracingAtTheShippedThreshold) {
             << " march samples each on average, at most " << all.mostSteps << "), " << all.conditioned << " conditioned, "
             << all.maskMismatch << " mask mismatches, " << all.depthOutliers << " depth outliers, worst depth "
             << all.worstDepth << " thresholds, " << all.offSurface << " off-surface GPU hits (worst "
-            << all.worstRatio << " thresholds); " << all.differing << " pixels differ, the least margin among them "
-            << all.leastBadMargin << " thresholds\n";
+            << all.worstRatio << " thresholds); " << all.differing << " pixels differ (largest margin "
+            << all.widestBadMargin << " thresholds, " << all.differingByWobble << " with a larger margin but near a jump)\n";
   EXPECT_EQ(all.offSurface, 0);
   EXPECT_EQ(all.maskMismatch, 0);
   EXPECT_EQ(all.depthOutliers, 0);
