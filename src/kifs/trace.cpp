@@ -29,17 +29,29 @@ bool rayBox(const Ray& ray, const Aabb& box, double& t0, double& t1) {
   return t1 >= std::max(t0, 0.0);
 }
 
-Hit trace(const Building& building, const Ray& ray) {
+Hit trace(const Building& building, const Ray& ray, double probe) {
   const Trace& tr = building.params().trace;
   Hit hit;
+  auto threshold = [&](double t) { return std::max(tr.hitFactor * tr.pixelAngle * t, kMinHitDistance); };
   double t0 = 0, t1 = 0;
-  if (!rayBox(ray, building.worldBounds(), t0, t1)) return hit;
+  const bool inBox = rayBox(ray, building.worldBounds(), t0, t1);
+  hit.margin = std::abs(t1 - std::max(t0, 0.0)) / threshold(std::max(t0, 0.0));
+  if (!inBox) return hit;
   double t = std::max(t0, 0.0), tPrev = t, rPrev = 0.0, omega = tr.overRelax;
   double lastRatio = std::numeric_limits<double>::infinity();
   for (int i = 0; i < tr.maxSteps; ++i) {
     hit.steps = i + 1;
     const Sample s = building.evaluate(ray.origin + t * ray.dir);
     const double r = tr.lipschitz * s.bound;
+    const double eps = threshold(t);
+    if (probe > 0)
+      for (int a = 0; a < 6; ++a) {
+        glm::dvec3 d(0.0);
+        d[a / 2] = a % 2 ? probe : -probe;
+        const Sample n = building.evaluate(ray.origin + t * ray.dir + d);
+        hit.wobble = std::max(hit.wobble, std::max(std::abs(n.surface - s.surface), std::abs(n.bound - s.bound)) / eps);
+      }
+    if (omega > 1.0 && t > tPrev) hit.margin = std::min(hit.margin, std::abs(r + rPrev - (t - tPrev)) / eps);
     if (omega > 1.0 && r + rPrev < t - tPrev) {
       // The spheres before and after the relaxed step do not overlap, so it may have jumped a
       // surface: step plainly from the previous point and relax no more.
@@ -47,7 +59,7 @@ Hit trace(const Building& building, const Ray& ray) {
       omega = 1.0;
       continue;
     }
-    const double eps = std::max(tr.hitFactor * tr.pixelAngle * t, kMinHitDistance);
+    hit.margin = std::min(hit.margin, std::abs(s.surface - eps) / eps);
     if (s.surface < eps) {
       hit.hit = true;
       hit.t = t;
@@ -60,6 +72,7 @@ Hit trace(const Building& building, const Ray& ray) {
     tPrev = t;
     rPrev = r;
     t += std::max(omega * r, eps);  // at least eps: cell boundaries make the bound vanish
+    hit.margin = std::min(hit.margin, std::abs(t - t1) / eps);
     if (t > t1) return hit;
   }
   return hit;

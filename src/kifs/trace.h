@@ -24,6 +24,17 @@ struct Hit {
   // ray passed something by): how near the ray came to stopping earlier. Close to 1, a tiny
   // change of the march could stop it there (a graze).
   double closest = std::numeric_limits<double>::infinity();
+  // How far, in hit thresholds (at the sample's t), the march's closest decision was from
+  // going the other way: the box test (the chord inside the bounds, or the gap to them), each
+  // over-relaxation fallback test, each hit test and the exit test. A march run in float (the
+  // shader) whose rounding stays below this takes every decision the same way, so it stops at
+  // the same sample (the twin test compares only such rays).
+  double margin = std::numeric_limits<double>::infinity();
+  // With trace's probe > 0 (tests): the largest change, in hit thresholds, of a sample's
+  // estimate or bound over six points `probe` away along the axes. Small where both are smooth
+  // (about probe / threshold); large where the sample lies within probe of a place where they
+  // jump (a storey or facade-id plane, Algorithm 1's bailout), which float rounding can cross.
+  double wobble = 0;
   Sample sample;   // at the hit
 };
 
@@ -36,7 +47,7 @@ double pixelAngle(double fovDeg, int height);
 // Slab test: the interval [t0, t1] of the ray inside the box, false when it misses.
 bool rayBox(const Ray& ray, const Aabb& box, double& t0, double& t1);
 
-Hit trace(const Building& building, const Ray& ray);
+Hit trace(const Building& building, const Ray& ray, double probe = 0);
 
 // The estimate's gradient by central differences on a tetrahedron of offsets h (normalised).
 glm::dvec3 normalAt(const Building& building, const glm::dvec3& p, double h);
