@@ -48,6 +48,11 @@ struct Written {
   std::vector<Object> objects;
   std::vector<PolyMesh::VertexHandle> vertices;
   std::vector<int> index;  // per scene vertex: its number in `vertices` (from 0), or -1
+  std::size_t faceCount() const {
+    std::size_t n = 0;
+    for (const Object& o : objects) n += o.faces.size();
+    return n;
+  }
 };
 
 Written collect(const Scene& scene, const ExportOptions& options) {
@@ -152,8 +157,7 @@ void writePly(const Scene& scene, const std::string& path, const ExportOptions& 
   const PolyMesh& mesh = scene.mesh();
   const bool yUp = options.up == UpAxis::Y;
   const Written w = collect(scene, options);
-  std::size_t faces = 0;
-  for (const Written::Object& o : w.objects) faces += o.faces.size();
+  const std::size_t faces = w.faceCount();
   std::ostringstream header;
   header << "ply\nformat binary_little_endian 1.0\ncomment corbel export: meters, " << (yUp ? "Y" : "Z") << " up\n"
          << "element vertex " << w.vertices.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
@@ -186,8 +190,7 @@ void writeOff(const Scene& scene, const std::string& path, const ExportOptions& 
   const PolyMesh& mesh = scene.mesh();
   const bool yUp = options.up == UpAxis::Y;
   const Written w = collect(scene, options);
-  std::size_t faces = 0;
-  for (const Written::Object& o : w.objects) faces += o.faces.size();
+  const std::size_t faces = w.faceCount();
   std::ostringstream off;
   off.precision(17);
   off << "OFF\n" << w.vertices.size() << ' ' << faces << " 0\n";
