@@ -2,7 +2,7 @@
 // calls standing (strict LP, at the saved kern) keeps every block within 1 mm for 5 s in the
 // simulation, unperturbed. Not met yet, so disabled: the chapel settles 2.5 mm in 0.5 s and
 // creeps to 32 mm by 5 s, the groin vault loses its ribs (docs/sim.md, "The shipped examples
-// against the statics"). Run it with --gtest_also_run_disabled_tests: about 10 minutes, the
+// in the simulation"). Run it with --gtest_also_run_disabled_tests: about 10 minutes, the
 // abbey 5 of them.
 #include "core/project_io.h"
 #include "sim/session.h"
