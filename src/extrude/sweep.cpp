@@ -69,6 +69,9 @@ struct Corner {
   double speed = 0;
   bool parallel = false;
   bool alive = true;
+  // Made by an edge direction event (or resolving one): nothing at its point has been met
+  // yet, since direction events come before intersection events at their height.
+  bool turned = false;
 };
 
 struct FaceBuild {
@@ -202,6 +205,13 @@ class Sweeper {
   void push(Candidate c);
   bool nextCandidate(Candidate& out);
   std::vector<double> directionHeights_;
+  // SweepInput::timeLimitSeconds, checked wherever the work grows with the plan (predictions
+  // are n per corner: a 20,000-corner circle makes 4e8 of them before its first event).
+  std::chrono::steady_clock::time_point started_;
+  void checkClock() const;
+  bool turning_ = false;  // inside handleDirectionChanges: new corners are `turned`
+  // Turned corners that lie on another edge at the height they were made: candidates there.
+  void meetAtTurn(const std::vector<int>& corners, double h);
   std::vector<std::string> warnings_;
   double z_ = 0;
   std::size_t events_ = 0;
@@ -352,6 +362,7 @@ int Sweeper::newCorner(int prev, int next, int vertex, const Vec2& at, double z)
   c.prev = prev;
   c.next = next;
   c.vertex = vertex;
+  c.turned = turning_;
   corners_.push_back(c);
   pending_.emplace_back();
   const int ci = static_cast<int>(corners_.size()) - 1;
@@ -474,7 +485,11 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
   Corner& c = corners_[ci];
   const int A = c.prev, B = c.next;
   const int vl = c.vertex;
-  const bool keepA = inputs_[edges_[A].src]->priority >= inputs_[edges_[B].src]->priority;
+  // Each edge's priority is its segment's at this height (edges_[].step follows the direction
+  // events), so an angle step inside a stage counts as it would at a stage's base.
+  const double pa = inputs_[edges_[A].src]->steps[edges_[A].step].priority;
+  const double pb = inputs_[edges_[B].src]->steps[edges_[B].step].priority;
+  const bool keepA = pa >= pb;
   c.alive = false;
   SWEEP_TRACE("merge colinear corner %d (edges %d, %d) keeping %d", ci, A, B, keepA ? A : B);
   if (keepA) {
@@ -499,6 +514,12 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
 }
 
 // ------------------------------------------------------------------ events
+
+void Sweeper::checkClock() const {
+  if (in_.timeLimitSeconds > 0 &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() > in_.timeLimitSeconds)
+    throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+}
 
 // Where the corner's path meets each other edge's direction plane above the sweep.
 void Sweeper::predict(int ci) {
@@ -627,6 +648,7 @@ void Sweeper::predictAgainst(const std::vector<int>& planes) {
     paths[k] = {v, p0 - v * z_, std::max(c.z0 + settle(c), z_ + tol_.height), lastUseful(c)};
   }
   for (int ei : planes) {
+    checkClock();
     const Edge& e = edges_[ei];
     for (std::size_t k = 0; k < liveCorners_.size(); ++k) {
       const int ci = liveCorners_[k];
@@ -718,8 +740,10 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     // corner a split made, at 3.4 m/m and 1.4e-7 m higher, relinked with its partner, undid
     // the split and left two corners on one path: random11959). A two-edge loop (fewer than
     // three planes) is left to the test below, which closes it.
+    // (Corners an edge direction event has just made are exempt: it met nothing at their point.)
     bool madeHere = true, oneVertex = K.size() > 1 && involved.size() > 2;
     for (int ci : K) {
+      if (corners_[ci].turned && z - points_[corners_[ci].vertex][2] <= tol_.height) madeHere = oneVertex = false;
       const Vec3& p = points_[corners_[ci].vertex];
       const bool recent = z - p[2] <= 1e3 * tol_.cluster;
       madeHere = madeHere && std::abs(p[0] - l[0]) <= tol_.cluster && std::abs(p[1] - l[1]) <= tol_.cluster && recent;
@@ -1006,6 +1030,27 @@ bool Sweeper::locallySimple(const std::vector<int>& made, const Vec2& l, double 
   return true;
 }
 
+void Sweeper::meetAtTurn(const std::vector<int>& made, double h) {
+  syncLive();
+  for (int ci : made) {
+    checkClock();
+    const Corner& c = corners_[ci];
+    if (!c.alive) continue;
+    const Vec2 p = cornerAt(ci, h);
+    for (int ei : liveEdges_) {
+      const Edge& e = edges_[ei];
+      if (!e.alive || ei == c.prev || ei == c.next) continue;
+      if (std::abs(OpenMesh::dot(e.n, p) - (e.c + e.k * h)) > tol_.cluster) continue;
+      const Vec2 s = liveAt(e.start, h), t = liveAt(e.end, h);
+      const double along = OpenMesh::dot(e.d, p - s), length = OpenMesh::dot(e.d, t - s);
+      if (along < -tol_.edgeMargin || along > length + tol_.edgeMargin) continue;
+      SWEEP_TRACE("  turned corner %d lies on edge %d at (%g, %g, %g)", ci, ei, p[0], p[1], h);
+      push({h, p, ci});
+      break;
+    }
+  }
+}
+
 // Edge direction events (Sec. 4.5.1): every edge whose profile turns at height h continues
 // on a new direction plane and starts a new face.
 void Sweeper::handleDirectionChanges(double h) {
@@ -1053,6 +1098,7 @@ void Sweeper::handleDirectionChanges(double h) {
   }
   // Corners of changing edges move along new paths from here.
   std::vector<int> fresh;
+  turning_ = true;
   for (const auto& [ci, v] : cornerVertex) {
     const Corner old = corners_[ci];
     killCorner(ci, v);
@@ -1061,9 +1107,20 @@ void Sweeper::handleDirectionChanges(double h) {
     fresh.push_back(newCorner(prev, next, v, cornerPos[ci], h));
   }
   for (int ei : changing) edges_[ei].alive = false;
+  const std::size_t firstMade = corners_.size() - fresh.size();
   for (int ci : fresh) resolveCorner(ci, h);
-  for (int ci : fresh)
+  turning_ = false;
+  for (int ci : fresh) {
+    checkClock();
     if (corners_[ci].alive) predict(ci);
+  }
+  // What the old corners would have met at h (an edge that shrinks to nothing just as it
+  // turns, loops that touch as their flare ends) is the new corners' to meet, at h itself:
+  // their predictions start above it, and corners on vertical walls predict nothing at all.
+  std::vector<int> made;
+  for (std::size_t ci = firstMade; ci < corners_.size(); ++ci)
+    if (corners_[ci].alive) made.push_back(static_cast<int>(ci));
+  meetAtTurn(made, h);
   std::vector<int> planes;
   for (const auto& [old, nj] : replaced)
     if (edges_[nj].alive) planes.push_back(nj);
@@ -1153,6 +1210,7 @@ void Sweeper::capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan)
 }
 
 SweepOutput Sweeper::run() {
+  started_ = std::chrono::steady_clock::now();
   z_ = in_.baseZ;
   // Room for what a plan of n edges usually makes (an event ends or splits an edge and makes
   // a corner or two; a face has a few pieces), so a small shell grows no list piece by piece.
@@ -1214,8 +1272,10 @@ SweepOutput Sweeper::run() {
                           directionHeights_.end());
   const int initialCorners = static_cast<int>(corners_.size());
   for (int ci = 0; ci < initialCorners; ++ci) resolveCorner(ci, z_);
-  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci)
+  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
+    checkClock();
     if (corners_[ci].alive) predict(ci);
+  }
 
   // No real event lies far above the plan: the roof over a plan of size s whose edges climb
   // at most k per metre inward tops out within s·k of the last profile change. Events far
@@ -1229,7 +1289,6 @@ SweepOutput Sweeper::run() {
     }
   const double scale = tol_.minEdge / 1e-7;
   const double divergedZ = lastChange + 1e3 * scale * maxK;
-  const auto started = std::chrono::steady_clock::now();
   std::size_t nextDirection = 0;
   const std::size_t cap = 200000 + 400 * edges_.size() * edges_.size();
   std::size_t popped = 0;
@@ -1259,9 +1318,7 @@ SweepOutput Sweeper::run() {
     }
     if ((popped & 255) == 0) {
       if (progress_ && progress_->cancelled()) throw Cancelled();
-      if (in_.timeLimitSeconds > 0 &&
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
-        throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+      checkClock();
     }
     if (cand.z > divergedZ && std::isinf(stopZ_)) {
       // What is left is capped where the last real event was (capRemaining says so).
@@ -1282,9 +1339,7 @@ SweepOutput Sweeper::run() {
       z_ = std::max(z_, cand.z);
       // An event can cost far more than a pop (hundreds of edges through one point in a
       // degenerate plan), so the time limit is also checked after every one.
-      if (in_.timeLimitSeconds > 0 &&
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
-        throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+      checkClock();
     }
   }
   if (overlaps_) {
