@@ -220,5 +220,47 @@ TEST(Priority, AnEmptyStageBoundaryChangesNoShell) {
   }
 }
 
+// Dormers anchored by a fraction of the facade, above bays that split it: the terrace
+// (assets/examples/terrace.corbel: four bays on its 28 m facade, a dormer at 6 m at each bay's
+// fraction, 0.125–0.875) and the Fig. 1 house (a bay in the middle of its 12 m facade, dormers
+// at 5.5 m at 0.22 and 0.78). The bays' roofs reach the facade below the dormers and the facade
+// wins (maximising); its pieces on either side of each bay then lie in one line with one
+// profile and are one edge again (Sec. 4.8 merges all consecutive colinear edges), so every
+// dormer's front is centred at its fraction of the whole facade (over its bay on the terrace,
+// symmetric on the house), not of the longest piece left between two bays.
+TEST(Priority, DormersStandAtTheirFractionOfTheWholeFacade) {
+  for (const char* name : {"terrace", "house"}) {
+    SCOPED_TRACE(name);
+    const Document d = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + name + ".corbel").document;
+    const ExtrusionSpec s = std::get<ExtrusionSpec>(d.objects[0].spec);
+    const ExtrusionResult r = extrude(s);
+    EXPECT_TRUE(r.shell.warnings.empty());
+    expectClosed(s, r);
+    int dormers = 0;
+    for (int k = 0; k < static_cast<int>(s.steps.size()); ++k) {
+      const PlanStep& st = s.steps[k];
+      if (st.name.find("dormer") == std::string::npos) continue;
+      ++dormers;
+      SCOPED_TRACE(st.name);
+      // The facade (the anchor's input edge), from a to b.
+      const auto& pts = s.loops[st.anchor.loop].points;
+      const Vec2 a = pts[st.anchor.edge], b = pts[(st.anchor.edge + 1) % pts.size()];
+      const Vec2 dir = (b - a) / (b - a).norm();
+      double lo = 1e300, hi = -1e300;
+      for (const ShellFace& f : r.shell.faces)
+        if (f.step == k && f.profile == st.frontProfile)
+          for (const auto& l : f.loops)
+            for (int v : l) {
+              const double t = OpenMesh::dot(dir, Vec2(r.shell.points[v][0], r.shell.points[v][1]) - a);
+              lo = std::min(lo, t), hi = std::max(hi, t);
+            }
+      ASSERT_LT(lo, hi) << "no front face";
+      EXPECT_NEAR(0.5 * (lo + hi), st.anchor.along * (b - a).norm(), 1e-9);
+      EXPECT_NEAR(hi - lo, st.width, 1e-9);
+    }
+    EXPECT_EQ(dormers, std::string(name) == "terrace" ? 4 : 2);
+  }
+}
+
 }  // namespace
 }  // namespace corbel::extrude::test
