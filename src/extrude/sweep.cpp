@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <type_traits>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include <numbers>
 #include <queue>
 #include <sstream>
+#include <unordered_map>
 
 namespace corbel::extrude {
 
@@ -217,6 +219,11 @@ class Sweeper {
   double z_ = 0;
   std::size_t events_ = 0;
   std::vector<int> recent_;  // vertices made at height recentZ_
+  // The same, bucketed on a grid of cell δ2 once there are many (a plan of 100,000 corners
+  // welds its base in linear time: scanning the list for each made it quadratic, 10 s and more
+  // before the first clock check). Keyed by the cell's two indices mixed into one word.
+  std::unordered_map<std::uint64_t, std::vector<int>> recentGrid_;
+  bool cellOf(const Vec2& p, std::int64_t& ix, std::int64_t& iy) const;
   Vec2 lastEventPoint_{std::numeric_limits<double>::infinity(), 0.0};
   double lastEventZ_ = 0;
   int repeats_ = 0;
@@ -329,16 +336,60 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
 
 // Points made at one event height that coincide are one vertex: several corners and zips of
 // one event (or of events clustered at one height) meet there, and the shell must share it.
+bool Sweeper::cellOf(const Vec2& p, std::int64_t& ix, std::int64_t& iy) const {
+  const double x = std::floor(p[0] / tol_.cluster), y = std::floor(p[1] / tol_.cluster);
+  if (!(std::abs(x) < 1e15 && std::abs(y) < 1e15)) return false;  // also NaN
+  ix = static_cast<std::int64_t>(x);
+  iy = static_cast<std::int64_t>(y);
+  return true;
+}
+
+namespace {
+std::uint64_t cellKey(std::int64_t ix, std::int64_t iy) {
+  return static_cast<std::uint64_t>(ix) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(iy);
+}
+}  // namespace
+
 int Sweeper::addVertex(const Vec2& p, double z) {
+  constexpr std::size_t kGridFrom = 64;  // below this many, a scan of the list is cheaper
   if (recentZ_ != z) {
-    if (std::abs(recentZ_ - z) > tol_.height) recent_.clear();
+    if (std::abs(recentZ_ - z) > tol_.height) {
+      recent_.clear();
+      if (!recentGrid_.empty()) recentGrid_.clear();
+    }
     recentZ_ = z;
   }
-  for (int v : recent_)
-    if (std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster) return v;
+  auto near = [&](int v) {
+    return std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster;
+  };
+  std::int64_t ix = 0, iy = 0;
+  const bool gridded = recent_.size() >= kGridFrom && cellOf(p, ix, iy);
+  if (recent_.size() == kGridFrom) {
+    // Switching to the grid: the list so far goes in (points no cell holds stay in the list).
+    for (int v : recent_) {
+      std::int64_t vx, vy;
+      if (cellOf(Vec2(points_[v][0], points_[v][1]), vx, vy)) recentGrid_[cellKey(vx, vy)].push_back(v);
+    }
+  }
+  if (gridded) {
+    // The first vertex made within δ2 (the least index), as the scan of the list found it.
+    int found = -1;
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = recentGrid_.find(cellKey(ix + dx, iy + dy));
+        if (it == recentGrid_.end()) continue;
+        for (int v : it->second)
+          if ((found < 0 || v < found) && near(v)) found = v;
+      }
+    if (found >= 0) return found;
+  } else {
+    for (int v : recent_)
+      if (near(v)) return v;
+  }
   points_.emplace_back(p[0], p[1], z);
   const int v = static_cast<int>(points_.size()) - 1;
   recent_.push_back(v);
+  if (recent_.size() > kGridFrom && cellOf(p, ix, iy)) recentGrid_[cellKey(ix, iy)].push_back(v);
   return v;
 }
 
@@ -1270,8 +1321,13 @@ SweepOutput Sweeper::run() {
     const int n = static_cast<int>(loop.size());
     verts.clear();
     verts.reserve(n);
-    for (int i = 0; i < n; ++i) verts.push_back(addVertex(loop[i].start, z_));
+    // (The clock is read every 1,024 corners here too: a plan of 100,000 takes a while to set up.)
     for (int i = 0; i < n; ++i) {
+      if ((i & 1023) == 1023) checkClock();
+      verts.push_back(addVertex(loop[i].start, z_));
+    }
+    for (int i = 0; i < n; ++i) {
+      if ((i & 1023) == 1023) checkClock();
       inputs_.push_back(&loop[i]);
       Edge e;
       e.src = static_cast<int>(inputs_.size()) - 1;
@@ -1295,7 +1351,10 @@ SweepOutput Sweeper::run() {
                                       [&](double a, double b) { return std::abs(a - b) <= tol_.height; }),
                           directionHeights_.end());
   const int initialCorners = static_cast<int>(corners_.size());
-  for (int ci = 0; ci < initialCorners; ++ci) resolveCorner(ci, z_);
+  for (int ci = 0; ci < initialCorners; ++ci) {
+    if ((ci & 1023) == 1023) checkClock();
+    resolveCorner(ci, z_);
+  }
   for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
     checkClock();
     if (corners_[ci].alive) predict(ci);

@@ -32,6 +32,32 @@ TEST(TimeLimit, TwentyThousandCornerCircleStopsNearItsLimit) {
   EXPECT_LT(took, limit + 1.0);
 }
 
+// A 100,000-corner zigzag circle (radii 100 m and 99 m in turn): its base alone is 100,000
+// vertices at one height, which the sweep welds within δ2. Scanning every vertex made at that
+// height for each new one took over 10 s before the first clock reading; on a grid of cell δ2
+// it is linear, and the limit fires on time.
+TEST(TimeLimit, HundredThousandCornerZigzagStopsNearItsLimit) {
+  std::vector<Vec2> zigzag;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) {
+    const double r = i % 2 ? 99.0 : 100.0, a = 2 * std::numbers::pi * i / n;
+    zigzag.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  const ExtrusionSpec s = uniformSpec({zigzag}, hipProfile(45 * kDeg));
+  const double limit = 2.0;  // above the plan checks (n log n: 0.2 s here, a second on a busy machine)
+  const auto start = std::chrono::steady_clock::now();
+  bool stopped = false;
+  try {
+    (void)extrude(s, nullptr, ExtrudeOptions{limit, 1.0, false});
+  } catch (const Error& e) {
+    stopped = std::string(e.what()).find("time limit") != std::string::npos;
+    EXPECT_TRUE(stopped) << e.what();
+  }
+  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(stopped) << "it finished in " << took << " s: the case no longer tests the limit";
+  EXPECT_LT(took, limit + 1.0);
+}
+
 // A build stopped by its time limit, wherever the clock happens to fire (between predictions,
 // in a direction event, in a stage's recursive extrusion, between stages), fails with the
 // time-limit error and nothing else, and leaves nothing behind: the next build of the same plan
