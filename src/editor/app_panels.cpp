@@ -110,9 +110,13 @@ void App::drawObjectProperties(const DocObject& object) {
       edited("base height", "base");
     }
     if (ImGui::IsItemDeactivatedAfterEdit()) history_.closeMerge();
-    int priority = e->priority == Priority::MaximiseVolume ? 0 : 1;
-    if (ImGui::Combo("Ambiguity", &priority, "maximise volume\0minimise volume\0")) {
-      e->priority = priority == 0 ? Priority::MaximiseVolume : Priority::MinimiseVolume;
+    // Sec. 4.8's three schemes, in the order of the enum; manual ranks the profile segments
+    // tagged "high" over untagged ones over "low" ones.
+    constexpr Priority kPriorities[] = {Priority::MaximiseVolume, Priority::MinimiseVolume, Priority::Manual};
+    int priority = 0;
+    while (priority < 2 && kPriorities[priority] != e->priority) ++priority;
+    if (ImGui::Combo("Ambiguity", &priority, "maximise volume\0minimise volume\0manual (segment tags high, low)\0")) {
+      e->priority = kPriorities[priority];
       edited("ambiguity priority", "priority");
     }
     for (const Profile& p : e->profiles)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 
@@ -324,38 +325,85 @@ ExtrusionSpec moveProfilePoint(ExtrusionSpec s, int profile, int point, const Ve
   return s;
 }
 
+namespace {
+
+// The overhang on one profile at `height` above the profile's own start.
+void overhangOn(Profile& p, const std::string& field, double height, double depth) {
+  const std::size_t n = p.points.size();
+  if (n < 2) fail(field, "a profile needs at least two points");
+  const Vec2 lastDir = p.points[n - 1] - p.points[n - 2];
+  if (!(lastDir[1] > 0)) fail(field, "the profile ends with a horizontal segment: fix it before adding an overhang");
+  if (height > p.points.back()[1]) {
+    // Above the last point the last segment carries on: put a point on it at the height.
+    const Vec2 a = p.points[n - 2], b = p.points[n - 1];
+    p.points.push_back(a + (b - a) * ((height - a[1]) / (b[1] - a[1])));
+  }
+  // Where the profile reaches the height.
+  std::size_t i = 1;
+  while (i < p.points.size() && p.points[i][1] < height) ++i;
+  if (i >= p.points.size()) fail(field, "the profile does not reach the height");
+  Vec2 at = p.points[i];
+  if (p.points[i][1] > height) {
+    const Vec2 a = p.points[i - 1], b = p.points[i];
+    at = a + (b - a) * ((height - a[1]) / (b[1] - a[1]));
+    p.points.insert(p.points.begin() + i, at);
+    if (p.tags.size() >= i) p.tags.insert(p.tags.begin() + i, p.tags[i - 1]);
+  }
+  // A horizontal segment outward; everything above moves out with it.
+  for (std::size_t k = i + 1; k < p.points.size(); ++k) p.points[k][0] -= depth;
+  p.points.insert(p.points.begin() + i + 1, Vec2(at[0] - depth, height));
+  if (p.tags.size() >= i) p.tags.insert(p.tags.begin() + i, "soffit");
+  // A profile may not end on the horizontal segment: carry on as its last segment did.
+  if (i + 2 == p.points.size()) p.points.push_back(p.points.back() + lastDir);
+}
+
+}  // namespace
+
 ExtrusionSpec addOverhang(ExtrusionSpec s, double height, double depth) {
   if (!std::isfinite(height) || height <= 0) fail("height", "an overhang starts above the base (height > 0)");
   if (!std::isfinite(depth) || depth == 0 || std::abs(depth) > 1e3) fail("depth", "the overhang's depth must be non-zero");
+  // Where each profile starts above the base: main edges at the base, a step's profiles at its
+  // anchor's height, an offset event's at the event's height. A profile nothing uses is
+  // treated as a main edge's. Every user of a profile points at its slot in `users`.
+  const std::size_t count = s.profiles.size();
+  std::vector<std::vector<std::pair<double, int*>>> users(count);
+  for (auto& l : s.loops)
+    for (int& k : l.profile)
+      if (k >= 0 && static_cast<std::size_t>(k) < count) users[k].push_back({0.0, &k});
+  for (auto& st : s.steps)
+    for (int* k : {&st.frontProfile, &st.sideProfile})
+      if (*k >= 0 && static_cast<std::size_t>(*k) < count) users[*k].push_back({st.anchor.height, k});
+  for (auto& o : s.offsets) {
+    for (auto& e : o.edges)
+      for (int* k : {&e.insideProfile, &e.outsideProfile})
+        if (*k >= 0 && static_cast<std::size_t>(*k) < count) users[*k].push_back({o.height, k});
+    if (o.sideProfile >= 0 && static_cast<std::size_t>(o.sideProfile) < count)
+      users[o.sideProfile].push_back({o.height, &o.sideProfile});
+  }
+  // One start height per profile: a profile used from several gets a copy for each start but
+  // the lowest (Sec. 3.3: the overhang's height stays one absolute height on every profile).
+  std::vector<double> start(count, 0.0);
+  std::vector<Profile> copies;
+  std::vector<double> copyStart;
+  for (std::size_t pi = 0; pi < count; ++pi) {
+    if (users[pi].empty()) continue;
+    std::map<double, std::vector<int*>> byStart;
+    for (auto [a, slot] : users[pi]) byStart[a].push_back(slot);
+    start[pi] = byStart.begin()->first;
+    for (auto it = std::next(byStart.begin()); it != byStart.end(); ++it) {
+      const int index = static_cast<int>(count + copies.size());
+      for (int* slot : it->second) *slot = index;
+      copies.push_back(s.profiles[pi]);
+      copyStart.push_back(it->first);
+    }
+  }
+  // The copies get free names, as addProfile gives them.
+  for (std::size_t c = 0; c < copies.size(); ++c) s = addProfile(std::move(s), std::move(copies[c]));
+  start.insert(start.end(), copyStart.begin(), copyStart.end());
   for (std::size_t pi = 0; pi < s.profiles.size(); ++pi) {
-    Profile& p = s.profiles[pi];
-    const std::size_t n = p.points.size();
-    if (n < 2) fail("profiles[" + std::to_string(pi) + "]", "a profile needs at least two points");
-    const Vec2 lastDir = p.points[n - 1] - p.points[n - 2];
-    if (!(lastDir[1] > 0))
-      fail("profiles[" + std::to_string(pi) + "]", "the profile ends with a horizontal segment: fix it before adding an overhang");
-    if (height > p.points.back()[1]) {
-      // Above the last point the last segment carries on: put a point on it at the height.
-      const Vec2 a = p.points[n - 2], b = p.points[n - 1];
-      p.points.push_back(a + (b - a) * ((height - a[1]) / (b[1] - a[1])));
-    }
-    // Where the profile reaches the height.
-    std::size_t i = 1;
-    while (i < p.points.size() && p.points[i][1] < height) ++i;
-    if (i >= p.points.size()) fail("profiles[" + std::to_string(pi) + "]", "the profile does not reach the height");
-    Vec2 at = p.points[i];
-    if (p.points[i][1] > height) {
-      const Vec2 a = p.points[i - 1], b = p.points[i];
-      at = a + (b - a) * ((height - a[1]) / (b[1] - a[1]));
-      p.points.insert(p.points.begin() + i, at);
-      if (p.tags.size() >= i) p.tags.insert(p.tags.begin() + i, p.tags[i - 1]);
-    }
-    // A horizontal segment outward; everything above moves out with it.
-    for (std::size_t k = i + 1; k < p.points.size(); ++k) p.points[k][0] -= depth;
-    p.points.insert(p.points.begin() + i + 1, Vec2(at[0] - depth, height));
-    if (p.tags.size() >= i) p.tags.insert(p.tags.begin() + i, "soffit");
-    // A profile may not end on the horizontal segment: carry on as its last segment did.
-    if (i + 2 == p.points.size()) p.points.push_back(p.points.back() + lastDir);
+    // None on a profile that starts at or above the overhang.
+    if (height - start[pi] <= 0) continue;
+    overhangOn(s.profiles[pi], "profiles[" + std::to_string(pi) + "]", height - start[pi], depth);
   }
   return s;
 }

@@ -41,8 +41,12 @@ ExtrusionSpec insertProfilePoint(ExtrusionSpec s, int profile, int after, const 
 ExtrusionSpec deleteProfilePoint(ExtrusionSpec s, int profile, int point);
 ExtrusionSpec moveProfilePoint(ExtrusionSpec s, int profile, int point, const Vec2& wz);
 Vec2 clampProfilePoint(const Profile& p, int point, const Vec2& wz);
-// "Add overhang" (Sec. 3.3): every profile gets, at one height, a horizontal segment reaching
-// `depth` metres outward, the rest of the profile moving out with it: one change to all.
+// "Add overhang" (Sec. 3.3): every profile that spans the absolute height (above the base)
+// gets a horizontal segment there reaching `depth` metres outward, the rest of the profile
+// moving out with it: one change to all. Main edges' profiles get it at `height`, a step's
+// (which start at its anchor's height a; a grid's first row) at height − a, an offset
+// event's at height less the event's; profiles that start at or above it get none. A profile
+// used from several start heights is copied for each but the lowest (the users moved to it).
 ExtrusionSpec addOverhang(ExtrusionSpec s, double height, double depth);
 ExtrusionSpec setSegmentTag(ExtrusionSpec s, int profile, int segment, const std::string& tag);
 // Adds a copy of a library profile under a free name; returns its index in `index`.

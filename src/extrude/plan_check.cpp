@@ -2,8 +2,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 namespace corbel::extrude {
@@ -51,45 +54,57 @@ std::optional<std::string> checkPlanTopology(const std::vector<std::vector<Vec2>
       segs.push_back({S2(P2(a[0], a[1]), P2(b[0], b[1])), li, i, n});
     }
   }
-  // Sort by x-extent so only overlapping candidates are tested exactly.
-  std::vector<int> order(segs.size());
+  // Only segments whose boxes overlap can meet (CGAL's box intersection: n log n, where a sweep
+  // over x alone met thousands of near-vertical segments at once on a 100,000-corner circle).
+  // Of the pairs that fail, the one reported is the first in the order of the segments' least
+  // x (then their index), whatever order the boxes come in.
+  std::vector<int> order(segs.size()), rank(segs.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   auto xmin = [&](int i) { return std::min(segs[i].s.source().x(), segs[i].s.target().x()); };
-  auto xmax = [&](int i) { return std::max(segs[i].s.source().x(), segs[i].s.target().x()); };
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return xmin(a) < xmin(b); });
-  for (std::size_t oi = 0; oi < order.size(); ++oi) {
-    const int i = order[oi];
-    for (std::size_t oj = oi + 1; oj < order.size() && xmin(order[oj]) <= xmax(i); ++oj) {
-      const int j = order[oj];
-      const Seg &a = segs[i], &b = segs[j];
-      const bool sameLoop = a.loop == b.loop;
-      // Apart in y (compared exactly), they cannot meet: most pairs end here, cheaper than
-      // the exact test.
-      if (std::max(a.s.source().y(), a.s.target().y()) < std::min(b.s.source().y(), b.s.target().y()) ||
-          std::max(b.s.source().y(), b.s.target().y()) < std::min(a.s.source().y(), a.s.target().y()))
-        continue;
-      const bool adjacent = sameLoop && ((a.edge + 1) % a.n == b.edge || (b.edge + 1) % b.n == a.edge);
-      if (!CGAL::do_intersect(a.s, b.s)) continue;
-      if (adjacent) {
-        // Neighbours share one corner; they must not fold back onto each other.
-        const bool aFirst = (a.edge + 1) % a.n == b.edge;
-        const S2& first = aFirst ? a.s : b.s;
-        const S2& second = aFirst ? b.s : a.s;
-        if (a.n > 2 && CGAL::collinear(first.source(), first.target(), second.target()) &&
-            !CGAL::collinear_are_ordered_along_line(first.source(), first.target(), second.target())) {
-          std::ostringstream m;
-          const Seg& s2 = aFirst ? b : a;
-          m << "loops[" << s2.loop << "].points[" << s2.edge << "]: the plan folds back on itself (a zero-width spike)";
-          return m.str();
-        }
-        continue;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return xmin(a) < xmin(b) || (xmin(a) == xmin(b) && a < b); });
+  for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<int>(k);
+  // What is wrong where segments i and j (i before j in that order) meet, if anything.
+  auto problem = [&](int i, int j) -> std::optional<std::string> {
+    const Seg &a = segs[i], &b = segs[j];
+    const bool sameLoop = a.loop == b.loop;
+    const bool adjacent = sameLoop && ((a.edge + 1) % a.n == b.edge || (b.edge + 1) % b.n == a.edge);
+    if (!CGAL::do_intersect(a.s, b.s)) return std::nullopt;
+    if (adjacent) {
+      // Neighbours share one corner; they must not fold back onto each other.
+      const bool aFirst = (a.edge + 1) % a.n == b.edge;
+      const S2& first = aFirst ? a.s : b.s;
+      const S2& second = aFirst ? b.s : a.s;
+      if (a.n > 2 && CGAL::collinear(first.source(), first.target(), second.target()) &&
+          !CGAL::collinear_are_ordered_along_line(first.source(), first.target(), second.target())) {
+        std::ostringstream m;
+        const Seg& s2 = aFirst ? b : a;
+        m << "loops[" << s2.loop << "].points[" << s2.edge << "]: the plan folds back on itself (a zero-width spike)";
+        return m.str();
       }
-      std::ostringstream m;
-      m << "loops[" << a.loop << "] edge " << a.edge << " and loops[" << b.loop << "] edge " << b.edge
-        << (sameLoop ? " cross or touch: the loop intersects itself" : " cross or touch: loops must be disjoint");
-      return m.str();
+      return std::nullopt;
     }
-  }
+    std::ostringstream m;
+    m << "loops[" << a.loop << "] edge " << a.edge << " and loops[" << b.loop << "] edge " << b.edge
+      << (sameLoop ? " cross or touch: the loop intersects itself" : " cross or touch: loops must be disjoint");
+    return m.str();
+  };
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, int>;
+  std::vector<Box> boxes;
+  boxes.reserve(segs.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) boxes.emplace_back(segs[i].s.bbox(), static_cast<int>(i));
+  std::pair<int, int> first{std::numeric_limits<int>::max(), 0};
+  std::optional<std::string> found;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
+    int i = x.info(), j = y.info();
+    if (rank[i] > rank[j]) std::swap(i, j);
+    const std::pair<int, int> at{rank[i], rank[j]};
+    if (at >= first) return;
+    if (auto p = problem(i, j)) {
+      first = at;
+      found = std::move(p);
+    }
+  });
+  if (found) return found;
   // One loop is outer; with more, each one's depth decides its orientation.
   const std::vector<int> depth = loops.size() > 1 ? nestingDepths(loops) : std::vector<int>(1, 0);
   std::vector<P2> poly;

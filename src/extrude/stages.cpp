@@ -129,9 +129,9 @@ struct Located {
 
 class Stager {
  public:
-  Stager(const ExtrusionSpec& spec, const Tolerances& tol, Progress* progress, double timeLimit, bool windingRule)
-      : spec_(spec), tol_(tol), progress_(progress), timeLimit_(timeLimit), windingRule_(windingRule),
-        started_(std::chrono::steady_clock::now()) {
+  Stager(const ExtrusionSpec& spec, const Tolerances& tol, Progress* progress, double timeLimit, bool windingRule,
+         std::chrono::steady_clock::time_point started)
+      : spec_(spec), tol_(tol), progress_(progress), timeLimit_(timeLimit), windingRule_(windingRule), started_(started) {
     shapes_.resize(spec_.profiles.size());
     for (std::size_t k = 0; k < spec_.profiles.size(); ++k) {
       const auto& pts = spec_.profiles[k].points;
@@ -156,7 +156,8 @@ class Stager {
  private:
   SegRange segs(const Active& a) const { return {shapes_[a.profile], a.z0}; }
   std::vector<std::vector<SegShape>> shapes_;  // per profile of the spec
-  double priorityOf(const Active& a, double z) const;
+  // Sec. 4.8's priority of the segment g of a's profile (higher wins a colinear merge).
+  double priorityOf(const Active& a, const Seg& g) const;
   SweepEdge sweepEdge(const Active& a, double za) const;
   double remaining() const;
 
@@ -169,7 +170,6 @@ class Stager {
   // overlapped itself and is to be rebuilt by the winding rule there).
   Plan runStage(const Plan& plan, double z, double next, bool first, double& reached);
   Plan windingRebuild(const Plan& plan, double h);
-  void startMerging();
   // Runs one sweep (a stage or a recursive extrusion) under the remaining time, keeping its
   // faces raw; its events, divergence and warnings (with `context` appended) join the shell's.
   SweepOutput runSweep(SweepInput& in, const std::string& context);
@@ -195,8 +195,7 @@ class Stager {
   std::vector<Vec3> points_;
   // Seam height → its vertices, bucketed on a grid of cell δ2 for welding.
   std::map<double, std::unordered_map<std::uint64_t, std::vector<int>>> seams_;
-  bool merging_ = false;
-  bool diverged_ = false;  // a stage ran away: its shell is suspect, skip the edge splitting  // from the first seam on, faces that continue one are joined
+  bool diverged_ = false;  // a stage ran away: its shell is suspect, skip the edge splitting
   std::vector<RawFace> faces_;
   std::multimap<std::tuple<int, int, int, int, int>, int> byKey_;
   std::vector<std::string> warnings_;
@@ -210,26 +209,18 @@ class Stager {
 // the post inter-chain warning instead (each rebuild costs a stage; real plans need none).
 constexpr int kMaxRepairs = 16;
 
-double Stager::priorityOf(const Active& a, double z) const {
-  const Profile& p = spec_.profiles[a.profile];
-  double angle = 0;
-  int seg = 0;
-  for (const Seg& g : segs(a))
-    if (!g.horizontal && g.hi > z + tol_.height) {
-      angle = g.angle;
-      seg = g.index;
-      break;
-    }
+double Stager::priorityOf(const Active& a, const Seg& g) const {
   switch (spec_.priority) {
-    case Priority::MinimiseVolume: return angle;
+    case Priority::MinimiseVolume: return g.angle;
     case Priority::Manual: {
-      const std::string tag = static_cast<std::size_t>(seg) < p.tags.size() ? p.tags[seg] : "";
+      const std::vector<std::string>& tags = spec_.profiles[a.profile].tags;
+      const std::string& tag = static_cast<std::size_t>(g.index) < tags.size() ? tags[g.index] : std::string();
       const double rank = tag == "high" ? 1.0 : tag == "low" ? -1.0 : 0.0;
-      return 10.0 * rank - angle;
+      return 10.0 * rank - g.angle;
     }
     case Priority::MaximiseVolume: break;
   }
-  return -angle;  // Sec. 4.8: the lowest angle wins by default
+  return -g.angle;  // Sec. 4.8: the lowest angle wins by default
 }
 
 SweepEdge Stager::sweepEdge(const Active& a, double za) const {
@@ -242,11 +233,10 @@ SweepEdge Stager::sweepEdge(const Active& a, double za) const {
   e.steps.reserve(shapes_[a.profile].size());
   for (const Seg& g : segs(a)) {
     if (g.horizontal || g.hi <= za + tol_.height) continue;
-    e.steps.push_back({std::max(g.lo, za), g.angle, g.index});
+    e.steps.push_back({std::max(g.lo, za), g.angle, g.index, priorityOf(a, g)});
   }
-  if (e.steps.empty()) e.steps.push_back({za, 0.0, -1});  // cannot happen for checked profiles
+  if (e.steps.empty()) e.steps.push_back({za, 0.0, -1, 0.0});  // cannot happen for checked profiles
   e.steps.front().z = za;
-  e.priority = priorityOf(a, za);
   return e;
 }
 
@@ -286,7 +276,7 @@ int Stager::weld(const Vec2& p, double seam) {
 void Stager::addFace(RawFace f) {
   if (f.segments.empty()) return;
   const ShellFace& i = f.info;
-  if (merging_ && !i.base && (i.segment >= 0 || i.step >= 0)) {
+  if (!i.base && (i.segment >= 0 || i.step >= 0)) {
     const auto key = std::make_tuple(i.sourceLoop, i.sourceEdge, i.step, i.profile, i.segment);
     const Vec3 p = points_[f.segments.front().first];
     auto range = byKey_.equal_range(key);
@@ -443,17 +433,6 @@ Plan Stager::windingRebuild(const Plan& plan, double h) {
     if (closeLoop(l)) result.push_back(std::move(l));
   }
   return result;
-}
-
-// From the first seam on, faces that continue across one are joined: index those made so far.
-void Stager::startMerging() {
-  if (merging_) return;
-  merging_ = true;
-  for (int k = 0; k < static_cast<int>(faces_.size()); ++k) {
-    const ShellFace& i = faces_[k].info;
-    if (!i.base && (i.segment >= 0 || i.step >= 0))
-      byKey_.emplace(std::make_tuple(i.sourceLoop, i.sourceEdge, i.step, i.profile, i.segment), k);
-  }
 }
 
 std::optional<Located> Stager::locate(const Plan& plan, const Anchor& a) const {
@@ -692,7 +671,7 @@ Plan Stager::change(Plan plan, double h, bool atBase) {
       e.sourceEdge = it.a.sourceEdge;
       e.step = it.a.step;
       e.profile = it.a.step >= 0 ? -1 : it.a.profile;
-      e.steps.push_back({0.0, std::atan(it.k), it.a.step >= 0 ? -1 : it.segment});
+      e.steps.push_back({0.0, std::atan(it.k), it.a.step >= 0 ? -1 : it.segment, 0.0});
       sl.push_back(e);
       flat.push_back(&it);
     }
@@ -998,8 +977,8 @@ Plan Stager::offset(const Plan& plan, double h, const OffsetEvent& ev, std::size
       e.sourceLoop = -1;
       e.sourceEdge = static_cast<int>(flat.size());
       // Distances are outward; k = tan θ moves an edge inward per unit of height.
-      e.steps.push_back({0.0, std::atan(t ? -t->inside : 0.0), 0});
-      e.steps.push_back({1.0, std::atan(t ? -t->outside : 0.0), 1});
+      e.steps.push_back({0.0, std::atan(t ? -t->inside : 0.0), 0, 0.0});
+      e.steps.push_back({1.0, std::atan(t ? -t->outside : 0.0), 1, 0.0});
       sl.push_back(e);
       flat.push_back(&a);
     }
@@ -1272,13 +1251,11 @@ ExtrusionResult Stager::run(double scale) {
     first = false;
     if (reached < next) {
       // The plan overlapped itself below `next`: rebuilt there, the sweep goes on from it.
-      startMerging();
       plan = windingRebuild(plan, reached);
       z = reached;
       continue;
     }
     if (!std::isfinite(next)) break;
-    startMerging();
     z = next;
     plan = change(std::move(plan), z, false);
     plan = forcedSteps(std::move(plan), z, false);
@@ -1307,6 +1284,7 @@ ExtrusionResult Stager::run(double scale) {
 }  // namespace
 
 ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, const ExtrudeOptions& options) {
+  const auto started = std::chrono::steady_clock::now();  // the time limit counts the checks too
   const double timeLimitSeconds = options.timeLimitSeconds;
   if (auto problem = checkSpec(spec)) {
     const auto colon = problem->find(": ");
@@ -1327,7 +1305,7 @@ ExtrusionResult extrude(const ExtrusionSpec& spec, Progress* progress, const Ext
   const std::optional<KernelWalls> walls = kernelWalls(unrolled, 1e-9 * std::max(box.diagonal(), 1.0));
   ExtrusionResult r;
   try {
-    Stager stager(walls ? walls->spec : unrolled, tol, progress, timeLimitSeconds, options.windingRule);
+    Stager stager(walls ? walls->spec : unrolled, tol, progress, timeLimitSeconds, options.windingRule, started);
     r = stager.run(box.diagonal());
   } catch (const InputError& e) {
     if (!walls) throw;

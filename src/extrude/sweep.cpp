@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <type_traits>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include <numbers>
 #include <queue>
 #include <sstream>
+#include <unordered_map>
 
 namespace corbel::extrude {
 
@@ -69,6 +71,9 @@ struct Corner {
   double speed = 0;
   bool parallel = false;
   bool alive = true;
+  // Made by an edge direction event (or resolving one): nothing at its point has been met
+  // yet, since direction events come before intersection events at their height.
+  bool turned = false;
 };
 
 struct FaceBuild {
@@ -156,6 +161,7 @@ class Sweeper {
   // A corner that replaces closed ones: made, resolved and, if it lives, predicted.
   void relink(int prev, int next, int vertex, const Vec2& at, double z, int depth);
   void mergeColinear(int c, double z, int depth);
+  bool samePiece(int A, int B) const;
   // Post inter-chain validation (Sec. 4.4): do the corners an event made at l keep the active
   // plan simple up to maxRise above it? False where their wedges overlap or their edges cross.
   bool locallySimple(const std::vector<int>& made, const Vec2& l, double z, double maxRise) const;
@@ -202,10 +208,22 @@ class Sweeper {
   void push(Candidate c);
   bool nextCandidate(Candidate& out);
   std::vector<double> directionHeights_;
+  // SweepInput::timeLimitSeconds, checked wherever the work grows with the plan (predictions
+  // are n per corner: a 20,000-corner circle makes 4e8 of them before its first event).
+  std::chrono::steady_clock::time_point started_;
+  void checkClock() const;
+  bool turning_ = false;  // inside handleDirectionChanges: new corners are `turned`
+  // Turned corners that lie on another edge at the height they were made: candidates there.
+  void meetAtTurn(const std::vector<int>& corners, double h);
   std::vector<std::string> warnings_;
   double z_ = 0;
   std::size_t events_ = 0;
   std::vector<int> recent_;  // vertices made at height recentZ_
+  // The same, bucketed on a grid of cell δ2 once there are many (a plan of 100,000 corners
+  // welds its base in linear time: scanning the list for each made it quadratic, 10 s and more
+  // before the first clock check). Keyed by the cell's two indices mixed into one word.
+  std::unordered_map<std::uint64_t, std::vector<int>> recentGrid_;
+  bool cellOf(const Vec2& p, std::int64_t& ix, std::int64_t& iy) const;
   Vec2 lastEventPoint_{std::numeric_limits<double>::infinity(), 0.0};
   double lastEventZ_ = 0;
   int repeats_ = 0;
@@ -318,16 +336,60 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
 
 // Points made at one event height that coincide are one vertex: several corners and zips of
 // one event (or of events clustered at one height) meet there, and the shell must share it.
+bool Sweeper::cellOf(const Vec2& p, std::int64_t& ix, std::int64_t& iy) const {
+  const double x = std::floor(p[0] / tol_.cluster), y = std::floor(p[1] / tol_.cluster);
+  if (!(std::abs(x) < 1e15 && std::abs(y) < 1e15)) return false;  // also NaN
+  ix = static_cast<std::int64_t>(x);
+  iy = static_cast<std::int64_t>(y);
+  return true;
+}
+
+namespace {
+std::uint64_t cellKey(std::int64_t ix, std::int64_t iy) {
+  return static_cast<std::uint64_t>(ix) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(iy);
+}
+}  // namespace
+
 int Sweeper::addVertex(const Vec2& p, double z) {
+  constexpr std::size_t kGridFrom = 64;  // below this many, a scan of the list is cheaper
   if (recentZ_ != z) {
-    if (std::abs(recentZ_ - z) > tol_.height) recent_.clear();
+    if (std::abs(recentZ_ - z) > tol_.height) {
+      recent_.clear();
+      if (!recentGrid_.empty()) recentGrid_.clear();
+    }
     recentZ_ = z;
   }
-  for (int v : recent_)
-    if (std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster) return v;
+  auto near = [&](int v) {
+    return std::abs(points_[v][0] - p[0]) <= tol_.cluster && std::abs(points_[v][1] - p[1]) <= tol_.cluster;
+  };
+  std::int64_t ix = 0, iy = 0;
+  const bool gridded = recent_.size() >= kGridFrom && cellOf(p, ix, iy);
+  if (recent_.size() == kGridFrom) {
+    // Switching to the grid: the list so far goes in (points no cell holds stay in the list).
+    for (int v : recent_) {
+      std::int64_t vx, vy;
+      if (cellOf(Vec2(points_[v][0], points_[v][1]), vx, vy)) recentGrid_[cellKey(vx, vy)].push_back(v);
+    }
+  }
+  if (gridded) {
+    // The first vertex made within δ2 (the least index), as the scan of the list found it.
+    int found = -1;
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = recentGrid_.find(cellKey(ix + dx, iy + dy));
+        if (it == recentGrid_.end()) continue;
+        for (int v : it->second)
+          if ((found < 0 || v < found) && near(v)) found = v;
+      }
+    if (found >= 0) return found;
+  } else {
+    for (int v : recent_)
+      if (near(v)) return v;
+  }
   points_.emplace_back(p[0], p[1], z);
   const int v = static_cast<int>(points_.size()) - 1;
   recent_.push_back(v);
+  if (recent_.size() > kGridFrom && cellOf(p, ix, iy)) recentGrid_[cellKey(ix, iy)].push_back(v);
   return v;
 }
 
@@ -352,6 +414,7 @@ int Sweeper::newCorner(int prev, int next, int vertex, const Vec2& at, double z)
   c.prev = prev;
   c.next = next;
   c.vertex = vertex;
+  c.turned = turning_;
   corners_.push_back(c);
   pending_.emplace_back();
   const int ci = static_cast<int>(corners_.size()) - 1;
@@ -399,9 +462,32 @@ void Sweeper::resolveCorner(int ci, double z, int depth) {
       if (sine * shorter * shorter > tol_.ridgeArea) return;
     }
     zipSpike(ci, z, depth);
-  } else if (sine <= tol_.mergeSine && std::abs(a.k - b.k) > 1e-12 * (1.0 + std::abs(a.k) + std::abs(b.k))) {
+  } else if (sine <= tol_.mergeSine && (std::abs(a.k - b.k) > 1e-12 * (1.0 + std::abs(a.k) + std::abs(b.k)) ||
+                                        samePiece(c.prev, c.next))) {
     mergeColinear(ci, z, depth);
   }
+}
+
+// Two pieces of one input edge (a step split it) whose profiles go on alike from here: once
+// the step between them has closed and they lie in one line, they are one edge again (Sec.
+// 4.8 merges all consecutive colinear edges of an ambiguous event into one). Merging them
+// moves no plane; it keeps the edge whole for what comes later, such as an anchor placed by
+// a fraction of its length (the terrace's dormers).
+// (Two edges of one input, as a split event leaves them, stay apart: where the corner between
+// them runs decides later events, and merging them moved random80914's roof by 3 %.)
+bool Sweeper::samePiece(int A, int B) const {
+  if (edges_[A].src == edges_[B].src) return false;
+  const SweepEdge &a = *inputs_[edges_[A].src], &b = *inputs_[edges_[B].src];
+  if (a.sourceLoop != b.sourceLoop || a.sourceEdge != b.sourceEdge || a.profile != b.profile || a.step != b.step)
+    return false;
+  const int sa = edges_[A].step, sb = edges_[B].step;
+  if (a.steps.size() - sa != b.steps.size() - sb) return false;
+  for (std::size_t k = 1; sa + k < a.steps.size(); ++k) {
+    const SweepEdge::Step &x = a.steps[sa + k], &y = b.steps[sb + k];
+    if (x.z != y.z || x.angle != y.angle || x.segment != y.segment || x.priority != y.priority) return false;
+  }
+  const SweepEdge::Step &x = a.steps[sa], &y = b.steps[sb];
+  return x.angle == y.angle && x.segment == y.segment && x.priority == y.priority;
 }
 
 void Sweeper::shareTop(int A, int B, int vl, int v) {
@@ -474,7 +560,11 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
   Corner& c = corners_[ci];
   const int A = c.prev, B = c.next;
   const int vl = c.vertex;
-  const bool keepA = inputs_[edges_[A].src]->priority >= inputs_[edges_[B].src]->priority;
+  // Each edge's priority is its segment's at this height (edges_[].step follows the direction
+  // events), so an angle step inside a stage counts as it would at a stage's base.
+  const double pa = inputs_[edges_[A].src]->steps[edges_[A].step].priority;
+  const double pb = inputs_[edges_[B].src]->steps[edges_[B].step].priority;
+  const bool keepA = pa >= pb;
   c.alive = false;
   SWEEP_TRACE("merge colinear corner %d (edges %d, %d) keeping %d", ci, A, B, keepA ? A : B);
   if (keepA) {
@@ -499,6 +589,12 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
 }
 
 // ------------------------------------------------------------------ events
+
+void Sweeper::checkClock() const {
+  if (in_.timeLimitSeconds > 0 &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() > in_.timeLimitSeconds)
+    throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+}
 
 // Where the corner's path meets each other edge's direction plane above the sweep.
 void Sweeper::predict(int ci) {
@@ -627,6 +723,7 @@ void Sweeper::predictAgainst(const std::vector<int>& planes) {
     paths[k] = {v, p0 - v * z_, std::max(c.z0 + settle(c), z_ + tol_.height), lastUseful(c)};
   }
   for (int ei : planes) {
+    checkClock();
     const Edge& e = edges_[ei];
     for (std::size_t k = 0; k < liveCorners_.size(); ++k) {
       const int ci = liveCorners_[k];
@@ -718,8 +815,10 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
     // corner a split made, at 3.4 m/m and 1.4e-7 m higher, relinked with its partner, undid
     // the split and left two corners on one path: random11959). A two-edge loop (fewer than
     // three planes) is left to the test below, which closes it.
+    // (Corners an edge direction event has just made are exempt: it met nothing at their point.)
     bool madeHere = true, oneVertex = K.size() > 1 && involved.size() > 2;
     for (int ci : K) {
+      if (corners_[ci].turned && z - points_[corners_[ci].vertex][2] <= tol_.height) madeHere = oneVertex = false;
       const Vec3& p = points_[corners_[ci].vertex];
       const bool recent = z - p[2] <= 1e3 * tol_.cluster;
       madeHere = madeHere && std::abs(p[0] - l[0]) <= tol_.cluster && std::abs(p[1] - l[1]) <= tol_.cluster && recent;
@@ -1006,6 +1105,27 @@ bool Sweeper::locallySimple(const std::vector<int>& made, const Vec2& l, double 
   return true;
 }
 
+void Sweeper::meetAtTurn(const std::vector<int>& made, double h) {
+  syncLive();
+  for (int ci : made) {
+    checkClock();
+    const Corner& c = corners_[ci];
+    if (!c.alive) continue;
+    const Vec2 p = cornerAt(ci, h);
+    for (int ei : liveEdges_) {
+      const Edge& e = edges_[ei];
+      if (!e.alive || ei == c.prev || ei == c.next) continue;
+      if (std::abs(OpenMesh::dot(e.n, p) - (e.c + e.k * h)) > tol_.cluster) continue;
+      const Vec2 s = liveAt(e.start, h), t = liveAt(e.end, h);
+      const double along = OpenMesh::dot(e.d, p - s), length = OpenMesh::dot(e.d, t - s);
+      if (along < -tol_.edgeMargin || along > length + tol_.edgeMargin) continue;
+      SWEEP_TRACE("  turned corner %d lies on edge %d at (%g, %g, %g)", ci, ei, p[0], p[1], h);
+      push({h, p, ci});
+      break;
+    }
+  }
+}
+
 // Edge direction events (Sec. 4.5.1): every edge whose profile turns at height h continues
 // on a new direction plane and starts a new face.
 void Sweeper::handleDirectionChanges(double h) {
@@ -1053,6 +1173,7 @@ void Sweeper::handleDirectionChanges(double h) {
   }
   // Corners of changing edges move along new paths from here.
   std::vector<int> fresh;
+  turning_ = true;
   for (const auto& [ci, v] : cornerVertex) {
     const Corner old = corners_[ci];
     killCorner(ci, v);
@@ -1061,9 +1182,20 @@ void Sweeper::handleDirectionChanges(double h) {
     fresh.push_back(newCorner(prev, next, v, cornerPos[ci], h));
   }
   for (int ei : changing) edges_[ei].alive = false;
+  const std::size_t firstMade = corners_.size() - fresh.size();
   for (int ci : fresh) resolveCorner(ci, h);
-  for (int ci : fresh)
+  turning_ = false;
+  for (int ci : fresh) {
+    checkClock();
     if (corners_[ci].alive) predict(ci);
+  }
+  // What the old corners would have met at h (an edge that shrinks to nothing just as it
+  // turns, loops that touch as their flare ends) is the new corners' to meet, at h itself:
+  // their predictions start above it, and corners on vertical walls predict nothing at all.
+  std::vector<int> made;
+  for (std::size_t ci = firstMade; ci < corners_.size(); ++ci)
+    if (corners_[ci].alive) made.push_back(static_cast<int>(ci));
+  meetAtTurn(made, h);
   std::vector<int> planes;
   for (const auto& [old, nj] : replaced)
     if (edges_[nj].alive) planes.push_back(nj);
@@ -1153,6 +1285,7 @@ void Sweeper::capRemaining(double z, std::vector<std::vector<PlanCorner>>* plan)
 }
 
 SweepOutput Sweeper::run() {
+  started_ = std::chrono::steady_clock::now();
   z_ = in_.baseZ;
   // Room for what a plan of n edges usually makes (an event ends or splits an edge and makes
   // a corner or two; a face has a few pieces), so a small shell grows no list piece by piece.
@@ -1188,8 +1321,13 @@ SweepOutput Sweeper::run() {
     const int n = static_cast<int>(loop.size());
     verts.clear();
     verts.reserve(n);
-    for (int i = 0; i < n; ++i) verts.push_back(addVertex(loop[i].start, z_));
+    // (The clock is read every 1,024 corners here too: a plan of 100,000 takes a while to set up.)
     for (int i = 0; i < n; ++i) {
+      if ((i & 1023) == 1023) checkClock();
+      verts.push_back(addVertex(loop[i].start, z_));
+    }
+    for (int i = 0; i < n; ++i) {
+      if ((i & 1023) == 1023) checkClock();
       inputs_.push_back(&loop[i]);
       Edge e;
       e.src = static_cast<int>(inputs_.size()) - 1;
@@ -1213,9 +1351,14 @@ SweepOutput Sweeper::run() {
                                       [&](double a, double b) { return std::abs(a - b) <= tol_.height; }),
                           directionHeights_.end());
   const int initialCorners = static_cast<int>(corners_.size());
-  for (int ci = 0; ci < initialCorners; ++ci) resolveCorner(ci, z_);
-  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci)
+  for (int ci = 0; ci < initialCorners; ++ci) {
+    if ((ci & 1023) == 1023) checkClock();
+    resolveCorner(ci, z_);
+  }
+  for (int ci = 0; ci < static_cast<int>(corners_.size()); ++ci) {
+    checkClock();
     if (corners_[ci].alive) predict(ci);
+  }
 
   // No real event lies far above the plan: the roof over a plan of size s whose edges climb
   // at most k per metre inward tops out within s·k of the last profile change. Events far
@@ -1229,7 +1372,6 @@ SweepOutput Sweeper::run() {
     }
   const double scale = tol_.minEdge / 1e-7;
   const double divergedZ = lastChange + 1e3 * scale * maxK;
-  const auto started = std::chrono::steady_clock::now();
   std::size_t nextDirection = 0;
   const std::size_t cap = 200000 + 400 * edges_.size() * edges_.size();
   std::size_t popped = 0;
@@ -1259,9 +1401,7 @@ SweepOutput Sweeper::run() {
     }
     if ((popped & 255) == 0) {
       if (progress_ && progress_->cancelled()) throw Cancelled();
-      if (in_.timeLimitSeconds > 0 &&
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
-        throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+      checkClock();
     }
     if (cand.z > divergedZ && std::isinf(stopZ_)) {
       // What is left is capped where the last real event was (capRemaining says so).
@@ -1282,9 +1422,7 @@ SweepOutput Sweeper::run() {
       z_ = std::max(z_, cand.z);
       // An event can cost far more than a pop (hundreds of edges through one point in a
       // degenerate plan), so the time limit is also checked after every one.
-      if (in_.timeLimitSeconds > 0 &&
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > in_.timeLimitSeconds)
-        throw Error("the extrusion took longer than its time limit of " + std::to_string(in_.timeLimitSeconds) + " s");
+      checkClock();
     }
   }
   if (overlaps_) {

@@ -21,14 +21,15 @@ struct SweepEdge {
     double z;      // from this height on
     double angle;  // direction-plane angle θ, radians, in (−π/2, π/2)
     int segment;   // provenance: profile segment index
+    // Higher wins when colinear neighbours of different angles must merge (Sec. 4.8): the
+    // priority of the segment the edge is on at the event, not at the stage's base.
+    double priority;
   };
   std::vector<Step> steps;  // sorted by z; steps[0].z = base height
   int sourceLoop = 0;
   int sourceEdge = 0;
   int profile = -1;  // provenance: index into the spec's profile library (-1: none)
   int step = -1;     // provenance: the plan step (spec.steps) that made the edge, else -1
-  // Higher wins when colinear neighbours of different angles must merge (Sec. 4.8).
-  double priority = 0.0;
 };
 
 struct SweepInput {

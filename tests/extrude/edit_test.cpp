@@ -3,6 +3,7 @@
 // the faces and tags each stage should give.
 #include "core/error.h"
 #include "core/history.h"
+#include "core/project_io.h"
 #include "core/scene.h"
 #include "core/scene_sync.h"
 #include "extrude/edit.h"
@@ -89,6 +90,74 @@ TEST(Edit, AddOverhangIsOneChangeToEveryProfile) {
   EXPECT_NEAR(m.soffitArea, 11 * 7 - 60, 1e-9);  // every edge overhangs: the ring around the plan
   EXPECT_THROW(ed::addOverhang(s, 0.0, 0.5), InputError);
   EXPECT_THROW(ed::addOverhang(s, 3.0, 0.0), InputError);
+}
+
+// Sec. 3.3: the overhang's "starting height will remain synchronized": every profile that spans
+// the height gets its horizontal segment at that absolute height. A step's profiles start at
+// the step's anchor, so they get it that much lower; profiles that start above it get none;
+// a profile that a main edge and a step share is copied for the step.
+TEST(Edit, AddOverhangIsAtOneAbsoluteHeightOnEveryProfile) {
+  auto horizontals = [](const Profile& p) {
+    std::vector<double> zs;
+    for (std::size_t i = 0; i + 1 < p.points.size(); ++i)
+      if (p.points[i][1] == p.points[i + 1][1]) zs.push_back(p.points[i][1]);
+    return zs;
+  };
+  // The Fig. 1 house: eaves and gables from the base, a bay at the base, dormers at 5.5 m, a
+  // chimney at 8.4 m.
+  const Document house = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/house.corbel").document;
+  const ExtrusionSpec s = std::get<ExtrusionSpec>(house.objects[0].spec);
+  const ExtrusionSpec o = ed::addOverhang(s, 3.0, 0.3);
+  ASSERT_EQ(o.profiles.size(), s.profiles.size()) << "no profile is shared between heights";
+  for (std::size_t k = 0; k < o.profiles.size(); ++k) {
+    SCOPED_TRACE(o.profiles[k].name);
+    std::vector<double> before = horizontals(s.profiles[k]), after = horizontals(o.profiles[k]);
+    const std::string& n = o.profiles[k].name;
+    if (n == "eaves" || n == "gable" || n == "bay") before.push_back(3.0);  // from the base
+    std::sort(before.begin(), before.end());
+    EXPECT_EQ(after, before);
+  }
+  // Built: every face looking straight down is at 3 m (the new overhang), 5.5 m (the eaves'
+  // own overhang and the dormers' undersides) or 8.4 m (the chimney's underside on the roof).
+  const ExtrusionResult r = extrude(o);
+  EXPECT_TRUE(r.shell.warnings.empty());
+  std::set<double> soffits;
+  for (const ShellFace& f : r.shell.faces)
+    if (!f.base && f.normal[2] < -1 + 1e-12)
+      for (const auto& l : f.loops)
+        for (int v : l) soffits.insert(std::round(r.shell.points[v][2] * 1e6) / 1e6);
+  EXPECT_EQ(soffits, (std::set<double>{3.0, 5.5, 8.4}));
+
+  // A profile shared by the main edges (from the base) and a step anchored at 1 m, and another
+  // shared with a step anchored at 4 m: the steps get copies, at 3 − 1 = 2 m and none.
+  ExtrusionSpec t;
+  t.profiles = {ed::profileLibrary()[1], ed::profileLibrary()[2]};  // hip (walls 3 m), gable
+  t.profiles[1].points = {{0, 0}, {0, 5}, {0, 6}};
+  t.loops.push_back({rectangle(10, 6), {0, 1, 0, 1}});
+  PlanStep oriel;
+  oriel.name = "oriel";
+  oriel.anchor = {0, 0, false, 0.5, 1.0};
+  oriel.width = 2;
+  oriel.depth = 0.5;
+  oriel.frontProfile = oriel.sideProfile = 0;
+  PlanStep dormer = oriel;
+  dormer.name = "dormer";
+  dormer.anchor = {0, 2, false, 0.5, 4.0};
+  dormer.frontProfile = dormer.sideProfile = 1;
+  t.steps = {oriel, dormer};
+  const ExtrusionSpec u = ed::addOverhang(t, 3.0, 0.3);
+  ASSERT_EQ(u.profiles.size(), 4u);
+  EXPECT_EQ(u.loops[0].profile, (std::vector<int>{0, 1, 0, 1})) << "the main edges keep theirs";
+  EXPECT_EQ(horizontals(u.profiles[0]), (std::vector<double>{3.0}));
+  EXPECT_EQ(horizontals(u.profiles[1]), (std::vector<double>{3.0}));
+  const Profile& orielP = u.profiles.at(u.steps[0].frontProfile);
+  const Profile& dormerP = u.profiles.at(u.steps[1].frontProfile);
+  EXPECT_EQ(u.steps[0].sideProfile, u.steps[0].frontProfile);
+  EXPECT_EQ(u.steps[1].sideProfile, u.steps[1].frontProfile);
+  EXPECT_EQ(horizontals(orielP), (std::vector<double>{2.0}));
+  EXPECT_EQ(dormerP.points, t.profiles[1].points) << "the dormer starts above the overhang";
+  EXPECT_NE(orielP.name, u.profiles[0].name);
+  EXPECT_NE(dormerP.name, u.profiles[1].name);
 }
 
 TEST(Edit, ScriptsRefuseBadOperationsWithAReason) {
@@ -218,6 +287,15 @@ TEST(Edit, FeatureEditsRefuseBadInputNamingTheField) {
 // The acceptance session of issue 4 as a script: the house of Fig. 4 (j–n) — a plan, two
 // profiles, an overhang, a roof window through an anchored natural step — checked after each
 // stage through the same SceneSync the editor uses.
+// One face of a shell as the Scene holds it: its tag, outward unit normal and area.
+struct TaggedFace {
+  std::string tag;
+  Vec3 normal;
+  double area;
+};
+
+// Fig. 4 (j–n) as the user guide builds it, checked face by face against areas by hand. The
+// plan is 12 × 8; every profile has walls to 3 m. s = 1/√2 (a 45° slope).
 TEST(Edit, Figure4HouseScriptBuildsStageByStage) {
   std::ifstream in(std::string(CORBEL_SOURCE_DIR) + "/assets/scripts/fig4-house.jsonl");
   ASSERT_TRUE(in.good());
@@ -228,12 +306,48 @@ TEST(Edit, Figure4HouseScriptBuildsStageByStage) {
   SceneSync sync;
   registerKernel(sync);
   Scene scene;
-  std::map<std::string, std::set<std::string>> expectTags = {
-      {"plan", {"base", "wall", "roof"}},
-      {"profiles", {"base", "wall", "roof", "gable"}},
-      {"overhang", {"base", "wall", "roof", "gable", "soffit"}},
-      {"roof window", {"base", "wall", "roof", "gable", "soffit", "dormer", "dormer roof"}},
+  const double s = 1 / std::sqrt(2.0), r2 = std::sqrt(2.0);
+  const Vec3 down(0, 0, -1), front(0, -1, 0), back(0, 1, 0), right(1, 0, 0), left(-1, 0, 0);
+  const Vec3 frontRoof(0, -s, s), backRoof(0, s, s), rightRoof(s, 0, s), leftRoof(-s, 0, s);
+  const std::vector<TaggedFace> walls = {
+      {"base", down, 96}, {"wall", front, 36}, {"wall", right, 24}, {"wall", back, 36}, {"wall", left, 24}};
+  auto with = [&](std::vector<TaggedFace> more) {
+    std::vector<TaggedFace> all = walls;
+    all.insert(all.end(), more.begin(), more.end());
+    return all;
   };
+  // With the 0.4 m overhang at 3 m the roof starts on a 12.8 × 8.8 ring whose soffit is four
+  // mitred trapezoids; the ridge is at 3 + 4.4 m, the gables 8.8 m wide and 4.4 m high.
+  const std::vector<TaggedFace> overhang = {{"soffit", down, (12 + 12.8) / 2 * 0.4}, {"soffit", down, (12 + 12.8) / 2 * 0.4},
+                                            {"soffit", down, (8 + 8.8) / 2 * 0.4},   {"soffit", down, (8 + 8.8) / 2 * 0.4},
+                                            {"gable", right, 8.8 * 4.4 / 2},         {"gable", left, 8.8 * 4.4 / 2},
+                                            {"roof", backRoof, 12.8 * 4.4 * r2}};
+  std::map<std::string, std::vector<TaggedFace>> expect = {
+      // Hip at 45° from 3 m: the ridge 4 m long at 7 m; trapezoids on the long sides, triangles
+      // on the short ones, their slant height 4√2.
+      {"plan", with({{"roof", frontRoof, (12 + 4) / 2.0 * 4 * r2},
+                     {"roof", backRoof, (12 + 4) / 2.0 * 4 * r2},
+                     {"roof", rightRoof, 8 * 4 / 2.0 * r2},
+                     {"roof", leftRoof, 8 * 4 / 2.0 * r2}})},
+      // Gables on the short sides: triangles 8 m wide and 4 m high over their walls.
+      {"profiles", with({{"gable", right, 16}, {"gable", left, 16}, {"roof", frontRoof, 12 * 4 * r2}, {"roof", backRoof, 12 * 4 * r2}})},
+      {"overhang", with({{"roof", frontRoof, 12.8 * 4.4 * r2}})},
+      // The roof window: at 4.2 m the front roof line is at y = 0.8 and the active edge runs
+      // from x = −0.4 to 12.4, so the step is x 5.2 to 6.8, y 0.5 to 0.8. Its front stands at
+      // y = 0.5 (1.2 m of wall, then a gable to the ridge at 6.2 m); its sides rise 1.2 m, from
+      // 0.3 to 1.5 m long as the main roof (z = 3.4 + y) recedes, then lean in at 45°, each
+      // dormer roof reaching back to y = 2 + u at u metres in from its side (1.52 m² in plan).
+      // It hides 2.56 m² of the front roof in plan; it stands on a 1.6 × 0.3 m floor at 4.2 m.
+      {"roof window", with({{"roof", frontRoof, (12.8 * 4.4 - 2.56) * r2},
+                            {"dormer", front, 1.6 * 1.2 + 1.6 * 0.8 / 2},
+                            {"dormer", right, (0.3 + 1.5) / 2 * 1.2},
+                            {"dormer", left, (0.3 + 1.5) / 2 * 1.2},
+                            {"dormer roof", rightRoof, 1.52 * r2},
+                            {"dormer roof", leftRoof, 1.52 * r2},
+                            {"", down, 1.6 * 0.3}})},
+  };
+  for (const char* st : {"overhang", "roof window"})
+    for (const TaggedFace& f : overhang) expect[st].push_back(f);
   for (std::size_t i = 0; i < ops.size(); ++i) {
     ed::applyEdit(doc, ops[i]);
     const std::string stage = ops[i]["stage"];
@@ -247,15 +361,35 @@ TEST(Edit, Figure4HouseScriptBuildsStageByStage) {
     const ValidityReport v = scene.validate(id);
     EXPECT_TRUE(v.problems().empty()) << (v.problems().empty() ? "" : v.problems()[0]);
     EXPECT_EQ(v.euler, 2);
-    std::set<std::string> tags;
-    for (auto f : scene.faces(id)) tags.insert(scene.faceTag(f));
-    EXPECT_EQ(tags, expectTags.at(stage));
+    // Every face of the kernel's shell (the Scene cuts faces with holes into pieces) matched
+    // to one expected face of its tag, normal and area.
+    const ExtrusionSpec& spec = std::get<ExtrusionSpec>(doc.findByName("House")->spec);
+    const ExtrusionResult r = extrude(spec);
+    std::vector<TaggedFace> want = expect.at(stage);
+    for (const ShellFace& f : r.shell.faces) {
+      std::string tag = f.base ? "base" : "";
+      if (!f.base && f.profile >= 0 && f.segment >= 0 && static_cast<std::size_t>(f.segment) < spec.profiles[f.profile].tags.size())
+        tag = spec.profiles[f.profile].tags[f.segment];
+      const double area = faceArea(r.shell, f);
+      auto it = std::find_if(want.begin(), want.end(), [&](const TaggedFace& w) {
+        return (w.tag.empty() || w.tag == tag) && (w.normal - f.normal).norm() < 1e-9 && std::abs(w.area - area) < 1e-9;
+      });
+      if (it == want.end()) {
+        ADD_FAILURE() << "unexpected face: " << tag << " (profile " << f.profile << ", segment " << f.segment
+                      << ", step " << f.step << "), normal (" << f.normal[0] << ", " << f.normal[1] << ", " << f.normal[2]
+                      << "), area " << area;
+        continue;
+      }
+      want.erase(it);
+    }
+    for (const TaggedFace& w : want)
+      ADD_FAILURE() << "missing face: " << w.tag << ", normal (" << w.normal[0] << ", " << w.normal[1] << ", " << w.normal[2]
+                    << "), area " << w.area;
     if (stage == "profiles") {
       EXPECT_NEAR(v.volume, 12 * 8 * 3 + 12 * (8 * 4 / 2.0), 1e-9);  // walls + gabled prism
     }
   }
 }
-
 
 // Forced steps drawn on the plan (the plan pane's Draw forced step, Sec. 3.5).
 namespace forced {

@@ -7,11 +7,15 @@
 #include "extrude/footprints.h"
 #include "core/project_io.h"
 #include "extrude/batch.h"
+#include "shell_checks.h"
+#include "skeleton_oracle.h"
 #include "support.h"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -54,7 +58,34 @@ double projectedRoofArea(const SweepOutput& s) {
   return sum;
 }
 
-void runAll(const std::string& label, const std::function<ExtrusionSpec(const Footprint&)>& specFor) {
+// Per building, after the batch: the shell rebuilt (as the batch kept it: its first build
+// passed) and checked, on every core.
+struct Checked {
+  double identity = 0;     // relative error of the projection identity
+  std::string geometry;    // shellGeometryProblem
+  double height = 0, volume = 0;
+  double cgalHeight = 0, cgalVolume = 0;  // equal angles only
+  double delta1 = 0;                       // the kernel's event height tolerance for it
+  double delta2 = 0;                       // and its event position tolerance
+  double footprint = 0;                    // the plan's area
+};
+
+template <class F>
+void onEveryCore(std::size_t n, F f) {
+  const unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+  std::atomic<std::size_t> next{0};
+  std::vector<std::thread> pool;
+  for (unsigned j = 0; j < jobs; ++j)
+    pool.emplace_back([&] {
+      for (std::size_t i; (i = next++) < n;) f(i);
+    });
+  for (auto& t : pool) t.join();
+}
+
+// profile: when every edge has it, CGAL's skeleton under it is the oracle of the height and
+// volume (skeleton_oracle.h).
+void runAll(const std::string& label, const std::function<ExtrusionSpec(const Footprint&)>& specFor,
+            const std::vector<Vec2>* profile = nullptr) {
   const auto fps = allFootprints();
   ASSERT_EQ(fps.size(), 10524u);
   std::vector<BatchItem> items;
@@ -62,8 +93,32 @@ void runAll(const std::string& label, const std::function<ExtrusionSpec(const Fo
   BatchOptions options;
   const auto results = extrudeBatch(items, options);
   const auto known = knownFailures(label);
+  std::vector<Checked> checked(results.size());
+  onEveryCore(results.size(), [&](std::size_t i) {
+    if (!results[i].ok) return;
+    const ExtrusionSpec& spec = items[i].spec;
+    const ExtrusionResult er = extrude(spec);
+    Checked& c = checked[i];
+    double footprint = 0;
+    for (const auto& l : spec.loops) footprint += shoelace(l.points);
+    c.identity = std::abs(projectedRoofArea(er.shell) - footprint) / footprint;
+    c.geometry = shellGeometryProblem(er.shell, spec);
+    c.height = er.shell.maxHeight;
+    c.delta1 = Tolerances::forScale(er.scale).height;
+    c.delta2 = Tolerances::forScale(er.scale).cluster;
+    c.footprint = footprint;
+    c.volume = measure(er.shell).volume;
+    if (profile) {
+      std::vector<std::vector<Vec2>> loops;
+      for (const auto& l : spec.loops) loops.push_back(l.points);
+      c.cgalHeight = cgalHeightUnderProfile(loops, *profile);
+      c.cgalVolume = cgalVolumeUnderProfile(loops, *profile);
+    }
+  });
   std::size_t failed = 0, identityChecked = 0;
-  double worst = 0;
+  double worst = 0, worstVolume = 0, worstHeight = 0;
+  std::size_t badGeometry = 0, aboveSkeleton = 0;
+  std::string firstBadGeometry, firstAbove;
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
     if (!r.ok) {
@@ -75,18 +130,40 @@ void runAll(const std::string& label, const std::function<ExtrusionSpec(const Fo
     // The post inter-chain check (Sec. 4.4) never cries wolf on a building that closes.
     for (const std::string& w : r.warnings)
       EXPECT_EQ(w.find("overlapped itself"), std::string::npos) << label << ": " << r.id << ": " << w;
-    // The projection identity, recomputed from the shell.
-    const ExtrusionResult er = extrude(items[i].spec);
-    double footprint = 0;
-    for (const auto& l : items[i].spec.loops) footprint += shoelace(l.points);
-    const double rel = std::abs(projectedRoofArea(er.shell) - footprint) / footprint;
-    worst = std::max(worst, rel);
+    const Checked& c = checked[i];
+    worst = std::max(worst, c.identity);
     ++identityChecked;
-    EXPECT_LT(rel, 1e-9) << label << ": " << r.id;
+    EXPECT_LT(c.identity, 1e-9) << label << ": " << r.id;
     EXPECT_GT(r.measures.volume, 0) << label << ": " << r.id;
+    // Counted, not yet failures (issue 28, "no needle faces"): faces not simple in their plane
+    // or a shell intersecting itself, and a top above CGAL's skeleton by more than δ1 (the
+    // kernel's event height tolerance, 1e-9 of the plan's diagonal).
+    if (!c.geometry.empty() && badGeometry++ == 0) firstBadGeometry = r.id + ": " + c.geometry;
+    if (profile) {
+      worstHeight = std::max(worstHeight, c.height - c.cgalHeight);
+      if (c.height > c.cgalHeight + c.delta1 && aboveSkeleton++ == 0) firstAbove = r.id;
+      // The volume: the kernel places each event within δ2 of where it is (one point to it), so
+      // under a 45° roof each point of the roof lies within δ2 of CGAL's height, and the volume
+      // within the footprint's area times δ2.
+      const double off = std::abs(c.volume - c.cgalVolume);
+      // Open (issue 28): 1.85e-5 m³ over CGAL's, 2.4 footprint × δ2, not yet explained; the
+      // test fails once it agrees, so its line goes.
+      if (r.id == "osm:w822396645#0") {
+        EXPECT_GT(off, c.footprint * c.delta2) << r.id << " agrees with CGAL's skeleton now: take it off this list";
+        continue;
+      }
+      worstVolume = std::max(worstVolume, off / (c.footprint * c.delta2));
+      EXPECT_LE(off, c.footprint * c.delta2) << label << ": " << r.id << ": volume " << c.volume << ", CGAL's "
+                                             << c.cgalVolume << ", footprint " << c.footprint << " m², δ2 " << c.delta2;
+    }
   }
   std::cout << label << ": " << results.size() << " buildings, " << failed << " failed (" << known.size()
-            << " known), projection identity worst relative error " << worst << " over " << identityChecked << "\n";
+            << " known), projection identity worst relative error " << worst << " over " << identityChecked;
+  std::cout << "; " << badGeometry << " with a face not simple or intersecting itself (first: " << firstBadGeometry << ")";
+  if (profile)
+    std::cout << "; against CGAL's skeleton: volume off by at most " << worstVolume << " footprint × δ2, top above it at most " << worstHeight
+              << " m, " << aboveSkeleton << " above it by more than δ1 (first: " << firstAbove << ")";
+  std::cout << "\n";
 }
 
 ExtrusionSpec hipSpec(const Footprint& fp) {
@@ -111,7 +188,10 @@ ExtrusionSpec mixedSpec(const Footprint& fp) {
   return s;
 }
 
-TEST(RealFootprints, HipRoofsAt45Degrees) { runAll("hip45", hipSpec); }
+TEST(RealFootprints, HipRoofsAt45Degrees) {
+  const std::vector<Vec2> hip = hipProfile(45 * kDeg).points;
+  runAll("hip45", hipSpec, &hip);
+}
 
 TEST(RealFootprints, MixedPerEdgeAnglesOverWalls) { runAll("mixed", mixedSpec); }
 

@@ -3,8 +3,11 @@
 // holes. Nothing may crash or hang (each building has a 1 s limit); every building is either
 // a closed 2-manifold whose roof projects onto the footprint exactly once, or a failure with a
 // reason. Failures are written to <build>/tests/extrude-random-failures/ as project files
-// that reproduce them (corbel-cli extrude FILE). Failures stay under 2 % (docs/extrude.md, "Known
-// limits"). A building whose first build fails is rebuilt with wider tolerances as the batch
+// that reproduce them (corbel-cli extrude FILE). Every first-build failure must be a saved case,
+// and every refused one listed in still_failing.txt (docs/extrude.md, "Known limits"): a new
+// failure fails the run. Closed shells whose faces are not simple or that intersect themselves
+// (shell_checks.h), and with one profile those whose top is above CGAL's skeleton's by more than
+// δ1, are counted and saved (geometry/, above-skeleton/), not yet failures (issue 28). A building whose first build fails is rebuilt with wider tolerances as the batch
 // does for users (extrude/batch.h); every accepted rebuild must carry its warning, and agree with
 // CGAL's straight skeleton where every edge has one profile (volume_oracle.h). Against the
 // unperturbed plan of a perturbed orthogonal one it is counted and reported (the two may differ
@@ -14,15 +17,21 @@
 // with scripts/extrude_random_cases.py).
 #include "core/project_io.h"
 #include "extrude/batch.h"
+#include "shell_checks.h"
+#include "skeleton_oracle.h"
 #include "support.h"
 #include "volume_oracle.h"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <random>
+#include <set>
+#include <thread>
 
 namespace corbel::extrude::test {
 namespace {
@@ -147,6 +156,63 @@ class Generator {
   std::mt19937_64 rng_;
 };
 
+// The saved cases (tests/data/extrude/random/NAME.corbel) and the names still_failing.txt
+// lists (class "roof cannot close" is bad input, counted apart).
+std::set<std::string> savedCases() {
+  std::set<std::string> out;
+  const std::filesystem::path dir = std::filesystem::path(CORBEL_SOURCE_DIR) / "tests/data/extrude/random";
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().extension() == ".corbel") out.insert(e.path().stem().string());
+  return out;
+}
+std::set<std::string> listedAsFailing() {
+  std::set<std::string> out;
+  std::ifstream in(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/random/still_failing.txt");
+  for (std::string line; std::getline(in, line);) {
+    line = line.substr(0, line.find('#'));
+    const auto b = line.find_first_not_of(" \t");
+    if (b == std::string::npos) continue;
+    out.insert(line.substr(b, line.find_first_of(" \t", b) - b));
+  }
+  return out;
+}
+
+// The checks of a closed shell beyond what the batch does, rebuilt as the batch kept it.
+struct ShellCheck {
+  std::string geometry;  // shellGeometryProblem
+  double identity = 0;   // relative error of the projection identity
+  bool equalAngles = false;
+  double height = 0, cgalHeight = 0, delta1 = 0;
+  std::string error;  // the check itself failed (an exception, which a worker thread must not let out)
+};
+
+ShellCheck checkShell(const ExtrusionSpec& spec, double factor) {
+  ShellCheck c;
+  const ExtrusionResult er = extrude(spec, nullptr, ExtrudeOptions{0.0, factor, false});
+  c.geometry = shellGeometryProblem(er.shell, spec, factor);
+  double footprint = 0, projected = 0;
+  for (const auto& l : spec.loops) footprint += shoelace(l.points);
+  for (const ShellFace& f : er.shell.faces)
+    if (!f.base) projected += faceArea(er.shell, f) * f.normal[2];
+  c.identity = std::abs(projected - footprint) / footprint;
+  // One profile rising inward on every edge: the active plan is the skeleton's offset.
+  const Profile& p = spec.profiles[spec.loops[0].profile[0]];
+  bool uniform = spec.steps.empty() && spec.offsets.empty();
+  for (std::size_t k = 0; k + 1 < p.points.size(); ++k)
+    uniform = uniform && p.points[k + 1][0] >= p.points[k][0] && p.points[k + 1][1] > p.points[k][1];
+  for (const auto& l : spec.loops)
+    for (int k : l.profile) uniform = uniform && spec.profiles[k].points == p.points;
+  if (uniform) {
+    std::vector<std::vector<Vec2>> loops;
+    for (const auto& l : spec.loops) loops.push_back(l.points);
+    c.equalAngles = true;
+    c.height = er.shell.maxHeight;
+    c.cgalHeight = cgalHeightUnderProfile(loops, spec.profiles[spec.loops[0].profile[0]].points);
+    c.delta1 = Tolerances::forScale(er.scale, factor).height;
+  }
+  return c;
+}
+
 TEST(RandomRobustness, HundredThousandFootprints) {
   const bool noRetry = std::getenv("CORBEL_RANDOM_NO_RETRY") != nullptr;  // the first builds alone
   const int kCount = std::getenv("CORBEL_RANDOM_COUNT") ? std::atoi(std::getenv("CORBEL_RANDOM_COUNT")) : 100000;
@@ -156,6 +222,8 @@ TEST(RandomRobustness, HundredThousandFootprints) {
   for (int i = 0; i < kCount; ++i) items.push_back({"random" + std::to_string(i), gen.next(), ""});
   BatchOptions options;
   options.timeLimitSeconds = 1.0;  // the slowest real building takes under 50 ms
+  // A shorter limit makes many builds stop at a random point of their sweep (exception safety).
+  if (const char* limit = std::getenv("CORBEL_RANDOM_TIME_LIMIT")) options.timeLimitSeconds = std::atof(limit);
   if (noRetry) options.retryFactors.clear();
   const auto results = extrudeBatch(items, options);
   if (const char* dump = std::getenv("CORBEL_RANDOM_DUMP"))  // write one case to a file, to study it
@@ -165,11 +233,32 @@ TEST(RandomRobustness, HundredThousandFootprints) {
         doc.add(item.id, item.spec);
         saveProject(doc, item.id + ".corbel");
       }
+  // Every closed shell, checked on every core: faces simple, no self-intersection, the
+  // projection identity, and with one profile no vertex above CGAL's skeleton.
+  std::vector<ShellCheck> checks(results.size());
+  {
+    const unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+    std::atomic<std::size_t> next{0};
+    std::vector<std::thread> pool;
+    for (unsigned j = 0; j < jobs; ++j)
+      pool.emplace_back([&] {
+        for (std::size_t i; (i = next++) < results.size();)
+          if (results[i].ok) try {
+              checks[i] = checkShell(items[i].spec, results[i].toleranceFactor);
+            } catch (const std::exception& e) {
+              checks[i].error = e.what();
+            }
+      });
+    for (auto& t : pool) t.join();
+  }
+  const std::set<std::string> saved = savedCases(), listed = listedAsFailing();
   const std::filesystem::path dir = std::filesystem::current_path() / "extrude-random-failures";
   std::filesystem::remove_all(dir);
   std::size_t failed = 0, rejected = 0, warnedFailed = 0, warnedClosed = 0, rebuilt = 0, withCgal = 0,
-              withUnperturbed = 0, unperturbedAgree = 0, withoutOracle = 0;
-  double worstCgal = 0, worstRebuiltIdentity = 0;
+              withUnperturbed = 0, unperturbedAgree = 0, withoutOracle = 0, equalAngles = 0;
+  double worstCgal = 0, worstRebuiltIdentity = 0, worstTop = -1e300, worstAbove = 0;
+  std::size_t badGeometry = 0, aboveSkeleton = 0;
+  std::string firstBadGeometry, worstAboveId;
   auto overlapWarned = [](const BatchResult& r) {
     for (const std::string& w : r.warnings)
       if (w.find("overlapped itself") != std::string::npos) return true;
@@ -182,6 +271,9 @@ TEST(RandomRobustness, HundredThousandFootprints) {
     if (r.ms > results[slowest].ms) slowest = i;
     if (r.ok && r.toleranceFactor > 1) {
       ++rebuilt;
+      // A first-build failure the run has not met before: save it with the script (docs/extrude.md).
+      EXPECT_TRUE(saved.count(r.id)) << r.id << " failed its first build and is not a saved case (rebuilt with "
+                                     << r.toleranceFactor << "x): scripts/extrude_random_cases.py adds it";
       ASSERT_FALSE(r.warnings.empty()) << r.id;
       EXPECT_EQ(r.warnings[0].rfind("rebuilt with", 0), 0u) << r.id << ": " << r.warnings[0];
       const VolumeOracle o = independentVolume(items[i].spec);
@@ -204,21 +296,40 @@ TEST(RandomRobustness, HundredThousandFootprints) {
     }
     if (r.ok) {
       warnedClosed += overlapWarned(r);
-      double footprint = 0;
-      for (const auto& l : items[i].spec.loops) footprint += shoelace(l.points);
+      const ShellCheck& c = checks[i];
+      EXPECT_EQ(c.error, "") << r.id << ": the shell checks could not run";
+      // Counted and saved, not yet a failure (issue 28, "no needle faces"): on perturbed plans
+      // the checks see slivers of 1e-7 m that the kernel's δ2 lets through.
+      auto keep = [&](const char* sub) {
+        std::filesystem::create_directories(dir / sub);
+        Document doc;
+        doc.add(r.id, items[i].spec);
+        saveProject(doc, (dir / sub / (r.id + ".corbel")).string());
+      };
+      if (!c.geometry.empty()) {
+        ++badGeometry;
+        if (firstBadGeometry.empty()) firstBadGeometry = r.id + ": " + c.geometry;
+        keep("geometry");
+      }
+      // Perturbed plans merge edges closer than 1e-8 rad; a rebuild moves vertices by its
+      // wider δ2, as many times further.
+      (r.toleranceFactor > 1 ? worstRebuiltIdentity : worst) =
+          std::max(r.toleranceFactor > 1 ? worstRebuiltIdentity : worst, c.identity);
       // measures.roofArea etc. are plain areas; the projection identity needs area·cos φ,
-      // which the batch does not keep: recompute for a sample to bound the cost.
+      // which the batch does not keep: held to its bar on a sample, as before the checks above.
       if (i % 50 == 0 || r.toleranceFactor > 1) {
-        const ExtrusionResult er = extrude(items[i].spec, nullptr, ExtrudeOptions{0.0, r.toleranceFactor, false});
-        double projected = 0;
-        for (const ShellFace& f : er.shell.faces)
-          if (!f.base) projected += faceArea(er.shell, f) * f.normal[2];
-        const double rel = std::abs(projected - footprint) / footprint;
-        // Perturbed plans merge edges closer than 1e-8 rad; a rebuild moves vertices by its
-        // wider δ2, as many times further.
-        (r.toleranceFactor > 1 ? worstRebuiltIdentity : worst) =
-            std::max(r.toleranceFactor > 1 ? worstRebuiltIdentity : worst, rel);
-        EXPECT_LT(rel, 1e-7 * r.toleranceFactor) << r.id;
+        EXPECT_LT(c.identity, 1e-7 * r.toleranceFactor) << r.id;
+      }
+      if (c.equalAngles) {
+        // No vertex above the skeleton's apex, beyond the kernel's event height tolerance δ1
+        // (counted, as the geometry).
+        ++equalAngles;
+        worstTop = std::max(worstTop, (c.height - c.cgalHeight) / c.delta1);
+        if (c.height > c.cgalHeight + c.delta1) {
+          ++aboveSkeleton;
+          if (c.height - c.cgalHeight > worstAbove) worstAbove = c.height - c.cgalHeight, worstAboveId = r.id;
+          keep("above-skeleton");
+        }
       }
       continue;
     }
@@ -229,6 +340,10 @@ TEST(RandomRobustness, HundredThousandFootprints) {
     }
     ++failed;
     warnedFailed += overlapWarned(r);
+    // Refused: only the saved cases still_failing.txt lists may be (with rebuilds; without
+    // them every saved case may fail its first build).
+    if (noRetry) EXPECT_TRUE(saved.count(r.id)) << r.id << " failed and is not a saved case: " << r.error;
+    else EXPECT_TRUE(listed.count(r.id)) << r.id << " was refused and still_failing.txt does not list it: " << r.error;
     std::filesystem::create_directories(dir);
     Document doc;
     doc.add(r.id, items[i].spec);
@@ -242,11 +357,14 @@ TEST(RandomRobustness, HundredThousandFootprints) {
             << " without an oracle; projection identity worst " << worstRebuiltIdentity << "); " << failed
             << " failed, " << rejected << " refused as invalid input (post inter-chain overlap warned: " << warnedFailed
             << " of the failures, " << warnedClosed << " closed shells), projection identity worst " << worst
-            << "; slowest "
+            << "; " << equalAngles << " closed with one profile, top at most " << worstTop
+            << " δ1 above CGAL's skeleton (" << aboveSkeleton << " above it by more than δ1, the most "
+            << worstAbove << " m: " << worstAboveId << "); " << badGeometry
+            << " closed shells with a face not simple in its plane or intersecting itself (first: " << firstBadGeometry
+            << "); slowest "
             << (results.empty() ? std::string("-")
                                 : results[slowest].id + " " + std::to_string(results[slowest].ms) + " ms")
             << "; failures in " << dir << "\n";
-  EXPECT_LT(failed, kCount * 2 / 100) << "see " << dir;
 }
 
 }  // namespace

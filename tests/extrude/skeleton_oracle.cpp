@@ -108,9 +108,7 @@ double integrateTriangle(const std::array<Corner, 3>& tri, const std::vector<Vec
   return signedArea > 0 ? sum : -sum;
 }
 
-}  // namespace
-
-double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
+auto skeleton(const std::vector<std::vector<Vec2>>& loops) {
   PolygonWithHoles pwh;
   {
     Polygon outer;
@@ -124,6 +122,20 @@ double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const
   }
   auto ss = CGAL::create_interior_straight_skeleton_2(pwh, K());
   if (!ss) throw std::runtime_error("CGAL could not build the straight skeleton");
+  return ss;
+}
+
+}  // namespace
+
+double cgalHeightUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
+  const auto ss = skeleton(loops);
+  double t = 0;
+  for (auto v = ss->vertices_begin(); v != ss->vertices_end(); ++v) t = std::max(t, v->time());
+  return profileHeight(profile, t);
+}
+
+double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
+  const auto ss = skeleton(loops);
   double volume = 0;
   for (auto f = ss->faces_begin(); f != ss->faces_end(); ++f) {
     std::vector<Corner> poly;

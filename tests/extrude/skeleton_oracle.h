@@ -23,4 +23,7 @@ SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitchR
 // Integrated exactly over CGAL's skeleton faces, on each of which t is linear.
 double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile);
 
+// The highest point of that roof: the profile's height at the skeleton's latest time.
+double cgalHeightUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile);
+
 }  // namespace corbel::extrude::test

@@ -8,20 +8,14 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <algorithm>
 #include <set>
 #include <functional>
 
 namespace corbel::extrude::test {
 namespace {
-
-Profile polyline(std::string name, std::vector<Vec2> pts, std::vector<std::string> tags = {}) {
-  Profile p;
-  p.name = std::move(name);
-  p.points = std::move(pts);
-  p.tags = std::move(tags);
-  return p;
-}
 
 struct Checked {
   ExtrusionResult r;
@@ -40,17 +34,6 @@ Checked run(const ExtrusionSpec& spec) {
   EXPECT_EQ(c.v.euler, 2);
   EXPECT_NEAR(c.v.volume, c.m.volume, 1e-9 * c.m.volume) << "Scene and kernel agree on the volume";
   return c;
-}
-
-// Volume under a height field top(x, y) over bottom(x, y) by the midpoint rule on a fine grid:
-// an oracle that knows nothing of the sweep.
-double integrate(double x0, double x1, double y0, double y1, int nx, int ny,
-                 const std::function<double(double, double)>& f) {
-  const double hx = (x1 - x0) / nx, hy = (y1 - y0) / ny;
-  double s = 0;
-  for (int i = 0; i < nx; ++i)
-    for (int j = 0; j < ny; ++j) s += f(x0 + (i + 0.5) * hx, y0 + (j + 0.5) * hy);
-  return s * hx * hy;
 }
 
 // The 10 × 6 hip roof at 45° over walls 3 m high: its top surface at (x, y).
@@ -228,12 +211,18 @@ TEST(Steps, ButtressStandsOnTheBase) {
 }
 
 TEST(Steps, BayWindowsWithBothPriorities) {
-  // Fig. 22: two identical canted bays side by side; their roofs meet the main roof in
-  // ambiguous events at one height, resolved the same way by both.
+  // Fig. 22: two identical canted bays side by side (walls 1.5 m, then 45°) on a house whose
+  // walls rise 3 m. Each bay's front roof reaches the facade at 1.5 + 1 = 2.5 m as its canted
+  // sides vanish: its 45° plane comes into line with the facade's wall, an ambiguous event at
+  // one height for both bays. Maximising, the wall takes the line and rises on to 3 m;
+  // minimising, the bay roof's plane takes the whole facade from 2.5 m. The bays are the same
+  // in both; the house differs by its front slope starting 0.5 m lower, a height field
+  // integrated here (the house is convex: its top is the least of its edges' heights).
+  std::map<Priority, double> volume, facadeTop;
   for (Priority pr : {Priority::MaximiseVolume, Priority::MinimiseVolume}) {
     ExtrusionSpec s = uniformSpec({rectangle(10, 6)}, wallAndRoofProfile(3, 45 * kDeg));
     s.priority = pr;
-    s.profiles.push_back(polyline("bay", {{0, 0}, {0, 2}, {1, 3}}));
+    s.profiles.push_back(polyline("bay", {{0, 0}, {0, 1.5}, {1, 2.5}}));
     for (double at : {2.5, 7.5}) {
       PlanStep b;
       b.shape = StepShape::Bay;
@@ -246,7 +235,23 @@ TEST(Steps, BayWindowsWithBothPriorities) {
     }
     const Checked c = run(s);
     EXPECT_NEAR(c.m.baseArea, 60 + 2 * (3 + 1) / 2.0 * 1, 1e-9);
+    volume[pr] = c.m.volume;
+    double top = -1;
+    for (const ShellFace& f : c.r.shell.faces)
+      if (f.step < 0 && f.sourceEdge == 0 && f.profile == 0 && f.segment == 0)
+        for (const auto& l : f.loops)
+          for (int v : l) top = std::max(top, c.r.shell.points[v][2]);
+    facadeTop[pr] = top;
   }
+  EXPECT_NEAR(facadeTop[Priority::MaximiseVolume], 3.0, 1e-9);
+  EXPECT_NEAR(facadeTop[Priority::MinimiseVolume], 2.5, 1e-9);
+  const double difference = integrate(0, 10, 0, 6, 2000, 1200, [](double x, double y) {
+    const double others = std::min({3 + x, 13 - x, 9 - y});
+    return std::min(others, 3 + y) - std::min(others, 2.5 + y);
+  });
+  ASSERT_GT(difference, 1.0);
+  EXPECT_NEAR(volume[Priority::MaximiseVolume] - volume[Priority::MinimiseVolume], difference,
+              1e-4 * volume[Priority::MaximiseVolume]);
 }
 
 TEST(Steps, ForcedStepMatchesTheNaturalOneWhereNothingIntervenes) {

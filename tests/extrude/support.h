@@ -3,7 +3,9 @@
 #include "extrude/extrude.h"
 
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace corbel::extrude::test {
@@ -21,6 +23,26 @@ inline ExtrusionSpec uniformSpec(const std::vector<std::vector<Vec2>>& loops, co
     s.loops.push_back(pl);
   }
   return s;
+}
+
+// A named profile through the points, with per-segment tags.
+inline Profile polyline(std::string name, std::vector<Vec2> pts, std::vector<std::string> tags = {}) {
+  Profile p;
+  p.name = std::move(name);
+  p.points = std::move(pts);
+  p.tags = std::move(tags);
+  return p;
+}
+
+// Volume under a height field f(x, y) over a rectangle by the midpoint rule on an nx × ny grid:
+// an oracle that knows nothing of the sweep.
+inline double integrate(double x0, double x1, double y0, double y1, int nx, int ny,
+                        const std::function<double(double, double)>& f) {
+  const double hx = (x1 - x0) / nx, hy = (y1 - y0) / ny;
+  double s = 0;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) s += f(x0 + (i + 0.5) * hx, y0 + (j + 0.5) * hy);
+  return s * hx * hy;
 }
 
 inline std::vector<Vec2> rectangle(double w, double h, double x0 = 0, double y0 = 0) {

@@ -1,0 +1,191 @@
+#include "shell_checks.h"
+
+#include "extrude/tolerances.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace corbel::extrude::test {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P2 = K::Point_2;
+using P3 = K::Point_3;
+
+std::string where(const P3& p) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return s.str();
+}
+
+// The projection of a face onto the coordinate plane its normal is most across.
+std::array<int, 2> planeOf(const Vec3& n) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+  return {(axis + 1) % 3, (axis + 2) % 3};
+}
+
+// Ear clipping of a simple polygon (indices into pts) by exact orientation tests: an ear is a
+// strictly convex corner whose triangle holds no other corner. Corners in line with their
+// neighbours are never ears (nor corners `inLine` says are: within the kernel's δ2 of the line
+// through their neighbours in space, as where an event left a vertex on a hip that both faces
+// share, which rounding puts on the outer side of each face's projection); what is left when
+// no ear remains has no area.
+template <class InLine>
+void clipEars(std::vector<int> poly, const std::vector<P2>& pts, InLine inLine, std::vector<std::array<int, 3>>& out) {
+  auto orient = [&](int a, int b, int c) { return CGAL::orientation(pts[a], pts[b], pts[c]); };
+  // Counter-clockwise first.
+  double area = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const P2 &a = pts[poly[i]], &b = pts[poly[(i + 1) % poly.size()]];
+    area += a.x() * b.y() - a.y() * b.x();
+  }
+  if (area < 0) std::reverse(poly.begin(), poly.end());
+  while (poly.size() >= 3) {
+    const std::size_t n = poly.size();
+    bool clipped = false;
+    for (std::size_t i = 0; i < n && !clipped; ++i) {
+      const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+      if (orient(a, b, c) != CGAL::LEFT_TURN || inLine(a, b, c)) continue;
+      bool empty = true;
+      for (std::size_t j = 0; j < n && empty; ++j) {
+        const int q = poly[j];
+        if (q == a || q == b || q == c || pts[q] == pts[a] || pts[q] == pts[b] || pts[q] == pts[c]) continue;
+        empty = !(orient(a, b, q) != CGAL::RIGHT_TURN && orient(b, c, q) != CGAL::RIGHT_TURN && orient(c, a, q) != CGAL::RIGHT_TURN);
+      }
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) break;
+  }
+}
+
+// Whether two triangles of the shell meet other than where they must: along their shared side,
+// at their shared corner, or at one point both have as a corner (a vertex split in two fans).
+bool improper(const std::array<int, 3>& s, const std::array<int, 3>& t, const std::vector<P3>& p) {
+  std::array<int, 3> si{-1, -1, -1}, ti{-1, -1, -1};  // the corner of t each corner of s shares
+  int shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (s[i] == t[j] || p[s[i]] == p[t[j]]) {
+        si[i] = j;
+        ti[j] = i;
+        ++shared;
+      }
+  const K::Triangle_3 A(p[s[0]], p[s[1]], p[s[2]]), B(p[t[0]], p[t[1]], p[t[2]]);
+  if (shared == 0) return CGAL::do_intersect(A, B);
+  if (shared == 1) {
+    int i = 0, j = 0;
+    while (si[i] < 0) ++i;
+    while (ti[j] < 0) ++j;
+    if (CGAL::do_intersect(K::Segment_3(p[s[(i + 1) % 3]], p[s[(i + 2) % 3]]), B)) return true;
+    if (CGAL::do_intersect(K::Segment_3(p[t[(j + 1) % 3]], p[t[(j + 2) % 3]]), A)) return true;
+    if (CGAL::coplanar(p[s[0]], p[s[1]], p[s[2]], p[t[(j + 1) % 3]]) && CGAL::coplanar(p[s[0]], p[s[1]], p[s[2]], p[t[(j + 2) % 3]])) {
+      // In one plane: neither reaches into the other's corner at the shared point.
+      auto inward = [&](const std::array<int, 3>& u, int k) {
+        const P3 c = CGAL::centroid(p[u[0]], p[u[1]], p[u[2]]);
+        return p[u[k]] + (c - p[u[k]]) * 1e-6;
+      };
+      if (CGAL::do_intersect(B, inward(s, i)) || CGAL::do_intersect(A, inward(t, j))) return true;
+    }
+    return false;
+  }
+  if (shared == 2) {
+    // Along a shared side they overlap only when in one plane with their third corners on one
+    // side of it.
+    int i = 0, j = 0;
+    while (si[i] >= 0) ++i;
+    while (ti[j] >= 0) ++j;
+    int e0 = (i + 1) % 3, e1 = (i + 2) % 3;
+    if (!CGAL::coplanar(p[s[e0]], p[s[e1]], p[s[i]], p[t[j]])) return false;
+    // Same side of the shared line, within the plane: the third corners' orientations about it
+    // agree.
+    const K::Vector_3 n = CGAL::cross_product(p[s[e1]] - p[s[e0]], p[s[i]] - p[s[e0]]);
+    const K::Vector_3 m = CGAL::cross_product(p[s[e1]] - p[s[e0]], p[t[j]] - p[s[e0]]);
+    return n * m > 0;
+  }
+  return true;  // three corners in common: the same triangle twice
+}
+
+}  // namespace
+
+std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec, double factor) {
+  for (std::size_t fi = 0; fi < shell.faces.size(); ++fi) {
+    const ShellFace& f = shell.faces[fi];
+    const auto [u, v] = planeOf(f.normal);
+    for (const auto& loop : f.loops) {
+      CGAL::Polygon_2<K> p;
+      for (int i : loop) p.push_back(P2(shell.points[i][u], shell.points[i][v]));
+      if (p.size() < 3 || !p.is_simple()) {
+        double top = -1e300;
+        P3 at;
+        for (int i : loop)
+          if (shell.points[i][2] > top) top = shell.points[i][2], at = P3(shell.points[i][0], shell.points[i][1], top);
+        std::ostringstream s;
+        s << "face " << fi << " (edge " << f.sourceEdge << ", segment " << f.segment << ", step " << f.step
+          << ") has a loop of " << loop.size() << " corners that is not a simple polygon in its plane; its top "
+          << where(at);
+        return s.str();
+      }
+    }
+  }
+
+  // The shell's mesh, every polygon cut into triangles in its own plane.
+  const MeshData m = toMeshData(shell, spec, "plaster");
+  std::vector<P3> pts;
+  for (const Vec3& q : m.points) pts.emplace_back(q[0], q[1], q[2]);
+  // The kernel's δ2 for this plan: points closer than it are one point to the kernel.
+  BBox box;
+  for (const auto& l : spec.loops)
+    for (const Vec2& q : l.points) box.add(Vec3(q[0], q[1], 0));
+  const double delta2 = Tolerances::forScale(box.diagonal(), factor).cluster;
+  auto inLine = [&](int a, int b, int c) {
+    const K::Vector_3 ac = pts[c] - pts[a], ab = pts[b] - pts[a];
+    const double len2 = ac.squared_length();
+    if (len2 == 0) return true;
+    return CGAL::cross_product(ac, ab).squared_length() / len2 <= delta2 * delta2;
+  };
+  // (Triangles of one polygon tile it: only triangles of different polygons are tested.)
+  std::vector<std::array<int, 3>> tris;
+  std::vector<std::size_t> polygonOf;
+  std::vector<P2> flat(pts.size());
+  for (std::size_t fi = 0; fi < m.faces.size(); ++fi) {
+    const auto& face = m.faces[fi];
+    std::vector<Vec3> poly;
+    for (int i : face) poly.push_back(m.points[i]);
+    const auto [u, v] = planeOf(newellNormal(poly));
+    for (int i : face) flat[i] = P2(m.points[i][u], m.points[i][v]);
+    clipEars(face, flat, inLine, tris);
+    polygonOf.resize(tris.size(), fi);
+  }
+  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+  std::vector<Box> boxes;
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    const auto& t = tris[k];
+    boxes.emplace_back(pts[t[0]].bbox() + pts[t[1]].bbox() + pts[t[2]].bbox(), k);
+  }
+  std::string problem;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+    if (!problem.empty() || polygonOf[a.handle()] == polygonOf[b.handle()] ||
+        !improper(tris[a.handle()], tris[b.handle()], pts))
+      return;
+    const auto &s = tris[a.handle()], &t = tris[b.handle()];
+    problem = "the shell intersects itself: triangles " + where(pts[s[0]]) + ", " + where(pts[s[1]]) + ", " +
+              where(pts[s[2]]) + " and " + where(pts[t[0]]) + ", " + where(pts[t[1]]) + ", " + where(pts[t[2]]);
+  });
+  return problem;
+}
+
+}  // namespace corbel::extrude::test
