@@ -1,13 +1,17 @@
 #include "city/import.h"
 
+#include "city/ogr_source.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json_reader.h"
 #include "extrude/footprints.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <optional>
 #include <numbers>
 #include <queue>
 
@@ -335,78 +339,184 @@ void cleanBuilding(Building& b, const CleanupOptions& o) {
   b.depth = inscribedDepth(b.loops, std::max(0.05, 0.005 * std::min(hi[0] - lo[0], hi[1] - lo[1])));
 }
 
-Town readTown(const std::string& text, Coordinates coordinates, const CleanupOptions& options) {
-  nlohmann::json root = parseJsonText(text);
-  JsonReader r(root, "");
-  r.expectObject();
-  const std::string type = r.at("type").string(64);
-  if (type != "FeatureCollection") r.at("type").fail("expected \"FeatureCollection\", found \"" + type + "\"");
-  r.at("features").array(10000000);  // checks it is an array within the limit
-  Town town;
-  nlohmann::json& features = root["features"];
+namespace {
 
-  // Which features are streets, and the extent of every position.
-  std::vector<std::size_t> lineFeatures;
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, sum[2] = {0, 0};
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < features.size(); ++i) {
-    auto& f = features[i];
+// Every position of the features' geometries.
+struct Positions {
+  std::vector<nlohmann::json*> at;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+};
+
+Positions positionsOf(nlohmann::json& features) {
+  Positions p;
+  for (auto& f : features) {
     if (!f.is_object() || !f.contains("geometry") || !f["geometry"].is_object()) continue;
     auto& g = f["geometry"];
+    if (!g.contains("coordinates")) continue;
+    forEachPosition(g["coordinates"], [&](nlohmann::json& q) {
+      if (!q[0].is_number() || !q[1].is_number()) return;
+      for (int k = 0; k < 2; ++k) {
+        const double v = q[k].get<double>();
+        p.lo[k] = std::min(p.lo[k], v);
+        p.hi[k] = std::max(p.hi[k], v);
+      }
+      p.at.push_back(&q);
+    });
+  }
+  return p;
+}
+
+std::string range(const Positions& p) {
+  return "x from " + describe(p.lo[0]) + " to " + describe(p.hi[0]) + ", y from " + describe(p.lo[1]) + " to " +
+         describe(p.hi[1]);
+}
+
+const char* const kCrsHelp =
+    "give it with --crs (in a project, the town's \"crs\"): an EPSG code such as EPSG:32632 (UTM zone 32N) or "
+    "EPSG:3857 (web Mercator), a WKT or a PROJ string; or --crs local for metres about a local origin";
+
+// The CRS the user gave, if any.
+std::optional<SourceCrs> givenCrs(const ReadOptions& o) {
+  if (o.crs == "local" || (o.crs.empty() && o.coordinates == Coordinates::Metric))
+    return SourceCrs{SourceCrs::Kind::Local, "", o.crs.empty() ? "metres, as asked" : "metres about a local origin (--crs local)"};
+  if (o.crs.empty() && o.coordinates == Coordinates::Geographic)
+    return SourceCrs{SourceCrs::Kind::Reproject, "EPSG:4326", "lon/lat, as asked"};
+  if (!o.crs.empty()) return SourceCrs{SourceCrs::Kind::Reproject, o.crs, crsName(o.crs) + ", as asked"};
+  return std::nullopt;
+}
+
+// The CRS of a GeoJSON document whose CRS was not given.
+SourceCrs geoJsonCrs(const nlohmann::json& root, const Positions& p) {
+  // A "crs" member first: ogr2ogr copies corbel's "frame" member into the files it writes, in
+  // whatever CRS it writes them.
+  if (const auto crs = root.find("crs"); crs != root.end() && crs->is_object()) {
+    const auto props = crs->find("properties");
+    if (props != crs->end() && props->is_object() && props->contains("name") && (*props)["name"].is_string()) {
+      const std::string name = (*props)["name"].get<std::string>();
+      return {SourceCrs::Kind::Reproject, name, "the file's \"crs\" member: " + crsName(name)};
+    }
+    throw InputError("crs", "the \"crs\" member names no CRS (expected {\"type\": \"name\", \"properties\": {\"name\": ...}}); " +
+                                std::string(kCrsHelp));
+  }
+  if (const auto fm = root.find("frame"); fm != root.end() && fm->is_object() && fm->value("units", std::string()) == "m") {
+    const std::string projection = fm->value("projection", std::string());
+    const auto lon0 = fm->find("lon0"), lat0 = fm->find("lat0");
+    if (projection == "equirectangular" && lon0 != fm->end() && lat0 != fm->end() && lon0->is_number() &&
+        lat0->is_number()) {
+      const double r = fm->contains("R_m") && (*fm)["R_m"].is_number() ? (*fm)["R_m"].get<double>() : kEarthRadius;
+      const double x0 = lon0->get<double>(), y0 = lat0->get<double>();
+      // Metres about the origin lie around (0, 0); positions all within 1° of (lon0, lat0) are
+      // lon/lat written under a copied member (by ogr2ogr, without a "crs" member for WGS 84).
+      if (!p.at.empty() && std::abs(x0) + std::abs(y0) > 2 && p.lo[0] >= x0 - 1 && p.hi[0] <= x0 + 1 &&
+          p.lo[1] >= y0 - 1 && p.hi[1] <= y0 + 1)
+        return {SourceCrs::Kind::Reproject, "EPSG:4326",
+                "the file's \"frame\" member says metres about lon0/lat0, but every position lies within 1° of "
+                "(lon0, lat0): taken as RFC 7946 lon/lat"};
+      return {SourceCrs::Kind::Frame, equirectangularDefinition(lon0->get<double>(), lat0->get<double>(), r),
+              "the file's \"frame\" member: metres, equirectangular about lon0/lat0"};
+    }
+    return {SourceCrs::Kind::Local, "",
+            "the file's \"frame\" member gives metres (" + (projection.empty() ? std::string("a projection") : projection) +
+                "), not placed on the Earth"};
+  }
+  if (p.at.empty()) return {SourceCrs::Kind::Local, "", "no positions"};
+  if (p.lo[0] >= -180 && p.hi[0] <= 180 && p.lo[1] >= -90 && p.hi[1] <= 90 && p.hi[0] - p.lo[0] <= 5 &&
+      p.hi[1] - p.lo[1] <= 5)
+    return {SourceCrs::Kind::Reproject, "EPSG:4326",
+            "all " + std::to_string(p.at.size()) + " positions are valid lon/lat and span " + describe(p.hi[0] - p.lo[0]) +
+                "° × " + describe(p.hi[1] - p.lo[1]) + "°: taken as RFC 7946 lon/lat"};
+  const double reach = 100000;
+  if (p.lo[0] >= -reach && p.hi[0] <= reach && p.lo[1] >= -reach && p.hi[1] <= reach)
+    return {SourceCrs::Kind::Local, "",
+            "no CRS named and every position within 100 km of (0, 0) (" + range(p) + "): taken as metres about a local origin"};
+  throw InputError("crs", "the file names no CRS and its coordinates (" + range(p) +
+                              ") are neither lon/lat nor metres about a local origin; " + kCrsHelp);
+}
+
+// Who to credit: OpenStreetMap data must carry its ODbL attribution.
+std::string attributionOf(const nlohmann::json& root, const nlohmann::json& features) {
+  const std::string osm = "© OpenStreetMap contributors, ODbL 1.0 (https://www.openstreetmap.org/copyright)";
+  if (const auto s = root.find("source"); s != root.end() && s->is_object())
+    for (const char* key : {"license", "attribution"})
+      if (s->contains(key) && (*s)[key].is_string()) {
+        const std::string v = (*s)[key].get<std::string>();
+        if (v.find("ODbL") != std::string::npos || v.find("OpenStreetMap") != std::string::npos) return osm;
+      }
+  for (const auto& f : features) {
+    if (!f.is_object() || !f.contains("properties") || !f["properties"].is_object()) continue;
+    const auto& props = f["properties"];
+    for (const char* key : {"osm_id", "osm_way_id", "@id"})
+      if (props.contains(key)) return osm;
+    for (const char* key : {"source_id", "id"})
+      if (props.contains(key) && props[key].is_string() && props[key].get<std::string>().starts_with("osm:")) return osm;
+  }
+  return "";
+}
+
+// Places a FeatureCollection in source coordinates into the local frame and reads its streets
+// and buildings. `text`, when given, is the document as it was (read again where nothing moved).
+Town placeTown(nlohmann::json& root, const std::function<SourceCrs(const Positions&)>& crsOf, const ReadOptions& options,
+               const std::string* text) {
+  Town town;
+  nlohmann::json& features = root["features"];
+  town.attribution = attributionOf(root, features);
+  Positions positions = positionsOf(features);
+  const SourceCrs crs = crsOf(positions);
+  Frame& frame = town.frame;
+  frame.how = crs.how;
+  frame.coordinates = Coordinates::Metric;
+  bool moved = false;
+  if (crs.kind == SourceCrs::Kind::Frame) {
+    frame.crs = crsName(crs.definition);
+    frame.proj = crs.definition;
+    const Vec2 origin = toLonLat(crs.definition, Vec2(0, 0));
+    frame.lon0 = origin[0];
+    frame.lat0 = origin[1];
+    if (!positions.at.empty())
+      for (double y : {positions.lo[1], positions.hi[1]}) {
+        const double lat = frame.lat0 + y / frame.radius / kDeg;
+        frame.scaleError =
+            std::max(frame.scaleError, std::abs(std::cos(frame.lat0 * kDeg) / std::cos(lat * kDeg) - 1));
+      }
+  } else if (crs.kind == SourceCrs::Kind::Reproject && !positions.at.empty()) {
+    const bool geographic = crsIsGeographic(crs.definition);
+    frame.coordinates = geographic ? Coordinates::Geographic : Coordinates::Projected;
+    frame.crs = crsName(crs.definition);
+    const Vec2 centre((positions.lo[0] + positions.hi[0]) / 2, (positions.lo[1] + positions.hi[1]) / 2);
+    const Reprojection to(crs.definition, centre);
+    frame.lon0 = to.lon0();
+    frame.lat0 = to.lat0();
+    frame.proj = to.definition();
+    const std::size_t n = positions.at.size();
+    std::vector<double> x(n), y(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] = (*positions.at[i])[0].get<double>();
+      y[i] = (*positions.at[i])[1].get<double>();
+    }
+    if (!to.transform(n, x.data(), y.data()))
+      throw InputError("crs", "PROJ cannot transform every position from " + frame.crs + " (" + range(positions) +
+                                  ") to the local frame; is the CRS right? " + kCrsHelp);
+    double east = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      (*positions.at[i])[0] = x[i];
+      (*positions.at[i])[1] = y[i];
+      east = std::max(east, std::abs(x[i]));
+    }
+    frame.scaleError = transverseMercatorScaleError(east);
+    moved = true;
+  }
+
+  // Streets.
+  std::vector<std::size_t> lineFeatures;
+  for (std::size_t i = 0; i < features.size(); ++i) {
+    const auto& f = features[i];
+    if (!f.is_object() || !f.contains("geometry") || !f["geometry"].is_object()) continue;
+    const auto& g = f["geometry"];
     if (g.contains("type") && g["type"].is_string()) {
       const std::string gt = g["type"].get<std::string>();
       if (gt == "LineString" || gt == "MultiLineString") lineFeatures.push_back(i);
     }
-    if (g.contains("coordinates"))
-      forEachPosition(g["coordinates"], [&](nlohmann::json& p) {
-        for (int k = 0; k < 2; ++k) {
-          const double v = p[k].get<double>();
-          lo[k] = std::min(lo[k], v);
-          hi[k] = std::max(hi[k], v);
-          sum[k] += v;
-        }
-        ++count;
-      });
   }
-
-  Frame& frame = town.frame;
-  if (coordinates == Coordinates::Auto) {
-    const auto fm = root.find("frame");
-    if (fm != root.end() && fm->is_object() && fm->value("units", std::string()) == "m") {
-      coordinates = Coordinates::Metric;
-      frame.how =
-          "the file's \"frame\" member gives metres (" + fm->value("projection", std::string("a projection")) + ")";
-    } else if (count && lo[0] >= -180 && hi[0] <= 180 && lo[1] >= -90 && hi[1] <= 90 && hi[0] - lo[0] <= 5 &&
-               hi[1] - lo[1] <= 5) {
-      coordinates = Coordinates::Geographic;
-      frame.how = "all " + std::to_string(count) + " positions are valid lon/lat and span " + describe(hi[0] - lo[0]) +
-                  "° × " + describe(hi[1] - lo[1]) + "°: taken as RFC 7946 lon/lat";
-    } else {
-      coordinates = Coordinates::Metric;
-      frame.how = count ? "positions beyond lon/lat bounds or spanning more than 5°: taken as metres" : "no positions";
-    }
-  } else {
-    frame.how = coordinates == Coordinates::Geographic ? "lon/lat, as asked" : "metres, as asked";
-  }
-  frame.coordinates = coordinates;
-  const bool geographic = coordinates == Coordinates::Geographic && count;
-  if (geographic) {
-    frame.lon0 = sum[0] / count;
-    frame.lat0 = sum[1] / count;
-    for (double lat : {lo[1], hi[1]}) {
-      if (std::abs(lat) >= 89.9) throw InputError("features", "lon/lat data reaches a pole; project it first");
-      frame.scaleError = std::max(frame.scaleError, std::abs(std::cos(frame.lat0 * kDeg) / std::cos(lat * kDeg) - 1));
-    }
-    for (auto& f : features)
-      if (f.is_object() && f.contains("geometry") && f["geometry"].is_object() && f["geometry"].contains("coordinates"))
-        forEachPosition(f["geometry"]["coordinates"], [&](nlohmann::json& p) {
-          const Vec2 q = project(frame, p[0].get<double>(), p[1].get<double>());
-          p[0] = q[0];
-          p[1] = q[1];
-        });
-  }
-
-  // Streets.
   for (std::size_t i : lineFeatures) {
     const auto& g = features[i]["geometry"];
     const std::string path = "features[" + std::to_string(i) + "].geometry.coordinates";
@@ -426,11 +536,11 @@ Town readTown(const std::string& text, Coordinates coordinates, const CleanupOpt
 
   // Buildings, through the extrusion kernel's reader (streets left out so they are not refused).
   std::vector<extrude::Footprint> fps;
-  if (geographic || !lineFeatures.empty()) {
+  if (moved || !lineFeatures.empty() || !text) {
     for (auto it = lineFeatures.rbegin(); it != lineFeatures.rend(); ++it) features.erase(*it);
     fps = extrude::readGeoJson(root.dump());
   } else {
-    fps = extrude::readGeoJson(text);
+    fps = extrude::readGeoJson(*text);
   }
   town.buildings.reserve(fps.size());
   for (auto& fp : fps) {
@@ -440,18 +550,78 @@ Town readTown(const std::string& text, Coordinates coordinates, const CleanupOpt
     b.properties = std::move(fp.properties);
     b.notes = std::move(fp.notes);
     b.problem = std::move(fp.problem);
-    cleanBuilding(b, options);
+    if (options.clean) cleanBuilding(b, options.cleanup);
     town.buildings.push_back(std::move(b));
   }
   return town;
 }
 
-Town readTownFile(const std::string& path, Coordinates coordinates, const CleanupOptions& options) {
+void checkCollection(const nlohmann::json& root) {
+  JsonReader r(root, "");
+  r.expectObject();
+  const std::string type = r.at("type").string(64);
+  if (type != "FeatureCollection") r.at("type").fail("expected \"FeatureCollection\", found \"" + type + "\"");
+  r.at("features").array(10000000);  // checks it is an array within the limit
+}
+
+bool isGeoJsonName(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".geojson" || ext == ".json";
+}
+
+}  // namespace
+
+Town readTown(const std::string& text, const ReadOptions& options) {
+  nlohmann::json root = parseJsonText(text);
+  checkCollection(root);
+  const std::optional<SourceCrs> given = givenCrs(options);
+  return placeTown(
+      root, [&](const Positions& p) { return given ? *given : geoJsonCrs(root, p); }, options, &text);
+}
+
+Town readTown(const std::string& text, Coordinates coordinates, const CleanupOptions& cleanup) {
+  ReadOptions options;
+  options.coordinates = coordinates;
+  options.cleanup = cleanup;
+  return readTown(text, options);
+}
+
+Town readTownFile(const std::string& path, const ReadOptions& options) {
   try {
-    return readTown(readFile(path, std::size_t(1) << 31), coordinates, options);
+    if (isGeoJsonName(path) && options.layer.empty() && options.where.empty())
+      return readTown(readFile(path, std::size_t(1) << 31), options);
+    SourceFeatures source = readOgrSource(path, {options.layer, options.where});
+    const std::optional<SourceCrs> given = givenCrs(options);
+    const bool geoJson = source.driver == "GeoJSON";
+    if (geoJson) {
+      // GDAL takes a GeoJSON without a "crs" member as lon/lat: the document's own members
+      // ("frame", "crs", "source") say what it is, as when it is read directly.
+      nlohmann::json root = parseJsonText(readFile(path, std::size_t(1) << 31));
+      checkCollection(root);
+      for (auto it = root.begin(); it != root.end(); ++it)
+        if (it.key() != "features" && it.key() != "type") source.collection[it.key()] = it.value();
+    }
+    return placeTown(
+        source.collection,
+        [&](const Positions& p) {
+          if (given) return *given;
+          if (geoJson) return geoJsonCrs(source.collection, p);
+          if (source.crs.empty())
+            throw InputError("crs", "layer \"" + source.layer + "\" (" + source.driver + ") names no CRS; " + kCrsHelp);
+          return SourceCrs{SourceCrs::Kind::Reproject, source.crs, "the layer's CRS: " + crsName(source.crs)};
+        },
+        options, nullptr);
   } catch (const InputError& e) {
     throw InputError(e.where.empty() ? path : path + ": " + e.where, e.reason);
   }
+}
+
+Town readTownFile(const std::string& path, Coordinates coordinates, const CleanupOptions& cleanup) {
+  ReadOptions options;
+  options.coordinates = coordinates;
+  options.cleanup = cleanup;
+  return readTownFile(path, options);
 }
 
 }  // namespace corbel::city

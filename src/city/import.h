@@ -1,6 +1,8 @@
 #pragma once
-// Footprints of a town from GeoJSON (Kelly & Wonka Sec. 3.7): buildings in a local metric frame,
-// street centrelines, and a clean-up of each outline whose every change or refusal is reported.
+// Footprints of a town (Kelly & Wonka Sec. 3.7) from GeoJSON or any vector source GDAL/OGR
+// reads: buildings in a local metric frame (city/local_frame.h), street centrelines, and a
+// clean-up of each outline whose every change or refusal is reported.
+#include "city/local_frame.h"
 #include "core/geometry.h"
 
 #include <nlohmann/json.hpp>
@@ -10,24 +12,31 @@
 
 namespace corbel::city {
 
-// How the file's coordinates were read.
-enum class Coordinates { Auto, Geographic, Metric };
+// How the file's coordinates were read: lon/lat or another CRS reprojected (Geographic,
+// Projected), or metres taken as they are (Metric: a local site, or corbel's own "frame").
+enum class Coordinates { Auto, Geographic, Metric, Projected };
 
-// The local frame: geographic input is projected by a local equirectangular projection about
-// (lon0, lat0) on the sphere of radius R: x = R cos(lat0) (lon - lon0), y = R (lat - lat0), with
-// angles in radians. `scaleError` bounds the relative error of an east-west length anywhere in
-// the data against the sphere (|cos lat0 / cos lat - 1| over the data's latitudes); north-south
-// lengths are exact on the sphere.
+// The local frame of a town. Geographic and projected sources are reprojected by PROJ into a
+// transverse Mercator on WGS 84 about the data's centre (lon0, lat0), scale 1 on its meridian;
+// `scaleError` bounds the relative error of any length in the data against the ellipsoid (the
+// projection's k - 1 at the point farthest east or west). A file in corbel's own "frame"
+// (equirectangular about lon0/lat0 on the sphere of radius R, metres) is already local and is
+// taken as it is, georeferenced by that projection; its scaleError is |cos lat0 / cos lat - 1|
+// over the data's latitudes.
 struct Frame {
   Coordinates coordinates = Coordinates::Metric;
   std::string how;  // why the coordinates were taken as they were, for the report
-  double lon0 = 0, lat0 = 0, radius = 6371008.8;
+  std::string crs;  // the source's CRS ("EPSG:32632"); "" for metres about a local origin
+  // The local frame's PROJ definition, which places (0, 0) on the Earth; "" when the data is not
+  // georeferenced (local metres).
+  std::string proj;
+  double lon0 = 0, lat0 = 0, radius = kEarthRadius;
   double scaleError = 0;
 };
 
 // Great-circle distance on the frame's sphere (haversine), metres; lon/lat in degrees.
-double haversine(double lon1, double lat1, double lon2, double lat2, double radius = 6371008.8);
-// lon/lat (degrees) to the frame's metres.
+double haversine(double lon1, double lat1, double lon2, double lat2, double radius = kEarthRadius);
+// lon/lat (degrees) to corbel's equirectangular frame's metres about (frame.lon0, frame.lat0).
 Vec2 project(const Frame& frame, double lon, double lat);
 
 struct Building {
@@ -51,6 +60,9 @@ struct Street {
 
 struct Town {
   Frame frame;
+  // Whom the data must be credited to, for the output (OpenStreetMap-derived footprints:
+  // "© OpenStreetMap contributors, ODbL 1.0"); "" when the source says nothing.
+  std::string attribution;
   std::vector<Building> buildings;
   std::vector<Street> streets;
 };
@@ -86,11 +98,32 @@ double inscribedDepth(const std::vector<std::vector<Vec2>>& loops, double precis
 // Cleans one building in place: fixes go to notes, a refusal to problem.
 void cleanBuilding(Building& b, const CleanupOptions& options = {});
 
+// How footprints are read.
+struct ReadOptions {
+  // The source's CRS, for a file that names none or names a wrong one: anything GDAL/PROJ reads
+  // (EPSG:32632, a WKT, a PROJ string), or "local" for metres about a local origin.
+  std::string crs;
+  Coordinates coordinates = Coordinates::Auto;  // Geographic: as crs EPSG:4326; Metric: as "local"
+  std::string layer;  // the layer of a source with several (GDAL/OGR)
+  std::string where;  // an OGR SQL attribute filter, e.g. "building = 'house'"
+  bool clean = true;  // false: outlines as read (oriented, exact repeats gone), not cleaned
+  CleanupOptions cleanup;
+};
+
 // Reads a FeatureCollection: Polygon and MultiPolygon features are buildings, LineString and
-// MultiLineString features streets. Geographic coordinates are projected (see Frame); the file
-// as a whole failing throws InputError naming the path, one bad feature is that building's
-// problem. Every building is cleaned.
+// MultiLineString features streets. The CRS is, in order: options.crs; corbel's "frame" member;
+// the GeoJSON "crs" member; lon/lat (RFC 7946) when every position is one and the data spans at
+// most 5°; metres about a local origin when every position is within 100 km of (0, 0). Anything
+// else is refused (InputError "crs": ... give it with --crs). The file as a whole failing throws
+// InputError naming the path, one bad feature is that building's problem. Every building is
+// cleaned unless asked not to be.
+Town readTown(const std::string& text, const ReadOptions& options);
 Town readTown(const std::string& text, Coordinates coordinates = Coordinates::Auto, const CleanupOptions& options = {});
+// A GeoJSON file (.geojson, .json) as readTown, or any other vector source GDAL/OGR opens
+// (Shapefile, GeoPackage, FlatGeobuf, ...), whose layer's CRS is honoured and which is refused
+// when it names none and options.crs gives none. With a layer or a where-clause a GeoJSON file is
+// read through OGR too.
+Town readTownFile(const std::string& path, const ReadOptions& options);
 Town readTownFile(const std::string& path, Coordinates coordinates = Coordinates::Auto,
                   const CleanupOptions& options = {});
 

@@ -65,8 +65,13 @@ TownInputs readTownInputs(const TownSpec& spec) {
   }
   TownInputs in;
   in.style = under("town.style", [&] { return spec.style.empty() ? parseStyle(spec.styleJson) : loadStyle(spec.style); });
-  in.town = under("town.footprints",
-                  [&] { return spec.footprints.empty() ? readTown(spec.footprintsJson) : readTownFile(spec.footprints); });
+  ReadOptions read;
+  read.crs = spec.crs;
+  read.layer = spec.layer;
+  read.where = spec.where;
+  in.town = under("town.footprints", [&] {
+    return spec.footprints.empty() ? readTown(spec.footprintsJson, read) : readTownFile(spec.footprints, read);
+  });
   try {
     addStreets(in.town, spec.streets);
   } catch (const InputError& e) {
@@ -108,7 +113,8 @@ std::map<std::string, BuildingOverride> resolveOverrides(const Style& style, con
 }
 
 std::shared_ptr<const TownInputs> TownCache::inputsFor(ObjectId object, const TownSpec& spec) {
-  std::string key = (spec.footprints.empty() ? spec.footprintsJson : fileStamp(spec.footprints)) + "\n" +
+  std::string key = (spec.footprints.empty() ? spec.footprintsJson : fileStamp(spec.footprints)) + "\n" + spec.crs +
+                    "\n" + spec.layer + "\n" + spec.where + "\n" +
                     (spec.style.empty() ? spec.styleJson : fileStamp(spec.style));
   // The streets make plots and change labels: they are inputs too (every number, exactly).
   char number[32];

@@ -6,6 +6,8 @@
 #include "core/textures.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <optional>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -50,7 +52,10 @@ BuildingCondition buildingCondition(const std::optional<JsonReader>& r) {
     p->expectObject();
     for (auto& [key, value] : p->raw().items()) {
       JsonReader v(value, p->path() + "." + key);
-      if (value.is_array())
+      if (value.is_object()) {
+        rejectUnknown(v, {"range"});
+        c.propertyRange[key] = range(v.at("range"), -1e12, 1e12);
+      } else if (value.is_array())
         for (const auto& e : v.array(1000)) c.property[key].push_back(e.raw());
       else
         c.property[key].push_back(value);
@@ -299,6 +304,21 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
   rules("assign", s.assign);
 }
 
+// A property as a number: a JSON number, or a string that is one, optionally in metres
+// ("12.5", "12.5 m", as OpenStreetMap's height tags are written).
+std::optional<double> numberOf(const nlohmann::json& v) {
+  if (v.is_number()) return v.get<double>();
+  if (!v.is_string()) return std::nullopt;
+  const std::string& s = v.get_ref<const std::string&>();
+  char* end = nullptr;
+  const double d = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || !std::isfinite(d)) return std::nullopt;
+  std::string rest(end);
+  std::erase(rest, ' ');
+  if (!rest.empty() && rest != "m") return std::nullopt;
+  return d;
+}
+
 bool sameValue(const nlohmann::json& a, const nlohmann::json& b) {
   if (a.is_number() && b.is_number()) return a.get<double>() == b.get<double>();
   return a == b;
@@ -443,6 +463,12 @@ bool BuildingCondition::matches(const Building& b) const {
     bool any = false;
     for (const auto& v : values) any = any || sameValue(*it, v);
     if (!any) return false;
+  }
+  for (const auto& [key, r] : propertyRange) {
+    auto it = b.properties.find(key);
+    if (it == b.properties.end()) return false;
+    const std::optional<double> v = numberOf(*it);
+    if (!v || *v < r.first || *v > r.second) return false;
   }
   return true;
 }

@@ -22,6 +22,9 @@ struct BuildingCondition {
   double minArea = 0, maxArea = INFINITY;                       // m²
   double minDepth = 0, maxDepth = INFINITY;                     // m, Building::depth
   std::map<std::string, std::vector<nlohmann::json>> property;  // key → accepted values
+  // key → [min, max]: the property is a number, or a string of one (OSM's "12.5", "12.5 m"),
+  // within the range (GIS heights, levels: "height": {"range": [14, 1000]}).
+  std::map<std::string, std::pair<double, double>> propertyRange;
   bool matches(const Building& b) const;
 };
 

@@ -66,9 +66,13 @@ int run(const CityRequest& r) {
     if (!v || v->size() != 3 || !((*v)[2] > 0)) throw bad("--around: expected X,Y,R (metres, R > 0)");
     around = std::array<double, 3>{(*v)[0], (*v)[1], (*v)[2]};
   }
-  const city::Coordinates coordinates = r.coordinates == "lonlat"   ? city::Coordinates::Geographic
-                                        : r.coordinates == "metric" ? city::Coordinates::Metric
-                                                                    : city::Coordinates::Auto;
+  city::ReadOptions read;
+  read.coordinates = r.coordinates == "lonlat"   ? city::Coordinates::Geographic
+                     : r.coordinates == "metric" ? city::Coordinates::Metric
+                                                 : city::Coordinates::Auto;
+  read.crs = r.crs;
+  read.layer = r.layer;
+  read.where = r.where;
   const city::Detail detail = r.detail == "massing" ? city::Detail::Massing
                               : r.detail == "steps" ? city::Detail::Steps
                                                     : city::Detail::Full;
@@ -95,7 +99,7 @@ int run(const CityRequest& r) {
     source = "street";
   } else {
     source = r.footprints;
-    town = city::readTownFile(source, coordinates);
+    town = city::readTownFile(source, read);
   }
   const std::vector<city::BuildingLabels> labels = city::labelTown(town, style.labels, r.jobs);
   const double readS = seconds();
@@ -125,6 +129,9 @@ int run(const CityRequest& r) {
   ExportOptions exportOptions;  // textured by tag: a PNG per built-in material, UVs from the faces' planes
   exportOptions.textures = r.textures == "on";
   exportOptions.tagTextures = city::tagTexturesOf(style);  // the style's tag_textures
+  // The georeference and the data's attribution go into every glb.
+  exportOptions.georeference = {town.frame.crs, town.frame.proj, town.frame.lon0, town.frame.lat0, 0};
+  exportOptions.copyright = town.attribution;
   // The PNG of --render: colours unless asked for (the renderer's textured mode).
   if (!r.out.empty()) whole = std::make_unique<Scene>();
   if (!r.render.empty() && !whole) view = std::make_unique<Scene>();  // else the output's Scene is rendered
@@ -203,11 +210,14 @@ int run(const CityRequest& r) {
   nlohmann::ordered_json j;
   j["source"] = source;
   j["frame"] = town.frame.how;
-  if (town.frame.coordinates == city::Coordinates::Geographic) {
+  if (!town.frame.proj.empty()) {
+    j["crs"] = town.frame.crs;
+    j["local_frame"] = town.frame.proj;
     j["lon0"] = town.frame.lon0;
     j["lat0"] = town.frame.lat0;
     j["scale_error"] = town.frame.scaleError;
   }
+  if (!town.attribution.empty()) j["attribution"] = town.attribution;
   j["streets"] = town.streets.size();
   j["style"] = style.name;
   j["seed"] = options.seed;

@@ -116,16 +116,26 @@ void declareEdit(CLI::App& app, Requests& requests) {
   text(*c, "--out", r.out, "OUT.corbel", "Where to save the edited project (atomically; may be PROJECT).")->required();
 }
 
+// --crs, --layer and --where: how footprints are read (city/import.h).
+void footprintOptions(CLI::App& c, std::string& crs, std::string& layer, std::string& where) {
+  text(c, "--crs", crs, "CRS",
+       "The footprints' CRS when the file names none or a wrong one: EPSG:32632, a WKT or a PROJ string; "
+       "`local` for metres about a local origin.");
+  text(c, "--layer", layer, "NAME", "The layer of a source with several (GeoPackage, a folder of Shapefiles).");
+  text(c, "--where", where, "SQL", "Only the features this OGR SQL attribute filter keeps, e.g. \"height > 3\".");
+}
+
 void declareExtrude(CLI::App& app, Requests& requests) {
   CLI::App* c = command(
-      app, "extrude", "Procedural extrusion of a project's extrusion objects or of GeoJSON footprints.",
-      "GeoJSON coordinates are meters; a feature may name a profile of the --library project in its property "
-      "\"profile\".\n"
+      app, "extrude", "Procedural extrusion of a project's extrusion objects or of footprints.",
+      "Footprints are read as by city (any GDAL/OGR vector source, reprojected to a local metric frame; see\n"
+      "docs/city.md); a feature may name a profile of the --library project in its property \"profile\".\n"
       "A building whose shell fails is rebuilt with 10-10000x tolerances and kept only where three rebuilds agree\n"
       "(a warning says so); --no-retry does not. Without --stats, failures and the summary go to stderr.\n"
       "See docs/extrude.md.");
   ExtrudeRequest& r = requests.add<ExtrudeRequest>(c);
-  positional(*c, "INPUT", r.input, "A project (its extrusion objects) or GeoJSON footprints.")->required();
+  positional(*c, "INPUT", r.input, "A project (its extrusion objects) or footprints (GeoJSON, Shapefile, GeoPackage, ...).")
+      ->required();
   number(*c, "--pitch", r.pitch, 0.5, 89.5, "DEG",
          "One roof slope for every edge (default 45 for GeoJSON; a project's objects keep their profiles "
          "unless --pitch or --wall-height is given).");
@@ -138,6 +148,7 @@ void declareExtrude(CLI::App& app, Requests& requests) {
   c->add_flag("--no-retry", r.noRetry, "Keep a failed shell failed (no rebuilds with larger tolerances).");
   c->add_flag("--winding-rule", r.windingRule,
               "Rebuild a plan that overlaps itself after an event by the winding rule (Sec. 4.4) instead of warning.");
+  footprintOptions(*c, r.crs, r.layer, r.where);
 }
 
 // --friction, --kern and --friction-sides, for every statics form.
@@ -327,7 +338,8 @@ void declareCity(CLI::App& app, Requests& requests) {
       "Prints one JSON line; skipped buildings on stderr. Give at least one of --out, --tiles and --render.\n"
       "--street builds town houses along a spline; --plots skeleton grows its plots from seeds (Fig. 26).");
   CityRequest& r = requests.add<CityRequest>(c);
-  CLI::Option* footprints = positional(*c, "FOOTPRINTS", r.footprints, "GeoJSON footprints (or --street).");
+  CLI::Option* footprints = positional(*c, "FOOTPRINTS", r.footprints,
+                                      "Footprints: GeoJSON or any GDAL/OGR vector source (or --street).");
   CLI::Option* street =
       text(*c, "--street", r.street, "X,Y;X,Y;...", "Town houses along this spline instead of footprints.");
   street->excludes(footprints);
@@ -339,7 +351,9 @@ void declareCity(CLI::App& app, Requests& requests) {
   number(*c, "--tile-size", r.tileSize, 1, 1e6, "M", "The tiles' side.");
   text(*c, "--render", r.render, "PNG", "Render the town.");
   text(*c, "--around", r.around, "X,Y,R", "Only the buildings within R meters of (X, Y).");
-  choice(*c, "--coordinates", r.coordinates, {"auto", "lonlat", "metric"}, "How to read the footprints' coordinates.");
+  choice(*c, "--coordinates", r.coordinates, {"auto", "lonlat", "metric"},
+         "How to read the footprints' coordinates (lonlat: as --crs EPSG:4326; metric: as --crs local).");
+  footprintOptions(*c, r.crs, r.layer, r.where);
   text(*c, "--report", r.report, "FILE.jsonl",
        "One JSON line per building: type, notes, warnings, error, and the footprint's `area` (m²) and `depth` (m, "
        "`docs/city.md`) for every building the clean-up kept.");

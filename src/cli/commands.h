@@ -43,6 +43,7 @@ struct EditRequest {
 
 struct ExtrudeRequest {
   std::string input, out, library;
+  std::string crs, layer, where;  // footprints: their CRS, layer and attribute filter (city/import.h)
   std::optional<double> pitch, wallHeight;  // given: every edge gets this roof over walls
   unsigned jobs = 0;
   bool stats = false, mergeCoplanar = false, noRetry = false, windingRule = false;
@@ -126,6 +127,7 @@ struct CompleteRequest {
 
 struct CityRequest {
   std::string footprints, style, out, tiles, render, around, street, plots, report;
+  std::string crs, layer, where;  // the footprints' CRS, layer and attribute filter (city/import.h)
   std::string coordinates = "auto", detail = "full", textures = "on", renderTextures = "off";
   long long seed = 1;
   unsigned jobs = 0;

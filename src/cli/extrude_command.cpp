@@ -1,5 +1,6 @@
 // corbel-cli extrude: a project's extrusion objects or GeoJSON footprints through the batch
 // (extrude/batch.h); one JSON line per building with --stats, then a summary.
+#include "city/import.h"
 #include "cli/guarded.h"
 #include "cli/run.h"
 #include "core/atomic_file.h"
@@ -13,7 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <numbers>
 #include <string>
@@ -41,9 +44,17 @@ int run(const ExtrudeRequest& request) {
         for (const Profile& p : e->profiles) library.push_back(p);
   }
 
-  const std::string text = readFile(input, std::size_t(1) << 31);
   std::vector<extrude::BatchItem> items;
-  const bool isProject = text.find("\"format\"") != std::string::npos && text.find("\"corbel\"") != std::string::npos;
+  // A project is a .corbel file or JSON that says it is one; anything else is footprints.
+  std::string ext = std::filesystem::path(input).extension().string();
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  bool isProject = ext == ".corbel";
+  if (!isProject && (ext == ".json" || ext == ".geojson" || ext.empty()) && std::filesystem::is_regular_file(input)) {
+    const std::string text = readFile(input, std::size_t(1) << 31);
+    isProject = text.find("\"format\"") != std::string::npos && text.find("\"corbel\"") != std::string::npos;
+  }
+  city::Frame frame;
+  std::string attribution;
   if (isProject) {
     const Document doc = loadProject(input).document;
     for (const DocObject& o : doc.objects) {
@@ -57,13 +68,17 @@ int run(const ExtrudeRequest& request) {
       items.push_back(std::move(item));
     }
   } else {
-    std::vector<extrude::Footprint> fps;
-    try {
-      fps = extrude::readGeoJson(text);
-    } catch (const InputError& e) {
-      throw InputError(e.where.empty() ? input : input + ": " + e.where, e.reason);
-    }
-    for (auto& fp : fps) {
+    // Through the town's reader: any GDAL/OGR source in its CRS, reprojected to a local metric
+    // frame, outlines as read (not cleaned).
+    city::ReadOptions read;
+    read.crs = request.crs;
+    read.layer = request.layer;
+    read.where = request.where;
+    read.clean = false;
+    city::Town town = city::readTownFile(input, read);
+    frame = town.frame;
+    attribution = town.attribution;
+    for (auto& fp : town.buildings) {
       extrude::BatchItem item;
       item.id = fp.id;
       item.problem = fp.problem;
@@ -144,7 +159,10 @@ int run(const ExtrudeRequest& request) {
     ObjectId id = 1;
     for (const auto& r : results)
       if (r.ok) scene.replaceObject(id++, Kind::Shell, r.id, r.mesh);
-    exportScene(scene, out);
+    ExportOptions exportOptions;
+    exportOptions.georeference = {frame.crs, frame.proj, frame.lon0, frame.lat0, 0};
+    exportOptions.copyright = attribution;
+    exportScene(scene, out, exportOptions);
     exportMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count();
   }
   nlohmann::ordered_json summary;
@@ -154,6 +172,13 @@ int run(const ExtrudeRequest& request) {
   summary["failed"] = failed;
   summary["with_warnings"] = withWarnings;
   summary["extrude_ms"] = batchMs;
+  if (!isProject) {
+    summary["frame"] = frame.how;
+    if (!frame.proj.empty()) {
+      summary["crs"] = frame.crs;
+      summary["scale_error"] = frame.scaleError;
+    }
+  }
   if (!out.empty()) {
     summary["export_ms"] = exportMs;
     summary["out"] = out;

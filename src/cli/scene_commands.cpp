@@ -103,6 +103,8 @@ int run(const ExportRequest& r) {
   if (!r.up.empty()) options.up = r.up == "y" ? UpAxis::Y : UpAxis::Z;
   options.textured = e.textured;
   options.tagTextures = e.tagTextures;
+  options.georeference = e.georeference;
+  options.copyright = e.copyright;
   exportScene(e.scene, r.out, options);
   std::cout << r.out << "\n";
   return 0;

@@ -36,6 +36,14 @@ ExportableScene exportableScene(const Document& doc, const Scene& built, const c
         ++split;
       }
       out.notes.push_back("town \"" + o.name + "\": one object per building (" + std::to_string(split) + ")");
+      if (const auto in = towns->inputs(o.id)) {
+        const city::Frame& f = in->town.frame;
+        if (out.georeference.proj.empty() && !f.proj.empty()) out.georeference = {f.crs, f.proj, f.lon0, f.lat0, 0};
+        else if (!f.proj.empty() && f.proj != out.georeference.proj)
+          out.notes.push_back("town \"" + o.name + "\" lies in another frame than the first town's: the file records the first's");
+        if (!in->town.attribution.empty() && out.copyright.find(in->town.attribution) == std::string::npos)
+          out.copyright += (out.copyright.empty() ? "" : "; ") + in->town.attribution;
+      }
     }
   }
   out.textured = [townOf](ObjectId id) { return townOf.count(id) > 0; };

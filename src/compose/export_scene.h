@@ -5,6 +5,7 @@
 // shows is left out of the file.
 #include "city/kernel.h"
 #include "core/document.h"
+#include "core/export.h"
 #include "core/scene.h"
 #include "core/textures.h"
 
@@ -24,6 +25,10 @@ struct ExportableScene {
   // textures (ExportOptions::textured, ::tagTextures).
   std::function<bool(ObjectId)> textured;
   TagTextures tagTextures;
+  // Where the first exported town with georeferenced footprints lies, and its data's
+  // attribution (ExportOptions::georeference, ::copyright; docs/city.md).
+  ExportOptions::Georeference georeference;
+  std::string copyright;
 };
 
 // `include` picks the document's objects (null: the visible ones); `kifsResolution` is used

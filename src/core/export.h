@@ -26,6 +26,16 @@ struct ExportOptions {
   // With textures: the texture an object's tagged faces show in place of their material's (a
   // city style's tag_textures); none when empty or null.
   TagTextures tagTextures;
+  // glb only: where the scene's origin lies on the Earth, written to the scene's extras as
+  // "georeference": {crs, proj, origin: [lon, lat, height], axes}; none when `proj` is empty.
+  // `proj` is the PROJ definition of the metric frame the scene is in (x east, y north, z up:
+  // glTF's +X, −Z and +Y); `crs` names the CRS the data came in.
+  struct Georeference {
+    std::string crs, proj;
+    double lon = 0, lat = 0, height = 0;  // degrees (WGS 84), metres
+  } georeference;
+  // glb only: the asset's copyright, e.g. the ODbL attribution of OpenStreetMap data.
+  std::string copyright;
 };
 
 enum class ExportFormat { Obj, Ply, Off, Glb };

@@ -242,6 +242,15 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
   // named scene, since tinygltf writes a scene without nodes or name as null.
   if (model.buffers[0].data.empty()) model.buffers.clear();
   model.scenes[0].name = "corbel";
+  if (!options.copyright.empty()) model.asset.copyright = options.copyright;
+  if (const auto& g = options.georeference; !g.proj.empty()) {
+    using V = tinygltf::Value;
+    V::Object geo{{"proj", V(g.proj)},
+                  {"origin", V(V::Array{V(g.lon), V(g.lat), V(g.height)})},
+                  {"axes", V(std::string("glTF +X east, -Z north, +Y up, metres"))}};
+    if (!g.crs.empty()) geo["crs"] = V(g.crs);
+    model.scenes[0].extras = V(V::Object{{"georeference", V(geo)}});
+  }
   tinygltf::TinyGLTF writer;
   const std::string temp = makeTempSibling(path);
   if (!writer.WriteGltfSceneToFile(&model, temp, true, true, false, true)) {

@@ -300,6 +300,9 @@ ojson pathOrJson(const std::string& path, const std::string& text, const std::st
 ojson townToJson(const TownSpec& t, const std::string& folder) {
   ojson j;
   j["footprints"] = pathOrJson(t.footprints, t.footprintsJson, folder);
+  if (!t.crs.empty()) j["crs"] = t.crs;
+  if (!t.layer.empty()) j["layer"] = t.layer;
+  if (!t.where.empty()) j["where"] = t.where;
   j["style"] = pathOrJson(t.style, t.styleJson, folder);
   j["seed"] = t.seed;
   j["detail"] = t.detail;
@@ -345,7 +348,7 @@ ojson townToJson(const TownSpec& t, const std::string& folder) {
 // The footprints' and the style's own keys are checked by the city kernel when it builds the object.
 TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"footprints", "style", "seed", "detail", "overrides", "streets"}))
+  for (auto& k : r.unknownKeys({"footprints", "crs", "layer", "where", "style", "seed", "detail", "overrides", "streets"}))
     warnings.push_back(k + ": unknown key kept");
   TownSpec t;
   const auto pathOrText = [&](const JsonReader& v, std::string& path, std::string& text) {
@@ -357,6 +360,9 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
       v.fail("expected a file path (a string) or the JSON itself (an object), found " + std::string(v.raw().is_array() ? "an array" : v.raw().is_null() ? "null" : std::string("a ") + v.raw().type_name()));
   };
   pathOrText(r.at("footprints"), t.footprints, t.footprintsJson);
+  if (auto v = r.find("crs")) t.crs = v->string(100000);
+  if (auto v = r.find("layer")) t.layer = v->string(1000);
+  if (auto v = r.find("where")) t.where = v->string(100000);
   pathOrText(r.at("style"), t.style, t.styleJson);
   if (auto v = r.find("seed")) t.seed = static_cast<std::uint64_t>(v->integer(0, (1L << 53)));
   if (auto v = r.find("detail")) {

@@ -45,6 +45,10 @@ struct TownSpec {
   // to that file where possible), or, when that is empty, the GeoJSON text held in the project.
   std::string footprints;
   std::string footprintsJson;
+  // How the footprints are read (city/import.h, ReadOptions): their CRS when the file names none
+  // (EPSG:32632, a WKT, a PROJ string or "local"), the layer of a source with several, an OGR SQL
+  // attribute filter; "" = the file's own, the only layer, every feature.
+  std::string crs, layer, where;
   // The style: a style file (as footprints) or, when that is empty, the style's JSON text.
   std::string style;
   std::string styleJson;

@@ -2,6 +2,7 @@
 // the clean-up's reasons on footprints drawn to be bad.
 #include "city/import.h"
 
+#include <geodesic.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,31 +63,40 @@ TEST(Import, HaversineOfOneThousandthDegreeOfLatitude) {
   EXPECT_NEAR(haversine(0, 0, 0.001, 0), 111.19508, 1e-4);
 }
 
-TEST(Import, LonLatIsProjectedWithinTheStatedErrorOfGreatCircleDistances) {
+TEST(Import, LonLatIsProjectedWithinTheStatedErrorOfGeodesicDistances) {
   // Four buildings about 1.1 km apart around Moosburg (48.47° N).
   const double lons[] = {11.930, 11.945, 11.930, 11.945}, lats[] = {48.460, 48.460, 48.470, 48.470};
   std::vector<std::string> fs;
   for (int i = 0; i < 4; ++i) fs.push_back(square(lons[i], lats[i], 0.0002, "b" + std::to_string(i)));
   const Town t = readTown(collection(fs));
   ASSERT_EQ(t.frame.coordinates, Coordinates::Geographic) << t.frame.how;
+  EXPECT_EQ(t.frame.crs, "EPSG:4326");
+  // The frame's origin is the middle of the data's extent.
+  EXPECT_NEAR(t.frame.lon0, 11.9376, 1e-4);
   EXPECT_NEAR(t.frame.lat0, 48.4651, 1e-4);
   ASSERT_EQ(t.buildings.size(), 4u);
   for (const auto& b : t.buildings) EXPECT_EQ(b.problem, "") << b.id;
-  // The outer ring starts at the south-west corner (readers keep the first corner).
+  // Distances between the south-west corners against the geodesic ones on the WGS 84 ellipsoid
+  // (PROJ's geodesic library, Karney's algorithm): within the stated scale error, which for a
+  // transverse Mercator about the centre is x² / (2 R²) at 560 m east or west: about 4e-9.
+  geod_geodesic g;
+  geod_init(&g, 6378137, 1 / 298.257223563);
   double worst = 0;
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
       const Vec2 d = t.buildings[i].loops[0][0] - t.buildings[j].loops[0][0];
-      const double truth = haversine(lons[i], lats[i], lons[j], lats[j]);
+      double truth = 0, az1 = 0, az2 = 0;
+      geod_inverse(&g, lats[i], lons[i], lats[j], lons[j], &truth, &az1, &az2);
       worst = std::max(worst, std::abs(d.norm() - truth) / truth);
     }
-  // The stated bound: |cos lat0 / cos lat - 1| over the data, here tan(48.47°) × 0.005° ≈ 1e-4.
-  EXPECT_GT(t.frame.scaleError, 0.8e-4);
-  EXPECT_LT(t.frame.scaleError, 1.2e-4);
+  EXPECT_GT(t.frame.scaleError, 2e-9);
+  EXPECT_LT(t.frame.scaleError, 1e-8);
   EXPECT_LE(worst, t.frame.scaleError);
-  // A building 0.0002° a side: 22.24 m north-south exactly, 22.24 cos(lat) east-west.
+  // A side of 0.0002° of latitude: its geodesic length.
   const auto& r = t.buildings[0].loops[0];
-  EXPECT_NEAR((r[3] - r[0]).norm(), 0.0002 * 6371008.8 * std::numbers::pi / 180, 1e-6);
+  double side = 0, az1 = 0, az2 = 0;
+  geod_inverse(&g, lats[0], lons[0], lats[0] + 0.0002, lons[0], &side, &az1, &az2);
+  EXPECT_NEAR((r[3] - r[0]).norm(), side, side * 1e-8);
   EXPECT_EQ(t.buildings[0].properties["name"], "b0");
 }
 
@@ -150,38 +160,8 @@ TEST(Cleanup, EveryFixAndRefusalHasItsReason) {
   EXPECT_TRUE(good.notes.empty());
 }
 
-TEST(Import, RealFootprintsInLonLatKeepTheirAreas) {
-  // Moosburg back in lon/lat by the inverse of the file's own frame (its README: equirectangular
-  // about lon0/lat0 on R = 6371008.8 m), read again about our own centre: each area agrees with
-  // the file's area_m2 to within twice the stated scale error (areas scale in two directions)
-  // plus the file's 1 mm rounding.
-  const std::string path = std::string(CORBEL_FOOTPRINTS) + "/moosburg_de.geojson";
-  nlohmann::json data = nlohmann::json::parse(std::ifstream(path));
-  const double lon0 = data["frame"]["lon0"], lat0 = data["frame"]["lat0"], R = 6371008.8, deg = std::numbers::pi / 180;
-  nlohmann::json out = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
-  for (std::size_t i = 0; i < data["features"].size(); i += 10) {
-    nlohmann::json f = data["features"][i];
-    for (auto& ring : f["geometry"]["coordinates"])
-      for (auto& p : ring) {
-        const double x = p[0], y = p[1];
-        p[0] = lon0 + x / (R * std::cos(lat0 * deg)) / deg;
-        p[1] = lat0 + y / R / deg;
-      }
-    out["features"].push_back(f);
-  }
-  const Town t = readTown(out.dump());
-  ASSERT_EQ(t.frame.coordinates, Coordinates::Geographic) << t.frame.how;
-  EXPECT_GT(t.frame.scaleError, 0);
-  EXPECT_LT(t.frame.scaleError, 1e-3);
-  std::size_t checked = 0;
-  for (const auto& b : t.buildings) {
-    if (!b.problem.empty() || !b.notes.empty()) continue;  // clean-up changes the area a little
-    const double want = b.properties["area_m2"];
-    EXPECT_NEAR(b.area, want, want * 2 * t.frame.scaleError + 0.01) << b.id;
-    ++checked;
-  }
-  EXPECT_GT(checked, 300u);
-}
+// Real footprints in lon/lat, UTM, web Mercator and other formats against geodesic areas:
+// gis_input_test.cpp.
 
 namespace {
 
@@ -297,7 +277,9 @@ TEST(Cleanup, ABuildingWiderThanTheLimitIsRefused) {
       polygon("limit", {{0, 0}, {3000, 0}, {3000, 4000}, {0, 4000}}),
       polygon("over", {{0, 5000}, {3000, 5000}, {3000, 9001}, {0, 9001}}),
       polygon("huge", {{0, 0}, {1e9, 0}, {1e9, 1e9}, {0, 1e9}}),
-  }));
+  }),
+                          // Positions 10⁶ km out are no CRS the reader can tell: it is given.
+                          Coordinates::Metric);
   EXPECT_EQ(byId(t, "limit").problem, "");
   EXPECT_EQ(byId(t, "over").problem,
             "too large: 5001 m across (the farthest two corners), over the 5000 m a building may span");

@@ -92,6 +92,35 @@ TEST(Style, ExplicitAssignmentUsesTheFirstRuleThatHolds) {
   EXPECT_EQ(s.types[*assignType(s, box("b", 6, 6), r)].name, "house");  // 36 m²: second rule
 }
 
+// GIS attributes by range: a height (a number, or a string of one as OpenStreetMap writes
+// heights) picks the type; what is no number, or missing, falls through to the next rule.
+TEST(Style, ANumericAttributeRangePicksTheType) {
+  const std::string text = std::string(kStyle).substr(0, std::string(kStyle).rfind('}')) +
+                           R"(, "assign": [{"when": {"property": {"height": {"range": [12, 1000]}}}, "types": "shop"},
+                                           {"when": {"property": {"roof:shape": "flat"}}, "types": "shed"},
+                                           {"types": "house"}]})";
+  const Style s = parseStyle(text);
+  auto type = [&](const nlohmann::json& props) {
+    BuildingRandom r(1, "a");
+    return s.types[*assignType(s, box("a", 10, 8, props), r)].name;
+  };
+  EXPECT_EQ(type({{"height", 20}}), "shop");
+  EXPECT_EQ(type({{"height", 12}}), "shop");  // the range holds its ends
+  EXPECT_EQ(type({{"height", "15.5 m"}}), "shop");
+  EXPECT_EQ(type({{"height", "15.5"}}), "shop");
+  EXPECT_EQ(type({{"height", 11.99}}), "house");
+  EXPECT_EQ(type({{"height", "tall"}}), "house");
+  EXPECT_EQ(type({{"height", "15 ft"}}), "house");  // not metres: not taken as a height
+  EXPECT_EQ(type({{"roof:shape", "flat"}}), "shed");
+  EXPECT_EQ(type(nlohmann::json::object()), "house");
+  EXPECT_NE(parseError(withType(R"({"name": "t", "when": {"property": {"height": {"range": [5, 2]}}}, "edges": [{"profiles": "hip"}]})"))
+                .find("types[0].when.property.height.range: min is greater than max"),
+            std::string::npos);
+  EXPECT_NE(parseError(withType(R"({"name": "t", "when": {"property": {"height": {"below": 5}}}, "edges": [{"profiles": "hip"}]})"))
+                .find("below"),
+            std::string::npos);
+}
+
 TEST(Style, ProfileChoicesFollowTheirWeights) {
   const Style s = parseStyle(kStyle);
   const Building b = box("house", 10, 8);

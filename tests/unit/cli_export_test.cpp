@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -77,6 +78,22 @@ TEST(CliExport, ATownIsWrittenAsTheCityCommandWritesIt) {
   EXPECT_EQ(a.trianglesByNode, b.trianglesByNode);  // a node per building, same names, same triangles
   EXPECT_EQ(a.images, b.images);                     // and the same textures
   EXPECT_GT(a.images, 0u);
+  // And the same place on the Earth: the footprints' frame (their "frame" member's lon0/lat0 and
+  // the equirectangular projection it describes), and OpenStreetMap's attribution.
+  const nlohmann::json source =
+      nlohmann::json::parse(std::ifstream(sourcePath("assets/examples/town-moosburg.geojson")));
+  for (const std::string& file : {dir.file("e.glb"), dir.file("c.glb")}) {
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, file)) << err;
+    EXPECT_NE(model.asset.copyright.find("OpenStreetMap contributors"), std::string::npos) << file;
+    const tinygltf::Value& geo = model.scenes.at(0).extras.Get("georeference");
+    ASSERT_TRUE(geo.IsObject()) << file;
+    EXPECT_EQ(geo.Get("proj").Get<std::string>().rfind("+proj=eqc", 0), 0u) << file;
+    EXPECT_NEAR(geo.Get("origin").Get(0).GetNumberAsDouble(), source["frame"]["lon0"].get<double>(), 1e-9) << file;
+    EXPECT_NEAR(geo.Get("origin").Get(1).GetNumberAsDouble(), source["frame"]["lat0"].get<double>(), 1e-9) << file;
+  }
 }
 
 // Town tiles, like every export, get the mode a new file gets under the user's umask.

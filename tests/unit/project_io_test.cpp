@@ -968,6 +968,9 @@ std::string withTown(const std::string& body) { return withSpec("town", body); }
 TEST(ProjectIo, TownSpecsRoundTripWithPathsRelativeToTheProject) {
   corbel::TownSpec t;
   t.footprints = "/data/p/town.geojson";
+  t.crs = "EPSG:32632";
+  t.layer = "buildings";
+  t.where = "height > 3";
   t.style = "/data/styles/oldtown.json";
   t.seed = 7;
   t.detail = "steps";
@@ -989,6 +992,8 @@ TEST(ProjectIo, TownSpecsRoundTripWithPathsRelativeToTheProject) {
   const std::string text = corbel::serializeProject(d, "/data/p");
   EXPECT_NE(text.find(R"("footprints": "town.geojson")"), std::string::npos) << text;
   EXPECT_NE(text.find(R"("style": "../styles/oldtown.json")"), std::string::npos) << text;
+  EXPECT_NE(text.find(R"("crs": "EPSG:32632")"), std::string::npos) << text;
+  EXPECT_NE(text.find(R"("where": "height > 3")"), std::string::npos) << text;
   const corbel::LoadedProject back = corbel::parseProject(text, "/data/p");
   EXPECT_TRUE(back.warnings.empty());
   EXPECT_EQ(back.document, d);

@@ -1,0 +1,147 @@
+#include "city/ogr_source.h"
+
+#include "core/error.h"
+
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
+
+#include <memory>
+#include <mutex>
+
+namespace corbel::city {
+
+namespace {
+
+struct DatasetCloser {
+  void operator()(GDALDataset* d) const { GDALClose(d); }
+};
+
+// GDAL's messages go into our InputErrors, not onto stderr.
+struct QuietGdal {
+  QuietGdal() { CPLPushErrorHandler(CPLQuietErrorHandler); }
+  ~QuietGdal() { CPLPopErrorHandler(); }
+  QuietGdal(const QuietGdal&) = delete;
+  QuietGdal& operator=(const QuietGdal&) = delete;
+};
+
+std::string lastError(const std::string& otherwise) {
+  const char* m = CPLGetLastErrorMsg();
+  return m && *m ? std::string(m) : otherwise;
+}
+
+nlohmann::json ring(const OGRLineString& line) {
+  nlohmann::json a = nlohmann::json::array();
+  for (int i = 0; i < line.getNumPoints(); ++i) a.push_back({line.getX(i), line.getY(i)});
+  return a;
+}
+
+nlohmann::json polygon(const OGRPolygon& p) {
+  nlohmann::json rings = nlohmann::json::array();
+  if (const OGRLinearRing* outer = p.getExteriorRing()) rings.push_back(ring(*outer));
+  for (int i = 0; i < p.getNumInteriorRings(); ++i) rings.push_back(ring(*p.getInteriorRing(i)));
+  return rings;
+}
+
+// A geometry as GeoJSON, coordinates as they are (2D); null for a kind a town has no use for,
+// which the reader then reports.
+nlohmann::json geometry(const OGRGeometry* g) {
+  if (!g) return nullptr;
+  switch (wkbFlatten(g->getGeometryType())) {
+    case wkbPolygon:
+      return {{"type", "Polygon"}, {"coordinates", polygon(*g->toPolygon())}};
+    case wkbMultiPolygon: {
+      nlohmann::json parts = nlohmann::json::array();
+      for (const OGRPolygon* p : *g->toMultiPolygon()) parts.push_back(polygon(*p));
+      return {{"type", "MultiPolygon"}, {"coordinates", parts}};
+    }
+    case wkbLineString:
+      return {{"type", "LineString"}, {"coordinates", ring(*g->toLineString())}};
+    case wkbMultiLineString: {
+      nlohmann::json parts = nlohmann::json::array();
+      for (const OGRLineString* l : *g->toMultiLineString()) parts.push_back(ring(*l));
+      return {{"type", "MultiLineString"}, {"coordinates", parts}};
+    }
+    default:
+      return {{"type", OGRGeometryTypeToName(g->getGeometryType())}};
+  }
+}
+
+nlohmann::json field(const OGRFeature& f, int i) {
+  switch (f.GetFieldDefnRef(i)->GetType()) {
+    case OFTInteger:
+      return f.GetFieldAsInteger(i);
+    case OFTInteger64:
+      return static_cast<std::int64_t>(f.GetFieldAsInteger64(i));
+    case OFTReal:
+      return f.GetFieldAsDouble(i);
+    default:
+      return std::string(f.GetFieldAsString(i));
+  }
+}
+
+}  // namespace
+
+SourceFeatures readOgrSource(const std::string& path, const SourceOptions& options) {
+  static std::once_flag registered;
+  std::call_once(registered, [] { GDALAllRegister(); });
+  const QuietGdal quiet;
+  CPLErrorReset();
+  std::unique_ptr<GDALDataset, DatasetCloser> data(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  if (!data) throw InputError(path, lastError("GDAL/OGR cannot open it as a vector source"));
+  SourceFeatures out;
+  out.driver = data->GetDriver() ? data->GetDriver()->GetDescription() : "";
+  OGRLayer* layer = nullptr;
+  const int layers = data->GetLayerCount();
+  std::string names;
+  for (int i = 0; i < layers; ++i) names += std::string(i ? ", " : "") + data->GetLayer(i)->GetName();
+  if (!options.layer.empty()) {
+    layer = data->GetLayerByName(options.layer.c_str());
+    if (!layer)
+      throw InputError(path, "no layer \"" + options.layer + "\" (" + std::to_string(layers) + " layer(s): " + names +
+                                 ")");
+  } else if (layers == 1) {
+    layer = data->GetLayer(0);
+  } else {
+    throw InputError(path, layers ? std::to_string(layers) + " layers (" + names + "): choose one with --layer"
+                                  : "no layers");
+  }
+  out.layer = layer->GetName();
+  if (!options.where.empty()) {
+    CPLErrorReset();
+    if (layer->SetAttributeFilter(options.where.c_str()) != OGRERR_NONE)
+      throw InputError("where", "\"" + options.where + "\" is not an OGR SQL filter of layer \"" + out.layer +
+                                    "\": " + lastError("GDAL refused it"));
+  }
+  if (const OGRSpatialReference* srs = layer->GetSpatialRef()) {
+    char* wkt = nullptr;
+    const char* wktOptions[] = {"FORMAT=WKT2_2018", nullptr};
+    if (srs->exportToWkt(&wkt, wktOptions) == OGRERR_NONE && wkt) out.crs = wkt;
+    CPLFree(wkt);
+  }
+  out.collection = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
+  nlohmann::json& features = out.collection["features"];
+  layer->ResetReading();
+  CPLErrorReset();
+  for (auto& f : *layer) {
+    nlohmann::json props = nlohmann::json::object();
+    for (int i = 0; i < f->GetFieldCount(); ++i)
+      if (f->IsFieldSetAndNotNull(i)) props[f->GetFieldDefnRef(i)->GetNameRef()] = field(*f, i);
+    nlohmann::json feature = {{"type", "Feature"}};
+    // GDAL keeps a GeoJSON feature's string "id" as a field of that name: it names the building.
+    if (auto id = props.find("id"); id != props.end() && (id->is_string() || id->is_number_integer()))
+      feature["id"] = *id;
+    feature["properties"] = std::move(props);
+    feature["geometry"] = geometry(f->GetGeometryRef());
+    features.push_back(std::move(feature));
+  }
+  if (CPLGetLastErrorType() >= CE_Failure) {
+    // Some drivers (GeoPackage) check a filter only when they read.
+    if (!options.where.empty())
+      throw InputError("where", "\"" + options.where + "\" on layer \"" + out.layer + "\": " + lastError("GDAL failed"));
+    throw InputError(path, "reading layer \"" + out.layer + "\": " + lastError("GDAL failed"));
+  }
+  return out;
+}
+
+}  // namespace corbel::city

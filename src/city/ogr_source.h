@@ -1,0 +1,30 @@
+#pragma once
+// Footprints from any vector source GDAL/OGR reads (GeoJSON, Shapefile, GeoPackage, FlatGeobuf,
+// ...): one layer's features, optionally filtered by an OGR SQL where-clause, as a GeoJSON
+// FeatureCollection in the source's own coordinates, with the layer's CRS.
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace corbel::city {
+
+struct SourceOptions {
+  std::string layer;  // "" = the only layer (a source with several must be told which)
+  std::string where;  // OGR SQL attribute filter ("" = every feature), e.g. "height > 3"
+};
+
+struct SourceFeatures {
+  nlohmann::json collection;  // {"type": "FeatureCollection", "features": [...]}
+  std::string crs;            // the layer's CRS as WKT; "" when it names none
+  std::string driver;         // GDAL's short name of the format ("GPKG", "ESRI Shapefile", ...)
+  std::string layer;          // the layer read
+};
+
+// Reads `path` (a file, a folder or any dataset name GDAL opens). Polygons, multipolygons and
+// lines become GeoJSON geometries with every coordinate kept in double; fields become properties
+// (numbers as numbers); a feature without geometry is kept with a null one (the reader reports
+// it). Throws InputError naming the path, the layer or "where" when GDAL cannot open the source,
+// the layer is not there or ambiguous, or the filter is not valid OGR SQL.
+SourceFeatures readOgrSource(const std::string& path, const SourceOptions& options = {});
+
+}  // namespace corbel::city
