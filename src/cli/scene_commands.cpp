@@ -74,7 +74,8 @@ int run(const RenderRequest& r) {
   render::HeadlessContext context;
   render::Renderer renderer;
   const render::Image image =
-      render::renderSceneWithKifs(renderer, l.scene, raymarched.buildings, camera, width, height, settings);
+      render::renderSceneWithKifs(renderer, l.scene, raymarched.buildings, camera, width, height, settings,
+                                  raymarched.placements);
   render::writePng(image, r.out);
   std::cout << r.out << "\n";
   return 0;
@@ -103,6 +104,7 @@ int run(const ExportRequest& r) {
   if (!r.up.empty()) options.up = r.up == "y" ? UpAxis::Y : UpAxis::Z;
   options.textured = e.textured;
   options.tagTextures = e.tagTextures;
+  options.placements = e.placements;
   exportScene(e.scene, r.out, options);
   std::cout << r.out << "\n";
   return 0;

@@ -9,6 +9,7 @@
 #include "core/textures.h"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct ExportableScene {
   // textures (ExportOptions::textured, ::tagTextures).
   std::function<bool(ObjectId)> textured;
   TagTextures tagTextures;
+  // The placement of each written object that has one (a town's buildings take the town's):
+  // its vertices are written placed, and the glb says how (ExportOptions::placements).
+  std::map<ObjectId, Placement> placements;
 };
 
 // `include` picks the document's objects (null: the visible ones); `kifsResolution` is used

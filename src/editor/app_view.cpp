@@ -26,17 +26,29 @@ void App::handleViewInput() {
   // A press on a growth site's entry or envelope corner (its Site tab shown) drags that entry;
   // elsewhere the tool orbits.
   c.grab = [this](const Ray& r) {
+    if (grabGizmo(tool_.pressX(), tool_.pressY())) return true;
     return selectedGrowth() && growthPanel_.siteShown() && growthPanel_.beginViewDrag(growthHost(), r.origin, r.direction);
   };
   c.dragTo = [this](const Ray& r) {
+    if (transform_.active()) return;  // transformInput follows the pointer
     if (selectedGrowth()) growthPanel_.viewDrag(growthHost(), r.origin, r.direction);
   };
   c.release = [this] {
     if (growthPanel_.viewDragging()) growthPanel_.endViewDrag(growthHost());
   };
   c.click = [this](const Ray& r) { clickInView(r); };
+  c.boxSelect = [this](float x0, float y0, float x1, float y1) { boxSelect(x0, y0, x1, y1); };
   const bool overUi = ImGui::GetIO().WantCaptureMouse;
-  for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
+  // G or R began a transform: the frame's input is its own. A gizmo drag shares it with the
+  // tool, whose release ends the grab.
+  if (transform_.active() && !transformDragged_) {
+    transformInput();
+  } else {
+    for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
+    if (transform_.active()) transformInput();
+  }
+  updateHover(overUi);
+  drawBoxBand();
   // The growth site was deselected (a menu, a shortcut) during the drag.
   if (growthPanel_.viewDragging() && !selectedGrowth()) growthPanel_.endViewDrag(growthHost());
 }
@@ -45,18 +57,20 @@ std::optional<ObjectId> App::objectUnder(const Ray& r) {
   const Vec3 d = r.direction.normalized();
   std::optional<ObjectId> hit;
   double nearest = std::numeric_limits<double>::infinity();
-  if (const auto p = pickScene(shownScene(), r.origin, d, settings_.visible)) {
+  if (const auto p = pickScene(shownScene(), r.origin, d, [this](ObjectId id) { return pickable(id); })) {
     hit = p->object;
     nearest = p->t;
   }
   // KIFS buildings drawn by ray marching have no faces: the CPU twin of the shader marches the ray.
   for (const DocObject& o : history_.current().objects) {
     const auto* k = std::get_if<KifsSpec>(&o.spec);
-    if (!k || k->meshResolution > 0 || (settings_.visible && !settings_.visible(o.id))) continue;
+    if (!k || k->meshResolution > 0 || !pickable(o.id)) continue;
     try {
       kifs::KifsParams params = render::kifsForView(kifs::paramsOf(*k), view_.camera, std::max(1, int(view_.height())));
       const kifs::Building b(params);
-      const kifs::Hit h = kifs::trace(b, {{r.origin[0], r.origin[1], r.origin[2]}, {d[0], d[1], d[2]}});
+      // March in the building's own frame (a KIFS placement is rigid, so t is the same).
+      const Vec3 o0 = o.placement.unapply(r.origin), d0 = o.placement.unapplyDirection(d);
+      const kifs::Hit h = kifs::trace(b, {{o0[0], o0[1], o0[2]}, {d0[0], d0[1], d0[2]}});
       if (h.hit && h.t < nearest) {
         nearest = h.t;
         hit = o.id;
@@ -146,6 +160,7 @@ void App::drawView() {
   if (growthFor_ && selected() == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
   if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
   if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
+  drawStudioOverlay();
   renderer_->setScene(shownScene(), settings_);
   const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),
             pw = int(view_.width() * sx), ph = int(view_.height() * sy);
@@ -159,10 +174,10 @@ void App::drawView() {
       // Progressive refinement: march again only when the buildings, the camera or the
       // viewport changed; coarse (1/4 of the pixels each way) while they keep changing, full
       // size once they have been still for a moment. Other frames reuse the cached layer.
-      std::vector<KifsSpec> specs;
+      std::vector<std::pair<KifsSpec, Placement>> specs;
       for (const DocObject& o : doc.objects)
         if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0 && settings_.visible(o.id))
-          specs.push_back(*k);
+          specs.emplace_back(*k, o.placement);
       const std::array<double, 9> view{
           view_.camera.target[0], view_.camera.target[1], view_.camera.target[2], view_.camera.azimuth_deg, view_.camera.elevation_deg,
           view_.camera.distance,  view_.camera.fov_deg,   double(pw),        double(ph)};
@@ -177,7 +192,7 @@ void App::drawView() {
       std::vector<kifs::KifsParams> buildings;
       for (const kifs::KifsParams& p : raymarched.buildings) buildings.push_back(render::kifsForView(p, view_.camera, ph));
       kifsLayer_->update(*kifsPass_, buildings, view_.camera, pw, ph, still ? 1 : 4, render::KifsMode::Shaded,
-                         std::to_string(kifsGeneration_));
+                         std::to_string(kifsGeneration_), raymarched.placements);
       kifsLayer_->composite(px, py, pw, ph);
     } catch (const std::exception& e) {
       log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);
