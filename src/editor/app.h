@@ -132,6 +132,7 @@ class App {
   void drawBoxBand();
   void frameSelected();
   void duplicateSelected();
+  void drawPlacementFields(const DocObject& object);  // the left panel's Placement section
 
   GLFWwindow* window_;
   EditorOptions options_;

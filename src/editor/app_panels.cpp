@@ -207,6 +207,7 @@ void App::drawLeftPanel() {
   }
   if (selected()) {
     if (const DocObject* o = history_.current().find(*selected())) drawObjectProperties(*o);
+    if (const DocObject* o = selected() ? history_.current().find(*selected()) : nullptr) drawPlacementFields(*o);
   }
   ImGui::PopItemWidth();
   ImGui::End();

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "editor/box_select.h"
 #include "editor/clipboard.h"
+#include "editor/fields.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -345,6 +346,40 @@ void App::duplicateSelected() {
   commit(std::move(d), "Duplicate " + std::to_string(copies.size()) + " object(s)");
   selection_.clear();
   for (ObjectId c : copies) selection_.add(c);
+}
+
+// Typed placement values for the active object, each one undo step.
+void App::drawPlacementFields(const DocObject& object) {
+  ImGui::Separator();
+  ImGui::TextDisabled("Placement");
+  Placement p = object.placement;
+  bool changed = false;
+  const float t[3] = {float(p.translation[0]), float(p.translation[1]), float(p.translation[2])};
+  float nt[3];
+  if (commitFloats("Move (m)", t, nt, 3, "%.3f")) {
+    for (int k = 0; k < 3; ++k) p.translation[k] = nt[k];
+    changed = true;
+  }
+  if (double r; commitDouble("Turn (°)", p.rotation_deg, r, "%.2f")) p.rotation_deg = r, changed = true;
+  if (scalable(object.spec)) {
+    if (double s; commitDouble("Scale", p.scale, s, "%.3f")) p.scale = s, changed = true;
+  }
+  bool locked = object.locked;
+  const bool lockClicked = ImGui::Checkbox("Locked", &locked);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A locked object cannot be picked in the 3D view or moved.");
+  if (changed) {
+    if (const auto problem = checkPlacement(p)) {
+      log(object.name + ": placement." + *problem, true);
+      return;
+    }
+  }
+  if (!changed && !lockClicked) return;
+  Document d = history_.current();
+  DocObject* o = d.find(object.id);
+  if (!o) return;
+  o->placement = p;
+  o->locked = locked;
+  commit(std::move(d), (lockClicked ? (locked ? "Lock " : "Unlock ") : "Place ") + object.name);
 }
 
 }  // namespace corbel::editor

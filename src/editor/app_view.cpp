@@ -25,12 +25,19 @@ void App::handleViewInput() {
   c.viewport = &view_;
   // A press on a growth site's entry or envelope corner (its Site tab shown) drags that entry;
   // elsewhere the tool orbits.
-  c.grab = [this](const Ray& r) {
+  // The growth site's entries are dragged in its own frame.
+  auto own = [this](const Ray& r) {
+    const DocObject* g = selectedGrowth();
+    return g ? Ray{g->placement.unapply(r.origin), g->placement.unapplyDirection(r.direction)} : r;
+  };
+  c.grab = [this, own](const Ray& world) {
     if (grabGizmo(tool_.pressX(), tool_.pressY())) return true;
+    const Ray r = own(world);
     return selectedGrowth() && growthPanel_.siteShown() && growthPanel_.beginViewDrag(growthHost(), r.origin, r.direction);
   };
-  c.dragTo = [this](const Ray& r) {
+  c.dragTo = [this, own](const Ray& world) {
     if (transform_.active()) return;  // transformInput follows the pointer
+    const Ray r = own(world);
     if (selectedGrowth()) growthPanel_.viewDrag(growthHost(), r.origin, r.direction);
   };
   c.release = [this] {
@@ -82,15 +89,18 @@ std::optional<ObjectId> App::objectUnder(const Ray& r) {
   return hit;
 }
 
-void App::clickInView(const Ray& r) {
+void App::clickInView(const Ray& ray) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool add = io.KeyShift, toggle = io.KeyCtrl;
-  const std::optional<ObjectId> hit = objectUnder(r);
+  const std::optional<ObjectId> hit = objectUnder(ray);
   const std::optional<ObjectId> active = selected();
   if (hit && hit == active && !add && !toggle) {
     // On the active extrusion a click picks a face: its provenance is logged and its plan edge
     // and profile segment are highlighted in the panes.
     const DocObject* o = history_.current().find(*active);
+    // Each kind picks in its own frame: the ray is taken back through the placement.
+    const Placement placement = o ? o->placement : Placement{};
+    const Ray r{placement.unapply(ray.origin), placement.unapplyDirection(ray.direction)};
     if (const auto* spec = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr) {
       const std::string what = panes_.pick(*spec, r.origin, r.direction);
       if (!what.empty()) log(o->name + ": picked " + what);
@@ -129,7 +139,7 @@ const Scene& App::shownScene() {
   if (!sim) return scene_;
   if (simSceneOf_ != scene_.revision() || simRevisionOf_ != sim->revision() || simObjectOf_ != m->id) {
     simScene_ = scene_;
-    showSimulation(simScene_, m->id, *sim);
+    showSimulation(simScene_, m->id, *sim, m->placement);
     simSceneOf_ = scene_.revision();
     simRevisionOf_ = sim->revision();
     simObjectOf_ = m->id;
@@ -155,11 +165,19 @@ void App::drawView() {
   // Tension colours and force arrows of the selected masonry object, when it is shown.
   renderer_->overlay().clear();
   renderer_->overlayOnTop().clear();
+  // The panels draw the active object's overlays in its own frame: placed below.
+  const Placement activePlacement = [&] {
+    const DocObject* o = selected() ? doc.find(*selected()) : nullptr;
+    return o ? o->placement : Placement{};
+  }();
+  const render::Overlay::Mark below = renderer_->overlay().mark(), above = renderer_->overlayOnTop().mark();
   if (const DocObject* m = selectedMasonry(); m && m->visible)
     statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
   if (growthFor_ && selected() == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
   if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
   if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
+  renderer_->overlay().placeSince(below, activePlacement);
+  renderer_->overlayOnTop().placeSince(above, activePlacement);
   drawStudioOverlay();
   renderer_->setScene(shownScene(), settings_);
   const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),

@@ -6,6 +6,7 @@
 #include "core/project_io.h"
 #include "core/scene_pick.h"
 #include "core/scene_sync.h"
+#include "render/overlay.h"
 
 #include <gtest/gtest.h>
 
@@ -183,6 +184,20 @@ TEST(Placement, ARayPicksTheObjectWhereItIsDrawn) {
   // (10.9, 20, ·) lies inside the turned footprint (x 9..11) but (10, 21, ·) does not (y 19.5..20.5).
   EXPECT_TRUE(pickScene(scene, Vec3(10.9, 20, 10), Vec3(0, 0, -1)));
   EXPECT_FALSE(pickScene(scene, Vec3(10, 21, 10), Vec3(0, 0, -1)));
+}
+
+TEST(Placement, OverlaysDrawnInAnObjectsFrameArePlacedAfterTheMark) {
+  render::Overlay o;
+  o.line(Vec3(0, 0, 0), Vec3(1, 0, 0), {1, 1, 1, 1});  // before the mark: left alone
+  const render::Overlay::Mark mark = o.mark();
+  o.line(Vec3(1, 2, 6), Vec3(-1, -2, 0), {1, 0, 0, 1});
+  o.placeSince(mark, quarterTurn());
+  const std::vector<float>& v = o.lineVertices();  // [x y z r g b a] per vertex
+  ASSERT_EQ(v.size(), 4u * 7u);
+  EXPECT_EQ((std::array<float, 3>{v[7], v[8], v[9]}), (std::array<float, 3>{1, 0, 0}));
+  EXPECT_EQ((std::array<float, 3>{v[14], v[15], v[16]}), (std::array<float, 3>{9, 20.5f, 4}));   // by hand above
+  EXPECT_EQ((std::array<float, 3>{v[21], v[22], v[23]}), (std::array<float, 3>{11, 19.5f, 1}));
+  EXPECT_EQ(v[17], 1.0f);  // the colour stays
 }
 
 }  // namespace
