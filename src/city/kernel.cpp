@@ -26,7 +26,7 @@ std::uint64_t fnv1a(const std::string& text, std::uint64_t h = 14695981039346656
 // profiles, features) written as the project format writes specs, and the detail.
 std::uint64_t inputHash(const extrude::ExtrusionSpec& spec, const std::string& type, Detail detail) {
   Document d;
-  d.objects.push_back({1, "b", true, spec, std::nullopt, {}});
+  d.objects.push_back({1, "b", true, spec, std::nullopt, {}, {}, false});
   return fnv1a(serializeProject(d) + type + std::to_string(static_cast<int>(detail)));
 }
 

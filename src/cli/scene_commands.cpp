@@ -74,7 +74,8 @@ int run(const RenderRequest& r) {
   render::HeadlessContext context;
   render::Renderer renderer;
   const render::Image image =
-      render::renderSceneWithKifs(renderer, l.scene, raymarched.buildings, camera, width, height, settings);
+      render::renderSceneWithKifs(renderer, l.scene, raymarched.buildings, camera, width, height, settings,
+                                  raymarched.placements);
   render::writePng(image, r.out);
   std::cout << r.out << "\n";
   return 0;
@@ -105,6 +106,7 @@ int run(const ExportRequest& r) {
   options.tagTextures = e.tagTextures;
   options.georeference = e.georeference;
   options.copyright = e.copyright;
+  options.placements = e.placements;
   exportScene(e.scene, r.out, options);
   std::cout << r.out << "\n";
   return 0;

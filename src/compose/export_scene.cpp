@@ -17,13 +17,16 @@ ExportableScene exportableScene(const Document& doc, const Scene& built, const c
     const DocObject* o = doc.find(id);
     if (!o || !picked(*o)) out.scene.removeObject(id);
   }
+  for (const DocObject& o : doc.objects)
+    if (!o.placement.identity() && picked(o)) out.placements[o.id] = o.placement;
   ObjectId next = doc.nextId();
   std::map<ObjectId, ObjectId> townOf;  // a building's object → its town's
   for (const DocObject& o : doc.objects) {
     if (!picked(o)) continue;
     if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0) {
-      out.scene.replaceObject(o.id, Kind::Ornament, o.name,
-                              kifs::meshBuilding(kifs::Building(kifs::paramsOf(*k)), resolution));
+      MeshData mesh = kifs::meshBuilding(kifs::Building(kifs::paramsOf(*k)), resolution);
+      applyPlacement(mesh, o.placement);
+      out.scene.replaceObject(o.id, Kind::Ornament, o.name, mesh);
       out.notes.push_back("KIFS building \"" + o.name + "\" is ray-marched in the view: meshed at " +
                           std::to_string(resolution) + " cells along its longest side for the file");
     } else if (std::holds_alternative<TownSpec>(o.spec) && towns) {
@@ -31,7 +34,10 @@ ExportableScene exportableScene(const Document& doc, const Scene& built, const c
       std::size_t split = 0;
       for (const city::BuiltBuilding& b : towns->buildings(o.id)) {
         if (!b.error.empty()) continue;
-        out.scene.replaceObject(next, Kind::Shell, b.id, towns->mesh(o.id, b.id));
+        MeshData mesh = towns->mesh(o.id, b.id);
+        applyPlacement(mesh, o.placement);
+        out.scene.replaceObject(next, Kind::Shell, b.id, mesh);
+        if (!o.placement.identity()) out.placements[next] = o.placement;
         townOf[next++] = o.id;
         ++split;
       }

@@ -10,6 +10,7 @@
 #include "core/textures.h"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ struct ExportableScene {
   // attribution (ExportOptions::georeference, ::copyright; docs/city.md).
   ExportOptions::Georeference georeference;
   std::string copyright;
+  // The placement of each written object that has one (a town's buildings take the town's):
+  // its vertices are written placed, and the glb says how (ExportOptions::placements).
+  std::map<ObjectId, Placement> placements;
 };
 
 // `include` picks the document's objects (null: the visible ones); `kifsResolution` is used

@@ -189,3 +189,12 @@ std::optional<std::string> checkTownSpec(const TownSpec& s) {
 }
 
 }  // namespace corbel
+
+namespace corbel {
+
+bool scalable(const Spec& spec) {
+  return std::holds_alternative<BoxSpec>(spec) || std::holds_alternative<ExtrusionSpec>(spec) ||
+         std::holds_alternative<UnitSpec>(spec);
+}
+
+}  // namespace corbel

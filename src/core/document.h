@@ -5,6 +5,7 @@
 #include "core/growth_spec.h"
 #include "core/kifs_spec.h"
 #include "core/masonry_spec.h"
+#include "core/placement.h"
 #include "core/geometry.h"
 #include "core/scene_properties.h"
 #include "core/town_spec.h"
@@ -60,6 +61,8 @@ struct DocObject {
   Spec spec;
   std::optional<PlanBackground> background;
   std::vector<KeptKey> kept;  // unknown keys of its entry in the file
+  Placement placement;        // where the kernel's geometry stands in the scene (core/placement.h)
+  bool locked = false;        // a locked object cannot be picked in the 3D view or moved
   bool operator==(const DocObject&) const = default;
 };
 
@@ -78,6 +81,11 @@ struct Document {
   std::string uniqueName(const std::string& base) const;
   bool operator==(const Document&) const = default;
 };
+
+// Whether a kind's placement may scale it: boxes, extrusions and units. Masonry is analysed at
+// its real size, growth sites grow on a metre grid, KIFS buildings are ray-marched at theirs and
+// towns keep their georeference, so those only move and turn.
+bool scalable(const Spec& spec);
 
 // Limits on what a Document may hold, checked by the loader and the editor.
 namespace limits {

@@ -2,10 +2,12 @@
 // Export of the Scene: OBJ (+ .mtl), PLY, OFF and binary glTF 2.0, chosen by extension
 // (docs/export.md). Meters; OBJ is Y up by default (the convention of the programs that read
 // it), PLY and OFF keep corbel's Z up, glTF is Y up as its spec requires.
+#include "core/placement.h"
 #include "core/scene.h"
 #include "core/textures.h"
 
 #include <functional>
+#include <map>
 #include <string>
 
 namespace corbel {
@@ -36,6 +38,10 @@ struct ExportOptions {
   } georeference;
   // glb only: the asset's copyright, e.g. the ODbL attribution of OpenStreetMap data.
   std::string copyright;
+  // glb only: the placement (core/placement.h) each object's vertices were moved by. The
+  // vertices stay placed; the node's extras record it as "corbel_placement" so a reader can
+  // take a town back to its georeferenced frame (docs/export.md).
+  std::map<ObjectId, Placement> placements;
 };
 
 enum class ExportFormat { Obj, Ply, Off, Glb };

@@ -231,8 +231,21 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
     tinygltf::Node node;
     node.name = info.name;
     node.mesh = static_cast<int>(model.meshes.size()) - 1;
-    node.extras = tinygltf::Value(tinygltf::Value::Object{{"corbel_object_id", tinygltf::Value(static_cast<int>(id))},
-                                                          {"corbel_kind", tinygltf::Value(std::string(kindName(info.kind)))}});
+    tinygltf::Value::Object extras{{"corbel_object_id", tinygltf::Value(static_cast<int>(id))},
+                                   {"corbel_kind", tinygltf::Value(std::string(kindName(info.kind)))}};
+    // The placement the vertices were moved by, in corbel's frame (z up): a town's buildings
+    // stand where the scene shows them, and this takes them back to the town's own frame.
+    if (const auto pl = options.placements.find(id); pl != options.placements.end()) {
+      const Placement& p = pl->second;
+      tinygltf::Value::Array t{tinygltf::Value(p.translation[0]), tinygltf::Value(p.translation[1]),
+                               tinygltf::Value(p.translation[2])};
+      extras["corbel_placement"] = tinygltf::Value(tinygltf::Value::Object{
+          {"translation", tinygltf::Value(t)},
+          {"rotation_deg", tinygltf::Value(p.rotation_deg)},
+          {"scale", tinygltf::Value(p.scale)},
+          {"frame", tinygltf::Value(std::string("z up; p_scene = translation + Rz(rotation_deg) * (scale * p_object)"))}});
+    }
+    node.extras = tinygltf::Value(extras);
     model.nodes.push_back(node);
     model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
   }

@@ -119,6 +119,33 @@ BoxSpec boxFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
 
 ojson vec2(const Vec2& v) { return ojson::array({v[0], v[1]}); }
 
+// An object's placement (format version 2); written only when it moves the object.
+ojson placementToJson(const Placement& p) {
+  ojson j;
+  j["translation"] = vec(p.translation);
+  j["rotation"] = p.rotation_deg;
+  j["scale"] = p.scale;
+  return j;
+}
+
+Placement placementFromJson(const JsonReader& r, const Spec& spec, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"translation", "rotation", "scale"})) warnings.push_back(k + ": unknown key kept");
+  Placement p;
+  if (auto v = r.find("translation")) p.translation = v->vec3();
+  if (auto v = r.find("rotation")) p.rotation_deg = v->number();
+  if (auto v = r.find("scale")) {
+    p.scale = v->number();
+    if (p.scale != 1.0 && !scalable(spec))
+      v->fail("this kind of object cannot be scaled (only boxes, extrusions and units can); it must be 1");
+  }
+  if (auto problem = checkPlacement(p)) {
+    const auto colon = problem->find(": ");
+    throw InputError(r.path() + "." + problem->substr(0, colon), problem->substr(colon + 2));
+  }
+  return p;
+}
+
 }  // namespace
 
 // KIFS keys are the field names of core/kifs_spec.h (and kifs/params.h), so the kernel's
@@ -966,8 +993,21 @@ LoadedProject parseProject(const std::string& text, const std::string& folder) {
       else if (auto t = o.find("town")) obj.spec = townFromJson(*t, folder, out.warnings);
       else obj.spec = extrusionFromJson(o.at("extrusion"), out.warnings);
       if (auto bg = o.find("plan_background")) obj.background = backgroundFromJson(*bg, folder, out.warnings);
-      for (auto& k :
-           o.unknownKeys({"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth", "unit", "town", "plan_background"}))
+      // Version 1 had no placements: such an object stands where its kernel builds it. A
+      // "placement" or "locked" key in a version-1 file is not corbel's, and kept it would be
+      // read as one once saved as version 2: it is dropped, with a warning.
+      std::set<std::string> objectKeys = {"id", "name", "visible", "box", "extrusion", "masonry", "kifs", "growth",
+                                          "unit", "town", "plan_background", "placement", "locked"};
+      if (version >= 2) {
+        if (auto v = o.find("locked")) obj.locked = v->boolean();
+        if (auto pl = o.find("placement")) obj.placement = placementFromJson(*pl, obj.spec, out.warnings);
+      } else {
+        for (const char* key : {"placement", "locked"})
+          if (o.find(key))
+            out.warnings.push_back(o.path() + (o.path().empty() ? "" : ".") + key +
+                                   ": not part of format version 1 (this file's); dropped");
+      }
+      for (auto& k : o.unknownKeys(objectKeys))
         out.warnings.push_back(k + ": unknown key kept");
       obj.kept = keptUnder(unknown, o.pointer());
       doc.objects.push_back(std::move(obj));
@@ -997,6 +1037,7 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     j["id"] = o.id;
     j["name"] = o.name;
     j["visible"] = o.visible;
+    if (o.locked) j["locked"] = true;
     if (const auto* b = std::get_if<BoxSpec>(&o.spec)) j["box"] = boxToJson(*b);
     else if (const auto* m = std::get_if<MasonrySpec>(&o.spec)) j["masonry"] = masonryToJson(*m);
     else if (const auto* k = std::get_if<KifsSpec>(&o.spec)) j["kifs"] = kifsToJson(*k);
@@ -1005,6 +1046,7 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     else if (const auto* t = std::get_if<TownSpec>(&o.spec)) j["town"] = townToJson(*t, folder);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
+    if (!o.placement.identity()) j["placement"] = placementToJson(o.placement);
     putKept(j, o.kept);
     objects.push_back(std::move(j));
   }

@@ -7,7 +7,9 @@
 
 namespace corbel {
 
-inline constexpr int kProjectVersion = 1;        // the version this build writes and reads
+// The version this build writes; it reads 1 (no placements: every object where its kernel
+// builds it) and 2 (per-object placement and lock).
+inline constexpr int kProjectVersion = 2;
 inline constexpr std::size_t kMaxProjectBytes = 64u << 20;
 
 struct LoadedProject {

@@ -20,6 +20,7 @@ SceneSync::SceneSync() : builders_(std::variant_size_v<Spec>) {
 void SceneSync::setBuilder(std::size_t specIndex, Builder builder) {
   if (specIndex < builders_.size()) builders_[specIndex] = std::move(builder);
   built_.clear();
+  unplaced_.clear();
 }
 
 SceneSync::Job SceneSync::plan(const Document& doc, const Scene& scene) const {
@@ -33,8 +34,12 @@ SceneSync::Job SceneSync::plan(const Document& doc, const Scene& scene) const {
     const auto st = status_.find(o.id);
     const bool failedBefore = st != status_.end() && !st->second.error.empty();
     const bool stale = it == built_.end() || !(it->second.spec == o.spec) || (!scene.hasObject(o.id) && !failedBefore);
-    if (stale) job.build.push_back(o);
-    else if (it->second.name != o.name) job.renamed.emplace_back(o.id, o.name);
+    if (stale) {
+      job.build.push_back(o);
+      continue;
+    }
+    if (it->second.name != o.name) job.renamed.emplace_back(o.id, o.name);
+    if (!(it->second.placement == o.placement)) job.moved.emplace_back(o.id, o.placement);
   }
   return job;
 }
@@ -64,6 +69,7 @@ std::size_t SceneSync::apply(Job& job, Scene& scene) {
   for (ObjectId id : job.gone) {
     scene.removeObject(id);
     built_.erase(id);
+    unplaced_.erase(id);
     status_.erase(id);
   }
   for (const auto& [id, name] : job.renamed) {
@@ -72,6 +78,17 @@ std::size_t SceneSync::apply(Job& job, Scene& scene) {
     if (auto it = built_.find(id); it != built_.end()) it->second.name = name;
   }
   std::size_t rebuilt = 0;
+  for (const auto& [id, placement] : job.moved) {
+    auto b = built_.find(id);
+    if (b == built_.end()) continue;
+    b->second.placement = placement;
+    const auto u = unplaced_.find(id);
+    if (u == unplaced_.end() || !scene.hasObject(id)) continue;
+    MeshData placed = u->second.second;
+    applyPlacement(placed, placement);
+    scene.replaceObject(id, u->second.first, b->second.name, placed);
+    ++rebuilt;
+  }
   for (std::size_t i = 0; i < job.build.size() && i < job.outcomes.size(); ++i) {
     Job::Outcome& out = job.outcomes[i];
     if (!out.ran) continue;
@@ -80,9 +97,18 @@ std::size_t SceneSync::apply(Job& job, Scene& scene) {
     Status& st = status_[o.id];
     if (!out.error.empty()) {
       st.error = out.error;
+      // The last good geometry stays, placed where the object now is.
+      if (const auto u = unplaced_.find(o.id); u != unplaced_.end() && scene.hasObject(o.id)) {
+        MeshData placed = u->second.second;
+        applyPlacement(placed, o.placement);
+        scene.replaceObject(o.id, u->second.first, o.name, placed);
+      }
       continue;
     }
-    scene.replaceObject(o.id, out.result.kind, o.name, out.result.mesh);
+    MeshData placed = out.result.mesh;
+    applyPlacement(placed, o.placement);
+    unplaced_[o.id] = {out.result.kind, std::move(out.result.mesh)};
+    scene.replaceObject(o.id, out.result.kind, o.name, placed);
     st.error.clear();
     st.warnings = std::move(out.result.warnings);
     ++rebuilt;

@@ -1,6 +1,7 @@
 #pragma once
-// Keeps a Scene in step with a Document: re-runs the kernel of each object whose spec changed
-// and removes objects that are gone. The application's one path from inputs to geometry.
+// Keeps a Scene in step with a Document: re-runs the kernel of each object whose spec changed,
+// places each object's geometry by its placement (core/placement.h; a change of placement alone
+// moves the last build without running the kernel) and removes objects that are gone. The application's one path from inputs to geometry.
 //
 // Kernels live in their own libraries and register a Builder for their spec type; core only
 // knows the mass-model box. An object whose kernel fails keeps its last good geometry and the
@@ -48,13 +49,15 @@ class SceneSync {
     std::vector<DocObject> build;  // objects to (re)build, as the document had them
     std::vector<ObjectId> gone;    // objects to remove from the Scene
     std::vector<std::pair<ObjectId, std::string>> renamed;
+    // Objects whose placement alone changed: their last build is placed again, no kernel runs.
+    std::vector<std::pair<ObjectId, Placement>> moved;
     struct Outcome {
       bool ran = false;  // false: not reached (cancelled before it)
       BuildResult result;
       std::string error;  // the builder failed with this
     };
     std::vector<Outcome> outcomes;  // run() fills one per build entry
-    bool empty() const { return build.empty() && gone.empty() && renamed.empty(); }
+    bool empty() const { return build.empty() && gone.empty() && renamed.empty() && moved.empty(); }
   };
   Job plan(const Document& doc, const Scene& scene) const;
   void run(Job& job, Progress* progress = nullptr) const;  // safe on any thread
@@ -79,6 +82,8 @@ class SceneSync {
   }
   std::vector<Builder> builders_;
   std::map<ObjectId, DocObject> built_;  // what each object was last built (or tried) from
+  // Each object's last good build in its own frame, before its placement, with its kind.
+  std::map<ObjectId, std::pair<Kind, MeshData>> unplaced_;
   std::map<ObjectId, Status> status_;
 };
 

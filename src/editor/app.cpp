@@ -261,6 +261,7 @@ void App::exportScene() {
                            ExportOptions opt;
                            opt.textured = e.textured;
                            opt.tagTextures = e.tagTextures;
+                           opt.placements = e.placements;
                            corbel::exportScene(e.scene, p, opt);
                            progress.report(1.0, "done");
                          },
@@ -486,7 +487,8 @@ std::string App::windowTitle() const {
 
 bool App::settled() const {
   return !job_ && !live_.building() && live_.current() && !growthPanel_.running() && !statics_.simulationPlaying() &&
-         input_->queue().empty() && script_.idle() && !kifsRefining_ && !growthPanel_.viewDragging() && !tool_.busy();
+         input_->queue().empty() && script_.idle() && !kifsRefining_ && !growthPanel_.viewDragging() && !tool_.busy() &&
+         !transform_.active();
 }
 
 void App::writeTestLog() {
@@ -497,6 +499,7 @@ void App::writeTestLog() {
   for (ObjectId id : selection_.ids())
     if (const DocObject* o = doc.find(id)) s.selection.push_back(o->name);
   if (const DocObject* o = selected() ? doc.find(*selected()) : nullptr) s.active = o->name;
+  if (const DocObject* o = selection_.hover ? doc.find(*selection_.hover) : nullptr) s.hover = o->name;
   s.camera = view_.camera;
   s.lastAction = actions_.lastRun();
   s.actionsRun = actions_.runCount();

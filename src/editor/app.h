@@ -28,6 +28,7 @@
 #include "editor/options.h"
 #include "editor/statics_panel.h"
 #include "editor/test_log.h"
+#include "editor/transform.h"
 #include "editor/town_panel.h"
 #include "editor/view_map_context.h"
 #include "editor/viewport.h"
@@ -112,6 +113,26 @@ class App {
   std::function<void(Document, const std::string&, const std::string&)> deferredCommit();
   std::function<void()> deferredEndDrag();
   std::string windowTitle() const;
+
+  // The studio's selection and placement (app_studio.cpp).
+  void registerStudioActions();
+  bool pickable(ObjectId id) const;  // shown and not locked
+  BBox objectBounds(ObjectId id) const;  // placed; a ray-marched KIFS building's too
+  std::vector<ObjectId> movableSelection() const;  // the selected objects that are not locked
+  Vec3 selectionPivot() const;  // the centre of their base
+  float gizmoLength() const;
+  void beginTransform(Transform::Mode mode, bool dragged);
+  void previewTransform();
+  void endTransform(bool confirm);
+  void transformInput();
+  bool grabGizmo(float px, float py);
+  void updateHover(bool overUi);
+  void boxSelect(float x0, float y0, float x1, float y1);
+  void drawStudioOverlay();
+  void drawBoxBand();
+  void frameSelected();
+  void duplicateSelected();
+  void drawPlacementFields(const DocObject& object);  // the left panel's Placement section
 
   GLFWwindow* window_;
   EditorOptions options_;
@@ -199,13 +220,18 @@ class App {
   std::optional<ObjectId> townFor_;
   std::unique_ptr<render::KifsPass> kifsPass_;    // made when a KIFS building is first shown
   std::unique_ptr<render::KifsLayer> kifsLayer_;  // the cached march (progressive refinement)
-  std::vector<KifsSpec> kifsSpecs_;               // what the layer shows, to see it change
+  std::vector<std::pair<KifsSpec, Placement>> kifsSpecs_;  // what the layer shows, to see it change
   std::array<double, 9> kifsView_{};
   std::chrono::steady_clock::time_point kifsChanged_{};
   unsigned long kifsGeneration_ = 0;
   bool kifsFailed_ = false;  // its shader did not build (logged once)
   bool kifsRefining_ = false;  // the march is coarse and will sharpen once the view is still
   bool firstFrame_ = true;
+  Transform transform_;             // G, R or a gizmo drag in progress
+  bool transformDragged_ = false;   // begun by a press on the gizmo: ends at the release
+  bool transformCommitted_ = false; // its preview is in the History (one merged step)
+  std::array<double, 8> hoverKey_{};  // what the hover was picked for
+  std::optional<ObjectId> listFollows_;  // the active object the object list last scrolled to
 };
 
 }  // namespace corbel::editor

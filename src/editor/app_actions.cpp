@@ -19,6 +19,7 @@ void App::runAction(const Action& a) { actions_.run(a); }
 // ---------------------------------------------------------------- actions
 
 void App::registerActions() {
+  registerStudioActions();  // app_studio.cpp
   auto doc = [this] { return history_.current(); };
   auto add = [this](Action a) { actions_.add(std::move(a)); };
   add({"file.new", "File", "New", "Start an empty project.", {GLFW_KEY_N, true}, false, [this] { newDocument(); }});
@@ -168,23 +169,10 @@ void App::registerActions() {
   add({"object.duplicate",
        "Object",
        "Duplicate",
-       "Copy the selected object beside itself.",
+       "Copy the selected objects beside themselves (moved along x by their width and 2 m).",
        {GLFW_KEY_D, true},
        true,
-       [this, doc] {
-         Document d = doc();
-         const DocObject* o = d.find(*selected());
-         DocObject copy = *o;
-         const BBox box = scene_.bounds(copy.id);
-         const double shift = box.empty() ? 10.0 : box.size()[0] + 2.0;
-         if (auto* b = std::get_if<BoxSpec>(&copy.spec)) b->origin[0] += shift;
-         if (auto* e = std::get_if<ExtrusionSpec>(&copy.spec))
-           for (auto& loop : e->loops)
-             for (auto& p : loop.points) p[0] += shift;
-         const ObjectId id = d.add(o->name, copy.spec);
-         commit(std::move(d), "Duplicate " + copy.name);
-         selection_.select(id);
-       },
+       [this] { duplicateSelected(); },
        [this] { return selected().has_value(); }});
   add({"object.delete",
        "Object",
@@ -630,7 +618,7 @@ void App::registerActions() {
 
 void App::handleShortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput || fileDialog_.isOpen()) return;
+  if (io.WantTextInput || fileDialog_.isOpen() || transform_.active()) return;  // a transform takes the keys
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (!ImGui::IsKeyPressed(key, false)) continue;
     const Action* a = actions_.match(key, io.KeyCtrl, io.KeyShift, io.KeyAlt);
@@ -715,6 +703,16 @@ void App::drawHelp() {
       ImGui::TextUnformatted("mouse");
       ImGui::TableNextColumn();
       ImGui::TextWrapped("Left drag: orbit. Right or middle drag (or Shift+left): pan. Wheel: zoom.");
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted("Viewport");
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted("click, Ctrl+drag");
+      ImGui::TableNextColumn();
+      ImGui::TextWrapped(
+          "Click: select (Shift adds, Ctrl toggles, empty space clears). Ctrl+left drag or B then drag: box select. "
+          "Drag a gizmo arrow (x red, y green, z blue) to move along it, its square to move on the ground, its ring to "
+          "turn; type a value while dragging and press Enter; Ctrl snaps (0.5 m, 15°).");
       ImGui::EndTable();
     }
   }

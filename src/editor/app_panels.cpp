@@ -191,11 +191,27 @@ void App::drawLeftPanel() {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Visible");
     ImGui::SameLine();
-    if (ImGui::Selectable(o.name.c_str(), selection_.contains(o.id))) selection_.select(o.id);
+    // The list follows the view: every selected object highlighted, the one under the pointer in
+    // the view brighter, a locked one marked; Shift adds, Ctrl toggles, as in the view.
+    const bool hovered = selection_.hover == o.id;
+    if (hovered) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.4f, 1.0f));
+    if (ImGui::Selectable((o.name + (o.locked ? "  (locked)" : "")).c_str(), selection_.contains(o.id))) {
+      const ImGuiIO& io = ImGui::GetIO();
+      if (io.KeyCtrl) selection_.toggle(o.id);
+      else if (io.KeyShift) selection_.add(o.id);
+      else selection_.select(o.id);
+      listFollows_ = selected();  // chosen here: no need to scroll to it
+    }
+    if (hovered) ImGui::PopStyleColor();
+    if (selected() == o.id && listFollows_ != o.id) {
+      ImGui::SetScrollHereY(0.3f);  // picked in the view: bring it into the list's sight
+      listFollows_ = o.id;
+    }
     ImGui::PopID();
   }
   if (selected()) {
     if (const DocObject* o = history_.current().find(*selected())) drawObjectProperties(*o);
+    if (const DocObject* o = selected() ? history_.current().find(*selected()) : nullptr) drawPlacementFields(*o);
   }
   ImGui::PopItemWidth();
   ImGui::End();

@@ -25,18 +25,37 @@ void App::handleViewInput() {
   c.viewport = &view_;
   // A press on a growth site's entry or envelope corner (its Site tab shown) drags that entry;
   // elsewhere the tool orbits.
-  c.grab = [this](const Ray& r) {
+  // The growth site's entries are dragged in its own frame.
+  auto own = [this](const Ray& r) {
+    const DocObject* g = selectedGrowth();
+    return g ? Ray{g->placement.unapply(r.origin), g->placement.unapplyDirection(r.direction)} : r;
+  };
+  c.grab = [this, own](const Ray& world) {
+    if (grabGizmo(tool_.pressX(), tool_.pressY())) return true;
+    const Ray r = own(world);
     return selectedGrowth() && growthPanel_.siteShown() && growthPanel_.beginViewDrag(growthHost(), r.origin, r.direction);
   };
-  c.dragTo = [this](const Ray& r) {
+  c.dragTo = [this, own](const Ray& world) {
+    if (transform_.active()) return;  // transformInput follows the pointer
+    const Ray r = own(world);
     if (selectedGrowth()) growthPanel_.viewDrag(growthHost(), r.origin, r.direction);
   };
   c.release = [this] {
     if (growthPanel_.viewDragging()) growthPanel_.endViewDrag(growthHost());
   };
   c.click = [this](const Ray& r) { clickInView(r); };
+  c.boxSelect = [this](float x0, float y0, float x1, float y1) { boxSelect(x0, y0, x1, y1); };
   const bool overUi = ImGui::GetIO().WantCaptureMouse;
-  for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
+  // G or R began a transform: the frame's input is its own. A gizmo drag shares it with the
+  // tool, whose release ends the grab.
+  if (transform_.active() && !transformDragged_) {
+    transformInput();
+  } else {
+    for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
+    if (transform_.active()) transformInput();
+  }
+  updateHover(overUi);
+  drawBoxBand();
   // The growth site was deselected (a menu, a shortcut) during the drag.
   if (growthPanel_.viewDragging() && !selectedGrowth()) growthPanel_.endViewDrag(growthHost());
 }
@@ -45,18 +64,20 @@ std::optional<ObjectId> App::objectUnder(const Ray& r) {
   const Vec3 d = r.direction.normalized();
   std::optional<ObjectId> hit;
   double nearest = std::numeric_limits<double>::infinity();
-  if (const auto p = pickScene(shownScene(), r.origin, d, settings_.visible)) {
+  if (const auto p = pickScene(shownScene(), r.origin, d, [this](ObjectId id) { return pickable(id); })) {
     hit = p->object;
     nearest = p->t;
   }
   // KIFS buildings drawn by ray marching have no faces: the CPU twin of the shader marches the ray.
   for (const DocObject& o : history_.current().objects) {
     const auto* k = std::get_if<KifsSpec>(&o.spec);
-    if (!k || k->meshResolution > 0 || (settings_.visible && !settings_.visible(o.id))) continue;
+    if (!k || k->meshResolution > 0 || !pickable(o.id)) continue;
     try {
       kifs::KifsParams params = render::kifsForView(kifs::paramsOf(*k), view_.camera, std::max(1, int(view_.height())));
       const kifs::Building b(params);
-      const kifs::Hit h = kifs::trace(b, {{r.origin[0], r.origin[1], r.origin[2]}, {d[0], d[1], d[2]}});
+      // March in the building's own frame (a KIFS placement is rigid, so t is the same).
+      const Vec3 o0 = o.placement.unapply(r.origin), d0 = o.placement.unapplyDirection(d);
+      const kifs::Hit h = kifs::trace(b, {{o0[0], o0[1], o0[2]}, {d0[0], d0[1], d0[2]}});
       if (h.hit && h.t < nearest) {
         nearest = h.t;
         hit = o.id;
@@ -68,15 +89,18 @@ std::optional<ObjectId> App::objectUnder(const Ray& r) {
   return hit;
 }
 
-void App::clickInView(const Ray& r) {
+void App::clickInView(const Ray& ray) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool add = io.KeyShift, toggle = io.KeyCtrl;
-  const std::optional<ObjectId> hit = objectUnder(r);
+  const std::optional<ObjectId> hit = objectUnder(ray);
   const std::optional<ObjectId> active = selected();
   if (hit && hit == active && !add && !toggle) {
     // On the active extrusion a click picks a face: its provenance is logged and its plan edge
     // and profile segment are highlighted in the panes.
     const DocObject* o = history_.current().find(*active);
+    // Each kind picks in its own frame: the ray is taken back through the placement.
+    const Placement placement = o ? o->placement : Placement{};
+    const Ray r{placement.unapply(ray.origin), placement.unapplyDirection(ray.direction)};
     if (const auto* spec = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr) {
       const std::string what = panes_.pick(*spec, r.origin, r.direction);
       if (!what.empty()) log(o->name + ": picked " + what);
@@ -115,7 +139,7 @@ const Scene& App::shownScene() {
   if (!sim) return scene_;
   if (simSceneOf_ != scene_.revision() || simRevisionOf_ != sim->revision() || simObjectOf_ != m->id) {
     simScene_ = scene_;
-    showSimulation(simScene_, m->id, *sim);
+    showSimulation(simScene_, m->id, *sim, m->placement);
     simSceneOf_ = scene_.revision();
     simRevisionOf_ = sim->revision();
     simObjectOf_ = m->id;
@@ -141,11 +165,20 @@ void App::drawView() {
   // Tension colours and force arrows of the selected masonry object, when it is shown.
   renderer_->overlay().clear();
   renderer_->overlayOnTop().clear();
+  // The panels draw the active object's overlays in its own frame: placed below.
+  const Placement activePlacement = [&] {
+    const DocObject* o = selected() ? doc.find(*selected()) : nullptr;
+    return o ? o->placement : Placement{};
+  }();
+  const render::Overlay::Mark below = renderer_->overlay().mark(), above = renderer_->overlayOnTop().mark();
   if (const DocObject* m = selectedMasonry(); m && m->visible)
     statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
   if (growthFor_ && selected() == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
   if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
   if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
+  renderer_->overlay().placeSince(below, activePlacement);
+  renderer_->overlayOnTop().placeSince(above, activePlacement);
+  drawStudioOverlay();
   renderer_->setScene(shownScene(), settings_);
   const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),
             pw = int(view_.width() * sx), ph = int(view_.height() * sy);
@@ -159,10 +192,10 @@ void App::drawView() {
       // Progressive refinement: march again only when the buildings, the camera or the
       // viewport changed; coarse (1/4 of the pixels each way) while they keep changing, full
       // size once they have been still for a moment. Other frames reuse the cached layer.
-      std::vector<KifsSpec> specs;
+      std::vector<std::pair<KifsSpec, Placement>> specs;
       for (const DocObject& o : doc.objects)
         if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0 && settings_.visible(o.id))
-          specs.push_back(*k);
+          specs.emplace_back(*k, o.placement);
       const std::array<double, 9> view{
           view_.camera.target[0], view_.camera.target[1], view_.camera.target[2], view_.camera.azimuth_deg, view_.camera.elevation_deg,
           view_.camera.distance,  view_.camera.fov_deg,   double(pw),        double(ph)};
@@ -177,7 +210,7 @@ void App::drawView() {
       std::vector<kifs::KifsParams> buildings;
       for (const kifs::KifsParams& p : raymarched.buildings) buildings.push_back(render::kifsForView(p, view_.camera, ph));
       kifsLayer_->update(*kifsPass_, buildings, view_.camera, pw, ph, still ? 1 : 4, render::KifsMode::Shaded,
-                         std::to_string(kifsGeneration_));
+                         std::to_string(kifsGeneration_), raymarched.placements);
       kifsLayer_->composite(px, py, pw, ph);
     } catch (const std::exception& e) {
       log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);

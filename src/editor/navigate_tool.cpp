@@ -6,7 +6,7 @@ namespace corbel::editor {
 
 namespace {
 // GLFW's codes of the two Shift keys and of the mouse buttons (the events carry GLFW's codes).
-constexpr int kLeftShift = 340, kRightShift = 344;
+constexpr int kLeftShift = 340, kRightShift = 344, kLeftControl = 341, kRightControl = 345;
 constexpr int kLeft = 0, kRight = 1, kMiddle = 2;
 }  // namespace
 
@@ -16,6 +16,7 @@ void NavigateTool::handle(const InputEvent& e, bool overUi, ToolContext& c) {
   switch (e.type) {
     case T::Key:
       if (e.code == kLeftShift || e.code == kRightShift) shift_ = e.down;
+      if (e.code == kLeftControl || e.code == kRightControl) ctrl_ = e.down;
       break;
     case T::Move: {
       const float dx = havePointer_ ? float(e.x) - x_ : 0.0f, dy = havePointer_ ? float(e.y) - y_ : 0.0f;
@@ -38,7 +39,9 @@ void NavigateTool::handle(const InputEvent& e, bool overUi, ToolContext& c) {
         if (e.code != kLeft && e.code != kRight && e.code != kMiddle) break;
         button_ = e.code;
         pressX_ = x_, pressY_ = y_;
-        if (e.code == kLeft && !shift_)
+        if (e.code == kLeft && (ctrl_ || boxArmed_))
+          gesture_ = Gesture::Box;
+        else if (e.code == kLeft && !shift_)
           gesture_ = c.grab && c.grab(view.ray(x_, y_)) ? Gesture::Grab : Gesture::Orbit;
         else
           gesture_ = Gesture::Pan;
@@ -47,6 +50,15 @@ void NavigateTool::handle(const InputEvent& e, bool overUi, ToolContext& c) {
         gesture_ = Gesture::None;
         button_ = -1;
         if (ended == Gesture::Grab && c.release) c.release();
+        if (ended == Gesture::Box) {
+          boxArmed_ = false;
+          // A box too small to be one is a click (Ctrl+click toggles).
+          if (std::hypot(x_ - pressX_, y_ - pressY_) < kClickSlop) {
+            if (c.click) c.click(view.ray(x_, y_));
+          } else if (c.boxSelect) {
+            c.boxSelect(pressX_, pressY_, x_, y_);
+          }
+        }
         if (ended == Gesture::Orbit && std::hypot(x_ - pressX_, y_ - pressY_) < kClickSlop && c.click)
           c.click(view.ray(x_, y_));
       }

@@ -200,11 +200,13 @@ int Simulation::blockAt(const Vec3& origin, const Vec3& direction) const {
   return best;
 }
 
-void showSimulation(Scene& scene, ObjectId id, const Simulation& simulation) {
+void showSimulation(Scene& scene, ObjectId id, const Simulation& simulation, const Placement& placement) {
   const auto it = scene.objects().find(id);
   const Kind kind = it == scene.objects().end() ? Kind::Block : it->second.kind;
   const std::string name = it == scene.objects().end() ? std::string() : it->second.name;
-  scene.replaceObject(id, kind, name, simulation.mesh());
+  MeshData mesh = simulation.mesh();
+  applyPlacement(mesh, placement);  // the object's placement, as its design is shown
+  scene.replaceObject(id, kind, name, mesh);
 }
 
 }  // namespace corbel::editor

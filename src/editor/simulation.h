@@ -5,6 +5,7 @@
 // costs more than the slice), shaken or robbed of a block, and drawn in place of the design's
 // blocks. It owns a copy of the design; the Document and its undo history
 // are never touched, and reset() returns to the design state.
+#include "core/placement.h"
 #include "core/masonry_spec.h"
 #include "core/mesh_data.h"
 #include "core/scene.h"
@@ -121,6 +122,6 @@ class Simulation {
 
 // Draws the simulation in `scene` (the viewport's copy of the Scene, never the one that follows
 // the Document): object `id`'s faces become the simulation's blocks; it keeps its name and kind.
-void showSimulation(Scene& scene, ObjectId id, const Simulation& simulation);
+void showSimulation(Scene& scene, ObjectId id, const Simulation& simulation, const Placement& placement = {});
 
 }  // namespace corbel::editor

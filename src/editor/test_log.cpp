@@ -12,6 +12,7 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   nlohmann::ordered_json j;
   j["selection"] = s.selection;
   j["active"] = s.active.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.active);
+  j["hover"] = s.hover.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.hover);
   const render::OrbitCamera& c = s.camera;
   j["camera"] = {{"target", {c.target[0], c.target[1], c.target[2]}},
                  {"azimuth", c.azimuth_deg},

@@ -16,6 +16,7 @@ struct SettledFrame {
   int frame = 0;
   std::vector<std::string> selection;  // the selected objects' names, the active one last
   std::string active;                  // "" = none
+  std::string hover;                   // the object under the pointer in the 3D view ("" = none)
   render::OrbitCamera camera;
   std::string lastAction;              // the id of the last action run ("" = none yet)
   std::size_t actionsRun = 0;          // how many actions have run, by any means

@@ -19,6 +19,8 @@ struct ToolContext {
   std::function<void()> release;
   // A click: the left button pressed and let go without moving (and nothing grabbed).
   std::function<void(const Ray&)> click;
+  // A box dragged (B first, or Ctrl held at the press): its corners in window pixels.
+  std::function<void(float x0, float y0, float x1, float y1)> boxSelect;
 };
 
 class Tool {

@@ -47,7 +47,8 @@ void KifsLayer::resize(int w, int h) {
 }
 
 bool KifsLayer::update(KifsPass& pass, const std::vector<kifs::KifsParams>& buildings, const OrbitCamera& camera,
-                       int width, int height, int scale, KifsMode mode, const std::string& key) {
+                       int width, int height, int scale, KifsMode mode, const std::string& key,
+                       const std::vector<Placement>& placements) {
   scale = std::max(1, scale);
   const int w = std::max(1, (width + scale - 1) / scale), h = std::max(1, (height + scale - 1) / scale);
   if (key == key_ && !key.empty() && w == w_ && h == h_ && scale == scale_) return false;
@@ -63,12 +64,13 @@ bool KifsLayer::update(KifsPass& pass, const std::vector<kifs::KifsParams>& buil
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   // The same camera over the smaller layer: the projection depends only on the aspect, so
   // texel (i, j) sees what viewport pixels (i·scale.., j·scale..) would.
-  for (const kifs::KifsParams& p : buildings) {
-    kifs::KifsParams coarse = p;
+  for (std::size_t i = 0; i < buildings.size(); ++i) {
+    kifs::KifsParams coarse = buildings[i];
     coarse.trace.pixelAngle *= scale;  // a texel spans `scale` pixels: a hit within it is enough
     // While the view keeps changing, the coarse frames skip shadows and occlusion.
     const KifsMode drawn = scale > 1 && mode == KifsMode::Shaded ? KifsMode::Preview : mode;
-    pass.draw(kifs::Building(coarse), camera, 0, 0, w, h, drawn);
+    pass.draw(kifs::Building(coarse), i < placements.size() ? cameraInFrameOf(camera, placements[i]) : camera, 0, 0, w, h,
+              drawn);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);

@@ -351,23 +351,36 @@ RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(Obje
     } catch (const Error&) {
       continue;
     }
+    out.placements.push_back(o.placement);
     const kifs::Aabb b = kifs::Building(out.buildings.back()).worldBounds();
-    out.bounds.add(Vec3(b.lo.x, b.lo.y, b.lo.z));
-    out.bounds.add(Vec3(b.hi.x, b.hi.y, b.hi.z));
+    for (int corner = 0; corner < 8; ++corner)
+      out.bounds.add(o.placement.apply(Vec3(corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y,
+                                            corner & 4 ? b.hi.z : b.lo.z)));
   }
   return out;
 }
 
+OrbitCamera cameraInFrameOf(const OrbitCamera& camera, const Placement& placement) {
+  if (placement.identity()) return camera;
+  OrbitCamera c = camera;
+  c.target = placement.unapply(camera.target);
+  c.azimuth_deg = camera.azimuth_deg - placement.rotation_deg;
+  return c;
+}
+
 Image renderSceneWithKifs(Renderer& renderer, const Scene& scene, const std::vector<kifs::KifsParams>& buildings,
-                          const OrbitCamera& camera, int width, int height, const RenderSettings& settings) {
+                          const OrbitCamera& camera, int width, int height, const RenderSettings& settings,
+                          const std::vector<Placement>& placements) {
   std::optional<KifsPass> pass;
   if (!buildings.empty()) pass.emplace();
   OffscreenTarget target(width, height);
   target.bind();
   renderer.setScene(scene, settings);
   renderer.draw(camera, 0, 0, width, height, settings);
-  for (const kifs::KifsParams& p : buildings)
-    pass->draw(kifs::Building(kifsForView(p, camera, height)), camera, 0, 0, width, height, KifsMode::Shaded);
+  for (std::size_t i = 0; i < buildings.size(); ++i)
+    pass->draw(kifs::Building(kifsForView(buildings[i], camera, height)),
+               i < placements.size() ? cameraInFrameOf(camera, placements[i]) : camera, 0, 0, width, height,
+               KifsMode::Shaded);
   glFinish();
   return target.read();
 }

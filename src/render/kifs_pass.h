@@ -131,13 +131,21 @@ Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& 
 // error is the object's build error, kifs/kernel.h).
 struct RaymarchedKifs {
   std::vector<kifs::KifsParams> buildings;
-  BBox bounds;
+  std::vector<Placement> placements;  // each building's (core/placement.h), in the same order
+  BBox bounds;                        // placed
 };
+
+// The camera that sees a building standing at its kernel's origin as `camera` sees it placed
+// by `placement` (a move and a turn about z; a KIFS placement has no scale): the marcher draws
+// a placed building by marching its own frame with this camera, so pixels and depths match.
+OrbitCamera cameraInFrameOf(const OrbitCamera& camera, const Placement& placement);
 RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible);
 
 // A picture of the Scene with ray-marched buildings over it (none: the Scene alone), each one's
 // hit threshold set for this view (kifsForView); compiles a KifsPass only when there are some.
+// `placements` (empty: none) places each building (RaymarchedKifs::placements).
 Image renderSceneWithKifs(Renderer& renderer, const Scene& scene, const std::vector<kifs::KifsParams>& buildings,
-                          const OrbitCamera& camera, int width, int height, const RenderSettings& settings);
+                          const OrbitCamera& camera, int width, int height, const RenderSettings& settings,
+                          const std::vector<Placement>& placements = {});
 
 }  // namespace corbel::render

@@ -6,6 +6,19 @@
 
 namespace corbel::render {
 
+void Overlay::placeSince(const Mark& mark, const Placement& placement) {
+  if (placement.identity()) return;
+  for (std::size_t i = mark.lines; i + 7 <= lines_.size(); i += 7) {
+    const Vec3 p = placement.apply(Vec3(lines_[i], lines_[i + 1], lines_[i + 2]));
+    for (int k = 0; k < 3; ++k) lines_[i + k] = float(p[k]);
+  }
+  for (std::size_t i = mark.triangles; i + 9 <= triangles_.size(); i += 9) {
+    const Vec3 p = placement.apply(Vec3(triangles_[i], triangles_[i + 1], triangles_[i + 2]));
+    const Vec3 n = placement.applyDirection(Vec3(triangles_[i + 3], triangles_[i + 4], triangles_[i + 5])).normalized();
+    for (int k = 0; k < 3; ++k) triangles_[i + k] = float(p[k]), triangles_[i + 3 + k] = float(n[k]);
+  }
+}
+
 void Overlay::clear() {
   lines_.clear();
   triangles_.clear();

@@ -1,6 +1,7 @@
 #pragma once
 // Overlay geometry drawn over the scene: lines and arrows (force vectors, anchors, guides).
 #include "core/geometry.h"
+#include "core/placement.h"
 
 #include <array>
 #include <vector>
@@ -25,6 +26,14 @@ class Overlay {
   // Interleaved [x y z nx ny nz r g b] triangle vertices (arrow heads).
   const std::vector<float>& triangleVertices() const { return triangles_; }
   bool empty() const { return lines_.empty() && triangles_.empty(); }
+
+  // What has been added so far; placeSince moves what was added after it by a placement
+  // (an object's panel draws in the object's own frame; the view shows it placed).
+  struct Mark {
+    std::size_t lines = 0, triangles = 0;
+  };
+  Mark mark() const { return {lines_.size(), triangles_.size()}; }
+  void placeSince(const Mark& mark, const Placement& placement);
 
  private:
   std::vector<float> lines_;

@@ -435,7 +435,7 @@ TEST(ProjectIo, UnknownKeysAreWarningsWithPaths) {
 TEST(ProjectIo, UnknownKeysAreKeptAndWrittenBack) {
   const std::string text = R"({"format": "corbel", "version": 1, "author": {"name": "me", "tags": [1, 2]},
       "objects": [
-        {"id": 4, "name": "A", "placement": {"at": [1, 2, 3], "turn": 90},
+        {"id": 4, "name": "A", "pose": {"at": [1, 2, 3], "turn": 90},
          "box": {"size": [1, 2, 3], "height": 3, "repeat": {"count": [1, 1], "offset": null}}},
         {"id": 7, "name": "B",
          "extrusion": {"plan": {"loops": [[[0, 0], [4, 0], [4, 3], [0, 3]]], "grid": 0.5},
@@ -444,14 +444,14 @@ TEST(ProjectIo, UnknownKeysAreKeptAndWrittenBack) {
   const corbel::LoadedProject p = corbel::parseProject(text);
   const std::set<std::string> warnings(p.warnings.begin(), p.warnings.end());
   EXPECT_EQ(warnings, (std::set<std::string>{
-                          "author: unknown key kept", "z-last: unknown key kept", "objects[0].placement: unknown key kept",
+                          "author: unknown key kept", "z-last: unknown key kept", "objects[0].pose: unknown key kept",
                           "objects[0].box.height: unknown key kept", "objects[0].box.repeat.offset: unknown key kept",
                           "objects[1].extrusion.plan.grid: unknown key kept",
                           "objects[1].extrusion.profiles[0].curve: unknown key kept"}));
   const nlohmann::json in = nlohmann::json::parse(text);
   const std::vector<std::string> pointers = {"/author",
                                              "/z-last",
-                                             "/objects/0/placement",
+                                             "/objects/0/pose",
                                              "/objects/0/box/height",
                                              "/objects/0/box/repeat/offset",
                                              "/objects/1/extrusion/plan/grid",

@@ -1,0 +1,60 @@
+#pragma once
+// Moving and turning the selected objects in the 3D view, Blender's G and R as a state machine
+// (no GL, no ImGui): the pointer drags, X/Y/Z constrains to an axis, digits typed meanwhile give
+// the exact value (3.5 Enter), Ctrl snaps (0.5 m grid, 15°), a left click or Enter confirms,
+// Escape or a right click puts everything back. What it computes is each object's placement;
+// the App commits them (one undo step per transform).
+#include "core/document.h"
+#include "editor/viewport.h"
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace corbel::editor {
+
+inline constexpr double kMoveSnap = 0.5;     // m
+inline constexpr double kRotateSnap = 15.0;  // degrees
+
+class Transform {
+ public:
+  enum class Mode { None, Move, Rotate };
+  enum class Axis { Free, X, Y, Z };
+
+  // Starts on `objects` (their placements now) about `pivot` with the pointer's ray `ray`.
+  void begin(Mode mode, const std::map<ObjectId, Placement>& objects, const Vec3& pivot, const Ray& ray);
+  bool active() const { return mode_ != Mode::None; }
+  Mode mode() const { return mode_; }
+  Axis axis() const { return axis_; }
+  const Vec3& pivot() const { return pivot_; }
+
+  void pointer(const Ray& ray);            // the pointer moved
+  void setAxis(Axis axis);                 // X, Y, Z; the same axis again frees it
+  void setSnap(bool snap) { snap_ = snap; }
+  // A typed character of the value ('0'-'9', '.', '-'); false if it is none of those.
+  bool type(char c);
+  void backspace();
+  const std::string& typed() const { return typed_; }
+  void end() { mode_ = Mode::None; }
+
+  // The move (m) or turn (degrees) now: the typed value when there is one, else the pointer's.
+  Vec3 offset() const;
+  double angle() const;
+  // Each object's placement now.
+  std::map<ObjectId, Placement> placements() const;
+  // One line for the status bar: "Move X 3.5 m (typed)".
+  std::string describe() const;
+
+ private:
+  std::optional<Vec3> planeHit(const Ray& ray) const;
+  Mode mode_ = Mode::None;
+  Axis axis_ = Axis::Free;
+  bool snap_ = false;
+  std::map<ObjectId, Placement> start_;
+  Vec3 pivot_{0, 0, 0};
+  Ray startRay_, ray_;
+  Vec3 viewDir_{0, 0, -1};
+  std::string typed_;
+};
+
+}  // namespace corbel::editor

@@ -1,0 +1,173 @@
+#!/usr/bin/env bash
+# The studio's selection and placement through real mouse and keys under Xvfb (xdotool), read
+# back from the editor's test log and from the saved projects. Two 4 m boxes, A centred on
+# (−10, 0) and B on (10, 0), seen from the top (View > Top: x to the right, y up):
+#  1. the pointer over B hovers it; B then a drag round A selects A alone; Ctrl+drag round both
+#     selects both;
+#  2. a click on A, then a drag of the gizmo's x arrow with 3.5 typed and Enter moves A by
+#     exactly (3.5, 0, 0), one undo step ("Move A");
+#  3. R, 90, Enter turns A a quarter about its base centre (−6.5, 0): its translation goes to
+#     (−6.5, 0) + R90·(3.5 + 6.5, 0) = (−6.5, 10), its rotation to 90;
+#  4. Ctrl+D duplicates it 6 m (its 4 m width and 2 m) along x: "A 2" at (−0.5, 10), turned 90;
+#  5. Ctrl+C there, Ctrl+V in a second editor on a project in another folder: the pasted object
+#     keeps its placement, and its plan background, relative to the first project's folder,
+#     is written relative to the second's.
+set -euo pipefail
+editor=$1 work=$2
+if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
+  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
+  command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/setup installs it)"; exit 1; }
+  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
+fi
+rm -rf "$work" && mkdir -p "$work/one/images" "$work/two"
+export CORBEL_STATE_DIR=$work/state
+python3 - "$work/one/images/plan.png" <<'PY'
+import struct, sys, zlib
+# A 2 × 2 grey PNG, written by hand.
+raw = b"".join(b"\x00" + b"\x80\x80\x80" * 2 for _ in range(2))
+def chunk(t, d): return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d))
+open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0))
+                              + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+PY
+cat >"$work/one/boxes.corbel" <<'JSON'
+{"format": "corbel", "version": 2, "name": "Boxes", "objects": [
+  {"id": 1, "name": "A", "box": {"origin": [-10, 0, 0], "size": [4, 4, 4]},
+   "plan_background": {"image": "images/plan.png", "scale": 0.5, "origin": [0, 0], "opacity": 0.5}},
+  {"id": 2, "name": "B", "box": {"origin": [10, 0, 0], "size": [4, 4, 4]}}]}
+JSON
+cat >"$work/two/empty.corbel" <<'JSON'
+{"format": "corbel", "version": 2, "name": "Empty", "objects": []}
+JSON
+
+log=$work/one.jsonl
+last() { tail -1 "$log"; }
+wait_for() {
+  local what=$1 deadline=$((SECONDS + 90))
+  while ((SECONDS < deadline)); do
+    kill -0 "$pid" 2>/dev/null || { echo "the editor exited while waiting for: $what"; exit 1; }
+    if [[ -s $log ]] && python3 -c 'import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); sys.exit(0 if ('"$what"') else 1)' "$log"; then
+      return 0
+    fi
+    sleep 0.2
+  done
+  echo "timed out waiting for: $what"
+  echo "last line: $(last)"
+  exit 1
+}
+# Window pixels of scene points, from the camera and view of the log's last line (render/camera:
+# OrbitCamera, straight down: up on the screen is −(cos az, sin az)).
+screen() {
+  python3 - "$log" "$@" <<'PY'
+import json, math, sys
+j = json.loads(open(sys.argv[1]).read().splitlines()[-1])
+c, (vx, vy, vw, vh) = j["camera"], j["view"]
+az, el, d = math.radians(c["azimuth"]), math.radians(c["elevation"]), c["distance"]
+t = c["target"]
+back = (math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el))
+eye = [t[i] + d * back[i] for i in range(3)]
+up = (-math.cos(az), -math.sin(az), 0.0) if abs(c["elevation"]) > 89.9 else (0.0, 0.0, 1.0)
+f = [-b for b in back]
+def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+def norm(a): l = math.sqrt(sum(x * x for x in a)); return tuple(x / l for x in a)
+s = norm(cross(f, up)); u = cross(s, f)
+focal = 1 / math.tan(math.radians(40) / 2)
+for arg in sys.argv[2:]:
+    p = [float(v) for v in arg.split(",")]
+    q = [p[i] - eye[i] for i in range(3)]
+    x, y, z = sum(q[i] * s[i] for i in range(3)), sum(q[i] * u[i] for i in range(3)), sum(q[i] * f[i] for i in range(3))
+    nx, ny = focal * x / (z * vw / vh), focal * y / z
+    print(int(round(vx + (nx + 1) / 2 * vw)), int(round(vy + (1 - ny) / 2 * vh)))
+PY
+}
+placement() {  # the saved placement of object $2 in project $1, as "x y z rotation"
+  python3 -c 'import json,sys
+o = [o for o in json.load(open(sys.argv[1]))["objects"] if o["name"] == sys.argv[2]][0]
+p = o.get("placement", {})
+t = p.get("translation", [0, 0, 0])
+print(*[round(v, 9) for v in t], round(p.get("rotation", 0), 9))' "$1" "$2"
+}
+expect_placement() {
+  local got
+  got=$(placement "$1" "$2")
+  [[ $got == "$3" ]] || { echo "$2 in $1: placement $got, expected $3"; exit 1; }
+  echo "$2 placed at $got (translation x y z, rotation)"
+}
+
+"$editor" --size 1280x800 --recover no --autosave-seconds 3600 --test-log "$log" --actions view.top "$work/one/boxes.corbel" &
+pid=$!
+trap 'kill $pid 2>/dev/null || true; kill ${pid2:-0} 2>/dev/null || true' EXIT
+wait_for "j['actions_run'] == 1 and j['camera']['elevation'] == 90"
+wid=$(xdotool search --sync --onlyvisible --name 'boxes.corbel' | head -1)
+
+echo "== hover, box select with B, Ctrl+drag round both"
+read -r bx by <<<"$(screen 10,0,4)"
+xdotool mousemove --sync --window "$wid" "$bx" "$by"
+wait_for "j['hover'] == 'B'"
+read -r x0 y0 x1 y1 <<<"$(screen -14,4,0 -6,-4,0 | tr '\n' ' ')"
+xdotool mousemove --sync --window "$wid" $((x0 - 20)) $((y0 - 20))
+xdotool key b
+xdotool mousedown 1 mousemove --sync --window "$wid" $((x0 + 5)) $((y0 + 5)) mousemove --sync --window "$wid" $((x1 + 20)) $((y1 + 20)) mouseup 1
+wait_for "j['selection'] == ['A']"
+read -r x0 y0 x1 y1 <<<"$(screen -14,4,0 14,-4,0 | tr '\n' ' ')"
+xdotool mousemove --sync --window "$wid" $((x0 - 20)) $((y0 - 20)) keydown ctrl mousedown 1 \
+  mousemove --sync --window "$wid" $((x0 + 5)) $((y0 + 5)) mousemove --sync --window "$wid" $((x1 + 20)) $((y1 + 20)) mouseup 1 keyup ctrl
+wait_for "sorted(j['selection']) == ['A', 'B']"
+echo "box selections: $(last | cut -c1-100)"
+
+echo "== the gizmo's x arrow dragged with 3.5 typed moves A by 3.5 m"
+read -r ax ay <<<"$(screen -10,0,4)"
+xdotool mousemove --sync --window "$wid" "$ax" "$ay" click 1
+wait_for "j['selection'] == ['A']"
+# The arrow runs from the base centre (−10, 0, 0) along x for 0.15 of the camera's distance.
+len=$(python3 -c 'import json,sys; print(0.15 * json.loads(open(sys.argv[1]).read().splitlines()[-1])["camera"]["distance"])' "$log")
+read -r gx gy <<<"$(screen "$(python3 -c "print(-10 + 0.6 * $len)"),0,0")"
+xdotool mousemove --sync --window "$wid" "$gx" "$gy" mousedown 1
+xdotool mousemove --sync --window "$wid" $((gx + 15)) "$gy" mousemove --sync --window "$wid" $((gx + 40)) $((gy + 30))
+
+xdotool type --delay 60 3.5
+xdotool key Return
+xdotool mouseup 1
+wait_for "j['undo'] == 'Move A'"
+xdotool key --clearmodifiers ctrl+s
+wait_for "not j['dirty']"
+expect_placement "$work/one/boxes.corbel" A "3.5 0.0 0.0 0.0"
+
+echo "== R 90 Enter turns A a quarter about its base centre"
+xdotool mousemove --sync --window "$wid" "$bx" "$by" key r
+xdotool type --delay 60 90
+xdotool key Return
+wait_for "j['undo'] == 'Rotate A'"
+xdotool key --clearmodifiers ctrl+s
+wait_for "not j['dirty']"
+expect_placement "$work/one/boxes.corbel" A "-6.5 10.0 0.0 90.0"
+
+echo "== Ctrl+D duplicates A beside itself"
+xdotool key --clearmodifiers ctrl+d
+wait_for "j['objects'] == 3 and j['selection'] == ['A 2']"
+xdotool key --clearmodifiers ctrl+s
+wait_for "not j['dirty']"
+expect_placement "$work/one/boxes.corbel" "A 2" "-0.5 10.0 0.0 90.0"
+
+echo "== Ctrl+C here, Ctrl+V in another editor on a project in another folder"
+xdotool key --clearmodifiers ctrl+c
+wait_for "j['last_action'] == 'object.copy'"
+log1=$log
+log=$work/two.jsonl
+"$editor" --size 1280x800 --recover no --autosave-seconds 3600 --test-log "$log" "$work/two/empty.corbel" &
+pid2=$!
+pid1=$pid
+pid=$pid2
+wait_for "j['objects'] == 0"
+wid2=$(xdotool search --sync --onlyvisible --name 'empty.corbel' | head -1)
+xdotool windowactivate --sync "$wid2" 2>/dev/null || xdotool windowfocus --sync "$wid2"
+xdotool mousemove --sync --window "$wid2" 640 400 key --clearmodifiers ctrl+v
+wait_for "j['objects'] == 1 and j['selection'] == ['A 2']"
+xdotool key --clearmodifiers ctrl+s
+wait_for "not j['dirty']"
+expect_placement "$work/two/empty.corbel" "A 2" "-0.5 10.0 0.0 90.0"
+image=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["objects"][0]["plan_background"]["image"])' "$work/two/empty.corbel")
+[[ $image == ../one/images/plan.png ]] || { echo "pasted background image: $image, expected ../one/images/plan.png"; exit 1; }
+echo "pasted with its image read from one/ and written for two/: $image"
+kill "$pid1" "$pid2"
+trap - EXIT
+echo "studio selection test passed"
