@@ -146,6 +146,7 @@ void App::drawView() {
   if (growthFor_ && selected() == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
   if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
   if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());
+  drawErrorMarks(renderer_->overlayOnTop());
   renderer_->setScene(shownScene(), settings_);
   const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),
             pw = int(view_.width() * sx), ph = int(view_.height() * sy);
@@ -163,9 +164,9 @@ void App::drawView() {
       for (const DocObject& o : doc.objects)
         if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0 && settings_.visible(o.id))
           specs.push_back(*k);
-      const std::array<double, 9> view{
+      const std::array<double, 10> view{
           view_.camera.target[0], view_.camera.target[1], view_.camera.target[2], view_.camera.azimuth_deg, view_.camera.elevation_deg,
-          view_.camera.distance,  view_.camera.fov_deg,   double(pw),        double(ph)};
+          view_.camera.distance,  view_.camera.fov_deg,   double(pw),        double(ph), double(view_.camera.orthographic)};
       const auto now = std::chrono::steady_clock::now();
       if (specs != kifsSpecs_ || view != kifsView_) {
         kifsSpecs_ = std::move(specs);

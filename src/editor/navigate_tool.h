@@ -1,6 +1,6 @@
 #pragma once
 // The 3D view's default tool: left drag orbits, right or middle drag (or Shift+left) pans, the
-// wheel zooms; a left click picks (ToolContext::click) and a left press on something that
+// wheel zooms towards the pointer; a left click picks (ToolContext::click) and a left press on something that
 // takes it drags that instead of the camera (ToolContext::grab).
 #include "editor/tool.h"
 
