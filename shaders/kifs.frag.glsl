@@ -8,6 +8,7 @@
 uniform mat4 uViewProj;
 uniform mat4 uInvViewProj;
 uniform vec3 uEye;
+uniform int uOrtho;  // an orthographic view: parallel rays from the eye's plane
 uniform vec4 uViewport;  // x, y, width, height in window pixels
 
 // Algorithm 1.
@@ -270,16 +271,23 @@ void main() {
   vec2 pixel = gl_FragCoord.xy - uViewport.xy;
   vec2 ndc = 2.0 * pixel / uViewport.zw - 1.0;
   vec4 far = uInvViewProj * vec4(ndc, 1.0, 1.0);
+  vec3 ro = uEye;
   vec3 rd = normalize(far.xyz / far.w - uEye);
+  if (uOrtho != 0) {
+    vec4 near = uInvViewProj * vec4(ndc, -1.0, 1.0);
+    vec3 n3 = near.xyz / near.w;
+    rd = normalize(far.xyz / far.w - n3);
+    ro = n3 + dot(uEye - n3, rd) * rd;  // where the pixel's ray crosses the eye's plane
+  }
   Sample s;
-  float t = trace(uEye, rd, s);
+  float t = trace(ro, rd, s);
   if (t < 0.0) {
     if (uMode != 3) discard;
     fragColor = costColor(s);
     gl_FragDepth = 1.0;
     return;
   }
-  vec3 p = uEye + t * rd;
+  vec3 p = ro + t * rd;
   vec4 clip = uViewProj * vec4(p, 1.0);
   gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
 

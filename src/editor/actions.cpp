@@ -26,6 +26,12 @@ std::string Shortcut::text() const {
       return s + "Num3";
     case GLFW_KEY_KP_5:
       return s + "Num5";
+    case GLFW_KEY_ESCAPE:
+      return s + "Esc";
+    case GLFW_KEY_EQUAL:
+      return s + "=";
+    case GLFW_KEY_MINUS:
+      return s + "-";
     case GLFW_KEY_KP_7:
       return s + "Num7";
     default:

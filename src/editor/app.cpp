@@ -1,5 +1,7 @@
 #include "editor/app.h"
 
+#include "editor/camera_views.h"
+
 #include "compose/export_scene.h"
 #include "core/error.h"
 #include "core/export.h"
@@ -63,6 +65,7 @@ App::App(GLFWwindow* window, EditorOptions options)
     return o && o->visible;
   };
   log("OpenGL " + render::glDescription());
+  loadSettings();
   registerActions();
   lastAutosave_ = std::chrono::steady_clock::now();
   Document doc;
@@ -508,6 +511,13 @@ void App::writeTestLog() {
   s.undo = history_.canUndo() ? history_.undoLabel() : "";
   if (panesFor_) s.planCorners = panes_.cornersOnScreen();
   s.view = {float(view_.x()), float(view_.y()), float(view_.width()), float(view_.height())};
+  for (const auto& [id, st] : sync_.status())
+    if (const DocObject* o = doc.find(id); o && !st.error.empty()) s.failed.push_back(o->name);
+  if (selected()) {
+    const BBox box = objectBounds(*selected());
+    if (!box.empty()) s.activeInView = boxInView(view_.camera, view_.aspect(), box);
+  }
+  if (searchShown_) s.search = searchText_;
   testLog_->write(s);
 }
 
@@ -553,6 +563,7 @@ int App::run() {
     lastFrame_ = now;
 
     batch_ = input_->queue().takeFrame();
+    applyUiScale();
     ImGui_ImplOpenGL3_NewFrame();
     input_->newFrame(batch_);
     ImGui::NewFrame();
@@ -566,7 +577,7 @@ int App::run() {
     drawStatusBar();
     // A kernel's panel right of the 3D view for the selected object, when the window has room.
     const ImGuiViewport* vp = ImGui::GetMainViewport();
-    const Layout layout = layoutWindow(vp->Size.x, vp->Size.y, ImGui::GetFrameHeight(), true);
+    const Layout layout = layoutWindow(vp->Size.x, vp->Size.y, ImGui::GetFrameHeight(), true, panelSizes());
     const Rect& pane = layout.rightPane;
     const DocObject* sel = selected() ? history_.current().find(*selected()) : nullptr;  // looked up again below
     // The plan and profile panes of a selected extrusion.
@@ -610,7 +621,7 @@ int App::run() {
       growthFor_ = sel->id;
       const GrowthHost host = growthHost();
       growthPanel_.update(host);
-      const float growthH = std::min(kGrowthPanelHeight, 0.6f * pane.h);
+      const float growthH = std::min(kGrowthPanelHeight * uiScale(), 0.6f * pane.h);
       growthPanel_.draw(host, pane.x, pane.y, pane.w, growthH);
       growthPanel_.drawViewMaps(host, layout.view.x + 10, layout.view.y + 10, layout.view.w - 20);
       completion_.draw(completionHost(), pane.x, pane.y + growthH, pane.w, pane.h - growthH);
@@ -643,19 +654,31 @@ int App::run() {
     deferred_.clear();
     // Shortcuts after the panels: a key the pane under the pointer or with focus takes (Delete
     // on a selected corner) is not also a command.
-    paneHasKeys_ = layout.rightPaneShown && rightPaneHasKeys(pane);
+    // (Only while a kernel's panel is drawn there: the view's own windows, the axis widget's,
+    // may lie right of where the pane would be.)
+    paneHasKeys_ = (panes || kifsPane || growthPane || staticsPane || townFor_.has_value()) && rightPaneHasKeys(pane);
     handleShortcuts();
     drawHelp();
+    drawCommandSearch();
     drawModals();
     syncScene();  // edits made by the panels this frame
 
-    const bool rightPane = panes || staticsPane || kifsPane || growthPane;  // the Town panel lies over the view
-    const Layout shown = layoutWindow(vp->Size.x, vp->Size.y, ImGui::GetFrameHeight(), rightPane);
+    // The view is what the panels leave; a selected kind with a panel keeps the right splitter
+    // even while that panel is hidden.
+    const bool townPane = selectedTown() && layout.rightPaneShown;
+    const DocObject* selNow = selected() ? history_.current().find(*selected()) : nullptr;  // after this frame's commits
+    const bool hasPanel = selNow && !std::holds_alternative<BoxSpec>(selNow->spec) && !std::holds_alternative<UnitSpec>(selNow->spec);
+    const bool rightPane = panes || staticsPane || kifsPane || growthPane || townPane || (hasPanel && !panelSizes().rightShown);
+    const Layout shown = layoutWindow(vp->Size.x, vp->Size.y, ImGui::GetFrameHeight(), rightPane, panelSizes());
     view_.setRect(vp->Pos.x + shown.view.x, vp->Pos.y + shown.view.y, shown.view.w, shown.view.h);
     if (firstFrame_) {
       frameAll();
       firstFrame_ = false;
     }
+    revealAdded();
+    drawToolbar(shown);
+    drawSplitters(shown);
+    drawAxisWidget();
     handleViewInput();
     ImGui::Render();
     drawView();

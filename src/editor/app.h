@@ -30,6 +30,7 @@
 #include "editor/test_log.h"
 #include "editor/transform.h"
 #include "editor/town_panel.h"
+#include "editor/user_settings.h"
 #include "editor/view_map_context.h"
 #include "editor/viewport.h"
 #include "render/kifs_layer.h"
@@ -100,6 +101,38 @@ class App {
   bool settled() const;   // nothing builds, runs, moves or waits in the input queue
   void writeTestLog();
   void frameAll();
+  // Navigation aids (app_navigation.cpp): the axis widget in the view's corner, and new objects
+  // brought into view once built.
+  void drawAxisWidget();
+  BBox objectBounds(ObjectId id);
+  void reveal(ObjectId id);
+  void revealAdded();
+  void drawErrorMarks(render::Overlay& onTop);  // crossing plan edges of extrusions that failed
+  std::vector<ObjectId> reveal_;
+  int revealFrom_ = 0;  // the frame from which reveal_ is looked at
+  // The layout as the user shapes it (app_layout.cpp): panel sizes, splitters, toolbar, UI
+  // scale, kept in settings.json beside the recent files.
+  void loadSettings();
+  void saveSettings();
+  float uiScale() const;  // the user's choice, else the monitor's content scale
+  void setUiScale(std::optional<float> scale);
+  void applyUiScale();
+  PanelSizes panelSizes() const;
+  void togglePanel(bool left);
+  void drawSplitters(const Layout& layout);
+  void drawToolbar(const Layout& layout);
+  void drawMenuItems(const std::string& menu);  // the actions of a menu path, submenus nested
+  UserSettings userSettings_;
+  std::string settingsPath_;
+  float monitorScale_ = 1.0f, appliedScale_ = 0.0f;
+  bool splitterMoved_ = false;
+  float splitterFrom_ = 0.0f;  // the panel's width when the splitter was pressed
+  // The command search (app_search.cpp).
+  void openCommandSearch();
+  void drawCommandSearch();
+  bool searchOpen_ = false, searchShown_ = false;
+  char searchText_[160] = {};
+  int searchPick_ = 0;
   void takeScreenshot(const std::string& path);
   std::optional<ObjectId> selected() const { return selection_.active(); }
   // The selected object when it is masonry, for the statics panel.
@@ -221,7 +254,7 @@ class App {
   std::unique_ptr<render::KifsPass> kifsPass_;    // made when a KIFS building is first shown
   std::unique_ptr<render::KifsLayer> kifsLayer_;  // the cached march (progressive refinement)
   std::vector<std::pair<KifsSpec, Placement>> kifsSpecs_;  // what the layer shows, to see it change
-  std::array<double, 9> kifsView_{};
+  std::array<double, 10> kifsView_{};
   std::chrono::steady_clock::time_point kifsChanged_{};
   unsigned long kifsGeneration_ = 0;
   bool kifsFailed_ = false;  // its shader did not build (logged once)

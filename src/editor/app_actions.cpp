@@ -2,6 +2,9 @@
 // shortcuts and help built from that registry.
 #include "editor/app.h"
 
+#include "editor/gestures.h"
+#include "editor/new_objects.h"
+#include "editor/shape_gallery.h"
 #include "extrude/edit.h"
 #include "kifs/kernel.h"
 
@@ -98,72 +101,112 @@ void App::registerActions() {
        },
        [this] { return history_.canRedo(); }});
 
+  // Object > Add: every kind of object, each added beside the scene (masonry and KIFS at the
+  // origin, which their specs fix), selected, brought into view and one undo step.
+  auto added = [this](Document d, ObjectId id, const std::string& label) {
+    commit(std::move(d), label);
+    selection_.select(id);
+    reveal(id);
+    log(label);
+  };
   add({"object.add_box",
-       "Object",
-       "Add Box",
+       "Object/Add",
+       "Box",
        "Add a mass-model box next to the existing objects.",
        {GLFW_KEY_B, true},
        true,
-       [this, doc] {
+       [this, doc, added] {
          Document d = doc();
          BoxSpec b;
          BBox box = scene_.bounds();
          if (!box.empty()) b.origin = Vec3(box.hi[0] + 4.0 + b.size[0] / 2, box.center()[1], 0.0);
          const ObjectId id = d.add("Box", b);
-         commit(std::move(d), "Add box");
-         selection_.select(id);
+         added(std::move(d), id, "Add box");
        }});
   add({"object.add_extrusion",
-       "Object",
-       "Add Extrusion",
+       "Object/Add/Extrusion",
+       "Rectangle (Hip Roof)",
        "Add a procedural extrusion (a 12 × 8 m plan on the hip profile) next to the existing objects; edit it in the "
        "plan and profile panes.",
        {GLFW_KEY_X, true, true},
-       false,
-       [this, doc] {
+       true,
+       [this, doc, added] {
          Document d = doc();
-         ExtrusionSpec e;
-         e.profiles.push_back(extrude::edit::profileLibrary()[1]);
-         e.roofMaterial = "roof_tile";
-         const BBox box = scene_.bounds();
-         const double x0 = box.empty() ? 0.0 : box.hi[0] + 4.0, y0 = box.empty() ? 0.0 : box.center()[1] - 4.0;
-         e.loops.push_back({{Vec2(x0, y0), Vec2(x0 + 12, y0), Vec2(x0 + 12, y0 + 8), Vec2(x0, y0 + 8)}, {0, 0, 0, 0}});
-         const ObjectId id = d.add("Extrusion", e);
-         commit(std::move(d), "Add extrusion");
-         selection_.select(id);
-         if (box.empty()) firstFrame_ = true;  // frame the first object of a new scene
+         const ObjectId id = d.add("Extrusion", galleryExtrusion(GalleryShape::Rectangle, besideScene(scene_.bounds(), 8)));
+         added(std::move(d), id, "Add extrusion");
        }});
+  for (GalleryShape shape : kGalleryShapes) {
+    if (shape == GalleryShape::Rectangle) continue;  // object.add_extrusion
+    const GalleryInfo info = galleryInfo(shape);
+    add({std::string("object.add_extrusion_") + info.id,
+         "Object/Add/Extrusion",
+         std::string(info.label) + " (Hip Roof)",
+         std::string(info.help) + " A procedural extrusion on the hip profile, next to the existing objects.",
+         {},
+         true,
+         [this, doc, added, shape, info] {
+           Document d = doc();
+           const auto loops = galleryLoops(shape);
+           BBox plan;
+           for (const Vec2& p : loops[0]) plan.add(Vec3(p[0], p[1], 0));
+           const ObjectId id =
+               d.add(info.label + std::string(" plan"), galleryExtrusion(shape, besideScene(scene_.bounds(), plan.size()[1])));
+           added(std::move(d), id, std::string("Add ") + info.label + " extrusion");
+         }});
+  }
   add({"object.add_kifs",
-       "Object",
-       "Add KIFS Building",
+       "Object/Add",
+       "KIFS Building",
        "Add a KIFS fractal building (McGraw; the box preset) at the origin; edit it in the KIFS panel.",
        {},
        true,
-       [this, doc] {
+       [this, doc, added] {
          Document d = doc();
          const ObjectId id = d.add("KIFS building", kifs::specOf(kifs::preset("box"), "box"));
-         commit(std::move(d), "Add KIFS building");
-         selection_.select(id);
-         firstFrame_ = true;
+         added(std::move(d), id, "Add KIFS building");
+       }});
+  for (const MasonryTemplate& t : masonryTemplates()) {
+    add({"object.add_masonry_" + t.model,
+         "Object/Add/Masonry",
+         t.label,
+         "Add the statics template " + t.model + " (Whiting et al. 2009) at the origin; analyse it and make it stand "
+         "in the statics panel.",
+         {},
+         true,
+         [this, doc, added, t] {
+           Document d = doc();
+           const ObjectId id = d.add(t.label.substr(0, t.label.find(" (")), masonryObject(t.model));
+           added(std::move(d), id, "Add masonry " + t.model);
+         }});
+  }
+  add({"object.add_growth",
+       "Object/Add",
+       "Growth Site",
+       "Add a 30 × 20 m growth site (Ng) of 3 storeys round one core, with 8 seeds at its landings, next to the "
+       "existing objects; edit and grow it in the growth panel.",
+       {},
+       true,
+       [this, doc, added] {
+         Document d = doc();
+         const ObjectId id = d.add("Growth site", starterGrowthSite(besideScene(scene_.bounds(), 20)));
+         added(std::move(d), id, "Add growth site");
        }});
   add({"object.add_town",
-       "Object",
-       "Add Town...",
+       "Object/Add",
+       "Town...",
        "Add a town (Kelly & Wonka Sec. 3.7): choose a GeoJSON footprint file; it is styled with "
        "assets/styles/mixed.json until another style is picked in the Town panel.",
        {},
        false,
-       [this, doc] {
+       [this, doc, added] {
          fileDialog_.open(FileDialog::Mode::Open, "Open footprints", {".geojson", ".json"}, path_,
-                          [this, doc](const std::string& path) {
+                          [doc, added](const std::string& path) {
                             Document d = doc();
                             TownSpec t;
                             t.footprints = path;
                             t.style = std::string(CORBEL_ASSETS_DIR) + "/styles/mixed.json";
                             const ObjectId id = d.add("Town", t);
-                            commit(std::move(d), "Add town");
-                            selection_.select(id);
-                            firstFrame_ = true;
+                            added(std::move(d), id, "Add town");
                           });
        }});
   add({"object.duplicate",
@@ -190,28 +233,94 @@ void App::registerActions() {
        },
        [this] { return selected().has_value(); }});
 
-  auto preset = [this](render::CameraPreset p) {
-    return [this, p] {
-      render::applyPreset(view_.camera, p);
-      frameAll();
-    };
-  };
   add({"view.frame", "View", "Frame All", "Fit the visible objects in the view.", {GLFW_KEY_HOME}, false, [this] {
          frameAll();
        }});
+  // The angled view is perspective; the six sides are orthographic, as Blender's side views
+  // are. Top-row digits do what the numpad's do (Blender's "emulate numpad"), Ctrl the opposite side.
   add({"view.perspective",
        "View",
-       "Perspective",
-       "Look from above at an angle.",
+       "Angled View",
+       "Look from above at an angle, in perspective.",
        {GLFW_KEY_KP_5},
        false,
-       preset(render::CameraPreset::Perspective),
+       [this] {
+         render::applyPreset(view_.camera, render::CameraPreset::Perspective);
+         view_.camera.orthographic = false;
+         frameAll();
+       },
        {},
        {},
        true});
-  add({"view.front", "View", "Front", "Look along +Y.", {GLFW_KEY_KP_1}, false, preset(render::CameraPreset::Front)});
-  add({"view.right", "View", "Right", "Look along −X.", {GLFW_KEY_KP_3}, false, preset(render::CameraPreset::Right)});
-  add({"view.top", "View", "Top", "Look straight down.", {GLFW_KEY_KP_7}, false, preset(render::CameraPreset::Top)});
+  auto side = [this, add](const char* id, const char* label, const char* help, int key, int numpad, bool ctrl,
+                          render::CameraPreset p) {
+    auto look = [this, p] {
+      render::applyPreset(view_.camera, p);
+      view_.camera.orthographic = true;
+      frameAll();
+    };
+    add({id, "View", label, help, {key, ctrl}, false, look});
+    add({std::string(id) + "_numpad", "", label, std::string(help) + " (the numpad's key)", {numpad, ctrl}, false, look});
+  };
+  using P = render::CameraPreset;
+  side("view.front", "Front", "Look along +Y, orthographic.", GLFW_KEY_1, GLFW_KEY_KP_1, false, P::Front);
+  side("view.back", "Back", "Look along -Y, orthographic.", GLFW_KEY_1, GLFW_KEY_KP_1, true, P::Back);
+  side("view.right", "Right", "Look along -X, orthographic.", GLFW_KEY_3, GLFW_KEY_KP_3, false, P::Right);
+  side("view.left", "Left", "Look along +X, orthographic.", GLFW_KEY_3, GLFW_KEY_KP_3, true, P::Left);
+  side("view.top", "Top", "Look straight down, orthographic.", GLFW_KEY_7, GLFW_KEY_KP_7, false, P::Top);
+  side("view.bottom", "Bottom", "Look straight up, orthographic.", GLFW_KEY_7, GLFW_KEY_KP_7, true, P::Bottom);
+  add({"view.orthographic",
+       "View",
+       "Orthographic",
+       "Switch between orthographic and perspective projection (the model keeps its size at the view's centre).",
+       {GLFW_KEY_5},
+       false,
+       [this] { view_.camera.orthographic = !view_.camera.orthographic; },
+       {},
+       [this] { return view_.camera.orthographic; }});
+  // The layout (app_layout.cpp): Blender's keys for its side bars, a browser's for the scale.
+  add({"view.left_panel",
+       "View",
+       "Left Panel",
+       "Show or hide the object panel (its splitter does the same on a double-click).",
+       {GLFW_KEY_T},
+       false,
+       [this] { togglePanel(true); },
+       {},
+       [this] { return userSettings_.panels.leftShown; },
+       true});
+  add({"view.right_panel",
+       "View",
+       "Right Panel",
+       "Show or hide the selected object's panel (plan and profile panes, statics, KIFS, growth, town).",
+       {GLFW_KEY_N},
+       false,
+       [this] { togglePanel(false); },
+       {},
+       [this] { return userSettings_.panels.rightShown; }});
+  add({"view.ui_larger", "View", "UI Larger", "Scale the interface up by 10 %.", {GLFW_KEY_EQUAL, true}, false,
+       [this] { setUiScale(uiScale() + 0.1f); }});
+  add({"view.ui_smaller", "View", "UI Smaller", "Scale the interface down by 10 %.", {GLFW_KEY_MINUS, true}, false,
+       [this] { setUiScale(uiScale() - 0.1f); }});
+  add({"view.ui_monitor",
+       "View",
+       "UI Scale of the Monitor",
+       "Scale the interface as the monitor asks (its content scale), forgetting a chosen scale.",
+       {GLFW_KEY_0, true},
+       false,
+       [this] { setUiScale(std::nullopt); }});
+  add({"command.search",
+       "Edit",
+       "Search Commands...",
+       "Find any command by typing words of its name, menu or help, and run it (Blender's F3; Ctrl+Shift+P too).",
+       {GLFW_KEY_F3},
+       false,
+       [this] { openCommandSearch(); },
+       {},
+       {},
+       true});
+  add({"command.search_palette", "", "Search Commands...", "The command search (as VS Code's command palette).",
+       {GLFW_KEY_P, true, true}, false, [this] { openCommandSearch(); }});
   add({"view.wireframe",
        "View",
        "Wireframe",
@@ -618,13 +727,15 @@ void App::registerActions() {
 
 void App::handleShortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput || fileDialog_.isOpen() || transform_.active()) return;  // a transform takes the keys
+  if (io.WantTextInput || fileDialog_.isOpen() || searchShown_ || transform_.active()) return;  // a transform or the search takes the keys
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (!ImGui::IsKeyPressed(key, false)) continue;
     const Action* a = actions_.match(key, io.KeyCtrl, io.KeyShift, io.KeyAlt);
     // A key without Ctrl or Alt belongs to the kernel's pane under the pointer or with focus
     // (Delete there removes a corner, not the object).
-    if (a && paneHasKeys_ && !a->shortcut.ctrl && !a->shortcut.alt) continue;
+    // Function keys (F1 help, F3 search) are no pane's.
+    if (a && paneHasKeys_ && !a->shortcut.ctrl && !a->shortcut.alt && !(key >= GLFW_KEY_F1 && key <= GLFW_KEY_F25))
+      continue;
     if (a && actions_.isEnabled(*a) && a->run) {
       runAction(*a);
       break;
@@ -645,43 +756,63 @@ bool App::rightPaneHasKeys(const Rect& pane) const {
 void App::drawMenuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
   std::vector<std::string> menus;
-  for (const Action& a : actions_.all())
-    if (!a.menu.empty() && std::find(menus.begin(), menus.end(), a.menu) == menus.end()) menus.push_back(a.menu);
+  for (const Action& a : actions_.all()) {
+    const std::string top = a.menu.substr(0, a.menu.find('/'));
+    if (!top.empty() && std::find(menus.begin(), menus.end(), top) == menus.end()) menus.push_back(top);
+  }
   for (const std::string& menu : menus) {
     if (!ImGui::BeginMenu(menu.c_str())) continue;
-    for (const Action& a : actions_.all()) {
-      if (a.menu != menu) continue;
-      if (a.separatorBefore) ImGui::Separator();
-      std::string label = a.label;
-      if (a.id == "edit.undo" && history_.canUndo()) label += " " + history_.undoLabel();
-      if (a.id == "edit.redo" && history_.canRedo()) label += " " + history_.redoLabel();
-      const std::string shortcut = a.shortcut.text();
-      if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), a.checked && a.checked(),
-                          actions_.isEnabled(a)) &&
-          a.run)
-        runAction(a);
-      if (ImGui::IsItemHovered() && !a.help.empty()) ImGui::SetTooltip("%s", a.help.c_str());
-      if (a.id == "file.open") {
-        if (ImGui::BeginMenu("Open Recent", !recent_.paths().empty())) {
-          for (const std::string& p : recent_.paths())
-            if (ImGui::MenuItem(p.c_str())) {
-              const std::string chosen = p;
-              openFile(chosen);
-              break;
-            }
-          ImGui::EndMenu();
-        }
-      }
-    }
+    drawMenuItems(menu);
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();
 }
 
+// The items of menu path `menu` ("Object/Add"), in the registry's order; an action deeper in
+// the path ("Object/Add/Masonry") makes a submenu where the first of its kind would stand.
+void App::drawMenuItems(const std::string& menu) {
+  std::vector<std::string> submenus;
+  for (const Action& a : actions_.all()) {
+    if (a.menu != menu) {
+      if (a.menu.size() <= menu.size() + 1 || a.menu.compare(0, menu.size() + 1, menu + "/") != 0) continue;
+      const std::string rest = a.menu.substr(menu.size() + 1), sub = rest.substr(0, rest.find('/'));
+      if (std::find(submenus.begin(), submenus.end(), sub) != submenus.end()) continue;
+      submenus.push_back(sub);
+      if (a.separatorBefore) ImGui::Separator();
+      if (ImGui::BeginMenu(sub.c_str())) {
+        drawMenuItems(menu + "/" + sub);
+        ImGui::EndMenu();
+      }
+      continue;
+    }
+    if (a.separatorBefore) ImGui::Separator();
+    std::string label = a.label;
+    if (a.id == "edit.undo" && history_.canUndo()) label += " " + history_.undoLabel();
+    if (a.id == "edit.redo" && history_.canRedo()) label += " " + history_.redoLabel();
+    const std::string shortcut = a.shortcut.text();
+    if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), a.checked && a.checked(),
+                        actions_.isEnabled(a)) &&
+        a.run)
+      runAction(a);
+    if (ImGui::IsItemHovered() && !a.help.empty()) ImGui::SetTooltip("%s", a.help.c_str());
+    if (a.id == "file.open") {
+      if (ImGui::BeginMenu("Open Recent", !recent_.paths().empty())) {
+        for (const std::string& p : recent_.paths())
+          if (ImGui::MenuItem(p.c_str())) {
+            const std::string chosen = p;
+            openFile(chosen);
+            break;
+          }
+        ImGui::EndMenu();
+      }
+    }
+  }
+}
+
 void App::drawHelp() {
   if (!showHelp_) return;
   ImGui::SetNextWindowSize(ImVec2(560, 440), ImGuiCond_Appearing);
-  if (ImGui::Begin("Keyboard shortcuts", &showHelp_)) {
+  if (ImGui::Begin("Keyboard shortcuts and gestures", &showHelp_)) {
     if (ImGui::BeginTable("actions", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders)) {
       ImGui::TableSetupColumn("Command");
       ImGui::TableSetupColumn("Shortcut");
@@ -690,29 +821,24 @@ void App::drawHelp() {
       for (const Action& a : actions_.all()) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::Text("%s > %s", a.menu.c_str(), a.label.c_str());
+        std::string path = a.menu.empty() ? std::string("(key only)") : a.menu;
+        for (std::size_t at; (at = path.find('/')) != std::string::npos;) path.replace(at, 1, " > ");
+        ImGui::Text("%s > %s", path.c_str(), a.label.c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(a.shortcut.text().c_str());
         ImGui::TableNextColumn();
         ImGui::TextWrapped("%s", a.help.c_str());
       }
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted("Viewport");
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted("mouse");
-      ImGui::TableNextColumn();
-      ImGui::TextWrapped("Left drag: orbit. Right or middle drag (or Shift+left): pan. Wheel: zoom.");
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted("Viewport");
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted("click, Ctrl+drag");
-      ImGui::TableNextColumn();
-      ImGui::TextWrapped(
-          "Click: select (Shift adds, Ctrl toggles, empty space clears). Ctrl+left drag or B then drag: box select. "
-          "Drag a gizmo arrow (x red, y green, z blue) to move along it, its square to move on the ground, its ring to "
-          "turn; type a value while dragging and press Enter; Ctrl snaps (0.5 m, 15°).");
+      // Every pane's mouse gestures (editor/gestures.h).
+      for (const Gesture& g : paneGestures()) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(g.pane);
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", g.gesture);
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", g.what);
+      }
       ImGui::EndTable();
     }
   }

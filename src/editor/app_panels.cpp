@@ -149,20 +149,39 @@ void App::drawObjectProperties(const DocObject& object) {
     ImGui::TextWrapped("Ray-marched: no shell in the Scene (KIFS panel > Mesh to Scene makes one).");
     return;
   }
+  // What the view shows of an object whose build failed is its last good shell, if any: the
+  // verdict below is about that shell, not the object as it is now.
+  const auto st = sync_.status().find(object.id);
+  const std::string error = st == sync_.status().end() ? std::string() : st->second.error;
+  if (!error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.35f, 1));
+    ImGui::TextWrapped("Not built: %s", error.c_str());
+    ImGui::PopStyleColor();
+    if (!scene_.hasObject(object.id)) return;
+    ImGui::TextDisabled("The view shows the last shell that built:");
+  } else if (!scene_.hasObject(object.id)) {
+    ImGui::TextDisabled(live_.current() ? "No shell." : "Building...");
+    return;
+  } else if (!live_.current()) {
+    ImGui::TextDisabled("Updating: the numbers are the previous shell's.");
+  }
   const ValidityReport r = scene_.validate(object.id);
   ImGui::Text("%zu faces, %zu vertices, %zu edges", r.faces, r.vertices, r.edges);
   ImGui::Text("Euler characteristic %ld, %zu component%s", r.euler, r.components, r.components == 1 ? "" : "s");
   ImGui::Text("Area %.2f m², volume %.2f m³", r.area, r.volume);
-  if (r.closedManifold()) ImGui::TextColored(ImVec4(0.4f, 0.85f, 0.4f, 1), "closed, 2-manifold, consistent");
+  if (r.closedManifold() && error.empty() && live_.current())
+    ImGui::TextColored(ImVec4(0.4f, 0.85f, 0.4f, 1), "closed, 2-manifold, consistent");
+  else if (r.closedManifold())
+    ImGui::TextDisabled("(that shell was closed and 2-manifold)");
   for (const auto& p : r.problems()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", p.c_str());
 }
 
 namespace {
 
 // Begins a window without title or frame that fills the part of the layout `part` picks.
-void beginFixedWindow(const char* name, Rect Layout::*part) {
+void beginFixedWindow(const char* name, Rect Layout::*part, const PanelSizes& sizes) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  const Rect r = layoutWindow(vp->Size.x, vp->Size.y, ImGui::GetFrameHeight(), false).*part;
+  const Rect r = layoutWindow(vp->Size.x, vp->Size.y, ImGui::GetFrameHeight(), false, sizes).*part;
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + r.x, vp->Pos.y + r.y));
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
   ImGui::Begin(name, nullptr,
@@ -173,7 +192,8 @@ void beginFixedWindow(const char* name, Rect Layout::*part) {
 }  // namespace
 
 void App::drawLeftPanel() {
-  beginFixedWindow("Panel", &Layout::leftPanel);
+  if (!panelSizes().leftShown) return;  // hidden by its splitter or View > Left Panel
+  beginFixedWindow("Panel", &Layout::leftPanel, panelSizes());
   ImGui::PushItemWidth(-110.0f);  // leave room for the labels
   const Document& current = history_.current();
   ImGui::Separator();
@@ -191,6 +211,13 @@ void App::drawLeftPanel() {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Visible");
     ImGui::SameLine();
+    // An object whose build failed is flagged: a red mark before its name, the kernel's message
+    // in the tooltip.
+    if (const auto st = sync_.status().find(o.id); st != sync_.status().end() && !st->second.error.empty()) {
+      ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "(!)");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Not built: %s", st->second.error.c_str());
+      ImGui::SameLine();
+    }
     // The list follows the view: every selected object highlighted, the one under the pointer in
     // the view brighter, a locked one marked; Shift adds, Ctrl toggles, as in the view.
     const bool hovered = selection_.hover == o.id;
@@ -218,7 +245,7 @@ void App::drawLeftPanel() {
 }
 
 void App::drawStatusBar() {
-  beginFixedWindow("Status", &Layout::statusBar);
+  beginFixedWindow("Status", &Layout::statusBar, panelSizes());
   if (job_) {
     ImGui::ProgressBar(static_cast<float>(job_->progress().fraction()), ImVec2(260, 0),
                        (job_->title() + " " + job_->progress().stage()).c_str());

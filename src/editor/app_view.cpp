@@ -179,6 +179,7 @@ void App::drawView() {
   renderer_->overlay().placeSince(below, activePlacement);
   renderer_->overlayOnTop().placeSince(above, activePlacement);
   drawStudioOverlay();
+  drawErrorMarks(renderer_->overlayOnTop());
   renderer_->setScene(shownScene(), settings_);
   const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),
             pw = int(view_.width() * sx), ph = int(view_.height() * sy);
@@ -196,9 +197,9 @@ void App::drawView() {
       for (const DocObject& o : doc.objects)
         if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0 && settings_.visible(o.id))
           specs.emplace_back(*k, o.placement);
-      const std::array<double, 9> view{
+      const std::array<double, 10> view{
           view_.camera.target[0], view_.camera.target[1], view_.camera.target[2], view_.camera.azimuth_deg, view_.camera.elevation_deg,
-          view_.camera.distance,  view_.camera.fov_deg,   double(pw),        double(ph)};
+          view_.camera.distance,  view_.camera.fov_deg,   double(pw),        double(ph), double(view_.camera.orthographic)};
       const auto now = std::chrono::steady_clock::now();
       if (specs != kifsSpecs_ || view != kifsView_) {
         kifsSpecs_ = std::move(specs);

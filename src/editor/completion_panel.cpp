@@ -1,5 +1,7 @@
 #include "editor/completion_panel.h"
 
+#include "editor/symbols.h"
+
 #include "core/materials.h"
 #include "editor/completion_edits.h"
 #include "editor/completion_view.h"
@@ -529,12 +531,16 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
       ImGui::Text("%zu entrances in the region (green)", entrances_.size());
   } else {
     ImGui::SliderInt("Seeds N", &count_, 1, 12);
+    explainSymbol("Seeds N");
   }
   ImGui::InputFloat("LO", &lo_, 0.01f, 0.05f, "%.3f");
+  explainSymbol("LO");
   ImGui::SameLine();
   ImGui::InputFloat("HI", &hi_, 0.01f, 0.05f, "%.3f");
+  explainSymbol("HI");
   lo_ = std::clamp(lo_, 0.0f, 0.49f), hi_ = std::clamp(hi_, 0.0f, 0.49f);
   ImGui::SliderInt("Forms K", &forms_wanted_, 1, 64);
+  explainSymbol("Forms K");
   ImGui::SameLine();
   ImGui::InputInt("Seed", &seed_, 1, 10);
   ImGui::PopItemWidth();

@@ -4,6 +4,7 @@
 #include "editor/pane_window.h"
 
 #include "core/error.h"
+#include "editor/plan_crossings.h"
 #include "extrude/edit.h"
 #include "extrude/extrude.h"
 #include "render/gl.h"
@@ -749,6 +750,21 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
                         : sel    ? IM_COL32(255, 255, 255, 255)
                                  : IM_COL32(210, 210, 210, 255));
       if (isFaulty) dl->AddCircle(p, 11, IM_COL32(255, 60, 60, 255), 20, 2.5f);
+    }
+  }
+  // Where edges cross or touch (editor/plan_crossings.h): a red ring with a cross, so the
+  // artist sees where the plan the kernel refuses goes wrong.
+  {
+    std::vector<std::vector<Vec2>> loops;
+    for (const auto& l : spec.loops) loops.push_back(l.points);
+    for (const PlanCrossing& c : planCrossings(loops)) {
+      const ImVec2 p = toScreen(c.at);
+      dl->AddCircle(p, 9, IM_COL32(255, 60, 60, 255), 20, 2.5f);
+      dl->AddLine(ImVec2(p.x - 5, p.y - 5), ImVec2(p.x + 5, p.y + 5), IM_COL32(255, 60, 60, 255), 2.0f);
+      dl->AddLine(ImVec2(p.x - 5, p.y + 5), ImVec2(p.x + 5, p.y - 5), IM_COL32(255, 60, 60, 255), 2.0f);
+      if (dist(mouse, p) < 10)
+        ImGui::SetTooltip("Edges %d and %d%s cross here: the plan cannot be built until they are apart", c.edgeA,
+                          c.edgeB, c.loopA == c.loopB ? "" : " of two loops");
     }
   }
   // Anchors of steps: circles on their input edge (Fig. 4 j–n); a forced step's polygon as it

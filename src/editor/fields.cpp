@@ -1,5 +1,7 @@
 #include "editor/fields.h"
 
+#include "editor/symbols.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -68,6 +70,11 @@ bool commitDouble(const char* label, double value, double& result, const char* f
 
 bool commitInt(const char* label, int value, int& result, int step, int fastStep) {
   return withDraft(label, value, result, [&](int& draft) { return ImGui::InputInt(label, &draft, step, fastStep); });
+}
+
+// symbols.h: the tooltip of a control labelled with a paper's symbol.
+void explainSymbol(std::string_view label) {
+  if (const char* words = symbolWords(label); words && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", words);
 }
 
 }  // namespace corbel::editor

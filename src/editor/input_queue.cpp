@@ -9,7 +9,7 @@ bool isModifierKey(int code) { return code >= kFirstModifierKey && code <= kLast
 InputBatch InputQueue::takeFrame() {
   InputBatch batch;
   std::set<int> keys, buttons;  // changed in this batch
-  bool scrolled = false, keyPressed = false;
+  bool scrolled = false, keyPressed = false, moved = false;
   using T = InputEvent::Type;
   while (!queue_.empty()) {
     const InputEvent& e = queue_.front();
@@ -24,7 +24,10 @@ InputBatch InputQueue::takeFrame() {
         stop = !buttons.empty();
         break;
       case T::Button:
-        stop = buttons.count(e.code) || scrolled;
+        // A release after moves waits for the next frame: a frame shows ImGui only where the
+        // pointer ends, so a widget held by the button (a splitter, a slider) sees it moved
+        // while still held, then let go.
+        stop = buttons.count(e.code) || scrolled || (!e.down && moved);
         break;
       case T::Move:
       case T::Leave:
@@ -38,6 +41,7 @@ InputBatch InputQueue::takeFrame() {
     if (e.type == T::Key) keys.insert(e.code), keyPressed = keyPressed || !isModifierKey(e.code);
     if (e.type == T::Button) buttons.insert(e.code);
     if (e.type == T::Scroll) scrolled = true;
+    if (e.type == T::Move) moved = true;
     batch.events.push_back(e);
     queue_.pop_front();
   }

@@ -1,5 +1,7 @@
 #include "editor/kifs_panel.h"
 
+#include "editor/symbols.h"
+
 #include "editor/kifs_edits.h"
 #include "editor/pane_window.h"
 #include "kifs/mesher.h"
@@ -49,6 +51,7 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
         *f.value = v;
         changed(f.label);
       }
+      explainSymbol(f.label);
       if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
     }
   };
@@ -107,6 +110,7 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
 
   if (ImGui::CollapsingHeader("Advanced")) {
     if (ImGui::SliderInt("M (iterations)", &s.iterations, 0, kifs::kMaxIterations)) changed("iterations");
+    explainSymbol("M (iterations)");
     if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
     double r1x = s.r1[0], r1y = s.r1[1], r1z = s.r1[2];
     sliders({{"s (scale)", &s.scale, 1.05f, float(kifs::kMaxScale)},

@@ -1,5 +1,7 @@
 #include "editor/navigate_tool.h"
 
+#include "editor/camera_views.h"
+
 #include <cmath>
 
 namespace corbel::editor {
@@ -31,7 +33,10 @@ void NavigateTool::handle(const InputEvent& e, bool overUi, ToolContext& c) {
       if (gesture_ == Gesture::None) havePointer_ = false;
       break;
     case T::Scroll:
-      if (gesture_ == Gesture::None && havePointer_ && !overUi && view.contains(x_, y_)) view.camera.zoom(e.y);
+      // Towards the pointer: the point under it stays under it.
+      if (gesture_ == Gesture::None && havePointer_ && !overUi && view.contains(x_, y_))
+        zoomTowards(view.camera, 2.0 * (x_ - view.x()) / view.width() - 1.0, 1.0 - 2.0 * (y_ - view.y()) / view.height(),
+                    view.aspect(), e.y);
       break;
     case T::Button:
       if (e.down) {

@@ -1,8 +1,8 @@
 #pragma once
 // The 3D view's default tool: left drag orbits, right or middle drag (or Shift+left) pans, the
-// wheel zooms; a left click picks (ToolContext::click) and a left press on something that
-// takes it drags that instead of the camera (ToolContext::grab). A left drag begun with Ctrl
-// held, or after armBox() (the B key), draws a selection box (ToolContext::boxSelect).
+// wheel zooms towards the pointer; a left click picks (ToolContext::click) and a left press on
+// something that takes it drags that instead of the camera (ToolContext::grab). A left drag
+// begun with Ctrl held, or after armBox() (the B key), draws a selection box (ToolContext::boxSelect).
 #include "editor/tool.h"
 
 namespace corbel::editor {

@@ -1,5 +1,7 @@
 #include "editor/statics_panel.h"
 
+#include "editor/symbols.h"
+
 #include "editor/masonry_edits.h"
 #include "editor/pane_window.h"
 #include "statics/tolerances.h"
@@ -534,6 +536,7 @@ void StaticsPanel::drawAnalysis(const MasonrySpec& spec) {
   const statics::AnalysisResult& r = view_->result;
   for (const Verdict& v : staticsVerdicts(*view_)) ImGui::TextColored(v.stands ? kGood : kBad, "%s", v.text.c_str());
   ImGui::Text("y = %.4g N²    y/W² = %.4g", r.y, r.yNormalised);
+  explainSymbol("y/W²");
   ImGui::Text("W = %.4g N, %zu blocks, %zu interfaces", r.totalWeight, view_->blockFaces.size(), r.interfaces.size());
   ImGui::Text("solver: %s, %d iterations, residual %.2g", statics::toString(r.status).c_str(), r.iterations,
               r.equilibriumResidual);

@@ -17,7 +17,8 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   j["camera"] = {{"target", {c.target[0], c.target[1], c.target[2]}},
                  {"azimuth", c.azimuth_deg},
                  {"elevation", c.elevation_deg},
-                 {"distance", c.distance}};
+                 {"distance", c.distance},
+                 {"orthographic", c.orthographic}};
   j["last_action"] = s.lastAction;
   j["actions_run"] = s.actionsRun;
   j["objects"] = s.objects;
@@ -25,6 +26,9 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   j["undo"] = s.undo;
   if (!s.planCorners.empty()) j["plan_corners"] = s.planCorners;
   j["view"] = s.view;
+  if (!s.failed.empty()) j["failed"] = s.failed;
+  if (s.activeInView) j["active_in_view"] = *s.activeInView;
+  if (s.search) j["search"] = *s.search;
   return j;
 }
 

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <array>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct SettledFrame {
   std::vector<std::vector<std::array<float, 2>>> planCorners;
   // The 3D view's rectangle in window pixels: x, y (top left), width, height.
   std::array<float, 4> view{};
+  std::vector<std::string> failed;  // the objects whose last build failed (flagged in the list)
+  std::optional<bool> activeInView;   // the active object's bounds lie wholly in the 3D view
+  std::optional<std::string> search;  // the command search's text while it is open
 };
 
 // The line for `s` (one JSON object, no newline).

@@ -28,8 +28,15 @@ glm::dmat4 OrbitCamera::view() const {
 
 double OrbitCamera::nearPlane() const { return std::max(distance * 0.01, 1e-3); }
 
+double OrbitCamera::halfHeight() const { return distance * std::tan(0.5 * fov_deg * kDeg); }
+
 glm::dmat4 OrbitCamera::projection(double aspect) const {
   const double farPlane = distance * 20.0 + 100.0;
+  if (orthographic) {
+    const double h = halfHeight(), w = h * std::max(aspect, 1e-3);
+    const double depth = farPlane + 1000.0;  // linear depth: a kilometre more costs no precision worth having
+    return glm::ortho(-w, w, -h, h, -depth, depth);
+  }
   return glm::perspective(fov_deg * kDeg, std::max(aspect, 1e-3), nearPlane(), farPlane);
 }
 
@@ -55,7 +62,9 @@ void OrbitCamera::frame(const BBox& box, double aspect) {
     const Vec3 c((k & 1) ? box.hi[0] : box.lo[0], (k & 2) ? box.hi[1] : box.lo[1], (k & 4) ? box.hi[2] : box.lo[2]);
     const Vec3 q = c - target;
     const double f = OpenMesh::dot(q, back);  // towards the eye
-    d = std::max({d, f + std::abs(OpenMesh::dot(q, right)) / tanH, f + std::abs(OpenMesh::dot(q, up)) / tanV});
+    // Orthographic: the depth f does not shrink anything, only the half height d·tanV counts.
+    const double depth = orthographic ? 0.0 : f;
+    d = std::max({d, depth + std::abs(OpenMesh::dot(q, right)) / tanH, depth + std::abs(OpenMesh::dot(q, up)) / tanV});
   }
   distance = d * 1.08;
 }
@@ -81,6 +90,9 @@ void applyPreset(OrbitCamera& c, CameraPreset preset) {
     case CameraPreset::Front: c.azimuth_deg = -90.0, c.elevation_deg = 0.0; break;
     case CameraPreset::Right: c.azimuth_deg = 0.0, c.elevation_deg = 0.0; break;
     case CameraPreset::Top: c.azimuth_deg = -90.0, c.elevation_deg = 90.0; break;
+    case CameraPreset::Back: c.azimuth_deg = 90.0, c.elevation_deg = 0.0; break;
+    case CameraPreset::Left: c.azimuth_deg = 180.0, c.elevation_deg = 0.0; break;
+    case CameraPreset::Bottom: c.azimuth_deg = -90.0, c.elevation_deg = -90.0; break;
   }
 }
 

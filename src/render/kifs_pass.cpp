@@ -137,6 +137,7 @@ void KifsPass::draw(const kifs::Building& building, const OrbitCamera& camera, i
   w.m4("uInvViewProj", glm::inverse(vp));
   const Vec3 eye = camera.eye();
   w.v3("uEye", {eye[0], eye[1], eye[2]});
+  w.i("uOrtho", camera.orthographic ? 1 : 0);
   w.v4("uViewport", x, y, width, height);
   w.i("uMode", static_cast<int>(mode));
   w.v3("uSunDir", glm::normalize(glm::dvec3(0.45, -0.35, 0.82)));  // the Renderer's sun

@@ -7,6 +7,8 @@
 #include "core/error.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -41,28 +43,57 @@ TEST(Selection, ActiveIsTheLastAddedAndPruneDropsDeletedObjects) {
   EXPECT_FALSE(s.active());
 }
 
-// The panels and the view tile the window below the menu bar: no gap, no overlap.
+// The panels, splitters, toolbar and view tile the window below the menu bar: no gap, no
+// overlap, at any panel widths, collapsed or not, and any UI scale.
 TEST(Layout, PanelsAndViewTileTheWindow) {
   std::mt19937 rng(7);
-  for (int i = 0; i < 200; ++i) {
-    const float w = std::uniform_real_distribution<float>(900, 4000)(rng),
-                h = std::uniform_real_distribution<float>(500, 3000)(rng), menu = 20;
+  auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+  for (int i = 0; i < 400; ++i) {
+    const float w = uniform(900, 4000), h = uniform(500, 3000), menu = 20;
+    PanelSizes s;
+    s.left = uniform(kMinPanelWidth, 500), s.right = uniform(kMinPanelWidth, 700);
+    s.leftShown = i % 3 != 0, s.rightShown = i % 5 != 0;
+    s.scale = i % 2 ? 1.0f : uniform(0.75f, 2.0f);
     for (bool want : {false, true}) {
-      const Layout l = layoutWindow(w, h, menu, want);
-      EXPECT_EQ(l.rightPaneShown, want && w > kLeftPanelWidth + kRightPaneWidth + kMinViewWidth);
-      const float right = l.rightPaneShown ? l.rightPane.w : 0;
-      EXPECT_FLOAT_EQ(l.leftPanel.w + l.view.w + right, w);
-      EXPECT_FLOAT_EQ(l.view.x, l.leftPanel.x + l.leftPanel.w);
+      const Layout l = layoutWindow(w, h, menu, want, s);
+      const float split = kSplitterWidth * s.scale;
+      const float left = std::min(s.leftShown ? s.left * s.scale : 0.0f, w - split - kMinViewWidth * s.scale);
+      EXPECT_EQ(l.rightPaneShown,
+                want && s.rightShown && w > left + s.right * s.scale + (2 * kSplitterWidth + kMinViewWidth) * s.scale);
+      EXPECT_FLOAT_EQ(l.leftPanel.w, left);
+      EXPECT_FLOAT_EQ(l.leftSplitter.x, l.leftPanel.x + l.leftPanel.w);
+      EXPECT_FLOAT_EQ(l.view.x, l.leftSplitter.x + split);
+      const float right = l.rightPaneShown ? l.rightPane.w + l.rightSplitter.w : l.rightSplitter.w;
+      EXPECT_FLOAT_EQ(l.leftPanel.w + split + l.view.w + right, w);
       if (l.rightPaneShown) {
-        EXPECT_FLOAT_EQ(l.rightPane.x, l.view.x + l.view.w);
+        EXPECT_FLOAT_EQ(l.rightSplitter.x, l.view.x + l.view.w);
+        EXPECT_FLOAT_EQ(l.rightPane.x, l.rightSplitter.x + l.rightSplitter.w);
       }
-      EXPECT_FLOAT_EQ(l.view.y, menu);
-      EXPECT_FLOAT_EQ(menu + l.view.h + l.statusBar.h, h);
+      // A collapsed right pane that is wanted keeps its splitter at the window's edge.
+      EXPECT_EQ(l.rightSplitter.w > 0, want && (l.rightPaneShown || !s.rightShown));
+      EXPECT_FLOAT_EQ(l.toolbar.x, l.view.x);
+      EXPECT_FLOAT_EQ(l.toolbar.w, l.view.w);
+      EXPECT_FLOAT_EQ(l.toolbar.y, menu);
+      EXPECT_FLOAT_EQ(l.view.y, l.toolbar.y + l.toolbar.h);
+      EXPECT_FLOAT_EQ(menu + l.toolbar.h + l.view.h + l.statusBar.h, h);
       EXPECT_FLOAT_EQ(l.statusBar.y, l.view.y + l.view.h);
-      EXPECT_GE(l.view.w, l.rightPaneShown ? kMinViewWidth : 1.0f);
+      EXPECT_GE(l.view.w, l.rightPaneShown ? kMinViewWidth * s.scale : 1.0f);
     }
   }
-  EXPECT_FALSE(layoutWindow(900, 700, 20, true).rightPaneShown);  // 320 + 460 + 200 > 900
+  // 320 + 6 + 460 + 6 + 200 = 992 px at scale 1.
+  EXPECT_FALSE(layoutWindow(990, 700, 20, true).rightPaneShown);
+  EXPECT_TRUE(layoutWindow(994, 700, 20, true).rightPaneShown);
+}
+
+TEST(Layout, ASplitterDragResizesWithinLimits) {
+  PanelSizes s;  // 320 left, 460 right, scale 1, in a 1280 px window
+  EXPECT_FLOAT_EQ(draggedWidth(320, 100, true, 1280, s), 420);
+  EXPECT_FLOAT_EQ(draggedWidth(460, 100, false, 1280, s), 360);  // the right splitter moved right
+  EXPECT_FLOAT_EQ(draggedWidth(320, -300, true, 1280, s), kMinPanelWidth);
+  // At most what leaves 200 px of view: 1280 − (460 + 6) − (6 + 6 + 200) = 602.
+  EXPECT_FLOAT_EQ(draggedWidth(320, 900, true, 1280, s), 602);
+  s.scale = 2;  // pixels are halved into scale-1 widths
+  EXPECT_FLOAT_EQ(draggedWidth(200, 100, true, 4000, s), 250);
 }
 
 struct ScriptLog {
