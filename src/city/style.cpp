@@ -219,7 +219,8 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
     for (const auto& tr : ts->array(1000)) {
       tr.expectObject();
       rejectUnknown(
-          tr, {"name", "when", "weight", "material", "roof_material", "edges", "windows", "door", "steps", "parapet"});
+          tr, {"name", "when", "weight", "material", "roof_material", "priority", "edges", "windows", "door", "steps",
+               "parapet"});
       BuildingType t;
       t.name = tr.at("name").string(200);
       if (typeNames.count(t.name)) tr.at("name").fail("a second building type named \"" + t.name + "\"");
@@ -227,6 +228,13 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
       if (auto w = tr.find("weight")) t.weight = w->number(0, 1e9);
       if (auto m = tr.find("material")) t.material = m->string(200);
       if (auto m = tr.find("roof_material")) t.roofMaterial = m->string(200);
+      if (auto p = tr.find("priority")) {
+        const std::string name = p->string(100);
+        if (name == "maximise_volume") t.priority = Priority::MaximiseVolume;
+        else if (name == "minimise_volume") t.priority = Priority::MinimiseVolume;
+        else if (name == "manual") t.priority = Priority::Manual;
+        else p->fail("expected \"maximise_volume\", \"minimise_volume\" or \"manual\", found \"" + name + "\"");
+      }
       const auto edges = tr.at("edges").array(1000);
       if (edges.empty()) tr.at("edges").fail("a building type needs at least one edge rule");
       for (const auto& er : edges) {
@@ -607,6 +615,7 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
   spec.profiles = style.profiles;
   spec.material = t.material;
   spec.roofMaterial = t.roofMaterial;
+  spec.priority = t.priority;
   for (const auto& ring : b.loops) spec.loops.push_back({ring, std::vector<int>(ring.size(), 0)});
   std::set<int> used;
   for (const EdgeLabel& e : labels.edges) {

@@ -77,6 +77,10 @@ struct BuildingType {
   BuildingCondition when;
   double weight = 1;
   std::string material = "plaster", roofMaterial;
+  // Sec. 4.8's resolution of colinear edges for this type's buildings; manual ranks profile
+  // segments tagged "high" over untagged ones over "low" ones (a chimney or dormer kept out of
+  // the volume-maximising answer, Fig. 30 c).
+  Priority priority = Priority::MaximiseVolume;
   std::vector<EdgeRule> edges;
   std::vector<WindowRule> windows;
   std::optional<extrude::FeatureSize> door;

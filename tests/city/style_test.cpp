@@ -194,7 +194,7 @@ TEST(Style, FeaturesArePlacedOnTheStreetEdges) {
 TEST(Style, FaultsNameTheirPath) {
   EXPECT_EQ(parseError(withType(R"({"name": "a", "edgez": []})")),
             "types[0].edgez: unknown key (expected one of: door, edges, "
-            "material, name, parapet, roof_material, steps, weight, when, windows)");
+            "material, name, parapet, priority, roof_material, steps, weight, when, windows)");
   EXPECT_EQ(parseError(withType(R"({"name": "a", "edges": [{"profiles": "gable"}]})")),
             "types[0].edges[0].profiles: no profile named \"gable\"");
   EXPECT_EQ(
@@ -207,6 +207,28 @@ TEST(Style, FaultsNameTheirPath) {
   EXPECT_EQ(parseError(R"({"profiles": [], "types": []})"), "types: a style needs at least one building type");
   EXPECT_EQ(parseError(withType(R"({"name": "a", "when": {"area": [50, 10]}, "edges": [{"profiles": "hip"}]})")),
             "types[0].when.area: min is greater than max");
+}
+
+// A type's "priority" (Sec. 4.8) is its buildings' spec's: volume maximising unless it says
+// otherwise; a name the kernel does not know is refused at its path.
+TEST(Style, ATypesPriorityIsItsBuildings) {
+  const Building b = box("house", 10, 8);
+  BuildingLabels L;
+  L.front = {0, -1};
+  L.edges = labelEdges(b.loops, {0, -1});
+  const std::pair<const char*, Priority> cases[] = {{"", Priority::MaximiseVolume},
+                                                    {R"("priority": "maximise_volume", )", Priority::MaximiseVolume},
+                                                    {R"("priority": "minimise_volume", )", Priority::MinimiseVolume},
+                                                    {R"("priority": "manual", )", Priority::Manual}};
+  for (const auto& [key, expected] : cases) {
+    SCOPED_TRACE(key);
+    const Style s = parseStyle(withType(std::string(R"({"name": "a", )") + key + R"("edges": [{"profiles": "hip"}]})"));
+    const StyledBuilding sb = styleBuilding(s, b, L, 1);
+    ASSERT_EQ(sb.problem, "");
+    EXPECT_EQ(sb.spec.priority, expected);
+  }
+  EXPECT_EQ(parseError(withType(R"({"name": "a", "priority": "biggest", "edges": [{"profiles": "hip"}]})")),
+            "types[0].priority: expected \"maximise_volume\", \"minimise_volume\" or \"manual\", found \"biggest\"");
 }
 
 TEST(Style, AFileFaultNamesTheFile) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 
 namespace corbel::extrude::test {
@@ -15,6 +16,10 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Polygon = CGAL::Polygon_2<K>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
+// One skeleton at a time: the random run builds them on every core, and with CGAL 5.5.1 it
+// crashed under load (SIGSEGV in Straight_skeleton_builder_2::MergeCoincidentNodes on a check
+// thread, 2 of 5 full runs on 2 busy cores; the same plans pass one at a time).
+std::mutex skeletonMutex;
 }  // namespace
 
 SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitch) {
@@ -25,7 +30,9 @@ SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitch)
   };
   PolygonWithHoles pwh(toPoly(loops[0]));
   for (std::size_t i = 1; i < loops.size(); ++i) pwh.add_hole(toPoly(loops[i]));
+  std::unique_lock<std::mutex> lock(skeletonMutex);
   auto ss = CGAL::create_interior_straight_skeleton_2(pwh, K());
+  lock.unlock();
   if (!ss) throw std::runtime_error("CGAL could not build the straight skeleton");
   const double t = std::tan(pitch);
   SkeletonRoof r;
@@ -109,6 +116,7 @@ double integrateTriangle(const std::array<Corner, 3>& tri, const std::vector<Vec
 }
 
 auto skeleton(const std::vector<std::vector<Vec2>>& loops) {
+  const std::lock_guard<std::mutex> lock(skeletonMutex);
   PolygonWithHoles pwh;
   {
     Polygon outer;
