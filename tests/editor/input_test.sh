@@ -23,22 +23,7 @@ rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 log=$work/test-log.jsonl
 
-# The last line of the test log, and a field of it (python3 reads the JSON).
-field() { python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).read().splitlines()[-1])'"$1"')' "$log"; }
-# Waits until the last line of the log makes the Python expression $1 (over `j`) true.
-wait_for() {
-  local what=$1 deadline=$((SECONDS + 90))
-  while ((SECONDS < deadline)); do
-    kill -0 "$pid" 2>/dev/null || { echo "the editor exited while waiting for: $what"; exit 1; }
-    if [[ -s $log ]] && python3 -c 'import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); sys.exit(0 if ('"$what"') else 1)' "$log"; then
-      return 0
-    fi
-    sleep 0.2
-  done
-  echo "timed out waiting for: $what"
-  echo "last line: $(tail -1 "$log" 2>/dev/null)"
-  exit 1
-}
+source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for
 
 objects=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1]))["objects"]))' "$example")
 "$editor" --size 1280x800 --recover no --frame-delay 200 --autosave-seconds 3600 --test-log "$log" \

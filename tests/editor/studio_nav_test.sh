@@ -23,20 +23,8 @@ export CORBEL_STATE_DIR=$work/state
 log=$work/test-log.jsonl
 cp "$example" "$work/studio.corbel"
 
-field() { python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).read().splitlines()[-1])'"$1"')' "$log"; }
-wait_for() {
-  local what=$1 deadline=$((SECONDS + 120))
-  while ((SECONDS < deadline)); do
-    kill -0 "$pid" 2>/dev/null || { echo "the editor exited while waiting for: $what"; exit 1; }
-    if [[ -s $log ]] && python3 -c 'import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); sys.exit(0 if ('"$what"') else 1)' "$log"; then
-      return 0
-    fi
-    sleep 0.2
-  done
-  echo "timed out waiting for: $what"
-  echo "last line: $(tail -1 "$log" 2>/dev/null)"
-  exit 1
-}
+WAIT_SECONDS=120
+source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for
 start() {
   : >"$log"
   "$editor" --size 1280x800 --recover no --autosave-seconds 3600 --test-log "$log" "$work/studio.corbel" &

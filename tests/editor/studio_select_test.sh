@@ -40,20 +40,7 @@ cat >"$work/two/empty.corbel" <<'JSON'
 JSON
 
 log=$work/one.jsonl
-last() { tail -1 "$log"; }
-wait_for() {
-  local what=$1 deadline=$((SECONDS + 90))
-  while ((SECONDS < deadline)); do
-    kill -0 "$pid" 2>/dev/null || { echo "the editor exited while waiting for: $what"; exit 1; }
-    if [[ -s $log ]] && python3 -c 'import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); sys.exit(0 if ('"$what"') else 1)' "$log"; then
-      return 0
-    fi
-    sleep 0.2
-  done
-  echo "timed out waiting for: $what"
-  echo "last line: $(last)"
-  exit 1
-}
+source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for
 # Window pixels of scene points, from the camera and view of the log's last line (render/camera:
 # OrbitCamera, straight down: up on the screen is −(cos az, sin az); perspective or orthographic).
 screen() {
