@@ -37,6 +37,7 @@
 #include "render/kifs_pass.h"
 #include "render/renderer.h"
 
+#include <imgui.h>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -222,6 +223,7 @@ class App {
   bool showError_ = false;
   std::vector<RecoveredWork> recoveryOffers_;  // work of editors that are gone, newest first
   bool showHelp_ = false;
+  ImGuiTextFilter helpFilter_;  // the F1 window's filter
   bool quitRequested_ = false;
 
   int frame_ = 0;

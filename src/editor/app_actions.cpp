@@ -3,6 +3,7 @@
 #include "editor/app.h"
 
 #include "editor/gestures.h"
+#include "editor/menu_order.h"
 #include "editor/new_objects.h"
 #include "editor/shape_gallery.h"
 #include "extrude/edit.h"
@@ -755,12 +756,7 @@ bool App::rightPaneHasKeys(const Rect& pane) const {
 
 void App::drawMenuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
-  std::vector<std::string> menus;
-  for (const Action& a : actions_.all()) {
-    const std::string top = a.menu.substr(0, a.menu.find('/'));
-    if (!top.empty() && std::find(menus.begin(), menus.end(), top) == menus.end()) menus.push_back(top);
-  }
-  for (const std::string& menu : menus) {
+  for (const std::string& menu : menuBarOrder(actions_.all())) {
     if (!ImGui::BeginMenu(menu.c_str())) continue;
     drawMenuItems(menu);
     ImGui::EndMenu();
@@ -811,19 +807,43 @@ void App::drawMenuItems(const std::string& menu) {
 
 void App::drawHelp() {
   if (!showHelp_) return;
-  ImGui::SetNextWindowSize(ImVec2(560, 440), ImGuiCond_Appearing);
+  // Most of the window, centred, so the whole list reads without scrolling a small box.
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowSize(ImVec2(vp->Size.x * 0.8f, vp->Size.y * 0.8f), ImGuiCond_Appearing);
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
   if (ImGui::Begin("Keyboard shortcuts and gestures", &showHelp_)) {
-    if (ImGui::BeginTable("actions", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders)) {
+    helpFilter_.Draw("Filter (command, key or words)", ImGui::GetFontSize() * 16);
+    auto shown = [&](const std::string& a, const std::string& b, const std::string& c) {
+      return helpFilter_.PassFilter(a.c_str()) || helpFilter_.PassFilter(b.c_str()) || helpFilter_.PassFilter(c.c_str());
+    };
+    if (ImGui::BeginTable("actions", 3,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
+                              ImGuiTableFlags_Resizable)) {
+      ImGui::TableSetupScrollFreeze(0, 1);
       ImGui::TableSetupColumn("Command");
       ImGui::TableSetupColumn("Shortcut");
       ImGui::TableSetupColumn("What it does");
       ImGui::TableHeadersRow();
-      for (const Action& a : actions_.all()) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
+      // In the menu bar's order, the commands with a key only last.
+      const std::vector<std::string> menus = menuBarOrder(actions_.all());
+      auto rank = [&](const Action& a) {
+        const std::string top = a.menu.substr(0, a.menu.find('/'));
+        return std::size_t(std::find(menus.begin(), menus.end(), top) - menus.begin());
+      };
+      std::vector<const Action*> listed;
+      for (const Action& a : actions_.all()) listed.push_back(&a);
+      std::stable_sort(listed.begin(), listed.end(),
+                       [&](const Action* x, const Action* y) { return rank(*x) < rank(*y); });
+      for (const Action* ap : listed) {
+        const Action& a = *ap;
         std::string path = a.menu.empty() ? std::string("(key only)") : a.menu;
         for (std::size_t at; (at = path.find('/')) != std::string::npos;) path.replace(at, 1, " > ");
-        ImGui::Text("%s > %s", path.c_str(), a.label.c_str());
+        path += " > " + a.label;
+        if (!shown(path, a.shortcut.text(), a.help)) continue;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(path.c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(a.shortcut.text().c_str());
         ImGui::TableNextColumn();
@@ -831,6 +851,7 @@ void App::drawHelp() {
       }
       // Every pane's mouse gestures (editor/gestures.h).
       for (const Gesture& g : paneGestures()) {
+        if (!shown(g.pane, g.gesture, g.what)) continue;
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(g.pane);

@@ -32,7 +32,7 @@ void declareEditorOptions(CLI::App& app, EditorOptions& o) {
       ->type_name("FILE");
   app.add_option("--script-shots", o.scriptShots, "With --script: save a screenshot to DIR after each stage.")
       ->type_name("DIR");
-  app.add_option("--autosave-seconds", o.autosaveSeconds, "The autosave interval while there are unsaved changes.")
+  app.add_option("--autosave-seconds", o.autosaveSeconds, "The autosave interval while there are unsaved changes (0: after every change).")
       ->check(numberIn(0, 1e9))
       ->type_name("S")
       ->default_str("60");
