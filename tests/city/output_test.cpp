@@ -201,6 +201,25 @@ TEST(CityOutput, CompressedViewsDecodeToTheUncompressedFile) {
   }
 }
 
+// With --tiles, each tile's glb places its own buildings' features: the copies over all tiles
+// are the features the town placed, each tile's drawn triangles its buildings'.
+TEST(CityOutput, EachTilePlacesItsOwnFeatures) {
+  const nlohmann::json line = city("whole.glb", "--instances --tiles " + (dir() / "tiles").string() + " --tile-size 200");
+  ASSERT_GE(line["tiles"].get<int>(), 2);
+  std::size_t copies = 0, tiles = 0;
+  for (const auto& e : fs::directory_iterator(dir() / "tiles")) {
+    ++tiles;
+    // The copies a client draws: distinct (node, copy) pairs of the expanded primitives.
+    std::set<std::pair<int, int>> drawn;
+    for (const auto& p : worldPrimitives(readGlbFile(e.path().string())))
+      if (p.instance >= 0) drawn.insert({p.node, p.instance});
+    copies += drawn.size();
+  }
+  EXPECT_EQ(tiles, line["tiles"].get<std::size_t>());
+  EXPECT_EQ(copies, line["instanced_features"].get<std::size_t>());
+  EXPECT_GT(copies, 100u);
+}
+
 TEST(CityOutput, InstancesAndCompressionNeedAGlb) {
   const std::string out = (dir() / "town.obj").string();
   for (const char* flag : {"--instances", "--compress"}) {
