@@ -16,7 +16,9 @@
 #include <tiny_gltf.h>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <sys/stat.h>
 #include <tuple>
 #include <cstring>
@@ -797,6 +799,39 @@ TEST(Export, GlbFallsBackToFloatsAndWideIndices) {
   std::size_t triangles = 0;
   for (const auto& p : corbel::test::worldPrimitives(g)) triangles += p.indices.size() / 3;
   EXPECT_EQ(triangles, 12u + 22000u);
+}
+
+}  // namespace
+
+namespace {
+
+// ExportOptions::compress: meshoptimizer's decoder gives back the same placed triangles; other
+// formats refuse it.
+TEST(Export, GlbCompressedDecodesToTheSameTriangles) {
+  TempDir dir;
+  const Scene s = testScene();
+  corbel::ExportOptions packed;
+  packed.compress = true;
+  corbel::exportScene(s, dir.file("plain.glb"));
+  corbel::exportScene(s, dir.file("packed.glb"), packed);
+  auto triangles = [](const std::string& path) {
+    std::multiset<std::array<std::array<double, 3>, 3>> out;
+    for (const auto& p : corbel::test::worldPrimitives(corbel::test::readGlbFile(path)))
+      for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+        std::array<std::array<double, 3>, 3> tri{p.positions[p.indices[t]], p.positions[p.indices[t + 1]],
+                                                 p.positions[p.indices[t + 2]]};
+        while (tri[0] != std::min({tri[0], tri[1], tri[2]})) tri = {tri[1], tri[2], tri[0]};  // same winding
+        out.insert(tri);
+      }
+    return out;
+  };
+  const auto a = triangles(dir.file("plain.glb")), b = triangles(dir.file("packed.glb"));
+  EXPECT_EQ(a.size(), totals(std::vector<Expected>{}).triangles + 12 + 16 + 20 + 12);
+  EXPECT_EQ(a, b);
+  const nlohmann::json j = corbel::test::readGlbFile(dir.file("packed.glb")).json;
+  EXPECT_EQ(j["extensionsRequired"], nlohmann::json::array({"EXT_meshopt_compression", "KHR_mesh_quantization"}));
+  EXPECT_THROW(corbel::exportScene(s, dir.file("packed.obj"), packed), corbel::Error);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("packed.obj")));
 }
 
 }  // namespace
