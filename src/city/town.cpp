@@ -45,6 +45,7 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
   batch.jobs = options.jobs;
   batch.keepMeshes = true;
   batch.mergeCoplanar = options.mergeCoplanar;
+  batch.featuresApart = options.featuresApart;
   batch.timeLimitSeconds = options.timeLimitSeconds;
   const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
   // One chunk: its buildings styled, ready to extrude, and their reports.
@@ -117,6 +118,7 @@ TownSummary buildTown(const Town& town, const std::vector<BuildingLabels>& label
         sum.faces += res.mesh.faces.size();
         dropUnusedPoints(res.mesh);
         applyTagMaterials(style, res.mesh);
+        r.features = std::move(res.features);
       }
       sink(r, res.ok ? &res.mesh : nullptr);
       res.mesh = MeshData();  // handed on: drop it now

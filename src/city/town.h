@@ -5,6 +5,7 @@
 #include "city/labels.h"
 #include "city/style.h"
 #include "core/mesh_data.h"
+#include "extrude/features.h"
 
 #include <cstdint>
 #include <functional>
@@ -25,6 +26,7 @@ struct TownOptions {
   unsigned jobs = 0;               // 0 = all cores
   std::size_t chunk = 1024;        // buildings extruded per round before their meshes are handed on
   bool mergeCoplanar = false;      // export meshes: coplanar neighbours merged (builds each mesh twice)
+  bool featuresApart = false;      // meshes without their features, placed in BuildingReport::features
   double timeLimitSeconds = 10.0;  // per building
   const std::map<std::string, BuildingOverride>* overrides = nullptr;  // by building id
 };
@@ -35,6 +37,7 @@ struct BuildingReport {
   bool ok = false;
   std::string error;  // clean-up refusal, styling fault or extrusion failure
   std::vector<std::string> notes, warnings;
+  std::vector<extrude::FeaturePlacement> features;  // TownOptions::featuresApart: left out of the mesh
 };
 
 struct TownSummary {

@@ -1,6 +1,7 @@
 // corbel-cli city: a styled town from footprints or along a street (docs/city.md); tiles,
 // a whole glb, a render and a per-building report.
 #include "city/import.h"
+#include "city/instances.h"
 #include "city/labels.h"
 #include "city/street.h"
 #include "city/style.h"
@@ -59,6 +60,8 @@ int run(const CityRequest& r) {
     } catch (const Error& e) {
       throw bad(std::string("--out: ") + e.what());
     }
+    if ((r.instances || r.compress) && exportFormatFor(r.out) != ExportFormat::Glb)
+      throw bad("--instances and --compress write glb: give a .glb --out");
   }
   std::optional<std::array<double, 3>> around;
   if (!r.around.empty()) {
@@ -132,6 +135,9 @@ int run(const CityRequest& r) {
   // The georeference and the data's attribution go into every glb.
   exportOptions.georeference = {town.frame.crs, town.frame.proj, town.frame.lon0, town.frame.lat0, 0};
   exportOptions.copyright = town.attribution;
+  exportOptions.compress = r.compress;
+  // --instances: the features of the buildings in a file (the whole town's, the tile's), once per shape.
+  city::FeatureInstances wholeFeatures(style), tileFeatures(style);
   // The PNG of --render: colours unless asked for (the renderer's textured mode).
   if (!r.out.empty()) whole = std::make_unique<Scene>();
   if (!r.render.empty() && !whole) view = std::make_unique<Scene>();  // else the output's Scene is rendered
@@ -141,6 +147,7 @@ int run(const CityRequest& r) {
   auto flushTile = [&] {
     if (!tile || !currentTile) return;
     if (tileId > 1) {
+      exportOptions.instances = &tileFeatures.meshes();
       exportScene(*tile,
                   (std::filesystem::path(r.tiles) /
                    ("tile_" + std::to_string(currentTile->first) + "_" + std::to_string(currentTile->second) + ".glb"))
@@ -149,6 +156,7 @@ int run(const CityRequest& r) {
       ++tilesWritten;
     }
     tile.reset();
+    tileFeatures.clear();
   };
   std::unique_ptr<std::ofstream> report;
   if (!r.report.empty()) {
@@ -156,6 +164,7 @@ int run(const CityRequest& r) {
     if (!*report) throw Error(r.report + ": cannot write the report");
   }
   std::map<std::string, std::size_t> reasons;
+  std::size_t instancedFeatures = 0;
   auto sink = [&](const city::BuildingReport& b, MeshData* mesh) {
     if (report) {
       nlohmann::ordered_json j;
@@ -189,16 +198,25 @@ int run(const CityRequest& r) {
     if (view) view->replaceObject(viewId++, Kind::Shell, b.id, *mesh);
     if (tile) tile->replaceObject(tileId++, Kind::Shell, b.id, *mesh);
     if (whole) whole->replaceObject(wholeId++, Kind::Shell, b.id, *mesh);
+    if (r.instances) {
+      if (tile) tileFeatures.add(b.features);
+      if (whole) wholeFeatures.add(b.features);
+      instancedFeatures += b.features.size();
+    }
   };
   city::TownOptions options;
   options.seed = static_cast<std::uint64_t>(r.seed);
   options.jobs = r.jobs;
   options.detail = detail;
+  options.featuresApart = r.instances;
   const city::TownSummary sum = city::buildTown(town, labels, style, options, sink, order,
                                                 [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
   flushTile();
   const double buildS = seconds();
-  if (whole) exportScene(*whole, r.out, exportOptions);
+  if (whole) {
+    exportOptions.instances = &wholeFeatures.meshes();
+    exportScene(*whole, r.out, exportOptions);
+  }
   if (!r.render.empty()) {
     render::HeadlessContext context;
     writeScenePng(whole ? *whole : *view, {-60, 35, 0.75, r.renderTextures == "on", exportOptions.tagTextures},
@@ -229,6 +247,10 @@ int run(const CityRequest& r) {
   j["faces"] = sum.faces;
   j["skipped_by_reason"] = reasons;
   if (tiled) j["tiles"] = tilesWritten;
+  if (r.instances) {
+    j["instanced_features"] = instancedFeatures;
+    j["feature_meshes"] = wholeFeatures.meshes().size();
+  }
   j["read_s"] = readS;
   j["build_s"] = buildS - readS;
   j["total_s"] = seconds();

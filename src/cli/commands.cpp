@@ -92,6 +92,7 @@ void declareExport(CLI::App& app, Requests& requests) {
       ->type_name("y|z");
   whole(*c, "--kifs-resolution", r.kifsResolution, 1, 1024, "N",
         "Cells along the longest side of a ray-marched KIFS building, meshed for the file.");
+  c->add_flag("--compress", r.compress, "glb: compress the geometry with meshoptimizer (EXT_meshopt_compression).");
 }
 
 void declareCheck(CLI::App& app, Requests& requests) {
@@ -360,6 +361,10 @@ void declareCity(CLI::App& app, Requests& requests) {
   choice(*c, "--detail", r.detail, {"massing", "steps", "full"}, "How much of each building to build.");
   choice(*c, "--textures", r.textures, {"on", "off"}, "Textures in the glb files.");
   choice(*c, "--render-textures", r.renderTextures, {"on", "off"}, "Textures in the --render image.");
+  c->add_flag("--instances", r.instances,
+              "glb: each window, sill, door, roof window and chimney pot shape written once and placed by "
+              "EXT_mesh_gpu_instancing (docs/export.md).");
+  c->add_flag("--compress", r.compress, "glb: compress the geometry with meshoptimizer (EXT_meshopt_compression).");
   CLI::Option* plots = c->add_option("--plots", r.plots, "How the street's plots are cut.")
                            ->check(oneOf({"normals", "skeleton"}))
                            ->type_name("normals|skeleton")

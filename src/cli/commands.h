@@ -30,6 +30,7 @@ struct ExportRequest {
   std::string project, out, object;
   std::string up;  // "y" or "z"; "" = the format's own (docs/export.md)
   int kifsResolution = 96;  // compose::kExportKifsResolution
+  bool compress = false;    // glb: EXT_meshopt_compression
 };
 
 struct CheckRequest {
@@ -132,6 +133,7 @@ struct CityRequest {
   long long seed = 1;
   unsigned jobs = 0;
   double tileSize = 500;
+  bool instances = false, compress = false;  // glb: EXT_mesh_gpu_instancing, EXT_meshopt_compression
 };
 
 using Request = std::variant<RenderRequest, ExportRequest, CheckRequest, EditRequest, ExtrudeRequest, StaticsArchRequest,

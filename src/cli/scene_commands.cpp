@@ -83,7 +83,8 @@ int run(const RenderRequest& r) {
 
 int run(const ExportRequest& r) {
   try {
-    exportFormatFor(r.out);  // fail on a bad extension before any work
+    // fail on a bad extension before any work
+    if (exportFormatFor(r.out) != ExportFormat::Glb && r.compress) throw Error("--compress needs a .glb --out");
   } catch (const Error& e) {
     throw UsageError(e.what());  // a bad --out is a command-line fault (exit 2)
   }
@@ -107,6 +108,7 @@ int run(const ExportRequest& r) {
   options.georeference = e.georeference;
   options.copyright = e.copyright;
   options.placements = e.placements;
+  options.compress = r.compress;
   exportScene(e.scene, r.out, options);
   std::cout << r.out << "\n";
   return 0;

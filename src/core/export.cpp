@@ -223,7 +223,10 @@ ExportFormat exportFormatFor(const std::string& path) {
 }
 
 void exportScene(const Scene& scene, const std::string& path, const ExportOptions& options) {
-  switch (exportFormatFor(path)) {
+  const ExportFormat format = exportFormatFor(path);
+  if (format != ExportFormat::Glb && ((options.instances && !options.instances->empty()) || options.compress))
+    throw Error("cannot export to '" + path + "': instances and compression are written to .glb only");
+  switch (format) {
     case ExportFormat::Obj: writeObj(scene, path, options); break;
     case ExportFormat::Ply: writePly(scene, path, options); break;
     case ExportFormat::Off: writeOff(scene, path, options); break;

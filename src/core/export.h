@@ -2,6 +2,7 @@
 // Export of the Scene: OBJ (+ .mtl), PLY, OFF and binary glTF 2.0, chosen by extension
 // (docs/export.md). Meters; OBJ is Y up by default (the convention of the programs that read
 // it), PLY and OFF keep corbel's Z up, glTF is Y up as its spec requires.
+#include "core/instances.h"
 #include "core/placement.h"
 #include "core/scene.h"
 #include "core/textures.h"
@@ -42,6 +43,12 @@ struct ExportOptions {
   // vertices stay placed; the node's extras record it as "corbel_placement" so a reader can
   // take a town back to its georeferenced frame (docs/export.md).
   std::map<ObjectId, Placement> placements;
+  // glb only: meshes written once each and placed many times (EXT_mesh_gpu_instancing), beside
+  // the scene's objects; none when null. Other formats refuse them.
+  const std::vector<InstancedMesh>* instances = nullptr;
+  // glb only: the geometry's buffer views compressed by meshoptimizer (EXT_meshopt_compression,
+  // then required). Other formats refuse it.
+  bool compress = false;
 };
 
 enum class ExportFormat { Obj, Ply, Off, Glb };

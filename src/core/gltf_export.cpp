@@ -1,121 +1,242 @@
-// Binary glTF 2.0 export through tinygltf: one node and mesh per object (named as the
-// object), one primitive per material, flat normals; with ExportOptions::textures, a PNG
-// texture per built-in texture used (by a material, or by a tag: ExportOptions::tagTextures)
-// and TEXCOORD_0 from each face's plane. glTF is Y up: (x, y, z) → (x, z, −y).
+// Binary glTF 2.0 export (docs/export.md): a node and mesh per object, a primitive per material,
+// flat normals. Corners are welded where faces share a position, normal and texture coordinate;
+// positions are 16-bit integers per object, dequantized by the node's translation and scale, and
+// normals 8-bit (KHR_mesh_quantization); indices are 16-bit where they fit. With
+// ExportOptions::textures, a PNG per built-in texture used and TEXCOORD_0 from each face's
+// plane; with ExportOptions::instances, meshes placed by EXT_mesh_gpu_instancing; with
+// ExportOptions::compress, meshoptimizer's EXT_meshopt_compression. glTF is Y up:
+// (x, y, z) → (x, z, −y). The JSON is written here (nlohmann); tinygltf only reads glb.
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
 #include "core/materials.h"
 #include "core/textures.h"
 
+#include <meshoptimizer.h>
+#include <nlohmann/json.hpp>
 #include <stb_image_write.h>
-#include <tiny_gltf.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <map>
+#include <set>
+#include <unordered_map>
 
 namespace corbel {
 
 namespace {
 
-struct PrimitiveData {
-  std::vector<float> positions, normals, uvs;
-  std::vector<std::uint32_t> indices;
-};
+using json = nlohmann::json;
 
-int addView(tinygltf::Model& model, const void* data, std::size_t bytes, int target) {
-  auto& buffer = model.buffers[0].data;
-  while (buffer.size() % 4) buffer.push_back(0);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = buffer.size();
-  view.byteLength = bytes;
-  view.target = target;
-  const auto* p = static_cast<const unsigned char*>(data);
-  buffer.insert(buffer.end(), p, p + bytes);
-  model.bufferViews.push_back(view);
-  return static_cast<int>(model.bufferViews.size()) - 1;
+constexpr int kByte = 5120, kShort = 5122, kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126;
+constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+
+// Positions are quantized when the step this gives an object is at most this (an object up to
+// 65 m across); a larger one keeps float positions.
+constexpr double kMaxQuantizationStep = 1e-3;
+
+// Every accessor of one kind lies in the one buffer view of that kind: a view per accessor made a
+// town's JSON chunk a third of the file. Elements are padded to 4 bytes (glTF 2.0, 3.6.2.4).
+enum ViewKind { kPositions16, kPositions32, kNormals, kTexcoords, kIndices16, kIndices32, kTranslations, kRotations, kViewKinds };
+struct ViewKindInfo {
+  int elementBytes;
+  int target;  // 0: none (instance attributes)
+};
+constexpr ViewKindInfo kViewInfo[kViewKinds] = {{8, kArrayBuffer},         {12, kArrayBuffer},        {4, kArrayBuffer},
+                                                {8, kArrayBuffer},         {2, kElementArrayBuffer}, {4, kElementArrayBuffer},
+                                                {12, 0},                   {8, 0}};
+
+// x (> 0) rounded up to three significant digits, as the double nearest that decimal (which
+// prints short).
+double roundUp3(double x) {
+  const int k = 2 - static_cast<int>(std::floor(std::log10(x)));  // x · 10^k in [100, 1000)
+  auto at = [&](double m) { return k >= 0 ? m / std::pow(10.0, k) : m * std::pow(10.0, -k); };
+  double m = std::ceil(x * std::pow(10.0, k));
+  while (at(m) < x) m += 1;
+  return at(m);
 }
 
-// The geometry of every primitive shares three buffer views (vec3 attributes, texture
-// coordinates, indices): a view per accessor made a town's JSON chunk a third view records.
-// Accessors point at a Shared kind until finish() writes the views and sets the indices.
-class SharedViews {
- public:
-  enum Kind { Vec3, Vec2, Index, kKinds };
+// glTF's frame from corbel's: (x, y, z) → (x, z, −y).
+Vec3 toGltf(const Vec3& p) { return Vec3(p[0], p[2], -p[1]); }
 
-  int accessor(tinygltf::Model& model, Kind kind, const void* data, std::size_t bytes) {
-    std::vector<unsigned char>& b = bytes_[kind];
-    tinygltf::Accessor a;
-    a.byteOffset = b.size();
+// A unit normal as three normalized bytes (c / 127), chosen among the lattice points around it
+// as the closest in direction whose length is within 0.005 of 1 (the Khronos validator allows
+// 0.00674).
+std::array<std::int8_t, 3> quantizeNormal(const Vec3& n) {
+  std::array<std::int8_t, 3> best{0, 0, 0};
+  double bestDot = -2;
+  const double s[3] = {n[0] * 127, n[1] * 127, n[2] * 127};
+  for (int m = 0; m < 8; ++m) {
+    Vec3 c;
+    for (int k = 0; k < 3; ++k) c[k] = std::clamp(m >> k & 1 ? std::ceil(s[k]) : std::floor(s[k]), -127.0, 127.0);
+    const double len = c.norm() / 127;
+    if (len == 0 || std::abs(len - 1) > 0.005) continue;
+    const double dot = (c[0] * n[0] + c[1] * n[1] + c[2] * n[2]) / (127 * len);
+    if (dot > bestDot) {
+      bestDot = dot;
+      for (int k = 0; k < 3; ++k) best[k] = static_cast<std::int8_t>(c[k]);
+    }
+  }
+  if (bestDot == -2)  // no lattice point near enough in length (never for a unit normal): the nearest
+    for (int k = 0; k < 3; ++k) best[k] = static_cast<std::int8_t>(std::lround(std::clamp(s[k], -127.0, 127.0)));
+  return best;
+}
+
+// The document being written and its binary chunk.
+class GlbDocument {
+ public:
+  explicit GlbDocument(bool compress) : compress_(compress) {}
+
+  json doc = json::object();
+
+  int push(const char* array, json value) {
+    json& a = doc[array];
+    if (a.is_null()) a = json::array();
+    a.push_back(std::move(value));
+    return static_cast<int>(a.size()) - 1;
+  }
+
+  // An accessor over `bytes` appended to the view of `kind`; its bufferView is set by finish().
+  int accessor(ViewKind kind, const void* data, std::size_t bytes, json a) {
+    std::vector<unsigned char>& v = views_[kind];
+    a["byteOffset"] = v.size();
     const auto* p = static_cast<const unsigned char*>(data);
-    b.insert(b.end(), p, p + bytes);
-    model.accessors.push_back(a);
-    const int index = static_cast<int>(model.accessors.size()) - 1;
+    v.insert(v.end(), p, p + bytes);
+    const int index = push("accessors", std::move(a));
     users_[kind].push_back(index);
     return index;
   }
 
-  void finish(tinygltf::Model& model) {
-    static constexpr int kStride[kKinds] = {12, 8, 0};
-    static constexpr int kTarget[kKinds] = {TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_TARGET_ARRAY_BUFFER,
-                                            TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER};
-    for (int k = 0; k < kKinds; ++k) {
-      if (bytes_[k].empty()) continue;
-      const int view = addView(model, bytes_[k].data(), bytes_[k].size(), kTarget[k]);
-      // Vertex attributes sharing a view need its stride (glTF 2.0, 3.6.2.4).
-      if (kStride[k]) model.bufferViews[view].byteStride = kStride[k];
-      for (int a : users_[k]) model.accessors[a].bufferView = view;
-      std::vector<unsigned char>().swap(bytes_[k]);
+  // A buffer view of its own in the binary chunk (an image), never compressed.
+  int rawView(const std::vector<unsigned char>& bytes) {
+    align(bin_);
+    const int view = push("bufferViews", json{{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", bytes.size()}});
+    bin_.insert(bin_.end(), bytes.begin(), bytes.end());
+    return view;
+  }
+
+  void use(const std::string& extension, bool required) {
+    used_.insert(extension);
+    if (required) required_.insert(extension);
+  }
+
+  // Lays the views out (compressed, with a fallback buffer that has no data, when asked) and
+  // writes the glb atomically.
+  void write(const std::string& path) {
+    std::size_t fallback = 0;
+    for (int k = 0; k < kViewKinds; ++k) {
+      std::vector<unsigned char>& v = views_[k];
+      if (v.empty()) continue;
+      const ViewKindInfo& info = kViewInfo[k];
+      json view{{"byteLength", v.size()}};
+      if (info.target) view["target"] = info.target;
+      if (info.target == kArrayBuffer) view["byteStride"] = info.elementBytes;
+      if (!compress_) {
+        align(bin_);
+        view["buffer"] = 0;
+        view["byteOffset"] = bin_.size();
+        bin_.insert(bin_.end(), v.begin(), v.end());
+      } else {
+        // The spec's fallback rules: the view points into a buffer marked as the fallback, which
+        // has no data here (so the extension is required), and its extension into the chunk.
+        fallback = (fallback + 3) / 4 * 4;
+        view["buffer"] = 1;
+        view["byteOffset"] = fallback;
+        fallback += v.size();
+        const std::size_t count = v.size() / info.elementBytes;
+        std::vector<unsigned char> encoded;
+        const char* mode;
+        if (info.target == kElementArrayBuffer) {
+          mode = "TRIANGLES";
+          std::vector<unsigned int> indices(count);
+          if (info.elementBytes == 2) {
+            std::vector<std::uint16_t> i16(count);
+            std::memcpy(i16.data(), v.data(), v.size());
+            std::copy(i16.begin(), i16.end(), indices.begin());
+          } else {
+            std::memcpy(indices.data(), v.data(), v.size());
+          }
+          const unsigned int vertices = indices.empty() ? 0 : *std::max_element(indices.begin(), indices.end()) + 1;
+          encoded.resize(meshopt_encodeIndexBufferBound(count, vertices));
+          encoded.resize(meshopt_encodeIndexBuffer(encoded.data(), encoded.size(), indices.data(), count));
+        } else {
+          mode = "ATTRIBUTES";
+          encoded.resize(meshopt_encodeVertexBufferBound(count, info.elementBytes));
+          encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), v.data(), count, info.elementBytes));
+        }
+        if (encoded.empty()) throw Error("cannot write '" + path + "': meshoptimizer could not encode a buffer view");
+        align(bin_);
+        view["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},
+                                                         {"byteOffset", bin_.size()},
+                                                         {"byteLength", encoded.size()},
+                                                         {"byteStride", info.elementBytes},
+                                                         {"mode", mode},
+                                                         {"count", count}};
+        bin_.insert(bin_.end(), encoded.begin(), encoded.end());
+      }
+      const int index = push("bufferViews", std::move(view));
+      for (int a : users_[k]) doc["accessors"][a]["bufferView"] = index;
+      std::vector<unsigned char>().swap(v);
     }
+    // glTF forbids an empty buffer (byteLength >= 1): with nothing to hold, none.
+    if (!bin_.empty()) push("buffers", json{{"byteLength", bin_.size()}});
+    if (fallback) {
+      if (bin_.empty()) push("buffers", json{{"byteLength", 4}});  // never: compressed views take bytes
+      push("buffers", json{{"byteLength", fallback}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+      use("EXT_meshopt_compression", true);
+    }
+    if (!used_.empty()) doc["extensionsUsed"] = used_;
+    if (!required_.empty()) doc["extensionsRequired"] = required_;
+
+    std::string text = doc.dump(-1, ' ', false, json::error_handler_t::replace);
+    while (text.size() % 4) text += ' ';
+    align(bin_);
+    const bool withBin = !bin_.empty();
+    const std::uint32_t total =
+        static_cast<std::uint32_t>(12 + 8 + text.size() + (withBin ? 8 + bin_.size() : 0));
+    const std::string temp = makeTempSibling(path);
+    {
+      std::ofstream out(temp, std::ios::binary);
+      auto u32 = [&](std::uint32_t x) { out.write(reinterpret_cast<const char*>(&x), 4); };
+      u32(0x46546C67);  // "glTF"
+      u32(2);
+      u32(total);
+      u32(static_cast<std::uint32_t>(text.size()));
+      u32(0x4E4F534A);  // "JSON"
+      out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      if (withBin) {
+        u32(static_cast<std::uint32_t>(bin_.size()));
+        u32(0x004E4942);  // "BIN\0"
+        out.write(reinterpret_cast<const char*>(bin_.data()), static_cast<std::streamsize>(bin_.size()));
+      }
+      out.flush();
+      if (!out) {
+        out.close();
+        std::remove(temp.c_str());
+        throw Error("cannot write '" + path + "'");
+      }
+    }
+    commitTempFile(temp, path);
   }
 
  private:
-  std::vector<unsigned char> bytes_[kKinds];
-  std::vector<int> users_[kKinds];
+  static void align(std::vector<unsigned char>& b) {
+    while (b.size() % 4) b.push_back(0);
+  }
+  bool compress_;
+  std::vector<unsigned char> bin_;
+  std::vector<unsigned char> views_[kViewKinds];
+  std::vector<int> users_[kViewKinds];
+  std::set<std::string> used_, required_;
 };
 
-int addVec3Accessor(tinygltf::Model& model, SharedViews& views, const std::vector<float>& values, bool withBounds) {
-  const int index = views.accessor(model, SharedViews::Vec3, values.data(), values.size() * sizeof(float));
-  tinygltf::Accessor& a = model.accessors[index];
-  a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  a.count = values.size() / 3;
-  a.type = TINYGLTF_TYPE_VEC3;
-  if (withBounds) {
-    std::vector<double> lo(3, 1e300), hi(3, -1e300);
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      lo[i % 3] = std::min<double>(lo[i % 3], values[i]);
-      hi[i % 3] = std::max<double>(hi[i % 3], values[i]);
-    }
-    a.minValues = lo;
-    a.maxValues = hi;
-  }
-  return index;
-}
-
-int addVec2Accessor(tinygltf::Model& model, SharedViews& views, const std::vector<float>& values) {
-  const int index = views.accessor(model, SharedViews::Vec2, values.data(), values.size() * sizeof(float));
-  tinygltf::Accessor& a = model.accessors[index];
-  a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  a.count = values.size() / 2;
-  a.type = TINYGLTF_TYPE_VEC2;
-  return index;
-}
-
-int addIndexAccessor(tinygltf::Model& model, SharedViews& views, const std::vector<std::uint32_t>& indices) {
-  const int index =
-      views.accessor(model, SharedViews::Index, indices.data(), indices.size() * sizeof(std::uint32_t));
-  tinygltf::Accessor& a = model.accessors[index];
-  a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-  a.count = indices.size();
-  a.type = TINYGLTF_TYPE_SCALAR;
-  return index;
-}
-
-// The texture as a PNG image in the binary buffer, a repeating sampler and a texture.
-int addTexture(tinygltf::Model& model, const MaterialTexture& tex, const std::string& name) {
+// The texture as a PNG image in the binary chunk, a repeating sampler and a texture.
+int addTexture(GlbDocument& g, const MaterialTexture& tex, const std::string& name) {
   std::vector<unsigned char> png;
   stbi_write_png_to_func(
       [](void* context, void* data, int size) {
@@ -125,152 +246,351 @@ int addTexture(tinygltf::Model& model, const MaterialTexture& tex, const std::st
       },
       &png, tex.size, tex.size, 3, tex.rgb.data(), tex.size * 3);
   if (png.empty()) throw Error("cannot encode the texture of '" + name + "' as PNG");
-  tinygltf::Image image;
-  image.name = name;
-  image.mimeType = "image/png";
-  image.bufferView = addView(model, png.data(), png.size(), 0);
-  model.images.push_back(image);
-  if (model.samplers.empty()) {
-    tinygltf::Sampler sampler;
-    sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
-    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
-    sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_REPEAT;
-    model.samplers.push_back(sampler);
+  const int image = g.push("images", json{{"name", name}, {"mimeType", "image/png"}, {"bufferView", g.rawView(png)}});
+  if (!g.doc.contains("samplers"))
+    g.push("samplers", json{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}});
+  return g.push("textures", json{{"name", name}, {"sampler", 0}, {"source", image}});
+}
+
+// The materials of the file, by glTF label.
+class Materials {
+ public:
+  Materials(GlbDocument& g, const ExportOptions& options) : g_(g), options_(options) {}
+
+  struct Use {
+    int material;
+    TextureUse texture;
+  };
+
+  Use of(ObjectId id, bool textured, const std::string& m, Kind kind, const std::string& tag) {
+    std::string label = m.empty() ? std::string(kindName(kind)) : m;
+    // A face with a texture of its own (a style's tag texture) gets a glTF material of its own,
+    // whatever its material's colour: the texture carries the colour.
+    const SurfaceTexture* own = textured && options_.tagTextures ? options_.tagTextures(id, tag) : nullptr;
+    const TextureUse use = textured ? textureFor(own, m) : TextureUse{};
+    // Textured and plain materials never share a name (Godot shares materials by name across
+    // files, so a plain house would pick up a town's textured brick).
+    if (use.texture) label += " (texture " + std::string(use.name) + ")";
+    if (const auto found = index_.find(label); found != index_.end()) return {found->second, use};
+    const Rgb c = materialColor(m, kind);
+    json pbr{{"baseColorFactor", {c[0], c[1], c[2], 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.9}};
+    if (use.texture) {  // the texture carries the colour: base colour = factor × texel
+      const std::string texName(use.name);
+      auto t = textures_.find(texName);
+      if (t == textures_.end()) t = textures_.emplace(texName, addTexture(g_, *use.texture, texName)).first;
+      pbr["baseColorTexture"] = {{"index", t->second}};
+      pbr["baseColorFactor"] = {1.0, 1.0, 1.0, 1.0};
+    }
+    const int index = g_.push("materials", json{{"name", label}, {"pbrMetallicRoughness", pbr}});
+    index_[label] = index;
+    return {index, use};
   }
-  tinygltf::Texture texture;
-  texture.name = name;
-  texture.sampler = 0;
-  texture.source = static_cast<int>(model.images.size()) - 1;
-  model.textures.push_back(texture);
-  return static_cast<int>(model.textures.size()) - 1;
+
+ private:
+  GlbDocument& g_;
+  const ExportOptions& options_;
+  std::map<std::string, int> index_, textures_;
+};
+
+// One object's faces gathered into glTF's layout: a vertex set for the faces with texture
+// coordinates and one for those without, each shared by the primitives (one per material) that
+// draw from it.
+class MeshBuilder {
+ public:
+  // A face in corbel's frame with its glTF material and, when textured, its texture's repeat.
+  void face(const std::vector<Vec3>& poly, const Materials::Use& use) {
+    Vec3 n = newellNormal(poly);
+    const double len = n.norm();
+    if (len > 0) n /= len;
+    const std::array<std::int8_t, 3> qn = quantizeNormal(toGltf(n));
+    Group& g = groups_[use.texture.texture ? 1 : 0];
+    const auto base = static_cast<std::uint32_t>(g.corners.size());
+    if (use.texture.texture) faceTextureCoordinates(poly, n, use.texture.metres, uv_);
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      Corner c;
+      c.p = toGltf(poly[i]);
+      c.n = qn;
+      if (use.texture.texture) c.uv = {static_cast<float>(uv_[i][0]), static_cast<float>(uv_[i][1])};
+      g.corners.push_back(c);
+      for (int k = 0; k < 3; ++k) {
+        lo_[k] = std::min(lo_[k], c.p[k]);
+        hi_[k] = std::max(hi_[k], c.p[k]);
+      }
+    }
+    for (const auto& t : triangulatePolygon(poly))
+      g.triangles.push_back({base + t[0], base + t[1], base + t[2], static_cast<std::uint32_t>(use.material)});
+  }
+
+  bool empty() const { return groups_[0].triangles.empty() && groups_[1].triangles.empty(); }
+
+  // Writes the mesh; returns its index, and the node's translation and scale that dequantize
+  // its positions (none when they stay float). `quantize` false: float positions (instanced
+  // meshes, whose node transform would apply after the instances' own).
+  int write(GlbDocument& doc, const std::string& name, bool quantize, json& node) {
+    Vec3 centre(0, 0, 0);
+    double step = 0;
+    if (quantize) {
+      // Short decimals, so the JSON stays short: the centre to the millimetre, the step rounded
+      // up to three significant digits (the box still fits in ±32,767 steps).
+      double half = 0;
+      for (int k = 0; k < 3; ++k) {
+        centre[k] = std::round((lo_[k] + hi_[k]) / 2 * 1000) / 1000;
+        half = std::max({half, hi_[k] - centre[k], centre[k] - lo_[k]});
+      }
+      step = half > 0 ? roundUp3(half / 32767) : 1.0;
+      if (step > kMaxQuantizationStep) step = 0;
+    }
+    json primitives = json::array();
+    for (Group& g : groups_) {
+      if (g.triangles.empty()) continue;
+      const bool uv = &g == &groups_[1];
+      // Weld: corners equal in every attribute as written become one vertex.
+      std::vector<std::uint32_t> vertexOf(g.corners.size());
+      std::unordered_map<Key, std::uint32_t, KeyHash> seen;
+      seen.reserve(g.corners.size());
+      std::vector<std::int16_t> p16;
+      std::vector<float> p32, uvs;
+      std::vector<std::int8_t> normals;
+      std::uint32_t vertices = 0;
+      std::array<double, 3> qlo{1e300, 1e300, 1e300}, qhi{-1e300, -1e300, -1e300};
+      for (std::size_t i = 0; i < g.corners.size(); ++i) {
+        const Corner& c = g.corners[i];
+        Key key{};
+        std::array<double, 3> value{};
+        for (int k = 0; k < 3; ++k) {
+          if (step > 0) {
+            value[k] = std::clamp<double>(std::lround((c.p[k] - centre[k]) / step), -32767, 32767);
+            key.p[k] = static_cast<std::int32_t>(value[k]);
+          } else {
+            const float f = static_cast<float>(c.p[k]);
+            value[k] = f;
+            std::memcpy(&key.p[k], &f, 4);
+          }
+          key.n[k] = c.n[k];
+        }
+        std::memcpy(&key.uv[0], &c.uv[0], 4);
+        std::memcpy(&key.uv[1], &c.uv[1], 4);
+        const auto [it, fresh] = seen.try_emplace(key, vertices);
+        vertexOf[i] = it->second;
+        if (!fresh) continue;
+        ++vertices;
+        for (int k = 0; k < 3; ++k) {
+          qlo[k] = std::min(qlo[k], value[k]);
+          qhi[k] = std::max(qhi[k], value[k]);
+          if (step > 0)
+            p16.push_back(static_cast<std::int16_t>(value[k]));
+          else
+            p32.push_back(static_cast<float>(value[k]));
+          normals.push_back(c.n[k]);
+        }
+        if (step > 0) p16.push_back(0);
+        normals.push_back(0);
+        if (uv) uvs.insert(uvs.end(), {c.uv[0], c.uv[1]});
+      }
+      json attributes;
+      if (step > 0) {
+        const std::array<int, 3> ilo{static_cast<int>(qlo[0]), static_cast<int>(qlo[1]), static_cast<int>(qlo[2])},
+            ihi{static_cast<int>(qhi[0]), static_cast<int>(qhi[1]), static_cast<int>(qhi[2])};
+        attributes["POSITION"] = doc.accessor(
+            kPositions16, p16.data(), p16.size() * 2,
+            {{"componentType", kShort}, {"count", vertices}, {"type", "VEC3"}, {"min", ilo}, {"max", ihi}});
+      } else {
+        attributes["POSITION"] = doc.accessor(
+            kPositions32, p32.data(), p32.size() * 4,
+            {{"componentType", kFloat}, {"count", vertices}, {"type", "VEC3"}, {"min", qlo}, {"max", qhi}});
+      }
+      attributes["NORMAL"] = doc.accessor(
+          kNormals, normals.data(), normals.size(),
+          {{"componentType", kByte}, {"normalized", true}, {"count", vertices}, {"type", "VEC3"}});
+      if (uv)
+        attributes["TEXCOORD_0"] =
+            doc.accessor(kTexcoords, uvs.data(), uvs.size() * 4, {{"componentType", kFloat}, {"count", vertices}, {"type", "VEC2"}});
+      // A primitive per material, in the order materials were first used; triangles that the
+      // weld made degenerate (corners within one quantization step) are left out.
+      std::map<std::uint32_t, std::vector<std::uint32_t>> byMaterial;
+      for (const Triangle& t : g.triangles) {
+        const std::uint32_t a = vertexOf[t.a], b = vertexOf[t.b], c = vertexOf[t.c];
+        if (a == b || b == c || a == c) continue;
+        byMaterial[t.material].insert(byMaterial[t.material].end(), {a, b, c});
+      }
+      for (const auto& [material, indices] : byMaterial) {
+        int index;
+        if (vertices <= 65535) {
+          const std::vector<std::uint16_t> i16(indices.begin(), indices.end());
+          index = doc.accessor(kIndices16, i16.data(), i16.size() * 2,
+                               {{"componentType", kUnsignedShort}, {"count", indices.size()}, {"type", "SCALAR"}});
+        } else {
+          index = doc.accessor(kIndices32, indices.data(), indices.size() * 4,
+                               {{"componentType", kUnsignedInt}, {"count", indices.size()}, {"type", "SCALAR"}});
+        }
+        primitives.push_back({{"attributes", attributes}, {"indices", index}, {"material", material}});
+      }
+    }
+    if (step > 0) {
+      node["translation"] = {centre[0], centre[1], centre[2]};
+      node["scale"] = {step, step, step};
+    }
+    return doc.push("meshes", json{{"name", name}, {"primitives", std::move(primitives)}});
+  }
+
+ private:
+  struct Corner {
+    Vec3 p;
+    std::array<std::int8_t, 3> n{};
+    std::array<float, 2> uv{0, 0};
+  };
+  struct Triangle {
+    std::uint32_t a, b, c, material;
+  };
+  struct Group {
+    std::vector<Corner> corners;
+    std::vector<Triangle> triangles;
+  };
+  struct Key {
+    std::int32_t p[3];
+    std::int8_t n[3];
+    std::uint32_t uv[2];
+    bool operator==(const Key& o) const {
+      return std::memcmp(p, o.p, sizeof p) == 0 && std::memcmp(n, o.n, sizeof n) == 0 &&
+             std::memcmp(uv, o.uv, sizeof uv) == 0;
+    }
+  };
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::uint64_t h = 1469598103934665603ull;
+      auto mix = [&](std::uint64_t x) { h = (h ^ x) * 1099511628211ull; };
+      for (int i = 0; i < 3; ++i) mix(static_cast<std::uint32_t>(k.p[i]));
+      mix(static_cast<std::uint8_t>(k.n[0]) | static_cast<std::uint8_t>(k.n[1]) << 8 |
+          static_cast<std::uint32_t>(static_cast<std::uint8_t>(k.n[2])) << 16);
+      mix(k.uv[0]);
+      mix(k.uv[1]);
+      return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+  };
+  Group groups_[2];
+  std::vector<Vec2> uv_;
+  std::array<double, 3> lo_{1e300, 1e300, 1e300}, hi_{-1e300, -1e300, -1e300};
+};
+
+// A rotation matrix (columns) as a unit quaternion (x, y, z, w).
+std::array<double, 4> quaternionOf(const Vec3& c0, const Vec3& c1, const Vec3& c2) {
+  const double m00 = c0[0], m10 = c0[1], m20 = c0[2], m01 = c1[0], m11 = c1[1], m21 = c1[2], m02 = c2[0],
+               m12 = c2[1], m22 = c2[2];
+  std::array<double, 4> q{};
+  const double trace = m00 + m11 + m22;
+  if (trace > 0) {
+    const double s = 2 * std::sqrt(1 + trace);
+    q = {(m21 - m12) / s, (m02 - m20) / s, (m10 - m01) / s, s / 4};
+  } else if (m00 > m11 && m00 > m22) {
+    const double s = 2 * std::sqrt(1 + m00 - m11 - m22);
+    q = {s / 4, (m01 + m10) / s, (m02 + m20) / s, (m21 - m12) / s};
+  } else if (m11 > m22) {
+    const double s = 2 * std::sqrt(1 + m11 - m00 - m22);
+    q = {(m01 + m10) / s, s / 4, (m12 + m21) / s, (m02 - m20) / s};
+  } else {
+    const double s = 2 * std::sqrt(1 + m22 - m00 - m11);
+    q = {(m02 + m20) / s, (m12 + m21) / s, s / 4, (m10 - m01) / s};
+  }
+  const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (double& x : q) x /= len;
+  return q;
 }
 
 }  // namespace
 
 void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& options) {
-  tinygltf::Model model;
-  model.asset.version = "2.0";
-  model.asset.generator = "corbel";
-  model.buffers.emplace_back();
-  model.scenes.emplace_back();
-  model.defaultScene = 0;
-  std::map<std::string, int> materialIndex, textureIndex;  // by glTF material label, by texture name
+  GlbDocument g(options.compress);
+  g.doc["asset"] = {{"version", "2.0"}, {"generator", "corbel"}};
+  if (!options.copyright.empty()) g.doc["asset"]["copyright"] = options.copyright;
+  Materials materials(g, options);
   const PolyMesh& mesh = scene.mesh();
-  SharedViews views;
+  json sceneNodes = json::array();
+  bool any = false;
 
   const auto byObject = scene.facesByObject();
+  std::vector<Vec3> poly;
   for (const auto& [id, info] : scene.objects()) {
     if (options.include && !options.include(id)) continue;
     const bool textured = options.textured ? options.textured(id) : options.textures;
-    std::map<std::string, PrimitiveData> byMaterial;
-    std::vector<Vec3> poly;
-    std::vector<Vec2> uv;
     const auto found = byObject.find(id);
     if (found == byObject.end()) continue;
+    MeshBuilder builder;
     for (auto f : found->second) {
-      const std::string& m = scene.faceMaterial(f);
-      std::string label = m.empty() ? std::string(kindName(scene.faceKind(f))) : m;
-      // A face with a texture of its own (a style's tag texture) gets a glTF material of its own,
-      // whatever its material's colour: the texture carries the colour.
-      const SurfaceTexture* own =
-          textured && options.tagTextures ? options.tagTextures(id, scene.faceTag(f)) : nullptr;
-      const TextureUse use = textured ? textureFor(own, m) : TextureUse{};
-      // Textured and plain materials never share a name (Godot shares materials by name across
-      // files, so a plain house would pick up a town's textured brick).
-      if (use.texture) label += " (texture " + std::string(use.name) + ")";
-      if (!materialIndex.count(label)) {
-        tinygltf::Material mat;
-        mat.name = label;
-        const Rgb c = materialColor(m, scene.faceKind(f));
-        mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
-        mat.pbrMetallicRoughness.metallicFactor = 0.0;
-        mat.pbrMetallicRoughness.roughnessFactor = 0.9;
-        if (use.texture) {  // the texture carries the colour: base colour = factor × texel
-          const std::string texName(use.name);
-          if (!textureIndex.count(texName)) textureIndex[texName] = addTexture(model, *use.texture, texName);
-          mat.pbrMetallicRoughness.baseColorTexture.index = textureIndex[texName];
-          mat.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
-        }
-        model.materials.push_back(mat);
-        materialIndex[label] = static_cast<int>(model.materials.size()) - 1;
-      }
-      PrimitiveData& prim = byMaterial[label];
       poly.clear();
       for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
-      Vec3 n = newellNormal(poly);
-      const double len = n.norm();
-      if (len > 0) n /= len;
-      const auto base = static_cast<std::uint32_t>(prim.positions.size() / 3);
-      for (const Vec3& p : poly) {
-        prim.positions.insert(prim.positions.end(),
-                              {static_cast<float>(p[0]), static_cast<float>(p[2]), static_cast<float>(-p[1])});
-        prim.normals.insert(prim.normals.end(),
-                            {static_cast<float>(n[0]), static_cast<float>(n[2]), static_cast<float>(-n[1])});
-      }
-      if (use.texture) {  // texture coordinates from the plane (core/textures.h)
-        faceTextureCoordinates(poly, n, use.metres, uv);
-        for (const Vec2& t : uv) prim.uvs.insert(prim.uvs.end(), {static_cast<float>(t[0]), static_cast<float>(t[1])});
-      }
-      for (const auto& t : triangulatePolygon(poly))
-        prim.indices.insert(prim.indices.end(), {base + t[0], base + t[1], base + t[2]});
+      builder.face(poly, materials.of(id, textured, scene.faceMaterial(f), scene.faceKind(f), scene.faceTag(f)));
     }
-    tinygltf::Mesh gm;
-    gm.name = info.name;
-    for (auto& [label, prim] : byMaterial) {
-      tinygltf::Primitive p;
-      p.mode = TINYGLTF_MODE_TRIANGLES;
-      p.material = materialIndex[label];
-      p.attributes["POSITION"] = addVec3Accessor(model, views, prim.positions, true);
-      p.attributes["NORMAL"] = addVec3Accessor(model, views, prim.normals, false);
-      if (!prim.uvs.empty()) p.attributes["TEXCOORD_0"] = addVec2Accessor(model, views, prim.uvs);
-      p.indices = addIndexAccessor(model, views, prim.indices);
-      gm.primitives.push_back(p);
-    }
-    if (gm.primitives.empty()) continue;
-    model.meshes.push_back(gm);
-    tinygltf::Node node;
-    node.name = info.name;
-    node.mesh = static_cast<int>(model.meshes.size()) - 1;
-    tinygltf::Value::Object extras{{"corbel_object_id", tinygltf::Value(static_cast<int>(id))},
-                                   {"corbel_kind", tinygltf::Value(std::string(kindName(info.kind)))}};
+    if (builder.empty()) continue;
+    json node{{"name", info.name}};
+    node["mesh"] = builder.write(g, info.name, true, node);
+    json extras{{"corbel_object_id", static_cast<int>(id)}, {"corbel_kind", std::string(kindName(info.kind))}};
     // The placement the vertices were moved by, in corbel's frame (z up): a town's buildings
     // stand where the scene shows them, and this takes them back to the town's own frame.
     if (const auto pl = options.placements.find(id); pl != options.placements.end()) {
       const Placement& p = pl->second;
-      tinygltf::Value::Array t{tinygltf::Value(p.translation[0]), tinygltf::Value(p.translation[1]),
-                               tinygltf::Value(p.translation[2])};
-      extras["corbel_placement"] = tinygltf::Value(tinygltf::Value::Object{
-          {"translation", tinygltf::Value(t)},
-          {"rotation_deg", tinygltf::Value(p.rotation_deg)},
-          {"scale", tinygltf::Value(p.scale)},
-          {"frame", tinygltf::Value(std::string("z up; p_scene = translation + Rz(rotation_deg) * (scale * p_object)"))}});
+      extras["corbel_placement"] = {
+          {"translation", {p.translation[0], p.translation[1], p.translation[2]}},
+          {"rotation_deg", p.rotation_deg},
+          {"scale", p.scale},
+          {"frame", "z up; p_scene = translation + Rz(rotation_deg) * (scale * p_object)"}};
     }
-    node.extras = tinygltf::Value(extras);
-    model.nodes.push_back(node);
-    model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
+    node["extras"] = std::move(extras);
+    sceneNodes.push_back(g.push("nodes", std::move(node)));
+    any = true;
   }
 
-  views.finish(model);
-  // Nothing exported: glTF forbids an empty buffer (byteLength >= 1), so write none; and a
-  // named scene, since tinygltf writes a scene without nodes or name as null.
-  if (model.buffers[0].data.empty()) model.buffers.clear();
-  model.scenes[0].name = "corbel";
-  if (!options.copyright.empty()) model.asset.copyright = options.copyright;
-  if (const auto& g = options.georeference; !g.proj.empty()) {
-    using V = tinygltf::Value;
-    V::Object geo{{"proj", V(g.proj)},
-                  {"origin", V(V::Array{V(g.lon), V(g.lat), V(g.height)})},
-                  {"axes", V(std::string("glTF +X east, -Z north, +Y up, metres"))}};
-    if (!g.crs.empty()) geo["crs"] = V(g.crs);
-    model.scenes[0].extras = V(V::Object{{"georeference", V(geo)}});
+  // Instanced meshes: a node each, its copies placed by EXT_mesh_gpu_instancing in glTF's frame
+  // (rotation C R Cᵀ for corbel's rotation R and C the change of axes): translations as floats,
+// rotations as normalized 16-bit quaternions (each component within 1.6e-5).
+  if (options.instances)
+    for (const InstancedMesh& im : *options.instances) {
+      if (im.placements.empty()) continue;
+      MeshBuilder builder;
+      for (std::size_t f = 0; f < im.mesh.faces.size(); ++f) {
+        poly.clear();
+        for (int v : im.mesh.faces[f]) poly.push_back(im.mesh.points[v]);
+        builder.face(poly, materials.of(0, options.textures, im.mesh.materials[im.mesh.faceMaterial[f]], Kind::Shell,
+                                        im.mesh.tags[im.mesh.faceTag[f]]));
+      }
+      if (builder.empty()) continue;
+      json node{{"name", im.name}};
+      node["mesh"] = builder.write(g, im.name, false, node);
+      std::vector<float> translations;
+      std::vector<std::int16_t> rotations;
+      translations.reserve(im.placements.size() * 3);
+      rotations.reserve(im.placements.size() * 4);
+      for (const RigidPlacement& p : im.placements) {
+        const Vec3 t = toGltf(p.translation);
+        translations.insert(translations.end(),
+                            {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])});
+        // Column j of C R Cᵀ is C (R (Cᵀ e_j)); Cᵀ takes glTF's x, y, z to corbel's x, −z, y.
+        const auto q = quaternionOf(toGltf(p.ex), toGltf(p.ez), -toGltf(p.ey));
+        for (double x : q) rotations.push_back(static_cast<std::int16_t>(std::lround(x * 32767)));
+      }
+      const std::size_t n = im.placements.size();
+      const int t = g.accessor(kTranslations, translations.data(), translations.size() * 4,
+                               {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}});
+      const int r = g.accessor(kRotations, rotations.data(), rotations.size() * 2,
+                               {{"componentType", kShort}, {"normalized", true}, {"count", n}, {"type", "VEC4"}});
+      node["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", t}, {"ROTATION", r}}}};
+      g.use("EXT_mesh_gpu_instancing", true);
+      sceneNodes.push_back(g.push("nodes", std::move(node)));
+      any = true;
+    }
+  if (any) g.use("KHR_mesh_quantization", true);  // normals are bytes in every mesh
+
+  json sceneJson{{"name", "corbel"}};
+  if (!sceneNodes.empty()) sceneJson["nodes"] = std::move(sceneNodes);
+  if (const auto& geo = options.georeference; !geo.proj.empty()) {
+    json r{{"proj", geo.proj},
+           {"origin", {geo.lon, geo.lat, geo.height}},
+           {"axes", "glTF +X east, -Z north, +Y up, metres"}};
+    if (!geo.crs.empty()) r["crs"] = geo.crs;
+    sceneJson["extras"] = {{"georeference", std::move(r)}};
   }
-  tinygltf::TinyGLTF writer;
-  const std::string temp = makeTempSibling(path);
-  if (!writer.WriteGltfSceneToFile(&model, temp, true, true, false, true)) {
-    std::remove(temp.c_str());
-    throw Error("cannot write '" + path + "' (glTF writer failed)");
-  }
-  commitTempFile(temp, path);
+  g.push("scenes", std::move(sceneJson));
+  g.doc["scene"] = 0;
+  g.write(path);
 }
 
 }  // namespace corbel

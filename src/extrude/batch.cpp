@@ -26,9 +26,11 @@ struct Attempt {
   bool watertight = false, manifold = false;
   std::vector<AnchorFrame> anchors;
   MeshData mesh;
+  std::vector<FeaturePlacement> features;
 };
 
-Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge, double timeLimit, bool windingRule) {
+Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge, bool apart, double timeLimit,
+                bool windingRule) {
   Attempt a;
   try {
     const ExtrusionResult er = extrude(item.spec, nullptr, ExtrudeOptions{timeLimit, factor, windingRule});
@@ -43,6 +45,8 @@ Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge,
       return a;
     }
     MeshData mesh = toMeshData(er.shell, item.spec, item.spec.material);
+    MeshData shellOnly;  // features apart: the shell as built, before its features are added
+    if (keepMesh && apart && !merge) shellOnly = mesh;
     appendFeatures(mesh, item.spec, er, a.warnings);
     Scene scene;
     scene.replaceObject(1, Kind::Shell, item.id, mesh);
@@ -56,10 +60,10 @@ Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge,
       a.error = "the shell is not a closed 2-manifold:";
       for (const auto& p : v.problems()) a.error += " " + p + ";";
     }
-    if (keepMesh && merge) {
-      a.mesh = toMeshData(er.shell, item.spec, item.spec.material, true);
+    if (keepMesh && (merge || apart)) {
+      a.mesh = merge ? toMeshData(er.shell, item.spec, item.spec.material, true) : std::move(shellOnly);
       std::vector<std::string> again;
-      appendFeatures(a.mesh, item.spec, er, again);
+      appendFeatures(a.mesh, item.spec, er, again, apart ? &a.features : nullptr);
     } else if (keepMesh) {
       a.mesh = std::move(mesh);
     }
@@ -95,6 +99,7 @@ void finish(BatchResult& r, Attempt& a, std::chrono::steady_clock::time_point t0
   r.manifold = a.manifold;
   r.anchors = std::move(a.anchors);
   r.mesh = std::move(a.mesh);
+  r.features = std::move(a.features);
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -105,7 +110,7 @@ void runOne(const BatchItem& item, BatchResult& r, const BatchOptions& o) {
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  Attempt first = attempt(item, 1.0, o.keepMeshes, o.mergeCoplanar, o.timeLimitSeconds, o.windingRule);
+  Attempt first = attempt(item, 1.0, o.keepMeshes, o.mergeCoplanar, o.featuresApart, o.timeLimitSeconds, o.windingRule);
   r.builds = 1;
   if (!first.ok && first.retryable && !o.retryFactors.empty()) {
     // Rebuild with a window of consecutive factors, stopping at the first rebuild that fails
@@ -123,7 +128,7 @@ void runOne(const BatchItem& item, BatchResult& r, const BatchOptions& o) {
       rebuilt.clear();
       agreed = true;
       for (std::size_t i = 0; i < window && agreed; ++i) {
-        rebuilt.push_back(attempt(item, f[start + i], o.keepMeshes && i == 0, o.mergeCoplanar, o.timeLimitSeconds,
+        rebuilt.push_back(attempt(item, f[start + i], o.keepMeshes && i == 0, o.mergeCoplanar, o.featuresApart, o.timeLimitSeconds,
                                   o.windingRule));
         ++r.builds;
         agreed = rebuilt.back().ok;

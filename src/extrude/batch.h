@@ -4,6 +4,7 @@
 #include "core/mesh_data.h"
 #include "core/progress.h"
 #include "extrude/extrude.h"
+#include "extrude/features.h"
 
 #include <string>
 #include <vector>
@@ -31,12 +32,14 @@ struct BatchResult {
   int builds = 0;                    // extrusions run for it: 1 for a building that passed (or was refused) at once
   std::vector<AnchorFrame> anchors;  // the spec's mesh anchors, placed on the shell
   MeshData mesh;                 // kept when requested (for export)
+  std::vector<FeaturePlacement> features;  // BatchOptions::featuresApart: the features left out of `mesh`
 };
 
 struct BatchOptions {
   unsigned jobs = 0;             // 0 = all cores
   bool keepMeshes = false;
   bool mergeCoplanar = false;    // kept meshes only: coplanar neighbours merged (export option)
+  bool featuresApart = false;    // kept meshes only: without their features, placed in BatchResult::features
   double timeLimitSeconds = 10.0;  // per building and attempt
   // A building whose first build fails validation (not closed, not a 2-manifold, or an error
   // of the sweep; never bad input or the time limit) is rebuilt with tolerance factors

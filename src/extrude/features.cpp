@@ -69,8 +69,6 @@ FeaturePart ring(std::string name, std::string material, const Local& l, const s
   return p;
 }
 
-Local faceFrame(const AnchorFrame& f) { return {f.position, f.along, f.up, f.normal}; }
-
 // A frame ring from (−W/2, y0) to (W/2, y1), `t` thick, `depth` out of the face, and the pane
 // (or leaf) filling its opening half as deep.
 void framed(std::vector<FeaturePart>& parts, const Local& l, double W, double y0, double y1, double t, double depth,
@@ -94,12 +92,42 @@ std::vector<Vec2> ellipseOutline(int n, double a, double b) {
 
 std::string featureTag(FeatureKind kind) { return featureName(kind); }
 
-std::vector<FeaturePart> featureParts(FeatureKind kind, const FeatureSize& size, const AnchorFrame& frame) {
+FeaturePlacement featurePlacement(FeatureKind kind, const FeatureSize& size, const AnchorFrame& frame) {
+  FeaturePlacement p;
+  p.kind = kind;
+  p.size = size;
+  p.origin = frame.position;
+  if (kind != FeatureKind::ChimneyPot) {  // x along the edge, y up the face, z out of it
+    p.ex = frame.along;
+    p.ey = frame.up;
+    p.ez = frame.normal;
+    return p;
+  }
+  // Straight up, whatever the face's slope: x along the edge, z world up.
+  Vec3 ex(frame.along[0], frame.along[1], 0);
+  if (ex.norm() < 1e-12) ex = Vec3(1, 0, 0);
+  ex.normalize();
+  p.ex = ex;
+  p.ez = Vec3(0, 0, 1);
+  p.ey = OpenMesh::cross(p.ez, p.ex);
+  // Reach down to the face under the whole footprint (rim included): on a face rising inward at
+  // dz/dw, the footprint's far side lies R dz/dw below the anchor's height. Rounded up to the
+  // millimetre, so pots on roofs of one pitch are alike.
   const FeatureDimensions& dim = featureDimensions();
-  const double W = size.width, H = size.height, D = size.depth;
+  const double R = std::max(size.width, size.depth) / 2 + dim.potRim;
+  const double horizontal = std::hypot(frame.normal[0], frame.normal[1]);
+  const double sink = R * horizontal / std::max(std::abs(frame.normal[2]), 1e-9);
+  p.sink = std::min(size.height, std::ceil(sink * 1000 - 1e-6) / 1000);  // 1e-6: not 0.191 for 0.19 + ε
+  return p;
+}
+
+std::vector<FeaturePart> featureParts(const FeaturePlacement& placement, bool own) {
+  const FeatureDimensions& dim = featureDimensions();
+  const double W = placement.size.width, H = placement.size.height, D = placement.size.depth;
   std::vector<FeaturePart> parts;
-  const Local l = faceFrame(frame);
-  switch (kind) {
+  const Local l = own ? Local{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}
+                      : Local{placement.origin, placement.ex, placement.ey, placement.ez};
+  switch (placement.kind) {
     case FeatureKind::None: break;
     case FeatureKind::Door: {
       const double s = std::min(dim.doorStepHeight, H / 4);
@@ -122,30 +150,23 @@ std::vector<FeaturePart> featureParts(FeatureKind kind, const FeatureSize& size,
       break;
     }
     case FeatureKind::ChimneyPot: {
-      // Straight up, whatever the face's slope: x along the edge, z world up.
-      Vec3 ex(frame.along[0], frame.along[1], 0);
-      if (ex.norm() < 1e-12) ex = Vec3(1, 0, 0);
-      ex.normalize();
-      const Vec3 ez(0, 0, 1);
-      const Local p{frame.position, ex, OpenMesh::cross(ez, ex), ez};
       const double a = W / 2, b = D / 2, rim = dim.potRim;
       const double rh = std::min(dim.potRimHeight, H / 4);
-      // Reach down to the face under the whole footprint (rim included): on a face rising
-      // inward at dz/dw, the footprint's far side lies R dz/dw below the anchor's height.
-      const double horizontal = std::hypot(frame.normal[0], frame.normal[1]);
-      const double R = std::max(a, b) + rim;
-      const double sink = std::min(H, R * horizontal / std::max(std::abs(frame.normal[2]), 1e-9));
       const std::vector<Vec2> body = ellipseOutline(dim.potSides, a, b);
-      parts.push_back(prism("pot", "brick", p, body, -sink, H));
-      parts.push_back(ring("rim", "concrete", p, ellipseOutline(dim.potSides, a + rim, b + rim), body, H - rh, H));
+      parts.push_back(prism("pot", "brick", l, body, -placement.sink, H));
+      parts.push_back(ring("rim", "concrete", l, ellipseOutline(dim.potSides, a + rim, b + rim), body, H - rh, H));
       break;
     }
   }
   return parts;
 }
 
+std::vector<FeaturePart> featureParts(FeatureKind kind, const FeatureSize& size, const AnchorFrame& frame) {
+  return featureParts(featurePlacement(kind, size, frame));
+}
+
 void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionResult& result,
-                    std::vector<std::string>& warnings) {
+                    std::vector<std::string>& warnings, std::vector<FeaturePlacement>* apart) {
   for (const AnchorFrame& f : result.anchors) {
     if (f.source < 0 || f.source >= static_cast<int>(spec.anchors.size())) continue;
     const MeshAnchor& m = spec.anchors[f.source];
@@ -157,6 +178,10 @@ void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionRe
                          " is not placed: its edge is not in the active plan at " +
                          (m.repeat.kind == RepeatKind::Grid ? std::string("that height")
                                                             : "height " + std::to_string(spec.baseZ + m.anchor.height)));
+      continue;
+    }
+    if (apart) {
+      apart->push_back(featurePlacement(m.feature, m.size, f));
       continue;
     }
     const int tag = mesh.addTag(featureTag(m.feature));

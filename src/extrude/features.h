@@ -51,12 +51,28 @@ struct FeaturePart {
 // Nothing for FeatureKind::None.
 std::vector<FeaturePart> featureParts(FeatureKind kind, const FeatureSize& size, const AnchorFrame& frame);
 
+// Where a feature stands and what fixes its shape: the parts are built in the frame (origin,
+// ex, ey, ez; orthonormal, right-handed) from the kind, the size and, for a chimney pot, how far
+// it reaches below its anchor (`sink`, rounded up to the millimetre). Features equal in kind,
+// size and sink have equal parts in their own frames: a town writes them once (docs/export.md).
+struct FeaturePlacement {
+  FeatureKind kind = FeatureKind::None;
+  FeatureSize size;
+  double sink = 0;
+  Vec3 origin{0, 0, 0}, ex{1, 0, 0}, ey{0, 1, 0}, ez{0, 0, 1};
+};
+FeaturePlacement featurePlacement(FeatureKind kind, const FeatureSize& size, const AnchorFrame& frame);
+// The parts where the placement puts them, or with `own`, in the feature's own frame (the
+// placement's origin at 0 and its axes as x, y, z).
+std::vector<FeaturePart> featureParts(const FeaturePlacement& placement, bool own = false);
+
 // Tag of a feature's faces ("door", "window", "roof_window", "chimney_pot").
 std::string featureTag(FeatureKind kind);
 
 // Appends every instanced feature of the extrusion to `mesh` (its own vertices, tag and
-// materials); an instance whose anchor was not placed adds a warning naming the feature.
+// materials), or with `apart`, its placement there in place of its parts; an instance whose
+// anchor was not placed adds a warning naming the feature.
 void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionResult& result,
-                    std::vector<std::string>& warnings);
+                    std::vector<std::string>& warnings, std::vector<FeaturePlacement>* apart = nullptr);
 
 }  // namespace corbel::extrude

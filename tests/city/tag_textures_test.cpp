@@ -9,6 +9,8 @@
 #include "core/scene.h"
 #include "core/textures.h"
 
+#include "../common/glb_read.h"
+
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
@@ -63,30 +65,22 @@ tinygltf::Model loadGlb(const std::string& path) {
   return m;
 }
 
-std::vector<float> floats(const tinygltf::Model& m, int accessor, int components) {
-  const tinygltf::Accessor& a = m.accessors.at(accessor);
-  const tinygltf::BufferView& v = m.bufferViews.at(a.bufferView);
-  std::vector<float> out(a.count * components);
-  std::memcpy(out.data(), m.buffers.at(v.buffer).data.data() + v.byteOffset + a.byteOffset, out.size() * sizeof(float));
-  return out;
-}
-
-using NormalKey = std::tuple<int, int, int>;  // glTF normal × 1000, rounded
+using NormalKey = std::tuple<int, int, int>;  // glTF normal × 100, rounded (byte normals are within 0.005)
 
 struct Corner {
   Vec3 p;  // corbel's frame (Z up)
   Vec2 uv;
 };
 
-// The corners of a primitive, grouped by their face's normal.
-std::map<NormalKey, std::vector<Corner>> cornersByNormal(const tinygltf::Model& m, const tinygltf::Primitive& p) {
-  const auto pos = floats(m, p.attributes.at("POSITION"), 3), nrm = floats(m, p.attributes.at("NORMAL"), 3);
-  const auto uv = floats(m, p.attributes.at("TEXCOORD_0"), 2);
+// The corners of a primitive, placed (tests/common/glb_read.h), grouped by their face's normal.
+std::map<NormalKey, std::vector<Corner>> cornersByNormal(const corbel::test::WorldPrimitive& p) {
   std::map<NormalKey, std::vector<Corner>> out;
-  for (std::size_t i = 0; i < pos.size() / 3; ++i) {
-    const NormalKey key{int(std::lround(nrm[3 * i] * 1000)), int(std::lround(nrm[3 * i + 1] * 1000)),
-                        int(std::lround(nrm[3 * i + 2] * 1000))};
-    out[key].push_back({Vec3(pos[3 * i], -pos[3 * i + 2], pos[3 * i + 1]), Vec2(uv[2 * i], uv[2 * i + 1])});
+  // The vertices this primitive's triangles use (the textured materials share a vertex set).
+  for (std::size_t i : std::set<std::size_t>(p.indices.begin(), p.indices.end())) {
+    const auto& n = p.normals[i];
+    const NormalKey key{int(std::lround(n[0] * 100)), int(std::lround(n[1] * 100)), int(std::lround(n[2] * 100))};
+    const auto& q = p.positions[i];
+    out[key].push_back({Vec3(q[0], -q[2], q[1]), Vec2(p.uvs.at(i)[0], p.uvs.at(i)[1])});
   }
   return out;
 }
@@ -152,43 +146,47 @@ TEST(TagTextures, TaggedFacesShowTheirTextureAtTheirRepeatInTheGlb) {
   ASSERT_EQ(m.meshes.size(), 1u);
   const double a = 1 / std::sqrt(2.0), slope = 4 * std::sqrt(2.0);  // the roof rises 4 m over 4 m
   bool sawRoof = false, sawWalls = false;
-  for (const tinygltf::Primitive& p : m.meshes[0].primitives) {
+  const corbel::test::GlbFile file = corbel::test::readGlbFile((dir / "town.glb").string());
+  for (const corbel::test::WorldPrimitive& p : corbel::test::worldPrimitives(file)) {
     const std::string& name = m.materials.at(p.material).name;
     SCOPED_TRACE(name);
-    ASSERT_TRUE(p.attributes.count("TEXCOORD_0"));
-    const auto faces = cornersByNormal(m, p);
+    ASSERT_FALSE(p.uvs.empty());
+    // A corner lies within half a quantization step of where it was built: so far off its
+    // repeat's whole number.
+    const double off = 1e-5 + p.step;
+    const auto faces = cornersByNormal(p);
     auto expectSpan = [&](NormalKey n, double uMetres, double vMetres, double tile) {
       const auto it = faces.find(n);
       ASSERT_NE(it, faces.end()) << std::get<0>(n) << " " << std::get<1>(n) << " " << std::get<2>(n);
       const Vec2 s = span(it->second);
-      EXPECT_NEAR(s[0], uMetres / tile, 1e-4);
-      EXPECT_NEAR(s[1], vMetres / tile, 1e-4);
+      EXPECT_NEAR(s[0], uMetres / tile, 2 * off / tile);
+      EXPECT_NEAR(s[1], vMetres / tile, 2 * off / tile);
     };
     if (name == "timber (texture slate)") {
       sawRoof = true;
       // glTF normals are (x, z, -y) of corbel's: the south slope (0, -a, a) is (0, a, a).
-      expectSpan({0, 707, 707}, 12, slope, 1.5);   // south: 12 m of eaves, 4√2 m up the slope
-      expectSpan({0, 707, -707}, 12, slope, 1.5);  // north
-      expectSpan({707, 707, 0}, 8, slope, 1.5);    // east: a triangle on the 8 m end
-      expectSpan({-707, 707, 0}, 8, slope, 1.5);   // west
+      expectSpan({0, 71, 71}, 12, slope, 1.5);   // south: 12 m of eaves, 4√2 m up the slope
+      expectSpan({0, 71, -71}, 12, slope, 1.5);  // north
+      expectSpan({71, 71, 0}, 8, slope, 1.5);    // east: a triangle on the 8 m end
+      expectSpan({-71, 71, 0}, 8, slope, 1.5);   // west
       EXPECT_EQ(faces.size(), 4u);
       // On the south slope u runs along x and v up the slope, a (y + z) metres, flipped: by
       // hand, u·1.5 − x and v·1.5 + a (y + z) are whole repeats of 1.5 m at every corner.
-      for (const Corner& c : faces.at({0, 707, 707})) {
-        EXPECT_LT(offWhole(c.uv[0] - c.p[0] / 1.5), 1e-4);
-        EXPECT_LT(offWhole(c.uv[1] + a * (c.p[1] + c.p[2]) / 1.5), 1e-4);
+      for (const Corner& c : faces.at({0, 71, 71})) {
+        EXPECT_LT(offWhole(c.uv[0] - c.p[0] / 1.5), off / 1.5);
+        EXPECT_LT(offWhole(c.uv[1] + a * (c.p[1] + c.p[2]) / 1.5), 2 * off / 1.5);
       }
     } else if (name == "brick (texture brick)") {
       sawWalls = true;
       const double tile = materialTexture("brick")->metres;  // 1.28 m: the material's own
-      expectSpan({0, 0, 1000}, 12, 6, tile);                 // south wall
-      expectSpan({0, 0, -1000}, 12, 6, tile);                // north wall
-      expectSpan({1000, 0, 0}, 8, 6, tile);                  // east wall
-      expectSpan({-1000, 0, 0}, 8, 6, tile);                 // west wall
+      expectSpan({0, 0, 100}, 12, 6, tile);                  // south wall
+      expectSpan({0, 0, -100}, 12, 6, tile);                 // north wall
+      expectSpan({100, 0, 0}, 8, 6, tile);                   // east wall
+      expectSpan({-100, 0, 0}, 8, 6, tile);                  // west wall
       // The south wall: u = x, v = z flipped.
-      for (const Corner& c : faces.at({0, 0, 1000})) {
-        EXPECT_LT(offWhole(c.uv[0] - c.p[0] / tile), 1e-4);
-        EXPECT_LT(offWhole(c.uv[1] + c.p[2] / tile), 1e-4);
+      for (const Corner& c : faces.at({0, 0, 100})) {
+        EXPECT_LT(offWhole(c.uv[0] - c.p[0] / tile), off / tile);
+        EXPECT_LT(offWhole(c.uv[1] + c.p[2] / tile), off / tile);
       }
     }
   }

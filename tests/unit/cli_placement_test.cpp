@@ -3,6 +3,7 @@
 // building meshed for the file, vertex by vertex against the same building unplaced), and the
 // node's extras record the placement (corbel_placement).
 #include "cli_run.h"
+#include "../common/glb_read.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -17,7 +18,8 @@ using corbel::test::quote;
 using corbel::test::TempDir;
 
 struct Node {
-  std::vector<std::array<float, 3>> positions;  // glTF's frame: y up, so corbel's (x, y, z) is (x, z, −y)
+  std::vector<std::array<double, 3>> positions;  // glTF's frame: y up, so corbel's (x, y, z) is (x, z, −y)
+  double step = 0;                               // the quantization step (docs/export.md)
   tinygltf::Value extras;
 };
 
@@ -29,14 +31,13 @@ std::map<std::string, Node> readNodes(const std::string& path) {
   std::map<std::string, Node> out;
   for (const tinygltf::Node& n : m.nodes) {
     if (n.mesh < 0) continue;
-    Node& node = out[n.name];
-    node.extras = n.extras;
-    for (const tinygltf::Primitive& p : m.meshes.at(n.mesh).primitives) {
-      const tinygltf::Accessor& a = m.accessors.at(p.attributes.at("POSITION"));
-      const tinygltf::BufferView& v = m.bufferViews.at(a.bufferView);
-      const float* f = reinterpret_cast<const float*>(m.buffers.at(v.buffer).data.data() + v.byteOffset + a.byteOffset);
-      for (std::size_t i = 0; i < a.count; ++i) node.positions.push_back({f[3 * i], f[3 * i + 1], f[3 * i + 2]});
-    }
+    out[n.name].extras = n.extras;
+  }
+  // The vertices as a client places them (tests/common/glb_read.h: dequantized by the node).
+  for (const auto& p : corbel::test::worldPrimitives(corbel::test::readGlbFile(path))) {
+    Node& node = out[p.nodeName];
+    node.positions.insert(node.positions.end(), p.positions.begin(), p.positions.end());
+    node.step = p.step;
   }
   return out;
 }
@@ -65,23 +66,35 @@ TEST(CliPlacement, ExportWritesTheVerticesPlacedAndSaysHow) {
   ASSERT_EQ(placed.count("Box"), 1u);
   // The box: x −1..1, y −2..2, z 0..6, halved and turned: x 9..11, y 19.5..20.5, z 1..4; in
   // glTF (x, z, −y).
-  std::set<std::array<float, 3>> corners, seen;
-  for (float x : {9.0f, 11.0f})
-    for (float y : {19.5f, 20.5f})
-      for (float z : {1.0f, 4.0f}) corners.insert({x, z, -y});
-  for (const auto& p : placed.at("Box").positions) seen.insert(p);
+  // Each within half a quantization step along each axis.
+  std::set<std::array<double, 3>> corners, seen;
+  for (double x : {9.0, 11.0})
+    for (double y : {19.5, 20.5})
+      for (double z : {1.0, 4.0}) corners.insert({x, z, -y});
+  const double half = placed.at("Box").step / 2 + 1e-12;
+  ASSERT_GT(half, 1e-12);
+  for (const auto& p : placed.at("Box").positions) {
+    bool near = false;
+    for (const auto& c : corners)
+      if (std::abs(p[0] - c[0]) <= half && std::abs(p[1] - c[1]) <= half && std::abs(p[2] - c[2]) <= half) {
+        seen.insert(c);
+        near = true;
+      }
+    EXPECT_TRUE(near) << p[0] << " " << p[1] << " " << p[2];
+  }
   EXPECT_EQ(seen, corners);
-  // The tower: every vertex is the unplaced mesh's vertex, moved and turned (exact in floats
-  // up to the addition of the translation).
+  // The tower: every vertex is the unplaced mesh's vertex, moved and turned, each within half a
+  // quantization step of its own file's along each axis.
   const auto& a = placed.at("Tower").positions;
   const auto& b = unplaced.at("Tower").positions;
+  const double tol = (placed.at("Tower").step + unplaced.at("Tower").step) / 2 + 1e-5;
   ASSERT_EQ(a.size(), b.size());
   ASSERT_GT(a.size(), 100u);
   for (std::size_t i = 0; i < a.size(); ++i) {
     // Unplaced corbel point (x, y, z) = (b0, −b2, b1); placed (10 + b2, 20 + b0, 1 + b1) → glTF (10 + b2, 1 + b1, −20 − b0).
-    EXPECT_NEAR(a[i][0], 10 + b[i][2], 1e-4) << i;
-    EXPECT_NEAR(a[i][1], 1 + b[i][1], 1e-4) << i;
-    EXPECT_NEAR(a[i][2], -20 - b[i][0], 1e-4) << i;
+    EXPECT_NEAR(a[i][0], 10 + b[i][2], tol) << i;
+    EXPECT_NEAR(a[i][1], 1 + b[i][1], tol) << i;
+    EXPECT_NEAR(a[i][2], -20 - b[i][0], tol) << i;
   }
   // The extras say how, in corbel's frame; an unplaced node has no such entry.
   const tinygltf::Value& pl = placed.at("Box").extras.Get("corbel_placement");

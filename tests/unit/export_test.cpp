@@ -7,6 +7,7 @@
 #include "core/materials.h"
 #include "core/textures.h"
 #include "test_support.h"
+#include "../common/glb_read.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -15,7 +16,9 @@
 #include <tiny_gltf.h>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <sys/stat.h>
 #include <tuple>
 #include <cstring>
@@ -338,17 +341,6 @@ Glb loadGlb(const std::string& path) {
   return g;
 }
 
-// Reads accessor `index` of the model as a flat float or uint32 array.
-template <class T>
-std::vector<T> accessorData(const tinygltf::Model& m, int index, int components) {
-  const tinygltf::Accessor& a = m.accessors.at(index);
-  const tinygltf::BufferView& view = m.bufferViews.at(a.bufferView);
-  const auto& buffer = m.buffers.at(view.buffer).data;
-  std::vector<T> out(a.count * components);
-  std::memcpy(out.data(), buffer.data() + view.byteOffset + a.byteOffset, out.size() * sizeof(T));
-  return out;
-}
-
 TEST(Export, GlbLoadsWithNamesMaterialsTrianglesAndBounds) {
   TempDir dir;
   std::vector<Expected> expected;
@@ -372,59 +364,76 @@ TEST(Export, GlbLoadsWithNamesMaterialsTrianglesAndBounds) {
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(mat.pbrMetallicRoughness.baseColorFactor[k], c[k], 1e-6) << mat.name;
   }
 
+  // The geometry as a client places it (tests/common/glb_read.h): positions dequantized by the
+  // node's translation and scale, normals from bytes.
+  const corbel::test::GlbFile file = corbel::test::readGlbFile(dir.file("village.glb"));
+  EXPECT_EQ(file.json.at("extensionsRequired"), nlohmann::json::array({"KHR_mesh_quantization"}));
   std::size_t triangles = 0;
   double area = 0;
   std::map<std::string, const Expected*> byName;
   for (const auto& e : expected) byName[e.name] = &e;
   for (const tinygltf::Node& node : m.nodes) {
-    SCOPED_TRACE(node.name);
     ASSERT_TRUE(byName.count(node.name));
     const ObjectId id = static_cast<ObjectId>(node.extras.Get("corbel_object_id").Get<int>());
     EXPECT_EQ(s.objects().at(id).name, node.name);
     ASSERT_GE(node.mesh, 0);
-    const tinygltf::Mesh& mesh = m.meshes.at(node.mesh);
-    EXPECT_EQ(mesh.name, node.name);
-    std::size_t nodeTriangles = 0;
-    std::vector<double> lo(3, 1e300), hi(3, -1e300);
-    for (const tinygltf::Primitive& p : mesh.primitives) {
-      EXPECT_EQ(p.mode, TINYGLTF_MODE_TRIANGLES);
-      const auto& posAccessor = m.accessors.at(p.attributes.at("POSITION"));
-      ASSERT_EQ(posAccessor.minValues.size(), 3u);
+    EXPECT_EQ(m.meshes.at(node.mesh).name, node.name);
+  }
+  std::map<std::string, std::size_t> nodeTriangles;
+  std::map<std::string, std::pair<std::array<double, 3>, std::array<double, 3>>> bounds;
+  std::map<std::string, double> steps;
+  for (const corbel::test::WorldPrimitive& p : corbel::test::worldPrimitives(file)) {
+    SCOPED_TRACE(p.nodeName);
+    // Each object's positions are 16-bit integers, a step of at most 1 mm (its size / 65534).
+    const auto& accessor = file.json["accessors"][file.json["meshes"][p.mesh]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+    EXPECT_EQ(accessor["componentType"], 5122);
+    EXPECT_GT(p.step, 0);
+    EXPECT_LE(p.step, 1e-3);
+    steps[p.nodeName] = p.step;
+    ASSERT_EQ(p.indices.size() % 3, 0u);
+    nodeTriangles[p.nodeName] += p.indices.size() / 3;
+    auto& [lo, hi] = bounds.try_emplace(p.nodeName, std::array<double, 3>{1e300, 1e300, 1e300},
+                                        std::array<double, 3>{-1e300, -1e300, -1e300})
+                         .first->second;
+    for (const auto& q : p.positions)
       for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], posAccessor.minValues[k]);
-        hi[k] = std::max(hi[k], posAccessor.maxValues[k]);
+        lo[k] = std::min(lo[k], q[k]);
+        hi[k] = std::max(hi[k], q[k]);
       }
-      const auto pos = accessorData<float>(m, p.attributes.at("POSITION"), 3);
-      const auto nrm = accessorData<float>(m, p.attributes.at("NORMAL"), 3);
-      const auto idx = accessorData<std::uint32_t>(m, p.indices, 1);
-      ASSERT_EQ(idx.size() % 3, 0u);
-      nodeTriangles += idx.size() / 3;
-      for (std::size_t t = 0; t < idx.size(); t += 3) {
-        Vec3 v[3];
-        for (int c = 0; c < 3; ++c) {
-          ASSERT_LT(idx[t + c], pos.size() / 3);
-          v[c] = Vec3(pos[3 * idx[t + c]], pos[3 * idx[t + c] + 1], pos[3 * idx[t + c] + 2]);
-        }
-        const Vec3 cr = OpenMesh::cross(v[1] - v[0], v[2] - v[0]);
-        area += 0.5 * cr.norm();
-        // Each triangle faces the way its flat normal says.
-        const Vec3 n(nrm[3 * idx[t]], nrm[3 * idx[t] + 1], nrm[3 * idx[t] + 2]);
-        EXPECT_GT(OpenMesh::dot(cr, n), 0.0);
+    for (std::size_t t = 0; t < p.indices.size(); t += 3) {
+      Vec3 v[3];
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_LT(p.indices[t + c], p.positions.size());
+        const auto& q = p.positions[p.indices[t + c]];
+        v[c] = Vec3(q[0], q[1], q[2]);
       }
+      const Vec3 cr = OpenMesh::cross(v[1] - v[0], v[2] - v[0]);
+      area += 0.5 * cr.norm();
+      // Each triangle faces the way its flat normal says.
+      const auto& nq = p.normals[p.indices[t]];
+      EXPECT_GT(OpenMesh::dot(cr, Vec3(nq[0], nq[1], nq[2])), 0.0);
     }
-    EXPECT_EQ(nodeTriangles, byName[node.name]->triangles);
-    triangles += nodeTriangles;
-    // Y up: (x, y, z) -> (x, z, -y), so min = (lo.x, lo.z, -hi.y) and max = (hi.x, hi.z, -lo.y).
+  }
+  for (const auto& [name, e] : byName) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(nodeTriangles[name], e->triangles);
+    triangles += nodeTriangles[name];
+    // Y up: (x, y, z) -> (x, z, -y), so min = (lo.x, lo.z, -hi.y) and max = (hi.x, hi.z, -lo.y),
+    // each within half a quantization step.
+    ObjectId id = 0;
+    for (const auto& [oid, info] : s.objects())
+      if (info.name == name) id = oid;
     const corbel::BBox b = s.bounds(id);
-    const double wantLo[3] = {static_cast<float>(b.lo[0]), static_cast<float>(b.lo[2]), static_cast<float>(-b.hi[1])};
-    const double wantHi[3] = {static_cast<float>(b.hi[0]), static_cast<float>(b.hi[2]), static_cast<float>(-b.lo[1])};
+    const double wantLo[3] = {b.lo[0], b.lo[2], -b.hi[1]}, wantHi[3] = {b.hi[0], b.hi[2], -b.lo[1]};
+    const double tol = steps[name] / 2 + 1e-9 * 64;
     for (int k = 0; k < 3; ++k) {
-      EXPECT_EQ(lo[k], wantLo[k]) << "min " << k;
-      EXPECT_EQ(hi[k], wantHi[k]) << "max " << k;
+      EXPECT_NEAR(bounds[name].first[k], wantLo[k], tol) << "min " << k;
+      EXPECT_NEAR(bounds[name].second[k], wantHi[k], tol) << "max " << k;
     }
   }
   EXPECT_EQ(triangles, totals(expected).triangles);
-  EXPECT_NEAR(area, totals(expected).area, 1e-5 * totals(expected).area);
+  // Quantization moves each corner by at most half a step along each axis (under 0.5 mm).
+  EXPECT_NEAR(area, totals(expected).area, 1e-4 * totals(expected).area);
 }
 
 // OBJ is Y up unless asked (Blender, Godot and f3d read OBJ as Y up); PLY and OFF keep Z up
@@ -584,9 +593,10 @@ struct PrimData {
 std::map<std::tuple<int, int, int>, std::pair<Vec2, Vec2>> uvSpanByNormal(const PrimData& p) {
   std::map<std::tuple<int, int, int>, std::pair<Vec2, Vec2>> out;
   for (std::size_t i = 0; i < p.normals.size() / 3; ++i) {
-    const auto key = std::make_tuple(static_cast<int>(std::lround(p.normals[3 * i] * 1000)),
-                                     static_cast<int>(std::lround(p.normals[3 * i + 1] * 1000)),
-                                     static_cast<int>(std::lround(p.normals[3 * i + 2] * 1000)));
+    // Hundredths: the byte normals are within 0.005 of the true ones (0, ±0.6, ±0.8, ±1 here).
+    const auto key = std::make_tuple(static_cast<int>(std::lround(p.normals[3 * i] * 100)),
+                                     static_cast<int>(std::lround(p.normals[3 * i + 1] * 100)),
+                                     static_cast<int>(std::lround(p.normals[3 * i + 2] * 100)));
     const Vec2 uv(p.uvs[2 * i], p.uvs[2 * i + 1]);
     auto [it, fresh] = out.try_emplace(key, uv, uv);
     if (!fresh)
@@ -612,6 +622,7 @@ TEST(Export, GlbTexturesPerMaterialWithPlaneUvs) {
   corbel::exportScene(s, dir.file("textured.glb"), textured);
   const Glb g = loadGlb(dir.file("textured.glb"));
   ASSERT_TRUE(g.ok) << g.err;
+  const corbel::test::GlbFile file = corbel::test::readGlbFile(dir.file("textured.glb"));
   const tinygltf::Model& m = g.model;
 
   // One image and texture per textured material, decoded back to the generated texels.
@@ -672,9 +683,16 @@ TEST(Export, GlbTexturesPerMaterialWithPlaneUvs) {
       ASSERT_NE(uv, p.attributes.end());
       EXPECT_EQ(m.accessors.at(uv->second).count, m.accessors.at(p.attributes.at("POSITION")).count);
       EXPECT_EQ(m.accessors.at(uv->second).type, TINYGLTF_TYPE_VEC2);
+      // The vertices this primitive's triangles use (the material's primitives share a vertex set).
+      const auto normals = corbel::test::accessorValues(file, p.attributes.at("NORMAL"));
+      const auto uvs = corbel::test::accessorValues(file, uv->second);
+      std::set<std::size_t> used;
+      for (double i : corbel::test::accessorValues(file, p.indices)) used.insert(static_cast<std::size_t>(i));
       PrimData d;
-      d.normals = accessorData<float>(m, p.attributes.at("NORMAL"), 3);
-      d.uvs = accessorData<float>(m, uv->second, 2);
+      for (std::size_t i : used) {
+        for (int k = 0; k < 3; ++k) d.normals.push_back(static_cast<float>(normals[3 * i + k]));
+        for (int k = 0; k < 2; ++k) d.uvs.push_back(static_cast<float>(uvs[2 * i + k]));
+      }
       const double tileM = corbel::materialTexture(name)->metres;
       const auto spans = uvSpanByNormal(d);
       auto expectSpan = [&](std::tuple<int, int, int> normal, double uMetres, double vMetres) {
@@ -685,13 +703,13 @@ TEST(Export, GlbTexturesPerMaterialWithPlaneUvs) {
       };
       // glTF is Y up: corbel's (x, y, z) normal is (x, z, -y) there.
       if (mesh.name == "Hall") {           // the 18 x 10 x 7 m box
-        expectSpan({0, 0, 1000}, 18, 7);   // south wall, normal -y
-        expectSpan({0, 0, -1000}, 18, 7);  // north wall
-        expectSpan({1000, 0, 0}, 10, 7);   // east wall
-        expectSpan({-1000, 0, 0}, 10, 7);  // west wall
-        expectSpan({0, 1000, 0}, 18, 10);  // the flat top, in plan
+        expectSpan({0, 0, 100}, 18, 7);   // south wall, normal -y
+        expectSpan({0, 0, -100}, 18, 7);  // north wall
+        expectSpan({100, 0, 0}, 10, 7);   // east wall
+        expectSpan({-100, 0, 0}, 10, 7);  // west wall
+        expectSpan({0, 100, 0}, 18, 10);  // the flat top, in plan
       } else if (mesh.name == "Roof") {
-        expectSpan({0, 600, 800}, 4, 5);  // normal (0, -0.8, 0.6) in corbel's frame
+        expectSpan({0, 60, 80}, 4, 5);  // normal (0, -0.8, 0.6) in corbel's frame
       }
       for (float v : d.uvs) EXPECT_TRUE(std::isfinite(v));
     }
@@ -716,6 +734,104 @@ TEST(Export, PlaneUvRunsAlongTheWallAndUpTheSlope) {
   const corbel::MaterialTexture* brick = corbel::materialTexture("brick");
   ASSERT_NE(brick, nullptr);
   EXPECT_LE(brick->size, 256);
+}
+
+}  // namespace
+
+namespace {
+
+// Two quads in one plane sharing an edge, and a third standing on the far edge: the plane's six
+// corners are six vertices (the shared edge's two welded), the standing quad's four its own
+// (another normal, though two positions are the plane's), all indexed by 16 bits.
+TEST(Export, GlbWeldsCornersThatShareANormal) {
+  TempDir dir;
+  MeshData m;
+  const int stone = m.addMaterial("stone");
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(2, 1, 0),
+                        Vec3(2, 0, 1), Vec3(2, 1, 1)})
+    m.addPoint(p);
+  m.addFace({0, 1, 4, 3}, 0, stone);
+  m.addFace({1, 2, 5, 4}, 0, stone);
+  m.addFace({5, 2, 6, 7}, 0, stone);  // standing on the edge x = 2, facing +x
+  Scene s;
+  s.replaceObject(1, Kind::Shell, "Fold", m);
+  corbel::exportScene(s, dir.file("fold.glb"));
+  const corbel::test::GlbFile g = corbel::test::readGlbFile(dir.file("fold.glb"));
+  const auto& prim = g.json.at("meshes").at(0).at("primitives");
+  ASSERT_EQ(prim.size(), 1u);
+  EXPECT_EQ(g.json["accessors"][prim[0]["attributes"]["POSITION"].get<int>()]["count"], 6 + 4);
+  EXPECT_EQ(g.json["accessors"][prim[0]["indices"].get<int>()]["componentType"], 5123);
+  EXPECT_EQ(g.json["accessors"][prim[0]["indices"].get<int>()]["count"], 3 * 6);
+}
+
+// An object wider than 65 m keeps float positions (16 bits would step more than 1 mm); one with
+// more than 65,535 vertices gets 32-bit indices.
+TEST(Export, GlbFallsBackToFloatsAndWideIndices) {
+  TempDir dir;
+  Scene s;
+  s.replaceObject(1, Kind::Site, "Field", handBox(Vec3(0, 0, 0), Vec3(200, 10, 1), "stone"));
+  // 22,000 triangles apart from each other: 66,000 corners that cannot weld.
+  MeshData fan;
+  const int stone = fan.addMaterial("stone");
+  for (int i = 0; i < 22000; ++i) {
+    const double x = 0.3 * (i % 100), y = 0.25 * (i / 100), tilt = 0.01 * (1 + i % 50);  // 30 x 55 m
+    const int a = fan.addPoint(Vec3(x, y, 0)), b = fan.addPoint(Vec3(x + 0.2, y, tilt)),
+              c = fan.addPoint(Vec3(x, y + 0.2, 0.001 * (i % 7)));
+    fan.addFace({a, b, c}, 0, stone);
+  }
+  s.replaceObject(2, Kind::Shell, "Scales", fan);
+  corbel::exportScene(s, dir.file("wide.glb"));
+  const corbel::test::GlbFile g = corbel::test::readGlbFile(dir.file("wide.glb"));
+  for (const auto& node : g.json.at("nodes")) {
+    const auto& p = g.json["meshes"][node["mesh"].get<int>()]["primitives"][0];
+    const auto& pos = g.json["accessors"][p["attributes"]["POSITION"].get<int>()];
+    const auto& idx = g.json["accessors"][p["indices"].get<int>()];
+    if (node["name"] == "Field") {
+      EXPECT_EQ(pos["componentType"], 5126);
+      EXPECT_FALSE(node.contains("scale"));
+      EXPECT_EQ(pos["max"][0], 200.0);
+    } else {
+      EXPECT_EQ(pos["componentType"], 5122);
+      EXPECT_EQ(pos["count"], 66000);
+      EXPECT_EQ(idx["componentType"], 5125);
+    }
+  }
+  std::size_t triangles = 0;
+  for (const auto& p : corbel::test::worldPrimitives(g)) triangles += p.indices.size() / 3;
+  EXPECT_EQ(triangles, 12u + 22000u);
+}
+
+}  // namespace
+
+namespace {
+
+// ExportOptions::compress: meshoptimizer's decoder gives back the same placed triangles; other
+// formats refuse it.
+TEST(Export, GlbCompressedDecodesToTheSameTriangles) {
+  TempDir dir;
+  const Scene s = testScene();
+  corbel::ExportOptions packed;
+  packed.compress = true;
+  corbel::exportScene(s, dir.file("plain.glb"));
+  corbel::exportScene(s, dir.file("packed.glb"), packed);
+  auto triangles = [](const std::string& path) {
+    std::multiset<std::array<std::array<double, 3>, 3>> out;
+    for (const auto& p : corbel::test::worldPrimitives(corbel::test::readGlbFile(path)))
+      for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+        std::array<std::array<double, 3>, 3> tri{p.positions[p.indices[t]], p.positions[p.indices[t + 1]],
+                                                 p.positions[p.indices[t + 2]]};
+        while (tri[0] != std::min({tri[0], tri[1], tri[2]})) tri = {tri[1], tri[2], tri[0]};  // same winding
+        out.insert(tri);
+      }
+    return out;
+  };
+  const auto a = triangles(dir.file("plain.glb")), b = triangles(dir.file("packed.glb"));
+  EXPECT_EQ(a.size(), totals(std::vector<Expected>{}).triangles + 12 + 16 + 20 + 12);
+  EXPECT_EQ(a, b);
+  const nlohmann::json j = corbel::test::readGlbFile(dir.file("packed.glb")).json;
+  EXPECT_EQ(j["extensionsRequired"], nlohmann::json::array({"EXT_meshopt_compression", "KHR_mesh_quantization"}));
+  EXPECT_THROW(corbel::exportScene(s, dir.file("packed.obj"), packed), corbel::Error);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("packed.obj")));
 }
 
 }  // namespace
