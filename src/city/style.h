@@ -168,7 +168,7 @@ struct StyledBuilding {
 StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed,
                              const BuildingOverride* override = nullptr);
 
-// The kernel's mitre limit (extrude/stages.cpp, checkMitre): an overhang may push a corner out by
+// The kernel's mitre limit (extrude/recursive_extrusion.cpp, checkMitre): an overhang may push a corner out by
 // at most this many times its own size.
 inline constexpr double kMitreLimit = 20.0;
 // How far an outward move of ka on the edge into a corner and kb on the edge out of it pushes the
