@@ -195,14 +195,15 @@ void declareStatics(CLI::App& app, Requests& requests) {
       app, "statics",
       "Masonry statics (docs/statics.md): does a model stand in compression and friction alone?",
       "statics PROJECT.corbel analyses each masonry object of the project with its own parameters and bounds,\n"
-      "as 'statics example' does an example. With --scene it analyses the project as built: every connected\n"
+      "as 'statics example' does an example, and each extrusion with a masonry section as its walls coursed in\n"
+      "stone carrying its roof (free by default: thickness). With --scene it analyses the project as built: every connected\n"
       "piece of its block objects (or of the objects --structural names, any kind) a rigid block, convex or\n"
       "not, weighing by its material; pieces tagged \"ground\" fixed, else a ground plane under the lowest\n"
       "point; --nonstructural objects carried as loads.");
   c->require_subcommand(0, 1);
   StaticsProjectRequest& r = requests.add<StaticsProjectRequest>(c);
   positional(*c, "PROJECT", r.project, "A project (.corbel): its masonry objects, or with --scene its geometry.");
-  text(*c, "--object", r.object, "NAME", "Only this masonry object (--render and --landscape draw one).");
+  text(*c, "--object", r.object, "NAME", "Only this masonry object or stone extrusion (--render and --landscape draw one).");
   declareModelOptions(*c, r.model);
   declareAnalysis(*c, r.analysis);
   CLI::Option* scene = c->add_flag("--scene", r.scene, "Analyse the built geometry instead of the masonry objects.");
@@ -251,10 +252,10 @@ void declareSimulate(CLI::App& app, Requests& requests) {
       "scaled to the model), blocks removed or broken along a 45° crack, a stone dropped on a block.\n"
       "Prints a JSON summary (largest displacement per block, fallen blocks); --frames writes PNGs.");
   SimulateRequest& r = requests.add<SimulateRequest>(c);
-  CLI::Option* project = positional(*c, "PROJECT", r.project, "A project with one masonry object (or --object).");
+  CLI::Option* project = positional(*c, "PROJECT", r.project, "A project with one masonry object or stone extrusion (or --object).");
   CLI::Option* example = text(*c, "--example", r.example, "NAME", "One of the statics examples instead of a project.");
   example->excludes(project);
-  text(*c, "--object", r.object, "NAME", "The project's masonry object to simulate.")->excludes(example);
+  text(*c, "--object", r.object, "NAME", "The project's masonry object or stone extrusion to simulate.")->excludes(example);
   addRepeated(*c, "--set", r.sets, "Set a parameter of the model.")->type_name("NAME=V");
   number(*c, "--seconds", r.seconds, 0, 1e5, "S", "How long to simulate.");
   text(*c, "--shake", r.shake, "V|paper", "A ground shake of V m/s along x, or the paper's.");

@@ -10,6 +10,7 @@
 #include "sim/session.h"
 #include "statics/examples.h"
 #include "statics/kernel.h"
+#include "compose/stone_extrusion.h"
 #include "statics/thresholds.h"
 
 #include <nlohmann/json.hpp>
@@ -68,8 +69,11 @@ Model modelFrom(const SimulateRequest& r) {
   for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << path << ": " << w << "\n";
   const std::string& only = r.object;
   std::vector<const DocObject*> masonry;
-  for (const DocObject& o : p.document.objects)
-    if (std::holds_alternative<MasonrySpec>(o.spec) && (only.empty() || o.name == only)) masonry.push_back(&o);
+  for (const DocObject& o : p.document.objects) {
+    const auto* e = std::get_if<ExtrusionSpec>(&o.spec);
+    if ((std::holds_alternative<MasonrySpec>(o.spec) || (e && e->masonry)) && (only.empty() || o.name == only))
+      masonry.push_back(&o);
+  }
   if (masonry.empty())
     throw Error(path + (only.empty() ? ": not a masonry project (it has no masonry object to simulate)"
                                      : ": no masonry object named \"" + only + "\""));
@@ -77,6 +81,20 @@ Model modelFrom(const SimulateRequest& r) {
     std::string names;
     for (const DocObject* o : masonry) names += (names.empty() ? "\"" : ", \"") + o->name + "\"";
     throw Error(path + ": several masonry objects (" + names + "); choose one with --object NAME");
+  }
+  if (const auto* e = std::get_if<ExtrusionSpec>(&masonry[0]->spec)) {
+    // An extrusion built in stone: its walls coursed, loaded by its roof (point loads).
+    statics::ParametricModel model;
+    try {
+      model = statics::stoneModel(*e);
+    } catch (const InputError& err) {
+      throw InputError(masonry[0]->name + ": extrusion." + err.where, err.reason);
+    }
+    statics::ParameterSet values = model.parameters;
+    applySets(r, values);
+    m.assembly = model.build(values);
+    m.label = masonry[0]->name;
+    return m;
   }
   const auto& spec = std::get<MasonrySpec>(masonry[0]->spec);
   statics::ParametricModel model;

@@ -16,6 +16,7 @@
 #include "statics/kernel.h"
 #include "statics/scene_blocks.h"
 #include "statics/search.h"
+#include "compose/stone_extrusion.h"
 #include "statics/thresholds.h"
 
 #include <nlohmann/json.hpp>
@@ -109,7 +110,10 @@ void drawPictures(const Pictures& pictures, const MasonrySpec& base, const stati
   spec.friction = options.friction;
   spec.kern = options.kernShrink;
   if (!pictures.render.empty()) {
-    const editor::MasonryView view = editor::analyseMasonry(spec, options);
+    // A masonry object's view comes from its spec; an extrusion in stone has none.
+    const editor::MasonryView view = model.name == statics::kStoneModelName
+                                         ? editor::analyseModel(model, values, options)
+                                         : editor::analyseMasonry(spec, options);
     if (!view.error.empty()) throw Error(view.error);
     render::HeadlessContext context;
     render::writePng(renderMasonryView(view, pictures.width, pictures.height), pictures.render);
@@ -259,6 +263,12 @@ int exampleCommand(const StaticsExampleRequest& r) {
   return runModel(r.model, r.analysis, statics::exampleByName(r.name), {}, base, "");
 }
 
+// A masonry object, or an extrusion with a masonry section (built in stone).
+bool isMasonry(const DocObject& o) {
+  if (const auto* e = std::get_if<ExtrusionSpec>(&o.spec)) return e->masonry.has_value();
+  return std::holds_alternative<MasonrySpec>(o.spec);
+}
+
 // statics PROJECT: every masonry object of the project (or the one --object names), with its
 // own parameters, free bounds, friction and kern (core/masonry_spec.h).
 int projectCommand(const StaticsProjectRequest& r) {
@@ -269,15 +279,26 @@ int projectCommand(const StaticsProjectRequest& r) {
   if (!r.model.render.empty() || !r.model.landscape.empty()) {
     int matching = 0;
     for (const DocObject& o : p.document.objects)
-      matching += std::holds_alternative<MasonrySpec>(o.spec) && (only.empty() || o.name == only);
+      matching += isMasonry(o) && (only.empty() || o.name == only);
     if (matching > 1)
       throw UsageError("statics: --render and --landscape draw one masonry object and the project has " +
                        std::to_string(matching) + "; name one with --object");
   }
   int ran = 0, code = 0;
   for (const DocObject& o : p.document.objects) {
+    if (!only.empty() && o.name != only) continue;
+    if (const auto* e = std::get_if<ExtrusionSpec>(&o.spec); e && e->masonry) {
+      try {
+        const statics::ParametricModel model = statics::stoneModel(*e);
+        code = std::max(code, runModel(r.model, r.analysis, model, {}, MasonrySpec{}, o.name));
+      } catch (const InputError& err) {
+        throw InputError(o.name + ": extrusion." + err.where, err.reason);
+      }
+      ++ran;
+      continue;
+    }
     const auto* spec = std::get_if<MasonrySpec>(&o.spec);
-    if (!spec || (!only.empty() && o.name != only)) continue;
+    if (!spec) continue;
     std::vector<statics::FreeParameter> free;
     for (const MasonryFree& f : spec->free) free.push_back({f.name, f.lo, f.hi});
     try {
@@ -288,7 +309,9 @@ int projectCommand(const StaticsProjectRequest& r) {
     ++ran;
   }
   if (ran == 0)
-    throw Error(only.empty() ? "the project has no masonry object" : "the project has no masonry object named \"" + only + "\"");
+    throw Error(only.empty() ? "the project has no masonry object (nor an extrusion with a masonry section)"
+                             : "the project has no masonry object (nor an extrusion with a masonry section) named \"" +
+                                   only + "\"");
   return code;
 }
 

@@ -15,14 +15,28 @@ namespace corbel::cli {
 
 render::Image renderMasonryView(const editor::MasonryView& view, int width, int height) {
   if (!view.error.empty()) throw Error("cannot draw the masonry model: " + view.error);
-  Document doc;
-  doc.add("masonry", view.spec);
   Scene scene;
-  SceneSync sync;
-  statics::registerKernel(sync);
-  sync.update(doc, scene);
-  for (const auto& [id, st] : sync.status())
-    if (!st.error.empty()) throw Error("cannot build the masonry model: " + st.error);
+  if (view.fromModel) {
+    // No spec to build (an extrusion in stone): the view's own blocks, in stone.
+    MeshData mesh;
+    const int stone = mesh.addMaterial("stone");
+    const int block = mesh.addTag("block"), ground = mesh.addTag("ground");
+    for (std::size_t b = 0; b < view.blockFaces.size(); ++b)
+      for (const auto& face : view.blockFaces[b]) {
+        std::vector<int> loop;
+        for (const Vec3& p : face) loop.push_back(mesh.addPoint(p));
+        mesh.addFace(std::move(loop), view.fixed[b] ? ground : block, stone);
+      }
+    scene.replaceObject(1, Kind::Block, "stone", mesh);
+  } else {
+    Document doc;
+    doc.add("masonry", view.spec);
+    SceneSync sync;
+    statics::registerKernel(sync);
+    sync.update(doc, scene);
+    for (const auto& [id, st] : sync.status())
+      if (!st.error.empty()) throw Error("cannot build the masonry model: " + st.error);
+  }
 
   const editor::MasonryPicture picture = editor::masonryPicture(view);
   BBox box;

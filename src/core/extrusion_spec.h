@@ -2,6 +2,7 @@
 // The data of a procedural extrusion (Kelly & Wonka, Sec. 4.1), as the Document stores it.
 // The kernel that turns it into a shell lives in src/extrude.
 #include "core/geometry.h"
+#include "core/stone_walls.h"
 
 #include <cstddef>
 #include <optional>
@@ -153,6 +154,7 @@ struct ExtrusionSpec {
   std::vector<PlanStep> steps;
   std::vector<OffsetEvent> offsets;
   std::vector<MeshAnchor> anchors;
+  std::optional<StoneWalls> masonry;  // built in stone for the statics kernel (off when absent)
   bool operator==(const ExtrusionSpec&) const = default;
 };
 

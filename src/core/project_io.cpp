@@ -476,6 +476,22 @@ TownSpec townFromJson(const JsonReader& r, const std::string& folder, std::vecto
   return t;
 }
 
+ojson stoneToJson(const StoneWalls& m) {
+  ojson j;
+  j["course_height"] = m.courseHeight;
+  j["block_length"] = m.blockLength;
+  j["thickness"] = m.thickness;
+  j["density"] = m.density;
+  j["covering_weight"] = m.coveringWeight;
+  j["ties"] = m.ties;
+  if (!m.openings.empty()) {
+    ojson o = ojson::object();
+    for (const StoneOpening& op : m.openings) o[op.anchor] = openingHeadName(op.head);
+    j["openings"] = std::move(o);
+  }
+  return j;
+}
+
 ojson extrusionToJson(const ExtrusionSpec& e) {
   ojson j;
   j["material"] = e.material;
@@ -595,12 +611,48 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
     }
     j["anchors"] = std::move(anchors);
   }
+  if (e.masonry) j["masonry"] = stoneToJson(*e.masonry);
   return j;
+}
+
+StoneWalls stoneFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
+  r.expectObject();
+  for (auto& k : r.unknownKeys({"course_height", "block_length", "thickness", "density", "covering_weight", "ties", "openings"}))
+    warnings.push_back(k + ": unknown key kept");
+  StoneWalls m;
+  auto length = [&](const char* key, double& out) {
+    if (auto v = r.find(key)) {
+      out = v->number(0.0, 1000.0);
+      if (!(out > 0)) v->fail("must be greater than 0 and at most 1000 m");
+    }
+  };
+  length("course_height", m.courseHeight);
+  length("block_length", m.blockLength);
+  length("thickness", m.thickness);
+  if (auto v = r.find("density")) {
+    m.density = v->number(0.0, 1e5);
+    if (!(m.density > 0)) v->fail("must be greater than 0 and at most 100000 kg/m³");
+  }
+  if (auto v = r.find("covering_weight")) m.coveringWeight = v->number(0.0, 1e6);
+  if (auto v = r.find("ties")) m.ties = v->boolean();
+  if (auto o = r.find("openings")) {
+    o->expectObject();
+    if (o->raw().size() > limits::kMaxSteps) o->fail("more openings than the limit of " + std::to_string(limits::kMaxSteps));
+    for (auto it = o->raw().begin(); it != o->raw().end(); ++it) {
+      const JsonReader v = o->member(it.key(), o->path() + "." + it.key());
+      StoneOpening op;
+      op.anchor = it.key();
+      const std::string name = v.string(32);
+      if (!openingHeadFromName(name, op.head)) v.fail("expected \"lintel\" or \"flat_arch\", found \"" + name + "\"");
+      m.openings.push_back(std::move(op));
+    }
+  }
+  return m;
 }
 
 ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles", "steps", "offsets", "anchors"}))
+  for (auto& k : r.unknownKeys({"material", "roof_material", "base", "priority", "plan", "profiles", "steps", "offsets", "anchors", "masonry"}))
     warnings.push_back(k + ": unknown key kept");
   ExtrusionSpec e;
   if (auto v = r.find("material")) e.material = v->string(limits::kMaxNameLength);
@@ -821,6 +873,7 @@ ExtrusionSpec extrusionFromJson(const JsonReader& r, std::vector<std::string>& w
     const auto colon = problem->find(": ");
     throw InputError(r.path() + "." + problem->substr(0, colon), problem->substr(colon + 2));
   }
+  if (auto m = r.find("masonry")) e.masonry = stoneFromJson(*m, warnings);
   return e;
 }
 

@@ -95,6 +95,20 @@ MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptio
   return view;
 }
 
+MasonryView analyseModel(const statics::ParametricModel& model, const statics::ParameterSet& values,
+                         const statics::AnalysisOptions& options, Progress* progress) {
+  MasonryView view;
+  view.fromModel = true;
+  view.spec.friction = options.friction;
+  view.spec.kern = options.kernShrink;
+  analyseInto(view, options, progress, [&] {
+    view.parameters = values.all();
+    view.suggestedFree = model.suggestedFree;
+    return model.build(values);
+  });
+  return view;
+}
+
 std::vector<Verdict> staticsVerdicts(const MasonryView& view) {
   std::vector<Verdict> out;
   if (!view.error.empty()) return out;

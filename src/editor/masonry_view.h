@@ -38,6 +38,7 @@ struct MasonryView {
   int sceneLoads = 0;             // nonstructural pieces carried as point loads
   double sceneLoadWeight = 0;     // their weight, N
   bool groundPlaneAdded = false;  // no piece was tagged "ground": a ground slab was added
+  bool fromModel = false;         // set by analyseModel: `spec` does not describe the blocks
 };
 
 // Builds and analyses the spec's model with its friction and kern. A model that cannot be
@@ -47,6 +48,11 @@ MasonryView analyseMasonry(const MasonrySpec& spec, Progress* progress = nullptr
 // The same with analysis settings of the caller's (the CLI's --friction-sides and overrides).
 MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptions& options,
                            Progress* progress = nullptr);
+
+// The analysis of a parametric model at `values` (an extrusion built in stone, which has no
+// MasonrySpec; compose/stone_extrusion.h), as the same view with `spec` left default.
+MasonryView analyseModel(const statics::ParametricModel& model, const statics::ParameterSet& values,
+                         const statics::AnalysisOptions& options, Progress* progress = nullptr);
 
 // The analysis of the blocks of a Scene (statics/scene_blocks.h: every connected piece of the
 // objects of kind Block one block with its material's density, pieces tagged "ground" fixed,

@@ -118,14 +118,12 @@ Session::Session(statics::Assembly design, SimSettings settings) : design_(std::
   for (const statics::Block& b : design_.blocks)
     for (const Vec3& v : b.vertices) box.add(v);
   const auto props = statics::validateAssembly(design_, statics::lengthTolerance(box));
-  // Bullet's bodies here are convex hulls, and loads act at the centroid (baseGravity): a
-  // non-convex block or a point load would be simulated as something else, so refuse them.
+  // Bullet's bodies here are convex hulls: a non-convex block would be simulated as something
+  // else, so refuse it. Point loads act where they are (applyPointLoads).
   for (std::size_t i = 0; i < design_.blocks.size(); ++i) {
     const statics::Block& b = design_.blocks[i];
     const std::string who = "block " + std::to_string(i) + (b.name.empty() ? "" : " \"" + b.name + "\"");
     if (!props[i].convex) throw Error("simulate: " + who + " is not convex; the simulation takes convex blocks only");
-    if (!b.pointLoads.empty())
-      throw Error("simulate: " + who + " carries point loads; the simulation takes loads at the centroid only");
   }
   for (const statics::Block& b : design_.blocks) mass_.push_back(sim::massProperties(b));
   reset();
@@ -205,9 +203,24 @@ void Session::applyGravity() {
   }
 }
 
+void Session::applyPointLoads() {
+  // A point load is a fixed force in the world at a point of the block: the point moves with the
+  // block, the force keeps its direction (a roof's weight and thrust). Bullet clears applied
+  // forces after each step, so they are applied again before every step.
+  for (std::size_t i = 0; i < design_.blocks.size(); ++i) {
+    const statics::Block& b = design_.blocks[i];
+    if (b.fixed || removed_[i] || b.pointLoads.empty()) continue;
+    btRigidBody* body = world_->bodies[i].get();
+    const btTransform motion = body->getWorldTransform() * world_->designFrames[i].inverse();
+    for (const statics::PointLoad& l : b.pointLoads)
+      body->applyForce(bt(l.force), motion * bt(l.at) - body->getCenterOfMassPosition());
+  }
+}
+
 void Session::step(int steps) {
   for (int k = 0; k < steps; ++k) {
     applyGravity();
+    applyPointLoads();
     // maxSubSteps = 0: exactly one internal step of the given length, no interpolation.
     world_->world.stepSimulation(settings_.timeStep, 0, settings_.timeStep);
     ++steps_;

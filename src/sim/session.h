@@ -123,6 +123,7 @@ class Session {
   struct World;
   void build();
   void applyGravity();
+  void applyPointLoads();
   void readPoses();
   void takeOut(int block, const char* what);
 

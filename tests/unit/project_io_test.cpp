@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <random>
 #include <set>
@@ -1070,4 +1071,40 @@ TEST(ProjectIoErrors, TownFaultsNameTheirPath) {
   const auto w = corbel::parseProject(withTown(R"("footprints": "f.geojson", "style": "s.json", "colour": 1)"));
   ASSERT_EQ(w.warnings.size(), 1u);
   EXPECT_EQ(w.warnings[0], "objects[0].town.colour: unknown key kept");
+}
+
+// An extrusion's masonry section (core/stone_walls.h): read with its defaults, written back
+// as read, a key this build does not know kept with a warning, bad values refused at their path.
+TEST(ProjectIo, ExtrusionMasonrySection) {
+  const std::string profiles = R"("profiles": [{"name": "hip", "points": [[0, 0], [0, 3], [2, 5]]}])";
+  const std::string plan = R"(, "plan": {"loops": [[[0, 0], [4, 0], [4, 4], [0, 4]]]})";
+  const corbel::LoadedProject p = corbel::parseProject(withExtrusion(
+      profiles + plan +
+      R"(, "masonry": {"thickness": 0.6, "ties": true, "mortar": "lime", "openings": {"door": "flat_arch"}})"));
+  const auto& e = std::get<corbel::ExtrusionSpec>(p.document.objects.at(0).spec);
+  ASSERT_TRUE(e.masonry.has_value());
+  EXPECT_EQ(e.masonry->thickness, 0.6);
+  EXPECT_TRUE(e.masonry->ties);
+  EXPECT_EQ(e.masonry->courseHeight, 0.4);      // defaults
+  EXPECT_EQ(e.masonry->coveringWeight, 600.0);
+  ASSERT_EQ(e.masonry->openings.size(), 1u);
+  EXPECT_EQ(e.masonry->openings[0].anchor, "door");
+  EXPECT_EQ(e.masonry->openings[0].head, corbel::OpeningHead::FlatArch);
+  EXPECT_NE(std::find(p.warnings.begin(), p.warnings.end(), "objects[0].extrusion.masonry.mortar: unknown key kept"),
+            p.warnings.end());
+  const std::string saved = corbel::serializeProject(p.document);
+  const corbel::LoadedProject again = corbel::parseProject(saved);
+  EXPECT_EQ(std::get<corbel::ExtrusionSpec>(again.document.objects.at(0).spec), e);
+  EXPECT_EQ(nlohmann::json::parse(saved)["objects"][0]["extrusion"]["masonry"]["mortar"], "lime");
+  // Without the section, none is written.
+  const corbel::LoadedProject plain = corbel::parseProject(withExtrusion(profiles + plan));
+  EXPECT_FALSE(std::get<corbel::ExtrusionSpec>(plain.document.objects.at(0).spec).masonry.has_value());
+  EXPECT_EQ(corbel::serializeProject(plain.document).find("masonry"), std::string::npos);
+
+  EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "masonry": {"thickness": 0})"),
+               "objects[0].extrusion.masonry.thickness", "must be greater than 0 and at most 1000 m");
+  EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "masonry": {"openings": {"door": "gothic"}})"),
+               "objects[0].extrusion.masonry.openings.door", R"(expected "lintel" or "flat_arch", found "gothic")");
+  EXPECT_FAULT_CONTAINS(withExtrusion(profiles + plan + R"(, "masonry": {"ties": 1})"), "objects[0].extrusion.masonry.ties",
+               "expected true or false");
 }

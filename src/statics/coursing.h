@@ -1,0 +1,76 @@
+#pragma once
+// Walls laid in courses of stone: a plan polyline of wall faces becomes rigid blocks in running
+// bond, bonded at the corners, with openings under lintels or flat arches (the wall template of
+// Whiting et al. 2009, Sec. 2, generalised from one straight wall to a plan). The blocks feed
+// the statics kernel (model.h); loads on the wall heads act where the roof bears.
+#include "core/stone_walls.h"
+#include "statics/model.h"
+
+#include <string>
+#include <vector>
+
+namespace corbel::statics {
+
+// An opening through the wall of one plan edge.
+struct WallOpening {
+  std::string name;              // for messages
+  int edge = 0;                  // the plan edge whose wall it pierces
+  double from = 0.0, to = 1.0;   // m along the edge's outer face, from its first corner
+  double bottom = 0.0, top = 1.0;  // m above the wall's foot; snapped to the nearest course joints
+  OpeningHead head = OpeningHead::Lintel;
+};
+
+struct CoursingSpec {
+  // The walls' outer faces: corners counter-clockwise seen from above, each wall lying on the
+  // left of its edge (inside the plan). Every corner of a closed plan must turn left (convex).
+  std::vector<Vec2> plan;
+  bool closed = true;          // false: an open polyline whose two ends are free wall ends
+  double base = 0.0;           // z of the wall's foot
+  double height = 3.0;         // m
+  double courseHeight = 0.4;   // the height is cut into round(height / courseHeight) courses
+  double blockLength = 0.8;    // odd courses are shifted by half a block (running bond)
+  double thickness = 0.5;
+  double density = 2400.0;
+  std::vector<WallOpening> openings;
+};
+
+// A top-course block's share of one edge's wall head: the stretch [from, to] (m along the edge's
+// outer face) it carries.
+struct HeadSpan {
+  int block = -1;
+  int edge = -1;
+  double from = 0.0, to = 0.0;
+};
+
+struct CoursedWalls {
+  std::vector<Block> blocks;   // course by course, edge by edge; no ground
+  std::vector<HeadSpan> heads; // together they cover every edge's head once
+  int courses = 0;
+  double courseHeight = 0.0;   // the height actually used, height / courses
+};
+
+// Each course of each edge's wall is cut at bond joints (k·b on even courses, (k + ½)·b on odd
+// ones, measured from the edge's first corner), at the sides of openings it crosses and at the
+// ends of the lintel or arch it holds; joints closer than a quarter block to another cut or to
+// the inner corner line are dropped (no slivers). At a corner the wall square (the
+// quadrilateral between the outer corner, the inner corner and their feet on both faces)
+// belongs to the incoming wall's last block on even courses and to the outgoing wall's first
+// block on odd ones, so the corner is bonded. A lintel spans its opening and half a block of
+// bearing each side in the course over the opening as one stone; a flat arch fills the opening's
+// width in that course with an odd number of voussoirs whose joints meet below the opening (at
+// the apex of the equilateral triangle under it), the two outer joints being its skewbacks.
+// Throws corbel::Error for bad numbers, a reflex corner, openings that leave their wall, reach
+// a corner's square or the wall head, or overlap.
+CoursedWalls courseWalls(const CoursingSpec& spec);
+
+// Loads along an edge's wall head, in N per metre of the edge: `down` acts downwards and
+// `out` horizontally, outwards across the wall (a roof's weight and its thrust).
+struct HeadLoad {
+  double down = 0.0, out = 0.0;
+};
+
+// Adds each edge's head load to the top-course blocks as point loads on the wall's centre
+// line at the head, each block taking its span's share. `perEdge` has one entry per edge.
+void loadWallHeads(const CoursingSpec& spec, CoursedWalls& walls, const std::vector<HeadLoad>& perEdge);
+
+}  // namespace corbel::statics
