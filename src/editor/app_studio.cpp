@@ -143,7 +143,7 @@ void App::transformInput() {
 // A press on a gizmo handle: an axis arrow moves along it, the square between x and y moves in
 // the ground plane, the ring turns about z.
 bool App::grabGizmo(float px, float py) {
-  if (movableSelection().empty() || transform_.active()) return false;
+  if (movableSelection().empty() || transform_.active() || pushPullTool_) return false;
   const Vec3 pivot = selectionPivot();
   const double len = gizmoLength();
   const auto c = projectToWindow(view_, pivot);
@@ -185,6 +185,7 @@ void App::updateHover(bool overUi) {
       !view_.contains(tool_.pointerX(), tool_.pointerY())) {
     selection_.hover.reset();
     hoverKey_ = {};
+    pushPullHover_ = {};
     return;
   }
   // Picked again only when the pointer, the Scene or the camera changed.
@@ -194,6 +195,7 @@ void App::updateHover(bool overUi) {
   if (key == hoverKey_) return;
   hoverKey_ = key;
   selection_.hover = objectUnder(view_.ray(tool_.pointerX(), tool_.pointerY()));
+  updatePushPullHover();
 }
 
 void App::boxSelect(float x0, float y0, float x1, float y1) {
@@ -209,11 +211,12 @@ void App::boxSelect(float x0, float y0, float x1, float y1) {
 
 void App::drawStudioOverlay() {
   render::Overlay& top = renderer_->overlayOnTop();
+  // While a face is pushed or pulled its outline and guide line say what moves: no box.
   for (ObjectId id : selection_.ids())
-    if (const BBox b = objectBounds(id); !b.empty()) boxLines(top, b, kSelectedColour);
+    if (const BBox b = objectBounds(id); !b.empty() && !pushPull_.active()) boxLines(top, b, kSelectedColour);
   if (selection_.hover && !selection_.contains(*selection_.hover))
     if (const BBox b = objectBounds(*selection_.hover); !b.empty()) boxLines(top, b, kHoverColour);
-  if (movableSelection().empty()) return;
+  if (movableSelection().empty() || pushPullTool_) return;  // the Push/Pull tool drags faces, not objects
   const Vec3 pivot = transform_.active() ? transform_.pivot() : selectionPivot();
   const double len = gizmoLength();
   const bool rotating = transform_.mode() == Transform::Mode::Rotate;
