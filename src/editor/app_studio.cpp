@@ -150,12 +150,15 @@ bool App::grabGizmo(float px, float py) {
   if (!c) return false;
   const Vec2 p(px, py);
   const Vec3 axes[3] = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
-  // The plane square (x and y from 0.25 to 0.45 of the arrows).
-  {
-    const auto a = projectToWindow(view_, pivot + Vec3(0.25, 0.25, 0) * len),
-               b = projectToWindow(view_, pivot + Vec3(0.45, 0.45, 0) * len);
-    if (a && b && segmentDistance(p, *a, *b) < kHandlePixels) {
+  // The plane squares (from 0.25 to 0.45 of the arrows): on the ground, then upright across y
+  // (x and z) and across x (y and z); a press near a square's diagonal takes it.
+  const std::pair<Vec3, Transform::Axis> squares[3] = {
+      {Vec3(1, 1, 0), Transform::Axis::Free}, {Vec3(1, 0, 1), Transform::Axis::XZ}, {Vec3(0, 1, 1), Transform::Axis::YZ}};
+  for (const auto& [span, axis] : squares) {
+    const auto a = projectToWindow(view_, pivot + span * (0.25 * len)), b = projectToWindow(view_, pivot + span * (0.45 * len));
+    if (a && b && segmentDistance(p, *a, *b) < kHandlePixels && ((*b) - *a).norm() > 4) {
       beginTransform(Transform::Mode::Move, true);
+      if (axis != Transform::Axis::Free) transform_.setAxis(axis);
       return true;
     }
   }
@@ -227,10 +230,21 @@ void App::drawStudioOverlay() {
     if (!rotating) top.arrow(pivot, pivot + axes[k] * len, kAxisColour[k], 0.25);
   }
   if (!rotating) {
-    top.line(pivot + Vec3(0.25, 0.25, 0) * len, pivot + Vec3(0.45, 0.25, 0) * len, kRingColour);
-    top.line(pivot + Vec3(0.45, 0.25, 0) * len, pivot + Vec3(0.45, 0.45, 0) * len, kRingColour);
-    top.line(pivot + Vec3(0.45, 0.45, 0) * len, pivot + Vec3(0.25, 0.45, 0) * len, kRingColour);
-    top.line(pivot + Vec3(0.25, 0.45, 0) * len, pivot + Vec3(0.25, 0.25, 0) * len, kRingColour);
+    // The squares: on the ground (yellow), upright across y (green: x and z) and across x
+    // (red: y and z), each in the colour of the axis it keeps still.
+    const std::pair<int, int> spans[3] = {{0, 1}, {0, 2}, {1, 2}};
+    const render::Rgba colours[3] = {kRingColour, kAxisColour[1], kAxisColour[0]};
+    for (int s = 0; s < 3; ++s) {
+      auto corner = [&](double u, double v) {
+        Vec3 c(0, 0, 0);
+        c[spans[s].first] = u, c[spans[s].second] = v;
+        return pivot + c * len;
+      };
+      top.line(corner(0.25, 0.25), corner(0.45, 0.25), colours[s]);
+      top.line(corner(0.45, 0.25), corner(0.45, 0.45), colours[s]);
+      top.line(corner(0.45, 0.45), corner(0.25, 0.45), colours[s]);
+      top.line(corner(0.25, 0.45), corner(0.25, 0.25), colours[s]);
+    }
   }
   constexpr int kRing = 48;
   for (int i = 0; i < kRing; ++i) {
