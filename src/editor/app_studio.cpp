@@ -156,6 +156,17 @@ bool App::grabGizmo(float px, float py) {
       {Vec3(1, 1, 0), Transform::Axis::Free}, {Vec3(1, 0, 1), Transform::Axis::XZ}, {Vec3(0, 1, 1), Transform::Axis::YZ}};
   for (const auto& [span, axis] : squares) {
     const auto a = projectToWindow(view_, pivot + span * (0.25 * len)), b = projectToWindow(view_, pivot + span * (0.45 * len));
+    // A square seen (nearly) edge-on lies along an arrow (the upright ones in the top view): it
+    // leaves the press to the arrow.
+    Vec3 u(0, 0, 0), v(0, 0, 0);
+    for (int k = 0, first = 1; k < 3; ++k)
+      if (span[k] != 0) (first ? u : v)[k] = 0.2 * len, first = 0;
+    const auto o = projectToWindow(view_, pivot + span * (0.25 * len));
+    const auto ou = projectToWindow(view_, pivot + span * (0.25 * len) + u), ov = projectToWindow(view_, pivot + span * (0.25 * len) + v);
+    if (!o || !ou || !ov) continue;
+    const Vec2 su = *ou - *o, sv = *ov - *o;
+    const double area = std::abs(su[0] * sv[1] - su[1] * sv[0]);
+    if (area < 0.25 * su.norm() * sv.norm()) continue;
     if (a && b && segmentDistance(p, *a, *b) < kHandlePixels && ((*b) - *a).norm() > 4) {
       beginTransform(Transform::Mode::Move, true);
       if (axis != Transform::Axis::Free) transform_.setAxis(axis);
