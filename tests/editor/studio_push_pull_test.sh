@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Push/pull on a building through real mouse and keys under Xvfb (xdotool), read back from the
 # saved project. A 10 × 6 house (corners (0, 0), (10, 0), (10, 6), (0, 6)), 3 m walls and a 45°
-# hip roof on one profile shared by every edge, seen from the south-east:
+# hip roof on one profile shared by every edge, placed at (20, 5) and turned 90° (so the drags
+# work in its own frame: object point (x, y, z) is world (20 − y, 5 + x, z)), seen from the
+# south-east of the world:
 #  1. P, a drag on the south wall with 1.5 typed and Enter pushes edge 0 out to y = −1.5: the
 #     plan is 10 × 7.5 (the side edges 7.5 m long), one undo step ("Push wall");
 #  2. a drag on the south roof with 30 typed turns the shared profile's roof segment to 30°
 #     for every edge ("Turn roof");
-#  3. the same on the east roof with Alt held and 60 typed gives edge 1 its own copy at 60°,
+#  3. the same on the west roof with Alt held and 60 typed gives edge 3 its own copy at 60°,
 #     the other edges keep 30°;
-#  4. Ctrl+Z undoes step 3 alone (one step per drag); the project is saved and read back.
+#  4. Ctrl+Z undoes step 3 alone; the placement never changes (one step per drag); the project is saved and read back.
 set -euo pipefail
 editor=$1 work=$2
 shots=${3:-}  # a folder for screenshots while dragging (optional)
@@ -22,7 +24,7 @@ export CORBEL_STATE_DIR=$work/state
 project=$work/house.corbel
 cat >"$project" <<'JSON'
 {"format": "corbel", "version": 2, "name": "House", "objects": [
-  {"id": 1, "name": "House", "extrusion": {
+  {"id": 1, "name": "House", "placement": {"translation": [20, 5, 0], "rotation": 90}, "extrusion": {
     "plan": {"loops": [[[0, 0], [10, 0], [10, 6], [0, 6]]], "edge_profiles": [["hip", "hip", "hip", "hip"]]},
     "profiles": [{"name": "hip", "points": [[0, 0], [0, 3], [1, 4]], "tags": ["wall", "roof"]}]}}]}
 JSON
@@ -56,12 +58,12 @@ PY
 # A screenshot while dragging, for looking at (the editor writes no test log line mid-drag, so
 # it is given two seconds to draw the typed value; the checks never depend on it).
 shot() { [[ -z $shots ]] || { mkdir -p "$shots"; sleep 2; xwd -root -silent >"$shots/$1.xwd"; }; }
-# Presses on the scene point $1 (x,y,z), drags the pointer 25 px up and right, types $2 and
+# Presses on the house's point $1 (x,y,z in its own frame), drags the pointer 25 px up and right, types $2 and
 # Enter, releases; $3 (optional) is a key held during the press and the drag (not while typing:
 # X11 sends no characters with Alt held); $4 names the screenshot taken before Enter.
 drag_typed() {
   local px py
-  read -r px py <<<"$(screen "$1")"
+  read -r px py <<<"$(screen "$(python3 -c 'import sys; x, y, z = map(float, sys.argv[1].split(",")); print(f"{20 - y},{5 + x},{z}")' "$1")")"
   xdotool mousemove --sync --window "$wid" "$px" "$py"
   [[ -z ${3:-} ]] || xdotool keydown "$3"
   xdotool mousedown 1 mousemove --sync --window "$wid" $((px + 12)) $((py - 8)) mousemove --sync --window "$wid" $((px + 25)) $((py - 15))
@@ -94,14 +96,14 @@ wait_for "j['undo'] == 'Turn roof'"
 xdotool key --clearmodifiers ctrl+s
 wait_for "not j['dirty']"
 
-echo "== the east roof turned to 60° with Alt: edge 1 alone"
-# 1 m in from the east eaves (x = 10) at the 30° roof: (9, 2.25, 3 + tan 30°).
-drag_typed "9,2.25,$(python3 -c 'import math; print(3 + math.tan(math.radians(30)))')" 60 Alt_L turn-roof-alone
+echo "== the west roof turned to 60° with Alt: edge 3 alone"
+# 1 m in from the west eaves (x = 0) at the 30° roof: (1, 2.25, 3 + tan 30°).
+drag_typed "1,2.25,$(python3 -c 'import math; print(3 + math.tan(math.radians(30)))')" 60 Alt_L turn-roof-alone
 wait_for "j['undo'] == 'Turn roof' and j['dirty']"
 xdotool key --clearmodifiers ctrl+s
 wait_for "not j['dirty']"
 
-check() {  # the saved plan and profiles against the hand values; $1: whether edge 1 has its own profile
+check() {  # the saved plan and profiles against the hand values; $1: whether edge 3 has its own profile
   python3 - "$project" "$1" <<'PY'
 import json, math, sys
 o = json.load(open(sys.argv[1]))["objects"][0]["extrusion"]
@@ -116,15 +118,17 @@ names = o["plan"]["edge_profiles"][0] if "edge_profiles" in o["plan"] else [o["p
 def pitch(name):
     (w0, z0), (w1, z1) = profiles[name][1], profiles[name][2]
     return math.degrees(math.atan2(z1 - z0, w1 - w0))
-shared = [names[i] for i in (0, 2, 3)]
-assert len(set(shared)) == 1, f"edges 0, 2, 3 on {shared}"
+shared = [names[i] for i in (0, 1, 2)]
+assert len(set(shared)) == 1, f"edges 0, 1, 2 on {shared}"
 assert abs(pitch(shared[0]) - 30) < 1e-9, f"shared roof pitch {pitch(shared[0])}, expected 30"
 if own:
-    assert names[1] != shared[0], "edge 1 has no profile of its own"
-    assert abs(pitch(names[1]) - 60) < 1e-9, f"edge 1's roof pitch {pitch(names[1])}, expected 60"
+    assert names[3] != shared[0], "edge 3 has no profile of its own"
+    assert abs(pitch(names[3]) - 60) < 1e-9, f"edge 3's roof pitch {pitch(names[3])}, expected 60"
 else:
-    assert names[1] == shared[0] and len(profiles) == 1, f"after undo edge 1 is on {names[1]} of {list(profiles)}"
-print(f"plan 10 x {side:.3f} m; roof pitch {pitch(shared[0]):.3f} deg on edges 0, 2, 3; edge 1 on {names[1]!r} at {pitch(names[1]):.3f} deg")
+    assert names[3] == shared[0] and len(profiles) == 1, f"after undo edge 3 is on {names[3]} of {list(profiles)}"
+p = json.load(open(sys.argv[1]))["objects"][0]["placement"]
+assert p["translation"][:2] == [20, 5] and p["rotation"] == 90, f"placement {p} changed"
+print(f"plan 10 x {side:.3f} m; roof pitch {pitch(shared[0]):.3f} deg on edges 0, 1, 2; edge 3 on {names[3]!r} at {pitch(names[3]):.3f} deg")
 PY
 }
 check own
