@@ -491,7 +491,7 @@ std::string App::windowTitle() const {
 bool App::settled() const {
   return !job_ && !live_.building() && live_.current() && !growthPanel_.running() && !statics_.simulationPlaying() &&
          input_->queue().empty() && script_.idle() && !kifsRefining_ && !growthPanel_.viewDragging() && !tool_.busy() &&
-         !transform_.active();
+         !transform_.active() && !pushPull_.active();
 }
 
 void App::writeTestLog() {

@@ -26,6 +26,7 @@
 #include "editor/script_runner.h"
 #include "editor/selection.h"
 #include "editor/options.h"
+#include "editor/push_pull.h"
 #include "editor/statics_panel.h"
 #include "editor/test_log.h"
 #include "editor/transform.h"
@@ -167,6 +168,21 @@ class App {
   void frameSelected();
   void duplicateSelected();
   void drawPlacementFields(const DocObject& object);  // the left panel's Placement section
+  // The Push/Pull tool (app_push_pull.cpp).
+  struct PushPullPick {
+    ObjectId object = 0;
+    Ray ray;  // in the object's frame
+    extrude::pushpull::Target target;
+  };
+  void registerPushPullActions();
+  void togglePushPullTool();
+  std::optional<PushPullPick> pushPullPick(const Ray& world);
+  bool beginPushPull(const Ray& world);
+  void previewPushPull();
+  void endPushPull(bool confirm);
+  void pushPullInput();
+  void updatePushPullHover();
+  void drawPushPullOverlay();
 
   GLFWwindow* window_;
   EditorOptions options_;
@@ -266,6 +282,22 @@ class App {
   bool transformDragged_ = false;   // begun by a press on the gizmo: ends at the release
   bool transformCommitted_ = false; // its preview is in the History (one merged step)
   std::array<double, 8> hoverKey_{};  // what the hover was picked for
+  bool pushPullTool_ = false;       // P: a press on a face pushes or pulls it
+  PushPull pushPull_;               // the drag in progress
+  bool pushPullDragged_ = false;    // the button is held (else the face follows until a click)
+  bool pushPullCommitted_ = false;  // its preview is in the History (one merged step)
+  ObjectId pushPullObject_ = 0;
+  Placement pushPullPlacement_;
+  std::string pushPullError_;       // why the typed value is refused
+  struct {
+    ObjectId object = 0;
+    std::uint64_t state = 0;
+    extrude::ExtrusionResult result;
+  } pushPullBuilt_;  // the shell picks are made on, built once per object and state
+  struct {
+    ObjectId object = 0;
+    std::vector<Vec3> outline;
+  } pushPullHover_;  // the face under the pointer while the tool is on
   std::optional<ObjectId> listFollows_;  // the active object the object list last scrolled to
 };
 

@@ -24,6 +24,7 @@ void App::runAction(const Action& a) { actions_.run(a); }
 
 void App::registerActions() {
   registerStudioActions();  // app_studio.cpp
+  registerPushPullActions();  // app_push_pull.cpp
   auto doc = [this] { return history_.current(); };
   auto add = [this](Action a) { actions_.add(std::move(a)); };
   add({"file.new", "File", "New", "Start an empty project.", {GLFW_KEY_N, true}, false, [this] { newDocument(); }});
@@ -728,7 +729,7 @@ void App::registerActions() {
 
 void App::handleShortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput || fileDialog_.isOpen() || searchShown_ || transform_.active()) return;  // a transform or the search takes the keys
+  if (io.WantTextInput || fileDialog_.isOpen() || searchShown_ || transform_.active() || pushPull_.active()) return;  // a transform or the search takes the keys
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (!ImGui::IsKeyPressed(key, false)) continue;
     const Action* a = actions_.match(key, io.KeyCtrl, io.KeyShift, io.KeyAlt);

@@ -197,6 +197,8 @@ void App::drawToolbar(const Layout& l) {
   gap();
   button("view.wireframe", "Wire");
   button("view.shadows", "Shadows");
+  gap();
+  button("tool.push_pull", "Push/Pull");
   ImGui::End();
   ImGui::PopStyleVar();
 }

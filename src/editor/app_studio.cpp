@@ -143,19 +143,33 @@ void App::transformInput() {
 // A press on a gizmo handle: an axis arrow moves along it, the square between x and y moves in
 // the ground plane, the ring turns about z.
 bool App::grabGizmo(float px, float py) {
-  if (movableSelection().empty() || transform_.active()) return false;
+  if (movableSelection().empty() || transform_.active() || pushPullTool_) return false;
   const Vec3 pivot = selectionPivot();
   const double len = gizmoLength();
   const auto c = projectToWindow(view_, pivot);
   if (!c) return false;
   const Vec2 p(px, py);
   const Vec3 axes[3] = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
-  // The plane square (x and y from 0.25 to 0.45 of the arrows).
-  {
-    const auto a = projectToWindow(view_, pivot + Vec3(0.25, 0.25, 0) * len),
-               b = projectToWindow(view_, pivot + Vec3(0.45, 0.45, 0) * len);
-    if (a && b && segmentDistance(p, *a, *b) < kHandlePixels) {
+  // The plane squares (from 0.25 to 0.45 of the arrows): on the ground, then upright across y
+  // (x and z) and across x (y and z); a press near a square's diagonal takes it.
+  const std::pair<Vec3, Transform::Axis> squares[3] = {
+      {Vec3(1, 1, 0), Transform::Axis::Free}, {Vec3(1, 0, 1), Transform::Axis::XZ}, {Vec3(0, 1, 1), Transform::Axis::YZ}};
+  for (const auto& [span, axis] : squares) {
+    const auto a = projectToWindow(view_, pivot + span * (0.25 * len)), b = projectToWindow(view_, pivot + span * (0.45 * len));
+    // A square seen (nearly) edge-on lies along an arrow (the upright ones in the top view): it
+    // leaves the press to the arrow.
+    Vec3 u(0, 0, 0), v(0, 0, 0);
+    for (int k = 0, first = 1; k < 3; ++k)
+      if (span[k] != 0) (first ? u : v)[k] = 0.2 * len, first = 0;
+    const auto o = projectToWindow(view_, pivot + span * (0.25 * len));
+    const auto ou = projectToWindow(view_, pivot + span * (0.25 * len) + u), ov = projectToWindow(view_, pivot + span * (0.25 * len) + v);
+    if (!o || !ou || !ov) continue;
+    const Vec2 su = *ou - *o, sv = *ov - *o;
+    const double area = std::abs(su[0] * sv[1] - su[1] * sv[0]);
+    if (area < 0.25 * su.norm() * sv.norm()) continue;
+    if (a && b && segmentDistance(p, *a, *b) < kHandlePixels && ((*b) - *a).norm() > 4) {
       beginTransform(Transform::Mode::Move, true);
+      if (axis != Transform::Axis::Free) transform_.setAxis(axis);
       return true;
     }
   }
@@ -185,6 +199,7 @@ void App::updateHover(bool overUi) {
       !view_.contains(tool_.pointerX(), tool_.pointerY())) {
     selection_.hover.reset();
     hoverKey_ = {};
+    pushPullHover_ = {};
     return;
   }
   // Picked again only when the pointer, the Scene or the camera changed.
@@ -194,6 +209,7 @@ void App::updateHover(bool overUi) {
   if (key == hoverKey_) return;
   hoverKey_ = key;
   selection_.hover = objectUnder(view_.ray(tool_.pointerX(), tool_.pointerY()));
+  updatePushPullHover();
 }
 
 void App::boxSelect(float x0, float y0, float x1, float y1) {
@@ -209,11 +225,12 @@ void App::boxSelect(float x0, float y0, float x1, float y1) {
 
 void App::drawStudioOverlay() {
   render::Overlay& top = renderer_->overlayOnTop();
+  // While a face is pushed or pulled its outline and guide line say what moves: no box.
   for (ObjectId id : selection_.ids())
-    if (const BBox b = objectBounds(id); !b.empty()) boxLines(top, b, kSelectedColour);
+    if (const BBox b = objectBounds(id); !b.empty() && !pushPull_.active()) boxLines(top, b, kSelectedColour);
   if (selection_.hover && !selection_.contains(*selection_.hover))
     if (const BBox b = objectBounds(*selection_.hover); !b.empty()) boxLines(top, b, kHoverColour);
-  if (movableSelection().empty()) return;
+  if (movableSelection().empty() || pushPullTool_) return;  // the Push/Pull tool drags faces, not objects
   const Vec3 pivot = transform_.active() ? transform_.pivot() : selectionPivot();
   const double len = gizmoLength();
   const bool rotating = transform_.mode() == Transform::Mode::Rotate;
@@ -224,10 +241,21 @@ void App::drawStudioOverlay() {
     if (!rotating) top.arrow(pivot, pivot + axes[k] * len, kAxisColour[k], 0.25);
   }
   if (!rotating) {
-    top.line(pivot + Vec3(0.25, 0.25, 0) * len, pivot + Vec3(0.45, 0.25, 0) * len, kRingColour);
-    top.line(pivot + Vec3(0.45, 0.25, 0) * len, pivot + Vec3(0.45, 0.45, 0) * len, kRingColour);
-    top.line(pivot + Vec3(0.45, 0.45, 0) * len, pivot + Vec3(0.25, 0.45, 0) * len, kRingColour);
-    top.line(pivot + Vec3(0.25, 0.45, 0) * len, pivot + Vec3(0.25, 0.25, 0) * len, kRingColour);
+    // The squares: on the ground (yellow), upright across y (green: x and z) and across x
+    // (red: y and z), each in the colour of the axis it keeps still.
+    const std::pair<int, int> spans[3] = {{0, 1}, {0, 2}, {1, 2}};
+    const render::Rgba colours[3] = {kRingColour, kAxisColour[1], kAxisColour[0]};
+    for (int s = 0; s < 3; ++s) {
+      auto corner = [&](double u, double v) {
+        Vec3 c(0, 0, 0);
+        c[spans[s].first] = u, c[spans[s].second] = v;
+        return pivot + c * len;
+      };
+      top.line(corner(0.25, 0.25), corner(0.45, 0.25), colours[s]);
+      top.line(corner(0.45, 0.25), corner(0.45, 0.45), colours[s]);
+      top.line(corner(0.45, 0.45), corner(0.25, 0.45), colours[s]);
+      top.line(corner(0.25, 0.45), corner(0.25, 0.25), colours[s]);
+    }
   }
   constexpr int kRing = 48;
   for (int i = 0; i < kRing; ++i) {

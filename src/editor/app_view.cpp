@@ -32,11 +32,12 @@ void App::handleViewInput() {
   };
   c.grab = [this, own](const Ray& world) {
     if (grabGizmo(tool_.pressX(), tool_.pressY())) return true;
+    if (beginPushPull(world)) return true;
     const Ray r = own(world);
     return selectedGrowth() && growthPanel_.siteShown() && growthPanel_.beginViewDrag(growthHost(), r.origin, r.direction);
   };
   c.dragTo = [this, own](const Ray& world) {
-    if (transform_.active()) return;  // transformInput follows the pointer
+    if (transform_.active() || pushPull_.active()) return;  // transformInput, pushPullInput follow the pointer
     const Ray r = own(world);
     if (selectedGrowth()) growthPanel_.viewDrag(growthHost(), r.origin, r.direction);
   };
@@ -50,9 +51,12 @@ void App::handleViewInput() {
   // tool, whose release ends the grab.
   if (transform_.active() && !transformDragged_) {
     transformInput();
+  } else if (pushPull_.active() && !pushPullDragged_) {
+    pushPullInput();
   } else {
     for (const InputEvent& e : batch_.events) tool_.handle(e, overUi, c);
     if (transform_.active()) transformInput();
+    if (pushPull_.active()) pushPullInput();
   }
   updateHover(overUi);
   drawBoxBand();
@@ -179,6 +183,7 @@ void App::drawView() {
   renderer_->overlay().placeSince(below, activePlacement);
   renderer_->overlayOnTop().placeSince(above, activePlacement);
   drawStudioOverlay();
+  drawPushPullOverlay();
   drawErrorMarks(renderer_->overlayOnTop());
   renderer_->setScene(shownScene(), settings_);
   const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),

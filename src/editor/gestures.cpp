@@ -10,10 +10,18 @@ const std::vector<Gesture>& paneGestures() {
       {"3D view", "Click", "Select the object under the pointer; on empty space, clear the selection."},
       {"3D view", "Shift+click, Ctrl+click", "Add the object to the selection; toggle it in or out."},
       {"3D view", "Ctrl+left drag, or B then drag", "Box select (Shift on release adds to the selection)."},
-      {"3D view", "Drag the gizmo", "Arrows (x red, y green, z blue) move along an axis, the square on the ground, the ring "
-                                    "turns about z; type a value and press Enter; Ctrl snaps (0.5 m, 15°)."},
+      {"3D view", "Drag the gizmo", "Arrows (x red, y green, z blue) move along an axis, the yellow square on the ground, the "
+                                    "green square on x and z, the red one on y and z, the ring turns about z; type a "
+                                    "value and press Enter; Ctrl snaps (0.5 m, 15°)."},
       {"3D view", "Click on the selected object", "Extrusion: pick the face (its plan edge and profile segment light "
                                                   "up in the panes). Town: pick a building. Simulated masonry: pick a block."},
+      {"3D view", "P (Push/Pull), then drag a face", "Wall: its plan edge moves out or in (neighbours follow). Roof: its "
+                                                   "profile segment turns about its lower end. Step or feature: its anchor "
+                                                   "slides along its wall. Type a value and Enter (metres; a roof's pitch "
+                                                   "in degrees); Ctrl snaps (0.1 m, 5°); Esc cancels. One undo step."},
+      {"3D view", "P, then click a face", "The face follows the pointer until the next click or Enter (type a value meanwhile)."},
+      {"3D view", "Alt during a roof's drag", "Only this edge turns: it gets its own copy of the profile (without Alt every "
+                                              "edge sharing the profile turns). Type the value after letting Alt go."},
       {"3D view", "Drag a growth entry", "With the growth panel's Site tab open: move a core, landing, seed or envelope corner."},
       {"Axis widget", "Click an axis end", "Look from that axis towards the target, orthographic (X: right/left, Y: back/front, Z: top/bottom)."},
       {"Splitters", "Drag", "Resize the panel beside it (kept in your settings)."},

@@ -51,14 +51,17 @@ void Transform::backspace() {
   if (!typed_.empty()) typed_.pop_back();
 }
 
-// Moves along z happen on the vertical plane through the pivot that faces the camera; every
-// other move on the horizontal plane through the pivot, as a building is moved on the ground.
+// Moves along z happen on the vertical plane through the pivot that faces the camera, moves on
+// an upright plane (XZ, YZ) on that plane; every other move on the horizontal plane through the
+// pivot, as a building is moved on the ground.
 std::optional<Vec3> Transform::planeHit(const Ray& r) const {
   if (mode_ == Mode::Move && axis_ == Axis::Z) {
     Vec3 n(viewDir_[0], viewDir_[1], 0);
     if (n.norm() < 1e-9) n = Vec3(1, 0, 0);
     return hitPlane(r, pivot_, n.normalized());
   }
+  if (mode_ == Mode::Move && axis_ == Axis::XZ) return hitPlane(r, pivot_, Vec3(0, 1, 0));
+  if (mode_ == Mode::Move && axis_ == Axis::YZ) return hitPlane(r, pivot_, Vec3(1, 0, 0));
   return hitPlane(r, pivot_, Vec3(0, 0, 1));
 }
 
@@ -71,6 +74,8 @@ Vec3 Transform::offset() const {
     case Axis::Y: d = Vec3(0, d[1], 0); break;
     case Axis::Z: d = Vec3(0, 0, d[2]); break;
     case Axis::Free: d[2] = 0; break;
+    case Axis::XZ: d[1] = 0; break;
+    case Axis::YZ: d[0] = 0; break;
   }
   if (!typed_.empty() && typed_ != "-" && typed_ != ".") {
     const double v = std::strtod(typed_.c_str(), nullptr);
@@ -79,7 +84,9 @@ Vec3 Transform::offset() const {
       case Axis::X: return Vec3(v, 0, 0);
       case Axis::Y: return Vec3(0, v, 0);
       case Axis::Z: return Vec3(0, 0, v);
-      case Axis::Free: return d.norm() > 1e-9 ? d.normalized() * v : Vec3(v, 0, 0);
+      case Axis::Free:
+      case Axis::XZ: return d.norm() > 1e-9 ? d.normalized() * v : Vec3(v, 0, 0);
+      case Axis::YZ: return d.norm() > 1e-9 ? d.normalized() * v : Vec3(0, v, 0);
     }
   }
   if (snap_)
@@ -119,7 +126,12 @@ std::map<ObjectId, Placement> Transform::placements() const {
 
 std::string Transform::describe() const {
   char buf[160];
-  const char* axis = axis_ == Axis::X ? " X" : axis_ == Axis::Y ? " Y" : axis_ == Axis::Z ? " Z" : "";
+  const char* axis = axis_ == Axis::X    ? " X"
+                     : axis_ == Axis::Y  ? " Y"
+                     : axis_ == Axis::Z  ? " Z"
+                     : axis_ == Axis::XZ ? " on XZ"
+                     : axis_ == Axis::YZ ? " on YZ"
+                                         : "";
   const std::string typed = typed_.empty() ? "" : " (typed " + typed_ + ")";
   if (mode_ == Mode::Move) {
     const Vec3 d = offset();

@@ -19,7 +19,9 @@ inline constexpr double kRotateSnap = 15.0;  // degrees
 class Transform {
  public:
   enum class Mode { None, Move, Rotate };
-  enum class Axis { Free, X, Y, Z };
+  // Free: on the ground; X, Y, Z: along an axis; XZ, YZ: on the vertical plane through the
+  // pivot across y or across x (the gizmo's upright squares).
+  enum class Axis { Free, X, Y, Z, XZ, YZ };
 
   // Starts on `objects` (their placements now) about `pivot` with the pointer's ray `ray`.
   void begin(Mode mode, const std::map<ObjectId, Placement>& objects, const Vec3& pivot, const Ray& ray);
@@ -29,7 +31,7 @@ class Transform {
   const Vec3& pivot() const { return pivot_; }
 
   void pointer(const Ray& ray);            // the pointer moved
-  void setAxis(Axis axis);                 // X, Y, Z; the same axis again frees it
+  void setAxis(Axis axis);                 // X, Y, Z, XZ, YZ; the same one again frees it
   void setSnap(bool snap) { snap_ = snap; }
   // A typed character of the value ('0'-'9', '.', '-'); false if it is none of those.
   bool type(char c);

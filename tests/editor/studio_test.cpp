@@ -65,6 +65,27 @@ TEST(StudioTransform, UpAndDownOnTheVerticalPlaneFacingTheCamera) {
   expectNear(t.offset(), Vec3(0, 0, 2.2));  // from z = 1 to z = 3.2
 }
 
+TEST(StudioTransform, TheUprightSquaresMoveOnTheirVerticalPlanes) {
+  Transform t;
+  // Looking along +y at the pivot (1, 2, 0): the XZ square moves on the plane y = 2, from
+  // (1, 2, 1) to (4, 2, 5): (3, 0, 4), whatever the ray's slant.
+  t.begin(Transform::Mode::Move, {{1, Placement{}}}, Vec3(1, 2, 0), {Vec3(1, -8, 1), Vec3(0, 1, 0)});
+  t.setAxis(Transform::Axis::XZ);
+  t.pointer({Vec3(4, -8, 0), Vec3(0, 1, 0.5)});  // meets y = 2 at z = 0 + 10 · 0.5 = 5
+  expectNear(t.offset(), Vec3(3, 0, 4));
+  // Typed: 10 along the way the pointer went, (3, 0, 4)/5 · 10.
+  t.type('1');
+  t.type('0');
+  expectNear(t.offset(), Vec3(6, 0, 8));
+  // The YZ square, looking along −x: the plane x = 1, from (1, 2, 1) to (1, −1, −3).
+  Transform u;
+  u.begin(Transform::Mode::Move, {{1, Placement{}}}, Vec3(1, 2, 0), {Vec3(11, 2, 1), Vec3(-1, 0, 0)});
+  u.setAxis(Transform::Axis::YZ);
+  u.pointer({Vec3(11, -1, -3), Vec3(-1, 0, 0)});
+  expectNear(u.offset(), Vec3(0, -3, -4));
+  EXPECT_NE(u.describe().find("on YZ"), std::string::npos);
+}
+
 TEST(StudioTransform, RotateTurnsAboutThePivot) {
   Transform t;
   Placement a;
