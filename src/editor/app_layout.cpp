@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 namespace corbel::editor {
 
@@ -153,52 +154,85 @@ void App::drawToolbar(const Layout& l) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
+  // The entries in order: an action's id and its button's text; "|" a gap; "add" the Add menu.
+  // What does not fit the view's width goes, in order, into a ">>" menu at the end.
+  struct Entry {
+    const char* id;
+    const char* text;
+  };
+  static constexpr Entry kEntries[] = {
+      {"command.search", "Search"}, {"|", ""}, {"edit.undo", "Undo"}, {"edit.redo", "Redo"}, {"|", ""},
+      {"add", "Add"}, {"|", ""}, {"view.frame", "Frame All"}, {"view.orthographic", "Ortho"}, {"view.top", "Top"},
+      {"view.front", "Front"}, {"view.right", "Right"}, {"view.perspective", "Angled"}, {"|", ""},
+      {"view.wireframe", "Wire"}, {"view.shadows", "Shadows"}, {"|", ""}, {"tool.push_pull", "Push/Pull"}};
+  const ImGuiStyle& style = ImGui::GetStyle();
+  auto widthOf = [&](const Entry& e) {
+    return std::string_view(e.id) == "|" ? ImGui::CalcTextSize("|").x : ImGui::CalcTextSize(e.text).x + 2 * style.FramePadding.x;
+  };
+  const float more = ImGui::CalcTextSize(">>").x + 2 * style.FramePadding.x + style.ItemSpacing.x;
+  const float right = ImGui::GetWindowContentRegionMax().x;
+  float total = 0;
+  for (const Entry& e : kEntries) total += widthOf(e) + style.ItemSpacing.x;
+  const bool allFit = ImGui::GetCursorPosX() + total - style.ItemSpacing.x <= right;
+  std::vector<const Entry*> hidden;
   bool first = true;
-  auto button = [&](const char* id, const char* text) {
-    const Action* a = actions_.find(id);
-    if (!a) return;
+  float x = ImGui::GetCursorPosX();
+  auto tooltip = [&](const Action& a) {
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    const std::string key = a.shortcut.text();
+    ImGui::SetTooltip("%s%s%s%s\n%s", a.label.c_str(), key.empty() ? "" : " (", key.c_str(), key.empty() ? "" : ")",
+                      a.help.c_str());
+  };
+  for (const Entry& e : kEntries) {
+    const std::string_view id = e.id;
+    if (!hidden.empty() || (!allFit && x + widthOf(e) > right - more)) {
+      if (id != "|") hidden.push_back(&e);
+      continue;
+    }
     if (!first) ImGui::SameLine();
     first = false;
-    const bool on = a->checked && a->checked();
-    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    ImGui::BeginDisabled(!actions_.isEnabled(*a));
-    if (ImGui::Button(text)) runAction(*a);
-    ImGui::EndDisabled();
-    if (on) ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-      const std::string key = a->shortcut.text();
-      ImGui::SetTooltip("%s%s%s%s\n%s", a->label.c_str(), key.empty() ? "" : " (", key.c_str(), key.empty() ? "" : ")",
-                        a->help.c_str());
+    if (id == "|") {
+      ImGui::TextDisabled("|");
+    } else if (id == "add") {
+      if (ImGui::Button("Add")) ImGui::OpenPopup("##add");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add an object of any kind (Object > Add)");
+      if (ImGui::BeginPopup("##add")) {
+        drawMenuItems("Object/Add");
+        ImGui::EndPopup();
+      }
+    } else if (const Action* a = actions_.find(e.id)) {
+      const bool on = a->checked && a->checked();
+      if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+      ImGui::BeginDisabled(!actions_.isEnabled(*a));
+      if (ImGui::Button(e.text)) runAction(*a);
+      ImGui::EndDisabled();
+      if (on) ImGui::PopStyleColor();
+      tooltip(*a);
     }
-  };
-  auto gap = [] {
-    ImGui::SameLine();
-    ImGui::TextDisabled("|");
-  };
-  button("command.search", "Search");
-  gap();
-  button("edit.undo", "Undo");
-  button("edit.redo", "Redo");
-  gap();
-  ImGui::SameLine();
-  if (ImGui::Button("Add")) ImGui::OpenPopup("##add");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add an object of any kind (Object > Add)");
-  if (ImGui::BeginPopup("##add")) {
-    drawMenuItems("Object/Add");
-    ImGui::EndPopup();
+    x = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + style.ItemSpacing.x;
   }
-  gap();
-  button("view.frame", "Frame All");
-  button("view.orthographic", "Ortho");
-  button("view.top", "Top");
-  button("view.front", "Front");
-  button("view.right", "Right");
-  button("view.perspective", "Angled");
-  gap();
-  button("view.wireframe", "Wire");
-  button("view.shadows", "Shadows");
-  gap();
-  button("tool.push_pull", "Push/Pull");
+  if (!hidden.empty()) {
+    if (!first) ImGui::SameLine();
+    if (ImGui::Button(">>")) ImGui::OpenPopup("##toolbar more");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The toolbar's commands that do not fit");
+    if (ImGui::BeginPopup("##toolbar more")) {
+      for (const Entry* e : hidden) {
+        if (std::string_view(e->id) == "add") {
+          if (ImGui::BeginMenu("Add")) {
+            drawMenuItems("Object/Add");
+            ImGui::EndMenu();
+          }
+        } else if (const Action* a = actions_.find(e->id)) {
+          const std::string key = a->shortcut.text();
+          if (ImGui::MenuItem(e->text, key.empty() ? nullptr : key.c_str(), a->checked && a->checked(),
+                              actions_.isEnabled(*a)))
+            runAction(*a);
+          tooltip(*a);
+        }
+      }
+      ImGui::EndPopup();
+    }
+  }
   ImGui::End();
   ImGui::PopStyleVar();
 }
