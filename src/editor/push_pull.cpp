@@ -62,21 +62,6 @@ void PushPull::begin(const ExtrusionSpec& spec, const pp::Target& target, const 
   }
 }
 
-bool PushPull::type(char c) {
-  if (!((c >= '0' && c <= '9') || c == '.' || c == '-')) return false;
-  if (c == '-') {
-    typed_ = !typed_.empty() && typed_[0] == '-' ? typed_.substr(1) : "-" + typed_;
-    return true;
-  }
-  if (c == '.' && typed_.find('.') != std::string::npos) return true;
-  typed_ += c;
-  return true;
-}
-
-void PushPull::backspace() {
-  if (!typed_.empty()) typed_.pop_back();
-}
-
 Vec3 PushPull::guideDirection() const { return target_.kind == pp::Kind::Roof ? inward_ : along_; }
 
 // The pitch (degrees) of the line from the turning line to where the ray meets the profile
@@ -105,7 +90,7 @@ double PushPull::pointerValue(const Ray& r) const {
 }
 
 double PushPull::value() const {
-  if (!typed_.empty() && typed_ != "-" && typed_ != "." && typed_ != "-.") return std::strtod(typed_.c_str(), nullptr);
+  if (const std::optional<double> typed = typed_.value()) return *typed;
   double v = pointerValue(ray_);
   if (target_.kind == pp::Kind::Roof) {
     if (snap_) v = std::round(v / kPitchSnap) * kPitchSnap;
@@ -151,7 +136,7 @@ std::string PushPull::label() const {
 std::string PushPull::describe() const {
   char buf[320];
   const double v = value();
-  const std::string typed = typed_.empty() ? "" : " (typed " + typed_ + ")";
+  const std::string typed = typed_.text().empty() ? "" : " (typed " + typed_.text() + ")";
   switch (target_.kind) {
     case pp::Kind::Wall:
       std::snprintf(buf, sizeof buf, "Push wall (loop %d, edge %d): %.3f m out%s", target_.loop, target_.edge, v,

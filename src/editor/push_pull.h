@@ -7,6 +7,7 @@
 // typed meanwhile give the exact value (metres out; the new pitch in degrees; metres along the
 // wall); Ctrl snaps (0.1 m, 5°); with own copy (Alt) a roof's edge gets a profile of its own
 // first. The App commits what spec() gives (one undo step per drag).
+#include "editor/typed_value.h"
 #include "editor/viewport.h"
 #include "extrude/push_pull.h"
 
@@ -31,9 +32,9 @@ class PushPull {
   void setSnap(bool snap) { snap_ = snap; }
   void setOwnCopy(bool own) { ownCopy_ = own; }
   // A typed character of the value ('0'-'9', '.', '-'); false if it is none of those.
-  bool type(char c);
-  void backspace();
-  const std::string& typed() const { return typed_; }
+  bool type(char c) { return typed_.type(c); }
+  void backspace() { typed_.backspace(); }
+  const std::string& typed() const { return typed_.text(); }
 
   // The value now: the typed one when there is one, else the pointer's (clamped, snapped).
   double value() const;
@@ -56,7 +57,7 @@ class PushPull {
   extrude::pushpull::Target target_;
   Ray startRay_, ray_;
   bool snap_ = false, ownCopy_ = false;
-  std::string typed_;
+  TypedValue typed_;
   // Wall and slide: the line the pointer is read on. Roof: the profile plane's axes (inward
   // horizontal, up) and the turning line's point, and the segment's pitch at the start.
   Vec3 along_{1, 0, 0}, inward_{0, 1, 0}, pivot_{0, 0, 0};

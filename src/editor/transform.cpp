@@ -36,21 +36,6 @@ void Transform::setAxis(Axis axis) {
   axis_ = axis_ == axis ? Axis::Free : axis;
 }
 
-bool Transform::type(char c) {
-  if (!((c >= '0' && c <= '9') || c == '.' || c == '-')) return false;
-  if (c == '-') {
-    typed_ = !typed_.empty() && typed_[0] == '-' ? typed_.substr(1) : "-" + typed_;
-    return true;
-  }
-  if (c == '.' && typed_.find('.') != std::string::npos) return true;
-  typed_ += c;
-  return true;
-}
-
-void Transform::backspace() {
-  if (!typed_.empty()) typed_.pop_back();
-}
-
 // Moves along z happen on the vertical plane through the pivot that faces the camera, moves on
 // an upright plane (XZ, YZ) on that plane; every other move on the horizontal plane through the
 // pivot, as a building is moved on the ground.
@@ -77,8 +62,8 @@ Vec3 Transform::offset() const {
     case Axis::XZ: d[1] = 0; break;
     case Axis::YZ: d[0] = 0; break;
   }
-  if (!typed_.empty() && typed_ != "-" && typed_ != ".") {
-    const double v = std::strtod(typed_.c_str(), nullptr);
+  if (const std::optional<double> typed = typed_.value()) {
+    const double v = *typed;
     // Along the constrained axis; free, along the way the pointer went (x when it has not moved).
     switch (axis_) {
       case Axis::X: return Vec3(v, 0, 0);
@@ -96,7 +81,7 @@ Vec3 Transform::offset() const {
 
 double Transform::angle() const {
   if (mode_ != Mode::Rotate) return 0;
-  if (!typed_.empty() && typed_ != "-" && typed_ != ".") return std::strtod(typed_.c_str(), nullptr);
+  if (const std::optional<double> typed = typed_.value()) return *typed;
   const auto a = planeHit(startRay_), b = planeHit(ray_);
   if (!a || !b) return 0;
   const Vec3 u = *a - pivot_, v = *b - pivot_;
@@ -132,7 +117,7 @@ std::string Transform::describe() const {
                      : axis_ == Axis::XZ ? " on XZ"
                      : axis_ == Axis::YZ ? " on YZ"
                                          : "";
-  const std::string typed = typed_.empty() ? "" : " (typed " + typed_ + ")";
+  const std::string typed = typed_.text().empty() ? "" : " (typed " + typed_.text() + ")";
   if (mode_ == Mode::Move) {
     const Vec3 d = offset();
     std::snprintf(buf, sizeof buf, "Move%s: %.3f, %.3f, %.3f m", axis, d[0], d[1], d[2]);

@@ -5,6 +5,7 @@
 // Escape or a right click puts everything back. What it computes is each object's placement;
 // the App commits them (one undo step per transform).
 #include "core/document.h"
+#include "editor/typed_value.h"
 #include "editor/viewport.h"
 
 #include <map>
@@ -34,9 +35,9 @@ class Transform {
   void setAxis(Axis axis);                 // X, Y, Z, XZ, YZ; the same one again frees it
   void setSnap(bool snap) { snap_ = snap; }
   // A typed character of the value ('0'-'9', '.', '-'); false if it is none of those.
-  bool type(char c);
-  void backspace();
-  const std::string& typed() const { return typed_; }
+  bool type(char c) { return typed_.type(c); }
+  void backspace() { typed_.backspace(); }
+  const std::string& typed() const { return typed_.text(); }
   void end() { mode_ = Mode::None; }
 
   // The move (m) or turn (degrees) now: the typed value when there is one, else the pointer's.
@@ -56,7 +57,7 @@ class Transform {
   Vec3 pivot_{0, 0, 0};
   Ray startRay_, ray_;
   Vec3 viewDir_{0, 0, -1};
-  std::string typed_;
+  TypedValue typed_;
 };
 
 }  // namespace corbel::editor
