@@ -40,35 +40,7 @@ cat >"$work/two/empty.corbel" <<'JSON'
 JSON
 
 log=$work/one.jsonl
-source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for
-# Window pixels of scene points, from the camera and view of the log's last line (render/camera:
-# OrbitCamera, straight down: up on the screen is −(cos az, sin az); perspective or orthographic).
-screen() {
-  python3 - "$log" "$@" <<'PY'
-import json, math, sys
-j = json.loads(open(sys.argv[1]).read().splitlines()[-1])
-c, (vx, vy, vw, vh) = j["camera"], j["view"]
-az, el, d = math.radians(c["azimuth"]), math.radians(c["elevation"]), c["distance"]
-t = c["target"]
-back = (math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el))
-eye = [t[i] + d * back[i] for i in range(3)]
-up = (-math.cos(az), -math.sin(az), 0.0) if abs(c["elevation"]) > 89.9 else (0.0, 0.0, 1.0)
-f = [-b for b in back]
-def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-def norm(a): l = math.sqrt(sum(x * x for x in a)); return tuple(x / l for x in a)
-s = norm(cross(f, up)); u = cross(s, f)
-focal = 1 / math.tan(math.radians(40) / 2)
-for arg in sys.argv[2:]:
-    p = [float(v) for v in arg.split(",")]
-    q = [p[i] - eye[i] for i in range(3)]
-    x, y, z = sum(q[i] * s[i] for i in range(3)), sum(q[i] * u[i] for i in range(3)), sum(q[i] * f[i] for i in range(3))
-    if c.get("orthographic"):  # parallel rays: the view is 2 d tan(fov/2) tall at any depth
-        nx, ny = focal * x / (d * vw / vh), focal * y / d
-    else:
-        nx, ny = focal * x / (z * vw / vh), focal * y / z
-    print(int(round(vx + (nx + 1) / 2 * vw)), int(round(vy + (1 - ny) / 2 * vh)))
-PY
-}
+source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for, screen
 placement() {  # the saved placement of object $2 in project $1, as "x y z rotation"
   python3 -c 'import json,sys
 o = [o for o in json.load(open(sys.argv[1]))["objects"] if o["name"] == sys.argv[2]][0]
