@@ -25,6 +25,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -239,6 +240,8 @@ TEST(RandomRobustness, HundredThousandFootprints) {
   // skeletons built one at a time, so something else in them is not safe to run concurrently.
   std::vector<ShellCheck> checks(results.size());
   {
+    // CORBEL_RANDOM_TRACE names each shell on stderr before its check (to find one that crashes).
+    const bool trace = std::getenv("CORBEL_RANDOM_TRACE") != nullptr;
     const unsigned jobs = 1;
     std::atomic<std::size_t> next{0};
     std::vector<std::thread> pool;
@@ -246,6 +249,7 @@ TEST(RandomRobustness, HundredThousandFootprints) {
       pool.emplace_back([&] {
         for (std::size_t i; (i = next++) < results.size();)
           if (results[i].ok) try {
+              if (trace) std::fprintf(stderr, "check %s\n", items[i].id.c_str());
               checks[i] = checkShell(items[i].spec, results[i].toleranceFactor);
             } catch (const std::exception& e) {
               checks[i].error = e.what();
