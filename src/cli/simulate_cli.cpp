@@ -82,33 +82,23 @@ Model modelFrom(const SimulateRequest& r) {
     for (const DocObject* o : masonry) names += (names.empty() ? "\"" : ", \"") + o->name + "\"";
     throw Error(path + ": several masonry objects (" + names + "); choose one with --object NAME");
   }
-  if (const auto* e = std::get_if<ExtrusionSpec>(&masonry[0]->spec)) {
-    // An extrusion built in stone: its walls coursed, loaded by its roof (point loads).
-    statics::ParametricModel model;
-    try {
-      model = statics::stoneModel(*e);
-    } catch (const InputError& err) {
-      throw InputError(masonry[0]->name + ": extrusion." + err.where, err.reason);
-    }
-    statics::ParameterSet values = model.parameters;
-    applySets(r, values);
-    m.assembly = model.build(values);
-    m.label = masonry[0]->name;
-    return m;
-  }
-  const auto& spec = std::get<MasonrySpec>(masonry[0]->spec);
+  // A masonry object, or an extrusion built in stone (its walls coursed, loaded by its roof).
+  const DocObject& o = *masonry[0];
+  const auto* stone = std::get_if<ExtrusionSpec>(&o.spec);
   statics::ParametricModel model;
   try {
-    model = statics::modelOf(spec);
-  } catch (const InputError& e) {
-    throw InputError(masonry[0]->name + ": " + e.where, e.reason);
+    model = stone ? statics::stoneModel(*stone) : statics::modelOf(std::get<MasonrySpec>(o.spec));
+  } catch (const InputError& err) {
+    throw InputError(o.name + ": " + (stone ? "extrusion." : "") + err.where, err.reason);
   }
   statics::ParameterSet values = model.parameters;
   applySets(r, values);
   m.assembly = model.build(values);
-  m.label = masonry[0]->name;
-  m.friction = spec.friction;
-  m.kern = spec.kern;
+  m.label = o.name;
+  if (const auto* spec = std::get_if<MasonrySpec>(&o.spec)) {
+    m.friction = spec->friction;
+    m.kern = spec->kern;
+  }
   return m;
 }
 
