@@ -518,6 +518,11 @@ void App::writeTestLog() {
     if (!box.empty()) s.activeInView = boxInView(view_.camera, view_.aspect(), box);
   }
   if (searchShown_) s.search = searchText_;
+  if (tape_.done()) {
+    const TapePoint &a = *tape_.start(), &b = *tape_.end();
+    s.tape = SettledFrame::Tape{{a.at[0], a.at[1], a.at[2]}, {b.at[0], b.at[1], b.at[2]}, snapName(a.snap), snapName(b.snap),
+                                (b.at - a.at).norm()};
+  }
   testLog_->write(s);
 }
 

@@ -28,6 +28,7 @@
 #include "editor/options.h"
 #include "editor/push_pull.h"
 #include "editor/statics_panel.h"
+#include "editor/tape_measure.h"
 #include "editor/test_log.h"
 #include "editor/transform.h"
 #include "editor/town_panel.h"
@@ -183,6 +184,15 @@ class App {
   void pushPullInput();
   void updatePushPullHover();
   void drawPushPullOverlay();
+  // The tape measure (app_tape.cpp).
+  void registerTapeActions();
+  void toggleTapeTool();
+  void tapeClick(const Ray& world);  // a click in the view while the tool is on
+  void tapeInput();                  // Esc while the tool is on
+  void updateTapeHover();
+  void drawTapeOverlay();  // with the scene
+  void drawTapeLabels();   // within the UI's frame
+  double worldPerPixel(const Vec3& p) const;  // metres a window pixel spans at p
 
   GLFWwindow* window_;
   EditorOptions options_;
@@ -282,6 +292,8 @@ class App {
   bool transformDragged_ = false;   // begun by a press on the gizmo: ends at the release
   bool transformCommitted_ = false; // its preview is in the History (one merged step)
   std::array<double, 8> hoverKey_{};  // what the hover was picked for
+  bool tapeTool_ = false;           // M: clicks measure instead of selecting
+  TapeMeasure tape_;
   bool pushPullTool_ = false;       // P: a press on a face pushes or pulls it
   PushPull pushPull_;               // the drag in progress
   bool pushPullDragged_ = false;    // the button is held (else the face follows until a click)

@@ -25,6 +25,7 @@ void App::runAction(const Action& a) { actions_.run(a); }
 void App::registerActions() {
   registerStudioActions();  // app_studio.cpp
   registerPushPullActions();  // app_push_pull.cpp
+  registerTapeActions();      // app_tape.cpp
   auto doc = [this] { return history_.current(); };
   auto add = [this](Action a) { actions_.add(std::move(a)); };
   add({"file.new", "File", "New", "Start an empty project.", {GLFW_KEY_N, true}, false, [this] { newDocument(); }});

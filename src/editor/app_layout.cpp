@@ -164,7 +164,7 @@ void App::drawToolbar(const Layout& l) {
       {"command.search", "Search"}, {"|", ""}, {"edit.undo", "Undo"}, {"edit.redo", "Redo"}, {"|", ""},
       {"add", "Add"}, {"|", ""}, {"view.frame", "Frame All"}, {"view.orthographic", "Ortho"}, {"view.top", "Top"},
       {"view.front", "Front"}, {"view.right", "Right"}, {"view.perspective", "Angled"}, {"|", ""},
-      {"view.wireframe", "Wire"}, {"view.shadows", "Shadows"}, {"|", ""}, {"tool.push_pull", "Push/Pull"}};
+      {"view.wireframe", "Wire"}, {"view.shadows", "Shadows"}, {"|", ""}, {"tool.push_pull", "Push/Pull"}, {"tool.measure", "Measure"}};
   const ImGuiStyle& style = ImGui::GetStyle();
   auto widthOf = [&](const Entry& e) {
     return std::string_view(e.id) == "|" ? ImGui::CalcTextSize("|").x : ImGui::CalcTextSize(e.text).x + 2 * style.FramePadding.x;

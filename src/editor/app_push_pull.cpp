@@ -26,6 +26,7 @@ Ray intoFrame(const Placement& p, const Ray& world) {
 
 void App::togglePushPullTool() {
   pushPullTool_ = !pushPullTool_;
+  if (pushPullTool_ && tapeTool_) toggleTapeTool();
   if (!pushPullTool_ && pushPull_.active()) endPushPull(false);
   pushPullHover_ = {};
   hoverKey_ = {};  // the face under the pointer is looked for again

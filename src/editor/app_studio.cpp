@@ -200,6 +200,7 @@ void App::updateHover(bool overUi) {
     selection_.hover.reset();
     hoverKey_ = {};
     pushPullHover_ = {};
+    tape_.hover(std::nullopt);
     return;
   }
   // Picked again only when the pointer, the Scene or the camera changed.
@@ -210,6 +211,7 @@ void App::updateHover(bool overUi) {
   hoverKey_ = key;
   selection_.hover = objectUnder(view_.ray(tool_.pointerX(), tool_.pointerY()));
   updatePushPullHover();
+  updateTapeHover();
 }
 
 void App::boxSelect(float x0, float y0, float x1, float y1) {

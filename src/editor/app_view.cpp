@@ -31,6 +31,7 @@ void App::handleViewInput() {
     return g ? Ray{g->placement.unapply(r.origin), g->placement.unapplyDirection(r.direction)} : r;
   };
   c.grab = [this, own](const Ray& world) {
+    if (tapeTool_) return false;  // a drag orbits; clicks measure
     if (grabGizmo(tool_.pressX(), tool_.pressY())) return true;
     if (beginPushPull(world)) return true;
     const Ray r = own(world);
@@ -44,7 +45,7 @@ void App::handleViewInput() {
   c.release = [this] {
     if (growthPanel_.viewDragging()) growthPanel_.endViewDrag(growthHost());
   };
-  c.click = [this](const Ray& r) { clickInView(r); };
+  c.click = [this](const Ray& r) { tapeTool_ ? tapeClick(r) : clickInView(r); };
   c.boxSelect = [this](float x0, float y0, float x1, float y1) { boxSelect(x0, y0, x1, y1); };
   const bool overUi = ImGui::GetIO().WantCaptureMouse;
   // G or R began a transform: the frame's input is its own. A gizmo drag shares it with the
@@ -58,7 +59,9 @@ void App::handleViewInput() {
     if (transform_.active()) transformInput();
     if (pushPull_.active()) pushPullInput();
   }
+  tapeInput();
   updateHover(overUi);
+  drawTapeLabels();
   drawBoxBand();
   // The growth site was deselected (a menu, a shortcut) during the drag.
   if (growthPanel_.viewDragging() && !selectedGrowth()) growthPanel_.endViewDrag(growthHost());
@@ -184,6 +187,7 @@ void App::drawView() {
   renderer_->overlayOnTop().placeSince(above, activePlacement);
   drawStudioOverlay();
   drawPushPullOverlay();
+  drawTapeOverlay();
   drawErrorMarks(renderer_->overlayOnTop());
   renderer_->setScene(shownScene(), settings_);
   const int px = int(view_.x() * sx), py = int((vp->Size.y - view_.y() - view_.height()) * sy),

@@ -29,6 +29,9 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   if (!s.failed.empty()) j["failed"] = s.failed;
   if (s.activeInView) j["active_in_view"] = *s.activeInView;
   if (s.search) j["search"] = *s.search;
+  if (s.tape)
+    j["tape"] = {{"from", s.tape->from}, {"to", s.tape->to}, {"from_snap", s.tape->fromSnap},
+                 {"to_snap", s.tape->toSnap}, {"length", s.tape->length}};
   return j;
 }
 

@@ -32,6 +32,13 @@ struct SettledFrame {
   std::vector<std::string> failed;  // the objects whose last build failed (flagged in the list)
   std::optional<bool> activeInView;   // the active object's bounds lie wholly in the 3D view
   std::optional<std::string> search;  // the command search's text while it is open
+  // The tape measure's finished measurement: its ends, how each snapped, and its length.
+  struct Tape {
+    std::array<double, 3> from{}, to{};
+    std::string fromSnap, toSnap;
+    double length = 0;
+  };
+  std::optional<Tape> tape;
 };
 
 // The line for `s` (one JSON object, no newline).
