@@ -48,6 +48,10 @@ App::App(GLFWwindow* window, EditorOptions options)
       recent_(stateDirOr(options_.stateDir) + "/recent.json") {
   input_ = std::make_unique<GlfwInput>(window_);
   if (!options_.testLog.empty()) testLog_ = std::make_unique<TestLog>(options_.testLog);
+  if (!options_.latencyLog.empty()) {
+    latencyLog_ = std::make_unique<std::ofstream>(options_.latencyLog, std::ios::trunc);
+    if (!*latencyLog_) throw Error("--latency-log: cannot write " + options_.latencyLog);
+  }
   extrude::registerKernel(sync_);
   statics::registerKernel(sync_);
   kifs::registerKernel(sync_);
@@ -109,7 +113,10 @@ void App::log(const std::string& line, bool error) {
 // ---------------------------------------------------------------- document and files
 
 void App::commit(Document doc, const std::string& label, const std::string& mergeKey) {
+  const std::uint64_t before = history_.stateId();
   history_.commit(std::move(doc), label, mergeKey);
+  if (latencyLog_ && !batch_.events.empty() && history_.stateId() != before)
+    latency_.caused(history_.stateId(), batch_.events.front().time);
 }
 
 bool App::scripted() const { return script_.scripted(); }
@@ -715,6 +722,12 @@ int App::run() {
       break;
     }
     glfwSwapBuffers(window_);
+    if (latencyLog_) {
+      glFinish();  // the frame is on screen, not only queued
+      if (const auto s = latency_.presented(live_.shownState(), glfwGetTime()))
+        *latencyLog_ << "{\"frame\":" << frame_ << ",\"state\":" << *live_.shownState() << ",\"ms\":" << *s * 1000 << "}\n"
+                     << std::flush;
+    }
     autosaveIfDue();
     writeTestLog();
     const std::string title = windowTitle();

@@ -21,6 +21,7 @@
 #include "editor/glfw_input.h"
 #include "editor/growth_panel.h"
 #include "editor/kifs_panel.h"
+#include "editor/latency.h"
 #include "editor/layout.h"
 #include "editor/navigate_tool.h"
 #include "editor/script_runner.h"
@@ -44,6 +45,7 @@
 #include <atomic>
 #include <chrono>
 #include <deque>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
@@ -292,6 +294,8 @@ class App {
   bool transformDragged_ = false;   // begun by a press on the gizmo: ends at the release
   bool transformCommitted_ = false; // its preview is in the History (one merged step)
   std::array<double, 8> hoverKey_{};  // what the hover was picked for
+  FrameLatency latency_;                 // --latency-log: input stamps waiting for their frame
+  std::unique_ptr<std::ofstream> latencyLog_;
   bool tapeTool_ = false;           // M: clicks measure instead of selecting
   TapeMeasure tape_;
   bool pushPullTool_ = false;       // P: a press on a face pushes or pulls it

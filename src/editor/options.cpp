@@ -51,6 +51,10 @@ void declareEditorOptions(CLI::App& app, EditorOptions& o) {
   app.add_option("--test-log", o.testLog,
                  "Write a JSON line for each settled frame: the selection, the camera, the last action (for tests).")
       ->type_name("FILE");
+  app.add_option("--latency-log", o.latencyLog,
+                 "Write a line for each frame that first shows a change made by input: the milliseconds from "
+                 "the event to that frame (benchmarks).")
+      ->type_name("FILE");
   app.add_option("--frame-delay", o.frameDelayMs, "Sleep MS milliseconds in every frame, as a slow machine would (tests).")
       ->check(wholeIn(0, 10000))
       ->type_name("MS");

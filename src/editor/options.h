@@ -23,6 +23,7 @@ struct EditorOptions {
   std::string stateDir;  // recovery and recent files ("" = defaultStateDir())
   std::string select;    // select the object of this name at start
   std::string testLog;   // write a line per settled frame here (editor/test_log.h)
+  std::string latencyLog;  // write a line per frame that shows an input's change (editor/latency.h)
   int frameDelayMs = 0;  // sleep this long in every frame, as a slow machine would (for tests)
 };
 
