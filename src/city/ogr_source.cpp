@@ -5,8 +5,10 @@
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
 #include <memory>
 #include <mutex>
+#include <sstream>
 
 namespace corbel::city {
 
@@ -23,6 +25,12 @@ struct QuietGdal {
   QuietGdal(const QuietGdal&) = delete;
   QuietGdal& operator=(const QuietGdal&) = delete;
 };
+
+// GDAL's drivers, registered once for the process.
+void registerDrivers() {
+  static std::once_flag registered;
+  std::call_once(registered, [] { GDALAllRegister(); });
+}
 
 std::string lastError(const std::string& otherwise) {
   const char* m = CPLGetLastErrorMsg();
@@ -82,8 +90,7 @@ nlohmann::json field(const OGRFeature& f, int i) {
 }  // namespace
 
 SourceFeatures readOgrSource(const std::string& path, const SourceOptions& options) {
-  static std::once_flag registered;
-  std::call_once(registered, [] { GDALAllRegister(); });
+  registerDrivers();
   const QuietGdal quiet;
   CPLErrorReset();
   std::unique_ptr<GDALDataset, DatasetCloser> data(
@@ -141,6 +148,25 @@ SourceFeatures readOgrSource(const std::string& path, const SourceOptions& optio
       throw InputError("where", "\"" + options.where + "\" on layer \"" + out.layer + "\": " + lastError("GDAL failed"));
     throw InputError(path, "reading layer \"" + out.layer + "\": " + lastError("GDAL failed"));
   }
+  return out;
+}
+
+std::vector<std::string> vectorFileExtensions() {
+  registerDrivers();
+  std::vector<std::string> out = {".geojson", ".json"};
+  GDALDriverManager* drivers = GetGDALDriverManager();
+  for (int i = 0; i < drivers->GetDriverCount(); ++i) {
+    GDALDriver* d = drivers->GetDriver(i);
+    if (!d->GetMetadataItem(GDAL_DCAP_VECTOR)) continue;
+    const char* list = d->GetMetadataItem(GDAL_DMD_EXTENSIONS);
+    if (!list) list = d->GetMetadataItem(GDAL_DMD_EXTENSION);
+    std::istringstream words(list ? list : "");
+    for (std::string e; words >> e;) {
+      std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+      if (!e.empty() && std::find(out.begin(), out.end(), "." + e) == out.end()) out.push_back("." + e);
+    }
+  }
+  std::sort(out.begin() + 2, out.end());
   return out;
 }
 

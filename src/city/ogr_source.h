@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace corbel::city {
 
@@ -26,5 +27,9 @@ struct SourceFeatures {
 // it). Throws InputError naming the path, the layer or "where" when GDAL cannot open the source,
 // the layer is not there or ambiguous, or the filter is not valid OGR SQL.
 SourceFeatures readOgrSource(const std::string& path, const SourceOptions& options = {});
+
+// The file extensions of every vector format this GDAL reads (".geojson", ".shp", ".gpkg",
+// ".fgb", ...), as its drivers declare them, GeoJSON's first: what a footprint dialog offers.
+std::vector<std::string> vectorFileExtensions();
 
 }  // namespace corbel::city

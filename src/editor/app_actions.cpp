@@ -2,6 +2,8 @@
 // shortcuts and help built from that registry.
 #include "editor/app.h"
 
+#include "city/ogr_source.h"
+
 #include "editor/gestures.h"
 #include "editor/menu_order.h"
 #include "editor/new_objects.h"
@@ -197,12 +199,13 @@ void App::registerActions() {
   add({"object.add_town",
        "Object/Add",
        "Town...",
-       "Add a town (Kelly & Wonka Sec. 3.7): choose a GeoJSON footprint file; it is styled with "
+       "Add a town (Kelly & Wonka Sec. 3.7): choose a footprint file in any vector format GDAL reads (GeoJSON, "
+       "Shapefile, GeoPackage, FlatGeobuf, ...); it is styled with "
        "assets/styles/mixed.json until another style is picked in the Town panel.",
        {},
        false,
        [this, doc, added] {
-         fileDialog_.open(FileDialog::Mode::Open, "Open footprints", {".geojson", ".json"}, path_,
+         fileDialog_.open(FileDialog::Mode::Open, "Open footprints", city::vectorFileExtensions(), path_,
                           [doc, added](const std::string& path) {
                             Document d = doc();
                             TownSpec t;

@@ -1,5 +1,8 @@
 #include "editor/town_panel.h"
 
+#include "city/ogr_source.h"
+#include "editor/fields.h"
+
 #include "city/street.h"
 #include "core/error.h"
 #include "editor/pane_window.h"
@@ -440,13 +443,34 @@ void TownPanel::draw(const TownHost& host, float x, float y, float w, float h) {
   ImGui::SameLine();
   if (ImGui::SmallButton("Open...")) {
     const TownSpec s = *current;
-    host.openFile("Open footprints", {".geojson", ".json"}, s.footprints, [commitSpec, s](const std::string& path) {
+    host.openFile("Open footprints", city::vectorFileExtensions(), s.footprints, [commitSpec, s](const std::string& path) {
       TownSpec t = s;
       t.footprints = path;
       t.footprintsJson.clear();
       t.overrides.clear();  // other footprints: the ids mean other buildings
       commitSpec(t, "Open footprints " + fileName(path), {});
     });
+  }
+  // Where GDAL needs telling: the source's CRS when it names none, the layer of a source with
+  // several, an attribute filter. Each applies when its field is left; overrides stay, by id.
+  struct SourceField {
+    const char* label;
+    std::string TownSpec::*member;
+    const char* help;
+  };
+  const SourceField sourceFields[] = {
+      {"CRS", &TownSpec::crs, "The footprints' CRS when the file names none: EPSG:32632, a WKT, a PROJ string, or "
+                              "\"local\" for metres as they are. Empty: the file's own."},
+      {"Layer", &TownSpec::layer, "The layer to read from a source with several (a GeoPackage, a folder). Empty: the only one."},
+      {"Filter", &TownSpec::where, "An OGR SQL attribute filter, e.g. building = 'house' AND height > 3. Empty: every feature."}};
+  for (const SourceField& f : sourceFields) {
+    std::string value;
+    if (commitText(f.label, current->*f.member, value, 1000)) {
+      TownSpec t = *current;
+      t.*f.member = value;
+      commitSpec(t, std::string("Footprints' ") + (f.label == std::string("Filter") ? "filter" : f.label) + " " + value, {});
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.help);
   }
   const std::vector<std::string> styles = stylesIn(host.stylesFolder);
   const std::string styleLabel = current->style.empty() ? "(embedded)" : fileName(current->style);

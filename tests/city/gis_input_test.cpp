@@ -4,6 +4,7 @@
 // files without a CRS refused; layers and filters; the CLI's georeference.
 #include "city/import.h"
 #include "city/kernel.h"
+#include "city/ogr_source.h"
 #include "core/error.h"
 
 #include <geodesic.h>
@@ -16,6 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -339,6 +341,20 @@ TEST(GisInput, ATownObjectReadsAnyFormat) {
   const TownInputs in = readTownInputs(spec);
   EXPECT_EQ(in.town.frame.crs, "EPSG:4326");
   EXPECT_EQ(in.town.buildings.size(), files().original.ellipsoidArea.size());
+}
+
+TEST(GisInput, TheFootprintDialogOffersEveryFormatTheTestsWrite) {
+  // The editor's footprint dialogs filter by these: every format ogr2ogr writes for the tests
+  // above is offered, GeoJSON's first, each once.
+  const std::vector<std::string> ext = vectorFileExtensions();
+  ASSERT_GE(ext.size(), 2u);
+  EXPECT_EQ(ext[0], ".geojson");
+  for (const char* e : {".json", ".shp", ".gpkg", ".fgb", ".kml", ".gml"})
+    EXPECT_NE(std::find(ext.begin(), ext.end(), e), ext.end()) << e;
+  for (std::size_t i = 0; i < ext.size(); ++i) {
+    EXPECT_EQ(ext[i][0], '.') << ext[i];
+    EXPECT_EQ(std::count(ext.begin(), ext.end(), ext[i]), 1) << ext[i];
+  }
 }
 
 namespace {
