@@ -145,6 +145,29 @@ TEST(Session, ShakenBoxSlidesAsFarAsFrictionAllows) {
   EXPECT_NEAR(s.poses()[0].translation[2], 0, 1e-4);
 }
 
+// A box on a slope of θ (gravity turned by θ about y) with friction α = 0.7: Coulomb holds it
+// below atan α = 35.0° and lets it slide above, with acceleration g (sin θ − α cos θ). Friction
+// alone holds it along the slope, as it holds a vault's joints along the barrel's axis.
+TEST(Session, FrictionHoldsABoxOnASlopeBelowItsAngleAndLetsItSlideAbove) {
+  const double g = 9.81, mu = 0.7;
+  auto onSlope = [&](double thetaDeg) {
+    statics::Assembly as;
+    as.blocks = {statics::boxBlock("box", Vec3(-0.2, -0.2, 0), Vec3(0.2, 0.2, 0.2)), ground()};
+    const double t = thetaDeg * M_PI / 180;
+    as.gravity = Vec3(std::sin(t), 0, -std::cos(t));
+    return as;
+  };
+  Session held(onSlope(30));
+  held.runUntil(5.0);
+  EXPECT_LT(held.maxDisplacement()[0], kStandsWithin);
+  const double theta = 40 * M_PI / 180;
+  Session slides(onSlope(40));
+  slides.runUntil(1.0);
+  const double expected = g * (std::sin(theta) - mu * std::cos(theta)) / 2;  // ½ a t², t = 1 s
+  EXPECT_NEAR(slides.poses()[0].translation[0], expected, 0.02 * expected);
+  EXPECT_NEAR(slides.poses()[0].translation[2], 0, 1e-4);
+}
+
 // Froude similarity: a model a quarter the paper's width gets half its velocity and duration.
 TEST(Session, PaperShakeScalesWithTheSquareRootOfTheSize) {
   statics::Assembly wide;
