@@ -1,6 +1,8 @@
 // Masonry statics: one penalty QP on walls of about 100, 1,000 and 5,000 blocks, and one
 // iteration of the parameter search (one QP and its envelope gradient) on the paper's
 // examples. Results: docs/benchmarks.md.
+#include "compose/stone_extrusion.h"
+#include "core/project_io.h"
 #include "statics/analysis.h"
 #include "statics/builder.h"
 #include "statics/examples.h"
@@ -11,6 +13,8 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -46,6 +50,49 @@ void WallQP(benchmark::State& state) {
 }
 // Second argument, the Schur solver: 0 ours on 6×6 blocks, 1 CHOLMOD's supernodal LLᵀ, 2 Eigen's SimplicialLDLT.
 BENCHMARK(WallQP)->ArgsProduct({{100, 1000, 5000}, {0, 1, 2}})->ArgNames({"blocks", "solver"})->Unit(benchmark::kMillisecond);
+// The QP's reach: 10,000 blocks (a cathedral front), our Schur solver only.
+BENCHMARK(WallQP)->Args({10000, 0})->ArgNames({"blocks", "solver"})->Unit(benchmark::kMillisecond);
+
+// The stone house example (assets/examples/stone-house.corbel): an extrusion built in stone.
+ParametricModel stoneHouse(const std::string& object) {
+  const corbel::LoadedProject p = corbel::loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  const corbel::DocObject* o = p.document.findByName(object);
+  const auto* spec = o ? std::get_if<corbel::ExtrusionSpec>(&o->spec) : nullptr;
+  if (!spec) throw std::runtime_error("stone-house.corbel has no extrusion \"" + object + "\"");
+  return stoneModel(*spec);
+}
+
+// What the statics panel does after an edit of the stone house: the walls coursed from the
+// extrusion, loaded by the roof, and analysed (one penalty QP).
+void StoneHouseAnalyse(benchmark::State& state) {
+  const corbel::LoadedProject p = corbel::loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  const auto& spec = std::get<corbel::ExtrusionSpec>(p.document.findByName("Stone house")->spec);
+  AnalysisResult r;
+  std::size_t blocks = 0;
+  for (auto _ : state) {
+    const ParametricModel m = stoneModel(spec);
+    const Assembly as = m.build(m.parameters);
+    blocks = as.blocks.size() - 1;
+    r = analyse(as, {});
+    benchmark::DoNotOptimize(r.y);
+  }
+  state.counters["blocks"] = double(blocks);
+}
+BENCHMARK(StoneHouseAnalyse)->Unit(benchmark::kMillisecond);
+
+// Make It Stand on the thin-walled house (its roof's thrust overturns the walls): the search
+// over the wall thickness from the saved values.
+void StoneHouseMakeItStand(benchmark::State& state) {
+  const ParametricModel m = stoneHouse("Stone house, thin walls");
+  for (auto _ : state) {
+    const auto r = corbel::statics::searchParameters(m, m.suggestedFree);
+    benchmark::DoNotOptimize(r.measure);
+    state.counters["evaluations"] = r.evaluations;
+    state.counters["stands"] = r.status == corbel::statics::SearchStatus::Feasible;
+  }
+  state.counters["blocks"] = double(m.build(m.parameters).blocks.size() - 1);
+}
+BENCHMARK(StoneHouseMakeItStand)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void SearchIteration(benchmark::State& state, const ParametricModel& model) {
   for (auto _ : state) {
