@@ -25,6 +25,20 @@ uniform vec3 uMass;
 uniform float uWing;
 uniform float uShell;
 
+#if KIFS_FOOTPRINT == 3
+// A mass object's shell: its baked distance (kifs/mass_field.h), samples already lowered to a
+// bound, read with texelFetch and interpolated here as the CPU does (never the texture unit's
+// filtering, whose weights have only a few bits).
+uniform sampler3D uMassField;
+uniform vec3 uFieldOrigin;
+uniform float uFieldCell;
+uniform ivec3 uFieldCount;
+uniform vec3 uShellLo;
+uniform vec3 uShellHi;
+uniform vec3 uFrameOrigin;  // the followed object's frame (MassField::toFrame)
+uniform vec2 uFrameAxis;
+#endif
+
 // Algorithm 2 and the id transform; Eq. 4 (h, y0, s_y); stretch L_f.
 uniform float uPeriod;
 uniform vec3 uFoldR;
@@ -40,7 +54,8 @@ uniform vec2 uRing;
 // The building's variant, compiled in (render/kifs_pass.cpp defines KIFS_* before this file):
 // llvmpipe runs both sides of every branch, even on a uniform, so what a building does not use
 // must not be in its program. R1, R2 = I skip their products (I·p = p exactly); footprint 0 box,
-// 1 T, 2 H; ids are cells (a1 or b1 ≠ 0); curvilinear coordinates; a closed ring has no seam.
+// 1 T, 2 H, 3 a mass object's baked field; ids are cells (a1 or b1 ≠ 0); curvilinear
+// coordinates; a closed ring has no seam.
 const bool kR1Identity = KIFS_R1_IDENTITY != 0;
 const bool kR2Identity = KIFS_R2_IDENTITY != 0;
 const int kFootprint = KIFS_FOOTPRINT;
@@ -122,6 +137,30 @@ float massModel(vec3 b, float inset) {
              massBox(b, inset, 0.0, 0.0, hx, w));
 }
 
+#if KIFS_FOOTPRINT == 3
+float fieldAt(ivec3 i) { return texelFetch(uMassField, i, 0).r; }
+
+// MassField::distance.
+float massField(vec3 p) {
+  vec3 gridHi = uFieldOrigin + uFieldCell * vec3(uFieldCount - 1);
+  vec3 q = clamp(p, uFieldOrigin, gridHi);
+  vec3 u = (q - uFieldOrigin) / uFieldCell;
+  ivec3 i = clamp(ivec3(floor(u)), ivec3(0), uFieldCount - 2);
+  vec3 t = clamp(u - vec3(i), 0.0, 1.0);
+  float r00 = fieldAt(i), r10 = fieldAt(i + ivec3(0, 1, 0)), r01 = fieldAt(i + ivec3(0, 0, 1)),
+        r11 = fieldAt(i + ivec3(0, 1, 1));
+  r00 += t.x * (fieldAt(i + ivec3(1, 0, 0)) - r00);
+  r10 += t.x * (fieldAt(i + ivec3(1, 1, 0)) - r10);
+  r01 += t.x * (fieldAt(i + ivec3(1, 0, 1)) - r01);
+  r11 += t.x * (fieldAt(i + ivec3(1, 1, 1)) - r11);
+  float a = r00 + t.y * (r10 - r00), b = r01 + t.y * (r11 - r01);
+  float inside = a + t.z * (b - a);
+  if (q == p) return inside;
+  vec3 gap = max(max(uShellLo - p, p - uShellHi), 0.0);
+  return max(inside - length(p - q), length(gap));
+}
+#endif
+
 // Algorithm 2 for one coordinate: (fold value, id, gap in fold units).
 vec3 facadeFold(float x) {
   float f = abs(2.0 * mod(x, uPeriod) / uPeriod - 1.0);
@@ -141,7 +180,12 @@ float polarStretch(float r) { return max(max(1.0, uPolar.z), uPolar.x / max(r, k
 // skips the neighbouring storey's second Algorithm 1 and the id caps, which only the bound uses.
 Sample evaluateFor(vec3 world, bool withBound) {
   ++gEvaluations;
+#if KIFS_FOOTPRINT == 3
+  vec3 d = world - uFrameOrigin;
+  vec3 b = vec3(uFrameAxis.x * d.x + uFrameAxis.y * d.y, d.z, -uFrameAxis.y * d.x + uFrameAxis.x * d.y);
+#else
   vec3 b = world.xzy;  // building coordinates, y up
+#endif
   vec3 m = b;
   float radius = 0.0, ring = -kInf, cut = kInf;
   if (kCurvilinear) {  // Eq. 5-6
@@ -164,7 +208,11 @@ Sample evaluateFor(vec3 world, bool withBound) {
   float dk = kifs(q) / uStretch;
   bool below = my < 0.5 * fh;
   float gapNear = below ? my : fh - my, gapFar = fh - gapNear;
+#if KIFS_FOOTPRINT == 3
+  float d0 = massField(world), di = d0 + uShell;
+#else
   float di = massModel(m, uShell), d0 = massModel(m, 0.0);
+#endif
   float cell = min(dk, gapFar);
   if (withBound && gapNear < cell && d0 < cell) {
     vec3 qn = q;

@@ -2,11 +2,13 @@
 // meshed into a file, or its CPU distance evaluated at given points (docs/kifs.md).
 #include "cli/guarded.h"
 #include "cli/number_list.h"
+#include "cli/project_scene.h"
 #include "cli/run.h"
 #include "core/error.h"
 #include "core/export.h"
 #include "core/project_io.h"
 #include "core/scene.h"
+#include "kifs/follow.h"
 #include "kifs/kernel.h"
 #include "kifs/mesher.h"
 #include "kifs/trace.h"
@@ -37,22 +39,29 @@ bool endsWith(const std::string& text, const std::string& end) {
   return text.size() > end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// A preset's name, a preset file or a project (its first KIFS object).
-kifs::KifsParams paramsFrom(const std::string& source) {
+// A preset's name, a preset file or a project (its first KIFS object; one that follows a mass
+// object follows it in the project's built Scene, kifs/follow.h).
+kifs::Building buildingFrom(const std::string& source) {
   if (endsWith(source, ".corbel")) {
     const LoadedProject project = loadProject(source);
-    const KifsSpec* spec = nullptr;
+    const DocObject* object = nullptr;
     for (const DocObject& o : project.document.objects)
-      if ((spec = std::get_if<KifsSpec>(&o.spec))) break;
-    if (!spec) throw Error(source + ": the project has no KIFS object");
-    return kifs::paramsOf(*spec);
+      if (std::holds_alternative<KifsSpec>(o.spec)) {
+        object = &o;
+        break;
+      }
+    if (!object) throw Error(source + ": the project has no KIFS object");
+    const auto& spec = std::get<KifsSpec>(object->spec);
+    if (spec.mass.footprint != "object") return kifs::Building(kifs::paramsOf(spec));
+    const LoadedScene loaded = loadScene(source);
+    return kifs::buildingOf(loaded.doc, loaded.scene, *loaded.doc.find(object->id));
   }
   // A preset's name has no '/' and no extension (kifs/params.h); anything else is a file.
   std::error_code ec;
   if (endsWith(source, ".json") || source.find('/') != std::string::npos ||
       std::filesystem::is_regular_file(source, ec))
-    return kifs::loadPreset(source);
-  return kifs::preset(source);
+    return kifs::Building(kifs::loadPreset(source));
+  return kifs::Building(kifs::preset(source));
 }
 
 int evalPoints(const kifs::Building& b, const std::string& path) {
@@ -90,9 +99,10 @@ int meshToFile(const kifs::Building& b, const std::string& path, int resolution)
 int run(const KifsRequest& r) {
   static_assert(kifs::kMaxMeshResolution == 1024, "the --resolution declaration (cli/commands.cpp) says 1..1024");
   const std::string presetName = !r.preset.empty() ? r.preset : r.source.empty() ? "box" : r.source;
-  const kifs::KifsParams params = paramsFrom(presetName);
-  if (!r.eval.empty()) return evalPoints(kifs::Building(params), r.eval);
-  if (!r.mesh.empty()) return meshToFile(kifs::Building(params), r.mesh, r.resolution);
+  const kifs::Building base = buildingFrom(presetName);
+  const kifs::KifsParams& params = base.params();
+  if (!r.eval.empty()) return evalPoints(base, r.eval);
+  if (!r.mesh.empty()) return meshToFile(base, r.mesh, r.resolution);
   if (r.out.empty()) throw UsageError("kifs: --out PNG (or --mesh FILE, --eval POINTS) is required");
 
   const int width = r.size.width, height = r.size.height;
@@ -110,8 +120,8 @@ int run(const KifsRequest& r) {
   const int frames = r.frames.value_or(1);
 
   const double aspect = double(width) / height;
-  const render::OrbitCamera camera = render::kifsCamera(kifs::Building(params), aspect, az, el);
-  const kifs::Building building(render::kifsForView(params, camera, height));
+  const render::OrbitCamera camera = render::kifsCamera(base, aspect, az, el);
+  const kifs::Building building(render::kifsForView(params, camera, height), base.mass());
   render::HeadlessContext context;
   render::Renderer renderer;
   render::KifsPass pass;

@@ -61,7 +61,8 @@ int run(const RenderRequest& r) {
   for (const auto& [id, info] : l.scene.objects())
     if (settings.visible(id)) box.add(l.scene.bounds(id));
   // KIFS buildings that are not meshed are ray-marched over the Scene (render/kifs_pass.h).
-  const render::RaymarchedKifs raymarched = render::raymarchedKifs(l.doc, settings.visible);
+  const render::RaymarchedKifs raymarched = render::raymarchedKifs(l.doc, settings.visible, &l.scene);
+  if (!raymarched.errors.empty()) throw Error("KIFS building " + raymarched.errors.front());
   box.add(raymarched.bounds);
   const int width = r.size.width, height = r.size.height;
   render::OrbitCamera camera;
@@ -75,7 +76,7 @@ int run(const RenderRequest& r) {
   render::Renderer renderer;
   const render::Image image =
       render::renderSceneWithKifs(renderer, l.scene, raymarched.buildings, camera, width, height, settings,
-                                  raymarched.placements);
+                                  raymarched.placements, raymarched.masses);
   render::writePng(image, r.out);
   std::cout << r.out << "\n";
   return 0;

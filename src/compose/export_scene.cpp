@@ -1,5 +1,6 @@
 #include "compose/export_scene.h"
 
+#include "kifs/follow.h"
 #include "kifs/kernel.h"
 #include "kifs/mesher.h"
 
@@ -24,8 +25,10 @@ ExportableScene exportableScene(const Document& doc, const Scene& built, const c
   for (const DocObject& o : doc.objects) {
     if (!picked(o)) continue;
     if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0) {
-      MeshData mesh = kifs::meshBuilding(kifs::Building(kifs::paramsOf(*k)), resolution);
-      applyPlacement(mesh, o.placement);
+      const kifs::Building building = kifs::buildingOf(doc, built, o);
+      MeshData mesh = kifs::meshBuilding(building, resolution);
+      if (building.mass()) out.placements.erase(o.id);  // it stands in its mass object, in world space
+      else applyPlacement(mesh, o.placement);
       out.scene.replaceObject(o.id, Kind::Ornament, o.name, mesh);
       out.notes.push_back("KIFS building \"" + o.name + "\" is ray-marched in the view: meshed at " +
                           std::to_string(resolution) + " cells along its longest side for the file");

@@ -20,8 +20,10 @@ struct KifsSpec {
   Vec3 r2{0.0, 0.0, 0.0};
   double bailout = 1000.0;
   struct Mass {
-    std::string footprint = "box";  // "box", "T" or "H"
+    std::string footprint = "box";  // "box", "T", "H" or "object"
     double halfWidth = 6.0, halfDepth = 6.0, height = 24.0, wing = 2.5, shell = 1.2;
+    std::string object;   // footprint "object": the name of the Document's object it follows
+    int resolution = 64;  // footprint "object": cells of the baked distance along the longest side
     bool operator==(const Mass&) const = default;
   } mass;
   struct Facade {

@@ -161,6 +161,10 @@ ojson kifsToJson(const KifsSpec& k) {
   j["bailout"] = k.bailout;
   j["mass"] = {{"footprint", k.mass.footprint}, {"halfWidth", k.mass.halfWidth}, {"halfDepth", k.mass.halfDepth},
                {"height", k.mass.height},       {"wing", k.mass.wing},           {"shell", k.mass.shell}};
+  if (k.mass.footprint == "object") {  // written only when used, so other files stay as they were
+    j["mass"]["object"] = k.mass.object;
+    j["mass"]["resolution"] = k.mass.resolution;
+  }
   j["facade"] = {{"period", k.facade.period}, {"r", vec(k.facade.r)}, {"a1", k.facade.a1},
                  {"a2", k.facade.a2},         {"b1", k.facade.b1},    {"b2", k.facade.b2}};
   j["floors"] = {{"height", k.floors.height}, {"y0", k.floors.y0}, {"sy", k.floors.sy}};
@@ -208,12 +212,15 @@ KifsSpec kifsFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   vector(root, "r1", k.r1);
   vector(root, "r2", k.r2);
   number(root, "bailout", k.bailout);
-  if (auto g = group("mass", {"footprint", "halfWidth", "halfDepth", "height", "wing", "shell"})) {
+  if (auto g = group("mass", {"footprint", "halfWidth", "halfDepth", "height", "wing", "shell", "object", "resolution"})) {
     if (auto v = g->find("footprint")) {
       k.mass.footprint = v->string(limits::kMaxNameLength);
-      if (k.mass.footprint != "box" && k.mass.footprint != "T" && k.mass.footprint != "H")
-        v->fail("expected \"box\", \"T\" or \"H\", found \"" + k.mass.footprint + "\"");
+      if (k.mass.footprint != "box" && k.mass.footprint != "T" && k.mass.footprint != "H" &&
+          k.mass.footprint != "object")
+        v->fail("expected \"box\", \"T\", \"H\" or \"object\", found \"" + k.mass.footprint + "\"");
     }
+    if (auto v = g->find("object")) k.mass.object = v->string(limits::kMaxNameLength);
+    if (auto v = g->find("resolution")) k.mass.resolution = static_cast<int>(v->integer(1, 512));  // kifs::kMaxMassResolution
     for (auto [key, out] : {std::pair{"halfWidth", &k.mass.halfWidth}, std::pair{"halfDepth", &k.mass.halfDepth},
                             std::pair{"height", &k.mass.height}, std::pair{"wing", &k.mass.wing},
                             std::pair{"shell", &k.mass.shell}})

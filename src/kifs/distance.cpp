@@ -1,5 +1,7 @@
 #include "kifs/distance.h"
 
+#include "core/error.h"
+#include "kifs/mass_field.h"
 #include "kifs/tolerances.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -58,12 +60,17 @@ double massModelDistance(const MassModel& m, const glm::dvec3& b, double inset) 
     case Footprint::T: return std::min(box(0, hz - w, hx, w), box(0, 0, w, hz));
     case Footprint::H:
       return std::min({box(-(hx - w), 0, w, hz), box(hx - w, 0, w, hz), box(0, 0, hx, w)});
+    case Footprint::Object: break;  // Building::evaluate reads its mass field
   }
   return kInf;
 }
 
-Building::Building(const KifsParams& params) : p_(params) {
+Building::Building(const KifsParams& params, std::shared_ptr<const MassField> mass) : p_(params) {
   validate(p_);
+  if (p_.mass.footprint == Footprint::Object) {
+    if (!mass) throw Error("kifs.mass.object: the building follows a mass object, but no mass was given");
+    mass_ = std::move(mass);
+  }
   r1_ = rotation(p_.r1);
   r2_ = rotation(p_.r2);
   r1Identity_ = r1_ == glm::dmat3(1.0);  // skipping them changes nothing (I·p = p exactly)
@@ -104,6 +111,7 @@ Building::Building(const KifsParams& params) : p_(params) {
         }
     }
   }
+  if (mass_) lo = mass_->shell.lo, hi = mass_->shell.hi;  // world x, y, z already
   const double margin = kBoundsMargin * glm::length(hi - lo);
   bounds_ = {lo - margin, hi + margin};
 }
@@ -130,7 +138,8 @@ double Building::kifs(glm::dvec3 p) const {
 }
 
 Sample Building::evaluate(const glm::dvec3& world) const {
-  const glm::dvec3 b(world.x, world.z, world.y);  // building coordinates, y up
+  const glm::dvec3 local = mass_ ? mass_->toFrame(world) : world;  // a followed object's frame
+  const glm::dvec3 b(local.x, local.z, local.y);  // building coordinates, y up
   glm::dvec3 m = b;                               // mass-model coordinates
   double radius = 0, ring = -kInf, cut = kInf;
   const Curvilinear& cv = p_.curvilinear;
@@ -159,7 +168,11 @@ Sample Building::evaluate(const glm::dvec3& world) const {
   // cells too when they change the transform; they cap the bound at their distance.
   const bool below = my < 0.5 * fl.height;
   const double gapNear = below ? my : fl.height - my, gapFar = fl.height - gapNear;
-  const double di = massModelDistance(p_.mass, m, p_.mass.shell), d0 = massModelDistance(p_.mass, m, 0.0);
+  // A mass object's shell: its baked distance (a lower bound, mass_field.h) is d_o, and d_o +
+  // shell bounds the distance to the shell offset inward by `shell` from below (a point of the
+  // inner solid has the ball of radius `shell` about it in the outer one), so d_i = d_o + shell.
+  const double d0 = mass_ ? mass_->distance(world) : massModelDistance(p_.mass, m, 0.0);
+  const double di = mass_ ? d0 + p_.mass.shell : massModelDistance(p_.mass, m, p_.mass.shell);
   double cell = std::min(dk, gapFar);
   if (gapNear < cell && d0 < cell) {  // else max(d0, cell) is d0 whatever the neighbour gives
     glm::dvec3 qn = q;

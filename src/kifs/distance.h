@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <memory>
 
 namespace corbel::kifs {
 
@@ -23,10 +24,14 @@ struct Aabb {
   glm::dvec3 size() const { return hi - lo; }
 };
 
+struct MassField;  // kifs/mass_field.h
+
 class Building {
  public:
-  // Throws corbel::Error naming the bad field (validate()).
-  explicit Building(const KifsParams& params);
+  // Throws corbel::Error naming the bad field (validate()). A building whose footprint is
+  // Object follows `mass`, the baked distance to that object's shell in world space (its outer
+  // shell; the inner one is that shell offset inward by mass.shell); the others ignore it.
+  explicit Building(const KifsParams& params, std::shared_ptr<const MassField> mass = nullptr);
 
   Sample evaluate(const glm::dvec3& world) const;
   // Algorithm 1 in fractal coordinates: negative inside, ≤ the distance to its solid.
@@ -35,6 +40,7 @@ class Building {
   Aabb worldBounds() const { return bounds_; }
 
   const KifsParams& params() const { return p_; }
+  const std::shared_ptr<const MassField>& mass() const { return mass_; }
   // Derived values the shader receives too (render/kifs_pass.cpp).
   const glm::dmat3& r1() const { return r1_; }
   const glm::dmat3& r2() const { return r2_; }
@@ -49,6 +55,7 @@ class Building {
 
  private:
   KifsParams p_;
+  std::shared_ptr<const MassField> mass_;
   glm::dmat3 r1_{1.0}, r2_{1.0};
   bool r1Identity_ = true, r2Identity_ = true;
   double rho_ = 2, stretch_ = 1;

@@ -14,13 +14,15 @@ Footprint footprintOf(const std::string& name) {
   if (name == "box") return Footprint::Box;
   if (name == "T") return Footprint::T;
   if (name == "H") return Footprint::H;
-  throw Error("kifs.mass.footprint: must be \"box\", \"T\" or \"H\", got \"" + name + "\"");
+  if (name == "object") return Footprint::Object;
+  throw Error("kifs.mass.footprint: must be \"box\", \"T\", \"H\" or \"object\", got \"" + name + "\"");
 }
 
 std::string footprintName(Footprint f) {
   switch (f) {
     case Footprint::T: return "T";
     case Footprint::H: return "H";
+    case Footprint::Object: return "object";
     case Footprint::Box: break;
   }
   return "box";
@@ -42,6 +44,7 @@ void eachField(S& s, P& p, F&& f) {
   f(s.mass.height, p.mass.height);
   f(s.mass.wing, p.mass.wing);
   f(s.mass.shell, p.mass.shell);
+  f(s.mass.resolution, p.mass.resolution);
   f(s.facade.period, p.facade.period);
   f(s.facade.r, p.facade.r);
   f(s.facade.a1, p.facade.a1);
@@ -108,6 +111,8 @@ void registerKernel(SceneSync& sync) {
     BuildResult b;
     b.kind = Kind::Ornament;
     if (spec.meshResolution <= 0) return b;
+    if (params.mass.footprint == Footprint::Object)  // the mass is another object's: not this builder's to see
+      throw Error("kifs.meshResolution: a building that follows a mass object is ray-marched only (0)");
     b.mesh = meshBuilding(Building(params), spec.meshResolution, progress);
     const int material = b.mesh.addMaterial(spec.material);
     for (int& m : b.mesh.faceMaterial) m = material;

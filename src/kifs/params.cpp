@@ -42,18 +42,26 @@ void validate(const KifsParams& p) {
           "at least ρ² = max(2, |centre|)² = " + number(rho * rho) + " (docs/kifs.md)", p.bailout);
 
   const MassModel& m = p.mass;
-  for (const auto& [name, v] : {std::pair{"mass.halfWidth", m.halfWidth}, std::pair{"mass.halfDepth", m.halfDepth},
-                                std::pair{"mass.height", m.height}}) {
-    finite(name, v);
-    require(v > 0, name, "> 0", v);
-  }
-  finite("mass.shell", m.shell);
-  require(m.shell >= 0 && m.shell < std::min({m.halfWidth, m.halfDepth, m.height}), "mass.shell",
-          "in [0, the smallest half-size or height)", m.shell);
-  if (m.footprint != Footprint::Box) {
-    finite("mass.wing", m.wing);
-    require(m.wing > m.shell && m.wing < std::min(m.halfWidth, m.halfDepth), "mass.wing",
-            "between mass.shell and the smaller half-size", m.wing);
+  if (m.footprint == Footprint::Object) {  // the mass object's shell; the half-sizes are unused
+    require(m.resolution >= 1 && m.resolution <= kMaxMassResolution, "mass.resolution",
+            "a whole number in 1.." + std::to_string(kMaxMassResolution), m.resolution);
+    finite("mass.shell", m.shell);
+    require(m.shell >= 0, "mass.shell", ">= 0", m.shell);
+    require(!p.curvilinear.enabled, "curvilinear.enabled", "false for a building that follows a mass object", 1);
+  } else {
+    for (const auto& [name, v] : {std::pair{"mass.halfWidth", m.halfWidth}, std::pair{"mass.halfDepth", m.halfDepth},
+                                  std::pair{"mass.height", m.height}}) {
+      finite(name, v);
+      require(v > 0, name, "> 0", v);
+    }
+    finite("mass.shell", m.shell);
+    require(m.shell >= 0 && m.shell < std::min({m.halfWidth, m.halfDepth, m.height}), "mass.shell",
+            "in [0, the smallest half-size or height)", m.shell);
+    if (m.footprint != Footprint::Box) {
+      finite("mass.wing", m.wing);
+      require(m.wing > m.shell && m.wing < std::min(m.halfWidth, m.halfDepth), "mass.wing",
+              "between mass.shell and the smaller half-size", m.wing);
+    }
   }
 
   const Facade& f = p.facade;

@@ -16,8 +16,9 @@ struct Rotation {
   double xDeg = 0.0, yDeg = 0.0, zDeg = 0.0;
 };
 
-// Footprints of the mass model (Sec. 3, Fig. 8): unions of boxes, Eq. 1-3.
-enum class Footprint { Box, T, H };
+// Footprints of the mass model (Sec. 3, Fig. 8): unions of boxes, Eq. 1-3; or Object, the
+// shell of another object of the Document (kifs/mass_field.h, kifs/follow.h), in world space.
+enum class Footprint { Box, T, H, Object };
 
 struct MassModel {
   Footprint footprint = Footprint::Box;
@@ -26,6 +27,7 @@ struct MassModel {
   double height = 24.0;    // the building stands on y = 0 and ends at y = height
   double wing = 2.5;       // half-width of the bars of T and H footprints
   double shell = 1.2;      // the inner shell is the outer one inset by this much (walls, windows)
+  int resolution = 64;     // Object: cells of the baked distance along the longest side of its box
 };
 
 // Algorithm 2 (facade fold) and the id-dependent transform of Sec. 3, step 4, with the
@@ -81,6 +83,7 @@ struct KifsParams {
 // Limits of the parameters; validate() refuses values outside them.
 inline constexpr int kMaxIterations = 30;
 inline constexpr double kMaxScale = 10.0;
+inline constexpr int kMaxMassResolution = 512;  // mass.resolution: cells along the longest side
 
 // ρ = max(2, |c|): the radius beyond which orbits escape and the bound's sphere (docs/kifs.md).
 double escapeRadius(const KifsParams& p);

@@ -1,6 +1,7 @@
 #include "render/kifs_pass.h"
 
 #include "core/error.h"
+#include "kifs/follow.h"
 #include "kifs/kernel.h"
 #include "kifs/trace.h"
 #include "render/gl.h"
@@ -33,6 +34,7 @@ struct UniformWriter {
   void f(const char* n, double v) { glUniform1f(at(n), float(v)); }
   void v2(const char* n, double x, double y) { glUniform2f(at(n), float(x), float(y)); }
   void v3(const char* n, const glm::dvec3& v) { glUniform3f(at(n), float(v.x), float(v.y), float(v.z)); }
+  void i3(const char* n, const glm::ivec3& v) { glUniform3i(at(n), v.x, v.y, v.z); }
   void v4(const char* n, double x, double y, double z, double w) {
     glUniform4f(at(n), float(x), float(y), float(z), float(w));
   }
@@ -87,8 +89,19 @@ std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building&
   if (w.optional("uR2", !v.r2Identity)) w.m3("uR2", b.r2());
   w.f("uBailout", p.bailout);
   w.f("uRho", b.rho());
-  w.v3("uMass", {p.mass.halfWidth, p.mass.halfDepth, p.mass.height});
-  if (w.optional("uWing", v.footprint != 0)) w.f("uWing", p.mass.wing);
+  if (w.optional("uMass", v.footprint != 3)) w.v3("uMass", {p.mass.halfWidth, p.mass.halfDepth, p.mass.height});
+  if (w.optional("uWing", v.footprint == 1 || v.footprint == 2)) w.f("uWing", p.mass.wing);
+  if (v.footprint == 3) {  // the samples themselves are KifsPass::bindMassField's (texture unit 0)
+    const kifs::MassField& m = *b.mass();
+    w.i("uMassField", 0);
+    w.v3("uFieldOrigin", m.origin);
+    w.f("uFieldCell", m.cell);
+    w.i3("uFieldCount", m.count);
+    w.v3("uShellLo", m.shell.lo);
+    w.v3("uShellHi", m.shell.hi);
+    w.v3("uFrameOrigin", m.frameOrigin);
+    w.v2("uFrameAxis", m.frameAxis.x, m.frameAxis.y);
+  }
   w.f("uShell", p.mass.shell);
   w.f("uPeriod", p.facade.period);
   w.v3("uFoldR", p.facade.r);
@@ -116,7 +129,24 @@ KifsPass::KifsPass() {
 
 KifsPass::~KifsPass() {
   glDeleteVertexArrays(1, &vao_);
+  if (fieldTexture_) glDeleteTextures(1, &fieldTexture_);
   for (const auto& [key, program] : programs_) glDeleteProgram(program);
+}
+
+void KifsPass::bindMassField(const std::shared_ptr<const kifs::MassField>& field) {
+  if (!fieldTexture_) glGenTextures(1, &fieldTexture_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_3D, fieldTexture_);
+  if (field_ != field) {
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+      glTexParameteri(GL_TEXTURE_3D, wrap, GL_CLAMP_TO_EDGE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_R32F, field->count.x, field->count.y, field->count.z, 0, GL_RED, GL_FLOAT,
+                 field->values.data());
+    field_ = field;
+  }
 }
 
 unsigned KifsPass::programFor(const KifsVariant& variant) {
@@ -131,6 +161,7 @@ unsigned KifsPass::programFor(const KifsVariant& variant) {
 void KifsPass::draw(const kifs::Building& building, const OrbitCamera& camera, int x, int y, int width, int height,
                     KifsMode mode) {
   program_ = programFor(kifsVariant(building));
+  if (building.mass()) bindMassField(building.mass());
   const glm::dmat4 vp = viewProjection(camera, width, height);
   UniformWriter w{program_, setKifsUniforms(program_, building)};
   w.m4("uViewProj", vp);
@@ -342,21 +373,27 @@ Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& 
   return target.read();
 }
 
-RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible) {
+RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible, const Scene* scene) {
   RaymarchedKifs out;
   for (const DocObject& o : doc.objects) {
     const auto* k = std::get_if<KifsSpec>(&o.spec);
     if (!k || k->meshResolution > 0 || (visible && !visible(o.id))) continue;
+    std::optional<kifs::Building> building;
     try {
-      out.buildings.push_back(kifs::paramsOf(*k));
-    } catch (const Error&) {
-      continue;
+      if (k->mass.footprint != "object") building.emplace(kifs::paramsOf(*k));
+      else if (scene) building.emplace(kifs::buildingOf(doc, *scene, o));
+    } catch (const Error& e) {
+      if (k->mass.footprint == "object" && scene) out.errors.push_back(o.name + ": " + e.what());
     }
-    out.placements.push_back(o.placement);
-    const kifs::Aabb b = kifs::Building(out.buildings.back()).worldBounds();
+    if (!building) continue;
+    const Placement placement = building->mass() ? Placement{} : o.placement;
+    out.buildings.push_back(building->params());
+    out.placements.push_back(placement);
+    out.masses.push_back(building->mass());
+    const kifs::Aabb b = building->worldBounds();
     for (int corner = 0; corner < 8; ++corner)
-      out.bounds.add(o.placement.apply(Vec3(corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y,
-                                            corner & 4 ? b.hi.z : b.lo.z)));
+      out.bounds.add(placement.apply(Vec3(corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y,
+                                          corner & 4 ? b.hi.z : b.lo.z)));
   }
   return out;
 }
@@ -371,7 +408,8 @@ OrbitCamera cameraInFrameOf(const OrbitCamera& camera, const Placement& placemen
 
 Image renderSceneWithKifs(Renderer& renderer, const Scene& scene, const std::vector<kifs::KifsParams>& buildings,
                           const OrbitCamera& camera, int width, int height, const RenderSettings& settings,
-                          const std::vector<Placement>& placements) {
+                          const std::vector<Placement>& placements,
+                          const std::vector<std::shared_ptr<const kifs::MassField>>& masses) {
   std::optional<KifsPass> pass;
   if (!buildings.empty()) pass.emplace();
   OffscreenTarget target(width, height);
@@ -379,7 +417,7 @@ Image renderSceneWithKifs(Renderer& renderer, const Scene& scene, const std::vec
   renderer.setScene(scene, settings);
   renderer.draw(camera, 0, 0, width, height, settings);
   for (std::size_t i = 0; i < buildings.size(); ++i)
-    pass->draw(kifs::Building(kifsForView(buildings[i], camera, height)),
+    pass->draw(kifs::Building(kifsForView(buildings[i], camera, height), i < masses.size() ? masses[i] : nullptr),
                i < placements.size() ? cameraInFrameOf(camera, placements[i]) : camera, 0, 0, width, height,
                KifsMode::Shaded);
   glFinish();

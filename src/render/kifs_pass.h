@@ -4,12 +4,14 @@
 // composes with the Scene drawn by Renderer before it.
 #include "core/document.h"
 #include "kifs/distance.h"
+#include "kifs/mass_field.h"
 #include "render/camera.h"
 #include "render/image.h"
 #include "render/renderer.h"
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -74,7 +76,12 @@ class KifsPass {
 
  private:
   unsigned programFor(const KifsVariant& variant);
+  void bindMassField(const std::shared_ptr<const kifs::MassField>& field);
   unsigned program_ = 0, vao_ = 0;
+  // The last mass field uploaded (a 3D texture of its samples), held so that it is not freed
+  // and another one given its address while the texture stands for it.
+  std::shared_ptr<const kifs::MassField> field_;
+  unsigned fieldTexture_ = 0;
   std::map<int, unsigned> programs_;  // by KifsVariant::key
   std::vector<std::string> written_;
 };
@@ -128,10 +135,14 @@ Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& 
 
 // The KIFS objects of a document that are drawn by ray marching (core/kifs_spec.h: not meshed)
 // and shown by `visible`, with their world bounds. A spec the kernel refuses is left out (its
-// error is the object's build error, kifs/kernel.h).
+// error is the object's build error, kifs/kernel.h). A building that follows a mass object
+// (kifs/follow.h) is baked from `scene` (none given: left out), in world space, its placement
+// the identity; one whose mass cannot be baked is left out with its error in `errors`.
 struct RaymarchedKifs {
   std::vector<kifs::KifsParams> buildings;
   std::vector<Placement> placements;  // each building's (core/placement.h), in the same order
+  std::vector<std::shared_ptr<const kifs::MassField>> masses;  // the same order; null: not a follower
+  std::vector<std::string> errors;    // "NAME: what", followers left out
   BBox bounds;                        // placed
 };
 
@@ -139,13 +150,16 @@ struct RaymarchedKifs {
 // by `placement` (a move and a turn about z; a KIFS placement has no scale): the marcher draws
 // a placed building by marching its own frame with this camera, so pixels and depths match.
 OrbitCamera cameraInFrameOf(const OrbitCamera& camera, const Placement& placement);
-RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible);
+RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible,
+                              const Scene* scene = nullptr);
 
 // A picture of the Scene with ray-marched buildings over it (none: the Scene alone), each one's
 // hit threshold set for this view (kifsForView); compiles a KifsPass only when there are some.
-// `placements` (empty: none) places each building (RaymarchedKifs::placements).
+// `placements` (empty: none) places each building (RaymarchedKifs::placements); `masses` (empty:
+// none) are the followers' (RaymarchedKifs::masses).
 Image renderSceneWithKifs(Renderer& renderer, const Scene& scene, const std::vector<kifs::KifsParams>& buildings,
                           const OrbitCamera& camera, int width, int height, const RenderSettings& settings,
-                          const std::vector<Placement>& placements = {});
+                          const std::vector<Placement>& placements = {},
+                          const std::vector<std::shared_ptr<const kifs::MassField>>& masses = {});
 
 }  // namespace corbel::render

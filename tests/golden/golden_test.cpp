@@ -51,11 +51,13 @@ render::Image renderExample(const std::string& name, bool textures = false) {
   BBox box;
   for (const auto& o : p.document.objects)
     if (o.visible) box.add(scene.bounds(o.id));
-  const render::RaymarchedKifs kifs = render::raymarchedKifs(p.document, settings.visible);
+  const render::RaymarchedKifs kifs = render::raymarchedKifs(p.document, settings.visible, &scene);
+  for (const std::string& e : kifs.errors) ADD_FAILURE() << name << ": " << e;
   box.add(kifs.bounds);
   render::OrbitCamera camera;
   camera.frame(box, double(kWidth) / kHeight);
-  return render::renderSceneWithKifs(sharedRenderer(), scene, kifs.buildings, camera, kWidth, kHeight, settings);
+  return render::renderSceneWithKifs(sharedRenderer(), scene, kifs.buildings, camera, kWidth, kHeight, settings,
+                                     kifs.placements, kifs.masses);
 }
 
 class Golden : public ::testing::TestWithParam<std::string> {};

@@ -1,6 +1,8 @@
 // corbel-cli kifs: --eval prints the CPU distance function (for checking it from outside), a
 // render writes a PNG of the requested size, and bad command lines are refused by exit code.
+#include "core/project_io.h"
 #include "kifs/distance.h"
+#include "kifs/kernel.h"
 #include "render/image.h"
 #include "test_support.h"
 
@@ -131,6 +133,62 @@ TEST(KifsCli, BadCommandLinesAreRefused) {
   const CliRun unknown = cli("kifs --out x.png --preset gothic");     // unknown preset: bad input
   EXPECT_EQ(unknown.code, 1);
   EXPECT_NE(unknown.out.find("box"), std::string::npos) << unknown.out;
+}
+
+// A project whose KIFS object follows a box of the `box` preset's size: --eval builds the
+// project's Scene, bakes the box and prints the follower's values, which lie within one cell
+// diagonal below the preset's own (docs/kifs.md); and it renders.
+TEST(KifsCli, AProjectsFollowerIsEvaluatedOnItsMass) {
+  Document d;
+  BoxSpec box;
+  box.size = Vec3(12.0, 12.0, 22.8);
+  d.add("Mass", box);
+  KifsSpec k = specOf(preset("box"), "box");
+  k.mass.footprint = "object";
+  k.mass.object = "Mass";
+  k.mass.resolution = 32;
+  d.add("Ornament", k);
+  const std::string tag = std::to_string(getpid());
+  const fs::path project = fs::temp_directory_path() / ("corbel_kifs_follow_" + tag + ".corbel");
+  saveProject(d, project.string());
+  const fs::path points = fs::temp_directory_path() / ("corbel_kifs_follow_points_" + tag + ".txt");
+  std::vector<glm::dvec3> ps;
+  std::mt19937_64 rng(4);
+  {
+    std::ofstream f(points);
+    f.precision(17);
+    for (int i = 0; i < 200; ++i) {
+      // 6 m above the follower's inset bottom, where its inner shell is the preset's
+      // (KifsFollow.OnTheBoxItIsTheBoxPresetWithinOneCell).
+      ps.push_back(uniformIn(rng, {-8, -8, 1.2 + 6.0}, {8, 8, 25}));
+      f << ps.back().x << " " << ps.back().y << " " << ps.back().z << "\n";
+    }
+  }
+  const CliRun r = cli("kifs " + project.string() + " --eval " + points.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::istringstream in(r.out);
+  const Building ref(preset("box"));
+  const double diagonal = std::sqrt(3.0) * 22.8 / 32, ulp = std::ldexp(40.0, -23);
+  for (const auto& p : ps) {
+    double bound = 0, surface = 0;
+    ASSERT_TRUE(in >> bound >> surface);
+    const Sample s = ref.evaluate(p);
+    EXPECT_LE(bound, s.bound + ulp);
+    EXPECT_GE(bound, s.bound - diagonal - ulp);
+    EXPECT_LE(surface, s.surface + ulp);
+    EXPECT_GE(surface, s.surface - diagonal - ulp);
+  }
+  const fs::path png = fs::temp_directory_path() / ("corbel_kifs_follow_" + tag + ".png");
+  const CliRun drawn = cli("kifs " + project.string() + " --out " + png.string() + " --size 64x48");
+  EXPECT_EQ(drawn.code, 0) << drawn.out;
+  EXPECT_EQ(render::readPng(png.string()).width, 64);
+  // A follower of a missing object: the render names it and fails.
+  k.mass.object = "Nobody";
+  d.objects.back().spec = k;
+  saveProject(d, project.string());
+  const CliRun missing = cli("render " + project.string() + " --out " + png.string());
+  EXPECT_EQ(missing.code, 1) << missing.out;
+  EXPECT_NE(missing.out.find("kifs.mass.object: no object named \"Nobody\""), std::string::npos) << missing.out;
 }
 
 }  // namespace

@@ -862,7 +862,7 @@ TEST(ProjectIo, KifsSpecsRoundTripEveryField) {
   k.r1 = corbel::Vec3(1, 2, 3);
   k.r2 = corbel::Vec3(0, 15, 0);
   k.bailout = 500;
-  k.mass = {"H", 12, 10, 15, 3.5, 1.1};
+  k.mass = {"H", 12, 10, 15, 3.5, 1.1, "", 64};
   k.facade = {5.5, corbel::Vec3(0.2, 0.1, 0.3), 0.5, 1.5, 0.2, -0.1};
   k.floors = {3.2, 0.4, 0.9};
   k.curvilinear = {true, 9, 0.1, 1.2, -12, 0.5};
@@ -893,7 +893,7 @@ TEST(ProjectIoErrors, KifsFaultsNameTheirPath) {
   EXPECT_FAULT_CONTAINS(withKifs(R"("centre": [1, 2])"), "objects[0].kifs.centre", "[x, y, z]");
   EXPECT_FAULT_CONTAINS(withKifs(R"("mass": [])"), "objects[0].kifs.mass", "object");
   EXPECT_FAULT(withKifs(R"("mass": {"footprint": "L"})"), "objects[0].kifs.mass.footprint",
-               R"(expected "box", "T" or "H", found "L")");
+               R"(expected "box", "T", "H" or "object", found "L")");
   EXPECT_FAULT_CONTAINS(withKifs(R"("facade": {"r": [0, "x", 0]})"), "objects[0].kifs.facade.r", "[x, y, z]");
   EXPECT_FAULT_CONTAINS(withKifs(R"("curvilinear": {"enabled": 1})"), "objects[0].kifs.curvilinear.enabled", "true or false");
   EXPECT_FAULT_CONTAINS(withKifs(R"("trace": {"maxSteps": 0})"), "objects[0].kifs.trace.maxSteps", "0");

@@ -1,0 +1,95 @@
+#include "kifs/follow.h"
+
+#include "core/error.h"
+#include "core/geometry.h"
+#include "core/placement.h"
+#include "kifs/kernel.h"
+
+#include <map>
+#include <set>
+#include <string>
+
+namespace corbel::kifs {
+
+namespace {
+
+const KifsSpec* following(const DocObject& o) {
+  const auto* k = std::get_if<KifsSpec>(&o.spec);
+  return k && k->mass.footprint == "object" ? k : nullptr;
+}
+
+std::string quoted(const std::string& name) { return "\"" + name + "\""; }
+
+}  // namespace
+
+TriangleSoup sceneTriangles(const Scene& scene, ObjectId id) {
+  const PolyMesh& mesh = scene.mesh();
+  TriangleSoup out;
+  std::map<int, int> index;  // Scene vertex → soup point
+  std::vector<Vec3> loop;
+  std::vector<int> corners;
+  for (auto f : scene.faces(id)) {
+    loop.clear();
+    corners.clear();
+    for (auto v : mesh.fv_range(f)) {
+      const auto [it, fresh] = index.try_emplace(v.idx(), int(out.points.size()));
+      if (fresh) out.points.emplace_back(mesh.point(v)[0], mesh.point(v)[1], mesh.point(v)[2]);
+      loop.push_back(mesh.point(v));
+      corners.push_back(it->second);
+    }
+    for (const auto& t : triangulatePolygon(loop)) out.triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  }
+  return out;
+}
+
+const DocObject& followedObject(const Document& doc, const DocObject& kifsObject) {
+  const KifsSpec* spec = following(kifsObject);
+  if (!spec) throw Error("kifs.mass.footprint: " + quoted(kifsObject.name) + " does not follow an object");
+  std::string chain = quoted(kifsObject.name);
+  std::set<ObjectId> seen{kifsObject.id};
+  const DocObject* first = nullptr;
+  for (const KifsSpec* s = spec; s;) {
+    if (s->mass.object.empty()) throw Error("kifs.mass.object: names no object (the footprint \"object\" needs one)");
+    const DocObject* next = doc.findByName(s->mass.object);
+    if (!next) throw Error("kifs.mass.object: no object named " + quoted(s->mass.object));
+    chain += " → " + quoted(next->name);
+    if (!seen.insert(next->id).second) throw Error("kifs.mass.object: a cycle: " + chain);
+    if (!first) first = next;
+    s = following(*next);
+  }
+  if (following(*first))
+    throw Error("kifs.mass.object: " + quoted(first->name) +
+                " is a KIFS building that follows another object; a mass must be a shell (an extrusion, a box, a "
+                "unit, a meshed KIFS building)");
+  return *first;
+}
+
+std::shared_ptr<const MassField> followedMass(const Document& doc, const Scene& scene, const DocObject& kifsObject,
+                                              Progress* progress) {
+  const DocObject& mass = followedObject(doc, kifsObject);
+  const KifsParams params = paramsOf(std::get<KifsSpec>(kifsObject.spec));
+  const TriangleSoup triangles = sceneTriangles(scene, mass.id);
+  const std::string what = "kifs.mass.object: " + quoted(mass.name) + " ";
+  if (triangles.triangles.empty()) throw Error(what + "has no faces in the Scene (is its build failing?)");
+  try {
+    const ShellDistance shell(triangles);
+    auto field = std::make_shared<MassField>(bakeMassField(shell, params.mass.resolution, progress));
+    const Vec3& t = mass.placement.translation;
+    const auto [c, s] = cosSinDegrees(mass.placement.rotation_deg);
+    field->frameOrigin = glm::dvec3(t[0], t[1], t[2]);
+    field->frameAxis = glm::dvec2(c, s);
+    return field;
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(what + "is " + e.what());
+  }
+}
+
+Building buildingOf(const Document& doc, const Scene& scene, const DocObject& kifsObject, Progress* progress) {
+  const KifsParams params = paramsOf(std::get<KifsSpec>(kifsObject.spec));
+  if (params.mass.footprint != Footprint::Object) return Building(params);
+  return Building(params, followedMass(doc, scene, kifsObject, progress));
+}
+
+}  // namespace corbel::kifs

@@ -1,0 +1,38 @@
+#pragma once
+// KIFS buildings that follow a mass object (footprint "object", docs/kifs.md): the object that
+// kifs.mass.object names in the Document, its shell as the Scene holds it (placed: world
+// space), baked into a MassField for the building's d_o and d_i.
+#include "core/document.h"
+#include "core/scene.h"
+#include "kifs/distance.h"
+#include "kifs/mass_field.h"
+
+#include <memory>
+#include <vector>
+
+namespace corbel {
+class Progress;
+}
+
+namespace corbel::kifs {
+
+// An object's faces in the Scene, cut into triangles (world space).
+TriangleSoup sceneTriangles(const Scene& scene, ObjectId id);
+
+// The object a KIFS object with footprint "object" follows. Throws corbel::Error beginning
+// "kifs.mass.object: " when the name is empty, names no object, names the object itself or
+// leads back to it through KIFS objects that follow others (a cycle), or names a KIFS object
+// that follows another (a mass is a shell: an extrusion, a box, a unit, a meshed KIFS object).
+const DocObject& followedObject(const Document& doc, const DocObject& kifsObject);
+
+// That object's shell baked at kifs.mass.resolution. Throws corbel::Error beginning
+// "kifs.mass.object: \"NAME\" " when the Scene holds no faces of it (hidden objects are built
+// too; a failed build has none) or its faces do not close ("is not closed (N open edges)").
+std::shared_ptr<const MassField> followedMass(const Document& doc, const Scene& scene, const DocObject& kifsObject,
+                                              Progress* progress = nullptr);
+
+// A KIFS object's building: its spec's parameters (paramsOf) and, with footprint "object", the
+// mass it follows, in world space (the object's own placement does not apply).
+Building buildingOf(const Document& doc, const Scene& scene, const DocObject& kifsObject, Progress* progress = nullptr);
+
+}  // namespace corbel::kifs
