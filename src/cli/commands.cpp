@@ -351,13 +351,14 @@ void declareCity(CLI::App& app, Requests& requests) {
   text(*c, "--out", r.out, kExportTypes, "Write the whole town.");
   CLI::Option* tiles = text(*c, "--tiles", r.tiles, "DIR", "Write one glb per tile into DIR.");
   number(*c, "--tile-size", r.tileSize, 1, 1e6, "M", "The tiles' side.");
-  text(*c, "--tileset", r.tileset, "DIR",
+  CLI::Option* tileset = text(*c, "--tileset", r.tileset, "DIR",
        "Write a 3D Tiles 1.1 tileset into DIR (new or empty): tileset.json, and blocks and buildings per tile "
        "(docs/city.md).")
       ->excludes(tiles);
-  whole(*c, "--tile-buildings", r.tileBuildings, 1, 1000000, "N", "--tileset: at most N buildings in a tile.");
-  number(*c, "--ground", r.ground, -1e4, 1e4, "M",
-         "--tileset: the height of the ground at the town's origin above the WGS 84 ellipsoid.");
+  whole(*c, "--tile-buildings", r.tileBuildings, 1, 1000000, "N", "At most N buildings in a tileset's tile.")
+      ->needs(tileset);
+  number(*c, "--ground", r.ground, -1e4, 1e4, "M", "The tileset's ground at the town's origin, above the WGS 84 ellipsoid.")
+      ->needs(tileset);
   text(*c, "--render", r.render, "PNG", "Render the town.");
   text(*c, "--around", r.around, "X,Y,R", "Only the buildings within R meters of (X, Y).");
   choice(*c, "--coordinates", r.coordinates, {"auto", "lonlat", "metric"},
