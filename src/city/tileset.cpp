@@ -1,6 +1,7 @@
 // 3D Tiles: the quadtree, the globe frame and tileset.json (city/tileset.h).
 #include "city/tileset.h"
 
+#include "city/local_frame.h"
 #include "core/error.h"
 
 #include <proj.h>
@@ -113,6 +114,64 @@ std::array<double, 16> enuToEcef(double lon, double lat, double height) {
   return m;
 }
 
+namespace {
+
+using Matrix = std::array<double, 16>;  // column-major
+
+Matrix multiply(const Matrix& a, const Matrix& b) {
+  Matrix m{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      for (int k = 0; k < 4; ++k) m[4 * c + r] += a[4 * k + r] * b[4 * c + k];
+  return m;
+}
+
+// The inverse of a rotation and translation.
+Matrix rigidInverse(const Matrix& m) {
+  Matrix out{};
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) out[4 * c + r] = m[4 * r + c];
+  for (int r = 0; r < 3; ++r) out[12 + r] = -(m[4 * r] * m[12] + m[4 * r + 1] * m[13] + m[4 * r + 2] * m[14]);
+  out[15] = 1;
+  return out;
+}
+
+Vec3 applyMatrix(const Matrix& m, const Vec3& p) {
+  return Vec3(m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12], m[1] * p[0] + m[5] * p[1] + m[9] * p[2] + m[13],
+              m[2] * p[0] + m[6] * p[1] + m[10] * p[2] + m[14]);
+}
+
+}  // namespace
+
+Vec3 LeafFrame::direction(const Vec3& v) const {
+  const double c = std::cos(gamma), s = std::sin(gamma);
+  return Vec3(c * v[0] + s * v[1], -s * v[0] + c * v[1], v[2]);
+}
+
+Vec3 LeafFrame::operator()(const Vec3& p) const { return direction(p - Vec3(centre[0], centre[1], 0)); }
+
+std::string leafFrameDefinition(const LeafFrame& frame, double height) {
+  char definition[256];
+  std::snprintf(definition, sizeof definition, "+proj=topocentric +ellps=WGS84 +lon_0=%.17g +lat_0=%.17g +h_0=%.17g",
+                frame.lon, frame.lat, height);
+  return definition;
+}
+
+LeafFrame leafFrame(const std::string& proj, const Vec2& centre, const std::array<double, 16>& root, double height) {
+  LeafFrame f;
+  f.centre = centre;
+  const Vec2 here = toLonLat(proj, centre), north = toLonLat(proj, centre + Vec2(0, 100));
+  const Matrix at = enuToEcef(here[0], here[1], height);
+  // The local frame's +y at the centre, in the east-north-up frame there.
+  const Matrix there = enuToEcef(north[0], north[1], height);
+  const Vec3 d = applyMatrix(rigidInverse(at), Vec3(there[12], there[13], there[14]));
+  f.gamma = std::atan2(d[0], d[1]);
+  f.lon = here[0];
+  f.lat = here[1];
+  f.toRoot = multiply(rigidInverse(root), at);
+  return f;
+}
+
 nlohmann::json tilesetJson(const Quadtree& tree, const std::vector<LeafContent>& leaves,
                            const std::array<double, 16>* transform, double pad) {
   auto boxOf = [&](const BBox& b) {
@@ -128,13 +187,20 @@ nlohmann::json tilesetJson(const Quadtree& tree, const std::vector<LeafContent>&
       if (c.detail.empty()) return {nullptr, BBox()};
       BBox both = c.detail;
       both.add(c.blocks);
+      // The box the parent sees: the padded box's corners in the root's frame.
+      BBox seen;
+      for (int m = 0; m < 8; ++m)
+        seen.add(applyMatrix(c.transform, Vec3(m & 1 ? both.hi[0] + pad : both.lo[0] - pad,
+                                               m & 2 ? both.hi[1] + pad : both.lo[1] - pad,
+                                               m & 4 ? both.hi[2] + pad : both.lo[2] - pad)));
       json detail{{"boundingVolume", boxOf(c.detail)}, {"geometricError", 0}, {"content", {{"uri", c.detailUri}}}};
       json blocks{{"boundingVolume", boxOf(both)},
                   {"geometricError", c.blockError},
                   {"refine", "REPLACE"},
                   {"content", {{"uri", c.blocksUri}}},
                   {"children", json::array({std::move(detail)})}};
-      return {std::move(blocks), both};
+      if (c.transform != Matrix{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}) blocks["transform"] = c.transform;
+      return {std::move(blocks), seen};
     }
     json children = json::array();
     BBox box;
@@ -156,7 +222,8 @@ nlohmann::json tilesetJson(const Quadtree& tree, const std::vector<LeafContent>&
   if (!tree.cells.empty()) root = tile(0).first;
   if (root.is_null())  // nothing was built: an empty tile, which the format allows
     root = json{{"boundingVolume", {{"box", {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}}}}, {"geometricError", 0}};
-  if (transform) root["transform"] = *transform;
+  if (transform)  // a root that is a leaf has its frame in the root's already
+    root["transform"] = root.contains("transform") ? multiply(*transform, root["transform"].get<Matrix>()) : *transform;
   root["refine"] = "REPLACE";
   json out;
   out["asset"] = {{"version", "1.1"}, {"generator", "corbel"}};

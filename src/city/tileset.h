@@ -40,18 +40,39 @@ Quadtree buildQuadtree(const std::vector<Vec2>& points, std::size_t capacity);
 // empty boxes and is left out of the tileset.
 struct LeafContent {
   std::string blocksUri, detailUri;  // relative to the tileset.json
-  BBox blocks, detail;
+  BBox blocks, detail;               // in the leaf's frame (LeafFrame)
   double blockError = 0;
+  std::array<double, 16> transform{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // LeafFrame::toRoot
 };
+
+// The frame a leaf's content is written in: east-north-up at the leaf's centre, so that no
+// building is farther than the leaf's half-diagonal from the tangent point it is placed by.
+// A town point p (the local frame, metres) is at
+// Rz(-gamma) (p - centre) in it, where gamma is the grid convergence at the centre (the angle
+// from true north to the local frame's +y, clockwise); toRoot takes the leaf's frame to the
+// root's (the east-north-up frame at the town's origin).
+struct LeafFrame {
+  Vec2 centre{0, 0};
+  double lon = 0, lat = 0;  // the centre's, degrees (WGS 84)
+  double gamma = 0;         // radians
+  std::array<double, 16> toRoot{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  Vec3 operator()(const Vec3& p) const;        // a point into the leaf's frame
+  Vec3 direction(const Vec3& v) const;         // a direction (rotated only)
+};
+// The leaf frame's PROJ definition: the topocentric conversion from ECEF at the centre.
+std::string leafFrameDefinition(const LeafFrame& frame, double height);
+// `proj` is the town's local frame (PROJ definition), `root` = enuToEcef at its origin,
+// `height` the ground's ellipsoidal height. Throws corbel::Error or InputError.
+LeafFrame leafFrame(const std::string& proj, const Vec2& centre, const std::array<double, 16>& root, double height);
 
 // The column-major 4x4 matrix that takes east-north-up metres about (lon, lat, height) (degrees,
 // WGS 84 ellipsoidal metres) to ECEF metres (EPSG:4978), by PROJ's topocentric conversion.
 // Throws corbel::Error when PROJ cannot make it.
 std::array<double, 16> enuToEcef(double lon, double lat, double height);
 
-// The tileset.json: version 1.1, the root's transform (none when null), every tile's bounding
-// volume a box around its content and its children's grown by `pad` metres on each side, every
-// refinement REPLACE. The root's and each inner tile's geometric error is the diagonal of its
+// The tileset.json: version 1.1, the root's transform (none when null), a leaf's transform its
+// LeafContent::transform, every tile's bounding volume a box (in its own frame) around its
+// content and its children's grown by `pad` metres on each side, every refinement REPLACE. The root's and each inner tile's geometric error is the diagonal of its
 // box, a block tile's its blockError, a building tile's 0.
 nlohmann::json tilesetJson(const Quadtree& tree, const std::vector<LeafContent>& leaves,
                            const std::array<double, 16>* transform, double pad);

@@ -213,6 +213,9 @@ int run(const CityRequest& r) {
   ObjectId leafId = 1;
   int currentLeaf = -1;
   city::LeafContent leaf;
+  city::LeafFrame frame;  // the leaf's
+  std::array<double, 16> rootFrame{};
+  if (tree) rootFrame = city::enuToEcef(town.frame.lon0, town.frame.lat0, r.ground);
   std::size_t tilesetFiles = 0;
   auto flushLeaf = [&] {
     if (currentLeaf < 0 || !leafScene) return;
@@ -220,10 +223,13 @@ int run(const CityRequest& r) {
     const std::string name = std::to_string(cell.level) + "-" + std::to_string(cell.x) + "-" + std::to_string(cell.y);
     leaf.detailUri = "tiles/" + name + ".glb";
     leaf.blocksUri = "tiles/" + name + "-blocks.glb";
-    exportOptions.instances = &leafFeatures.meshes();
+    // The tile's glb is in the leaf's frame, and says so.
+    ExportOptions leafOptions = exportOptions;
+    leafOptions.georeference = {town.frame.crs, city::leafFrameDefinition(frame, r.ground), frame.lon, frame.lat, r.ground};
+    leafOptions.instances = &leafFeatures.meshes();
     addFeatures(leaf.detail, leafFeatures.meshes());
-    exportScene(*leafScene, (std::filesystem::path(r.tileset) / leaf.detailUri).string(), exportOptions);
-    ExportOptions blockOptions = exportOptions;  // plain colours: the far view
+    exportScene(*leafScene, (std::filesystem::path(r.tileset) / leaf.detailUri).string(), leafOptions);
+    ExportOptions blockOptions = leafOptions;  // plain colours: the far view
     blockOptions.instances = nullptr;
     blockOptions.textures = false;
     blockOptions.tagTextures = {};
@@ -277,23 +283,44 @@ int run(const CityRequest& r) {
       if (currentLeaf != leafOf[b.index]) {
         flushLeaf();
         currentLeaf = leafOf[b.index];
+        const city::QuadCell& cell = tree->cells[tree->leafCells[currentLeaf]];
+        frame = city::leafFrame(town.frame.proj, Vec2(cell.x0 + cell.size / 2, cell.y0 + cell.size / 2), rootFrame,
+                                r.ground);
+        leaf.transform = frame.toRoot;
       }
       if (!leafScene) {
         leafScene = std::make_unique<Scene>();
         blockScene = std::make_unique<Scene>();
       }
-      // The block: the footprint from the mesh's lowest to its highest point.
+      // The building in the leaf's frame, and its block: the footprint from the mesh's lowest to
+      // its highest point.
+      MeshData local = *mesh;
       BBox box;
-      for (const Vec3& p : mesh->points) box.add(p);
+      for (Vec3& p : local.points) box.add(p = frame(p));
       leaf.detail.add(box);
-      const auto [wall, top] = city::dominantMaterials(*mesh);
-      const MeshData block = city::extrudedBlock(town.buildings[b.index].loops, box.lo[2], box.hi[2], wall, top);
+      std::vector<std::vector<Vec2>> loops = town.buildings[b.index].loops;
+      for (auto& loop : loops)
+        for (Vec2& p : loop) {
+          const Vec3 q = frame(Vec3(p[0], p[1], 0));
+          p = Vec2(q[0], q[1]);
+        }
+      const auto [wall, top] = city::dominantMaterials(local);
+      const MeshData block = city::extrudedBlock(loops, box.lo[2], box.hi[2], wall, top);
       for (const Vec3& p : block.points) leaf.blocks.add(p);
       // The height, and the quantization's allowance at either end (the same as the boxes').
       leaf.blockError = std::max(leaf.blockError, box.hi[2] - box.lo[2] + 2 * kTilesetPad);
       blockScene->replaceObject(leafId, Kind::Shell, b.id, block);
-      leafScene->replaceObject(leafId++, Kind::Shell, b.id, *mesh);
-      if (r.instances) leafFeatures.add(b.features);
+      leafScene->replaceObject(leafId++, Kind::Shell, b.id, local);
+      if (r.instances) {
+        std::vector<extrude::FeaturePlacement> features = b.features;
+        for (extrude::FeaturePlacement& f : features) {
+          f.origin = frame(f.origin);
+          f.ex = frame.direction(f.ex);
+          f.ey = frame.direction(f.ey);
+          f.ez = frame.direction(f.ez);
+        }
+        leafFeatures.add(features);
+      }
     }
     if (view) view->replaceObject(viewId++, Kind::Shell, b.id, *mesh);
     if (tile) tile->replaceObject(tileId++, Kind::Shell, b.id, *mesh);
@@ -314,10 +341,10 @@ int run(const CityRequest& r) {
   flushTile();
   flushLeaf();
   if (tree) {
-    // Placed on the globe: the town's frame is east-north-up at its origin (docs/city.md).
-    const auto transform = city::enuToEcef(town.frame.lon0, town.frame.lat0, r.ground);
+    // Placed on the globe: the root's frame is east-north-up at the town's origin, each leaf's at
+    // its centre (docs/city.md).
     writeFileAtomic((std::filesystem::path(r.tileset) / "tileset.json").string(),
-                    city::tilesetJson(*tree, leaves, &transform, kTilesetPad).dump() + "\n");
+                    city::tilesetJson(*tree, leaves, &rootFrame, kTilesetPad).dump() + "\n");
   }
   const double buildS = seconds();
   if (whole) {

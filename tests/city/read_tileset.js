@@ -1,13 +1,20 @@
 // Reads a tileset as a 3D Tiles client does (loaders.gl's Tiles3DLoader and GLTFLoader) and
 // checks it against oracles of its own:
-//   node read_tileset.js TILESET_DIR LON LAT HEIGHT WHOLE.glb
+//   node read_tileset.js TILESET_DIR LON LAT HEIGHT WHOLE.glb R
 // - the root transform is the east-north-up frame at (LON, LAT, HEIGHT) on WGS 84, by the
 //   ellipsoid's formulas written out here (not PROJ, which wrote it);
 // - every tile's content lies inside its bounding volume, every child's volume inside its
 //   parent's, geometric errors fall from parent to child and a leaf's is 0; refinement REPLACE;
 // - a block tile's error is at least the height of each of its blocks, and its blocks are as
 //   many as the buildings of the tile that refines it;
-// - the leaves' triangles add up to WHOLE.glb's (the same town written as one glb).
+// - the leaves' triangles add up to WHOLE.glb's (the same town written as one glb);
+// - each building lands on the globe where the footprint file puts it: its surface's centroid
+//   in WHOLE.glb (the file's equirectangular frame about LON, LAT on the sphere of radius R, taken
+//   back to lon/lat by that projection's formulas) against the same centroid in its tile, placed by
+//   the tiles' transforms. Allowed: the frame's own stretch against WGS 84 over the distance d
+//   from the tile's origin, |N/R - 1| + |M/R - 1| + 1e-3 (N, M the ellipsoid's radii of
+//   curvature; 1e-3 bounds the frame's reported scale_error), times d, plus the tangent plane's
+//   drop d^2 / (2 R), plus 2 mm of quantization.
 // Prints a summary line; exits 1 with the failures listed.
 'use strict';
 const fs = require('fs');
@@ -17,7 +24,7 @@ const {parse} = require(path.join(nm, '@loaders.gl/core'));
 const {Tiles3DLoader} = require(path.join(nm, '@loaders.gl/3d-tiles'));
 const {GLTFLoader, postProcessGLTF} = require(path.join(nm, '@loaders.gl/gltf'));
 
-const [dir, lonArg, latArg, heightArg, wholeGlb] = process.argv.slice(2);
+const [dir, lonArg, latArg, heightArg, wholeGlb, radiusArg] = process.argv.slice(2);
 const failures = [];
 // A file's bytes as an ArrayBuffer of their own (a small Buffer shares Node's pool).
 const bytesOf = (file) => {
@@ -97,16 +104,30 @@ async function readGlb(file) {
     }
     const points = [];
     let triangles = 0;
+    // The surface's centroid (triangles weighted by area), which the welding of vertices and the
+    // quantization grid leave where it is, unlike the mean of the vertices.
+    let area = 0;
+    const moment = [0, 0, 0];
     for (const prim of node.mesh.primitives) {
       const pos = elements(prim.attributes.POSITION);
       const idx = prim.indices ? prim.indices.count : pos.length;
       triangles += (idx / 3) * instances.length;
       for (const I of instances) {
         const world = mul(yUpToZUp, mul(m, I));
-        for (const p of pos) points.push(apply(world, p));
+        const placed = pos.map((p) => apply(world, p));
+        points.push(...placed);
+        const index = prim.indices.value;
+        for (let t = 0; t + 2 < idx; t += 3) {
+          const [A, B, C] = [placed[index[t]], placed[index[t + 1]], placed[index[t + 2]]];
+          const u = [0, 1, 2].map((k) => B[k] - A[k]), v = [0, 1, 2].map((k) => C[k] - A[k]);
+          const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+          const s = Math.hypot(...n) / 2;
+          area += s;
+          for (let k = 0; k < 3; ++k) moment[k] += (s * (A[k] + B[k] + C[k])) / 3;
+        }
       }
     }
-    meshes.push({name: node.name, points, triangles, instanced: !!inst});
+    meshes.push({name: node.name, points, triangles, instanced: !!inst, centroid: moment.map((x) => x / area)});
   };
   const scene = typeof gltf.scene === 'object' ? gltf.scene : gltf.scenes[gltf.scene || 0];
   for (const node of scene.nodes) visit(node, identity());
@@ -153,14 +174,16 @@ function boxCorners(box) {
   if (t[3] !== 0 || t[7] !== 0 || t[11] !== 0 || t[15] !== 1) fail('the transform is not affine');
 
   let tiles = 0, contents = 0, leafTriangles = 0, blockTiles = 0, glbs = [];
-  const walk = async (tile, parent, depth) => {
+  const walk = async (tile, parent, depth, parentFrame) => {
     ++tiles;
     const box = boxOf(tile.boundingVolume);
     const where = `tile at depth ${depth}${tile.content ? ' (' + tile.content.uri + ')' : ''}`;
+    const local = tile.transform ? Array.from(tile.transform) : identity();
+    const frame = mul(parentFrame, local);  // the tile's frame in ECEF
     if (parent) {
       if (!(tile.geometricError < parent.geometricError)) fail(`${where}: geometric error ${tile.geometricError} not below its parent's ${parent.geometricError}`);
       const pbox = boxOf(parent.boundingVolume);
-      if (!boxCorners(box).every((p) => inBox(pbox, p))) fail(`${where}: its volume is not inside its parent's`);
+      if (!boxCorners(box).every((p) => inBox(pbox, apply(local, p)))) fail(`${where}: its volume is not inside its parent's`);
     }
     const children = tile.children || [];
     if (!children.length && tile.geometricError !== 0) fail(`${where}: a leaf with geometric error ${tile.geometricError}`);
@@ -176,6 +199,12 @@ function boxCorners(box) {
       for (const m of meshes) for (const p of m.points) { ++points; if (!inBox(box, p)) ++outside; }
       if (outside) fail(`${where}: ${outside} of ${points} vertices outside the bounding volume`);
       if (!children.length) for (const m of meshes) leafTriangles += m.triangles;
+      if (!children.length)
+        for (const m of meshes) {
+          if (m.instanced) continue;
+          const c = m.centroid;
+          placed.set(m.name, {ecef: apply(frame, c), d: Math.hypot(c[0], c[1])});
+        }
     }
     if (tile.content && children.length) {  // a block tile: one block per building of its child
       ++blockTiles;
@@ -190,9 +219,10 @@ function boxCorners(box) {
       if (blocks.length !== new Set(buildings).size || !blocks.every((b) => buildings.includes(b)))
         fail(`${where}: ${blocks.length} blocks for ${new Set(buildings).size} buildings`);
     }
-    for (const c of children) await walk(c, tile, depth + 1);
+    for (const c of children) await walk(c, tile, depth + 1, frame);
   };
-  await walk(raw.root, null, 0);
+  const placed = new Map();
+  await walk(raw.root, null, 0, identity());
   if (!(raw.geometricError >= raw.root.geometricError)) fail('the tileset\'s geometric error is below its root\'s');
 
   // The same town as one glb.
@@ -207,8 +237,29 @@ function boxCorners(box) {
   }
   if (leafTriangles !== wholeTriangles) fail(`the leaves hold ${leafTriangles} triangles, the whole town ${wholeTriangles}`);
 
+  // Where the footprint file puts each building.
+  const R = Number(radiusArg), lon0 = Number(lonArg), lat0 = Number(latArg), h0 = Number(heightArg);
+  const rad = Math.PI / 180, a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
+  const w = 1 - e2 * Math.sin(lat0 * rad) ** 2;
+  const k = Math.abs(a / Math.sqrt(w) / R - 1) + Math.abs((a * (1 - e2)) / w ** 1.5 / R - 1) + 1e-3;
+  let worst = 0, compared = 0;
+  for (const m of await readGlb(wholeGlb)) {
+    if (m.instanced || !placed.has(m.name)) continue;
+    const [x, y, z] = m.centroid;
+    const lat = lat0 + y / R / rad, lon = lon0 + x / (R * Math.cos(lat0 * rad)) / rad;
+    const truth = enu(lon, lat, h0 + z).origin;
+    const p = placed.get(m.name);
+    const err = Math.hypot(...truth.map((t, i) => t - p.ecef[i]));
+    const bound = k * p.d + (p.d * p.d) / (2 * R) + 0.002;
+    worst = Math.max(worst, err);
+    ++compared;
+    if (!(err <= bound)) fail(`${m.name}: placed ${err.toFixed(3)} m from where the footprints put it (allowed ${bound.toFixed(3)} m, ${p.d.toFixed(0)} m from its tile's origin)`);
+  }
+  if (compared !== placed.size) fail(`${compared} of the tiles' ${placed.size} buildings found in the whole town`);
+
   fs.writeFileSync(path.join(dir, '..', path.basename(dir) + '.glbs'), glbs.join('\n') + '\n');
-  console.log(JSON.stringify({tiles, contents, blockTiles, leafTriangles, wholeTriangles, originError_m: dist}));
+  console.log(JSON.stringify({tiles, contents, blockTiles, leafTriangles, wholeTriangles, originError_m: dist,
+                              buildingsPlaced: compared, worstPlacement_m: worst}));
   for (const f of failures) console.log('FAIL ' + f);
   process.exit(failures.length ? 1 : 0);
 })().catch((e) => {
