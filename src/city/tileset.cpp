@@ -23,7 +23,7 @@ constexpr double kSmallestCell = 1.0;
 
 }  // namespace
 
-Quadtree buildQuadtree(const std::vector<Vec2>& points, std::size_t capacity) {
+Quadtree buildQuadtree(const std::vector<Vec2>& points, std::size_t capacity, double maxSide) {
   Quadtree tree;
   tree.leafOf.assign(points.size(), -1);
   if (points.empty()) return tree;
@@ -39,7 +39,7 @@ Quadtree buildQuadtree(const std::vector<Vec2>& points, std::size_t capacity) {
   for (std::size_t i = 0; i < points.size(); ++i) all[i] = static_cast<int>(i);
   std::function<int(QuadCell, std::vector<int>)> grow = [&](QuadCell cell, std::vector<int> members) -> int {
     for (;;) {
-      if (members.size() <= capacity || cell.size < kSmallestCell) break;
+      if ((members.size() <= capacity && cell.size <= maxSide) || cell.size < kSmallestCell) break;
       std::vector<int> quadrant[4];
       const double half = cell.size / 2;
       for (int i : members) {

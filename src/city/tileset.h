@@ -30,10 +30,10 @@ struct Quadtree {
 };
 
 // Splits the square around `points` into quadrants until a cell holds at most `capacity` points
-// (or is under 1 m across, for points that coincide). A point on a cell's edge goes to the cell
+// and is at most `maxSide` m across (or is under 1 m across, for points that coincide). A point on a cell's edge goes to the cell
 // east or north of it. An inner cell with only one quadrant in use is that quadrant (no cell
 // has a single child).
-Quadtree buildQuadtree(const std::vector<Vec2>& points, std::size_t capacity);
+Quadtree buildQuadtree(const std::vector<Vec2>& points, std::size_t capacity, double maxSide = 1e300);
 
 // What one leaf's two tiles hold (boxes of their content in the town's frame: x east, y north,
 // z up, metres) and the block tile's geometric error. A leaf whose buildings all failed has

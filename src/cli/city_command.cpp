@@ -48,11 +48,15 @@ void drawBar(std::size_t done, std::size_t total, double seconds) {
   if (done == total) std::cerr << "\n";
 }
 
-// A usage fault of city, named as the other commands name theirs.
 // Tile boxes are grown by this on each side: glb positions are quantized to steps of at most
 // 1 mm (docs/export.md), so a written vertex lies within 0.5 mm of the built one.
 constexpr double kTilesetPad = 0.01;
 
+// A tileset's leaf cells are at most this across, so no building is more than 283 m from the
+// point its leaf is placed by (docs/city.md, "Tilesets").
+constexpr double kMaxLeafSide = 400;
+
+// A usage fault of city, named as the other commands name theirs.
 UsageError bad(const std::string& message) { return UsageError("city: " + message); }
 
 // --tileset's folder: new or empty, and writable (checked by making and removing a folder in
@@ -170,7 +174,7 @@ int run(const CityRequest& r) {
   if (!r.tileset.empty()) {
     std::vector<Vec2> points;
     for (std::size_t i : order) points.push_back(centres[i]);
-    tree = city::buildQuadtree(points, r.tileBuildings);
+    tree = city::buildQuadtree(points, r.tileBuildings, kMaxLeafSide);
     for (std::size_t k = 0; k < order.size(); ++k) leafOf[order[k]] = tree->leafOf[k];
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return leafOf[a] < leafOf[b]; });
     std::filesystem::create_directories(std::filesystem::path(r.tileset) / "tiles");
