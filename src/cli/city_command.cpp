@@ -1,15 +1,18 @@
 // corbel-cli city: a styled town from footprints or along a street (docs/city.md); tiles,
 // a whole glb, a render and a per-building report.
+#include "city/blocks.h"
 #include "city/import.h"
 #include "city/instances.h"
 #include "city/labels.h"
 #include "city/street.h"
 #include "city/style.h"
+#include "city/tileset.h"
 #include "city/town.h"
 #include "cli/guarded.h"
 #include "cli/number_list.h"
 #include "cli/run.h"
 #include "cli/scene_png.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
 #include "core/scene.h"
@@ -45,15 +48,49 @@ void drawBar(std::size_t done, std::size_t total, double seconds) {
   if (done == total) std::cerr << "\n";
 }
 
+// Tile boxes are grown by this on each side: glb positions are quantized to steps of at most
+// 1 mm (docs/export.md), so a written vertex lies within 0.5 mm of the built one.
+constexpr double kTilesetPad = 0.01;
+
+// A tileset's leaf cells are at most this across, so no building is more than 283 m from the
+// point its leaf is placed by (docs/city.md, "Tilesets").
+constexpr double kMaxLeafSide = 400;
+
 // A usage fault of city, named as the other commands name theirs.
 UsageError bad(const std::string& message) { return UsageError("city: " + message); }
+
+// --tileset's folder: new or empty, and writable (checked by making and removing a folder in
+// it), before any building is built.
+void checkTilesetFolder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) throw bad("--tileset: " + dir + " exists and is not a folder");
+    if (!fs::is_empty(dir, ec))
+      throw bad("--tileset: " + dir + " is not empty; give a new or empty folder (a tileset is not mixed with other files)");
+  }
+  const bool made = fs::create_directories(dir, ec);
+  const fs::path probe = fs::path(dir) / "tiles";
+  if (!ec) fs::create_directory(probe, ec);
+  if (ec) throw Error("city: --tileset: cannot write into " + dir + ": " + ec.message());
+  fs::remove(probe, ec);
+  if (made) fs::remove(dir, ec);
+}
+
+// The axis-aligned box of a town's features as they are placed.
+void addFeatures(BBox& box, const std::vector<InstancedMesh>& meshes) {
+  for (const InstancedMesh& im : meshes)
+    for (const RigidPlacement& p : im.placements)
+      for (const Vec3& v : im.mesh.points) box.add(p.translation + p.ex * v[0] + p.ey * v[1] + p.ez * v[2]);
+}
 
 }  // namespace
 
 int run(const CityRequest& r) {
   if (r.footprints.empty() && r.street.empty()) throw bad("expected one FOOTPRINTS file or a --street");
-  if (r.out.empty() && r.tiles.empty() && r.render.empty())
-    throw bad("nothing to write: give --out, --tiles or --render");
+  if (r.out.empty() && r.tiles.empty() && r.tileset.empty() && r.render.empty())
+    throw bad("nothing to write: give --out, --tiles, --tileset or --render");
+  if (!r.tileset.empty()) checkTilesetFolder(r.tileset);
   if (!r.out.empty()) {
     try {
       exportFormatFor(r.out);
@@ -104,6 +141,9 @@ int run(const CityRequest& r) {
     source = r.footprints;
     town = city::readTownFile(source, read);
   }
+  if (!r.tileset.empty() && town.frame.proj.empty())
+    throw bad("--tileset: the town is in local metres, with no place on the Earth to put it (footprints: give their "
+              "CRS with --crs)");
   const std::vector<city::BuildingLabels> labels = city::labelTown(town, style.labels, r.jobs);
   const double readS = seconds();
 
@@ -127,13 +167,25 @@ int run(const CityRequest& r) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tileOf[a] < tileOf[b]; });
     std::filesystem::create_directories(r.tiles);
   }
+  // Tileset: a quadtree over the corners' means of the buildings in `order`, which is sorted by
+  // leaf so that one leaf's buildings are in memory at a time.
+  std::optional<city::Quadtree> tree;
+  std::vector<int> leafOf(town.buildings.size(), -1);
+  if (!r.tileset.empty()) {
+    std::vector<Vec2> points;
+    for (std::size_t i : order) points.push_back(centres[i]);
+    tree = city::buildQuadtree(points, r.tileBuildings, kMaxLeafSide);
+    for (std::size_t k = 0; k < order.size(); ++k) leafOf[order[k]] = tree->leafOf[k];
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return leafOf[a] < leafOf[b]; });
+    std::filesystem::create_directories(std::filesystem::path(r.tileset) / "tiles");
+  }
 
   std::unique_ptr<Scene> whole, tile, view;
   ExportOptions exportOptions;  // textured by tag: a PNG per built-in material, UVs from the faces' planes
   exportOptions.textures = r.textures == "on";
   exportOptions.tagTextures = city::tagTexturesOf(style);  // the style's tag_textures
   // The georeference and the data's attribution go into every glb.
-  exportOptions.georeference = {town.frame.crs, town.frame.proj, town.frame.lon0, town.frame.lat0, 0};
+  exportOptions.georeference = {town.frame.crs, town.frame.proj, town.frame.lon0, town.frame.lat0, r.ground};
   exportOptions.copyright = town.attribution;
   exportOptions.compress = r.compress;
   // --instances: the features of the buildings in a file (the whole town's, the tile's), once per shape.
@@ -157,6 +209,42 @@ int run(const CityRequest& r) {
     }
     tile.reset();
     tileFeatures.clear();
+  };
+  // --tileset: the leaf being filled, its buildings and their blocks.
+  std::vector<city::LeafContent> leaves(tree ? tree->leafCells.size() : 0);
+  std::unique_ptr<Scene> leafScene, blockScene;
+  city::FeatureInstances leafFeatures(style);
+  ObjectId leafId = 1;
+  int currentLeaf = -1;
+  city::LeafContent leaf;
+  city::LeafFrame frame;  // the leaf's
+  std::array<double, 16> rootFrame{};
+  if (tree) rootFrame = city::enuToEcef(town.frame.lon0, town.frame.lat0, r.ground);
+  std::size_t tilesetFiles = 0;
+  auto flushLeaf = [&] {
+    if (currentLeaf < 0 || !leafScene) return;
+    const city::QuadCell& cell = tree->cells[tree->leafCells[currentLeaf]];
+    const std::string name = std::to_string(cell.level) + "-" + std::to_string(cell.x) + "-" + std::to_string(cell.y);
+    leaf.detailUri = "tiles/" + name + ".glb";
+    leaf.blocksUri = "tiles/" + name + "-blocks.glb";
+    // The tile's glb is in the leaf's frame, and says so.
+    ExportOptions leafOptions = exportOptions;
+    leafOptions.georeference = {town.frame.crs, city::leafFrameDefinition(frame, r.ground), frame.lon, frame.lat, r.ground};
+    leafOptions.instances = &leafFeatures.meshes();
+    addFeatures(leaf.detail, leafFeatures.meshes());
+    exportScene(*leafScene, (std::filesystem::path(r.tileset) / leaf.detailUri).string(), leafOptions);
+    ExportOptions blockOptions = leafOptions;  // plain colours: the far view
+    blockOptions.instances = nullptr;
+    blockOptions.textures = false;
+    blockOptions.tagTextures = {};
+    exportScene(*blockScene, (std::filesystem::path(r.tileset) / leaf.blocksUri).string(), blockOptions);
+    tilesetFiles += 2;
+    leaves[currentLeaf] = std::move(leaf);
+    leaf = {};
+    leafScene.reset();
+    blockScene.reset();
+    leafFeatures.clear();
+    leafId = 1;
   };
   std::unique_ptr<std::ofstream> report;
   if (!r.report.empty()) {
@@ -195,6 +283,49 @@ int run(const CityRequest& r) {
       tile = std::make_unique<Scene>();
       tileId = 1;
     }
+    if (tree) {
+      if (currentLeaf != leafOf[b.index]) {
+        flushLeaf();
+        currentLeaf = leafOf[b.index];
+        const city::QuadCell& cell = tree->cells[tree->leafCells[currentLeaf]];
+        frame = city::leafFrame(town.frame.proj, Vec2(cell.x0 + cell.size / 2, cell.y0 + cell.size / 2), rootFrame,
+                                r.ground);
+        leaf.transform = frame.toRoot;
+      }
+      if (!leafScene) {
+        leafScene = std::make_unique<Scene>();
+        blockScene = std::make_unique<Scene>();
+      }
+      // The building in the leaf's frame, and its block: the footprint from the mesh's lowest to
+      // its highest point.
+      MeshData local = *mesh;
+      BBox box;
+      for (Vec3& p : local.points) box.add(p = frame(p));
+      leaf.detail.add(box);
+      std::vector<std::vector<Vec2>> loops = town.buildings[b.index].loops;
+      for (auto& loop : loops)
+        for (Vec2& p : loop) {
+          const Vec3 q = frame(Vec3(p[0], p[1], 0));
+          p = Vec2(q[0], q[1]);
+        }
+      const auto [wall, top] = city::dominantMaterials(local);
+      const MeshData block = city::extrudedBlock(loops, box.lo[2], box.hi[2], wall, top);
+      for (const Vec3& p : block.points) leaf.blocks.add(p);
+      // The height, and the quantization's allowance at either end (the same as the boxes').
+      leaf.blockError = std::max(leaf.blockError, box.hi[2] - box.lo[2] + 2 * kTilesetPad);
+      blockScene->replaceObject(leafId, Kind::Shell, b.id, block);
+      leafScene->replaceObject(leafId++, Kind::Shell, b.id, local);
+      if (r.instances) {
+        std::vector<extrude::FeaturePlacement> features = b.features;
+        for (extrude::FeaturePlacement& f : features) {
+          f.origin = frame(f.origin);
+          f.ex = frame.direction(f.ex);
+          f.ey = frame.direction(f.ey);
+          f.ez = frame.direction(f.ez);
+        }
+        leafFeatures.add(features);
+      }
+    }
     if (view) view->replaceObject(viewId++, Kind::Shell, b.id, *mesh);
     if (tile) tile->replaceObject(tileId++, Kind::Shell, b.id, *mesh);
     if (whole) whole->replaceObject(wholeId++, Kind::Shell, b.id, *mesh);
@@ -212,6 +343,13 @@ int run(const CityRequest& r) {
   const city::TownSummary sum = city::buildTown(town, labels, style, options, sink, order,
                                                 [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
   flushTile();
+  flushLeaf();
+  if (tree) {
+    // Placed on the globe: the root's frame is east-north-up at the town's origin, each leaf's at
+    // its centre (docs/city.md).
+    writeFileAtomic((std::filesystem::path(r.tileset) / "tileset.json").string(),
+                    city::tilesetJson(*tree, leaves, &rootFrame, kTilesetPad).dump() + "\n");
+  }
   const double buildS = seconds();
   if (whole) {
     exportOptions.instances = &wholeFeatures.meshes();
@@ -247,6 +385,7 @@ int run(const CityRequest& r) {
   j["faces"] = sum.faces;
   j["skipped_by_reason"] = reasons;
   if (tiled) j["tiles"] = tilesWritten;
+  if (tree) j["tileset_files"] = tilesetFiles;
   if (r.instances) {
     j["instanced_features"] = instancedFeatures;
     j["feature_meshes"] = wholeFeatures.meshes().size();

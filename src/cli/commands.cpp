@@ -337,7 +337,7 @@ void declareComplete(CLI::App& app, Requests& requests) {
 void declareCity(CLI::App& app, Requests& requests) {
   CLI::App* c = command(
       app, "city", "A styled town from footprints or along a street (docs/city.md).",
-      "Prints one JSON line; skipped buildings on stderr. Give at least one of --out, --tiles and --render.\n"
+      "Prints one JSON line; skipped buildings on stderr. Give at least one of --out, --tiles, --tileset and --render.\n"
       "--street builds town houses along a spline; --plots skeleton grows its plots from seeds (Fig. 26).");
   CityRequest& r = requests.add<CityRequest>(c);
   CLI::Option* footprints = positional(*c, "FOOTPRINTS", r.footprints,
@@ -349,8 +349,16 @@ void declareCity(CLI::App& app, Requests& requests) {
   whole(*c, "--seed", r.seed, 0, 9007199254740992ll, "N", "The random seed.");
   whole(*c, "--jobs", r.jobs, 0, 1024, "N", "Worker threads (0: one per core).");
   text(*c, "--out", r.out, kExportTypes, "Write the whole town.");
-  text(*c, "--tiles", r.tiles, "DIR", "Write one glb per tile into DIR.");
+  CLI::Option* tiles = text(*c, "--tiles", r.tiles, "DIR", "Write one glb per tile into DIR.");
   number(*c, "--tile-size", r.tileSize, 1, 1e6, "M", "The tiles' side.");
+  CLI::Option* tileset = text(*c, "--tileset", r.tileset, "DIR",
+       "Write a 3D Tiles 1.1 tileset into DIR (new or empty): tileset.json, and blocks and buildings per tile "
+       "(docs/city.md).")
+      ->excludes(tiles);
+  whole(*c, "--tile-buildings", r.tileBuildings, 1, 1000000, "N", "At most N buildings in a tileset's tile.")
+      ->needs(tileset);
+  number(*c, "--ground", r.ground, -1e4, 1e4, "M", "The tileset's ground at the town's origin, above the WGS 84 ellipsoid.")
+      ->needs(tileset);
   text(*c, "--render", r.render, "PNG", "Render the town.");
   text(*c, "--around", r.around, "X,Y,R", "Only the buildings within R meters of (X, Y).");
   choice(*c, "--coordinates", r.coordinates, {"auto", "lonlat", "metric"},

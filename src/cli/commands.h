@@ -127,12 +127,14 @@ struct CompleteRequest {
 };
 
 struct CityRequest {
-  std::string footprints, style, out, tiles, render, around, street, plots, report;
+  std::string footprints, style, out, tiles, tileset, render, around, street, plots, report;
   std::string crs, layer, where;  // the footprints' CRS, layer and attribute filter (city/import.h)
   std::string coordinates = "auto", detail = "full", textures = "on", renderTextures = "off";
   long long seed = 1;
   unsigned jobs = 0;
   double tileSize = 500;
+  unsigned tileBuildings = 128;  // --tileset: at most this many buildings in a leaf tile
+  double ground = 0;             // --tileset: the ellipsoidal height of the frame's origin, m
   bool instances = false, compress = false;  // glb: EXT_mesh_gpu_instancing, EXT_meshopt_compression
 };
 
