@@ -35,19 +35,30 @@ std::array<int, 2> planeOf(const Vec3& n) {
   return {(axis + 1) % 3, (axis + 2) % 3};
 }
 
-// Ear clipping of a simple polygon (indices into pts) by exact orientation tests: an ear is a
-// strictly convex corner whose triangle holds no other corner. Corners in line with their
-// neighbours are never ears (nor corners `inLine` says are: within the kernel's δ2 of the line
-// through their neighbours in space, as where an event left a vertex on a hip that both faces
-// share, which rounding puts on the outer side of each face's projection); what is left when
-// no ear remains has no area.
-template <class InLine>
-void clipEars(std::vector<int> poly, const std::vector<P2>& pts, InLine inLine, std::vector<std::array<int, 3>>& out) {
-  auto orient = [&](int a, int b, int c) { return CGAL::orientation(pts[a], pts[b], pts[c]); };
+// Ear clipping of a simple polygon (local indices into pts and flat, its corners in space and
+// in its plane) by exact orientation tests: an ear is a strictly convex corner whose triangle
+// holds no other corner and whose cut passes no other corner within `tol` (a corner of the
+// polygon within rounding of the cut, just outside it, would leave a sliver triangle against
+// it). Corners within `tol` of the line through their neighbours in space are never ears (as
+// where an event left a vertex on a hip that both faces share, which rounding puts on the outer
+// side of each face's projection); what is left when no ear remains has no area.
+void clipEars(std::vector<int> poly, const std::vector<P2>& flat, const std::vector<P3>& pts, double tol,
+              std::vector<std::array<int, 3>>& out) {
+  auto orient = [&](int a, int b, int c) { return CGAL::orientation(flat[a], flat[b], flat[c]); };
+  // Squared distance from q to the segment ab, in space.
+  auto toSegment = [&](int a, int b, int q) {
+    return CGAL::squared_distance(pts[q], K::Segment_3(pts[a], pts[b]));
+  };
+  auto inLine = [&](int a, int b, int c) {
+    const K::Vector_3 ac = pts[c] - pts[a], ab = pts[b] - pts[a];
+    const double len2 = ac.squared_length();
+    if (len2 == 0) return true;
+    return CGAL::cross_product(ac, ab).squared_length() / len2 <= tol * tol;
+  };
   // Counter-clockwise first.
   double area = 0;
   for (std::size_t i = 0; i < poly.size(); ++i) {
-    const P2 &a = pts[poly[i]], &b = pts[poly[(i + 1) % poly.size()]];
+    const P2 &a = flat[poly[i]], &b = flat[poly[(i + 1) % poly.size()]];
     area += a.x() * b.y() - a.y() * b.x();
   }
   if (area < 0) std::reverse(poly.begin(), poly.end());
@@ -61,7 +72,9 @@ void clipEars(std::vector<int> poly, const std::vector<P2>& pts, InLine inLine, 
       for (std::size_t j = 0; j < n && empty; ++j) {
         const int q = poly[j];
         if (q == a || q == b || q == c || pts[q] == pts[a] || pts[q] == pts[b] || pts[q] == pts[c]) continue;
-        empty = !(orient(a, b, q) != CGAL::RIGHT_TURN && orient(b, c, q) != CGAL::RIGHT_TURN && orient(c, a, q) != CGAL::RIGHT_TURN);
+        empty = !(orient(a, b, q) != CGAL::RIGHT_TURN && orient(b, c, q) != CGAL::RIGHT_TURN &&
+                  orient(c, a, q) != CGAL::RIGHT_TURN) &&
+                toSegment(c, a, q) > tol * tol;
       }
       if (!empty) continue;
       out.push_back({a, b, c});
@@ -121,6 +134,26 @@ bool improper(const std::array<int, 3>& s, const std::array<int, 3>& t, const st
 
 }  // namespace
 
+std::vector<std::array<int, 3>> cutIntoTriangles(const std::vector<Vec3>& points, const std::vector<int>& polygon,
+                                                 double tolerance) {
+  std::vector<Vec3> corners;
+  for (int i : polygon) corners.push_back(points[i]);
+  const auto [u, v] = planeOf(newellNormal(corners));
+  std::vector<P2> flat;
+  std::vector<P3> pts;
+  std::vector<int> local;
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    flat.emplace_back(corners[k][u], corners[k][v]);
+    pts.emplace_back(corners[k][0], corners[k][1], corners[k][2]);
+    local.push_back(static_cast<int>(k));
+  }
+  std::vector<std::array<int, 3>> out;
+  clipEars(local, flat, pts, tolerance, out);
+  for (auto& t : out)
+    for (int& i : t) i = polygon[i];
+  return out;
+}
+
 std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec, double factor) {
   for (std::size_t fi = 0; fi < shell.faces.size(); ++fi) {
     const ShellFace& f = shell.faces[fi];
@@ -151,23 +184,11 @@ std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& 
   for (const auto& l : spec.loops)
     for (const Vec2& q : l.points) box.add(Vec3(q[0], q[1], 0));
   const double delta2 = Tolerances::forScale(box.diagonal(), factor).cluster;
-  auto inLine = [&](int a, int b, int c) {
-    const K::Vector_3 ac = pts[c] - pts[a], ab = pts[b] - pts[a];
-    const double len2 = ac.squared_length();
-    if (len2 == 0) return true;
-    return CGAL::cross_product(ac, ab).squared_length() / len2 <= delta2 * delta2;
-  };
   // (Triangles of one polygon tile it: only triangles of different polygons are tested.)
   std::vector<std::array<int, 3>> tris;
   std::vector<std::size_t> polygonOf;
-  std::vector<P2> flat(pts.size());
   for (std::size_t fi = 0; fi < m.faces.size(); ++fi) {
-    const auto& face = m.faces[fi];
-    std::vector<Vec3> poly;
-    for (int i : face) poly.push_back(m.points[i]);
-    const auto [u, v] = planeOf(newellNormal(poly));
-    for (int i : face) flat[i] = P2(m.points[i][u], m.points[i][v]);
-    clipEars(face, flat, inLine, tris);
+    for (const auto& t : cutIntoTriangles(m.points, m.faces[fi], delta2)) tris.push_back(t);
     polygonOf.resize(tris.size(), fi);
   }
   using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;

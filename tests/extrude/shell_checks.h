@@ -5,6 +5,7 @@
 // 2-manifold, and only these see it.
 #include "extrude/extrude.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,5 +18,15 @@ namespace corbel::extrude::test {
 // two fans split in two, as toMeshData does where a shell touches itself).
 // `factor`: the tolerance factor the shell was built with (ExtrudeOptions), which widens δ2.
 std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec, double factor = 1.0);
+
+// The triangles (indices into pts) that the check cuts a polygon into, in the coordinate plane
+// its normal is most across: ear clipping by exact orientation tests. No cut passes within
+// `tolerance` of a corner of the polygon that is not its end (a corner that close blocks the
+// ear: the triangle would be a sliver against that corner, and in space, where the polygon is
+// planar only to rounding, it crosses the faces that meet there). Corners within `tolerance`
+// of the line through their neighbours are never ears; what is left when no ear remains has no
+// area and is dropped.
+std::vector<std::array<int, 3>> cutIntoTriangles(const std::vector<Vec3>& pts, const std::vector<int>& polygon,
+                                                 double tolerance);
 
 }  // namespace corbel::extrude::test
