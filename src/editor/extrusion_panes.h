@@ -2,7 +2,10 @@
 // The plan pane and the profile pane of a procedural extrusion (Kelly & Wonka, Sec. 3, Fig. 4–5):
 // 2D views drawn with ImGui's draw lists beside the 3D preview. Every change goes through the
 // editing operations of extrude/edit.h and is committed to the document's history, so it is
-// undoable and the preview re-extrudes from the new spec.
+// undoable and the preview re-extrudes from the new spec. One class, its parts in files of
+// their own: extrusion_panes.cpp (the pair, committing), plan_pane.cpp, profile_pane.cpp,
+// plan_anchors.cpp (steps and features), plan_background.cpp (the tracing image) and
+// extrusion_pick.cpp (a click in the 3D view).
 #include "core/document.h"
 #include "core/geometry.h"
 #include "editor/file_dialog.h"
@@ -54,6 +57,10 @@ class ExtrusionPanes {
   // or it cannot be read (logged once per path).
   bool backgroundTexture(const PaneHost& host, const PlanBackground& b);
   void stepFields(const PaneHost& host, const ExtrusionSpec& spec);
+  void stepPopup(const PaneHost& host);
+  void featurePopup(const PaneHost& host, const ExtrusionSpec& spec);
+  void useChosenBackground(const PaneHost& host, const DocObject* object, const ExtrusionSpec& spec);
+  void calibratePopup(const PaneHost& host, const DocObject* object);
 
   // Plan view: world (m) ↔ pane pixels.
   double cx_ = 0, cy_ = 0, zoom_ = 20;  // centre, pixels per metre
