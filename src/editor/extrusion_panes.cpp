@@ -44,6 +44,8 @@ void ExtrusionPanes::reset() {
   calibrating_ = 0;
   calibratePopup_ = false;
   chosenBackground_.reset();
+  typedPlan_.clear();
+  typedProfile_.clear();
 }
 
 void ExtrusionPanes::apply(const PaneHost& host, const std::function<ExtrusionSpec(const ExtrusionSpec&)>& change,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace corbel::editor::panes {
 
@@ -36,6 +37,14 @@ inline double distToSegment(ImVec2 p, ImVec2 a, ImVec2 b) {
 inline double dist(ImVec2 a, ImVec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 inline bool keyPressed(ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), false); }
+
+// A dimension label (pane_dimensions.cpp): `text` on a dark plate beside the segment a–b (pixels),
+// on its right (side 1, as seen going from a to b) or its left (side −1), with ticks at its ends;
+// on the other side, or pushed in, where it would leave the draw list's clip rectangle.
+void dimensionLabel(ImDrawList* dl, ImVec2 a, ImVec2 b, const char* text, float side);
+// The number being typed, in a box at `at` (a corner of the pane): "Length: 3.5 m (Enter sets
+// it, Esc drops it)".
+void typedBox(ImVec2 at, const std::string& text, const char* unit);
 
 // Where an anchor lies on its wall in the plan (the plan pane draws input edges).
 inline std::optional<Vec2> anchorOnPlan(const ExtrusionSpec& spec, const Anchor& a) { return anchorPoint(spec, a); }

@@ -2,6 +2,7 @@
 // selected, dragged and snapped; steps and features on their edges; the tracing image under it.
 #include "editor/extrusion_panes.h"
 
+#include "editor/dimensions.h"
 #include "editor/pane_drawing.h"
 #include "editor/pane_window.h"
 #include "editor/plan_crossings.h"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <regex>
 
 namespace corbel::editor {
@@ -382,9 +384,28 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     dl->AddLine(toScreen(calibrateA_), toScreen(b), col, 1.5f);
     dl->AddCircle(toScreen(b), 5, col, 12, 2.0f);
   }
+  // Dimensions: the length of each selected edge and of both edges at the selected or dragged
+  // corner, outside the edge.
+  {
+    const auto corner = dragCorner_ ? dragCorner_ : selectedCorner_;
+    std::set<std::pair<int, int>> measured = selectedEdges_;
+    if (corner && corner->first < static_cast<int>(spec.loops.size()) &&
+        corner->second < static_cast<int>(spec.loops[corner->first].points.size())) {
+      const int n = static_cast<int>(spec.loops[corner->first].points.size());
+      measured = {{corner->first, (corner->second + n - 1) % n}, {corner->first, corner->second}};
+    }
+    for (const auto& [li, ei] : measured) {
+      if (li >= static_cast<int>(spec.loops.size()) || ei >= static_cast<int>(spec.loops[li].points.size())) continue;
+      const auto& pts = spec.loops[li].points;
+      char text[64];
+      std::snprintf(text, sizeof text, "%.2f m", planEdgeLength(spec, li, ei));
+      dimensionLabel(dl, toScreen(pts[ei]), toScreen(pts[(ei + 1) % pts.size()]), text, 1.0f);
+    }
+  }
   dl->PopClipRect();
 
   // Input.
+  std::optional<std::pair<int, int>> lengthEdge;  // the edge a typed length goes to
   if (hovered) {
     if (io.MouseWheel != 0) {
       const Vec2 before = toWorld(mouse);
@@ -539,21 +560,50 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       dragFeature_.reset();
       host.endDrag();
     }
-    if (keysHere() && !selectedCorner_ && !selectedFeature_ && selectedStep_ &&
+    // A typed length (editor/dimensions.h): with a corner dragged or selected, for the edge
+    // arriving at it (the corner moves along where the edge points now); with one edge
+    // selected, for that edge (its end corner moves). Enter sets it; typed during a drag it ends
+    // the drag in the drag's undo step. While a number is being typed, Backspace edits it.
+    const bool typing = !typedPlan_.text().empty();
+    {
+      const auto corner = dragCorner_ ? dragCorner_ : selectedCorner_;
+      if (corner && corner->first < static_cast<int>(spec.loops.size()) &&
+          corner->second < static_cast<int>(spec.loops[corner->first].points.size())) {
+        const int n = static_cast<int>(spec.loops[corner->first].points.size());
+        lengthEdge = std::make_pair(corner->first, (corner->second + n - 1) % n);
+      } else if (!corner && selectedEdges_.size() == 1 && !selectedFeature_ && !selectedStep_) {
+        lengthEdge = *selectedEdges_.begin();
+      }
+      if (const auto length = typedLength(typedPlan_, lengthEdge.has_value())) {
+        const auto [li, ei] = *lengthEdge;
+        const double l = *length;
+        if (dragCorner_) {
+          apply(
+              host, [&](const ExtrusionSpec& s) { return setPlanEdgeLength(s, li, ei, l); }, "Move corner",
+              "plan-corner-" + std::to_string(dragCorner_->first) + "-" + std::to_string(dragCorner_->second));
+          dragCorner_.reset();
+          host.endDrag();
+        } else {
+          apply(
+              host, [&](const ExtrusionSpec& s) { return setPlanEdgeLength(s, li, ei, l); }, "Set edge length");
+        }
+      }
+    }
+    if (!typing && keysHere() && !selectedCorner_ && !selectedFeature_ && selectedStep_ &&
         (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const int k = *selectedStep_;
       apply(
           host, [&](const ExtrusionSpec& s) { return ed::deleteStep(s, k); }, "Delete step");
       selectedStep_.reset();
     }
-    if (keysHere() && !selectedCorner_ && selectedFeature_ &&
+    if (!typing && keysHere() && !selectedCorner_ && selectedFeature_ &&
         (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const int k = *selectedFeature_;
       apply(
           host, [&](const ExtrusionSpec& s) { return ed::deleteMeshAnchor(s, k); }, "Delete feature");
       selectedFeature_.reset();
     }
-    if (keysHere() && selectedCorner_ &&
+    if (!typing && keysHere() && selectedCorner_ &&
         (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
       const auto [li, ci] = *selectedCorner_;
       std::vector<std::string> notes;  // what went with the corner's wall (undo brings it back)
@@ -574,9 +624,11 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
     dl->PopClipRect();
   }
   calibratePopup(host, object);
+  if (lengthEdge && !typedPlan_.text().empty())
+    typedBox(ImVec2(origin.x + 6, origin.y + 5), typedPlan_.text(), "m");
   if (hovered) {
     const Vec2 p = toWorld(mouse);
-    ImGui::SetTooltip("%.2f, %.2f m%s", p[0], p[1],
+    ImGui::SetTooltip("%.2f, %.2f m%s%s", p[0], p[1],
                       calibrating_ ? "\ncalibrating: click a point of the image whose distance to another you know"
                       : drawing_
                           ? "\nclick to place a corner; click the first one or press Enter to close, Esc to cancel"
@@ -584,7 +636,9 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
                       : hotStep    ? "\na step's anchor: click to edit its repeat, Delete to remove"
                       : hotCorner  ? "\ndrag to move, Delete to remove"
                       : hotEdge    ? "\nclick to select (Shift adds), double-click to add a corner"
-                                   : "");
+                                   : "",
+                      lengthEdge && !drawing_ && !calibrating_ ? "\ntype a length and Enter: the measured edge takes it"
+                                                              : "");
   }
   if (!host.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));

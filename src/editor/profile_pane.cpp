@@ -2,6 +2,7 @@
 // tagged; the heights of steps and features beside the plan edge; overhangs and the library.
 #include "editor/extrusion_panes.h"
 
+#include "editor/dimensions.h"
 #include "editor/fields.h"
 #include "editor/pane_drawing.h"
 #include "editor/pane_window.h"
@@ -11,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <set>
 
 namespace corbel::editor {
 
@@ -174,12 +177,35 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     }
   }
   if (hotFeature) hotPoint.reset(), hotSegment.reset();
+  profilePointsOnScreen_.clear();
   for (int i = 0; i < static_cast<int>(p.points.size()); ++i) {
     const ImVec2 q = toScreen(p.points[i]);
+    profilePointsOnScreen_.push_back({q.x, q.y});
     const bool sel = selectedPoint_ && *selectedPoint_ == i;
     const float r = (hotPoint && *hotPoint == i) || sel ? 5.0f : 3.5f;
     dl->AddRectFilled(ImVec2(q.x - r, q.y - r), ImVec2(q.x + r, q.y + r),
                       sel ? IM_COL32(255, 255, 255, 255) : IM_COL32(210, 210, 210, 255));
+  }
+  // Dimensions: length and pitch of the picked segment, or of both segments at the selected or
+  // dragged point; the segment a typed length goes to is the one below the point.
+  std::optional<int> lengthSegment;
+  {
+    const int last = static_cast<int>(p.points.size()) - 1;
+    const auto point = dragPoint_ ? dragPoint_ : selectedPoint_;
+    std::set<int> measured;
+    if (point && *point <= last) {
+      if (*point > 0) measured.insert(*point - 1), lengthSegment = *point - 1;
+      if (*point < last) measured.insert(*point);
+    } else if (pickedSegment_ && *pickedSegment_ < last) {
+      measured.insert(*pickedSegment_);
+      lengthSegment = pickedSegment_;
+    }
+    for (int s : measured) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%.2f m, %.1f\xc2\xb0", profileSegmentLength(spec, profile_, s),
+                    profileSegmentPitch(spec, profile_, s));
+      dimensionLabel(dl, toScreen(p.points[s]), toScreen(p.points[s + 1]), text, -1.0f);
+    }
   }
   dl->PopClipRect();
 
@@ -196,6 +222,7 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
   } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     selectedPoint_ = hotPoint;
     dragPoint_ = hotPoint;
+    pickedSegment_ = hotPoint ? std::nullopt : hotSegment;  // a click on a segment measures it
   }
   if (dragFeatureHeight_ && *dragFeatureHeight_ < static_cast<int>(spec.anchors.size()) &&
       ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
@@ -227,7 +254,27 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     dragPoint_.reset();
     host.endDrag();
   }
-  if (keysHere() && selectedPoint_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
+  // A typed length for the measured segment (editor/dimensions.h): the points above it move
+  // with its upper end. Typed during a drag it ends the drag in the drag's undo step.
+  const bool typing = !typedProfile_.text().empty();
+  if (const auto length = typedLength(typedProfile_, lengthSegment.has_value())) {
+    const int s = *lengthSegment;
+    const double l = *length;
+    if (dragPoint_) {
+      apply(
+          host, [&](const ExtrusionSpec& sp) { return setProfileSegmentLength(sp, profile_, s, l); },
+          "Move profile point", "profile-" + std::to_string(profile_) + "-" + std::to_string(*dragPoint_));
+      dragPoint_.reset();
+      host.endDrag();
+    } else {
+      apply(
+          host, [&](const ExtrusionSpec& sp) { return setProfileSegmentLength(sp, profile_, s, l); },
+          "Set segment length");
+    }
+  }
+  if (lengthSegment && !typedProfile_.text().empty())
+    typedBox(ImVec2(origin.x + 6, origin.y + size.y - ImGui::GetTextLineHeight() - 8), typedProfile_.text(), "m");
+  if (!typing && keysHere() && selectedPoint_ && (keyPressed(ImGuiKey_Delete) || keyPressed(ImGuiKey_Backspace))) {
     const int i = *selectedPoint_;
     apply(
         host, [&](const ExtrusionSpec& s) { return ed::deleteProfilePoint(s, profile_, i); }, "Delete profile point");
@@ -237,7 +284,7 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     const Vec2 q = toProfile(io.MousePos);
     ImGui::SetTooltip("w %.2f, z %.2f m%s", q[0], q[1],
                       hotPoint     ? "\ndrag (z stays between its neighbours), Delete to remove"
-                      : hotSegment ? "\ndouble-click to add a point"
+                      : hotSegment ? "\nclick to measure (type a length and Enter), double-click to add a point"
                                    : "");
   }
   ImGui::End();
