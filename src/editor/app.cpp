@@ -517,6 +517,7 @@ void App::writeTestLog() {
   s.dirty = history_.dirty();
   s.undo = history_.canUndo() ? history_.undoLabel() : "";
   if (panesFor_) s.planCorners = panes_.cornersOnScreen();
+  if (panesFor_) s.profilePoints = panes_.profilePointsOnScreen();
   s.view = {float(view_.x()), float(view_.y()), float(view_.width()), float(view_.height())};
   for (const auto& [id, st] : sync_.status())
     if (const DocObject* o = doc.find(id); o && !st.error.empty()) s.failed.push_back(o->name);

@@ -2,10 +2,14 @@
 // The plan pane and the profile pane of a procedural extrusion (Kelly & Wonka, Sec. 3, Fig. 4–5):
 // 2D views drawn with ImGui's draw lists beside the 3D preview. Every change goes through the
 // editing operations of extrude/edit.h and is committed to the document's history, so it is
-// undoable and the preview re-extrudes from the new spec.
+// undoable and the preview re-extrudes from the new spec. One class, its parts in files of
+// their own: extrusion_panes.cpp (the pair, committing), plan_pane.cpp, profile_pane.cpp,
+// plan_anchors.cpp (steps and features), plan_background.cpp (the tracing image),
+// pane_dimensions.cpp (lengths shown and typed) and extrusion_pick.cpp (a click in the 3D view).
 #include "core/document.h"
 #include "core/geometry.h"
 #include "editor/file_dialog.h"
+#include "editor/typed_value.h"
 
 #include <array>
 #include <functional>
@@ -39,6 +43,8 @@ class ExtrusionPanes {
   // Where the plan pane drew each corner last frame (window pixels, loop by loop): for tests
   // that click them (the test log, editor/test_log.h).
   const std::vector<std::vector<std::array<float, 2>>>& cornersOnScreen() const { return cornersOnScreen_; }
+  // Where the profile pane drew the shown profile's points last frame (window pixels).
+  const std::vector<std::array<float, 2>>& profilePointsOnScreen() const { return profilePointsOnScreen_; }
 
  private:
   void drawPlan(const PaneHost& host, const ExtrusionSpec& spec, float x, float y, float w, float h);
@@ -54,6 +60,14 @@ class ExtrusionPanes {
   // or it cannot be read (logged once per path).
   bool backgroundTexture(const PaneHost& host, const PlanBackground& b);
   void stepFields(const PaneHost& host, const ExtrusionSpec& spec);
+  void stepPopup(const PaneHost& host);
+  void featurePopup(const PaneHost& host, const ExtrusionSpec& spec);
+  void useChosenBackground(const PaneHost& host, const DocObject* object, const ExtrusionSpec& spec);
+  void calibratePopup(const PaneHost& host, const DocObject* object);
+  // pane_dimensions.cpp: the characters, Backspace, Esc and Enter of this frame for a typed
+  // length while the pane has keys and `target` (something takes a length); the value on Enter.
+  // Without a target the text is dropped.
+  std::optional<double> typedLength(TypedValue& typed, bool target);
 
   // Plan view: world (m) ↔ pane pixels.
   double cx_ = 0, cy_ = 0, zoom_ = 20;  // centre, pixels per metre
@@ -99,6 +113,10 @@ class ExtrusionPanes {
   std::optional<int> selectedFeature_, dragFeature_, dragFeatureHeight_;
   void featureFields(const PaneHost& host, const ExtrusionSpec& spec);
   std::vector<std::vector<std::array<float, 2>>> cornersOnScreen_;
+  std::vector<std::array<float, 2>> profilePointsOnScreen_;
+  // A length being typed (SketchUp's measurements box): in the plan pane for an edge, in the
+  // profile pane for a segment.
+  TypedValue typedPlan_, typedProfile_;
 };
 
 }  // namespace corbel::editor

@@ -25,6 +25,7 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   j["dirty"] = s.dirty;
   j["undo"] = s.undo;
   if (!s.planCorners.empty()) j["plan_corners"] = s.planCorners;
+  if (!s.profilePoints.empty()) j["profile_points"] = s.profilePoints;
   j["view"] = s.view;
   if (!s.failed.empty()) j["failed"] = s.failed;
   if (s.activeInView) j["active_in_view"] = *s.activeInView;

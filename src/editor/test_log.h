@@ -27,6 +27,8 @@ struct SettledFrame {
   // Where the plan pane shows the active extrusion's corners (window pixels, per loop), for a
   // test to click; empty when no plan pane is open.
   std::vector<std::vector<std::array<float, 2>>> planCorners;
+  // Where the profile pane shows the shown profile's points (window pixels); empty without it.
+  std::vector<std::array<float, 2>> profilePoints;
   // The 3D view's rectangle in window pixels: x, y (top left), width, height.
   std::array<float, 4> view{};
   std::vector<std::string> failed;  // the objects whose last build failed (flagged in the list)

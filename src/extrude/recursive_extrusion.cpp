@@ -1,6 +1,7 @@
 // The discrete changes at a seam by one recursive extrusion (Sec. 4.5.2, 4.7, Fig. 16, 20):
-// horizontal profile segments move their edges, natural steps grow from a small protrusion,
-// and the extrusion's faces, flattened, are the ledges and soffits at that height.
+// horizontal profile segments move their edges, natural steps (natural_steps.cpp) grow from a
+// small protrusion, and the extrusion's faces, flattened, are the ledges and soffits at that
+// height.
 #include "extrude/stager.h"
 
 #include "core/error.h"
@@ -51,11 +52,31 @@ void checkMitre(const std::vector<std::vector<Item>>& loops, double h, double ba
 }
 
 // The discrete changes at height h: horizontal moves of edges and plan steps, made together by
-// one recursive extrusion (Sec. 4.5.2, 4.7).
+// one recursive extrusion (Sec. 4.5.2, 4.7). The steps: is there a change here; each edge's
+// move (near-horizontal direction events); the natural steps placed and grown from their
+// protrusions; the temporary plan swept over unit height; its faces projected onto the active
+// plan at h; the temporary plan's top replacing the active plan.
 Plan Stager::change(Plan plan, double h, bool atBase) {
   frame(plan, h);
-  // Most heights (every stage of a plain roof) change nothing: no edge moves there and no
-  // natural step stands there.
+  if (!changesAt(plan, h)) return plan;
+  bool any = false;
+  EdgeMoves loops = nearHorizontalMoves(plan, h, any);
+  if (any) checkMitre(loops, h, spec_.baseZ);
+  std::vector<Protrusion> tiny;
+  if (growNaturalSteps(loops, placeNaturalSteps(plan, h), h, atBase, tiny)) any = true;
+  if (!any) return plan;
+  for (const Protrusion& t : tiny) addFlatFace(t.loop, t.up, t.info);
+  std::vector<const EdgeMove*> flat;
+  SweepInput in = temporaryPlan(loops, flat);
+  SweepOutput out = runSweep(in, " (in the recursive extrusion at height " + std::to_string(h) + ")");
+  std::vector<int> map(out.points.size(), -1);
+  if (!atBase) projectOntoActivePlan(loops, in, out, map, h);
+  return replaceActivePlan(out, flat, map, atBase);
+}
+
+// Most heights (every stage of a plain roof) change nothing: no edge moves there and no
+// natural step stands there.
+bool Stager::changesAt(const Plan& plan, double h) const {
   auto moves = [&](const Active& a) {
     double k = 0;
     for (const Seg& g : segs(a))
@@ -65,19 +86,19 @@ Plan Stager::change(Plan plan, double h, bool atBase) {
   const bool stepHere = std::any_of(spec_.steps.begin(), spec_.steps.end(), [&](const PlanStep& st) {
     return st.shape != StepShape::Forced && std::abs(spec_.baseZ + st.anchor.height - h) <= tol_.height;
   });
-  if (!stepHere && std::none_of(plan.begin(), plan.end(), [&](const auto& l) { return std::any_of(l.begin(), l.end(), moves); }))
-    return plan;
-  struct Item {
-    Active a;      // what the edge will be in the new plan
-    double k = 0;  // its move over the unit height of the recursive extrusion
-    int segment = -1;
-  };
-  std::vector<std::vector<Item>> loops;
-  bool any = false;
+  return stepHere ||
+         std::any_of(plan.begin(), plan.end(), [&](const auto& l) { return std::any_of(l.begin(), l.end(), moves); });
+}
+
+// Each edge with its move at h (a near-horizontal direction event, Sec. 4.5.2): the sum of its
+// profile's horizontal segments there, its speed in the recursive extrusion; `any` is set
+// where one moves.
+EdgeMoves Stager::nearHorizontalMoves(const Plan& plan, double h, bool& any) const {
+  EdgeMoves loops;
   for (const auto& loop : plan) {
-    std::vector<Item> l;
+    std::vector<EdgeMove> l;
     for (const Active& a : loop) {
-      Item it;
+      EdgeMove it;
       it.a = a;
       for (const Seg& g : segs(a))
         if (g.horizontal && std::abs(g.lo - h) <= tol_.height) {
@@ -89,103 +110,19 @@ Plan Stager::change(Plan plan, double h, bool atBase) {
     }
     loops.push_back(std::move(l));
   }
-  if (any) checkMitre(loops, h, spec_.baseZ);
-  // Natural steps: a protrusion λ times its size, grown to full size by the recursion.
-  const double epsilon = 100 * tol_.minEdge;  // 1e-5 of the plan's size
-  std::vector<std::pair<std::vector<int>, ShellFace>> tiny;  // the λ-sized protrusions' faces
-  std::vector<bool> tinyUp;
-  // Every step at this height is placed on the plan as it arrives, then inserted from the
-  // last along each loop to the first so earlier places stay valid.
-  struct Placed {
-    std::size_t si;
-    Located at;
-  };
-  std::vector<Placed> placed;
-  for (std::size_t si = 0; si < spec_.steps.size(); ++si) {
-    const PlanStep& st = spec_.steps[si];
-    if (st.shape == StepShape::Forced || stepDone_[si] || std::abs(spec_.baseZ + st.anchor.height - h) > tol_.height)
-      continue;
-    stepDone_[si] = 1;
-    const std::string name = "steps[" + std::to_string(si) + "]" + (st.name.empty() ? "" : " (" + st.name + ")");
-    const auto at = locate(plan, st.anchor);
-    if (!at) {
-      warnings_.push_back(name + ": not placed: its edge is not in the active plan at height " + std::to_string(h));
-      continue;
-    }
-    placed.push_back({si, *at});
-  }
-  std::sort(placed.begin(), placed.end(), [](const Placed& x, const Placed& y) {
-    return std::tie(x.at.loop, x.at.index, x.at.t) > std::tie(y.at.loop, y.at.index, y.at.t);
-  });
-  double limit = std::numeric_limits<double>::infinity();  // where the previous step on this edge began
-  for (std::size_t k = 0; k < placed.size(); ++k) {
-    const std::size_t si = placed[k].si;
-    const Located* at = &placed[k].at;
-    if (k == 0 || placed[k - 1].at.loop != at->loop || placed[k - 1].at.index != at->index) limit = at->length;
-    const PlanStep& st = spec_.steps[si];
-    const std::string name = "steps[" + std::to_string(si) + "]" + (st.name.empty() ? "" : " (" + st.name + ")");
-    // The shape in the edge's frame (u along the edge, v outward), about the anchor.
-    const double W = st.width, D = st.depth, c = st.shape == StepShape::Bay ? st.cant : 0.0;
-    const std::vector<Vec2> shape = {Vec2(-W / 2, 0), Vec2(-W / 2 + c, D), Vec2(W / 2 - c, D), Vec2(W / 2, 0)};
-    const double lambda = epsilon / std::max(W, std::abs(D));
-    if (at->t - lambda * W / 2 <= 10 * tol_.minEdge || at->t + lambda * W / 2 >= limit - 10 * tol_.minEdge) {
-      warnings_.push_back(name + ": not placed: its anchor is at the end of its active edge or on another step");
-      continue;
-    }
-    limit = at->t - lambda * W / 2;
-    const Vec2 o = -leftOf(at->d);
-    auto world = [&](const Vec2& q) { return at->at + at->d * q[0] + o * q[1]; };
-    const Item host = loops[at->loop][at->index];
-    std::vector<Item> inserted;
-    std::vector<Vec2> tinyPts;
-    for (std::size_t j = 0; j < shape.size(); ++j) {
-      const Vec2 p = world(shape[j] * lambda);
-      tinyPts.push_back(p);
-      if (j + 1 == shape.size()) break;
-      Item it;
-      it.a.start = p;
-      it.a.vertex = -1;
-      it.a.profile = j == 1 ? st.frontProfile : st.sideProfile;
-      it.a.z0 = h;
-      it.a.sourceLoop = -1;
-      it.a.sourceEdge = static_cast<int>(j);
-      it.a.step = static_cast<int>(si);
-      // Grow from the λ-sized line to the full-sized one along the inward normal.
-      const Vec2 q0 = world(shape[j]), q1 = world(shape[j + 1]);
-      Vec2 dir = q1 - q0;
-      dir.normalize();
-      it.k = (1 - lambda) * OpenMesh::dot(leftOf(dir), q0 - at->at);
-      inserted.push_back(it);
-    }
-    Item after = host;
-    after.a.start = tinyPts.back();
-    after.a.vertex = -1;
-    inserted.push_back(after);
-    auto& l = loops[at->loop];
-    l.insert(l.begin() + at->index + 1, inserted.begin(), inserted.end());
-    if (!atBase) {
-      std::vector<int> ids;
-      for (const Vec2& p : tinyPts) ids.push_back(weld(p, h));
-      ShellFace info;
-      info.step = static_cast<int>(si);
-      info.sourceLoop = info.sourceEdge = -1;
-      info.angle = D > 0 ? -std::numbers::pi / 2 : std::numbers::pi / 2;
-      tiny.emplace_back(ids, info);
-      tinyUp.push_back(D < 0);
-    }
-    any = true;
-  }
-  if (!any) return plan;
-  for (std::size_t k = 0; k < tiny.size(); ++k) addFlatFace(tiny[k].first, tinyUp[k], tiny[k].second);
+  return loops;
+}
 
+// The temporary plan (Sec. 4.5.2): every edge swept over unit height at the slope of its move;
+// `flat` lists the moves in the order of its edges.
+SweepInput Stager::temporaryPlan(const EdgeMoves& loops, std::vector<const EdgeMove*>& flat) const {
   SweepInput in;
   in.baseZ = 0;
   in.stopZ = 1;
   in.emitBase = false;
-  std::vector<const Item*> flat;
   for (const auto& l : loops) {
     std::vector<SweepEdge> sl;
-    for (const Item& it : l) {
+    for (const EdgeMove& it : l) {
       SweepEdge e;
       e.start = it.a.start;
       e.sourceLoop = it.a.sourceLoop;
@@ -198,34 +135,43 @@ Plan Stager::change(Plan plan, double h, bool atBase) {
     }
     in.loops.push_back(std::move(sl));
   }
-  SweepOutput out = runSweep(in, " (in the recursive extrusion at height " + std::to_string(h) + ")");
-  std::vector<int> map(out.points.size(), -1);
-  if (!atBase) {
-    for (std::size_t i = 0; i < out.points.size(); ++i) map[i] = weld(Vec2(out.points[i][0], out.points[i][1]), h);
-    // Edges moving both ways can sweep over one another (a dormer's front stepping in while
-    // its sides step out): their flattened faces then overlap, up over down, and the shell
-    // would be non-manifold there. Such changes take their flat faces from the plans instead.
-    bool inward = false, outward = false;
-    for (const auto& l : loops)
-      for (const Item& it : l) {
-        if (it.k > 0) inward = true;
-        if (it.k < 0) outward = true;
-      }
-    const bool folded = inward && outward && addFoldedFlats(in, out, map, h);
-    for (RawFace& f : out.raw) {
-      if (folded) break;
-      if (f.info.angle == 0) continue;  // an edge that did not move: a vertical sliver
-      RawFace g;
-      g.info = f.info;
-      if (g.info.step >= 0) g.info.sourceEdge = -1;  // a step's soffit (or ledge) is one face
-      const bool up = f.info.angle > 0;
-      g.info.angle = up ? std::numbers::pi / 2 : -std::numbers::pi / 2;
-      g.info.normal = Vec3(0, 0, up ? 1 : -1);
-      for (auto [u, v] : f.segments)
-        if (map[u] != map[v]) g.segments.emplace_back(map[u], map[v]);
-      addFace(std::move(g));
+  return in;
+}
+
+// The recursive extrusion's faces, projected onto the active plan at height h, are the ledges
+// (up) and soffits (down) of the change; `map` takes its points to the seam's welded vertices.
+void Stager::projectOntoActivePlan(const EdgeMoves& loops, const SweepInput& in, SweepOutput& out,
+                                   std::vector<int>& map, double h) {
+  for (std::size_t i = 0; i < out.points.size(); ++i) map[i] = weld(Vec2(out.points[i][0], out.points[i][1]), h);
+  // Edges moving both ways can sweep over one another (a dormer's front stepping in while
+  // its sides step out): their flattened faces then overlap, up over down, and the shell
+  // would be non-manifold there. Such changes take their flat faces from the plans instead.
+  bool inward = false, outward = false;
+  for (const auto& l : loops)
+    for (const EdgeMove& it : l) {
+      if (it.k > 0) inward = true;
+      if (it.k < 0) outward = true;
     }
+  const bool folded = inward && outward && addFoldedFlats(in, out, map, h);
+  for (RawFace& f : out.raw) {
+    if (folded) break;
+    if (f.info.angle == 0) continue;  // an edge that did not move: a vertical sliver
+    RawFace g;
+    g.info = f.info;
+    if (g.info.step >= 0) g.info.sourceEdge = -1;  // a step's soffit (or ledge) is one face
+    const bool up = f.info.angle > 0;
+    g.info.angle = up ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+    g.info.normal = Vec3(0, 0, up ? 1 : -1);
+    for (auto [u, v] : f.segments)
+      if (map[u] != map[v]) g.segments.emplace_back(map[u], map[v]);
+    addFace(std::move(g));
   }
+}
+
+// The temporary plan at the recursion's top replaces the active plan, its edges carrying on as
+// the moves they came from; corners that welded into one are merged.
+Plan Stager::replaceActivePlan(const SweepOutput& out, const std::vector<const EdgeMove*>& flat,
+                               const std::vector<int>& map, bool atBase) const {
   Plan result;
   for (const auto& loop : out.plan) {
     std::vector<Active> l;

@@ -113,6 +113,28 @@ struct Located {
   Vec2 at, d;
 };
 
+// An edge of the plan in a change at one height (Stager::change): what it will be in the new
+// plan and its move over the recursive extrusion's unit height (Sec. 4.5.2).
+struct EdgeMove {
+  Active a;
+  double k = 0;
+  int segment = -1;  // its first horizontal profile segment there
+};
+using EdgeMoves = std::vector<std::vector<EdgeMove>>;
+
+// A natural step at its anchor's height, located on the active plan (Sec. 4.7).
+struct PlacedStep {
+  std::size_t si;  // index into spec.steps
+  Located at;
+};
+
+// A natural step's λ-sized protrusion: a flat face of the seam.
+struct Protrusion {
+  std::vector<int> loop;
+  ShellFace info;
+  bool up;
+};
+
 class Stager {
  public:
   Stager(const ExtrusionSpec& spec, const Tolerances& tol, Progress* progress, double timeLimit, bool windingRule,
@@ -161,6 +183,17 @@ class Stager {
   SweepOutput runSweep(SweepInput& in, const std::string& context);
   // Both take the plan by value and hand it back as it was where nothing happens at h.
   Plan change(Plan plan, double h, bool atBase);
+  // change()'s steps (recursive_extrusion.cpp, natural_steps.cpp).
+  bool changesAt(const Plan& plan, double h) const;
+  EdgeMoves nearHorizontalMoves(const Plan& plan, double h, bool& any) const;
+  std::vector<PlacedStep> placeNaturalSteps(const Plan& plan, double h);
+  bool growNaturalSteps(EdgeMoves& loops, const std::vector<PlacedStep>& placed, double h, bool atBase,
+                        std::vector<Protrusion>& tiny);
+  SweepInput temporaryPlan(const EdgeMoves& loops, std::vector<const EdgeMove*>& flat) const;
+  void projectOntoActivePlan(const EdgeMoves& loops, const SweepInput& in, SweepOutput& out, std::vector<int>& map,
+                             double h);
+  Plan replaceActivePlan(const SweepOutput& out, const std::vector<const EdgeMove*>& flat, const std::vector<int>& map,
+                         bool atBase) const;
   Plan offset(const Plan& plan, double h, const OffsetEvent& ev, std::size_t index);
   Plan forcedSteps(Plan plan, double h, bool atBase);
   // plan_regions.cpp: the plan after a Boolean change, and a flat face over an exact region.

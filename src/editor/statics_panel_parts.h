@@ -1,0 +1,14 @@
+#pragma once
+// What statics_panel.cpp and statics_simulate.cpp share: the panel's good and bad colours and
+// the host's object. Private to the statics panel's files.
+#include "editor/statics_panel.h"
+
+#include <imgui.h>
+
+namespace corbel::editor::statics_panel {
+
+inline const ImVec4 kGood(0.4f, 0.85f, 0.4f, 1), kBad(1, 0.45f, 0.35f, 1);
+
+inline const DocObject* objectOf(const StaticsHost& host) { return host.doc ? host.doc->find(host.object) : nullptr; }
+
+}  // namespace corbel::editor::statics_panel
