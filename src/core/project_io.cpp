@@ -161,10 +161,11 @@ ojson kifsToJson(const KifsSpec& k) {
   j["bailout"] = k.bailout;
   j["mass"] = {{"footprint", k.mass.footprint}, {"halfWidth", k.mass.halfWidth}, {"halfDepth", k.mass.halfDepth},
                {"height", k.mass.height},       {"wing", k.mass.wing},           {"shell", k.mass.shell}};
-  if (k.mass.footprint == "object") {  // written only when used, so other files stay as they were
-    j["mass"]["object"] = k.mass.object;
+  // Written when used or set (a file may name an object under another footprint: kept, not
+  // lost), so other files stay as they were.
+  if (k.mass.footprint == "object" || !k.mass.object.empty()) j["mass"]["object"] = k.mass.object;
+  if (k.mass.footprint == "object" || k.mass.resolution != KifsSpec::Mass{}.resolution)
     j["mass"]["resolution"] = k.mass.resolution;
-  }
   j["facade"] = {{"period", k.facade.period}, {"r", vec(k.facade.r)}, {"a1", k.facade.a1},
                  {"a2", k.facade.a2},         {"b1", k.facade.b1},    {"b2", k.facade.b2}};
   j["floors"] = {{"height", k.floors.height}, {"y0", k.floors.y0}, {"sy", k.floors.sy}};

@@ -63,6 +63,26 @@ std::vector<Case> namedCases() {
   return cases;
 }
 
+// The random run asks CGAL in child processes: the answers are the same as in this process, a
+// child that dies costs its own plan only, and so does a plan CGAL cannot build.
+TEST(SkeletonOracle, IsolatedHeightsAreTheInProcessOnesAndADeadChildCostsOnePlan) {
+  const std::vector<Vec2> hip = {Vec2(0, 0), Vec2(0, 3), Vec2(3, 6)};  // a 3 m wall, then 45°
+  HeightQuery rectangle{{{Vec2(0, 0), Vec2(10, 0), Vec2(10, 6), Vec2(0, 6)}}, hip};
+  HeightQuery ell{{{Vec2(0, 0), Vec2(12, 0), Vec2(12, 4), Vec2(4, 4), Vec2(4, 10), Vec2(0, 10)}}, hip};
+  HeightQuery dies = rectangle;
+  dies.dieForTest = true;
+  HeightQuery degenerate{{{Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}}, hip};  // no area: no skeleton
+  const auto h = cgalHeightsIsolated({rectangle, dies, ell, degenerate, rectangle});
+  ASSERT_EQ(h.size(), 5u);
+  ASSERT_TRUE(h[0] && h[2] && h[4]);
+  EXPECT_NEAR(*h[0], 6.0, 1e-12);  // half the 6 m width at 45° over the 3 m wall
+  EXPECT_EQ(*h[2], cgalHeightUnderProfile(ell.loops, hip));
+  EXPECT_NEAR(*h[2], 5.0, 1e-12);  // the L's arms are 4 m wide: 3 + 2
+  EXPECT_FALSE(h[1]);
+  EXPECT_FALSE(h[3]);
+  EXPECT_EQ(*h[4], *h[0]);
+}
+
 TEST(EqualAngles, TenBySixRectangleIsExact) {
   const auto spec = uniformSpec({rectangle(10, 6)}, hipProfile(45 * kDeg));
   const ShellMeasures m = measure(extrude(spec).shell);

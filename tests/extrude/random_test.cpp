@@ -30,6 +30,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <set>
 #include <thread>
@@ -183,7 +184,8 @@ struct ShellCheck {
   std::string geometry;  // shellGeometryProblem
   double identity = 0;   // relative error of the projection identity
   bool equalAngles = false;
-  double height = 0, cgalHeight = 0, delta1 = 0;
+  double height = 0, delta1 = 0;
+  std::optional<double> cgalHeight;  // filled after the checks, by cgalHeightsIsolated
   std::string error;  // the check itself failed (an exception, which a worker thread must not let out)
 };
 
@@ -208,7 +210,6 @@ ShellCheck checkShell(const ExtrusionSpec& spec, double factor) {
     for (const auto& l : spec.loops) loops.push_back(l.points);
     c.equalAngles = true;
     c.height = er.shell.maxHeight;
-    c.cgalHeight = cgalHeightUnderProfile(loops, spec.profiles[spec.loops[0].profile[0]].points);
     c.delta1 = Tolerances::forScale(er.scale, factor).height;
   }
   return c;
@@ -257,6 +258,23 @@ TEST(RandomRobustness, HundredThousandFootprints) {
       });
     for (auto& t : pool) t.join();
   }
+  // CGAL's skeleton heights for the shells with one profile, in child processes (a crash of
+  // CGAL 5.5 there costs one plan its oracle, not the run).
+  std::vector<std::size_t> asked;
+  std::vector<HeightQuery> queries;
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (results[i].ok && checks[i].equalAngles) {
+      HeightQuery q;
+      for (const auto& l : items[i].spec.loops) q.loops.push_back(l.points);
+      q.profile = items[i].spec.profiles[items[i].spec.loops[0].profile[0]].points;
+      asked.push_back(i);
+      queries.push_back(std::move(q));
+    }
+  {
+    const auto heights = cgalHeightsIsolated(queries);
+    for (std::size_t k = 0; k < asked.size(); ++k) checks[asked[k]].cgalHeight = heights[k];
+  }
+  std::vector<std::string> withoutSkeleton;  // CGAL crashed or refused
   const std::set<std::string> saved = savedCases(), listed = listedAsFailing();
   const std::filesystem::path dir = std::filesystem::current_path() / "extrude-random-failures";
   std::filesystem::remove_all(dir);
@@ -326,14 +344,17 @@ TEST(RandomRobustness, HundredThousandFootprints) {
       if (i % 50 == 0 || r.toleranceFactor > 1) {
         EXPECT_LT(c.identity, 1e-7 * r.toleranceFactor) << r.id;
       }
-      if (c.equalAngles) {
+      if (c.equalAngles && !c.cgalHeight) {
+        withoutSkeleton.push_back(r.id);
+      } else if (c.equalAngles) {
         // No vertex above the skeleton's apex, beyond the kernel's event height tolerance δ1
         // (counted, as the geometry).
         ++equalAngles;
-        worstTop = std::max(worstTop, (c.height - c.cgalHeight) / c.delta1);
-        if (c.height > c.cgalHeight + c.delta1) {
+        const double cgal = *c.cgalHeight;
+        worstTop = std::max(worstTop, (c.height - cgal) / c.delta1);
+        if (c.height > cgal + c.delta1) {
           ++aboveSkeleton;
-          if (c.height - c.cgalHeight > worstAbove) worstAbove = c.height - c.cgalHeight, worstAboveId = r.id;
+          if (c.height - cgal > worstAbove) worstAbove = c.height - cgal, worstAboveId = r.id;
           keep("above-skeleton");
         }
       }
@@ -355,6 +376,10 @@ TEST(RandomRobustness, HundredThousandFootprints) {
     doc.add(r.id, items[i].spec);
     saveProject(doc, (dir / (r.id + ".corbel")).string());
   }
+  // CGAL 5.5 crashed on at most one plan a run when it ran in this process (docs/extrude.md);
+  // many plans without an answer would mean the oracle itself broke.
+  EXPECT_LE(withoutSkeleton.size(), 10u) << "CGAL's skeleton gave no answer for " << withoutSkeleton.size()
+                                         << " plans (first: " << (withoutSkeleton.empty() ? "" : withoutSkeleton.front()) << ")";
   std::cout << kCount << " random footprints: " << failed + rebuilt << " failed their first build, " << rebuilt
             << " of them rebuilt with wider tolerances and accepted (" << withCgal
             << " with one profile, agreeing with CGAL's skeleton within " << worstCgal << "; " << unperturbedAgree
@@ -367,6 +392,8 @@ TEST(RandomRobustness, HundredThousandFootprints) {
             << " δ1 above CGAL's skeleton (" << aboveSkeleton << " above it by more than δ1, the most "
             << worstAbove << " m: " << worstAboveId << "); " << badGeometry
             << " closed shells with a face not simple in its plane or intersecting itself (first: " << firstBadGeometry
+            << "); " << withoutSkeleton.size() << " without CGAL's skeleton (CGAL crashed or refused"
+            << (withoutSkeleton.empty() ? std::string() : ": " + withoutSkeleton.front() + (withoutSkeleton.size() > 1 ? ", ..." : ""))
             << "); slowest "
             << (results.empty() ? std::string("-")
                                 : results[slowest].id + " " + std::to_string(results[slowest].ms) + " ms")

@@ -1,4 +1,9 @@
 #include "skeleton_oracle.h"
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <unistd.h>
+#include <sys/wait.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_with_holes_2.h>
@@ -158,6 +163,61 @@ double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const
       volume += integrateTriangle({poly[0], poly[i], poly[i + 1]}, profile);
   }
   return volume;
+}
+
+std::vector<std::optional<double>> cgalHeightsIsolated(const std::vector<HeightQuery>& queries) {
+  std::vector<std::optional<double>> out(queries.size());
+  std::size_t next = 0;  // the first query no child has answered or died on
+  while (next < queries.size()) {
+    int fd[2];
+    if (pipe(fd) != 0) throw std::runtime_error("cgalHeightsIsolated: pipe failed");
+    const pid_t child = fork();
+    if (child < 0) throw std::runtime_error("cgalHeightsIsolated: fork failed");
+    if (child == 0) {
+      close(fd[0]);
+      for (std::size_t k = next; k < queries.size(); ++k) {
+        struct {
+          std::uint64_t index;
+          double height;
+          std::uint64_t ok;
+        } record{k, 0.0, 1};
+        if (queries[k].dieForTest) std::abort();
+        try {
+          record.height = cgalHeightUnderProfile(queries[k].loops, queries[k].profile);
+        } catch (...) {
+          record.ok = 0;
+        }
+        if (write(fd[1], &record, sizeof record) != ssize_t(sizeof record)) _exit(2);
+      }
+      _exit(0);
+    }
+    close(fd[1]);
+    struct {
+      std::uint64_t index;
+      double height;
+      std::uint64_t ok;
+    } record{};
+    std::size_t got = 0;
+    for (;;) {
+      std::size_t have = 0;
+      while (have < sizeof record) {
+        const ssize_t n = read(fd[0], reinterpret_cast<char*>(&record) + have, sizeof record - have);
+        if (n <= 0) break;
+        have += std::size_t(n);
+      }
+      if (have < sizeof record) break;
+      if (record.ok) out[record.index] = record.height;
+      got = record.index + 1;
+    }
+    close(fd[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    const std::size_t resume = std::max(got, next);
+    if (resume >= queries.size()) break;
+    // The child died on query `resume` (no answer for it): skip it and go on.
+    next = resume + 1;
+  }
+  return out;
 }
 
 }  // namespace corbel::extrude::test

@@ -2,6 +2,7 @@
 // The independent oracle for equal angles: CGAL's straight skeleton lifted by tan φ.
 #include "core/geometry.h"
 
+#include <optional>
 #include <vector>
 
 namespace corbel::extrude::test {
@@ -25,5 +26,18 @@ double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const
 
 // The highest point of that roof: the profile's height at the skeleton's latest time.
 double cgalHeightUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile);
+
+// The same for many plans, each computed in a forked child process. CGAL 5.5's skeleton now and
+// then dereferences a null trisegment in MergeCoincidentNodes on the random run's plans, and
+// not always on the same plan (it breaks ties between split events by their memory addresses;
+// docs/extrude.md): a crash there would end the whole test. A child that dies leaves its plan
+// without a height (nullopt) and the next child carries on after it; so does a plan CGAL
+// refuses by an exception. Call it with no other thread running.
+struct HeightQuery {
+  std::vector<std::vector<Vec2>> loops;
+  std::vector<Vec2> profile;
+  bool dieForTest = false;  // the child aborts on this query (tests the isolation itself)
+};
+std::vector<std::optional<double>> cgalHeightsIsolated(const std::vector<HeightQuery>& queries);
 
 }  // namespace corbel::extrude::test
