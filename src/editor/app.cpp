@@ -693,6 +693,7 @@ int App::run() {
     drawSplitters(shown);
     drawAxisWidget();
     handleViewInput();
+    syncScene();  // edits made in the 3D view this frame (Push/Pull, the gizmo), shown in this frame
     ImGui::Render();
     drawView();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
