@@ -53,20 +53,19 @@ BENCHMARK(WallQP)->ArgsProduct({{100, 1000, 5000}, {0, 1, 2}})->ArgNames({"block
 // The QP's reach: 10,000 blocks (a cathedral front), our Schur solver only.
 BENCHMARK(WallQP)->Args({10000, 0})->ArgNames({"blocks", "solver"})->Unit(benchmark::kMillisecond);
 
-// The stone house example (assets/examples/stone-house.corbel): an extrusion built in stone.
-ParametricModel stoneHouse(const std::string& object) {
+// An extrusion of the stone house example (assets/examples/stone-house.corbel), built in stone.
+corbel::ExtrusionSpec stoneHouseSpec(const std::string& object) {
   const corbel::LoadedProject p = corbel::loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
   const corbel::DocObject* o = p.document.findByName(object);
   const auto* spec = o ? std::get_if<corbel::ExtrusionSpec>(&o->spec) : nullptr;
   if (!spec) throw std::runtime_error("stone-house.corbel has no extrusion \"" + object + "\"");
-  return stoneModel(*spec);
+  return *spec;
 }
 
 // What the statics panel does after an edit of the stone house: the walls coursed from the
 // extrusion, loaded by the roof, and analysed (one penalty QP).
 void StoneHouseAnalyse(benchmark::State& state) {
-  const corbel::LoadedProject p = corbel::loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
-  const auto& spec = std::get<corbel::ExtrusionSpec>(p.document.findByName("Stone house")->spec);
+  const corbel::ExtrusionSpec spec = stoneHouseSpec("Stone house");
   AnalysisResult r;
   std::size_t blocks = 0;
   for (auto _ : state) {
@@ -83,7 +82,7 @@ BENCHMARK(StoneHouseAnalyse)->Unit(benchmark::kMillisecond);
 // Make It Stand on the thin-walled house (its roof's thrust overturns the walls): the search
 // over the wall thickness from the saved values.
 void StoneHouseMakeItStand(benchmark::State& state) {
-  const ParametricModel m = stoneHouse("Stone house, thin walls");
+  const ParametricModel m = stoneModel(stoneHouseSpec("Stone house, thin walls"));
   for (auto _ : state) {
     const auto r = corbel::statics::searchParameters(m, m.suggestedFree);
     benchmark::DoNotOptimize(r.measure);
