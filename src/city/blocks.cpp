@@ -1,10 +1,7 @@
 // Plain extruded blocks (city/blocks.h).
 #include "city/blocks.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include "extrude/nested_cdt.h"
 
 #include <cmath>
 #include <map>
@@ -13,39 +10,9 @@ namespace corbel::city {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-struct FaceInfo {
-  int nesting = -1;
-};
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
-using Fbb = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
-using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbb>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-
-// Nesting by flood fill across the constrained edges from the infinite face: odd levels are
-// inside the footprint, even ones outside or in a courtyard.
-void markNesting(CDT& cdt) {
-  std::vector<CDT::Face_handle> border{cdt.infinite_face()};
-  for (int level = 0; !border.empty(); ++level) {
-    std::vector<CDT::Face_handle> next;
-    for (auto start : border) {
-      std::vector<CDT::Face_handle> stack{start};
-      while (!stack.empty()) {
-        auto f = stack.back();
-        stack.pop_back();
-        if (f->info().nesting != -1) continue;
-        f->info().nesting = level;
-        for (int i = 0; i < 3; ++i) {
-          auto n = f->neighbor(i);
-          if (n->info().nesting != -1) continue;
-          (cdt.is_constrained(CDT::Edge(f, i)) ? next : stack).push_back(n);
-        }
-      }
-    }
-    border = std::move(next);
-  }
-}
+using extrude::nested::CDT;
+using extrude::nested::K;
+using extrude::nested::markNesting;
 
 }  // namespace
 
@@ -80,7 +47,7 @@ MeshData extrudedBlock(const std::vector<std::vector<Vec2>>& loops, double botto
   }
   bool any = false;
   for (auto f : cdt.finite_face_handles()) {
-    if (f->info().nesting % 2 != 1) continue;
+    if (!f->info().inDomain()) continue;
     const int a = f->vertex(0)->info(), b = f->vertex(1)->info(), c = f->vertex(2)->info();
     m.addFace({2 * a + 1, 2 * b + 1, 2 * c + 1}, roofTag, cap);  // CGAL's faces are counter-clockwise
     m.addFace({2 * a, 2 * c, 2 * b}, baseTag, wall);
@@ -92,7 +59,7 @@ MeshData extrudedBlock(const std::vector<std::vector<Vec2>>& loops, double botto
     if (!cdt.is_constrained(e)) continue;
     auto f = e.first;
     auto g = f->neighbor(e.second);
-    const bool fIn = f->info().nesting % 2 == 1, gIn = g->info().nesting % 2 == 1;
+    const bool fIn = f->info().inDomain(), gIn = g->info().inDomain();
     if (fIn == gIn) continue;
     // In face f, the edge opposite vertex i runs ccw from vertex (i+1) to (i+2), the face on its left.
     int p = f->vertex(CDT::ccw(e.second))->info(), q = f->vertex(CDT::cw(e.second))->info();

@@ -1,12 +1,8 @@
 // Shell → Scene geometry. Faces with holes cannot be one OpenMesh face, so they are
-// triangulated with CGAL's constrained Delaunay triangulation (the only CGAL triangulation
-// translation unit of the kernel).
+// triangulated with CGAL's constrained Delaunay triangulation (extrude/nested_cdt.h).
 #include "extrude/extrude.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include "extrude/nested_cdt.h"
 
 #include <cmath>
 #include <map>
@@ -16,45 +12,9 @@ namespace corbel::extrude {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-struct FaceInfo {
-  int nesting = -1;
-  bool inDomain() const { return nesting % 2 == 1; }
-};
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
-using Fbb = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
-using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbb>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-
-// Nesting levels by flood fill across constrained edges (the CGAL manual's polygon-with-holes
-// recipe, written for our types).
-void markDomains(CDT& cdt) {
-  for (auto f : cdt.all_face_handles()) f->info().nesting = -1;
-  std::vector<CDT::Face_handle> border{cdt.infinite_face()};
-  int level = 0;
-  while (!border.empty()) {
-    std::vector<CDT::Face_handle> next;
-    for (auto start : border) {
-      if (start->info().nesting != -1) continue;
-      std::vector<CDT::Face_handle> stack{start};
-      while (!stack.empty()) {
-        auto f = stack.back();
-        stack.pop_back();
-        if (f->info().nesting != -1) continue;
-        f->info().nesting = level;
-        for (int i = 0; i < 3; ++i) {
-          auto n = f->neighbor(i);
-          if (n->info().nesting != -1) continue;
-          if (cdt.is_constrained(CDT::Edge(f, i))) next.push_back(n);
-          else stack.push_back(n);
-        }
-      }
-    }
-    border = std::move(next);
-    ++level;
-  }
-}
+using nested::CDT;
+using nested::K;
+using nested::markNesting;
 
 std::string defaultTag(const ShellFace& f) {
   if (f.base) return "base";
@@ -159,7 +119,7 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
       for (std::size_t i = 0; i < vh.size(); ++i)
         if (vh[i] != vh[(i + 1) % vh.size()]) cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
     }
-    markDomains(cdt);
+    markNesting(cdt);
     for (auto fh : cdt.finite_face_handles()) {
       if (!fh->info().inDomain()) continue;
       std::vector<int> tri;
