@@ -7,15 +7,13 @@
 #   tests/bench/editor_latency.sh EDITOR WORKDIR RESULTS.json
 set -euo pipefail
 editor=$1 work=$2 results=$3
-if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
-  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
-fi
+source "$(dirname "$0")/../editor/test_log_lib.sh"  # wait_for, screen, under_xvfb
+under_xvfb "$@"
 root=$(cd "$(dirname "$0")/../.." && pwd)
 rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 cp "$root/assets/examples/house.corbel" "$work/house.corbel"
 log=$work/house.jsonl latency=$work/latency.jsonl
-source "$root/tests/editor/test_log_lib.sh"  # wait_for, screen
 "$editor" --size 1280x800 --recover no --autosave-seconds 3600 --test-log "$log" --latency-log "$latency" "$work/house.corbel" &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT

@@ -11,11 +11,8 @@
 set -euo pipefail
 editor=$1 work=$2
 shots=${3:-}  # a folder for screenshots of the typed value (optional)
-if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
-  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
-  command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/setup installs it)"; exit 1; }
-  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
-fi
+source "$(dirname "$0")/test_log_lib.sh"  # wait_for, screen, under_xvfb
+under_xvfb "$@"
 rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 project=$work/house.corbel
@@ -27,7 +24,6 @@ cat >"$project" <<'JSON'
 JSON
 
 log=$work/house.jsonl
-source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for
 # A screenshot for looking at (the editor writes no test log line while a number is typed, so
 # it is given two seconds to draw it; the checks never depend on it).
 shot() { [[ -z $shots ]] || { mkdir -p "$shots"; sleep 2; xwd -root -silent >"$shots/$1.xwd"; }; }

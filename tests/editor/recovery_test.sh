@@ -7,10 +7,8 @@
 #     apart: two recovery files, neither written over the other.
 set -euo pipefail
 editor=$1 examples=$2 work=$3
-if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
-  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
-  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
-fi
+source "$(dirname "$0")/test_log_lib.sh"  # wait_for, screen, under_xvfb
+under_xvfb "$@"
 rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 count() { python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1]))["objects"]))' "$1"; }

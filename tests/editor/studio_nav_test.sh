@@ -13,18 +13,14 @@
 #     undo step each; Ctrl+S saves and the saved project has each kind (courtyard: two loops).
 set -euo pipefail
 editor=$1 example=$2 work=$3
-if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
-  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
-  command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/setup installs it)"; exit 1; }
-  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
-fi
+source "$(dirname "$0")/test_log_lib.sh"  # wait_for, screen, under_xvfb
+under_xvfb "$@"
 rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 log=$work/test-log.jsonl
 cp "$example" "$work/studio.corbel"
 
 WAIT_SECONDS=120
-source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for
 start() {
   : >"$log"
   "$editor" --size 1280x800 --recover no --autosave-seconds 3600 --test-log "$log" "$work/studio.corbel" &

@@ -14,11 +14,8 @@
 #     is written relative to the second's.
 set -euo pipefail
 editor=$1 work=$2
-if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
-  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
-  command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/setup installs it)"; exit 1; }
-  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
-fi
+source "$(dirname "$0")/test_log_lib.sh"  # wait_for, screen, under_xvfb
+under_xvfb "$@"
 rm -rf "$work" && mkdir -p "$work/one/images" "$work/two"
 export CORBEL_STATE_DIR=$work/state
 python3 - "$work/one/images/plan.png" <<'PY'
@@ -40,7 +37,6 @@ cat >"$work/two/empty.corbel" <<'JSON'
 JSON
 
 log=$work/one.jsonl
-source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for, screen
 placement() {  # the saved placement of object $2 in project $1, as "x y z rotation"
   python3 -c 'import json,sys
 o = [o for o in json.load(open(sys.argv[1]))["objects"] if o["name"] == sys.argv[2]][0]

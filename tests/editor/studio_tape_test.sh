@@ -11,11 +11,8 @@
 #     the history (measuring changes nothing).
 set -euo pipefail
 editor=$1 work=$2
-if [[ -z ${CORBEL_INSIDE_XVFB:-} ]]; then
-  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
-  command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/setup installs it)"; exit 1; }
-  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
-fi
+source "$(dirname "$0")/test_log_lib.sh"  # wait_for, screen, under_xvfb
+under_xvfb "$@"
 rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
 project=$work/house.corbel
@@ -27,7 +24,6 @@ cat >"$project" <<'JSON'
 JSON
 
 log=$work/house.jsonl
-source "$(dirname "$0")/test_log_lib.sh"  # last, field, wait_for, screen
 # Clicks the house's own point $1 (x,y,z), taken through its placement.
 click_at() {
   local px py

@@ -2,6 +2,15 @@
 # They use the caller's globals: $log (the test log) and $pid (the editor's process);
 # WAIT_SECONDS (default 90) bounds each wait.
 
+# Runs the calling script again inside Xvfb (one 1280 × 800 screen) unless it is already there:
+# call it first, with the script's own arguments.
+under_xvfb() {
+  [[ -z ${CORBEL_INSIDE_XVFB:-} ]] || return 0
+  command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (scripts/setup installs it)"; exit 1; }
+  command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/setup installs it)"; exit 1; }
+  exec env CORBEL_INSIDE_XVFB=1 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
+}
+
 # The last line of the test log, and a field of it (python3 reads the JSON): field "['view'][0]".
 last() { tail -1 "$log"; }
 field() { python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).read().splitlines()[-1])'"$1"')' "$log"; }
