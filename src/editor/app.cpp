@@ -517,7 +517,13 @@ void App::writeTestLog() {
   s.dirty = history_.dirty();
   s.undo = history_.canUndo() ? history_.undoLabel() : "";
   if (panesFor_) s.planCorners = panes_.cornersOnScreen();
-  if (panesFor_) s.profilePoints = panes_.profilePointsOnScreen();
+  if (panesFor_) {
+    s.profilePoints = panes_.profilePointsOnScreen();
+    const DocObject* o = doc.find(*panesFor_);
+    const auto* e = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
+    if (e && panes_.shownProfile() >= 0 && panes_.shownProfile() < static_cast<int>(e->profiles.size()))
+      s.profile = e->profiles[panes_.shownProfile()].name;
+  }
   s.view = {float(view_.x()), float(view_.y()), float(view_.width()), float(view_.height())};
   for (const auto& [id, st] : sync_.status())
     if (const DocObject* o = doc.find(id); o && !st.error.empty()) s.failed.push_back(o->name);

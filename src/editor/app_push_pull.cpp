@@ -101,6 +101,10 @@ void App::endPushPull(bool confirm) {
     } else if (pushPullCommitted_) {
       const std::string d = pushPull_.describe();
       log(d.substr(0, d.find("  —")));
+      // The panes follow: the dragged wall's or roof's edge and its profile (its own copy after Alt).
+      const auto& t = pushPull_.target();
+      if (s && panesFor_ == pushPullObject_ && (t.kind == extrude::pushpull::Kind::Wall || t.kind == extrude::pushpull::Kind::Roof))
+        panes_.showEdge(*s, t.loop, t.edge, t.segment >= 0 ? std::optional<int>(t.segment) : std::nullopt);
     }
   } else if (pushPullCommitted_) {
     history_.undo();

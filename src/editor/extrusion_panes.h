@@ -40,6 +40,10 @@ class ExtrusionPanes {
   // provenance is exact) selects its plan edge and profile segment. Returns a description, or
   // "" when the ray misses.
   std::string pick(const ExtrusionSpec& spec, const Vec3& origin, const Vec3& direction);
+  // Selects plan edge (loop, edge) and shows its profile, lighting `segment` (after a push/pull
+  // on that edge's face: an edge given its own profile shows that copy).
+  void showEdge(const ExtrusionSpec& spec, int loop, int edge, std::optional<int> segment);
+  int shownProfile() const { return profile_; }  // the profile pane's profile (an index)
   // Where the plan pane drew each corner last frame (window pixels, loop by loop): for tests
   // that click them (the test log, editor/test_log.h).
   const std::vector<std::vector<std::array<float, 2>>>& cornersOnScreen() const { return cornersOnScreen_; }

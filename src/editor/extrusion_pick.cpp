@@ -68,4 +68,13 @@ std::string ExtrusionPanes::pick(const ExtrusionSpec& spec, const Vec3& origin, 
   return text;
 }
 
+void ExtrusionPanes::showEdge(const ExtrusionSpec& spec, int loop, int edge, std::optional<int> segment) {
+  if (loop < 0 || loop >= static_cast<int>(spec.loops.size())) return;
+  const PlanLoop& l = spec.loops[loop];
+  if (edge < 0 || edge >= static_cast<int>(l.profile.size())) return;
+  selectedEdges_ = {{loop, edge}};
+  profile_ = l.profile[edge];
+  pickedSegment_ = segment;
+}
+
 }  // namespace corbel::editor

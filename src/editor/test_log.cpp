@@ -26,6 +26,7 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   j["undo"] = s.undo;
   if (!s.planCorners.empty()) j["plan_corners"] = s.planCorners;
   if (!s.profilePoints.empty()) j["profile_points"] = s.profilePoints;
+  if (!s.profile.empty()) j["profile"] = s.profile;
   j["view"] = s.view;
   if (!s.failed.empty()) j["failed"] = s.failed;
   if (s.activeInView) j["active_in_view"] = *s.activeInView;

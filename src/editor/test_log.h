@@ -29,6 +29,7 @@ struct SettledFrame {
   std::vector<std::vector<std::array<float, 2>>> planCorners;
   // Where the profile pane shows the shown profile's points (window pixels); empty without it.
   std::vector<std::array<float, 2>> profilePoints;
+  std::string profile;  // the name of the profile the profile pane shows ("" without it)
   // The 3D view's rectangle in window pixels: x, y (top left), width, height.
   std::array<float, 4> view{};
   std::vector<std::string> failed;  // the objects whose last build failed (flagged in the list)

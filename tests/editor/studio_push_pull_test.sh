@@ -10,6 +10,7 @@
 #     for every edge ("Turn roof");
 #  3. the same on the west roof with Alt held and 60 typed gives edge 3 its own copy at 60°,
 #     the other edges keep 30°;
+#     the profile pane then shows that copy;
 #  4. Ctrl+Z undoes step 3 alone; the placement never changes (one step per drag); the project is saved and read back.
 set -euo pipefail
 editor=$1 work=$2
@@ -64,7 +65,7 @@ wait_for "not j['dirty']"
 echo "== the south roof turned to 30° (typed): every edge on the shared profile"
 # 1 m in from the pushed eaves (y = −1.5) at 45°: (5, −0.5, 4).
 drag_typed 5,-0.5,4 30 "" turn-roof
-wait_for "j['undo'] == 'Turn roof'"
+wait_for "j['undo'] == 'Turn roof' and j.get('profile') == 'hip'"
 xdotool key --clearmodifiers ctrl+s
 wait_for "not j['dirty']"
 
@@ -104,6 +105,9 @@ print(f"plan 10 x {side:.3f} m; roof pitch {pitch(shared[0]):.3f} deg on edges 0
 PY
 }
 check own
+echo "== the profile pane shows the copy edge 3 turned on"
+own=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["objects"][0]["extrusion"]["plan"]["edge_profiles"][0][3])' "$project")
+wait_for "j.get('profile') == '$own' and '$own' != 'hip'"
 
 echo "== Ctrl+Z undoes the Alt turn alone"
 xdotool key --clearmodifiers ctrl+z
