@@ -211,15 +211,34 @@ Anchor slideAnchor(const ExtrusionSpec& s, Anchor a, double metres) {
   return a;
 }
 
+std::pair<Anchor, Repeat> slideRow(const ExtrusionSpec& s, Anchor a, Repeat r, double metres) {
+  if (r.kind == RepeatKind::None) return {slideAnchor(s, a, metres), r};
+  if (!std::isfinite(metres)) fail("distance", "must be a finite number of metres");
+  const WallRun run = wallRun(s, a.loop, a.edge);
+  if (run.edges.empty()) fail("anchor", "names no edge of the plan");
+  // Both ends in metres along the wall; the row moves as one and stops where either end meets
+  // an end of the wall (a row already past an end may still move back onto it).
+  const double scale = a.absolute ? 1.0 : std::max(run.length, 1e-9);
+  const double first = a.along * scale, last = r.along * scale;
+  const double lo = std::min(0.0, -std::min(first, last));
+  const double hi = std::max(0.0, run.length - std::max(first, last));
+  const double d = std::clamp(metres, lo, hi);
+  a.along += d / scale;
+  r.along += d / scale;
+  return {a, r};
+}
+
 ExtrusionSpec slideStep(ExtrusionSpec s, int step, double metres) {
   if (step < 0 || step >= static_cast<int>(s.steps.size())) fail("step", "no step " + std::to_string(step));
-  const Anchor a = slideAnchor(s, s.steps[step].anchor, metres);
+  const auto [a, r] = slideRow(s, s.steps[step].anchor, s.steps[step].repeat, metres);
+  s.steps[step].repeat = r;
   return edit::moveAnchor(std::move(s), step, a);
 }
 
 ExtrusionSpec slideFeature(ExtrusionSpec s, int feature, double metres) {
   if (feature < 0 || feature >= static_cast<int>(s.anchors.size())) fail("feature", "no feature " + std::to_string(feature));
-  const Anchor a = slideAnchor(s, s.anchors[feature].anchor, metres);
+  const auto [a, r] = slideRow(s, s.anchors[feature].anchor, s.anchors[feature].repeat, metres);
+  s.anchors[feature].repeat = r;
   return edit::moveMeshAnchor(std::move(s), feature, a);
 }
 

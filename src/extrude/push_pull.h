@@ -9,6 +9,7 @@
 #include "extrude/spec.h"
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace corbel::extrude::pushpull {
@@ -63,6 +64,10 @@ ExtrusionSpec ownProfile(ExtrusionSpec s, int loop, int edge, int* index);
 // fraction by metres over the wall's length, an absolute one's distance by metres; both stay on
 // the wall (clamped to its ends).
 Anchor slideAnchor(const ExtrusionSpec& s, Anchor anchor, double metres);
+// A repeated row or grid (Sec. 3.6) slides as a whole: its first and last places move by the
+// same metres, stopping where either end reaches an end of the wall, so the spacing and the
+// count stay. Without a repeat it is slideAnchor.
+std::pair<Anchor, Repeat> slideRow(const ExtrusionSpec& s, Anchor anchor, Repeat repeat, double metres);
 ExtrusionSpec slideStep(ExtrusionSpec s, int step, double metres);
 ExtrusionSpec slideFeature(ExtrusionSpec s, int feature, double metres);
 

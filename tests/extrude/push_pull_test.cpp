@@ -122,6 +122,50 @@ TEST(PushPull, AnchorsSlideAlongTheirWalls) {
   EXPECT_THROW(pp::slideFeature(s, 1, 1), InputError);
 }
 
+// A row of dormers slides as one: every element moves by the same metres, so the spacing and
+// the count stay, and the row stops where its last element meets the wall's end.
+TEST(PushPull, ARepeatedRowSlidesAsAWhole) {
+  ExtrusionSpec s = house();  // the south wall is 10 m
+  PlanStep dormer;
+  dormer.name = "dormer";
+  dormer.anchor = Anchor{0, 0, false, 0.2, 3.5};
+  dormer.repeat.kind = RepeatKind::Row;
+  dormer.repeat.along = 0.6;  // first at 2 m, last at 6 m
+  dormer.repeat.spacing = 2;
+  s.steps.push_back(dormer);
+  s.anchors.emplace_back("window", Anchor{0, 1, true, 1, 1}, FeatureKind::Window);
+  s.anchors[0].repeat.kind = RepeatKind::Row;
+  s.anchors[0].repeat.along = 3;  // 1 m to 3 m along the 6 m east wall
+  s.anchors[0].repeat.spacing = 1;
+
+  const auto places = [](const ExtrusionSpec& t, const Anchor& a, const Repeat& r) {
+    std::vector<double> x;
+    for (const Anchor& e : repeatAnchors(t, a, r)) x.push_back(e.along);
+    return x;
+  };
+  const std::vector<double> before = places(s, s.steps[0].anchor, s.steps[0].repeat);
+  ASSERT_EQ(before.size(), 3u);
+  ExtrusionSpec t = pp::slideStep(s, 0, 1);  // 1 m is a tenth of the wall
+  const std::vector<double> after = places(t, t.steps[0].anchor, t.steps[0].repeat);
+  ASSERT_EQ(after.size(), before.size()) << "the count stays";
+  for (std::size_t i = 0; i < after.size(); ++i) EXPECT_NEAR(after[i], before[i] + 0.1, 1e-12) << "element " << i;
+
+  t = pp::slideStep(t, 0, 100);  // the last element stops at the wall's end, 3 m on
+  EXPECT_NEAR(t.steps[0].repeat.along, 1.0, 1e-12);
+  EXPECT_NEAR(t.steps[0].anchor.along, 0.6, 1e-12) << "the row keeps its length";
+  t = pp::slideStep(t, 0, -100);
+  EXPECT_NEAR(t.steps[0].anchor.along, 0.0, 1e-12);
+  EXPECT_NEAR(t.steps[0].repeat.along, 0.4, 1e-12);
+
+  t = pp::slideFeature(t, 0, 2);  // an absolute row moves by metres, up to the 6 m end
+  EXPECT_NEAR(t.anchors[0].anchor.along, 3, 1e-12);
+  EXPECT_NEAR(t.anchors[0].repeat.along, 5, 1e-12);
+  t = pp::slideFeature(t, 0, 5);
+  EXPECT_NEAR(t.anchors[0].anchor.along, 4, 1e-12);
+  EXPECT_NEAR(t.anchors[0].repeat.along, 6, 1e-12);
+  EXPECT_EQ(repeatAnchors(t, t.anchors[0].anchor, t.anchors[0].repeat).size(), 3u);
+}
+
 TEST(PushPull, TheRayNamesTheFacesSource) {
   ExtrusionSpec s = house();
   s.anchors.emplace_back("door", Anchor{0, 3, false, 0.5, 0}, FeatureKind::Door);  // west wall (0, 6) → (0, 0)
