@@ -1,6 +1,7 @@
 #include "editor/app.h"
 
 #include "editor/camera_views.h"
+#include "editor/widget_marks.h"
 
 #include "compose/export_scene.h"
 #include "core/error.h"
@@ -48,6 +49,7 @@ App::App(GLFWwindow* window, EditorOptions options)
       recent_(stateDirOr(options_.stateDir) + "/recent.json") {
   input_ = std::make_unique<GlfwInput>(window_);
   if (!options_.testLog.empty()) testLog_ = std::make_unique<TestLog>(options_.testLog);
+  marks::enable(testLog_ != nullptr);
   if (!options_.latencyLog.empty()) {
     latencyLog_ = std::make_unique<std::ofstream>(options_.latencyLog, std::ios::trunc);
     if (!*latencyLog_) throw Error("--latency-log: cannot write " + options_.latencyLog);
@@ -519,6 +521,7 @@ void App::writeTestLog() {
   if (panesFor_) s.planCorners = panes_.cornersOnScreen();
   if (panesFor_) {
     s.profilePoints = panes_.profilePointsOnScreen();
+    for (const auto& [loop, edge] : panes_.selectedEdges()) s.planEdges.push_back({loop, edge});
     const DocObject* o = doc.find(*panesFor_);
     const auto* e = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
     if (e && panes_.shownProfile() >= 0 && panes_.shownProfile() < static_cast<int>(e->profiles.size()))
@@ -532,6 +535,7 @@ void App::writeTestLog() {
     if (!box.empty()) s.activeInView = boxInView(view_.camera, view_.aspect(), box);
   }
   if (searchShown_) s.search = searchText_;
+  s.widgets = marks::all();
   if (tape_.done()) {
     const TapePoint &a = *tape_.start(), &b = *tape_.end();
     s.tape = SettledFrame::Tape{{a.at[0], a.at[1], a.at[2]}, {b.at[0], b.at[1], b.at[2]}, snapName(a.snap), snapName(b.snap),
@@ -586,6 +590,7 @@ int App::run() {
     ImGui_ImplOpenGL3_NewFrame();
     input_->newFrame(batch_);
     ImGui::NewFrame();
+    marks::beginFrame();
 
     script_.startFrame(frame_, scriptHost);
     pollJob();

@@ -162,12 +162,24 @@ void App::registerActions() {
   add({"object.add_kifs",
        "Object/Add",
        "KIFS Building",
-       "Add a KIFS fractal building (McGraw; the box preset) at the origin; edit it in the KIFS panel.",
+       "Add a KIFS fractal building (McGraw; the box preset) next to the existing objects; edit it in the KIFS "
+       "panel.",
        {},
        true,
        [this, doc, added] {
          Document d = doc();
          const ObjectId id = d.add("KIFS building", kifs::specOf(kifs::preset("box"), "box"));
+         // Beside the scene, as the other kinds are added: the fractal's own bounds (it has no
+         // faces) placed with their lower left corner where besideScene says.
+         Document one;
+         one.objects.push_back(*d.find(id));
+         const BBox own = render::raymarchedKifs(one, nullptr).bounds;
+         BBox scene = scene_.bounds();
+         scene.add(render::raymarchedKifs(history_.current(), nullptr).bounds);
+         if (!scene.empty() && !own.empty()) {
+           const Vec2 at = besideScene(scene, own.size()[1]);
+           d.find(id)->placement.translation = Vec3(at[0] - own.lo[0], at[1] - own.lo[1], 0);
+         }
          added(std::move(d), id, "Add KIFS building");
        }});
   for (const MasonryTemplate& t : masonryTemplates()) {

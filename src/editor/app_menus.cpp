@@ -6,6 +6,7 @@
 #include "editor/menu_order.h"
 #include "editor/new_objects.h"
 #include "editor/shape_gallery.h"
+#include "editor/widget_marks.h"
 #include "extrude/edit.h"
 #include "kifs/kernel.h"
 
@@ -49,9 +50,11 @@ bool App::rightPaneHasKeys(const Rect& pane) const {
 void App::drawMenuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
   for (const std::string& menu : menuBarOrder(actions_.all())) {
-    if (!ImGui::BeginMenu(menu.c_str())) continue;
-    drawMenuItems(menu);
-    ImGui::EndMenu();
+    if (ImGui::BeginMenu(menu.c_str())) {
+      drawMenuItems(menu);
+      ImGui::EndMenu();
+    }
+    marks::mark("menu: " + menu);
   }
   ImGui::EndMainMenuBar();
 }
@@ -71,6 +74,7 @@ void App::drawMenuItems(const std::string& menu) {
         drawMenuItems(menu + "/" + sub);
         ImGui::EndMenu();
       }
+      marks::mark("menu: " + menu + "/" + sub);
       continue;
     }
     if (a.separatorBefore) ImGui::Separator();
@@ -82,6 +86,7 @@ void App::drawMenuItems(const std::string& menu) {
                         actions_.isEnabled(a)) &&
         a.run)
       runAction(a);
+    marks::mark("action: " + a.id);
     if (ImGui::IsItemHovered() && !a.help.empty()) ImGui::SetTooltip("%s", a.help.c_str());
     if (a.id == "file.open") {
       if (ImGui::BeginMenu("Open Recent", !recent_.paths().empty())) {

@@ -4,6 +4,7 @@
 
 #include "core/materials.h"
 #include "editor/fields.h"
+#include "editor/widget_marks.h"
 
 #include <imgui.h>
 
@@ -64,7 +65,7 @@ void App::drawObjectProperties(const DocObject& object) {
         ImGui::SameLine();
         if (ImGui::Selectable(std::string(m.name).c_str(), b.material == m.name)) {
           b.material = m.name;
-          edited("material", "material");
+          edited("material", "");
         }
       }
       ImGui::EndCombo();
@@ -100,7 +101,7 @@ void App::drawObjectProperties(const DocObject& object) {
       for (const auto& m : builtinMaterials())
         if (ImGui::Selectable(std::string(m.name).c_str(), e->material == m.name)) {
           e->material = m.name;
-          edited("material", "material");
+          edited("material", "");
         }
       ImGui::EndCombo();
     }
@@ -115,9 +116,10 @@ void App::drawObjectProperties(const DocObject& object) {
     constexpr Priority kPriorities[] = {Priority::MaximiseVolume, Priority::MinimiseVolume, Priority::Manual};
     int priority = 0;
     while (priority < 2 && kPriorities[priority] != e->priority) ++priority;
-    if (ImGui::Combo("Ambiguity", &priority, "maximise volume\0minimise volume\0manual (segment tags high, low)\0")) {
+    if (marks::combo("Ambiguity", &priority, "maximise volume\0minimise volume\0manual (segment tags high, low)\0",
+                     "ambiguity")) {
       e->priority = kPriorities[priority];
-      edited("ambiguity priority", "priority");
+      edited("ambiguity priority", "");
     }
     for (const Profile& p : e->profiles)
       ImGui::BulletText("%s: %zu segment%s", p.name.c_str(), p.points.size() - 1, p.points.size() == 2 ? "" : "s");
@@ -136,12 +138,14 @@ void App::drawObjectProperties(const DocObject& object) {
       for (const auto& m : builtinMaterials())
         if (ImGui::Selectable(std::string(m.name).c_str(), u->material == m.name)) {
           u->material = m.name;
-          edited("material", "material");
+          edited("material", "");
         }
       ImGui::EndCombo();
     }
   }
-  if (changed) commit(std::move(d), label, key + field);
+  // A pick from a list (a material, the priority) is an undo step of its own; typed and dragged
+  // values merge while the same field keeps changing.
+  if (changed) commit(std::move(d), label, field.empty() ? std::string() : key + field);
 
   ImGui::Separator();
   ImGui::TextDisabled("Shell");

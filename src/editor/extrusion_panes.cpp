@@ -26,6 +26,7 @@ void ExtrusionPanes::draw(const PaneHost& host, float x, float y, float w, float
 
 void ExtrusionPanes::reset() {
   fitted_ = false;
+  autoFit_ = true;
   selectedEdges_.clear();
   dragCorner_.reset();
   selectedCorner_.reset();
@@ -41,6 +42,8 @@ void ExtrusionPanes::reset() {
   dragFeatureHeight_.reset();
   forcedEdge_.reset();
   selectedStep_.reset();
+  pendingStep_.reset();
+  pendingFeature_.reset();
   calibrating_ = 0;
   calibratePopup_ = false;
   chosenBackground_.reset();

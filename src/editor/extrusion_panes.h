@@ -44,6 +44,7 @@ class ExtrusionPanes {
   // on that edge's face: an edge given its own profile shows that copy).
   void showEdge(const ExtrusionSpec& spec, int loop, int edge, std::optional<int> segment);
   int shownProfile() const { return profile_; }  // the profile pane's profile (an index)
+  const std::set<std::pair<int, int>>& selectedEdges() const { return selectedEdges_; }  // (loop, edge)
   // Where the plan pane drew each corner last frame (window pixels, loop by loop): for tests
   // that click them (the test log, editor/test_log.h).
   const std::vector<std::vector<std::array<float, 2>>>& cornersOnScreen() const { return cornersOnScreen_; }
@@ -76,6 +77,10 @@ class ExtrusionPanes {
   // Plan view: world (m) ↔ pane pixels.
   double cx_ = 0, cy_ = 0, zoom_ = 20;  // centre, pixels per metre
   bool fitted_ = false;
+  // Until the user zooms or pans, the plan is fitted again whenever its canvas changes size (a
+  // feature's fields above it take room), so no edge goes out of sight.
+  bool autoFit_ = true;
+  float fittedW_ = 0, fittedH_ = 0;
   bool snap_ = true;
   double grid_ = 0.25;
   bool snapAngles_ = true;  // with snap_: edges turn to multiples of angleStep_ or to a neighbour
@@ -89,6 +94,8 @@ class ExtrusionPanes {
   std::optional<std::pair<int, int>> forcedEdge_;
   float forcedHeight_ = 0.0f;
   std::optional<int> selectedStep_;
+  // A step or feature just added: selected from the next frame on, when the spec holds it.
+  std::optional<int> pendingStep_, pendingFeature_;
 
   // Background image for tracing: the texture of the image at texturePath_ (0 = none).
   unsigned texture_ = 0;

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "editor/fields.h"
+#include "editor/widget_marks.h"
 #include "extrude/edit.h"
 
 #include <imgui.h>
@@ -27,7 +28,7 @@ const char* const kFeatureLabels = "door\0window\0roof window\0chimney pot\0";
 static bool repeatFields(Repeat& rep, const Anchor& anchor, const std::string& id) {
   int kind = static_cast<int>(rep.kind);
   ImGui::SetNextItemWidth(90);
-  bool changed = ImGui::Combo(("Repeat" + id).c_str(), &kind, "none\0row\0grid\0");
+  bool changed = marks::combo(("Repeat" + id).c_str(), &kind, "none\0row\0grid\0", id.empty() ? "feature: repeat" : "step: repeat");
   if (changed && rep.kind == RepeatKind::None) {
     // A new repeat runs to the far end of the edge (relative) or 4 m on (absolute).
     rep.along = anchor.absolute ? anchor.along + 4 : (anchor.along < 0.5 ? 0.9 : 0.1);
@@ -59,6 +60,10 @@ static bool repeatFields(Repeat& rep, const Anchor& anchor, const std::string& i
 
 // Size, repeat and deletion of the selected feature anchor; each field commits when edited.
 void ExtrusionPanes::featureFields(const PaneHost& host, const ExtrusionSpec& spec) {
+  if (pendingFeature_ && *pendingFeature_ < static_cast<int>(spec.anchors.size())) {
+    selectedFeature_ = pendingFeature_;
+    pendingFeature_.reset();
+  }
   if (!selectedFeature_ || *selectedFeature_ >= static_cast<int>(spec.anchors.size())) {
     selectedFeature_.reset();
     return;
@@ -92,6 +97,10 @@ void ExtrusionPanes::featureFields(const PaneHost& host, const ExtrusionSpec& sp
 
 // Name, repeat and deletion of the selected step (Sec. 3.5–3.6); each field commits when edited.
 void ExtrusionPanes::stepFields(const PaneHost& host, const ExtrusionSpec& spec) {
+  if (pendingStep_ && *pendingStep_ < static_cast<int>(spec.steps.size())) {
+    selectedStep_ = pendingStep_;
+    pendingStep_.reset();
+  }
   if (!selectedStep_ || *selectedStep_ >= static_cast<int>(spec.steps.size())) {
     selectedStep_.reset();
     return;
@@ -123,13 +132,17 @@ void ExtrusionPanes::stepFields(const PaneHost& host, const ExtrusionSpec& spec)
 // profiles taken from the library once.
 void ExtrusionPanes::stepPopup(const PaneHost& host) {
 if (ImGui::BeginPopup("step")) {
-  ImGui::Combo("Kind", &stepShape_, "dormer\0bay window\0buttress\0");
+  marks::combo("Kind", &stepShape_, "dormer\0bay window\0buttress\0", "add step: kind");
   ImGui::SliderFloat("Along the edge", &stepFraction_, 0.0f, 1.0f, "%.2f");
+  marks::mark("add step: along");
   ImGui::InputFloat("Height (m)", &stepHeight_, 0.1f, 1.0f, "%.2f");
+  marks::mark("add step: height");
   ImGui::InputFloat("Width (m)", &stepWidth_, 0.1f, 1.0f, "%.2f");
   ImGui::InputFloat("Depth out (m)", &stepDepth_, 0.05f, 0.5f, "%.2f");
   if (stepShape_ == 1) ImGui::InputFloat("Cant (m)", &stepCant_, 0.05f, 0.5f, "%.2f");
-  if (ImGui::Button("Add") && !selectedEdges_.empty()) {
+  const bool add = ImGui::Button("Add");
+  marks::mark("add step: add");
+  if (add && !selectedEdges_.empty()) {
     const auto [li, ei] = *selectedEdges_.begin();
     const int shape = stepShape_;
     PlanStep st;
@@ -164,7 +177,10 @@ if (ImGui::BeginPopup("step")) {
             st.frontProfile = use("buttress");
             st.sideProfile = use("vertical wall");
           }
-          return ed::addStep(s, st);
+          ExtrusionSpec added = ed::addStep(s, st);
+          pendingStep_ = static_cast<int>(added.steps.size()) - 1;  // selected once committed
+          selectedFeature_.reset();
+          return added;
         },
         "Add " + st.name);
     ImGui::CloseCurrentPopup();
@@ -174,16 +190,20 @@ if (ImGui::BeginPopup("step")) {
 }
 
 // The "Add feature here" popup: a door, window, roof window or chimney pot on the selected edge.
-void ExtrusionPanes::featurePopup(const PaneHost& host, const ExtrusionSpec& spec) {
+void ExtrusionPanes::featurePopup(const PaneHost& host, const ExtrusionSpec& /*spec*/) {
 if (ImGui::BeginPopup("feature")) {
-  if (ImGui::Combo("Kind", &featureKind_, kFeatureLabels)) {
+  if (marks::combo("Kind", &featureKind_, kFeatureLabels, "add feature: kind")) {
     const FeatureSize d = defaultFeatureSize(kFeatureKinds[featureKind_]);
     featureSize_[0] = float(d.width), featureSize_[1] = float(d.height), featureSize_[2] = float(d.depth);
   }
   ImGui::SliderFloat("Along the edge", &featureFraction_, 0.0f, 1.0f, "%.2f");
+  marks::mark("add feature: along");
   ImGui::InputFloat("Height (m)", &featureHeight_, 0.1f, 1.0f, "%.2f");
+  marks::mark("add feature: height");
   ImGui::InputFloat3("W, H, D (m)", featureSize_, "%.2f");
-  if (ImGui::Button("Add") && !selectedEdges_.empty()) {
+  const bool add = ImGui::Button("Add");
+  marks::mark("add feature: add");
+  if (add && !selectedEdges_.empty()) {
     const auto [li, ei] = *selectedEdges_.begin();
     const FeatureKind kind = kFeatureKinds[featureKind_];
     std::string label = featureName(kind);
@@ -191,8 +211,14 @@ if (ImGui::BeginPopup("feature")) {
     const MeshAnchor m(label, {li, ei, false, featureFraction_, std::max(0.0f, featureHeight_)}, kind,
                        {featureSize_[0], featureSize_[1], featureSize_[2]});
     apply(
-        host, [&](const ExtrusionSpec& s) { return ed::addMeshAnchor(s, m); }, "Add " + label);
-    selectedFeature_ = static_cast<int>(spec.anchors.size());  // the new one, once committed
+        host,
+        [&](const ExtrusionSpec& s) {
+          ExtrusionSpec added = ed::addMeshAnchor(s, m);
+          pendingFeature_ = static_cast<int>(added.anchors.size()) - 1;  // selected once committed
+          selectedStep_.reset();
+          return added;
+        },
+        "Add " + label);
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();

@@ -6,6 +6,7 @@
 #include "editor/pane_drawing.h"
 #include "editor/pane_window.h"
 #include "editor/plan_crossings.h"
+#include "editor/widget_marks.h"
 #include "extrude/edit.h"
 
 #include <imgui.h>
@@ -109,13 +110,16 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
             "Assign profile " + spec.profiles[i].name);
         profile_ = i;
       }
+      marks::mark("plan: assign profile: " + spec.profiles[i].name);
       ImGui::PopStyleColor();
     }
     ImGui::EndCombo();
   }
+  marks::mark("plan: assign profile");
   (void)current;
   if (selectedEdges_.size() == 1) {
     if (ImGui::Button("Add step here")) ImGui::OpenPopup("step");
+    marks::mark("plan: add step here");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
           "A natural step anchored on the selected edge: a dormer, a bay window or a buttress (Sec. 3.5)");
@@ -125,6 +129,7 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   if (selectedEdges_.size() == 1) {
     ImGui::SameLine();
     if (ImGui::Button("Add feature here")) ImGui::OpenPopup("feature");
+    marks::mark("plan: add feature here");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
           "A door, window, roof window or chimney pot at a mesh anchor on the selected edge (Sec. 3.4, Fig. 28)");
@@ -162,7 +167,14 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
   const float errH = host.error.empty() ? 0.0f : ImGui::GetTextLineHeightWithSpacing() * 2;
   const ImVec2 size(std::max(avail.x, 10.0f), std::max(avail.y - errH, 10.0f));
   if (object && object->background) backgroundTexture(host, *object->background);  // may ask for a fit
-  if (!fitted_) fit(spec, object && object->background ? &*object->background : nullptr, size.x, size.y);
+  const bool pressed = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
+                       ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+  if (autoFit_ && !pressed && (size.x != fittedW_ || size.y != fittedH_)) fitted_ = false;  // not under a drag
+  if (!fitted_) {
+    fit(spec, object && object->background ? &*object->background : nullptr, size.x, size.y);
+    fittedW_ = size.x, fittedH_ = size.y;
+    autoFit_ = true;
+  }
   ImGui::InvisibleButton(
       "plan-canvas", size,
       ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
@@ -413,10 +425,12 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
       const Vec2 after = toWorld(mouse);
       cx_ += before[0] - after[0];
       cy_ += before[1] - after[1];
+      autoFit_ = false;
     }
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
       cx_ -= io.MouseDelta.x / zoom_;
       cy_ += io.MouseDelta.y / zoom_;
+      autoFit_ = false;
     }
   }
   if (calibrating_ > 0) {
@@ -446,7 +460,7 @@ void ExtrusionPanes::drawPlan(const PaneHost& host, const ExtrusionSpec& spec, f
         apply(
             host, [&](const ExtrusionSpec& s) { return ed::addForcedStep(s, li, ei, pts, height, front); },
             "Add forced step");
-        selectedStep_ = index;  // the new one, once committed
+        pendingStep_ = index;  // the new one, once committed
       } else {
         apply(
             host, [&](const ExtrusionSpec& s) { return ed::addLoop(s, pts, profile_); }, "Draw loop");

@@ -6,6 +6,7 @@
 #include "editor/fields.h"
 #include "editor/pane_drawing.h"
 #include "editor/pane_window.h"
+#include "editor/widget_marks.h"
 #include "extrude/edit.h"
 
 #include <imgui.h>
@@ -29,6 +30,7 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
     ImGui::End();
     return;
   }
+  profile_ = std::clamp(profile_, 0, static_cast<int>(spec.profiles.size()) - 1);
   ImGui::SetNextItemWidth(150);
   if (ImGui::BeginCombo("##profile", spec.profiles[profile_].name.c_str())) {
     for (int i = 0; i < static_cast<int>(spec.profiles.size()); ++i) {
@@ -45,15 +47,18 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   if (ImGui::BeginCombo("##library", "New from library")) {
-    for (const Profile& p : ed::profileLibrary())
+    for (const Profile& p : ed::profileLibrary()) {
       if (ImGui::Selectable(p.name.c_str())) {
         int index = 0;
         apply(
             host, [&](const ExtrusionSpec& s) { return ed::addProfile(s, p, &index); }, "Add profile " + p.name);
         profile_ = static_cast<int>(spec.profiles.size());  // the new one, once committed
       }
+      marks::mark("profile: library: " + p.name);
+    }
     ImGui::EndCombo();
   }
+  marks::mark("profile: library");
   ImGui::SameLine();
   if (ImGui::Button("Add overhang")) ImGui::OpenPopup("overhang");
   if (ImGui::IsItemHovered())
@@ -68,6 +73,11 @@ void ExtrusionPanes::drawProfile(const PaneHost& host, const ExtrusionSpec& spec
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
+  }
+  // A profile just taken from the library is in the next frame's spec, not in this one.
+  if (profile_ >= static_cast<int>(spec.profiles.size())) {
+    ImGui::End();
+    return;
   }
   const Profile& p = spec.profiles[profile_];
   if (selectedPoint_ && *selectedPoint_ >= static_cast<int>(p.points.size())) selectedPoint_.reset();

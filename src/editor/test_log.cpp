@@ -27,6 +27,7 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   if (!s.planCorners.empty()) j["plan_corners"] = s.planCorners;
   if (!s.profilePoints.empty()) j["profile_points"] = s.profilePoints;
   if (!s.profile.empty()) j["profile"] = s.profile;
+  if (!s.planEdges.empty()) j["plan_edges"] = s.planEdges;
   j["view"] = s.view;
   if (!s.failed.empty()) j["failed"] = s.failed;
   if (s.activeInView) j["active_in_view"] = *s.activeInView;
@@ -34,6 +35,7 @@ nlohmann::ordered_json stateOf(const SettledFrame& s) {
   if (s.tape)
     j["tape"] = {{"from", s.tape->from}, {"to", s.tape->to}, {"from_snap", s.tape->fromSnap},
                  {"to_snap", s.tape->toSnap}, {"length", s.tape->length}};
+  if (!s.widgets.empty()) j["widgets"] = s.widgets;
   return j;
 }
 

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <array>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ struct SettledFrame {
   // Where the profile pane shows the shown profile's points (window pixels); empty without it.
   std::vector<std::array<float, 2>> profilePoints;
   std::string profile;  // the name of the profile the profile pane shows ("" without it)
+  std::vector<std::array<int, 2>> planEdges;  // the plan pane's selected edges: (loop, edge)
   // The 3D view's rectangle in window pixels: x, y (top left), width, height.
   std::array<float, 4> view{};
   std::vector<std::string> failed;  // the objects whose last build failed (flagged in the list)
@@ -42,6 +44,8 @@ struct SettledFrame {
     double length = 0;
   };
   std::optional<Tape> tape;
+  // Named widgets drawn this frame (editor/widget_marks.h): x0, y0, x1, y1 in window pixels.
+  std::map<std::string, std::array<float, 4>> widgets;
 };
 
 // The line for `s` (one JSON object, no newline).
