@@ -36,8 +36,8 @@ std::vector<HeadLoad> roofLoads(const StoneHouse& house, double coveringWeight, 
 inline constexpr const char* kStoneModelName = "stone extrusion";
 
 // The extrusion's stone model (named kStoneModelName): parameters thickness, courseHeight, blockLength, coveringWeight,
-// density and ties (0 or 1) from the masonry section; the walls coursed, loaded by the roof, on a
-// fixed ground slab. Free by default: thickness (Make It Stand thickens the walls).
+// density, ties (0 or 1), windPressure and windDirection from the masonry section; the walls
+// coursed, loaded by the roof and the wind (loadWind), on a fixed ground slab. Free by default: thickness (Make It Stand thickens the walls).
 ParametricModel stoneModel(const ExtrusionSpec& spec);
 
 }  // namespace corbel::statics

@@ -73,6 +73,29 @@ TEST(StoneExtrusion, HippedRoofLoadsAreTheHandComputedOnes) {
     for (const PointLoad& l : b.pointLoads) EXPECT_EQ(l.force[1], 0.0);
 }
 
+// Wind through the model: blowing towards +y it meets only edge 0's wall, 8 × 3 m less the
+// 1 × 2 m door; towards 45° also edge 3's (6 × 3 m, unpierced), each by cos 45°.
+TEST(StoneExtrusion, WindLoadsTheWallsItMeets) {
+  ExtrusionSpec spec = hippedHouse();
+  spec.masonry->coveringWeight = 0;
+  spec.masonry->windPressure = 500;
+  auto total = [&](double direction) {
+    spec.masonry->windDirection = direction;
+    const ParametricModel model = stoneModel(spec);
+    Vec3 f(0.0);
+    for (const Block& b : model.build(model.parameters).blocks)
+      for (const PointLoad& l : b.pointLoads) f += l.force;
+    return f;
+  };
+  const Vec3 north = total(90);
+  EXPECT_NEAR(north[0], 0.0, 1e-9);
+  EXPECT_NEAR(north[1], 500 * 22.0, 1e-9);
+  EXPECT_EQ(north[2], 0.0);
+  const Vec3 diagonal = total(45);
+  EXPECT_NEAR(diagonal[0], 500 * 18.0 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(diagonal[1], 500 * 22.0 / std::sqrt(2.0), 1e-9);
+}
+
 TEST(StoneExtrusion, RefusesWhatItCannotBuild) {
   ExtrusionSpec e = hippedHouse();
   e.masonry->openings = {{"chimney", OpeningHead::Lintel}};
