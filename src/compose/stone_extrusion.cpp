@@ -136,4 +136,20 @@ ParametricModel stoneModel(const ExtrusionSpec& spec) {
   return model;
 }
 
+StoneWalls stoneWallsAt(const StoneWalls& section, const ParameterSet& values) {
+  StoneWalls m = section;
+  auto take = [&](const char* name, double& out) {
+    if (values.has(name)) out = values[name];
+  };
+  take("thickness", m.thickness);
+  take("courseHeight", m.courseHeight);
+  take("blockLength", m.blockLength);
+  take("coveringWeight", m.coveringWeight);
+  take("density", m.density);
+  take("windPressure", m.windPressure);
+  take("windDirection", m.windDirection);
+  if (values.has("ties")) m.ties = values["ties"] != 0;
+  return m;
+}
+
 }  // namespace corbel::statics

@@ -40,4 +40,10 @@ inline constexpr const char* kStoneModelName = "stone extrusion";
 // coursed, loaded by the roof and the wind (loadWind), on a fixed ground slab. Free by default: thickness (Make It Stand thickens the walls).
 ParametricModel stoneModel(const ExtrusionSpec& spec);
 
+// The masonry section at the model's values: thickness, course height, block length, covering
+// weight, density, ties and wind taken from `values` (those it has), openings kept. What Make
+// It Stand writes back, so its result stays the extrusion the artist keeps editing and is one
+// edit of the Document.
+StoneWalls stoneWallsAt(const StoneWalls& section, const ParameterSet& values);
+
 }  // namespace corbel::statics

@@ -2,6 +2,7 @@
 // computation for a hipped roof, and the shipped stone houses: the one meant to stand stands by
 // the LP, the thin-walled one does not until its roof has ties or its walls are thickened.
 #include "core/error.h"
+#include "core/history.h"
 #include "core/project_io.h"
 #include "statics/analysis.h"
 #include "statics/search.h"
@@ -135,6 +136,41 @@ TEST(StoneExtrusion, ShippedStoneHouseStandsAndTheThinWalledOneNeedsThickerWalls
   ASSERT_EQ(r.status, SearchStatus::Feasible) << r.message;
   EXPECT_GT(r.values["thickness"], thin.parameters["thickness"]);
   EXPECT_TRUE(checkFeasibility(thin.build(r.values)).feasible);
+}
+
+// Make It Stand on the thin-walled house as a project edit: the values found written back
+// into the extrusion's masonry section (stoneWallsAt) and committed as one History step. The
+// project after it stands by the LP, also once saved and read back; one undo restores the
+// section that does not stand.
+TEST(StoneExtrusion, MakeItStandIsOneUndoStepOfTheProjectThatStands) {
+  const std::string name = "Stone house, thin walls";
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  History history(p.document);
+  const DocObject* before = history.current().findByName(name);
+  ASSERT_NE(before, nullptr);
+  const ExtrusionSpec thin = std::get<ExtrusionSpec>(before->spec);
+  const ParametricModel model = stoneModel(thin);
+  const SearchResult r = searchParameters(model, model.suggestedFree, SearchOptions{});
+  ASSERT_EQ(r.status, SearchStatus::Feasible) << r.message;
+
+  Document next = history.current();
+  ExtrusionSpec& spec = std::get<ExtrusionSpec>(next.find(before->id)->spec);
+  spec.masonry = stoneWallsAt(*spec.masonry, r.values);
+  history.commit(next, "Make It Stand");
+  EXPECT_EQ(history.size(), 2u);
+  auto standsInProject = [&](const Document& d) {
+    const ParametricModel m = stoneModel(std::get<ExtrusionSpec>(d.findByName(name)->spec));
+    return checkFeasibility(m.build(m.parameters)).feasible;
+  };
+  const ExtrusionSpec& after = std::get<ExtrusionSpec>(history.current().findByName(name)->spec);
+  EXPECT_GT(after.masonry->thickness, thin.masonry->thickness);
+  EXPECT_EQ(after.masonry->openings, thin.masonry->openings);
+  EXPECT_EQ(after.profiles, thin.profiles);  // still the same extrusion
+  EXPECT_TRUE(standsInProject(history.current()));
+  EXPECT_TRUE(standsInProject(parseProject(serializeProject(history.current())).document));
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(std::get<ExtrusionSpec>(history.current().findByName(name)->spec), thin);
+  EXPECT_FALSE(standsInProject(history.current()));
 }
 
 }  // namespace
