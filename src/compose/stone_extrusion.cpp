@@ -112,6 +112,8 @@ ParametricModel stoneModel(const ExtrusionSpec& spec) {
   add("coveringWeight", m.coveringWeight, 0.0, 1e6, true, "roof covering weight, N/m²");
   add("density", m.density, 1.0, 1e5, true, "wall stone density, kg/m³");
   add("ties", m.ties ? 1.0 : 0.0, 0.0, 1.0, false, "1: tie beams, no roof thrust");
+  add("windPressure", m.windPressure, 0.0, 1e5, true, "wind pressure on the walls, N/m²");
+  add("windDirection", m.windDirection, -360.0, 360.0, true, "the way the wind blows, degrees from +x");
   model.build = [house](const ParameterSet& p) {
     CoursingSpec s = house.walls;
     s.thickness = p["thickness"];
@@ -120,6 +122,8 @@ ParametricModel stoneModel(const ExtrusionSpec& spec) {
     s.density = p["density"];
     CoursedWalls w = courseWalls(s);
     loadWallHeads(s, w, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
+    const double towards = p["windDirection"] * std::numbers::pi / 180;
+    loadWind(s, w, p["windPressure"], Vec2(std::cos(towards), std::sin(towards)));
     BBox box;
     for (const Vec2& q : s.plan) box.add(Vec3(q[0], q[1], 0.0));
     Assembly as;
@@ -130,6 +134,22 @@ ParametricModel stoneModel(const ExtrusionSpec& spec) {
   };
   model.suggestedFree = {{"thickness", m.thickness, std::min(shortest / 3, 3 * m.thickness)}};
   return model;
+}
+
+StoneWalls stoneWallsAt(const StoneWalls& section, const ParameterSet& values) {
+  StoneWalls m = section;
+  auto take = [&](const char* name, double& out) {
+    if (values.has(name)) out = values[name];
+  };
+  take("thickness", m.thickness);
+  take("courseHeight", m.courseHeight);
+  take("blockLength", m.blockLength);
+  take("coveringWeight", m.coveringWeight);
+  take("density", m.density);
+  take("windPressure", m.windPressure);
+  take("windDirection", m.windDirection);
+  if (values.has("ties")) m.ties = values["ties"] != 0;
+  return m;
 }
 
 }  // namespace corbel::statics

@@ -36,8 +36,14 @@ std::vector<HeadLoad> roofLoads(const StoneHouse& house, double coveringWeight, 
 inline constexpr const char* kStoneModelName = "stone extrusion";
 
 // The extrusion's stone model (named kStoneModelName): parameters thickness, courseHeight, blockLength, coveringWeight,
-// density and ties (0 or 1) from the masonry section; the walls coursed, loaded by the roof, on a
-// fixed ground slab. Free by default: thickness (Make It Stand thickens the walls).
+// density, ties (0 or 1), windPressure and windDirection from the masonry section; the walls
+// coursed, loaded by the roof and the wind (loadWind), on a fixed ground slab. Free by default: thickness (Make It Stand thickens the walls).
 ParametricModel stoneModel(const ExtrusionSpec& spec);
+
+// The masonry section at the model's values: thickness, course height, block length, covering
+// weight, density, ties and wind taken from `values` (those it has), openings kept. What Make
+// It Stand writes back, so its result stays the extrusion the artist keeps editing and is one
+// edit of the Document.
+StoneWalls stoneWallsAt(const StoneWalls& section, const ParameterSet& values);
 
 }  // namespace corbel::statics

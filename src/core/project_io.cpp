@@ -492,6 +492,10 @@ ojson stoneToJson(const StoneWalls& m) {
   j["density"] = m.density;
   j["covering_weight"] = m.coveringWeight;
   j["ties"] = m.ties;
+  if (m.windPressure != 0 || m.windDirection != 0) {
+    j["wind_pressure"] = m.windPressure;
+    j["wind_direction"] = m.windDirection;
+  }
   if (!m.openings.empty()) {
     ojson o = ojson::object();
     for (const StoneOpening& op : m.openings) o[op.anchor] = openingHeadName(op.head);
@@ -625,7 +629,8 @@ ojson extrusionToJson(const ExtrusionSpec& e) {
 
 StoneWalls stoneFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"course_height", "block_length", "thickness", "density", "covering_weight", "ties", "openings"}))
+  for (auto& k : r.unknownKeys({"course_height", "block_length", "thickness", "density", "covering_weight", "ties", "wind_pressure",
+                                    "wind_direction", "openings"}))
     warnings.push_back(k + ": unknown key kept");
   StoneWalls m;
   auto length = [&](const char* key, double& out) {
@@ -643,6 +648,8 @@ StoneWalls stoneFromJson(const JsonReader& r, std::vector<std::string>& warnings
   }
   if (auto v = r.find("covering_weight")) m.coveringWeight = v->number(0.0, 1e6);
   if (auto v = r.find("ties")) m.ties = v->boolean();
+  if (auto v = r.find("wind_pressure")) m.windPressure = v->number(0.0, 1e5);
+  if (auto v = r.find("wind_direction")) m.windDirection = v->number(-360.0, 360.0);
   if (auto o = r.find("openings")) {
     o->expectObject();
     if (o->raw().size() > limits::kMaxSteps) o->fail("more openings than the limit of " + std::to_string(limits::kMaxSteps));
@@ -651,7 +658,7 @@ StoneWalls stoneFromJson(const JsonReader& r, std::vector<std::string>& warnings
       StoneOpening op;
       op.anchor = it.key();
       const std::string name = v.string(32);
-      if (!openingHeadFromName(name, op.head)) v.fail("expected \"lintel\" or \"flat_arch\", found \"" + name + "\"");
+      if (!openingHeadFromName(name, op.head)) v.fail("expected \"lintel\", \"flat_arch\" or \"semicircular_arch\", found \"" + name + "\"");
       m.openings.push_back(std::move(op));
     }
   }

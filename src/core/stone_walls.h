@@ -7,8 +7,9 @@
 
 namespace corbel {
 
-// What spans an opening: one lintel stone, or a flat arch of voussoirs (a jack arch).
-enum class OpeningHead { Lintel, FlatArch };
+// What spans an opening: one lintel stone, a flat arch of voussoirs (a jack arch), or a
+// semicircular arch of voussoirs springing from the opening's top corners.
+enum class OpeningHead { Lintel, FlatArch, SemicircularArch };
 
 // The head over the opening of one mesh anchor, by the anchor's name.
 struct StoneOpening {
@@ -24,11 +25,13 @@ struct StoneWalls {
   double density = 2400.0;       // kg/m³ of the wall stone
   double coveringWeight = 600.0; // N per m² of roof surface (slates, battens, rafters)
   bool ties = false;             // tie beams: the roof pushes no thrust onto the wall heads
+  double windPressure = 0.0;     // N/m² on the walls' outer faces that meet the wind; 0: no wind
+  double windDirection = 0.0;    // degrees, the way the wind blows, counter-clockwise from +x
   std::vector<StoneOpening> openings;  // heads other than a lintel, per anchor name
   bool operator==(const StoneWalls&) const = default;
 };
 
-// "lintel", "flat_arch"; openingHeadFromName is false for any other name.
+// "lintel", "flat_arch", "semicircular_arch"; openingHeadFromName is false for any other name.
 const char* openingHeadName(OpeningHead head);
 bool openingHeadFromName(const std::string& name, OpeningHead& head);
 

@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
 #include <string>
 
 namespace corbel::statics {
@@ -29,6 +32,118 @@ struct Cut {
   double lo() const { return std::min(bottom, top); }
   double hi() const { return std::max(bottom, top); }
 };
+
+using Poly2 = std::vector<Vec2>;
+
+double signedArea(const Poly2& p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) a += cross2(p[i], p[(i + 1) % p.size()]);
+  return a / 2;
+}
+
+// The part of a convex polygon where a·p ≤ c (Sutherland–Hodgman against one line).
+Poly2 clipped(const Poly2& poly, const Vec2& a, double c) {
+  Poly2 out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 &p = poly[i], &q = poly[(i + 1) % poly.size()];
+    const double fp = dot(a, p) - c, fq = dot(a, q) - c;
+    if (fp <= 0) out.push_back(p);
+    if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) out.push_back(p + (q - p) * (fp / (fp - fq)));
+  }
+  return out;
+}
+
+// Drops repeated points and points on the line through their neighbours (within `tol`).
+Poly2 cleaned(Poly2 p, double tol) {
+  for (bool changed = true; changed && p.size() >= 3;) {
+    changed = false;
+    for (std::size_t i = 0; i < p.size() && p.size() >= 3; ++i) {
+      const Vec2 &a = p[(i + p.size() - 1) % p.size()], &b = p[i], &c = p[(i + 1) % p.size()];
+      const double len = (c - a).norm();
+      if ((b - a).norm() <= tol || std::abs(cross2(b - a, c - a)) <= tol * std::max(len, tol)) {
+        p.erase(p.begin() + std::ptrdiff_t(i));
+        changed = true;
+      }
+    }
+  }
+  return p;
+}
+
+// The convex hull, counter-clockwise (Andrew's monotone chain), points on its edges dropped.
+Poly2 hullOf(Poly2 pts, double tol) {
+  std::sort(pts.begin(), pts.end(), [](const Vec2& a, const Vec2& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
+  Poly2 h(2 * pts.size());
+  std::size_t k = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t start = k;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const Vec2& p = pass == 0 ? pts[i] : pts[pts.size() - 1 - i];
+      while (k >= start + 2 && cross2(h[k - 1] - h[k - 2], p - h[k - 2]) <= 0) --k;
+      h[k++] = p;
+    }
+    --k;  // the last point starts the other chain
+  }
+  h.resize(k);
+  return cleaned(h, tol);
+}
+
+// A semicircular arch over an opening, in the wall face's coordinates (u along the edge, z up):
+// the voussoirs' joints and the arch's zone of courses [first, first + courses).
+struct ArchHead {
+  Vec2 centre{0.0, 0.0};
+  Poly2 inner, outer;  // joint k's intrados and extrados points, k = 0..N
+  int first = 0, courses = 0;
+  double lo = 0.0, hi = 0.0;  // the zone's sides (m along the face)
+};
+
+ArchHead archHead(double from, double to, double springing, int headCourse, double ch, double depth, double bearing) {
+  ArchHead a;
+  const double ri = (to - from) / 2, ro = ri + depth, mid = (from + to) / 2;
+  a.centre = Vec2(mid, springing);
+  int n = std::max(5, int(std::lround(std::numbers::pi * (ri + ro) / 2 / (0.75 * ch))));
+  if (n % 2 == 0) ++n;
+  for (int k = 0; k <= n; ++k) {
+    const double th = std::numbers::pi * k / n;
+    const double cs = k == 0 ? 1.0 : k == n ? -1.0 : std::cos(th), sn = (k == 0 || k == n) ? 0.0 : std::sin(th);
+    a.inner.push_back(a.centre + Vec2(ri * cs, ri * sn));
+    a.outer.push_back(a.centre + Vec2(ro * cs, ro * sn));
+  }
+  a.first = headCourse;
+  a.courses = int(std::ceil((ro + ch / 4) / ch - 1e-9));
+  a.lo = mid - ro - bearing;
+  a.hi = mid + ro + bearing;
+  return a;
+}
+
+// The spandrel pieces of the arch's zone in the course [z0, z1] (z from the wall's foot): the
+// course's slab within the zone, outside the extrados, cut along each joint's ray; runs of
+// neighbouring pieces whose union is convex are joined.
+std::vector<Poly2> spandrelPieces(const ArchHead& a, double z0, double z1, double tol) {
+  std::vector<Poly2> pieces;
+  const std::size_t n = a.outer.size() - 1;
+  const double tiny = tol * (a.hi - a.lo + z1 - z0);
+  for (std::size_t k = 0; k < n; ++k) {
+    Poly2 p = {Vec2(a.lo, z0), Vec2(a.hi, z0), Vec2(a.hi, z1), Vec2(a.lo, z1)};
+    const Vec2 d0 = a.outer[k] - a.centre, d1 = a.outer[k + 1] - a.centre, chord = a.outer[k + 1] - a.outer[k];
+    p = clipped(p, -leftNormal(d0), -dot(leftNormal(d0), a.centre));  // left of joint k's ray
+    p = clipped(p, leftNormal(d1), dot(leftNormal(d1), a.centre));    // right of joint k + 1's
+    p = clipped(p, leftNormal(chord), dot(leftNormal(chord), a.outer[k]));  // beyond the extrados
+    p = cleaned(p, tol);
+    if (p.size() < 3 || signedArea(p) <= tiny) continue;
+    if (!pieces.empty()) {
+      Poly2 both = pieces.back();
+      both.insert(both.end(), p.begin(), p.end());
+      const Poly2 h = hullOf(both, tol);
+      const double sum = signedArea(pieces.back()) + signedArea(p);
+      if (std::abs(signedArea(h) - sum) <= 1e-9 * sum) {
+        pieces.back() = h;
+        continue;
+      }
+    }
+    pieces.push_back(std::move(p));
+  }
+  return pieces;
+}
 
 }  // namespace
 
@@ -85,7 +200,10 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
   struct Placed {
     const WallOpening* o;
     int sill, head;
-    std::vector<Cut> headCuts;  // the cuts of the head course, left to right
+    std::vector<Cut> headCuts;  // the cuts of the head course, left to right (lintel, flat arch)
+    int top = 0;                // the last course its head occupies
+    double lo = 0.0, hi = 0.0;  // how far along the face its head reaches
+    std::optional<ArchHead> arch;
   };
   std::vector<Placed> placed;
   for (const WallOpening& o : spec.openings) {
@@ -94,12 +212,22 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
     if (!std::isfinite(o.from) || !std::isfinite(o.to) || !(o.to > o.from) || !std::isfinite(o.bottom) ||
         !std::isfinite(o.top) || !(o.top > o.bottom))
       throw Error(who + ": needs from < to and bottom < top");
-    Placed p{&o, int(std::lround(o.bottom / ch)), int(std::lround(o.top / ch)), {}};
+    Placed p{&o, int(std::lround(o.bottom / ch)), int(std::lround(o.top / ch)), {}, 0, 0.0, 0.0, std::nullopt};
     p.sill = std::max(p.sill, 0);
     if (p.head <= p.sill) p.head = p.sill + 1;
     if (p.head >= courses)
       throw Error(who + ": its head reaches the wall head (no course above it for a lintel or arch)");
-    if (o.head == OpeningHead::Lintel) {
+    if (o.head == OpeningHead::SemicircularArch) {
+      const double depth = o.archDepth > 0 ? o.archDepth : ch;
+      if (!std::isfinite(depth)) throw Error(who + ": the arch's depth is not a number");
+      p.arch = archHead(o.from, o.to, p.head * ch, p.head, ch, depth, bearing);
+      p.top = p.head + p.arch->courses - 1;
+      p.lo = p.arch->lo;
+      p.hi = p.arch->hi;
+      if (p.top >= courses)
+        throw Error(who + ": its semicircular arch rises above the wall head (" + std::to_string(p.arch->courses) +
+                    " courses from its springing, " + std::to_string(courses - p.head) + " left)");
+    } else if (o.head == OpeningHead::Lintel) {
       p.headCuts = {{o.from - bearing, o.from - bearing}, {o.to + bearing, o.to + bearing}};
     } else {
       // Joints through the apex C of the equilateral triangle under the span.
@@ -111,15 +239,18 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         p.headCuts.push_back({x, mid + (x - mid) * (depth + ch) / depth});
       }
     }
+    if (!p.arch) {
+      p.top = p.head;
+      p.lo = p.headCuts.front().lo();
+      p.hi = p.headCuts.back().hi();
+    }
     const EdgeFrame& f = edges[std::size_t(o.edge)];
-    if (p.headCuts.front().lo() < f.startSquare - tol || p.headCuts.back().hi() > f.length - f.endSquare + tol)
+    if (p.lo < f.startSquare - tol || p.hi > f.length - f.endSquare + tol)
       throw Error(who + ": the opening and its " + (o.head == OpeningHead::Lintel ? "lintel's bearings" : "arch") +
                   " leave its wall or reach a corner's square");
     for (const Placed& q : placed) {
       if (q.o->edge != o.edge) continue;
-      const double lo = p.headCuts.front().lo(), hi = p.headCuts.back().hi();
-      const double qlo = q.headCuts.front().lo(), qhi = q.headCuts.back().hi();
-      if (lo < qhi && qlo < hi && p.sill <= q.head && q.sill <= p.head)
+      if (p.lo < q.hi && q.lo < p.hi && p.sill <= q.top && q.sill <= p.top)
         throw Error(who + " overlaps opening \"" + q.o->name + "\" (with their heads)");
     }
     placed.push_back(std::move(p));
@@ -147,6 +278,11 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
           cuts.push_back({p.o->from, p.o->from});
           cuts.push_back({p.o->to, p.o->to});
           spans.push_back({p.o->from, p.o->to, true});
+        } else if (p.arch && c >= p.head && c <= p.top) {
+          // The arch's zone: its voussoirs and spandrel pieces are laid below.
+          cuts.push_back({p.lo, p.lo});
+          cuts.push_back({p.hi, p.hi});
+          spans.push_back({p.lo, p.hi, true});
         } else if (c == p.head) {
           cuts.insert(cuts.end(), p.headCuts.begin(), p.headCuts.end());
           spans.push_back({p.headCuts.front().lo(), p.headCuts.back().hi(), false});
@@ -224,6 +360,35 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         out.blocks.push_back(prismBlock(name, face, Vec3(f.n[0] * t, f.n[1] * t, 0.0), spec.density));
         if (c == courses - 1) out.heads.push_back({index, int(e), l.top, r.top});
       }
+      // Semicircular arches whose zone this course crosses: the voussoirs (once, in the
+      // springing course) and the course's spandrel pieces.
+      const Vec3 across(f.n[0] * t, f.n[1] * t, 0.0);
+      auto prism = [&](const std::string& name, const Poly2& poly) {
+        std::vector<Vec3> face;
+        for (const Vec2& q : poly) {
+          const Vec2 at = f.at(q[0], 0.0);
+          face.emplace_back(at[0], at[1], spec.base + q[1]);
+        }
+        out.blocks.push_back(prismBlock(name, face, across, spec.density));
+      };
+      for (const Placed& p : placed) {
+        if (std::size_t(p.o->edge) != e || !p.arch || c < p.head || c > p.top) continue;
+        const ArchHead& a = *p.arch;
+        const std::string prefix = "wall " + std::to_string(e) + " arch \"" + p.o->name + "\" ";
+        if (c == p.head)
+          for (std::size_t k = 0; k + 1 < a.inner.size(); ++k)
+            prism(prefix + "voussoir " + std::to_string(k), {a.inner[k], a.outer[k], a.outer[k + 1], a.inner[k + 1]});
+        const std::vector<Poly2> pieces = spandrelPieces(a, c * ch, (c + 1) * ch, tol);
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+          const int index = int(out.blocks.size());
+          prism(prefix + "course " + std::to_string(c) + " spandrel " + std::to_string(k), pieces[k]);
+          if (c != courses - 1) continue;
+          double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+          for (const Vec2& q : pieces[k])
+            if (std::abs(q[1] - (c + 1) * ch) <= tol) lo = std::min(lo, q[0]), hi = std::max(hi, q[0]);
+          if (hi - lo > tol) out.heads.push_back({index, int(e), lo, hi});
+        }
+      }
     }
   }
   return out;
@@ -246,6 +411,52 @@ void loadWallHeads(const CoursingSpec& spec, CoursedWalls& walls, const std::vec
     l.at = Vec3(at[0], at[1], top);
     l.force = Vec3(-n[0] * load.out * len, -n[1] * load.out * len, -load.down * len);
     walls.blocks[std::size_t(h.block)].pointLoads.push_back(l);
+  }
+}
+
+void loadWind(const CoursingSpec& spec, CoursedWalls& walls, double pressure, const Vec2& towards) {
+  if (!std::isfinite(pressure) || pressure < 0) throw Error("coursing: the wind pressure must be a number ≥ 0");
+  if (!(towards.norm() > 0) || !std::isfinite(towards.norm())) throw Error("coursing: the wind has no direction");
+  if (pressure == 0) return;
+  const Vec2 w = towards / towards.norm();
+  const std::size_t np = spec.plan.size(), ne = spec.closed ? np : np - 1;
+  BBox box;
+  for (const Vec2& p : spec.plan) box.add(Vec3(p[0], p[1], 0.0));
+  const double tol = 1e-9 * std::max(1.0, box.diagonal() + spec.height);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const Vec2 p0 = spec.plan[e], v = spec.plan[(e + 1) % np] - p0;
+    const double length = v.norm();
+    const Vec2 d = v / length, o = -leftNormal(d);  // the outer face's outward normal
+    const double meets = -dot(o, w);
+    if (meets <= 1e-12) continue;
+    for (Block& b : walls.blocks)
+      for (const auto& face : b.faces) {
+        std::vector<Vec3> poly;
+        bool onFace = true;
+        for (int i : face) {
+          const Vec3& q = b.vertices[std::size_t(i)];
+          const Vec2 r = Vec2(q[0], q[1]) - p0;
+          const double u = dot(r, d);
+          onFace = onFace && std::abs(dot(r, o)) <= tol && u >= -tol && u <= length + tol;
+          poly.push_back(q);
+        }
+        if (!onFace) continue;
+        const Vec3 normal = newellNormal(poly);  // twice the area, outwards
+        const double area = normal.norm() / 2;
+        if (!(area > 0) || dot(normal / (2 * area), Vec3(o[0], o[1], 0.0)) < 1 - 1e-9) continue;
+        // Area centroid by a fan of triangles from the first vertex.
+        Vec3 c(0.0);
+        double total = 0;
+        for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+          const double a = cross(poly[k] - poly[0], poly[k + 1] - poly[0]).norm() / 2;
+          c += (poly[0] + poly[k] + poly[k + 1]) * (a / 3);
+          total += a;
+        }
+        PointLoad l;
+        l.at = c / total;
+        l.force = Vec3(-o[0], -o[1], 0.0) * (pressure * area * meets);
+        b.pointLoads.push_back(l);
+      }
   }
 }
 

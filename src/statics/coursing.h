@@ -18,6 +18,7 @@ struct WallOpening {
   double from = 0.0, to = 1.0;   // m along the edge's outer face, from its first corner
   double bottom = 0.0, top = 1.0;  // m above the wall's foot; snapped to the nearest course joints
   OpeningHead head = OpeningHead::Lintel;
+  double archDepth = 0.0;        // m, a semicircular arch's ring depth; 0: one course height
 };
 
 struct CoursingSpec {
@@ -59,6 +60,12 @@ struct CoursedWalls {
 // bearing each side in the course over the opening as one stone; a flat arch fills the opening's
 // width in that course with an odd number of voussoirs whose joints meet below the opening (at
 // the apex of the equilateral triangle under it), the two outer joints being its skewbacks.
+// A semicircular arch springs from the opening's top corners: the voussoirs of the arch
+// template (arch.h, radial joints at kπ/N, chords at the intrados radius r = half the width and
+// the extrados radius r + depth), N odd; its spandrels, from the arch out to half a block
+// beyond the extrados on each side and up to a course joint at least a quarter course above
+// it, are cut in their courses along the voussoirs' joints carried on outwards, neighbouring
+// pieces joined wherever the join is convex.
 // Throws corbel::Error for bad numbers, a reflex corner, openings that leave their wall, reach
 // a corner's square or the wall head, or overlap.
 CoursedWalls courseWalls(const CoursingSpec& spec);
@@ -72,5 +79,11 @@ struct HeadLoad {
 // Adds each edge's head load to the top-course blocks as point loads on the wall's centre
 // line at the head, each block taking its span's share. `perEdge` has one entry per edge.
 void loadWallHeads(const CoursingSpec& spec, CoursedWalls& walls, const std::vector<HeadLoad>& perEdge);
+
+// Wind: a horizontal pressure (N/m²) blowing along the plan direction `towards` onto the walls'
+// outer faces. Each block face on an edge's outer face that the wind meets (outward normal o
+// with o·ŵ < 0) takes pressure × its area × (−o·ŵ), pushing along −o, at the face's area
+// centroid. Suction on the lee side, wind on the roof and through openings are left out.
+void loadWind(const CoursingSpec& spec, CoursedWalls& walls, double pressure, const Vec2& towards);
 
 }  // namespace corbel::statics

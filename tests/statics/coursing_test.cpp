@@ -4,9 +4,11 @@
 // the existing wall template (wall.h) for a straight wall with openings.
 #include "core/error.h"
 #include "statics/analysis.h"
+#include "statics/arch.h"
 #include "statics/builder.h"
 #include "statics/coursing.h"
 #include "statics/shapes.h"
+#include "statics/thresholds.h"
 #include "statics/tolerances.h"
 #include "statics/wall.h"
 
@@ -64,6 +66,25 @@ CoursingSpec house() {
   s.openings = {{"door", 0, 2.0, 3.0, 0.0, 2.0, OpeningHead::Lintel},
                 {"window", 1, 1.5, 2.5, 0.8, 2.0, OpeningHead::FlatArch}};
   return s;
+}
+
+// Inside the regular N-gon inscribed in the circle of radius r about c, above its diameter
+// (the opening under a semicircular arch of N chord voussoirs): in the sector of angle π/N
+// holding p, nearer c than that sector's chord.
+bool underArch(const Vec2& p, const Vec2& c, double r, int n) {
+  const Vec2 q = p - c;
+  if (q[1] <= 0) return false;
+  const double step = std::numbers::pi / n;
+  const double phi = std::atan2(q[1], q[0]);
+  const double midAngle = (std::floor(phi / step) + 0.5) * step;
+  return q[0] * std::cos(midAngle) + q[1] * std::sin(midAngle) < r * std::cos(step / 2);
+}
+
+std::vector<const Block*> voussoirsOf(const CoursedWalls& w) {
+  std::vector<const Block*> v;
+  for (const Block& b : w.blocks)
+    if (b.name.find("voussoir") != std::string::npos) v.push_back(&b);
+  return v;
 }
 
 TEST(Coursing, BlocksTileTheWallsOfARectangularHouse) {
@@ -151,6 +172,49 @@ TEST(Coursing, FreeStandingWallTipsAtTheHandComputedHeadLoad) {
   EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible);
 }
 
+// Wind of pressure p on the face of a free-standing wall (length L, height h, thickness t,
+// weight W) pushes p·L·h at mid-height. About the leeward foot its moment p·L·h²/2 overturns the
+// weight's W·t/2 once p passes W·t / (L·h²): the hand moment of the head-load case above with
+// the resultant at h/2 (and the base joint governs: above height z the ratio grows as h/(h − z)).
+TEST(Coursing, WindTipsAFreeStandingWallAtTheHandComputedPressure) {
+  CoursingSpec s;
+  s.plan = {Vec2(0, 0), Vec2(4, 0)};  // the outer face at y = 0 faces −y
+  s.closed = false;
+  s.height = 3.0;
+  s.courseHeight = 0.5;
+  s.blockLength = 0.6;
+  s.thickness = 0.3;
+  const double W = s.density * 9.81 * 4.0 * 0.3 * 3.0;
+  const double critical = W * s.thickness / (4.0 * s.height * s.height);
+  auto windy = [&](double p, const Vec2& towards) {
+    CoursedWalls w = courseWalls(s);
+    loadWind(s, w, p, towards);
+    return w;
+  };
+  for (const auto& [factor, expectStands] : {std::pair{0.98, true}, {1.02, false}})
+    EXPECT_EQ(checkFeasibility(onGround(windy(factor * critical, Vec2(0, 1)).blocks)).feasible, expectStands) << factor;
+  // The whole face takes p × its area; a wind along the wall, or onto its other side (not an
+  // outer face), takes nothing.
+  auto total = [](const CoursedWalls& w) {
+    Vec3 f(0.0);
+    for (const Block& b : w.blocks)
+      for (const PointLoad& l : b.pointLoads) f += l.force;
+    return f;
+  };
+  EXPECT_NEAR(total(windy(100, Vec2(0, 1)))[1], 100 * 12.0, 1e-9);
+  EXPECT_NEAR(total(windy(100, Vec2(0, 2)))[0], 0.0, 1e-12);
+  EXPECT_NEAR(total(windy(100, Vec2(1, 1)))[1], 100 * 12.0 / std::sqrt(2.0), 1e-9);
+  EXPECT_EQ(total(windy(100, Vec2(1, 0))).norm(), 0.0);
+  EXPECT_EQ(total(windy(100, Vec2(0, -1))).norm(), 0.0);
+  // An opening takes its area out of the face.
+  s.openings = {{"window", 0, 1.0, 2.0, 0.5, 1.0, OpeningHead::SemicircularArch}};
+  const CoursedWalls arched = windy(100, Vec2(0, 1));
+  const int n = int(voussoirsOf(arched).size());
+  EXPECT_NEAR(total(arched)[1], 100 * (12.0 - 0.5 - 0.5 * n * 0.25 * std::sin(std::numbers::pi / n)), 1e-9);
+  EXPECT_THROW(windy(-1, Vec2(0, 1)), Error);
+  EXPECT_THROW(windy(1, Vec2(0, 0)), Error);
+}
+
 // A straight open wall with a window and a door is the wall template's wall, block for block.
 TEST(Coursing, StraightWallWithLintelsIsTheWallTemplate) {
   WallSpec t;
@@ -195,6 +259,124 @@ TEST(Coursing, StraightWallWithLintelsIsTheWallTemplate) {
   EXPECT_NEAR(rb.yNormalised, ra.yNormalised, 1e-6 * ra.yNormalised);
 }
 
+// A rectangular house with a semicircular-arched window in its long wall and a door under a
+// lintel: the blocks fill the ring of walls less the openings, each opening a rectangle up to
+// the springing and, above it, the N-gon inscribed in the intrados circle (N = the voussoirs).
+// Springing at 1.6 m the arch's courses end below the wall head; at 2.0 m they reach it, and
+// the top course's spandrels carry their share of the head.
+TEST(Coursing, SemicircularArchBlocksTileTheWall) {
+  for (const double springing : {1.6, 2.0}) {
+    SCOPED_TRACE(springing);
+    CoursingSpec s = house();
+    s.openings = {{"door", 0, 0.9, 1.7, 0.0, 2.0, OpeningHead::Lintel},
+                  {"arched", 0, 3.0, 4.2, springing - 0.8, springing, OpeningHead::SemicircularArch}};
+    const CoursedWalls w = courseWalls(s);
+    const std::vector<const Block*> vs = voussoirsOf(w);
+    const int n = int(vs.size());
+    ASSERT_GE(n, 5);
+    EXPECT_EQ(n % 2, 1);
+    const double r = 0.6;
+    const Vec2 centre(3.6, springing);
+    const double polygon = 0.5 * n * r * r * std::sin(std::numbers::pi / n);
+    const double expected = 9.0 * 3.2 - (0.8 * 2.0 + 1.2 * 0.8 + polygon) * 0.5;
+    EXPECT_NEAR(volumeOf(w.blocks), expected, 1e-9);
+    std::vector<BBox> boxes;
+    for (const Block& b : w.blocks) {
+      BBox box;
+      for (const Vec3& v : b.vertices) box.add(v);
+      boxes.push_back(box);
+    }
+    int wrong = 0, samples = 0;
+    for (double x = -0.2 + 0.0137; x < 6.2; x += 0.0431)
+      for (double y = -0.2 + 0.0091; y < 4.2; y += 0.0993)
+        for (double z = 0.0113; z < 3.2; z += 0.0377) {
+          const bool inRing = x > 0 && x < 6 && y > 0 && y < 4 && !(x > 0.5 && x < 5.5 && y > 0.5 && y < 3.5);
+          const bool front = y < 0.5;
+          const bool inDoor = front && x > 0.9 && x < 1.7 && z < 2.0;
+          const bool inArched = front && ((x > 3.0 && x < 4.2 && z > springing - 0.8 && z < springing) ||
+                                          underArch(Vec2(x, z), centre, r, n));
+          const Vec3 p(x, y, z);
+          int count = 0;
+          for (std::size_t i = 0; i < w.blocks.size(); ++i)
+            if (within(boxes[i], p) && inside(w.blocks[i], p)) ++count;
+          wrong += count != ((inRing && !inDoor && !inArched) ? 1 : 0);
+          ++samples;
+        }
+    EXPECT_EQ(wrong, 0) << "of " << samples << " samples";
+    std::vector<double> covered(4, 0.0);
+    for (const HeadSpan& h : w.heads) covered[std::size_t(h.edge)] += h.to - h.from;
+    EXPECT_NEAR(covered[0], 6.0, 1e-12);
+    EXPECT_NEAR(covered[1], 4.0, 1e-12);
+    const Assembly as = onGround(w.blocks);
+    EXPECT_TRUE(checkFeasibility(as).feasible);
+    EXPECT_TRUE(analyse(as).feasible);
+  }
+}
+
+// The arch over an opening is the arch template's (arch.h) block for block: N voussoirs of
+// centreline radius R = r + d/2 and thickness d, d the ring's depth. So on its springings alone
+// it stands exactly where the template does: above the template's least thickness for N, found
+// by bisection (about 0.11 R for N near 11), and not below it.
+TEST(Coursing, SemicircularArchIsTheArchTemplateAndStandsWhereItDoes) {
+  auto wallWith = [](double depth) {
+    CoursingSpec s;
+    s.plan = {Vec2(0, 0), Vec2(6, 0)};
+    s.closed = false;
+    s.height = 4.0;
+    s.courseHeight = 0.4;
+    s.blockLength = 0.8;
+    s.thickness = 0.4;
+    WallOpening o{"arched", 0, 2.0, 4.0, 0.0, 1.6, OpeningHead::SemicircularArch};
+    o.archDepth = depth;
+    s.openings = {o};
+    return s;
+  };
+  const double ri = 1.0, springing = 1.6;
+  auto ringAlone = [&](const CoursedWalls& w) {
+    std::vector<Block> blocks;
+    for (const Block* b : voussoirsOf(w)) blocks.push_back(*b);
+    blocks.push_back(boxBlock("ground", Vec3(0, -1, springing - 1), Vec3(6, 1, springing), 1.0, true));
+    Assembly as;
+    as.blocks = std::move(blocks);
+    return as;
+  };
+  // The template's least t/R for the voussoir count the wall gives a ring near that ratio.
+  const CoursedWalls probe = courseWalls(wallWith(0.12));
+  const int n = int(voussoirsOf(probe).size());
+  ArchSpec unit;
+  unit.blocks = n;
+  unit.radius = 1.0;
+  const double least = minimumArchThickness(unit, {}, 1e-5);
+  EXPECT_GT(least, 0.09);
+  EXPECT_LT(least, 0.13);
+  for (const auto& [factor, stands] : {std::pair{0.95, false}, {1.05, true}}) {
+    const double ratio = factor * least;  // d / (ri + d/2)
+    const double depth = ratio * ri / (1 - ratio / 2);
+    const CoursingSpec s = wallWith(depth);
+    const CoursedWalls w = courseWalls(s);
+    const std::vector<const Block*> vs = voussoirsOf(w);
+    ASSERT_EQ(int(vs.size()), n) << factor;
+    ArchSpec t = unit;
+    t.radius = ri + depth / 2;
+    t.thickness = depth;
+    t.depth = s.thickness;
+    const std::vector<Block> expected = placed(semicircularArchBlocks(t), Vec3(3.0, s.thickness / 2, springing));
+    for (std::size_t k = 0; k < vs.size(); ++k) {
+      ASSERT_EQ(vs[k]->vertices.size(), expected[k].vertices.size());
+      double far = 0;
+      for (const Vec3& v : vs[k]->vertices) {
+        double nearest = 1e9;
+        for (const Vec3& e : expected[k].vertices) nearest = std::min(nearest, (v - e).norm());
+        far = std::max(far, nearest);
+      }
+      EXPECT_LT(far, 1e-12) << vs[k]->name;
+    }
+    EXPECT_EQ(checkFeasibility(ringAlone(w)).feasible, stands) << factor;
+    // In its wall, under the spandrels and the courses above, it stands either way.
+    EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible) << factor;
+  }
+}
+
 TEST(Coursing, RefusesWhatCannotBeCoursed) {
   CoursingSpec s = house();
   s.plan = {Vec2(0, 0), Vec2(6, 0), Vec2(6, 4), Vec2(3, 2), Vec2(0, 4)};  // reflex corner at (3, 2)
@@ -211,6 +393,13 @@ TEST(Coursing, RefusesWhatCannotBeCoursed) {
   EXPECT_THROW(courseWalls(s), Error);
   s = house();
   s.thickness = -1;
+  EXPECT_THROW(courseWalls(s), Error);
+  s = house();
+  s.openings[1].head = OpeningHead::SemicircularArch;  // 1 m span from 2 m: rises past 3.2 m
+  s.openings[1].top = 2.4;
+  EXPECT_THROW(courseWalls(s), Error);
+  s = house();
+  s.openings[1] = {"wide", 1, 0.8, 3.2, 0.0, 0.8, OpeningHead::SemicircularArch};  // zone into a corner
   EXPECT_THROW(courseWalls(s), Error);
 }
 

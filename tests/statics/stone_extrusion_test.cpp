@@ -2,6 +2,7 @@
 // computation for a hipped roof, and the shipped stone houses: the one meant to stand stands by
 // the LP, the thin-walled one does not until its roof has ties or its walls are thickened.
 #include "core/error.h"
+#include "core/history.h"
 #include "core/project_io.h"
 #include "statics/analysis.h"
 #include "statics/search.h"
@@ -73,6 +74,29 @@ TEST(StoneExtrusion, HippedRoofLoadsAreTheHandComputedOnes) {
     for (const PointLoad& l : b.pointLoads) EXPECT_EQ(l.force[1], 0.0);
 }
 
+// Wind through the model: blowing towards +y it meets only edge 0's wall, 8 × 3 m less the
+// 1 × 2 m door; towards 45° also edge 3's (6 × 3 m, unpierced), each by cos 45°.
+TEST(StoneExtrusion, WindLoadsTheWallsItMeets) {
+  ExtrusionSpec spec = hippedHouse();
+  spec.masonry->coveringWeight = 0;
+  spec.masonry->windPressure = 500;
+  auto total = [&](double direction) {
+    spec.masonry->windDirection = direction;
+    const ParametricModel model = stoneModel(spec);
+    Vec3 f(0.0);
+    for (const Block& b : model.build(model.parameters).blocks)
+      for (const PointLoad& l : b.pointLoads) f += l.force;
+    return f;
+  };
+  const Vec3 north = total(90);
+  EXPECT_NEAR(north[0], 0.0, 1e-9);
+  EXPECT_NEAR(north[1], 500 * 22.0, 1e-9);
+  EXPECT_EQ(north[2], 0.0);
+  const Vec3 diagonal = total(45);
+  EXPECT_NEAR(diagonal[0], 500 * 18.0 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(diagonal[1], 500 * 22.0 / std::sqrt(2.0), 1e-9);
+}
+
 TEST(StoneExtrusion, RefusesWhatItCannotBuild) {
   ExtrusionSpec e = hippedHouse();
   e.masonry->openings = {{"chimney", OpeningHead::Lintel}};
@@ -112,6 +136,41 @@ TEST(StoneExtrusion, ShippedStoneHouseStandsAndTheThinWalledOneNeedsThickerWalls
   ASSERT_EQ(r.status, SearchStatus::Feasible) << r.message;
   EXPECT_GT(r.values["thickness"], thin.parameters["thickness"]);
   EXPECT_TRUE(checkFeasibility(thin.build(r.values)).feasible);
+}
+
+// Make It Stand on the thin-walled house as a project edit: the values found written back
+// into the extrusion's masonry section (stoneWallsAt) and committed as one History step. The
+// project after it stands by the LP, also once saved and read back; one undo restores the
+// section that does not stand.
+TEST(StoneExtrusion, MakeItStandIsOneUndoStepOfTheProjectThatStands) {
+  const std::string name = "Stone house, thin walls";
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  History history(p.document);
+  const DocObject* before = history.current().findByName(name);
+  ASSERT_NE(before, nullptr);
+  const ExtrusionSpec thin = std::get<ExtrusionSpec>(before->spec);
+  const ParametricModel model = stoneModel(thin);
+  const SearchResult r = searchParameters(model, model.suggestedFree, SearchOptions{});
+  ASSERT_EQ(r.status, SearchStatus::Feasible) << r.message;
+
+  Document next = history.current();
+  ExtrusionSpec& spec = std::get<ExtrusionSpec>(next.find(before->id)->spec);
+  spec.masonry = stoneWallsAt(*spec.masonry, r.values);
+  history.commit(next, "Make It Stand");
+  EXPECT_EQ(history.size(), 2u);
+  auto standsInProject = [&](const Document& d) {
+    const ParametricModel m = stoneModel(std::get<ExtrusionSpec>(d.findByName(name)->spec));
+    return checkFeasibility(m.build(m.parameters)).feasible;
+  };
+  const ExtrusionSpec& after = std::get<ExtrusionSpec>(history.current().findByName(name)->spec);
+  EXPECT_GT(after.masonry->thickness, thin.masonry->thickness);
+  EXPECT_EQ(after.masonry->openings, thin.masonry->openings);
+  EXPECT_EQ(after.profiles, thin.profiles);  // still the same extrusion
+  EXPECT_TRUE(standsInProject(history.current()));
+  EXPECT_TRUE(standsInProject(parseProject(serializeProject(history.current())).document));
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(std::get<ExtrusionSpec>(history.current().findByName(name)->spec), thin);
+  EXPECT_FALSE(standsInProject(history.current()));
 }
 
 }  // namespace

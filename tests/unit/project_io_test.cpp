@@ -1080,16 +1080,20 @@ TEST(ProjectIo, ExtrusionMasonrySection) {
   const std::string plan = R"(, "plan": {"loops": [[[0, 0], [4, 0], [4, 4], [0, 4]]]})";
   const corbel::LoadedProject p = corbel::parseProject(withExtrusion(
       profiles + plan +
-      R"(, "masonry": {"thickness": 0.6, "ties": true, "mortar": "lime", "openings": {"door": "flat_arch"}})"));
+      R"(, "masonry": {"thickness": 0.6, "ties": true, "mortar": "lime", "wind_pressure": 750, "wind_direction": -90, "openings": {"door": "flat_arch", "window": "semicircular_arch"}})"));
   const auto& e = std::get<corbel::ExtrusionSpec>(p.document.objects.at(0).spec);
   ASSERT_TRUE(e.masonry.has_value());
   EXPECT_EQ(e.masonry->thickness, 0.6);
   EXPECT_TRUE(e.masonry->ties);
+  EXPECT_EQ(e.masonry->windPressure, 750.0);
+  EXPECT_EQ(e.masonry->windDirection, -90.0);
   EXPECT_EQ(e.masonry->courseHeight, 0.4);      // defaults
   EXPECT_EQ(e.masonry->coveringWeight, 600.0);
-  ASSERT_EQ(e.masonry->openings.size(), 1u);
+  ASSERT_EQ(e.masonry->openings.size(), 2u);
   EXPECT_EQ(e.masonry->openings[0].anchor, "door");
   EXPECT_EQ(e.masonry->openings[0].head, corbel::OpeningHead::FlatArch);
+  EXPECT_EQ(e.masonry->openings[1].anchor, "window");
+  EXPECT_EQ(e.masonry->openings[1].head, corbel::OpeningHead::SemicircularArch);
   EXPECT_NE(std::find(p.warnings.begin(), p.warnings.end(), "objects[0].extrusion.masonry.mortar: unknown key kept"),
             p.warnings.end());
   const std::string saved = corbel::serializeProject(p.document);
@@ -1099,12 +1103,17 @@ TEST(ProjectIo, ExtrusionMasonrySection) {
   // Without the section, none is written.
   const corbel::LoadedProject plain = corbel::parseProject(withExtrusion(profiles + plan));
   EXPECT_FALSE(std::get<corbel::ExtrusionSpec>(plain.document.objects.at(0).spec).masonry.has_value());
+  // No wind: none written.
+  const corbel::LoadedProject calm = corbel::parseProject(withExtrusion(profiles + plan + R"(, "masonry": {})"));
+  EXPECT_EQ(corbel::serializeProject(calm.document).find("wind"), std::string::npos);
   EXPECT_EQ(corbel::serializeProject(plain.document).find("masonry"), std::string::npos);
 
   EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "masonry": {"thickness": 0})"),
                "objects[0].extrusion.masonry.thickness", "must be greater than 0 and at most 1000 m");
   EXPECT_FAULT(withExtrusion(profiles + plan + R"(, "masonry": {"openings": {"door": "gothic"}})"),
-               "objects[0].extrusion.masonry.openings.door", R"(expected "lintel" or "flat_arch", found "gothic")");
+               "objects[0].extrusion.masonry.openings.door", R"(expected "lintel", "flat_arch" or "semicircular_arch", found "gothic")");
+  EXPECT_FAULT_CONTAINS(withExtrusion(profiles + plan + R"(, "masonry": {"wind_pressure": -5})"),
+                        "objects[0].extrusion.masonry.wind_pressure", "-5 is outside [0, 100000]");
   EXPECT_FAULT_CONTAINS(withExtrusion(profiles + plan + R"(, "masonry": {"ties": 1})"), "objects[0].extrusion.masonry.ties",
                "expected true or false");
 }
