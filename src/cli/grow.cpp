@@ -129,8 +129,7 @@ int run(const GrowRequest& r) {
     site = growth::loadSite(sitePath, &warnings);
   }
   for (const auto& w : warnings) std::cerr << "corbel-cli: warning: " << sitePath << ": " << w << "\n";
-  growth::GrowthOptions options;
-  options.seed = std::uint64_t(seed);
+  const growth::GrowthOptions options = growth::optionsFor(site, std::uint64_t(seed));
   // View maps: exact (default), the CPU rasterizer, or GL through OSMesa, at `pixel` meters.
   std::unique_ptr<render::HeadlessContext> context;
   std::unique_ptr<growth::ViewMapper> mapper;

@@ -73,8 +73,7 @@ GrownModel grow(const GrowthSpec& spec, Progress* progress, ViewMapper* mapper) 
   } catch (const InputError& e) {
     throw InputError(e.where.empty() ? "growth.site" : "growth.site." + e.where, e.reason);
   }
-  GrowthOptions options;
-  options.seed = spec.seed;
+  const GrowthOptions options = optionsFor(out.site, spec.seed);
   GrowthEngine engine(out.site, options, mapper);
   const int limit = spec.steps < 0 ? static_cast<int>(limits::kMaxGrowthSteps) : spec.steps;
   while (engine.steps() < limit && !engine.done()) {

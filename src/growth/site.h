@@ -45,6 +45,20 @@ struct OpeningSettings {
   double spacing = 3.0;  // one window per this many metres of facade with a view, per storey
 };
 
+// The growth behaviour's settings (docs/growth.md, "Growth settings"): the site file's "growth"
+// object; GrowthOptions (growth/engine.h) carries them into a run.
+struct GrowthSettings {
+  double tau = 0.3;                 // view conflict: the share of its best view a unit lets others take
+  double intrusionPenalty = 0.5;    // score lost per m² of view taken from other units
+  double viewGoalRatio = 0.5;       // goal view = this × target floor area (Ch. 8: "about half")
+  double aspectChance = 0.25;       // chance a step favours aspect ratio over view (Sec. 5.3)
+  double doubleVolumeChance = 0.35; // chance a unit makes one part a double volume at half its target
+  double maxAspect = 3.0;           // the view behaviour keeps each part's plan within 1 : maxAspect
+  int patience = 5;                 // steps without a valid move before a unit is stuck
+  int minSubUnits = 2, maxSubUnits = 3;  // a target is grown as this many sub-units (drawn evenly)
+  bool operator==(const GrowthSettings&) const = default;
+};
+
 struct Site {
   // Envelope: an extruded simple polygon (plan, meters) from `base` up `storeys` storeys.
   // A box envelope is its rectangle.
@@ -59,6 +73,7 @@ struct Site {
   double circulationClearance = 0.0;  // ... and circulation (0: units may touch it)
   double cantilever = 4.0;            // the farthest a unit reaches beyond its supports
   double alpha = 0.3;                 // Face Advance distance α (Sec. 5.1)
+  GrowthSettings growth;
   std::optional<RoofSettings> roof;          // none: bare unit tops
   std::optional<OpeningSettings> openings;   // none: no doors or windows
 

@@ -80,6 +80,30 @@ OpeningSettings readOpenings(const JsonReader& r, std::vector<std::string>* warn
   return o;
 }
 
+GrowthSettings readGrowth(const JsonReader& r, std::vector<std::string>* warnings) {
+  r.expectObject();
+  warnUnknown(r,
+              {"tau", "intrusion_penalty", "view_goal_ratio", "aspect_chance", "double_volume_chance", "max_aspect",
+               "patience", "sub_units"},
+              warnings);
+  GrowthSettings g;
+  if (auto p = r.find("tau")) g.tau = p->number(0, 1);
+  if (auto p = r.find("intrusion_penalty")) g.intrusionPenalty = p->number(0, 1000);
+  if (auto p = r.find("view_goal_ratio")) g.viewGoalRatio = p->number(0, 10);
+  if (auto p = r.find("aspect_chance")) g.aspectChance = p->number(0, 1);
+  if (auto p = r.find("double_volume_chance")) g.doubleVolumeChance = p->number(0, 1);
+  if (auto p = r.find("max_aspect")) g.maxAspect = p->number(1, 100);
+  if (auto p = r.find("patience")) g.patience = int(p->integer(1, 1000));
+  if (auto p = r.find("sub_units")) {
+    const auto range = p->array(2);
+    if (range.size() != 2) p->fail("expected [least, most]");
+    g.minSubUnits = int(range[0].integer(1, 8));
+    g.maxSubUnits = int(range[1].integer(1, 8));
+    if (g.maxSubUnits < g.minSubUnits) p->fail("the most is less than the least");
+  }
+  return g;
+}
+
 }  // namespace
 
 const char* roofProfileName(RoofProfile p) {
@@ -106,7 +130,7 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
   root.expectObject();
   warnUnknown(root,
               {"format", "version", "envelope", "base", "storeys", "storey_height", "alpha", "cantilever", "clearance",
-               "cores", "circulation", "seeds", "generate_seeds", "roof", "openings", "name"},
+               "cores", "circulation", "seeds", "generate_seeds", "growth", "roof", "openings", "name"},
               warnings);
   if (auto f = root.find("format"); f && f->string(64) != "corbel-growth-site")
     f->fail("expected \"corbel-growth-site\"");
@@ -133,6 +157,7 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
     if (auto k = c->find("core")) site.coreClearance = k->number();
     if (auto k = c->find("circulation")) site.circulationClearance = k->number();
   }
+  if (auto g = root.find("growth")) site.growth = readGrowth(*g, warnings);
   if (auto r = root.find("roof")) site.roof = readRoof(*r, warnings);
   if (auto o = root.find("openings")) site.openings = readOpenings(*o, warnings);
   if (auto cores = root.find("cores"))
