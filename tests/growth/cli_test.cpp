@@ -482,3 +482,23 @@ TEST(GrowCli, AFinishedBlockExportsToGlbWithRoofsAndFeaturesInTheirOwnMaterials)
 }
 
 }  // namespace
+
+namespace {
+
+// complete --from shows the model sliced at the storey (Fig. 8.3): cut tops, no roofs over them.
+TEST(GrowCli, ASectionOfAFinishedModelHasNoRoofsOrOpenings) {
+  const std::string obj = testing::TempDir() + "finished-section.obj";
+  const CliRun r = cli("complete --from " + kExamples + "housing-finished.corbel --complexity 0.2:0.45 --count 2 --out " + obj);
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(obj);
+  std::string line;
+  int units = 0, finishes = 0;
+  while (std::getline(in, line)) {
+    units += line.rfind("o unit_", 0) == 0;
+    finishes += line == "o roofs" || line == "o doors_and_windows";
+  }
+  EXPECT_GT(units, 0);
+  EXPECT_EQ(finishes, 0);
+}
+
+}  // namespace
