@@ -77,6 +77,44 @@ Profile makeProfile(std::string name, std::vector<Vec2> points, std::vector<std:
   return p;
 }
 
+// A corner the region's boundaries pass twice (two lobes, or a hole and the outside, meeting at
+// a point): the extrusion kernel needs simple loops that do not touch.
+bool pinch(const PolygonWithHoles& pwh, Point& at) {
+  std::vector<Point> pts(pwh.outer_boundary().vertices_begin(), pwh.outer_boundary().vertices_end());
+  for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) pts.insert(pts.end(), h->vertices_begin(), h->vertices_end());
+  std::sort(pts.begin(), pts.end());
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    if (pts[i] == pts[i - 1]) {
+      at = pts[i];
+      return true;
+    }
+  return false;
+}
+
+// The region cut by the line x = at.x() through a pinch (rectilinear lobes meet diagonally, so
+// the line parts them), again until no piece is pinched (a few cuts at most).
+void unpinch(const PolygonWithHoles& pwh, std::vector<PolygonWithHoles>& out, int depth = 0) {
+  Point at;
+  if (depth >= 8 || !pinch(pwh, at)) {
+    out.push_back(pwh);
+    return;
+  }
+  const auto box = pwh.outer_boundary().bbox();
+  const double lo = std::floor(box.xmin()) - 1, hi = std::ceil(box.xmax()) + 1;
+  const double y0 = std::floor(box.ymin()) - 1, y1 = std::ceil(box.ymax()) + 1;
+  for (int side = 0; side < 2; ++side) {
+    Polygon half;
+    const K::FT x0 = side == 0 ? K::FT(lo) : at.x(), x1 = side == 0 ? at.x() : K::FT(hi);
+    half.push_back(Point(x0, y0));
+    half.push_back(Point(x1, y0));
+    half.push_back(Point(x1, y1));
+    half.push_back(Point(x0, y1));
+    std::vector<PolygonWithHoles> pieces;
+    CGAL::intersection(pwh, half, std::back_inserter(pieces));
+    for (const PolygonWithHoles& p : pieces) unpinch(p, out, depth + 1);
+  }
+}
+
 }  // namespace
 
 double RoofRegion::area() const {
@@ -105,8 +143,9 @@ std::vector<RoofRegion> exposedTops(const Site& site, const std::vector<Unit>& u
       if (snap(o.hi[0]) <= snap(o.lo[0]) || snap(o.hi[1]) <= snap(o.lo[1])) continue;
       set.difference(rectangle(o.lo[0], o.lo[1], o.hi[0], o.hi[1]));
     }
-    std::vector<PolygonWithHoles> pieces;
-    set.polygons_with_holes(std::back_inserter(pieces));
+    std::vector<PolygonWithHoles> sets, pieces;
+    set.polygons_with_holes(std::back_inserter(sets));
+    for (const PolygonWithHoles& p : sets) unpinch(p, pieces);
     std::vector<RoofRegion> level;
     for (const PolygonWithHoles& pwh : pieces) {
       RoofRegion r;

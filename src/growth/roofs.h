@@ -24,7 +24,9 @@ struct RoofRegion {
 // The exposed tops: per height, the union of the tops of the parts ending there less the
 // footprints of the boxes (units' parts, cores, circulation) standing on or passing that
 // height, by CGAL's Boolean set operations on exact coordinates (snapped to the micrometre, so
-// tops that meet within the growth tolerance join). Ordered by height, then by position.
+// tops that meet within the growth tolerance join). A region whose boundary touches itself at a
+// corner (lobes, or a hole and the outside, meeting at a point) is cut along x through that
+// corner into regions with simple loops. Ordered by height, then by position.
 std::vector<RoofRegion> exposedTops(const Site& site, const std::vector<Unit>& units);
 
 // The extrusion of a region with the roof settings, based at the region's height:

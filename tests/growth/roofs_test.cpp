@@ -193,12 +193,14 @@ std::string readText(const std::string& path) {
   return ss.str();
 }
 
-TEST(Roofs, AGrownSiteIsRoofedOverExactlyItsExposedTops) {
-  const Site site = parseSite(readText(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-alpha.json"));
+TEST(Roofs, GrownSitesAreRoofedOverExactlyTheirExposedTops) {
+  for (const auto& [file, count] : {std::pair{"growth-alpha.json", 72u}, std::pair{"growth-beta.json", 132u}}) {
+  SCOPED_TRACE(file);
+  const Site site = parseSite(readText(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + file));
   GrowthEngine engine(site, {});
   engine.run(100000);
   const auto& units = engine.units();
-  ASSERT_EQ(units.size(), 72u);
+  ASSERT_EQ(units.size(), count);
   // The oracle: Σ tops less Σ pairwise overlaps with the boxes whose floor is at a top's height
   // (tops at one height are disjoint, and so are the floors standing on them).
   std::vector<Box> boxes;
@@ -229,6 +231,44 @@ TEST(Roofs, AGrownSiteIsRoofedOverExactlyItsExposedTops) {
     EXPECT_NEAR(regions, exposed, 1e-6 * exposed);
     EXPECT_NEAR(area, exposed, 1e-6 * exposed);
     EXPECT_EQ(open, 0);
+  }
+  }
+}
+
+}  // namespace
+}  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+// A ring closed only at a corner: bottom 6 × 2, right 2 × 4, top 2 × 2 and left 2 × 2, the top
+// and left pieces meeting at (2, 4), so the enclosed 2 × 2 court touches the outside there.
+TEST(Roofs, ARegionPinchedAtACornerIsCutThereIntoSimpleRegions) {
+  const Site site = test::openSite(30, 10, 1);
+  const std::vector<Unit> units{unitOf(1, {box(0, 0, 0, 6, 2, 3)}), unitOf(2, {box(4, 2, 0, 6, 6, 3)}),
+                                unitOf(3, {box(2, 4, 0, 4, 6, 3)}), unitOf(4, {box(0, 2, 0, 2, 4, 3)})};
+  const auto regions = exposedTops(site, units);
+  // Cut at x = 2: the rectangle 0–2 × 0–4 and the U of the rest.
+  ASSERT_EQ(regions.size(), 2u);
+  EXPECT_NEAR(regions[0].area() + regions[1].area(), 12 + 8 + 4 + 4, 1e-9);
+  for (const RoofRegion& r : regions) {
+    EXPECT_EQ(r.loops.size(), 1u);
+    std::vector<Vec2> corners = r.loops[0];
+    std::sort(corners.begin(), corners.end(), [](const Vec2& a, const Vec2& b) { return std::pair(a[0], a[1]) < std::pair(b[0], b[1]); });
+    EXPECT_EQ(std::adjacent_find(corners.begin(), corners.end()), corners.end());  // simple
+  }
+  for (RoofProfile p : {RoofProfile::Flat, RoofProfile::Shed, RoofProfile::Gable, RoofProfile::Hip}) {
+    SCOPED_TRACE(roofProfileName(p));
+    RoofSettings s;
+    s.profile = p;
+    const Roofs roofs = buildRoofs(site, units, s);
+    EXPECT_TRUE(roofs.warnings.empty()) << ::testing::PrintToString(roofs.warnings);
+    double area = 0;
+    for (const MeshData& m : roofs.shells) {
+      area += horizontalArea(m, 3, false);
+      EXPECT_TRUE(validate(m).closedManifold());
+    }
+    EXPECT_NEAR(area, 28, 1e-6);
   }
 }
 
