@@ -56,6 +56,10 @@ CLI::Option* whole(CLI::App& c, const std::string& name, std::optional<int>& val
                    const std::string& type, const std::string& description) {
   return c.add_option(name, value, description)->check(wholeIn(lo, hi))->type_name(type);
 }
+CLI::Option* whole(CLI::App& c, const std::string& name, std::optional<long long>& value, long long lo, long long hi,
+                   const std::string& type, const std::string& description) {
+  return c.add_option(name, value, description)->check(wholeIn(lo, hi))->type_name(type);
+}
 
 // One of `words`; the field's value on entry is the default shown.
 CLI::Option* choice(CLI::App& c, const std::string& name, std::string& value, const std::vector<std::string>& words,
@@ -301,9 +305,11 @@ void declareKifs(CLI::App& app, Requests& requests) {
 void declareGrow(CLI::App& app, Requests& requests) {
   CLI::App* c = command(app, "grow", "Grow housing units on a site (docs/growth.md); prints one JSON line.");
   GrowRequest& r = requests.add<GrowRequest>(c);
-  positional(*c, "SITE", r.site, "The site file (.json).")->required();
-  whole(*c, "--seed", r.seed, 0, 1ll << 62, "N", "The random seed.");
-  whole(*c, "--steps", r.steps, 0, 100000000, "K", "The most growth steps.");
+  positional(*c, "SITE", r.site, "The site file (.json), or a project (.corbel) with a growth object.")->required();
+  text(*c, "--object", r.object, "NAME", "The project's growth object (when it has several).");
+  whole(*c, "--seed", r.seed, 0, 1ll << 62, "N", "The random seed (default 1, or the growth object's).");
+  whole(*c, "--steps", r.steps, 0, 100000000, "K",
+        "The most growth steps (default 100000, or the growth object's: all when it has -1).");
   c->add_flag("--stats", r.stats, "Add the statistics of Table 8.1.");
   text(*c, "--out", r.out, kExportTypes, "Write the grown model.");
   text(*c, "--render", r.render, "PNG", "Render the grown model.");

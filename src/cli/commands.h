@@ -112,8 +112,8 @@ struct KifsRequest {
 };
 
 struct GrowRequest {
-  std::string site, out, render, viewMaps = "exact";
-  long long seed = 1, steps = 100000;
+  std::string site, object, out, render, viewMaps = "exact";
+  std::optional<long long> seed, steps;  // default: the project's growth object's, or 1 and 100000
   double pixel = 0.1;
   bool stats = false;
 };

@@ -266,6 +266,8 @@ int run(const CompleteRequest& r) {
     // The model sliced at the storey's top (Fig. 8.3), so the completed storey shows.
     growth::Site sliced = model.site;
     sliced.storeys = storey + 1;
+    sliced.roof.reset();  // a section shows cut tops, not roofs over them
+    sliced.openings.reset();
     const double top = sliced.top();
     for (growth::Box& c : sliced.circulation) c.hi[2] = std::min(c.hi[2], top);
     std::vector<growth::Unit> below;

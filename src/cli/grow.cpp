@@ -7,8 +7,11 @@
 
 #include "core/error.h"
 #include "core/export.h"
+#include "core/project_io.h"
 #include "core/scene.h"
 #include "growth/engine.h"
+#include "growth/openings.h"
+#include "growth/roofs.h"
 #include "growth/statistics.h"
 #include "render/gl_view_mapper.h"
 #include "render/headless_context.h"
@@ -66,6 +69,15 @@ Scene modelScene(const growth::Site& site, const std::vector<growth::Unit>& unit
     solid(site.coreBox(i), "core " + std::to_string(i + 1), "concrete");
   for (std::size_t i = 0; i < site.circulation.size(); ++i)
     solid(site.circulation[i], "circulation " + std::to_string(i + 1), "slate");
+  // What the site asks to finish the units with: one object of roofs, one of doors and windows.
+  if (site.roof) {
+    const growth::Roofs roofs = growth::buildRoofs(site, units, *site.roof);
+    for (const auto& w : roofs.warnings) std::cerr << "corbel-cli: warning: grow: " << w << "\n";
+    scene.replaceObject(id++, Kind::Shell, "roofs", roofs.mesh);
+  }
+  if (site.openings)
+    scene.replaceObject(id++, Kind::Mass, "doors and windows",
+                        growth::openingsMesh(growth::placeOpenings(site, units, *site.openings)));
   return scene;
 }
 
@@ -82,11 +94,42 @@ int run(const GrowRequest& r) {
     }
   }
 
+  // A site file, or a project's growth object (its site, seed and steps unless given here).
   std::vector<std::string> warnings;
-  const growth::Site site = growth::loadSite(sitePath, &warnings);
+  growth::Site site;
+  long long seed = r.seed.value_or(1), steps = r.steps.value_or(100000);
+  std::string objectName;
+  const bool project = sitePath.size() >= 7 && sitePath.compare(sitePath.size() - 7, 7, ".corbel") == 0;
+  if (project) {
+    const LoadedProject p = loadProject(sitePath);
+    for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << sitePath << ": " << w << "\n";
+    std::vector<std::size_t> growths;
+    for (std::size_t i = 0; i < p.document.objects.size(); ++i)
+      if (std::holds_alternative<GrowthSpec>(p.document.objects[i].spec) &&
+          (r.object.empty() || p.document.objects[i].name == r.object))
+        growths.push_back(i);
+    if (growths.empty())
+      throw Error(sitePath + (r.object.empty() ? ": no growth object to grow (the project has none)"
+                                               : ": no growth object named \"" + r.object + "\""));
+    if (growths.size() > 1) throw Error(sitePath + ": several growth objects; choose one with --object NAME");
+    const DocObject& o = p.document.objects[growths[0]];
+    const auto& spec = std::get<GrowthSpec>(o.spec);
+    objectName = o.name;
+    try {
+      site = growth::parseSite(spec.site, &warnings);
+    } catch (const InputError& e) {
+      throw InputError(sitePath + ": objects[" + std::to_string(growths[0]) + "].growth.site" +
+                           (e.where.empty() ? "" : "." + e.where),
+                       e.reason);
+    }
+    if (!r.seed) seed = static_cast<long long>(spec.seed);
+    if (!r.steps && spec.steps >= 0) steps = spec.steps;
+  } else {
+    if (!r.object.empty()) throw UsageError("grow: --object needs a project (.corbel), not a site file");
+    site = growth::loadSite(sitePath, &warnings);
+  }
   for (const auto& w : warnings) std::cerr << "corbel-cli: warning: " << sitePath << ": " << w << "\n";
-  growth::GrowthOptions options;
-  options.seed = std::uint64_t(r.seed);
+  const growth::GrowthOptions options = growth::optionsFor(site, std::uint64_t(seed));
   // View maps: exact (default), the CPU rasterizer, or GL through OSMesa, at `pixel` meters.
   std::unique_ptr<render::HeadlessContext> context;
   std::unique_ptr<growth::ViewMapper> mapper;
@@ -100,7 +143,7 @@ int run(const GrowRequest& r) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   growth::GrowthEngine engine(site, options, mapper.get());
-  const int ran = engine.run(int(r.steps));
+  const int ran = engine.run(int(steps));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const std::vector<growth::Unit> units = engine.units();
   int reached = 0, stuck = 0;
@@ -112,7 +155,8 @@ int run(const GrowRequest& r) {
 
   nlohmann::ordered_json j;
   j["site"] = sitePath;
-  j["seed"] = r.seed;
+  if (project) j["object"] = objectName;
+  j["seed"] = seed;
   j["steps"] = ran;
   j["moves"] = engine.commits();
   j["finished"] = engine.done();

@@ -244,6 +244,13 @@ std::unique_ptr<Arbitration> makeViewDeficitArbitration() { return std::make_uni
 std::unique_ptr<Arbitration> makeRandomArbitration() { return std::make_unique<RandomArbitration>(); }
 std::unique_ptr<Arbitration> makeSequentialArbitration() { return std::make_unique<SequentialArbitration>(); }
 
+GrowthOptions optionsFor(const Site& site, std::uint64_t seed) {
+  GrowthOptions o;
+  static_cast<GrowthSettings&>(o) = site.growth;
+  o.seed = seed;
+  return o;
+}
+
 GrowthEngine::GrowthEngine(const Site& site, GrowthOptions options, ViewMapper* mapper,
                            std::map<std::string, std::shared_ptr<Behaviour>> extraBehaviours)
     : site_(site),
@@ -272,7 +279,7 @@ GrowthEngine::GrowthEngine(const Site& site, GrowthOptions options, ViewMapper* 
     s.behaviour = seed.behaviour;
     const double floorTarget = s.byVolume ? s.target / site.storeyHeight : s.target;
     s.goalView = options_.viewGoalRatio * floorTarget;
-    s.subUnits = 2 + rng_.below(2);
+    s.subUnits = options_.minSubUnits + rng_.below(options_.maxSubUnits - options_.minSubUnits + 1);
     while (s.subUnits > 1 && floorTarget / s.subUnits < 2 * kMinPartWidth * kMinPartWidth) --s.subUnits;
     s.wantsDoubleVolume = rng_.uniform() < options_.doubleVolumeChance;
     if (s.progress() >= s.target) s.status = UnitStatus::Reached;

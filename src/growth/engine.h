@@ -50,19 +50,15 @@ struct UnitState {
   double progress() const { return byVolume ? unit.volume() : unit.floorArea(); }
 };
 
-struct GrowthOptions {
+// A run's options: the site's growth settings (GrowthSettings, growth/site.h) and the seed.
+struct GrowthOptions : GrowthSettings {
   std::uint64_t seed = 1;
-  double tau = 0.3;               // view conflict: the share of its best view a unit lets others take
-  double intrusionPenalty = 0.5;  // score lost per m² of view taken from other units
-  double viewGoalRatio = 0.5;     // goal view = this × target floor area (Ch. 8: "about half")
-  double aspectChance = 0.25;     // chance a step favours aspect ratio over view (Sec. 5.3)
-  double doubleVolumeChance = 0.35;
-  double maxAspect = 3.0;  // the view behaviour keeps each part's plan within 1 : maxAspect
-  int patience = 5;
   // Collide-and-extrude from CGAL's polygon difference (growth/collide.h's freeColumns) rather
   // than its interval twin: the same splits, slower.
   bool exactCollide = false;
 };
+// The options of a run on `site`: its growth settings and the seed.
+GrowthOptions optionsFor(const Site& site, std::uint64_t seed);
 
 class GrowthEngine;
 

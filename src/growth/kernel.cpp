@@ -2,6 +2,8 @@
 
 #include "core/error.h"
 #include "growth/engine.h"
+#include "growth/openings.h"
+#include "growth/roofs.h"
 
 #include <cstdlib>
 #include <string>
@@ -39,6 +41,8 @@ void registerKernelWith(SceneSync& sync, MapperSource mappers) {
       for (int& f : m.faceMaterial) f = mat;
       b.mesh.append(m);
     }
+    MeshData finish = finishMesh(site, grown.units, b.warnings);
+    b.mesh.append(finish);
     for (std::size_t i = 0; i < site.cores.size(); ++i) addSolid(b.mesh, site.coreBox(i), "concrete");
     for (const Box& c : site.circulation) addSolid(b.mesh, c, "slate");
     if (grown.stopped) b.warnings.push_back(kStopped + std::to_string(grown.steps) + " steps");
@@ -69,8 +73,7 @@ GrownModel grow(const GrowthSpec& spec, Progress* progress, ViewMapper* mapper) 
   } catch (const InputError& e) {
     throw InputError(e.where.empty() ? "growth.site" : "growth.site." + e.where, e.reason);
   }
-  GrowthOptions options;
-  options.seed = spec.seed;
+  const GrowthOptions options = optionsFor(out.site, spec.seed);
   GrowthEngine engine(out.site, options, mapper);
   const int limit = spec.steps < 0 ? static_cast<int>(limits::kMaxGrowthSteps) : spec.steps;
   while (engine.steps() < limit && !engine.done()) {
@@ -81,6 +84,17 @@ GrownModel grow(const GrowthSpec& spec, Progress* progress, ViewMapper* mapper) 
   out.units = engine.units();
   out.steps = engine.steps();
   out.stopped = engine.done();
+  return out;
+}
+
+MeshData finishMesh(const Site& site, const std::vector<Unit>& units, std::vector<std::string>& warnings) {
+  MeshData out;
+  if (site.roof) {
+    Roofs roofs = buildRoofs(site, units, *site.roof);
+    out.append(roofs.mesh);
+    warnings.insert(warnings.end(), roofs.warnings.begin(), roofs.warnings.end());
+  }
+  if (site.openings) out.append(openingsMesh(placeOpenings(site, units, *site.openings)));
   return out;
 }
 

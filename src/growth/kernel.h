@@ -16,7 +16,8 @@ namespace corbel::growth {
 // "growth.site.<path>"), grows it from the spec's seed for spec.steps steps (or until every unit
 // stops), one step per progress report and cancellable between steps, on the exact CPU view
 // mapper. The object's faces are every unit (kind Unit, material plaster), the cores (concrete)
-// and the circulation (slate), each a closed box complex. When every unit has stopped it says
+// and the circulation (slate), each a closed box complex, and what finishMesh adds (roofs,
+// doors, windows) when the site asks for it. When every unit has stopped it says
 // so in the build's warnings ("every unit stopped after N steps"), which the editor's Run reads.
 // Unit objects (core/unit_spec.h) are built the same way: one closed shell of their parts, of
 // kind Unit, in the spec's material.
@@ -38,6 +39,11 @@ struct GrownModel {
 };
 // `mapper` (may be null: the exact CPU mapper) renders the engine's view maps.
 GrownModel grow(const GrowthSpec& spec, Progress* progress = nullptr, ViewMapper* mapper = nullptr);
+
+// What finishes a grown model, as the site asks (Site::roof, Site::openings): the roofs
+// (growth/roofs.h; a region the kernel cannot roof adds a warning) and the doors and windows
+// (growth/openings.h, on exact view maps). Empty when the site asks for neither.
+MeshData finishMesh(const Site& site, const std::vector<Unit>& units, std::vector<std::string>& warnings);
 
 // The words of that note, for the editor: the steps after which every unit stopped, or -1.
 int stoppedAfter(const std::vector<std::string>& warnings);

@@ -37,7 +37,84 @@ SeedControls readControls(const JsonReader& g, std::vector<std::string>* warning
   return c;
 }
 
+FeatureSize featureSize(const JsonReader& r) {
+  const Vec3 v = r.vec3();
+  if (!(v[0] > 0 && v[1] > 0 && v[2] > 0)) r.fail("width, height and depth must be positive");
+  if (!(v[0] <= 100 && v[1] <= 100 && v[2] <= 10)) r.fail("too large for a door or a window");
+  return {v[0], v[1], v[2]};
+}
+
+RoofSettings readRoof(const JsonReader& r, std::vector<std::string>* warnings) {
+  r.expectObject();
+  warnUnknown(r, {"profile", "pitch", "parapet", "parapet_thickness", "slab", "material", "wall_material"}, warnings);
+  RoofSettings roof;
+  if (auto p = r.find("profile")) {
+    const std::string name = p->string(16);
+    if (name == "flat") roof.profile = RoofProfile::Flat;
+    else if (name == "shed") roof.profile = RoofProfile::Shed;
+    else if (name == "gable") roof.profile = RoofProfile::Gable;
+    else if (name == "hip") roof.profile = RoofProfile::Hip;
+    else p->fail("expected one of flat, shed, gable, hip");
+  }
+  if (auto p = r.find("pitch")) roof.pitch = p->number(5, 75);
+  if (auto p = r.find("parapet")) roof.parapet = p->number(0.1, 5);
+  if (auto p = r.find("parapet_thickness")) roof.parapetThickness = p->number(0.05, 1);
+  if (auto p = r.find("slab")) roof.slab = p->number(0.05, 2);
+  if (auto p = r.find("material")) roof.material = p->string(64);
+  if (auto p = r.find("wall_material")) roof.wallMaterial = p->string(64);
+  return roof;
+}
+
+OpeningSettings readOpenings(const JsonReader& r, std::vector<std::string>* warnings) {
+  r.expectObject();
+  warnUnknown(r, {"door", "window", "sill", "spacing"}, warnings);
+  OpeningSettings o;
+  if (auto p = r.find("door")) o.door = featureSize(*p);
+  if (auto p = r.find("window")) o.window = featureSize(*p);
+  if (auto p = r.find("sill")) o.sill = p->number(0, 10);
+  if (auto p = r.find("spacing")) o.spacing = p->number(0.5, 100);
+  if (o.spacing < o.window.width) {
+    if (auto p = r.find("spacing")) p->fail("must be at least the window's width");
+    r.at("window").fail("wider than the spacing of windows");
+  }
+  return o;
+}
+
+GrowthSettings readGrowth(const JsonReader& r, std::vector<std::string>* warnings) {
+  r.expectObject();
+  warnUnknown(r,
+              {"tau", "intrusion_penalty", "view_goal_ratio", "aspect_chance", "double_volume_chance", "max_aspect",
+               "patience", "sub_units"},
+              warnings);
+  GrowthSettings g;
+  if (auto p = r.find("tau")) g.tau = p->number(0, 1);
+  if (auto p = r.find("intrusion_penalty")) g.intrusionPenalty = p->number(0, 1000);
+  if (auto p = r.find("view_goal_ratio")) g.viewGoalRatio = p->number(0, 10);
+  if (auto p = r.find("aspect_chance")) g.aspectChance = p->number(0, 1);
+  if (auto p = r.find("double_volume_chance")) g.doubleVolumeChance = p->number(0, 1);
+  if (auto p = r.find("max_aspect")) g.maxAspect = p->number(1, 100);
+  if (auto p = r.find("patience")) g.patience = int(p->integer(1, 1000));
+  if (auto p = r.find("sub_units")) {
+    const auto range = p->array(2);
+    if (range.size() != 2) p->fail("expected [least, most]");
+    g.minSubUnits = int(range[0].integer(1, 8));
+    g.maxSubUnits = int(range[1].integer(1, 8));
+    if (g.maxSubUnits < g.minSubUnits) p->fail("the most is less than the least");
+  }
+  return g;
+}
+
 }  // namespace
+
+const char* roofProfileName(RoofProfile p) {
+  switch (p) {
+    case RoofProfile::Flat: return "flat";
+    case RoofProfile::Shed: return "shed";
+    case RoofProfile::Gable: return "gable";
+    case RoofProfile::Hip: return "hip";
+  }
+  return "flat";
+}
 
 std::optional<SeedControls> seedControlsOf(const std::string& jsonText) {
   const nlohmann::json j = parseJsonText(jsonText);
@@ -53,7 +130,7 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
   root.expectObject();
   warnUnknown(root,
               {"format", "version", "envelope", "base", "storeys", "storey_height", "alpha", "cantilever", "clearance",
-               "cores", "circulation", "seeds", "generate_seeds", "name"},
+               "cores", "circulation", "seeds", "generate_seeds", "growth", "roof", "openings", "name"},
               warnings);
   if (auto f = root.find("format"); f && f->string(64) != "corbel-growth-site")
     f->fail("expected \"corbel-growth-site\"");
@@ -80,6 +157,9 @@ Site parseSite(const std::string& jsonText, std::vector<std::string>* warnings) 
     if (auto k = c->find("core")) site.coreClearance = k->number();
     if (auto k = c->find("circulation")) site.circulationClearance = k->number();
   }
+  if (auto g = root.find("growth")) site.growth = readGrowth(*g, warnings);
+  if (auto r = root.find("roof")) site.roof = readRoof(*r, warnings);
+  if (auto o = root.find("openings")) site.openings = readOpenings(*o, warnings);
   if (auto cores = root.find("cores"))
     for (const JsonReader& c : cores->array(100000)) {
       warnUnknown(c, {"at", "size", "name"}, warnings);

@@ -1,5 +1,8 @@
 // corbel-cli grow on the Alpha-like example: exit codes, messages, and statistics that agree
 // with their own definitions (Table 8.1) and with the exported model.
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
@@ -10,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -394,3 +398,107 @@ TEST(GrowCli, TheDocsTable81IsWhatTheShippedSitesGrowInto) {
     EXPECT_EQ(first("outdoor space"), s["outdoor_space"].get<double>());
   }
 }
+
+namespace {
+
+const std::string kExamples = std::string(CORBEL_SOURCE_DIR) + "/assets/examples/";
+
+nlohmann::json lastJson(const CliRun& r) { return nlohmann::json::parse(r.out.substr(r.out.find('{'))); }
+
+TEST(GrowCli, AProjectGrowsItsGrowthObjectAsTheSiteFileGrows) {
+  // housing-alpha.corbel holds growth-alpha.json's site with seed 1, grown to the end.
+  const CliRun p = cli("grow " + kExamples + "housing-alpha.corbel --stats");
+  const CliRun s = cli("grow " + kAlpha + " --seed 1 --stats");
+  ASSERT_EQ(p.code, 0) << p.out;
+  ASSERT_EQ(s.code, 0) << s.out;
+  const auto jp = lastJson(p), js = lastJson(s);
+  EXPECT_EQ(jp["object"], "Alpha");
+  EXPECT_EQ(jp["seed"], 1);
+  EXPECT_TRUE(jp["finished"].get<bool>());
+  for (const char* k : {"steps", "moves", "reached", "stuck", "statistics"}) EXPECT_EQ(jp[k], js[k]) << k;
+  // --seed and --steps override the object's.
+  const auto p3 = lastJson(cli("grow " + kExamples + "housing-alpha.corbel --seed 3 --steps 4 --stats"));
+  const auto s3 = lastJson(cli("grow " + kAlpha + " --seed 3 --steps 4 --stats"));
+  EXPECT_EQ(p3["steps"], 4);
+  EXPECT_EQ(p3["statistics"], s3["statistics"]);
+  EXPECT_EQ(p3["moves"], s3["moves"]);
+}
+
+TEST(GrowCli, ABadProjectOrObjectIsNamed) {
+  CliRun r = cli("grow " + kExamples + "house.corbel");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("house.corbel: no growth object to grow"), std::string::npos) << r.out;
+  r = cli("grow " + kExamples + "housing-alpha.corbel --object Beta");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("no growth object named \"Beta\""), std::string::npos) << r.out;
+  r = cli("grow " + kAlpha + " --object Alpha");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--object needs a project"), std::string::npos) << r.out;
+  r = cli("grow " + testing::TempDir() + "missing.corbel");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("no such file"), std::string::npos) << r.out;
+  // A project whose site is bad: the field by its path in the project.
+  std::ifstream in(kExamples + "housing-alpha.corbel");
+  nlohmann::json j = nlohmann::json::parse(in);
+  j["objects"][0]["growth"]["site"]["storeys"] = 0;
+  const std::string bad = testing::TempDir() + "bad-site.corbel";
+  std::ofstream(bad) << j.dump();
+  r = cli("grow " + bad);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("objects[0].growth.site.storeys: "), std::string::npos) << r.out;
+}
+
+}  // namespace
+
+namespace {
+
+// The materials of the meshes under the node named `name`, as assimp reads the file.
+std::set<std::string> nodeMaterials(const aiScene* scene, const aiNode* n, const std::string& name) {
+  std::set<std::string> out;
+  if (name == n->mName.C_Str())
+    for (unsigned i = 0; i < n->mNumMeshes; ++i) {
+      aiString m;
+      scene->mMaterials[scene->mMeshes[n->mMeshes[i]]->mMaterialIndex]->Get(AI_MATKEY_NAME, m);
+      out.insert(m.C_Str());
+    }
+  for (unsigned i = 0; i < n->mNumChildren; ++i) out.merge(nodeMaterials(scene, n->mChildren[i], name));
+  return out;
+}
+
+TEST(GrowCli, AFinishedBlockExportsToGlbWithRoofsAndFeaturesInTheirOwnMaterials) {
+  const std::string glb = testing::TempDir() + "growth-finished.glb";
+  const CliRun r = cli("grow " + kExamples + "growth-finished.json --out " + glb);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.find("warning"), std::string::npos) << r.out;  // every region roofed
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(glb, aiProcess_Triangulate);
+  ASSERT_TRUE(scene && scene->mRootNode) << importer.GetErrorString();
+  // The site's gable roofs: tiles, and gable ends in plaster; doors and windows: their frames,
+  // leaves, panes and sills (extrude/features.h).
+  EXPECT_EQ(nodeMaterials(scene, scene->mRootNode, "roofs"), (std::set<std::string>{"roof_tile", "plaster"}));
+  EXPECT_EQ(nodeMaterials(scene, scene->mRootNode, "doors and windows"),
+            (std::set<std::string>{"stone", "timber", "glass"}));
+  EXPECT_EQ(nodeMaterials(scene, scene->mRootNode, "unit 1"), (std::set<std::string>{"unit"}));
+}
+
+}  // namespace
+
+namespace {
+
+// complete --from shows the model sliced at the storey (Fig. 8.3): cut tops, no roofs over them.
+TEST(GrowCli, ASectionOfAFinishedModelHasNoRoofsOrOpenings) {
+  const std::string obj = testing::TempDir() + "finished-section.obj";
+  const CliRun r = cli("complete --from " + kExamples + "housing-finished.corbel --complexity 0.2:0.45 --count 2 --out " + obj);
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(obj);
+  std::string line;
+  int units = 0, finishes = 0;
+  while (std::getline(in, line)) {
+    units += line.rfind("o unit_", 0) == 0;
+    finishes += line == "o roofs" || line == "o doors_and_windows";
+  }
+  EXPECT_GT(units, 0);
+  EXPECT_EQ(finishes, 0);
+}
+
+}  // namespace

@@ -3,6 +3,7 @@
 // site is the object's error, named by its path in the project file.
 #include "growth/kernel.h"
 
+#include "core/error.h"
 #include "core/project_io.h"
 #include "core/scene.h"
 #include "growth/engine.h"
@@ -10,6 +11,8 @@
 #include "../common/one_object.h"
 
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <sstream>
@@ -78,6 +81,76 @@ TEST(GrowthKernel, ABadSiteIsTheObjectsErrorNamedByItsPath) {
   sync.update(p.document, scene);
   const std::string& error = sync.status().at(1).error;
   EXPECT_EQ(error.rfind("growth.site.seeds[0]", 0), 0u) << error;
+}
+
+}  // namespace
+}  // namespace corbel::growth
+
+namespace corbel::growth {
+namespace {
+
+std::string withFinish(const std::string& roof) {
+  nlohmann::json j = nlohmann::json::parse(alphaSite());
+  j["roof"] = nlohmann::json::parse(roof);
+  j["openings"] = nlohmann::json::object();
+  return j.dump();
+}
+
+TEST(GrowthKernel, ASiteThatAsksForRoofsAndOpeningsIsBuiltFinished) {
+  const std::string text = withFinish(R"({"profile": "gable", "pitch": 35})");
+  const Site site = parseSite(text);
+  ASSERT_TRUE(site.roof && site.openings);
+  EXPECT_EQ(site.roof->profile, RoofProfile::Gable);
+  EXPECT_EQ(site.roof->pitch, 35);
+  EXPECT_EQ(site.openings->spacing, 3);  // the default
+  const Grown g(GrowthSpec{text, 1, 30});
+  ASSERT_EQ(g.error(), "");
+  for (const std::string& w : g.status().warnings) EXPECT_EQ(w.find("roof"), std::string::npos) << w;
+  // The roofs and openings are what roofs.h and openings.h make of the units the engine grows.
+  GrowthOptions o;
+  o.seed = 1;
+  GrowthEngine engine(site, o);
+  for (int i = 0; i < 30; ++i) engine.step();
+  std::vector<std::string> warnings;
+  const MeshData finish = finishMesh(site, engine.units(), warnings);
+  EXPECT_TRUE(warnings.empty());
+  std::size_t tagged = 0;
+  for (int f : finish.faceTag) tagged += finish.tags[f] == "roof" || finish.tags[f] == "window" || finish.tags[f] == "door";
+  EXPECT_GT(tagged, 100u);
+  std::size_t bare = 0;
+  for (const Unit& u : engine.units()) bare += unitMesh(u).faces.size();
+  bare += 6 * (site.cores.size() + site.circulation.size());
+  EXPECT_EQ(g.scene.faces(g.id).size(), bare + finish.faces.size());
+}
+
+TEST(GrowthKernel, BadRoofAndOpeningSettingsAreNamed) {
+  const auto where = [](const std::string& text) {
+    try {
+      parseSite(text);
+    } catch (const InputError& e) {
+      return e.where + ": " + e.reason;
+    }
+    return std::string("accepted");
+  };
+  nlohmann::json j = nlohmann::json::parse(alphaSite());
+  j["roof"] = {{"profile", "dome"}};
+  EXPECT_EQ(where(j.dump()), "roof.profile: expected one of flat, shed, gable, hip");
+  j["roof"] = {{"pitch", 80}};
+  EXPECT_EQ(where(j.dump()).rfind("roof.pitch: ", 0), 0u);
+  j["roof"] = {{"parapet", -1}};
+  EXPECT_EQ(where(j.dump()).rfind("roof.parapet: ", 0), 0u);
+  j.erase("roof");
+  j["openings"] = {{"window", {4, 1.4, 0.1}}};
+  EXPECT_EQ(where(j.dump()), "openings.window: wider than the spacing of windows");
+  j["openings"] = {{"door", {1, -2, 0.1}}};
+  EXPECT_EQ(where(j.dump()), "openings.door: width, height and depth must be positive");
+  j["openings"] = {{"spacing", 0.8}};
+  EXPECT_EQ(where(j.dump()), "openings.spacing: must be at least the window's width");
+  j["openings"] = {{"sill", 1}, {"colour", "red"}};
+  std::vector<std::string> warnings;
+  parseSite(j.dump(), &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "openings.colour: unknown key ignored");
 }
 
 }  // namespace
