@@ -7,7 +7,8 @@
 # streets), each tile built into its own tileset, the tilesets merged: every building of the same
 # footprints built whole is in exactly one leaf tile, no tile's building lies outside its
 # tile's cell, the leaves' triangles are the whole town's (each building labelled and built as in
-# the whole town), and the Khronos validator finds no error in any glb.
+# the whole town), and the Khronos validator finds no error in any glb. Then memory by tile
+# (four copies against one) and a missing tile refused.
 set -euo pipefail
 cli=$1
 footprints=$2/moosburg_de.geojson
@@ -60,6 +61,38 @@ mapfile -t glbs < "$work/split.glbs"
 echo "validating ${#glbs[@]} files"
 node "$source_dir/tests/export/validate_gltf.js" "${glbs[@]}" | grep -v ": 0 errors, 0 warnings$" || true
 node "$source_dir/tests/export/validate_gltf.js" "${glbs[@]}" >/dev/null
+
+# Memory by tile: four copies of the same footprints side by side (1 km apart, a whole number of
+# cells, so each copy is cut into the same tiles). What a tile's build holds is its source: the
+# largest source (own and margin buildings) of four copies is exactly one copy's, 4 x the tiles.
+# The tile builds' peak resident memory (GNU time's %M) is printed, and held to 10 % over one
+# copy's; at this size it is mostly the process's own (about 100 MB: libraries, GDAL, PROJ).
+# (city-split itself holds the whole source: docs/city.md, "Memory".)
+node -e '
+  const fs = require("fs"), fc = JSON.parse(fs.readFileSync(process.argv[1]));
+  const out = [];
+  for (let k = 0; k < 4; ++k)
+    for (const f of fc.features) {
+      const g = JSON.parse(JSON.stringify(f));
+      for (const ring of g.geometry.coordinates) for (const p of ring) p[0] += 1000 * k;
+      g.properties.source_id += "/" + k;
+      out.push(g);
+    }
+  fc.features = out;
+  fs.writeFileSync(process.argv[2], JSON.stringify(fc));' "$work/centre.geojson" "$work/four.geojson"
+peak() {  # SOURCE NAME: "TILES LARGEST_SOURCE PEAK_kB" of NAME's tiles
+  "$cli" city-split "$1" --grid 0.1 --margin 70 --out "$work/$2" >/dev/null
+  parallel -j 2 "/usr/bin/time -f %M -o '$work/$2/{}.rss' '$cli' city '$work/$2/sources/{}.geojson' --style '$style' \
+    --detail massing --jobs 1 --textures off --out '$work/$2/{}.glb' >/dev/null 2>&1 || [ \$? = 1 ]" :::: "$work/$2/tiles.txt"
+  echo "$(wc -l <"$work/$2/tiles.txt") $(for f in "$work/$2"/sources/*.geojson; do grep -o '"type":"Feature"' "$f" | wc -l; done |
+    sort -n | tail -1) $(cat "$work/$2"/*.rss | sort -n | tail -1)"
+}
+read -r tiles1 largest1 one < <(peak "$work/centre.geojson" one)
+read -r tiles4 largest4 four < <(peak "$work/four.geojson" four)
+echo "one copy: $tiles1 tiles, largest source $largest1 buildings, tile builds' peak $one kB;" \
+  "four copies: $tiles4 tiles, $largest4, $four kB"
+(( tiles4 == 4 * tiles1 && largest4 == largest1 )) || { echo "four copies' tiles are not one copy's four times over"; exit 1; }
+(( four * 10 <= one * 11 )) || { echo "a tile of four copies took $four kB, over 110 % of one copy's $one kB"; exit 1; }
 
 # A tile not built: named, nothing written.
 rm -r "$work/split/tilesets/$(head -1 "$work/split/tiles.txt")" "$work/split/tileset.json"
