@@ -151,7 +151,7 @@ SurfaceTexture tagTexture(const JsonReader& r) {
 void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, int depth) {
   JsonReader r(root, "");
   r.expectObject();
-  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "by_size", "assign", "tag_materials", "tag_textures"});
+  rejectUnknown(r, {"name", "labels", "use", "profiles", "types", "by_size", "assign", "tag_materials", "tag_textures", "heights"});
   // The styles this one uses first, so its own name and labels win.
   if (auto u = r.find("use")) {
     if (depth > 8) u->fail("styles use each other more than 8 deep (a cycle?)");
@@ -175,6 +175,23 @@ void parseInto(Style& s, const nlohmann::json& root, const std::string& folder, 
     if (auto v = l->find("long_from")) s.labels.longFrom = v->number(0, 1000);
     if (auto v = l->find("street_degrees")) s.labels.streetDegrees = v->number(0, 90);
     if (s.labels.longFrom < s.labels.shortBelow) l->fail("long_from is less than short_below");
+  }
+  if (auto h = r.find("heights")) {  // replaces the used styles'
+    h->expectObject();
+    rejectUnknown(*h, {"walls", "levels", "storey"});
+    HeightRule rule;
+    auto names = [](const JsonReader& v) {
+      std::vector<std::string> out;
+      if (v.raw().is_string()) out.push_back(v.string(200));
+      else
+        for (const auto& e : v.array(100)) out.push_back(e.string(200));
+      return out;
+    };
+    if (auto v = h->find("walls")) rule.walls = names(*v);
+    if (auto v = h->find("levels")) rule.levels = names(*v);
+    if (auto v = h->find("storey")) rule.storey = v->number(1, 100);
+    if (rule.walls.empty() && rule.levels.empty()) h->fail("names no attribute: give \"walls\" or \"levels\" (or both)");
+    s.heights = rule;
   }
   if (auto m = r.find("tag_materials")) {
     m->expectObject();
@@ -599,6 +616,45 @@ std::optional<std::size_t> assignType(const Style& style, const Building& b, Bui
   return static_cast<std::size_t>(candidates[random.pick(candidates)].index);
 }
 
+double wallTop(const extrude::Profile& p) {
+  double top = 0;
+  for (std::size_t i = 1; i < p.points.size() && p.points[i][0] == p.points[0][0]; ++i) top = p.points[i][1];
+  return top;
+}
+
+extrude::Profile withWallHeight(const extrude::Profile& p, double height) {
+  std::size_t k = 0;  // the wall's last point
+  while (k + 1 < p.points.size() && p.points[k + 1][0] == p.points[0][0]) ++k;
+  const double shift = height - p.points[k][1];
+  extrude::Profile out;
+  out.name = p.name;
+  out.points = {p.points[0], Vec2(p.points[0][0], height)};
+  auto tag = [&](std::size_t i) { return i < p.tags.size() ? p.tags[i] : std::string(); };
+  out.tags.push_back(k == 0 ? std::string("wall") : tag(0));
+  for (std::size_t i = k + 1; i < p.points.size(); ++i) {
+    out.points.emplace_back(p.points[i][0], p.points[i][1] + shift);
+    out.tags.push_back(tag(i - 1));
+  }
+  while (!out.tags.empty() && out.tags.back().empty()) out.tags.pop_back();
+  return out;
+}
+
+std::optional<double> wallHeightOf(const Style& style, const Building& b, std::string* warning) {
+  if (!style.heights || !b.properties.is_object()) return std::nullopt;
+  auto valid = [&](const std::string& key, double v) -> std::optional<double> {
+    if (v >= 2 && v <= 1000) return v;
+    if (warning) *warning = "\"" + key + "\" gives walls " + decimals(v, 2) + " m tall, outside 2 to 1000 m: ignored";
+    return std::nullopt;
+  };
+  for (const std::string& key : style.heights->walls)
+    if (auto it = b.properties.find(key); it != b.properties.end())
+      if (const auto v = numberOf(*it)) return valid(key, *v);
+  for (const std::string& key : style.heights->levels)
+    if (auto it = b.properties.find(key); it != b.properties.end())
+      if (const auto v = numberOf(*it)) return valid(key, *v * style.heights->storey);
+  return std::nullopt;
+}
+
 StyledBuilding styleBuilding(const Style& style, const Building& b, const BuildingLabels& labels, std::uint64_t seed,
                              const BuildingOverride* override) {
   StyledBuilding out;
@@ -640,10 +696,32 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
     spec.loops[e.loop].profile[e.edge] = p;
   }
   clipSharpOverhangs(spec, out.warnings);
+  // Walls as tall as the footprint's attributes say: each edge's profile replaced by a copy with
+  // that wall; what stands on the walls (parapet, steps) moves with the tallest wall drawn.
+  std::string heightWarning;
+  const std::optional<double> wall = wallHeightOf(style, b, &heightWarning);
+  if (!heightWarning.empty()) out.warnings.push_back(heightWarning);
+  double raise = 0;
+  if (wall) {
+    std::map<int, int> copies;
+    double drawn = 0;
+    for (auto& loop : spec.loops)
+      for (int& p : loop.profile) {
+        auto [it, fresh] = copies.try_emplace(p, static_cast<int>(spec.profiles.size()));
+        if (fresh) {
+          drawn = std::max(drawn, wallTop(spec.profiles[p]));
+          extrude::Profile copy = withWallHeight(spec.profiles[p], *wall);
+          copy.name += " (walls " + decimals(*wall, 2) + " m)";
+          spec.profiles.push_back(std::move(copy));
+        }
+        p = it->second;
+      }
+    raise = *wall - drawn;
+  }
   for (const auto& loop : spec.loops) used.insert(loop.profile.begin(), loop.profile.end());
   if (t.parapet) {
     extrude::OffsetEvent ev;
-    ev.height = t.parapet->height;
+    ev.height = std::max(0.01, t.parapet->height + raise);
     ev.sideProfile = t.parapet->insideProfile;
     for (int p : used)
       ev.edges.push_back({p, -t.parapet->thickness, -1000.0, t.parapet->insideProfile, t.parapet->insideProfile});
@@ -673,13 +751,18 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
         if (&e == doorEdge) continue;
         first = last = e.length / 2;
       }
+      // Given walls: as many rows as fit under the eaves (the shipped styles' floors on their
+      // own walls), at least one.
+      const int floors = wall ? std::max(1, static_cast<int>(std::floor((*wall - w.sill - w.size.height) /
+                                                                         w.floorHeight)) + 1)
+                              : w.floors;
       extrude::Repeat rep;
-      rep.kind = w.floors > 1 ? extrude::RepeatKind::Grid : extrude::RepeatKind::Row;
+      rep.kind = floors > 1 ? extrude::RepeatKind::Grid : extrude::RepeatKind::Row;
       rep.along = last;
       rep.spacing = w.spacing;
-      rep.height = w.sill + (w.floors - 1) * w.floorHeight;
+      rep.height = w.sill + (floors - 1) * w.floorHeight;
       rep.rowSpacing = w.floorHeight;
-      if (last == first && w.floors == 1) rep.kind = extrude::RepeatKind::None;
+      if (last == first && floors == 1) rep.kind = extrude::RepeatKind::None;
       spec.anchors.emplace_back("windows " + std::to_string(wi) + " on edge " + std::to_string(e.edge),
                                 extrude::Anchor{e.loop, e.edge, true, first, w.sill}, extrude::FeatureKind::Window,
                                 w.size, rep);
@@ -694,7 +777,7 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
       if (st.row) {
         extrude::PlanStep step;
         step.name = "step " + std::to_string(si) + " on edge " + std::to_string(e.edge);
-        step.anchor = {e.loop, e.edge, true, st.margin, st.height};
+        step.anchor = {e.loop, e.edge, true, st.margin, std::max(0.0, st.height + raise)};
         step.width = st.width;
         step.depth = st.depth;
         step.frontProfile = st.frontProfile;
@@ -702,7 +785,7 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
         if (e.length - 2 * st.margin > st.spacing)
           step.repeat = {extrude::RepeatKind::Row, e.length - st.margin, 0, st.spacing, 3};
         else
-          step.anchor = {e.loop, e.edge, false, 0.5, st.height};
+          step.anchor = {e.loop, e.edge, false, 0.5, std::max(0.0, st.height + raise)};
         spec.steps.push_back(step);
       } else if (!longest || e.length > longest->length) {
         longest = &e;
@@ -711,7 +794,7 @@ StyledBuilding styleBuilding(const Style& style, const Building& b, const Buildi
     if (longest) {
       extrude::PlanStep step;
       step.name = "step " + std::to_string(si);
-      step.anchor = {longest->loop, longest->edge, false, st.along, st.height};
+      step.anchor = {longest->loop, longest->edge, false, st.along, std::max(0.0, st.height + raise)};
       step.width = st.width;
       step.depth = st.depth;
       step.frontProfile = st.frontProfile;

@@ -94,9 +94,21 @@ struct AssignRule {
   std::vector<Weighted> types;
 };
 
+// Wall heights from a footprint's attributes: the first of `walls` the building has (metres: a
+// number, or OSM's "12.5", "12.5 m") is its wall height, else the first of `levels` times
+// `storey`. A building given one gets walls that tall (each edge's profile's first vertical run
+// from the ground, the roof above it kept as drawn and raised or lowered with it, the parapet and
+// steps with it) and as many rows of windows as fit under the eaves. Values outside [2, 1000] m
+// are ignored with a warning.
+struct HeightRule {
+  std::vector<std::string> walls, levels;
+  double storey = 3;
+};
+
 struct Style {
   std::string name;
   LabelOptions labels;
+  std::optional<HeightRule> heights;  // none: every building as its type draws it
   std::vector<extrude::Profile> profiles;
   std::vector<BuildingType> types;
   // Size rules, before any other assignment: the first whose condition holds (by footprint area
@@ -175,6 +187,17 @@ inline constexpr double kMitreLimit = 20.0;
 // corner (m; the edges' directions da and db, inside on their left; moves negative outward), as
 // the kernel works it out; 0 where the corner is reflex or not sharp (90° or more).
 double cornerMove(const Vec2& da, const Vec2& db, double ka, double kb);
+// The height of the profile's wall: the top of its first vertical run from (0, 0) (0 when its
+// first segment leans).
+double wallTop(const extrude::Profile& profile);
+// The profile with its wall `height` tall: the wall's segments become one, and every point above
+// them moves up or down by the difference, so the roof keeps its shape. A profile without a wall
+// gets one (tagged "wall").
+extrude::Profile withWallHeight(const extrude::Profile& profile, double height);
+// The wall height a footprint's attributes give under the style's heights rule; nullopt when
+// there is no rule or no such attribute. `warning` gets why a value was ignored.
+std::optional<double> wallHeightOf(const Style& style, const Building& b, std::string* warning = nullptr);
+
 // The profile without its outward horizontal moves: each height's net outward move is dropped
 // and the points above it shifted back in by it, so the slopes stay as they were.
 extrude::Profile withoutOverhang(const extrude::Profile& profile);

@@ -4,6 +4,7 @@
 #include "city/import.h"
 #include "city/instances.h"
 #include "city/labels.h"
+#include "city/split.h"
 #include "city/street.h"
 #include "city/style.h"
 #include "city/tileset.h"
@@ -163,6 +164,15 @@ int run(const CityRequest& r) {
   if (around)  // only the buildings whose corners' mean lies within R of (X, Y)
     std::erase_if(order,
                   [&](std::size_t i) { return (centres[i] - Vec2((*around)[0], (*around)[1])).norm() > (*around)[2]; });
+  // A tile's source from city-split: its margin buildings are labelled with the rest but built
+  // by their own tile.
+  const std::size_t before = order.size();
+  std::erase_if(order, [&](std::size_t i) {
+    const auto& p = town.buildings[i].properties;
+    const auto m = p.is_object() ? p.find(city::kMarginProperty) : p.end();
+    return p.is_object() && m != p.end() && (m->is_boolean() ? m->get<bool>() : m->is_number() && m->get<double>() != 0);
+  });
+  const std::size_t margin = before - order.size();
   if (tiled) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tileOf[a] < tileOf[b]; });
     std::filesystem::create_directories(r.tiles);
@@ -340,8 +350,11 @@ int run(const CityRequest& r) {
   options.jobs = r.jobs;
   options.detail = detail;
   options.featuresApart = r.instances;
-  const city::TownSummary sum = city::buildTown(town, labels, style, options, sink, order,
-                                                [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
+  // (buildTown takes an empty order as every building: none are left to build here.)
+  const city::TownSummary sum =
+      order.empty() ? city::TownSummary{}
+                    : city::buildTown(town, labels, style, options, sink, order,
+                                      [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
   flushTile();
   flushLeaf();
   if (tree) {
@@ -384,6 +397,7 @@ int run(const CityRequest& r) {
   j["types"] = sum.types;
   j["faces"] = sum.faces;
   j["skipped_by_reason"] = reasons;
+  if (margin) j["margin"] = margin;
   if (tiled) j["tiles"] = tilesWritten;
   if (tree) j["tileset_files"] = tilesetFiles;
   if (r.instances) {

@@ -387,6 +387,32 @@ void declareCity(CLI::App& app, Requests& requests) {
   plots->needs(street);
 }
 
+void declareCitySplit(CLI::App& app, Requests& requests) {
+  CLI::App* c = command(
+      app, "city-split", "Cut footprints into square tiles for separate city builds (docs/city.md).",
+      "Writes OUT/sources/X_Y.geojson per tile that owns a building (the one holding the mean of its outer\n"
+      "ring's corners), with the buildings and streets within --margin of them marked \"corbel_margin\" (city\n"
+      "labels them but does not build them), and OUT/tiles.txt, one tile name a line, for a job runner:\n"
+      "  parallel -j 2 corbel-cli city OUT/sources/{}.geojson --style S --tileset OUT/tilesets/{} :::: OUT/tiles.txt\n"
+      "then city-merge OUT. Prints one JSON line.");
+  CitySplitRequest& r = requests.add<CitySplitRequest>(c);
+  positional(*c, "SOURCE", r.source, "Footprints: GeoJSON or any GDAL/OGR vector source.")->required();
+  number(*c, "--grid", r.grid, 0.01, 1000, "KM", "The tiles' side, km.")->required();
+  text(*c, "--out", r.out, "DIR", "A new or empty folder for the tiles' sources.")->required();
+  number(*c, "--margin", r.margin, 0, 10000, "M", "Neighbours within this of a tile's buildings go with them, for labels.");
+  choice(*c, "--coordinates", r.coordinates, {"auto", "lonlat", "metric"},
+         "How to read the footprints' coordinates (lonlat: as --crs EPSG:4326; metric: as --crs local).");
+  footprintOptions(*c, r.crs, r.layer, r.where);
+}
+
+void declareCityMerge(CLI::App& app, Requests& requests) {
+  CLI::App* c = command(app, "city-merge", "Write one 3D Tiles tileset over the tiles of a city-split folder (docs/city.md).",
+                        "Reads DIR/tilesets/NAME/tileset.json for every NAME of DIR/tiles.txt and writes DIR/tileset.json\n"
+                        "with their roots as children. Prints one JSON line.");
+  CityMergeRequest& r = requests.add<CityMergeRequest>(c);
+  positional(*c, "DIR", r.dir, "The folder city-split wrote, its tiles built into DIR/tilesets/NAME.")->required();
+}
+
 }  // namespace
 
 const Request* Requests::chosen(const CLI::App& app) const {
@@ -413,6 +439,8 @@ void declareCommands(CLI::App& app, Requests& requests) {
   declareGrow(app, requests);
   declareComplete(app, requests);
   declareCity(app, requests);
+  declareCitySplit(app, requests);
+  declareCityMerge(app, requests);
   app.footer("'corbel-cli SUBCOMMAND --help' gives a subcommand's options; docs/cli.md all of them.\n"
              "Exit codes: 0 success, 1 bad input or failed check, 2 bad command line.");
 }

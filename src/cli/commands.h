@@ -138,9 +138,20 @@ struct CityRequest {
   bool instances = false, compress = false;  // glb: EXT_mesh_gpu_instancing, EXT_meshopt_compression
 };
 
+struct CitySplitRequest {
+  std::string source, out;
+  std::string crs, layer, where, coordinates = "auto";
+  double grid = 1;      // km
+  double margin = 200;  // m
+};
+
+struct CityMergeRequest {
+  std::string dir;
+};
+
 using Request = std::variant<RenderRequest, ExportRequest, CheckRequest, EditRequest, ExtrudeRequest, StaticsArchRequest,
                              StaticsExampleRequest, StaticsProjectRequest, SimulateRequest, KifsRequest, GrowRequest,
-                             CompleteRequest, CityRequest>;
+                             CompleteRequest, CityRequest, CitySplitRequest, CityMergeRequest>;
 
 // The requests of the declared subcommands, each where the parse writes it.
 class Requests {

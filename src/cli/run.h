@@ -19,5 +19,7 @@ int run(const KifsRequest& r);      // kifs_command.cpp
 int run(const GrowRequest& r);      // grow.cpp
 int run(const CompleteRequest& r);  // complete.cpp
 int run(const CityRequest& r);      // city_command.cpp
+int run(const CitySplitRequest& r);  // city_split_command.cpp
+int run(const CityMergeRequest& r);  // city_split_command.cpp
 
 }  // namespace corbel::cli

@@ -7,7 +7,9 @@
 //   parent's, geometric errors fall from parent to child and a leaf's is 0; refinement REPLACE;
 // - a block tile's error is at least the height of each of its blocks, and its blocks are as
 //   many as the buildings of the tile that refines it;
-// - the leaves' triangles add up to WHOLE.glb's (the same town written as one glb);
+// - the leaves' triangles add up to WHOLE.glb's (the same town written as one glb), and every
+//   building of WHOLE.glb is in exactly one leaf tile;
+// - a merged tileset (no root transform): each part's root transform a rigid motion;
 // - each building lands on the globe where the footprint file puts it: its surface's centroid
 //   in WHOLE.glb (the file's equirectangular frame about LON, LAT on the sphere of radius R, taken
 //   back to lon/lat by that projection's formulas) against the same centroid in its tile, placed by
@@ -160,18 +162,34 @@ function boxCorners(box) {
   if (!tileset.asset || tileset.asset.version !== '1.1') fail(`asset.version ${tileset.asset && tileset.asset.version}, not 1.1`);
   const raw = JSON.parse(fs.readFileSync(path.join(dir, 'tileset.json'), 'utf8'));
 
-  // The root transform against the ellipsoid's formulas.
-  const t = raw.root.transform;
+  // The root transform against the ellipsoid's formulas. A merged tileset (corbel-cli
+  // city-merge) has none: each part's root has its own, a rigid motion (a part whose root is a
+  // leaf is placed at the leaf's centre), and the buildings' placement below checks them.
   const want = enu(Number(lonArg), Number(latArg), Number(heightArg));
-  const origin = [t[12], t[13], t[14]];
-  const dist = Math.hypot(...origin.map((x, k) => x - want.origin[k]));
-  if (!(dist < 1e-3)) fail(`the root transform puts the origin ${dist} m from (${lonArg}, ${latArg}, ${heightArg})`);
-  for (const [c, name] of [[0, 'east'], [1, 'north'], [2, 'up']]) {
-    const col = t.slice(4 * c, 4 * c + 3);
-    const err = Math.max(...col.map((x, k) => Math.abs(x - want[name][k])));
-    if (!(err < 1e-9)) fail(`the transform's ${name} axis is off by ${err}`);
+  let dist = 0;
+  const t = raw.root.transform;
+  if (t) {
+    const origin = [t[12], t[13], t[14]];
+    dist = Math.hypot(...origin.map((x, k) => x - want.origin[k]));
+    if (!(dist < 1e-3)) fail(`the root transform puts the origin ${dist} m from (${lonArg}, ${latArg}, ${heightArg})`);
+    for (const [c, name] of [[0, 'east'], [1, 'north'], [2, 'up']]) {
+      const col = t.slice(4 * c, 4 * c + 3);
+      const err = Math.max(...col.map((x, k) => Math.abs(x - want[name][k])));
+      if (!(err < 1e-9)) fail(`the transform's ${name} axis is off by ${err}`);
+    }
   }
-  if (t[3] !== 0 || t[7] !== 0 || t[11] !== 0 || t[15] !== 1) fail('the transform is not affine');
+  for (const part of t ? [raw.root] : raw.root.children || []) {
+    const m = part.transform;
+    if (!m) { fail('a part of a merged tileset without a transform'); continue; }
+    if (m[3] !== 0 || m[7] !== 0 || m[11] !== 0 || m[15] !== 1) fail('a transform that is not affine');
+    for (let a = 0; a < 3; ++a)
+      for (let b = 0; b < 3; ++b) {
+        const dot = [0, 1, 2].reduce((s, k) => s + m[4 * a + k] * m[4 * b + k], 0);
+        // 1e-8: a micrometre over a leaf's 300 m (PROJ's topocentric frames, multiplied, stay
+        // within 2e-9 of orthonormal).
+        if (!(Math.abs(dot - (a === b ? 1 : 0)) < 1e-8)) fail(`a transform whose axes ${a}, ${b} are not orthonormal (${dot})`);
+      }
+  }
 
   let tiles = 0, contents = 0, leafTriangles = 0, blockTiles = 0, glbs = [];
   const walk = async (tile, parent, depth, parentFrame) => {
@@ -203,6 +221,7 @@ function boxCorners(box) {
         for (const m of meshes) {
           if (m.instanced) continue;
           const c = m.centroid;
+          if (placed.has(m.name)) fail(`${m.name}: in two leaf tiles`);
           placed.set(m.name, {ecef: apply(frame, c), d: Math.hypot(c[0], c[1])});
         }
     }
@@ -244,7 +263,8 @@ function boxCorners(box) {
   const k = Math.abs(a / Math.sqrt(w) / R - 1) + Math.abs((a * (1 - e2)) / w ** 1.5 / R - 1) + 1e-3;
   let worst = 0, compared = 0;
   for (const m of await readGlb(wholeGlb)) {
-    if (m.instanced || !placed.has(m.name)) continue;
+    if (m.instanced) continue;
+    if (!placed.has(m.name)) { fail(`${m.name}: in the whole town, in no leaf tile`); continue; }
     const [x, y, z] = m.centroid;
     const lat = lat0 + y / R / rad, lon = lon0 + x / (R * Math.cos(lat0 * rad)) / rad;
     const truth = enu(lon, lat, h0 + z).origin;
