@@ -2,10 +2,15 @@
 // a needle the kernel did not make.
 #include "shell_checks.h"
 
+#include "core/project_io.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
 
 namespace corbel::extrude::test {
 namespace {
@@ -46,6 +51,42 @@ TEST(ShellChecks, NoCutPassesWithinToleranceOfAnotherCorner) {
   }
   EXPECT_EQ(tris.size(), 4u);
   EXPECT_NEAR(sum, shoelace, 1e-12);
+}
+
+// A driver, not a test: CORBEL_SHELL_CHECK_FILES names project files (space-separated, as the
+// random run saves them under extrude-random-failures/geometry/); each one's first extrusion
+// is built and its shell checked, and the problem printed. Run with
+// --gtest_also_run_disabled_tests --gtest_filter='ShellChecks.DISABLED_Files'.
+TEST(ShellChecks, DISABLED_Files) {
+  const char* files = std::getenv("CORBEL_SHELL_CHECK_FILES");
+  if (!files) GTEST_SKIP() << "CORBEL_SHELL_CHECK_FILES names no files";
+  std::istringstream in(files);
+  for (std::string path; in >> path;) {
+    const Document d = loadProject(path).document;
+    const ExtrusionSpec& spec = std::get<ExtrusionSpec>(d.objects.at(0).spec);
+    std::string problem;
+    try {
+      // CORBEL_SHELL_CHECK_FACTOR: the tolerance factor (as a rebuild uses), 1 unless given.
+      const char* factor = std::getenv("CORBEL_SHELL_CHECK_FACTOR");
+      const SweepOutput shell = extrude(spec, nullptr, ExtrudeOptions{0.0, factor ? std::atof(factor) : 1.0, false}).shell;
+      std::cout.precision(12);
+      std::cout << "volume " << measure(shell).volume << ", roof area " << measure(shell).roofArea << "\n";
+      problem = shellGeometryProblem(shell, spec);
+      // CORBEL_SHELL_CHECK_FACE=N also prints face N's corners.
+      if (const char* face = std::getenv("CORBEL_SHELL_CHECK_FACE")) {
+        const ShellFace& f = shell.faces.at(std::atoi(face));
+        std::cout.precision(12);
+        for (const auto& loop : f.loops) {
+          std::cout << "loop:";
+          for (int v : loop) std::cout << " v" << v << " (" << shell.points[v][0] << ", " << shell.points[v][1] << ", " << shell.points[v][2] << ")";
+          std::cout << "\n";
+        }
+      }
+    } catch (const std::exception& e) {
+      problem = std::string("build failed: ") + e.what();
+    }
+    std::cout << path << ": " << (problem.empty() ? "ok" : problem) << "\n";
+  }
 }
 
 }  // namespace
