@@ -67,6 +67,9 @@ Pictures picturesOf(const StaticsModelOptions& m) {
   p.width = m.size.width;
   p.height = m.size.height;
   p.landscape = m.landscape;
+  // CLI11 takes fewer than the three words when the line ends early: count them here.
+  if (!p.landscape.empty() && p.landscape.size() != 3)
+    throw UsageError("--landscape: expected NAME1 NAME2 PNG, got " + std::to_string(p.landscape.size()) + " word(s)");
   if (!p.landscape.empty() && !endsWithPng(p.landscape[2]))
     throw UsageError("--landscape: expected NAME1 NAME2 PNG, and '" + p.landscape[2] + "' is not a .png file");
   p.samples = m.samples;
