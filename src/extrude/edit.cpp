@@ -1,5 +1,6 @@
 #include "extrude/edit.h"
 
+#include "core/polygon_area.h"
 #include "core/error.h"
 #include "extrude/plan_check.h"
 
@@ -28,12 +29,6 @@ Profile& profileAt(ExtrusionSpec& s, int profile) {
 }
 
 bool finite(const Vec2& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }
-
-double signedArea(const std::vector<Vec2>& p) {
-  double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) a += p[i][0] * p[(i + 1) % p.size()][1] - p[(i + 1) % p.size()][0] * p[i][1];
-  return a / 2;
-}
 
 bool inside(const Vec2& q, const std::vector<Vec2>& poly) {
   bool in = false;

@@ -1,5 +1,6 @@
 #include "extrude/footprints.h"
 
+#include "core/polygon_area.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json_reader.h"
@@ -9,15 +10,6 @@
 namespace corbel::extrude {
 
 namespace {
-
-double signedArea(const std::vector<Vec2>& p) {
-  double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec2 &u = p[i], &v = p[(i + 1) % p.size()];
-    a += u[0] * v[1] - u[1] * v[0];
-  }
-  return a / 2;
-}
 
 // One GeoJSON polygon (array of rings) → loops; faults go to fp.problem.
 void readPolygon(const JsonReader& rings, Footprint& fp) {

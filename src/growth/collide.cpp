@@ -1,5 +1,6 @@
 #include "growth/collide.h"
 
+#include "core/polygon_area.h"
 #include "growth/tolerances.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
@@ -56,21 +57,11 @@ std::vector<Vec2> corners(const Polygon& p) {
   return out;
 }
 
-double shoelace(const std::vector<Vec2>& c) {
-  double a = 0;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    const Vec2& p = c[i];
-    const Vec2& q = c[(i + 1) % c.size()];
-    a += p[0] * q[1] - q[0] * p[1];
-  }
-  return a / 2;
-}
-
 }  // namespace
 
 double FreePolygon::area() const {
-  double a = shoelace(outer);
-  for (const auto& h : holes) a += shoelace(h);  // holes run clockwise: negative
+  double a = signedArea(outer);
+  for (const auto& h : holes) a += signedArea(h);  // holes run clockwise: negative
   return a;
 }
 

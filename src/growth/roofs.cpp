@@ -1,5 +1,6 @@
 #include "growth/roofs.h"
 
+#include "core/polygon_area.h"
 #include "extrude/extrude.h"
 #include "growth/tolerances.h"
 
@@ -57,16 +58,6 @@ std::vector<Vec2> loopOf(const Polygon& p) {
   std::vector<Vec2> out;
   for (const Point& q : pts) out.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
   return out;
-}
-
-double signedArea(const std::vector<Vec2>& loop) {
-  double a = 0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec2& p = loop[i];
-    const Vec2& q = loop[(i + 1) % loop.size()];
-    a += p[0] * q[1] - q[0] * p[1];
-  }
-  return a / 2;
 }
 
 Profile makeProfile(std::string name, std::vector<Vec2> points, std::vector<std::string> tags) {
