@@ -156,12 +156,14 @@ void declareExtrude(CLI::App& app, Requests& requests) {
   footprintOptions(*c, r.crs, r.layer, r.where);
 }
 
-// --friction, --kern and --friction-sides, for every statics form.
+// --friction, --conservative-friction, --kern and --friction-sides, for every statics form.
 void declareAnalysis(CLI::App& c, StaticsAnalysis& a) {
   number(c, "--friction", a.friction, 0, 100, "A", "The friction coefficient at the joints (default: the model's; 0.7).");
   number(c, "--kern", a.kern, 0, 0.99, "S",
          "Shrink each contact face by S towards its centre: forces must pass within it (0.667: the middle third; "
          "default: the model's; 0).");
+  c.add_flag("--conservative-friction", a.conservativeFriction,
+             "Use friction A/sqrt(2), so the friction pyramid lies inside the friction cone (Sec. 3.1).");
   c.add_option("--friction-sides", a.frictionSides, "The sides of the friction pyramid.")
       ->check(oneOf({"4", "8"}))
       ->type_name("4|8")
@@ -210,7 +212,20 @@ void declareStatics(CLI::App& app, Requests& requests) {
   text(*c, "--object", r.object, "NAME", "Only this masonry object or stone extrusion (--render and --landscape draw one).");
   declareModelOptions(*c, r.model);
   declareAnalysis(*c, r.analysis);
+  CLI::Option* save = c->add_flag(
+      "--save", r.save,
+      "Write the values the run ends with (--set, and --optimize's when the object then stands) back into the "
+      "project, atomically.");
   CLI::Option* scene = c->add_flag("--scene", r.scene, "Analyse the built geometry instead of the masonry objects.");
+  scene->excludes(save);
+  CLI::Option* together = c->add_flag(
+      "--together", r.together,
+      "Analyse every masonry object as one structure: blocks of different objects carry one another where their "
+      "faces meet; --optimize searches the free parameters of all of them (named OBJECT/PARAMETER).");
+  together->excludes(scene);
+  number(*c, "--contact-tolerance", r.contactTolerance, 0, 0.1, "M",
+         "With --together: faces of different objects this close (and opposite) touch (default 0.001 m).")
+      ->needs(together);
   addRepeated(*c, "--structural", r.structural, "With --scene: an object whose pieces are blocks, any kind.")
       ->type_name("NAME")
       ->needs(scene);
@@ -240,7 +255,8 @@ void declareStatics(CLI::App& app, Requests& requests) {
       "NAME: tower (Fig. 11), arch-on-columns (Fig. 8), barrel-vault (Fig. 13), flying-buttresses (Fig. 13\n"
       "with flyers), bezier-arch (Fig. 12), chapel (Fig. 9, 480 blocks), abbey (Fig. 1, 988 blocks), mosque\n"
       "(Fig. 10 c, a windowed drum with flyers, 296), mosque-hall (Fig. 10 a, d, on a square hall, 336),\n"
-      "groin-vault (a groin vault on four corner piers, 80).\n"
+      "groin-vault (a groin vault on four corner piers, 80); or a template alone: semicircular-arch,\n"
+      "pointed-arch, column, wall, buttress, dome, dome-on-drum.\n"
       "Prints y/W² and the solver's status; with --optimize, the search's status (feasible or local\n"
       "minimum), its iterations and the values it found.");
   StaticsExampleRequest& e = requests.add<StaticsExampleRequest>(example);

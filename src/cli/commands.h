@@ -53,7 +53,9 @@ struct ExtrudeRequest {
 // The analysis settings every statics form takes; unset: the model's own (0.7 and 0 for arch).
 struct StaticsAnalysis {
   std::optional<double> friction, kern;
+  bool conservativeFriction = false;  // α/√2 (Sec. 3.1), also when the project's object does not ask for it
   int frictionSides = 4;
+  double contactTolerance = 0;  // set by statics PROJECT --together (its --contact-tolerance)
 };
 
 struct StaticsArchRequest {
@@ -87,6 +89,9 @@ struct StaticsExampleRequest {
 // statics PROJECT.corbel, its masonry objects (or with --scene, the built geometry).
 struct StaticsProjectRequest {
   std::string project, object;
+  bool save = false;  // write the values the run ends with back into the project
+  bool together = false;          // every masonry object as one structure (statics/composite.h)
+  double contactTolerance = 0.001;  // with --together: faces of different objects this close touch, m
   StaticsAnalysis analysis;
   StaticsModelOptions model;
   bool scene = false;

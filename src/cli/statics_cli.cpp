@@ -11,9 +11,11 @@
 #include "editor/masonry_view.h"
 #include "render/headless_context.h"
 #include "statics/analysis.h"
+#include "statics/composite.h"
 #include "statics/arch.h"
 #include "statics/examples.h"
 #include "statics/kernel.h"
+#include "statics/loads.h"
 #include "statics/scene_blocks.h"
 #include "statics/search.h"
 #include "compose/stone_extrusion.h"
@@ -36,10 +38,13 @@
 namespace corbel::cli {
 namespace {
 
-statics::AnalysisOptions analysisOptions(const StaticsAnalysis& a, double friction, double kern) {
+statics::AnalysisOptions analysisOptions(const StaticsAnalysis& a, double friction, double kern,
+                                         bool conservative = false) {
   statics::AnalysisOptions options;
   options.friction = a.friction.value_or(friction);
+  options.conservativeFriction = a.conservativeFriction || conservative;
   options.kernShrink = a.kern.value_or(kern);
+  options.contactTolerance = a.contactTolerance;
   options.frictionSides = a.frictionSides;
   return options;
 }
@@ -111,10 +116,12 @@ void drawPictures(const Pictures& pictures, const MasonrySpec& base, const stati
   spec.parameters.clear();
   for (const statics::Parameter& p : values.all()) spec.parameters.push_back({p.name, p.value});
   spec.friction = options.friction;
+  spec.conservativeFriction = options.conservativeFriction;
   spec.kern = options.kernShrink;
   if (!pictures.render.empty()) {
-    // A masonry object's view comes from its spec; an extrusion in stone has none.
-    const editor::MasonryView view = model.name == statics::kStoneModelName
+    // A masonry object's view comes from its spec; an extrusion in stone and objects analysed
+    // together have none.
+    const editor::MasonryView view = model.name != base.model
                                          ? editor::analyseModel(model, values, options)
                                          : editor::analyseMasonry(spec, options);
     if (!view.error.empty()) throw Error(view.error);
@@ -172,8 +179,11 @@ void putAnalysis(const statics::AnalysisResult& r, nlohmann::ordered_json& out) 
 // Analyses (or, with --optimize, searches) one model: an example by name, or a project's
 // masonry object (`base`: its spec, for the pictures). `free` and the analysis settings are
 // the defaults the command line overrides.
+// `ended`, when given, gets the values the run ends with: after --set, and with --optimize the
+// search's when the model then stands (left empty when it does not).
 int runModel(const StaticsModelOptions& a, const StaticsAnalysis& analysis, const statics::ParametricModel& model,
-             std::vector<statics::FreeParameter> free, const MasonrySpec& base, const std::string& object) {
+             std::vector<statics::FreeParameter> free, const MasonrySpec& base, const std::string& object,
+             std::optional<statics::ParameterSet>* ended = nullptr) {
   const Pictures pictures = picturesOf(a);
   statics::ParameterSet values = model.parameters;
   for (const std::string& s : a.sets) {
@@ -193,7 +203,7 @@ int runModel(const StaticsModelOptions& a, const StaticsAnalysis& analysis, cons
       throw Error("--landscape: two different parameters are needed, not " + x.parameter + " twice");
   }
   statics::SearchOptions options;
-  options.analysis = analysisOptions(analysis, base.friction, base.kern);
+  options.analysis = analysisOptions(analysis, base.friction, base.kern, base.conservativeFriction);
   options.algorithm = a.algorithm;
   options.maxEvaluations = a.maxEvaluations;
   options.maxSeconds = a.maxSeconds;
@@ -202,6 +212,23 @@ int runModel(const StaticsModelOptions& a, const StaticsAnalysis& analysis, cons
   if (!object.empty()) out["object"] = object;
   out["example"] = model.name;
   out["blocks"] = model.build(values).blocks.size();
+  if (!base.loads.empty()) {
+    // The object's loads as the analysis applies them: where each acts and its force.
+    nlohmann::ordered_json loads = nlohmann::ordered_json::array();
+    MasonrySpec bare = base;
+    bare.loads.clear();
+    const statics::ParametricModel plain = statics::modelOf(bare);
+    const std::vector<statics::ResolvedLoad> resolved = statics::resolveLoads(plain.build(values), base.loads);
+    for (std::size_t k = 0; k < resolved.size(); ++k) {
+      const statics::PointLoad& l = resolved[k].load;
+      loads.push_back({{"name", base.loads[k].name},
+                       {"block", base.loads[k].block},
+                       {"at", {l.at[0], l.at[1], l.at[2]}},
+                       {"force", {l.force[0], l.force[1], l.force[2]}}});
+    }
+    out["loads"] = std::move(loads);
+  }
+  if (ended && !optimize) *ended = values;
   if (!optimize) {
     putAnalysis(statics::analyse(model.build(values), options.analysis), out);
     drawPictures(pictures, base, model, values, free, options.analysis, out);
@@ -216,6 +243,7 @@ int runModel(const StaticsModelOptions& a, const StaticsAnalysis& analysis, cons
         return true;
       };
     const statics::SearchResult r = statics::searchParameters(model, free, options, &values);
+    if (ended && r.status == statics::SearchStatus::Feasible) *ended = r.values;
     out["measure"] = r.measure;
     out["initial_measure"] = r.initialMeasure;
     out["y"] = r.y;
@@ -272,12 +300,91 @@ bool isMasonry(const DocObject& o) {
   return std::holds_alternative<MasonrySpec>(o.spec);
 }
 
+// The object's model: a masonry object's, or an extrusion's in stone.
+statics::ParametricModel masonryModelOf(const DocObject& o) {
+  if (const auto* e = std::get_if<ExtrusionSpec>(&o.spec)) return statics::stoneModel(*e);
+  return statics::modelOf(std::get<MasonrySpec>(o.spec));
+}
+
+// --save: object `o` of `saved` at the values its run ended with. A masonry object keeps every
+// parameter it set and gains each one the run changed (in name order); an extrusion in stone
+// takes its section's values (statics::stoneWallsAt).
+void writeBack(Document& saved, const DocObject& o, const statics::ParameterSet& ended) {
+  DocObject& target = *saved.find(o.id);
+  if (auto* e = std::get_if<ExtrusionSpec>(&target.spec)) {
+    e->masonry = statics::stoneWallsAt(*e->masonry, ended);
+    return;
+  }
+  const MasonrySpec& spec = std::get<MasonrySpec>(o.spec);
+  const statics::ParametricModel before = statics::modelOf(spec);
+  std::map<std::string, double> values;
+  for (const MasonryParameter& q : spec.parameters) values[q.name] = q.value;
+  for (const statics::Parameter& q : ended.all())
+    if (values.count(q.name) || q.value != before.parameters[q.name]) values[q.name] = q.value;
+  MasonrySpec& next = std::get<MasonrySpec>(target.spec);
+  next.parameters.clear();
+  for (const auto& [name, value] : values) next.parameters.push_back({name, value});
+}
+
+// statics PROJECT --together: every masonry object (and extrusion in stone) of the project as one
+// structure (statics/composite.h), its parameters "object/parameter", the objects' free ones free
+// (their suggested ones when none is), contacts between objects within --contact-tolerance.
+int togetherCommand(const StaticsProjectRequest& r, const LoadedProject& p) {
+  if (!r.object.empty()) throw UsageError("statics: --together analyses every masonry object; drop --object");
+  std::vector<statics::CompositePart> parts;
+  std::vector<const DocObject*> objects;
+  std::vector<statics::FreeParameter> free;
+  MasonrySpec base;  // the first masonry object's friction, α/√2 and kern, unless the flags say
+  bool haveBase = false;
+  for (const DocObject& o : p.document.objects) {
+    if (!isMasonry(o)) continue;
+    try {
+      parts.push_back({o.name, masonryModelOf(o), o.placement});
+    } catch (const InputError& e) {
+      throw InputError(o.name + ": " + e.where, e.reason);
+    }
+    objects.push_back(&o);
+    if (const auto* spec = std::get_if<MasonrySpec>(&o.spec)) {
+      for (const MasonryFree& f : spec->free) free.push_back({o.name + "/" + f.name, f.lo, f.hi});
+      if (!haveBase) {
+        base.friction = spec->friction;
+        base.kern = spec->kern;
+        base.conservativeFriction = spec->conservativeFriction;
+        haveBase = true;
+      }
+    }
+  }
+  if (parts.size() < 2)
+    throw Error("--together analyses two or more masonry objects as one; the project has " +
+                std::to_string(parts.size()));
+  const statics::ParametricModel model = statics::compositeModel(std::move(parts));
+  std::optional<statics::ParameterSet> ended;
+  StaticsAnalysis analysis = r.analysis;
+  analysis.contactTolerance = r.contactTolerance;
+  const int code = runModel(r.model, analysis, model, free, base, "together", &ended);
+  if (!r.save) return code;
+  if (!ended) {
+    std::cerr << "corbel-cli: the objects do not stand together after the search: nothing is saved\n";
+    return code;
+  }
+  Document saved = p.document;
+  for (const DocObject* o : objects) {
+    statics::ParameterSet own = masonryModelOf(*o).parameters;
+    for (const statics::Parameter& q : own.all()) own.set(q.name, (*ended)[o->name + "/" + q.name]);
+    writeBack(saved, *o, own);
+  }
+  if (!(saved == p.document)) saveProject(saved, r.project);
+  if (!r.model.json) std::cout << "saved: " << r.project << (saved == p.document ? " (unchanged)" : "") << "\n";
+  return code;
+}
+
 // statics PROJECT: every masonry object of the project (or the one --object names), with its
 // own parameters, free bounds, friction and kern (core/masonry_spec.h).
 int projectCommand(const StaticsProjectRequest& r) {
   picturesOf(r.model);  // a bad --render or --landscape before any work
   const LoadedProject p = loadProject(r.project);
   for (const auto& w : p.warnings) std::cerr << "corbel-cli: warning: " << r.project << ": " << w << "\n";
+  if (r.together) return togetherCommand(r, p);  // one structure: --render draws all of it
   const std::string& only = r.object;
   if (!r.model.render.empty() || !r.model.landscape.empty()) {
     int matching = 0;
@@ -288,33 +395,58 @@ int projectCommand(const StaticsProjectRequest& r) {
                        std::to_string(matching) + "; name one with --object");
   }
   int ran = 0, code = 0;
+  Document saved = p.document;  // with --save, each object at the values its run ended with
+  std::vector<std::string> unsaved, resting;  // resting: objects without a ground, on others
   for (const DocObject& o : p.document.objects) {
     if (!only.empty() && o.name != only) continue;
+    std::optional<statics::ParameterSet> ended;
     if (const auto* e = std::get_if<ExtrusionSpec>(&o.spec); e && e->masonry) {
       try {
         const statics::ParametricModel model = statics::stoneModel(*e);
-        code = std::max(code, runModel(r.model, r.analysis, model, {}, MasonrySpec{}, o.name));
+        code = std::max(code, runModel(r.model, r.analysis, model, {}, MasonrySpec{}, o.name, &ended));
       } catch (const InputError& err) {
         throw InputError(o.name + ": extrusion." + err.where, err.reason);
       }
       ++ran;
+      if (ended)
+        writeBack(saved, o, *ended);
+      else
+        unsaved.push_back(o.name);
       continue;
     }
     const auto* spec = std::get_if<MasonrySpec>(&o.spec);
     if (!spec) continue;
+    if (!spec->ground) {
+      resting.push_back(o.name);
+      continue;
+    }
     std::vector<statics::FreeParameter> free;
     for (const MasonryFree& f : spec->free) free.push_back({f.name, f.lo, f.hi});
     try {
-      code = std::max(code, runModel(r.model, r.analysis, statics::modelOf(*spec), free, *spec, o.name));
+      code = std::max(code, runModel(r.model, r.analysis, statics::modelOf(*spec), free, *spec, o.name, &ended));
     } catch (const InputError& e) {
       throw InputError(o.name + ": " + e.where, e.reason);
     }
     ++ran;
+    if (ended)
+      writeBack(saved, o, *ended);
+    else
+      unsaved.push_back(o.name);
   }
+  for (const std::string& name : resting)
+    std::cerr << "corbel-cli: " << name << " rests on other objects (its ground is off): analysed only with --together\n";
+  if (ran == 0 && !resting.empty())
+    throw Error("the masonry objects rest on one another (ground off): analyse them with --together");
   if (ran == 0)
     throw Error(only.empty() ? "the project has no masonry object (nor an extrusion with a masonry section)"
                              : "the project has no masonry object (nor an extrusion with a masonry section) named \"" +
                                    only + "\"");
+  if (r.save) {
+    for (const std::string& name : unsaved)
+      std::cerr << "corbel-cli: " << name << " does not stand after the search: its values are not saved\n";
+    if (!(saved == p.document)) saveProject(saved, r.project);
+    if (!r.model.json) std::cout << "saved: " << r.project << (saved == p.document ? " (unchanged)" : "") << "\n";
+  }
   return code;
 }
 

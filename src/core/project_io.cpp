@@ -4,6 +4,7 @@
 #include "core/json_reader.h"
 #include "core/kifs_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -37,14 +38,33 @@ ojson masonryToJson(const MasonrySpec& m) {
   for (const MasonryFree& f : m.free) free[f.name] = {f.lo, f.hi};
   j["free"] = std::move(free);
   j["friction"] = m.friction;
+  if (m.conservativeFriction) j["conservative_friction"] = true;
   j["kern"] = m.kern;
+  if (!m.loads.empty()) {
+    ojson loads = ojson::array();
+    for (const MasonryLoad& l : m.loads) {
+      ojson o;
+      o["name"] = l.name;
+      o["block"] = l.block;
+      if (l.face >= 0) {
+        o["face"] = l.face;
+        o["pressure"] = l.pressure;
+      } else {
+        o["offset"] = vec(l.offset);
+        o["force"] = vec(l.force);
+      }
+      loads.push_back(std::move(o));
+    }
+    j["loads"] = std::move(loads);
+  }
+  if (!m.ground) j["ground"] = false;
   j["material"] = m.material;
   return j;
 }
 
 MasonrySpec masonryFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"model", "parameters", "free", "friction", "kern", "material"}))
+  for (auto& k : r.unknownKeys({"model", "parameters", "free", "friction", "conservative_friction", "kern", "loads", "ground", "material"}))
     warnings.push_back(k + ": unknown key kept");
   MasonrySpec m;
   const JsonReader model = r.at("model");
@@ -73,10 +93,32 @@ MasonrySpec masonryFromJson(const JsonReader& r, std::vector<std::string>& warni
       m.free.push_back({name, b[0], b[1]});
     }
   if (auto v = r.find("friction")) m.friction = v->number(0.0, 100.0);
+  if (auto v = r.find("conservative_friction")) m.conservativeFriction = v->boolean();
   if (auto v = r.find("kern")) {
     m.kern = v->number(0.0, 1.0);
     if (m.kern >= 1.0) v->fail("the kern factor must be below 1 (1 would shrink every contact to a point)");
   }
+  if (auto v = r.find("loads"))
+    for (const JsonReader& e : v->array(limits::kMaxMasonryLoads)) {
+      e.expectObject();
+      for (auto& k : e.unknownKeys({"name", "block", "offset", "force", "face", "pressure"}))
+        warnings.push_back(k + ": unknown key kept");
+      MasonryLoad l;
+      if (auto n = e.find("name")) l.name = n->string(limits::kMaxNameLength);
+      l.block = e.at("block").string(limits::kMaxNameLength);
+      if (auto f = e.find("face")) {
+        // A load per area: a face and a pressure, no point force.
+        if (e.find("force") || e.find("offset")) e.fail("a load has either a face and a pressure or a force, not both");
+        l.face = static_cast<int>(f->integer(0, 1000000));
+        l.pressure = e.at("pressure").number(-1e9, 1e9);
+      } else {
+        if (e.find("pressure")) e.fail("a pressure needs the face it acts on (\"face\": index in the block)");
+        l.force = e.at("force").vec3();
+        if (auto o = e.find("offset")) l.offset = o->vec3();
+      }
+      m.loads.push_back(std::move(l));
+    }
+  if (auto v = r.find("ground")) m.ground = v->boolean();
   if (auto v = r.find("material")) m.material = v->string(limits::kMaxNameLength);
   return m;
 }
@@ -1114,7 +1156,11 @@ std::string serializeProject(const Document& doc, const std::string& folder) {
     else if (const auto* t = std::get_if<TownSpec>(&o.spec)) j["town"] = townToJson(*t, folder);
     else j["extrusion"] = extrusionToJson(std::get<ExtrusionSpec>(o.spec));
     if (o.background) j["plan_background"] = backgroundToJson(*o.background, folder);
-    if (!o.placement.identity()) j["placement"] = placementToJson(o.placement);
+    // An identity placement is left out, unless it holds a key kept from the file (which would
+    // be lost with it).
+    const bool keptInPlacement = std::any_of(o.kept.begin(), o.kept.end(),
+                                             [](const KeptKey& k) { return k.pointer.rfind("/placement/", 0) == 0; });
+    if (!o.placement.identity() || keptInPlacement) j["placement"] = placementToJson(o.placement);
     putKept(j, o.kept);
     objects.push_back(std::move(j));
   }

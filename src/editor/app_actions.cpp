@@ -184,15 +184,23 @@ void App::registerActions() {
        }});
   for (const MasonryTemplate& t : masonryTemplates()) {
     add({"object.add_masonry_" + t.model,
-         "Object/Add/Masonry",
+         t.example ? "Object/Add/Masonry/Examples" : "Object/Add/Masonry",
          t.label,
-         "Add the statics template " + t.model + " (Whiting et al. 2009) at the origin; analyse it and make it stand "
-         "in the statics panel.",
+         "Add the statics " + std::string(t.example ? "example " : "template ") + t.model +
+             " (Whiting et al. 2009) next to the existing objects; analyse it, load it and make it stand in the "
+             "statics panel.",
          {},
          true,
          [this, doc, added, t] {
            Document d = doc();
-           const ObjectId id = d.add(t.label.substr(0, t.label.find(" (")), masonryObject(t.model));
+           const MasonrySpec spec = masonryObject(t.model);
+           const ObjectId id = d.add(t.label.substr(0, t.label.find(" (")), spec);
+           // Beside the scene, as the other kinds are added, its ground slab included.
+           const BBox own = masonryBounds(spec), scene = scene_.bounds();
+           if (!scene.empty() && !own.empty()) {
+             const Vec2 at = besideScene(scene, own.size()[1]);
+             d.find(id)->placement.translation = Vec3(at[0] - own.lo[0], at[1] - own.lo[1], 0);
+           }
            added(std::move(d), id, "Add masonry " + t.model);
          }});
   }
@@ -439,6 +447,33 @@ void App::registerActions() {
        [this] { return statics_.searching(); }});
   // The collapse simulation (Sec. 5): never a Document change, so none is undoable.
   auto masonrySelected = [this] { return selectedMasonry() != nullptr; };
+  add({"statics.analyse_together",
+       "Statics",
+       "Analyse All Masonry Together",
+       "Analyse the selected masonry object with every other masonry object as one structure: each rests on the "
+       "others where their faces meet (within the panel's contact tolerance).",
+       {},
+       false,
+       [this] { statics_.analyseTogether(staticsHost()); },
+       masonrySelected});
+  add({"statics.make_stand_together",
+       "Statics",
+       "Make All Masonry Stand Together",
+       "Search the free parameters of every masonry object at once until they stand together (one undo step).",
+       {},
+       true,
+       [this] { statics_.makeThemStand(staticsHost()); },
+       masonrySelected});
+  add({"statics.place_load",
+       "Statics",
+       "Place Loads by Click",
+       "While on, a click on a block of the selected masonry object places a load there: a weight where you "
+       "click or wind on the face you click, as chosen in the statics panel (one undo step each).",
+       {},
+       false,
+       [this] { statics_.setPlacingLoad(!statics_.placingLoad()); },
+       masonrySelected,
+       [this] { return statics_.placingLoad(); }});
   add({"statics.sim_play",
        "Statics",
        "Simulate: Play / Pause",

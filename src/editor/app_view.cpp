@@ -114,8 +114,12 @@ void App::clickInView(const Ray& ray) {
     }
     // On a town it picks one of its buildings for the Town panel.
     if (selectedTown()) townPanel_.pick(townHost(), r.origin, r.direction);
-    // On a simulated masonry object it chooses a block for the remove-block tool.
-    if (selectedMasonry() && statics_.simulating()) statics_.pickBlock(staticsHost(), r.origin, r.direction);
+    // On a masonry object it places a load while the load tool is on; on a simulated one it
+    // chooses a block for the remove-block tool.
+    if (selectedMasonry() && statics_.placingLoad())
+      statics_.placeLoad(staticsHost(), r.origin, r.direction);
+    else if (selectedMasonry() && statics_.simulating())
+      statics_.pickBlock(staticsHost(), r.origin, r.direction);
     return;
   }
   if (!hit) {
@@ -179,7 +183,7 @@ void App::drawView() {
   }();
   const render::Overlay::Mark below = renderer_->overlay().mark(), above = renderer_->overlayOnTop().mark();
   if (const DocObject* m = selectedMasonry(); m && m->visible)
-    statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec));
+    statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec), m->placement);
   if (growthFor_ && selected() == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
   if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
   if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());

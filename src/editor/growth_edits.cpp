@@ -206,6 +206,7 @@ SiteFrame siteFrame(const std::string& siteText) {
     f.storeyHeight = parsed.storeyHeight;
     f.box = !(site.contains("envelope") && site["envelope"].contains("polygon"));
     f.controls = growth::seedControlsOf(siteText);
+    f.growth = parsed.growth;
     f.valid = true;
   } catch (const std::exception&) {
   }
@@ -303,6 +304,29 @@ SiteEditResult setStoreys(const GrowthSpec& spec, int storeys, double storeyHeig
   return editSite(spec, [&](json& site) -> std::string {
     site["storeys"] = storeys;
     site["storey_height"] = storeyHeight;
+    return "";
+  });
+}
+
+SiteEditResult setGrowthSettings(const GrowthSpec& spec, const growth::GrowthSettings& g) {
+  const growth::GrowthSettings d;
+  for (double v : {g.tau, g.intrusionPenalty, g.viewGoalRatio, g.aspectChance, g.doubleVolumeChance, g.maxAspect})
+    if (!std::isfinite(v)) return {std::nullopt, "growth.site.growth: a setting is not a finite number"};
+  return editSite(spec, [&](json& site) -> std::string {
+    json out = json::object();
+    if (g.tau != d.tau) out["tau"] = g.tau;
+    if (g.intrusionPenalty != d.intrusionPenalty) out["intrusion_penalty"] = g.intrusionPenalty;
+    if (g.viewGoalRatio != d.viewGoalRatio) out["view_goal_ratio"] = g.viewGoalRatio;
+    if (g.aspectChance != d.aspectChance) out["aspect_chance"] = g.aspectChance;
+    if (g.doubleVolumeChance != d.doubleVolumeChance) out["double_volume_chance"] = g.doubleVolumeChance;
+    if (g.maxAspect != d.maxAspect) out["max_aspect"] = g.maxAspect;
+    if (g.patience != d.patience) out["patience"] = g.patience;
+    if (g.minSubUnits != d.minSubUnits || g.maxSubUnits != d.maxSubUnits)
+      out["sub_units"] = json::array({g.minSubUnits, g.maxSubUnits});
+    if (out.empty())
+      site.erase("growth");
+    else
+      site["growth"] = std::move(out);
     return "";
   });
 }

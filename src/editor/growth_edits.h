@@ -67,6 +67,7 @@ struct SiteFrame {
   int storeys = 1;
   double storeyHeight = 3.0;
   std::optional<growth::SeedControls> controls;
+  growth::GrowthSettings growth;  // the view behaviour's settings ("growth"), defaults where unset
 };
 SiteFrame siteFrame(const std::string& siteText);
 
@@ -97,6 +98,11 @@ SiteEditResult setStoreys(const GrowthSpec& spec, int storeys, double storeyHeig
 // for nullopt (the site then keeps an empty "seeds" list if it had none); bad controls get
 // growth/seeding.h's message ("growth.site.generate_seeds.count: ...").
 SiteEditResult setSeedControls(const GrowthSpec& spec, const std::optional<growth::SeedControls>& controls);
+// The growth behaviour's settings ("growth": τ, the intrusion penalty, the chances, the
+// aspect limit, patience, sub-units; docs/growth.md): the keys that differ from the defaults are
+// written, and "growth" is removed when none does. Out-of-range values get the site reader's
+// message ("growth.site.growth.tau: ...").
+SiteEditResult setGrowthSettings(const GrowthSpec& spec, const growth::GrowthSettings& settings);
 
 // The plan view's drag: entry `index` as `from` has it (the entry when the drag started) moved by
 // (dx, dy) rounded to 0.5 m steps, in plan only (circulation and seeds keep their height and

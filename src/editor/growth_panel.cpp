@@ -583,6 +583,41 @@ void GrowthPanel::drawFrame(const GrowthHost& host, const GrowthSpec& spec) {
       changed = true, label = "Edit the seed generation of " + name, merge = "seedcontrols";
     }
   }
+  if (ImGui::CollapsingHeader("Growth behaviour")) {
+    // The view behaviour's settings (docs/growth.md, "Growth settings"); each drag one undo step.
+    growth::GrowthSettings g = frame_.growth;
+    const double zero = 0, one = 1, penaltyMax = 1000, ratioMax = 10, aspectMin = 1, aspectMax = 100;
+    const auto tip = [](const char* text) {
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+    };
+    bool c = ImGui::DragScalar("view conflict τ", ImGuiDataType_Double, &g.tau, 0.005f, &zero, &one, "%.3f");
+    tip("A move is refused if it leaves any unit under (1 − τ) of its best view");
+    c |= ImGui::DragScalar("intrusion penalty", ImGuiDataType_Double, &g.intrusionPenalty, 0.01f, &zero, &penaltyMax,
+                           "%.2f /m²");
+    tip("Score a move loses per m² of view it takes from other units");
+    c |= ImGui::DragScalar("double-volume chance", ImGuiDataType_Double, &g.doubleVolumeChance, 0.005f, &zero, &one,
+                           "%.3f");
+    tip("Chance a unit makes one part a double volume at half its target");
+    c |= ImGui::DragScalar("aspect chance", ImGuiDataType_Double, &g.aspectChance, 0.005f, &zero, &one, "%.3f");
+    tip("Chance a step takes the squarest move rather than the one with the best view");
+    c |= ImGui::DragScalar("max aspect 1 :", ImGuiDataType_Double, &g.maxAspect, 0.02f, &aspectMin, &aspectMax,
+                           "%.2f");
+    tip("No part's plan grows longer than this many times its width");
+    c |= ImGui::DragScalar("view goal ratio", ImGuiDataType_Double, &g.viewGoalRatio, 0.005f, &zero, &ratioMax,
+                           "%.3f");
+    tip("A unit's goal view is this times its target floor area (orders units by their view deficit)");
+    c |= ImGui::InputInt("patience", &g.patience);
+    tip("Steps without a valid move before a unit is stuck");
+    int sub[2] = {g.minSubUnits, g.maxSubUnits};
+    c |= ImGui::DragInt2("sub-units", sub, 0.05f, 1, 8);
+    tip("Least and most sub-units a target is grown as (drawn evenly)");
+    g.minSubUnits = sub[0], g.maxSubUnits = std::max(sub[0], sub[1]);
+    g.patience = std::clamp(g.patience, 1, 1000);
+    if (c) {
+      r = setGrowthSettings(spec, g);
+      changed = true, label = "Edit the growth behaviour of " + name, merge = "growthsettings";
+    }
+  }
   ImGui::PopItemWidth();
   if (changed) {
     commitSite(host, r, label, "site" + std::to_string(host.object) + merge, false);

@@ -1,6 +1,8 @@
 #include "editor/masonry_edits.h"
 
 #include "core/error.h"
+#include "editor/masonry_view.h"
+#include "statics/composite.h"
 #include "statics/kernel.h"
 
 #include <algorithm>
@@ -26,12 +28,81 @@ void check(const MasonrySpec& spec) {
   } catch (const InputError& e) {
     throw Error(e.reason);
   }
+  // A spec that frees nothing is valid (the search then takes the model's suggestion).
+  if (spec.free.empty()) return;
   std::vector<statics::FreeParameter> free;
   for (const MasonryFree& f : spec.free) free.push_back({f.name, f.lo, f.hi});
   statics::validateFreeParameters(model.parameters, free);
 }
 
+// Throws with the kernel's reason when a load names a block or face the model does not have.
+void checkLoads(const MasonrySpec& spec) {
+  check(spec);
+  try {
+    const statics::ParametricModel model = statics::modelOf(spec);
+    model.build(model.parameters);  // applies the loads, which throws for one that does not fit
+  } catch (const InputError& e) {
+    throw Error(e.reason);
+  }
+}
+
 }  // namespace
+
+void setMasonryAnalysis(Document& doc, ObjectId id, double friction, bool conservative, double kern) {
+  if (!std::isfinite(friction) || friction < 0 || friction > 100)
+    throw Error("the friction coefficient must be a number in [0, 100]");
+  if (!std::isfinite(kern) || kern < 0 || kern >= 1)
+    throw Error("the kern margin must be in [0, 1): 1 would shrink every contact to a point");
+  MasonrySpec& spec = masonryOf(doc, id);
+  spec.friction = friction;
+  spec.conservativeFriction = conservative;
+  spec.kern = kern;
+}
+
+std::size_t addMasonryLoad(Document& doc, ObjectId id, MasonryLoad load) {
+  MasonrySpec spec = masonryOf(doc, id);
+  if (spec.loads.size() >= limits::kMaxMasonryLoads)
+    throw Error("an object carries at most " + std::to_string(limits::kMaxMasonryLoads) + " loads");
+  if (load.name.empty()) {
+    // "load 3": the first number no load of the object is called by.
+    for (std::size_t k = 1;; ++k) {
+      const std::string n = (load.face >= 0 ? "wind " : "load ") + std::to_string(k);
+      if (std::none_of(spec.loads.begin(), spec.loads.end(), [&](const MasonryLoad& l) { return l.name == n; })) {
+        load.name = n;
+        break;
+      }
+    }
+  }
+  spec.loads.push_back(std::move(load));
+  checkLoads(spec);
+  masonryOf(doc, id) = std::move(spec);
+  return masonryOf(doc, id).loads.size() - 1;
+}
+
+void setMasonryLoad(Document& doc, ObjectId id, std::size_t index, MasonryLoad load) {
+  MasonrySpec spec = masonryOf(doc, id);
+  if (index >= spec.loads.size()) throw Error("there is no load " + std::to_string(index));
+  spec.loads[index] = std::move(load);
+  checkLoads(spec);
+  masonryOf(doc, id) = std::move(spec);
+}
+
+void removeMasonryLoad(Document& doc, ObjectId id, std::size_t index) {
+  MasonrySpec& spec = masonryOf(doc, id);
+  if (index >= spec.loads.size()) throw Error("there is no load " + std::to_string(index));
+  spec.loads.erase(spec.loads.begin() + std::ptrdiff_t(index));
+}
+
+std::vector<ParameterChange> parameterChanges(const MasonrySpec& before, const MasonrySpec& after) {
+  std::vector<ParameterChange> out;
+  if (before.model != after.model) return out;
+  const statics::ParametricModel a = statics::modelOf(before), b = statics::modelOf(after);
+  for (const statics::Parameter& p : a.parameters.all()) {
+    const double now = b.parameters[p.name];
+    if (now != p.value) out.push_back({p.name, p.value, now});
+  }
+  return out;
+}
 
 void setMasonryParameter(Document& doc, ObjectId id, const std::string& name, double value) {
   MasonrySpec spec = masonryOf(doc, id);
@@ -85,8 +156,7 @@ namespace {
 statics::SearchOptions searchOptionsOf(const MasonrySpec& spec, Progress* progress, int maxEvaluations,
                                        SearchTrace* trace = nullptr) {
   statics::SearchOptions options;
-  options.analysis.friction = spec.friction;
-  options.analysis.kernShrink = spec.kern;
+  options.analysis = analysisOptionsOf(spec);
   options.maxEvaluations = maxEvaluations;
   options.progress = [progress, maxEvaluations, trace](const statics::SearchProgress& p) {
     if (trace) trace->add(p.measure, p.values);
@@ -136,6 +206,63 @@ std::optional<Document> applySearch(const Document& doc, ObjectId id, const Maso
   if (!(*spec == started)) return refuse("the object was edited while the search ran");
   Document next = doc;
   for (const statics::FreeParameter& f : result.free) setMasonryParameter(next, id, f.name, result.values[f.name]);
+  return next;
+}
+
+MasonryTogether masonryTogether(const Document& doc, ObjectId lead, double contactTolerance) {
+  MasonryTogether t;
+  std::vector<statics::CompositePart> parts;
+  for (const DocObject& o : doc.objects) {
+    const auto* spec = std::get_if<MasonrySpec>(&o.spec);
+    if (!spec) continue;
+    try {
+      parts.push_back({o.name, statics::modelOf(*spec), o.placement});
+    } catch (const InputError& e) {
+      throw Error(o.name + ": " + e.reason);
+    }
+    for (const MasonryFree& f : spec->free) t.free.push_back({o.name + "/" + f.name, f.lo, f.hi});
+    t.objects.push_back(o.id);
+    if (o.id == lead) t.options = analysisOptionsOf(*spec);
+  }
+  if (parts.size() < 2) throw Error("there is no other masonry object to analyse this one with");
+  t.model = statics::compositeModel(std::move(parts));
+  if (t.free.empty()) t.free = t.model.suggestedFree;
+  t.options.contactTolerance = contactTolerance;
+  return t;
+}
+
+statics::SearchResult searchTogether(const MasonryTogether& together, Progress* progress, int maxEvaluations) {
+  statics::SearchOptions options;
+  options.analysis = together.options;
+  options.maxEvaluations = maxEvaluations;
+  options.progress = [progress, maxEvaluations](const statics::SearchProgress& p) {
+    if (!progress) return true;
+    progress->report(std::min(1.0, double(p.evaluation) / maxEvaluations), "searching");
+    return !progress->cancelled();
+  };
+  return statics::searchParameters(together.model, together.free, options, &together.model.parameters);
+}
+
+std::optional<Document> applyTogether(const Document& doc, const Document& started, const MasonryTogether& together,
+                                      const statics::SearchResult& result, std::string* why) {
+  auto refuse = [why](std::string reason) -> std::optional<Document> {
+    if (why) *why = std::move(reason);
+    return std::nullopt;
+  };
+  if (result.status == statics::SearchStatus::Cancelled) return refuse("the search was cancelled");
+  if (result.status != statics::SearchStatus::Feasible) return refuse("they do not stand together: " + result.message);
+  Document next = doc;
+  for (ObjectId id : together.objects) {
+    const DocObject* now = doc.find(id);
+    const DocObject* then = started.find(id);
+    if (!now || !then || !(now->spec == then->spec) || !(now->placement == then->placement) || now->name != then->name)
+      return refuse("an object was edited while the search ran");
+  }
+  for (const statics::FreeParameter& f : result.free) {
+    const auto [object, parameter] = statics::splitCompositeName(f.name);
+    for (ObjectId id : together.objects)
+      if (next.find(id)->name == object) setMasonryParameter(next, id, parameter, result.values[f.name]);
+  }
   return next;
 }
 

@@ -24,6 +24,27 @@ void setMasonryParameter(Document& doc, ObjectId id, const std::string& name, do
 void setMasonryFree(Document& doc, ObjectId id, const std::string& name,
                     std::optional<std::pair<double, double>> bounds);
 
+// The analysis settings: friction α (Sec. 3.1), whether to use α/√2 (the pyramid inside the
+// cone), and the kern margin (Sec. 3.4). Throws for α outside [0, 100] or a margin outside [0, 1).
+void setMasonryAnalysis(Document& doc, ObjectId id, double friction, bool conservative, double kern);
+
+// Loads on the object's blocks (core/masonry_spec.h). Each checks the load against the model
+// (a block and face it has, finite numbers) and throws with the kernel's reason, changing
+// nothing. An unnamed load is called "load N" (a point load) or "wind N" (a pressure), N the
+// first number free. addMasonryLoad returns the new load's index.
+std::size_t addMasonryLoad(Document& doc, ObjectId id, MasonryLoad load);
+void setMasonryLoad(Document& doc, ObjectId id, std::size_t index, MasonryLoad load);
+void removeMasonryLoad(Document& doc, ObjectId id, std::size_t index);
+
+// What a change did to the model's parameters (after "Make it stand": the before → after list),
+// every parameter whose value differs, in the model's order; the model's defaults stand for
+// parameters a spec does not set.
+struct ParameterChange {
+  std::string name;
+  double before = 0, after = 0;
+};
+std::vector<ParameterChange> parameterChanges(const MasonrySpec& before, const MasonrySpec& after);
+
 // Bounds offered when the user frees `p`: the model's suggestion for it when there is one,
 // else its value ± 50 % (± 1 at zero), clipped into its valid range.
 std::pair<double, double> defaultBounds(const statics::Parameter& p,
@@ -75,5 +96,26 @@ statics::SearchResult resolveAfterEdit(const MasonrySpec& spec, const std::strin
 // removed while the search ran: the result belongs to a structure that is gone).
 std::optional<Document> applySearch(const Document& doc, ObjectId id, const MasonrySpec& started,
                                     const statics::SearchResult& result, std::string* why = nullptr);
+
+// Every masonry object of the document as one structure (statics/composite.h): the parts in the
+// document's order, the objects' free parameters under "object/parameter" (their models'
+// suggested ones when no object frees any), and the analysis settings of `lead` (the selected
+// object: its friction, α/√2 and kern) with faces of different objects within
+// `contactTolerance` m touching. Throws corbel::Error with the kernel's reason.
+struct MasonryTogether {
+  statics::ParametricModel model;
+  std::vector<statics::FreeParameter> free;
+  statics::AnalysisOptions options;
+  std::vector<ObjectId> objects;
+};
+MasonryTogether masonryTogether(const Document& doc, ObjectId lead, double contactTolerance);
+
+// Make them stand together: the search over `together.free`, then (applyTogether) every object's
+// own values written into the Document as one change. Nothing is applied (nullopt, the reason in
+// `why`) when the search did not stand or any of the objects changed while it ran.
+statics::SearchResult searchTogether(const MasonryTogether& together, Progress* progress = nullptr,
+                                     int maxEvaluations = 200);
+std::optional<Document> applyTogether(const Document& doc, const Document& started, const MasonryTogether& together,
+                                      const statics::SearchResult& result, std::string* why = nullptr);
 
 }  // namespace corbel::editor

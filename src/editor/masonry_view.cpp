@@ -19,6 +19,7 @@ namespace corbel::editor {
 statics::AnalysisOptions analysisOptionsOf(const MasonrySpec& spec) {
   statics::AnalysisOptions options;
   options.friction = spec.friction;
+  options.conservativeFriction = spec.conservativeFriction;
   options.kernShrink = spec.kern;
   return options;
 }
@@ -35,9 +36,15 @@ void fillBlocks(MasonryView& view, const statics::Assembly& assembly) {
       for (int v : f) corners.push_back(b.vertices[static_cast<std::size_t>(v)]);
       faces.push_back(std::move(corners));
     }
-    for (const Vec3& p : b.vertices) box.add(p);
+    Vec3 centre(0.0);
+    for (const Vec3& p : b.vertices) {
+      box.add(p);
+      centre += p;
+    }
     view.blockFaces.push_back(std::move(faces));
     view.fixed.push_back(b.fixed);
+    view.blockNames.push_back(b.name);
+    view.blockCentres.push_back(b.vertices.empty() ? centre : centre / double(b.vertices.size()));
   }
   view.modelSize = box.empty() ? 1.0 : std::max(box.diagonal(), 1e-9);
 }
@@ -87,11 +94,26 @@ MasonryView analyseMasonry(const MasonrySpec& spec, const statics::AnalysisOptio
   MasonryView view;
   view.spec = spec;
   analyseInto(view, options, progress, [&] {
-    const statics::ParametricModel model = statics::modelOf(spec);
+    // The blocks without the loads first, so a load that no longer fits (its block is gone)
+    // is reported over a model that is still drawn.
+    MasonrySpec bare = spec;
+    bare.loads.clear();
+    const statics::ParametricModel model = statics::modelOf(bare);
     view.parameters = model.parameters.all();
     view.suggestedFree = model.suggestedFree;
-    return model.build(model.parameters);
+    statics::Assembly assembly = model.build(model.parameters);
+    try {
+      view.loads = statics::resolveLoads(assembly, spec.loads);
+    } catch (const std::exception&) {
+      fillBlocks(view, assembly);
+      throw;
+    }
+    for (const statics::ResolvedLoad& l : view.loads) assembly.blocks[std::size_t(l.block)].pointLoads.push_back(l.load);
+    return assembly;
   });
+  if (!spec.ground && !view.error.empty())
+    view.error = "it rests on other objects (its ground is off): analyse it with them, under \"All masonry objects "
+                 "together\" (" + view.error + ")";
   return view;
 }
 
@@ -100,6 +122,7 @@ MasonryView analyseModel(const statics::ParametricModel& model, const statics::P
   MasonryView view;
   view.fromModel = true;
   view.spec.friction = options.friction;
+  view.spec.conservativeFriction = options.conservativeFriction;
   view.spec.kern = options.kernShrink;
   analyseInto(view, options, progress, [&] {
     view.parameters = values.all();
@@ -187,11 +210,22 @@ std::vector<ForceArrow> forceArrows(const statics::AnalysisResult& result, doubl
 }
 
 std::array<float, 4> arrowColor(const ForceArrow& arrow) {
-  return arrow.tension ? kTensionColor : arrow.reaction ? kReactionColor : kCompressionColor;
+  return arrow.load ? kLoadColor : arrow.tension ? kTensionColor : arrow.reaction ? kReactionColor : kCompressionColor;
 }
 
 MasonryPicture masonryPicture(const MasonryView& view, bool colours, bool arrows) {
   MasonryPicture picture;
+  // The applied loads, scaled among themselves, each ending where it acts.
+  double largest = 0;
+  for (const statics::ResolvedLoad& l : view.loads) largest = std::max(largest, l.load.force.norm());
+  for (const statics::ResolvedLoad& l : view.loads) {
+    if (!(largest > 0) || !(l.load.force.norm() > 0)) continue;
+    ForceArrow a;
+    a.to = l.load.at;
+    a.from = l.load.at - l.load.force * (kLongestArrowOfModel * view.modelSize / largest);
+    a.load = true;
+    picture.arrows.push_back(a);
+  }
   if (!view.error.empty()) return picture;
   if (colours)
     for (std::size_t b = 0; b < view.blockFaces.size(); ++b) {
@@ -199,7 +233,9 @@ MasonryPicture masonryPicture(const MasonryView& view, bool colours, bool arrows
       const auto colour = tensionColor(b < view.tensionShare.size() ? view.tensionShare[b] : 0.0);
       for (const auto& face : view.blockFaces[b]) picture.polygons.push_back({face, colour});
     }
-  if (arrows) picture.arrows = forceArrows(view.result, kLongestArrowOfModel * view.modelSize, view.fixed);
+  if (arrows)
+    for (const ForceArrow& a : forceArrows(view.result, kLongestArrowOfModel * view.modelSize, view.fixed))
+      picture.arrows.push_back(a);
   return picture;
 }
 

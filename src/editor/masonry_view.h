@@ -8,6 +8,7 @@
 #include "core/masonry_spec.h"
 #include "core/progress.h"
 #include "statics/analysis.h"
+#include "statics/loads.h"
 #include "statics/parameters.h"
 #include "statics/scene_blocks.h"
 
@@ -25,6 +26,9 @@ struct MasonryView {
   std::vector<statics::FreeParameter> suggestedFree;
   std::vector<std::vector<std::vector<Vec3>>> blockFaces;  // per block, its faces' corners
   std::vector<bool> fixed;                                 // per block: ground or abutment
+  std::vector<std::string> blockNames;                     // per block, as the model names it
+  std::vector<Vec3> blockCentres;                          // per block: the mean of its corners
+  std::vector<statics::ResolvedLoad> loads;                // the spec's loads, in its order
   std::vector<double> tensionShare;                        // per block, in [0, 1] (blockTensionShares)
   statics::AnalysisResult result;
   // The strict LP phase-1 test of the same assembly (statics::checkFeasibility): a
@@ -87,6 +91,7 @@ struct ForceArrow {
   Vec3 from{0.0}, to{0.0};
   bool tension = false;   // a vertex pulling (f_n⁻); otherwise an interface's compressive resultant
   bool reaction = false;  // a compressive resultant where a fixed block (the ground) holds the structure
+  bool load = false;      // an applied load the artist placed (MasonrySpec::loads), ending where it acts
 };
 
 // Interface resultants with compression, each ending at its centre of pressure and pointing
@@ -105,11 +110,14 @@ std::vector<ForceArrow> forceArrows(const statics::AnalysisResult& result, doubl
 inline constexpr std::array<float, 4> kCompressionColor{0.85f, 0.25f, 0.12f, 1.0f};
 inline constexpr std::array<float, 4> kTensionColor{0.1f, 0.35f, 1.0f, 1.0f};
 inline constexpr std::array<float, 4> kReactionColor{0.1f, 0.7f, 0.2f, 1.0f};
+inline constexpr std::array<float, 4> kLoadColor{0.95f, 0.75f, 0.05f, 1.0f};  // applied loads: amber
 std::array<float, 4> arrowColor(const ForceArrow& arrow);
 
 // What the 3D view draws of a view, for the editor's overlay and the CLI's --render alike: the
 // faces of every block that is not fixed in its tension colour, and the force arrows (the
-// largest a fifth of the model's size), ground reactions apart. Empty for a view with an error.
+// largest a fifth of the model's size), ground reactions apart, and the applied loads (amber,
+// the largest a fifth of the model's size, the tip where each acts; drawn with or without the
+// force arrows). Empty for a view with an error, but for the loads, which show where they are.
 struct ColouredPolygon {
   std::vector<Vec3> corners;
   std::array<float, 4> color{0, 0, 0, 1};

@@ -1,6 +1,8 @@
 #include "editor/new_objects.h"
 
 #include "statics/examples.h"
+#include "statics/kernel.h"
+#include "statics/template_models.h"
 
 #include <nlohmann/json.hpp>
 
@@ -52,14 +54,24 @@ std::vector<MasonryTemplate> masonryTemplates() {
       {"abbey", "Abbey Nave (Fig. 1)"},
       {"mosque", "Dome on a Drum with Flyers (Fig. 10)"},
       {"mosque-hall", "Dome over a Square Hall (Fig. 10)"},
+      {"semicircular-arch", "Semicircular Arch"},
+      {"pointed-arch", "Pointed Arch"},
+      {"column", "Column of Drums"},
+      {"wall", "Wall with Windows (Fig. 3)"},
+      {"buttress", "Buttress"},
+      {"dome", "Dome"},
+      {"dome-on-drum", "Dome on a Drum"},
   };
   std::vector<MasonryTemplate> out;
-  for (const std::string& name : statics::exampleNames()) {
-    std::string label = name;
-    for (const auto& [n, l] : words)
-      if (name == n) label = l;
-    out.push_back({name, label});
-  }
+  // The templates alone first, then the composed examples.
+  const std::vector<std::string> templates = statics::templateModelNames(), examples = statics::exampleNames();
+  for (const auto* names : {&templates, &examples})
+    for (const std::string& name : *names) {
+      std::string label = name;
+      for (const auto& [n, l] : words)
+        if (name == n) label = l;
+      out.push_back({name, label, names == &examples});
+    }
   return out;
 }
 
@@ -67,6 +79,14 @@ MasonrySpec masonryObject(const std::string& model) {
   MasonrySpec m;
   m.model = model;
   return m;
+}
+
+BBox masonryBounds(const MasonrySpec& spec) {
+  const statics::ParametricModel model = statics::modelOf(spec);
+  BBox box;
+  for (const statics::Block& b : model.build(model.parameters).blocks)
+    for (const Vec3& v : b.vertices) box.add(v);
+  return box;
 }
 
 }  // namespace corbel::editor

@@ -24,8 +24,12 @@ GrowthSpec starterGrowthSite(Vec2 at);
 struct MasonryTemplate {
   std::string model;  // statics::exampleByName's name
   std::string label;  // "Arch on columns (Fig. 8)"
+  bool example = false;  // a composed example (under Masonry > Examples), not a template alone
 };
 std::vector<MasonryTemplate> masonryTemplates();
 MasonrySpec masonryObject(const std::string& model);
+// The bounds of a masonry object's blocks, ground included, in its own frame. Throws
+// corbel::Error when the model refuses the spec.
+BBox masonryBounds(const MasonrySpec& spec);
 
 }  // namespace corbel::editor

@@ -2,6 +2,7 @@
 
 #include "editor/statics_panel_parts.h"
 #include "editor/symbols.h"
+#include "editor/widget_marks.h"
 
 #include "editor/masonry_edits.h"
 #include "editor/pane_window.h"
@@ -25,8 +26,9 @@ constexpr int kGridSamples = 21;  // per axis: 441 analyses, on every core
 
 ImU32 colorU32(const std::array<float, 4>& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], c[3])); }
 
-// Finished work of a job: rethrows its exception; Cancelled counts as nothing to show.
-bool collect(std::unique_ptr<BackgroundJob>& job, bool wait, std::string* error) {
+}  // namespace
+
+bool statics_panel::collect(std::unique_ptr<BackgroundJob>& job, bool wait, std::string* error) {
   if (!job) return false;
   if (wait) job->wait();
   if (!job->finished()) return false;
@@ -44,10 +46,26 @@ bool collect(std::unique_ptr<BackgroundJob>& job, bool wait, std::string* error)
   return ok;
 }
 
-}  // namespace
+void statics_panel::drawChanges(const char* id, const std::vector<ParameterChange>& changes) {
+  if (changes.empty() || !ImGui::BeginTable(id, 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
+  ImGui::TableSetupColumn("changed");
+  ImGui::TableSetupColumn("before");
+  ImGui::TableSetupColumn("after");
+  ImGui::TableHeadersRow();
+  for (const ParameterChange& c : changes) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(c.name.c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4g", c.before);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4g", c.after);
+  }
+  ImGui::EndTable();
+}
 
 StaticsPanel::~StaticsPanel() {
-  for (auto* job : {&analysis_, &search_, &resolve_, &sceneJob_})
+  for (auto* job : {&analysis_, &search_, &resolve_, &sceneJob_, &togetherJob_})
     if (*job) {
       (*job)->progress().cancel();
       (*job)->wait();
@@ -67,6 +85,9 @@ void StaticsPanel::reset() {
   removeChoice_.clear();
   if (sceneJob_) sceneJob_->progress().cancel();
   sceneView_.reset();
+  if (togetherJob_) togetherJob_->progress().cancel();
+  togetherView_.reset();
+  togetherChanges_.clear();
 }
 
 void StaticsPanel::toggleLandscapeGrid(const StaticsHost& host) {
@@ -160,9 +181,12 @@ void StaticsPanel::finishSearch(const StaticsHost& host) {
     return;
   }
   lastSearch_ = *searchResult_;
+  lastChanges_.clear();
   std::string why;
   if (auto next = applySearch(*host.doc, searchObject_, searchStart_, *searchResult_, &why)) {
     const DocObject* o = host.doc->find(searchObject_);
+    if (const DocObject* after = next->find(searchObject_))
+      lastChanges_ = parameterChanges(searchStart_, std::get<MasonrySpec>(after->spec));
     host.commit(std::move(*next), "Make " + o->name + " stand", "");
     host.endDrag();
     host.log("Make it stand: " + searchResult_->message, searchResult_->status != statics::SearchStatus::Feasible);
@@ -236,6 +260,7 @@ void StaticsPanel::collectScene(const StaticsHost& host) {
 
 void StaticsPanel::update(const StaticsHost& host) {
   if (sceneJob_) collectScene(host);
+  if (togetherJob_) collectTogether(host);
   if (sim_) {
     const DocObject* o = objectOf(host);
     const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
@@ -305,15 +330,22 @@ void StaticsPanel::makeItStand(const StaticsHost& host) {
   if (host.wait) finishSearch(host);
 }
 
-void StaticsPanel::drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const {
-  const MasonryView* shown = sceneShown() ? &*sceneView_ : nullptr;
+void StaticsPanel::drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec,
+                               const Placement& placement) const {
+  // The together and Scene analyses are of the world; the object's own is in its frame.
+  const MasonryView* shown = togetherShown() ? &*togetherView_ : sceneShown() ? &*sceneView_ : nullptr;
+  const bool world = shown != nullptr;
   if (!shown) {
     if (!view_ || !(view_->spec == spec)) return;
     if (shownSimulation(spec)) return;  // the analysis is of the design, not of the moving blocks
     shown = &*view_;
   }
-  if (!shown->error.empty()) return;
-  const MasonryPicture picture = masonryPicture(*shown, colours_, arrows_);
+  MasonryPicture picture = masonryPicture(*shown, colours_, arrows_);
+  if (world) {
+    for (ColouredPolygon& p : picture.polygons)
+      for (Vec3& c : p.corners) c = placement.unapply(c);
+    for (ForceArrow& a : picture.arrows) a.from = placement.unapply(a.from), a.to = placement.unapply(a.to);
+  }
   for (const ColouredPolygon& p : picture.polygons) overlay.polygon(p.corners, p.color);
   for (const ForceArrow& a : picture.arrows) onTop.arrow(a.from, a.to, arrowColor(a), 0.25);
 }
@@ -395,6 +427,147 @@ void StaticsPanel::drawParameters(const StaticsHost& host, const MasonrySpec& sp
     ImGui::PopID();
   }
   ImGui::EndTable();
+}
+
+void StaticsPanel::drawSettings(const StaticsHost& host, const MasonrySpec& spec) {
+  const std::string key = "masonry" + std::to_string(host.object) + ".";
+  auto set = [&](double friction, bool conservative, double kern, const std::string& label, const std::string& merge) {
+    Document d = *host.doc;
+    try {
+      setMasonryAnalysis(d, host.object, friction, conservative, kern);
+      host.commit(std::move(d), label, merge.empty() ? std::string() : key + merge);
+    } catch (const std::exception& e) {
+      host.log(e.what(), true);
+    }
+  };
+  // One row: friction α, α/√2, kern margin.
+  ImGui::PushItemWidth(std::min(70.0f, ImGui::GetContentRegionAvail().x * 0.18f));
+  float friction = float(spec.friction);
+  if (ImGui::DragFloat("friction α", &friction, 0.005f, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp))
+    set(friction, spec.conservativeFriction, spec.kern, "Edit friction", "friction");
+  marks::mark("friction");
+  if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Coefficient of static friction at the joints (Sec. 3.1); stone on stone about 0.6 to 0.7");
+  ImGui::SameLine();
+  bool conservative = spec.conservativeFriction;
+  if (ImGui::Checkbox("α/√2", &conservative)) {
+    set(spec.friction, conservative, spec.kern, conservative ? "Use friction α/√2" : "Use friction α", "");
+    host.endDrag();
+  }
+  marks::mark("conservative friction");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Use α/√2, so the friction pyramid lies inside the friction cone (Sec. 3.1): safe, but a design that "
+        "needs friction near α is called not standing");
+  ImGui::SameLine();
+  float kern = float(spec.kern);
+  if (ImGui::DragFloat("kern margin", &kern, 0.002f, 0.0f, 0.95f, "%.3f", ImGuiSliderFlags_AlwaysClamp))
+    set(spec.friction, spec.conservativeFriction, kern, "Edit kern margin", "kern");
+  marks::mark("kern margin");
+  if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Geometric factor of safety (Sec. 3.4): every contact is shrunk by this factor about its centre, and "
+        "the thrust must pass within what is left (0.667: the middle third)");
+  ImGui::PopItemWidth();
+}
+
+void StaticsPanel::drawLoads(const StaticsHost& host, const MasonrySpec& spec) {
+  ImGui::Separator();
+  if (ImGui::Button(placingLoad_ ? "Stop placing" : "Place a load")) placingLoad_ = !placingLoad_;
+  marks::mark("place load");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Loads (Sec. 3.4): click a block in the 3D view for a weight where you click, or wind on the face you "
+        "click; each load is listed below");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
+  marks::combo("##load kind", &loadKind_, "weight (kg)\0wind (Pa)\0", "load kind");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  if (loadKind_ == 0)
+    ImGui::DragFloat("##mass", &loadMass_, 10.0f, 0.0f, 1e7f, "%.0f kg", ImGuiSliderFlags_AlwaysClamp);
+  else
+    ImGui::DragFloat("##pressure", &windPressure_, 10.0f, -1e6f, 1e6f, "%.0f Pa", ImGuiSliderFlags_AlwaysClamp);
+  if (placingLoad_) ImGui::TextColored(kGood, "click a block in the 3D view to place it");
+  const std::string key = "masonry" + std::to_string(host.object) + ".load.";
+  std::optional<std::size_t> remove;
+  for (std::size_t k = 0; k < spec.loads.size(); ++k) {
+    const MasonryLoad& l = spec.loads[k];
+    ImGui::PushID(int(k));
+    ImGui::AlignTextToFramePadding();
+    ImGui::Text("%s on %s", l.name.c_str(), l.block.c_str());
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 30);
+    MasonryLoad next = l;
+    bool changed = false;
+    if (l.face >= 0) {
+      float p = float(l.pressure);
+      changed = ImGui::DragFloat("##pa", &p, 10.0f, -1e6f, 1e6f, "%.0f Pa", ImGuiSliderFlags_AlwaysClamp);
+      next.pressure = p;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("pressure on face %d of the block, pushing into it", l.face);
+    } else if (l.force[0] == 0 && l.force[1] == 0) {
+      float m = float(loadMass(l));
+      changed = ImGui::DragFloat("##kg", &m, 10.0f, 0.0f, 1e7f, "%.0f kg", ImGuiSliderFlags_AlwaysClamp);
+      next.force = Vec3(0.0, 0.0, -kGravity * m);
+    } else {
+      ImGui::Text("(%.3g, %.3g, %.3g) N", l.force[0], l.force[1], l.force[2]);
+    }
+    marks::mark("load " + std::to_string(k));
+    if (changed) {
+      Document d = *host.doc;
+      try {
+        setMasonryLoad(d, host.object, k, next);
+        host.commit(std::move(d), "Edit " + l.name, key + std::to_string(k));
+      } catch (const std::exception& e) {
+        host.log(e.what(), true);
+      }
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+    ImGui::SameLine();
+    if (ImGui::SmallButton("x")) remove = k;
+    marks::mark("remove load " + std::to_string(k));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove %s", l.name.c_str());
+    ImGui::PopID();
+  }
+  if (remove) {
+    Document d = *host.doc;
+    const std::string name = spec.loads[*remove].name;
+    removeMasonryLoad(d, host.object, *remove);
+    host.commit(std::move(d), "Remove " + name, "");
+    host.endDrag();
+  }
+}
+
+bool StaticsPanel::placeLoad(const StaticsHost& host, const Vec3& origin, const Vec3& direction) {
+  const DocObject* o = objectOf(host);
+  const auto* spec = o ? std::get_if<MasonrySpec>(&o->spec) : nullptr;
+  if (!spec || !view_ || view_->blockFaces.empty()) return false;
+  const std::optional<BlockHit> hit = firstBlockHit(*view_, origin, direction);
+  if (!hit) {
+    host.log("Place a load: click a block of " + o->name + " (not the ground)", true);
+    return false;
+  }
+  Document d = *host.doc;
+  try {
+    const LoadKind kind = loadKind_ == 0 ? LoadKind::Weight : LoadKind::Pressure;
+    const std::size_t k = addMasonryLoad(d, host.object, loadAt(*view_, *hit, kind, kind == LoadKind::Weight ? loadMass_ : windPressure_));
+    const MasonryLoad& l = masonryOf(d, host.object).loads[k];
+    char amount[64];
+    if (kind == LoadKind::Weight)
+      std::snprintf(amount, sizeof amount, "%.0f kg", loadMass(l));
+    else
+      std::snprintf(amount, sizeof amount, "%.0f Pa on face %d", l.pressure, l.face);
+    const std::string what = l.name + " (" + amount + ") on " + l.block;
+    host.commit(std::move(d), "Add " + l.name, "");
+    host.endDrag();
+    host.log("Placed " + what, false);
+  } catch (const std::exception& e) {
+    host.log(std::string("Place a load: ") + e.what(), true);
+    return false;
+  }
+  return true;
 }
 
 void StaticsPanel::drawAnalysis(const MasonrySpec& spec) {
@@ -482,6 +655,7 @@ void StaticsPanel::drawSearch(const StaticsHost& host) {
                        statics::toString(s.status).c_str(), s.message.c_str());
     ImGui::PopTextWrapPos();
     ImGui::Text("%d evaluations, %.2f s, y/W² %.3g -> %.3g", s.evaluations, s.seconds, s.initialMeasure, s.measure);
+    drawChanges("changes", lastChanges_);
     if (!s.history.empty()) {
       std::vector<float> h(s.history.begin(), s.history.end());
       ImGui::PlotLines("##history", h.data(), int(h.size()), 0, "y/W² per evaluation", 0.0f, FLT_MAX,
@@ -610,8 +784,8 @@ void StaticsPanel::drawLandscape(const MasonrySpec& spec) {
 }
 
 void StaticsPanel::drawScene(const StaticsHost& host) {
-  ImGui::Separator();
-  ImGui::TextDisabled("Every block in the Scene");
+  // Folded by default, as the together section: the panel keeps the landscape in sight.
+  if (!ImGui::CollapsingHeader("Every block in the Scene")) return;
   if (!host.scene) return;
   ImGui::PushTextWrapPos(0);
   ImGui::TextDisabled(
@@ -673,8 +847,11 @@ void StaticsPanel::draw(const StaticsHost& host, float x, float y, float w, floa
   ImGui::Begin("Statics", nullptr, kPaneFlags);
   ImGui::Text("%s: masonry model \"%s\"", o->name.c_str(), spec->model.c_str());
   drawParameters(host, *spec);
+  drawSettings(host, *spec);
+  drawLoads(host, *spec);
   drawAnalysis(*spec);
   drawScene(host);
+  drawTogether(host);
   drawSearch(host);
   drawSimulation(host);
   drawLandscape(*spec);

@@ -14,6 +14,7 @@
 #include "core/document.h"
 #include "core/progress.h"
 #include "editor/masonry_edits.h"
+#include "editor/masonry_loads.h"
 #include "editor/masonry_view.h"
 #include "editor/simulation.h"
 #include "render/overlay.h"
@@ -53,7 +54,10 @@ class StaticsPanel {
   void draw(const StaticsHost& host, float x, float y, float w, float h);
   // Block colours (into `overlay`, depth-tested) and force arrows (into `onTop`, seen through
   // the blocks: they act inside them, on the interfaces) of the analysis, when it is of `spec`.
-  void drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec) const;
+  // `placement` is the object's: the Scene's and the together analyses are in the world's frame
+  // and are taken back into the object's, as the caller places everything drawn here.
+  void drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const MasonrySpec& spec,
+                   const Placement& placement = {}) const;
   // "Make it stand" for the host's object; ignored while a search runs.
   void makeItStand(const StaticsHost& host);
   void cancelSearch();
@@ -79,10 +83,24 @@ class StaticsPanel {
   // the selected model's analysis.
   void analyseScene(const StaticsHost& host);
   bool sceneShown() const { return sceneView_.has_value() && showScene_; }
+  // "All masonry objects together" (statics/composite.h): the object analysed with every other
+  // masonry object of the Document, faces of different objects within the contact tolerance
+  // touching; on a worker. makeThemStand searches the free parameters of all of them and
+  // applies every object's values as one undo step.
+  void analyseTogether(const StaticsHost& host);
+  void makeThemStand(const StaticsHost& host);
+  bool togetherShown() const { return togetherView_.has_value() && showTogether_; }
   bool simulating() const { return sim_ != nullptr; }
   bool simulationPlaying() const { return sim_ && sim_->playing(); }
   // The simulation to draw in place of the object's design, when there is one of `spec`.
   const Simulation* shownSimulation(const MasonrySpec& spec) const;
+  // The load tool: while it is on, a click on a block of the selected masonry object places a
+  // load there (editor/masonry_loads.h), one undo step; the tool stays on for more.
+  bool placingLoad() const { return placingLoad_; }
+  void setPlacingLoad(bool on) { placingLoad_ = on; }
+  // A click in the 3D view at a ray (in the object's frame) while the load tool is on: places
+  // the chosen kind of load on the block it hits. Returns whether a block was hit.
+  bool placeLoad(const StaticsHost& host, const Vec3& origin, const Vec3& direction);
   // A click in the 3D view at a ray: chooses the simulated block it hits for removal, or
   // removes it at once with "remove on click". Returns whether a block was hit.
   bool pickBlock(const StaticsHost& host, const Vec3& origin, const Vec3& direction);
@@ -93,11 +111,15 @@ class StaticsPanel {
   // Interactive editing (Fig. 13): re-solves the free parameters after a fixed one was dragged.
   void updateResolve(const StaticsHost& host);
   void drawParameters(const StaticsHost& host, const MasonrySpec& spec);
+  void drawSettings(const StaticsHost& host, const MasonrySpec& spec);  // friction, α/√2, kern margin
+  void drawLoads(const StaticsHost& host, const MasonrySpec& spec);
   void drawAnalysis(const MasonrySpec& spec);
   void drawSearch(const StaticsHost& host);
   void drawLandscape(const MasonrySpec& spec);
   void drawSimulation(const StaticsHost& host);
   void drawScene(const StaticsHost& host);
+  void drawTogether(const StaticsHost& host);
+  void collectTogether(const StaticsHost& host);  // a finished together analysis or search
   void collectScene(const StaticsHost& host);                       // a finished "Analyse the Scene" into sceneView_
   Simulation* simulationFor(const StaticsHost& host);               // made on first use; null when it cannot be
   using Range = std::pair<std::string, std::pair<double, double>>;  // a parameter and its bounds
@@ -133,6 +155,11 @@ class StaticsPanel {
   std::shared_ptr<SearchTrace> searchTrace_;        // the last search's evaluations, drawn live
   std::vector<statics::FreeParameter> searchFree_;  // what it moves (for its path on the grid)
   std::optional<statics::SearchResult> lastSearch_;
+  std::vector<ParameterChange> lastChanges_;  // what the last applied search changed (before → after)
+
+  bool placingLoad_ = false;
+  int loadKind_ = 0;  // 0: a weight (kg) at the clicked point, 1: a pressure (Pa) on the clicked face
+  float loadMass_ = float(kDefaultLoadMass), windPressure_ = float(kDefaultWindPressure);
 
   bool interactive_ = false;
   std::optional<std::string> pendingResolve_;  // a fixed parameter dragged since the last re-solve
@@ -153,6 +180,21 @@ class StaticsPanel {
   std::uint64_t sceneRevision_ = 0;  // the Scene's revision when sceneView_ was analysed
   std::set<ObjectId> sceneLoads_;    // objects carried as loads
   bool showScene_ = true;
+
+  struct TogetherWork {
+    MasonryTogether together;
+    Document started;  // the Document it was made from
+    bool search = false;
+    MasonryView view;
+    statics::SearchResult result;
+  };
+  std::unique_ptr<BackgroundJob> togetherJob_;
+  std::shared_ptr<TogetherWork> togetherWork_;
+  std::optional<MasonryView> togetherView_;
+  Document togetherOf_;  // the Document togetherView_ was analysed on
+  std::vector<ParameterChange> togetherChanges_;  // what the last "Make them stand" changed, "object/parameter"
+  float togetherToleranceMm_ = 1.0f;
+  bool showTogether_ = true;
 
   bool colours_ = true, arrows_ = true;
 };

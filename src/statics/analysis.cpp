@@ -32,7 +32,9 @@ EquilibriumSystem prepareEquilibrium(const Assembly& as, const AnalysisOptions& 
       if (std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])) model.add(v);
   const double tol = lengthTolerance(model);
   p.props = validateAssembly(as, tol);
-  p.contacts = findContacts(as, p.props, tol, opt.kernShrink);
+  if (!std::isfinite(opt.contactTolerance) || opt.contactTolerance < 0)
+    throw Error("statics: the contact tolerance must be a number ≥ 0");
+  p.contacts = findContacts(as, p.props, std::max(tol, opt.contactTolerance), opt.kernShrink);
   p.alpha = opt.conservativeFriction ? opt.friction / std::sqrt(2.0) : opt.friction;
   if (opt.frictionSides != 4 && opt.frictionSides != 8) throw Error("statics: the friction pyramid has 4 or 8 sides");
   p.frictionSides = opt.frictionSides;

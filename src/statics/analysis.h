@@ -20,6 +20,10 @@ struct AnalysisOptions {
   // 1/cos(π/8) − 1 = 8 % in its corners, the square by √2 − 1 = 41 %; twice the rows).
   int frictionSides = 4;
   double kernShrink = 0.0;            // in [0, 1): geometric factor of safety (Sec. 3.4)
+  // Faces of different blocks closer than this (m) and opposite count as touching: 0 keeps the
+  // kernel's own tolerance (1e-9 of the model's size). Placed objects rarely touch to that, so
+  // masonry objects analysed together (statics/composite.h) use a joint the artist sets.
+  double contactTolerance = 0.0;
   IpmOptions solver;
 };
 

@@ -9,6 +9,7 @@
 #include "statics/groin.h"
 #include "statics/hall.h"
 #include "statics/shapes.h"
+#include "statics/template_models.h"
 #include "statics/vault.h"
 #include "statics/wall.h"
 
@@ -23,29 +24,16 @@ namespace {
 
 constexpr int kTowerLevels = 16;
 
-Parameter param(std::string name, double value, double lo, double hi, std::string description, bool continuous = true) {
-  Parameter p;
-  p.name = std::move(name);
-  p.value = value;
-  p.lo = lo;
-  p.hi = hi;
-  p.continuous = continuous;
-  p.description = std::move(description);
-  return p;
-}
-
-int count(const ParameterSet& p, const std::string& name) { return int(std::lround(p[name])); }
-
 // The parameters both vault examples share: the vault, its walls, the rings and courses.
 void addVaultParameters(ParametricModel& m, double wallHeight, double wallThickness) {
-  m.parameters.add(param("radius", 2.0, 0.3, 30.0, "centreline radius of the vault (half its span), m"));
-  m.parameters.add(param("thickness", 0.25, 0.02, 3.0, "thickness of the vault, m"));
-  m.parameters.add(param("length", 5.0, 0.1, 200.0, "length of the vault along its axis, m"));
-  m.parameters.add(param("wallHeight", wallHeight, 0.1, 50.0, "height of the walls, m"));
-  m.parameters.add(param("wallThickness", wallThickness, 0.02, 10.0, "thickness of the walls, m"));
-  m.parameters.add(param("voussoirs", 12, 2, 400, "voussoirs per ring", false));
-  m.parameters.add(param("rings", 5, 1, 400, "rings of the vault (and wall segments) along its axis", false));
-  m.parameters.add(param("courses", 4, 1, 100, "courses of the walls (and buttresses)", false));
+  m.parameters.add(makeParameter("radius", 2.0, 0.3, 30.0, "centreline radius of the vault (half its span), m"));
+  m.parameters.add(makeParameter("thickness", 0.25, 0.02, 3.0, "thickness of the vault, m"));
+  m.parameters.add(makeParameter("length", 5.0, 0.1, 200.0, "length of the vault along its axis, m"));
+  m.parameters.add(makeParameter("wallHeight", wallHeight, 0.1, 50.0, "height of the walls, m"));
+  m.parameters.add(makeParameter("wallThickness", wallThickness, 0.02, 10.0, "thickness of the walls, m"));
+  m.parameters.add(makeParameter("voussoirs", 12, 2, 400, "voussoirs per ring", false));
+  m.parameters.add(makeParameter("rings", 5, 1, 400, "rings of the vault (and wall segments) along its axis", false));
+  m.parameters.add(makeParameter("courses", 4, 1, 100, "courses of the walls (and buttresses)", false));
 }
 
 // A barrel vault on two walls of courses, one wall segment per ring; `prop(ring, y, depth,
@@ -53,8 +41,8 @@ void addVaultParameters(ParametricModel& m, double wallHeight, double wallThickn
 Assembly vaultOnWalls(const ParameterSet& p,
                       const std::function<std::vector<Block>(int, double, double, double)>& prop) {
   BarrelVaultSpec vault;
-  vault.blocks = count(p, "voussoirs");
-  vault.rings = count(p, "rings");
+  vault.blocks = countOf(p, "voussoirs");
+  vault.rings = countOf(p, "rings");
   vault.radius = p["radius"];
   vault.thickness = p["thickness"];
   vault.length = p["length"];
@@ -64,7 +52,7 @@ Assembly vaultOnWalls(const ParameterSet& p,
   std::vector<Block> side;  // the +x side, ring by ring
   for (int r = 0; r < vault.rings; ++r) {
     const double y = vault.length * r / vault.rings;
-    ButtressSpec wall{h, wt, wt, ring, count(p, "courses"), 2400.0};
+    ButtressSpec wall{h, wt, wt, ring, countOf(p, "courses"), 2400.0};
     for (Block& blk : placed(buttressBlocks(wall), Vec3(inner, y, 0.0), "wall " + std::to_string(r))) side.push_back(blk);
     for (Block& blk : prop(r, y, ring, inner + wt)) side.push_back(blk);
   }
@@ -83,9 +71,9 @@ ParametricModel towerExample() {
   m.name = "tower";
   m.description = "Fig. 11: 16 levels of four posts under a two-block slab (96 blocks); level k moved by (xk, yk)";
   for (int k = 1; k <= kTowerLevels; ++k)
-    m.parameters.add(param("x" + std::to_string(k), 0.12, -0.5, 0.5, "x offset of level " + std::to_string(k) + " on the one below, m"));
+    m.parameters.add(makeParameter("x" + std::to_string(k), 0.12, -0.5, 0.5, "x offset of level " + std::to_string(k) + " on the one below, m"));
   for (int k = 1; k <= kTowerLevels; ++k)
-    m.parameters.add(param("y" + std::to_string(k), 0.0, -0.5, 0.5, "y offset of level " + std::to_string(k) + " on the one below, m"));
+    m.parameters.add(makeParameter("y" + std::to_string(k), 0.0, -0.5, 0.5, "y offset of level " + std::to_string(k) + " on the one below, m"));
   for (int k = 1; k <= kTowerLevels; ++k) {
     m.suggestedFree.push_back({"x" + std::to_string(k), -0.2, 0.2});
   }
@@ -115,19 +103,19 @@ ParametricModel archOnColumnsExample() {
   ParametricModel m;
   m.name = "arch-on-columns";
   m.description = "Fig. 8: a semicircular arch on two square columns";
-  m.parameters.add(param("thickness", 0.09, 0.01, 0.9, "radial thickness of the arch (centreline radius 1), m"));
-  m.parameters.add(param("columnWidth", 0.15, 0.02, 3.0, "side of the square columns, m"));
-  m.parameters.add(param("columnHeight", 1.5, 0.05, 20.0, "height of the columns, m"));
-  m.parameters.add(param("voussoirs", 8, 2, 400, "blocks of the arch", false));
-  m.parameters.add(param("drums", 1, 1, 100, "blocks of each column", false));
+  m.parameters.add(makeParameter("thickness", 0.09, 0.01, 0.9, "radial thickness of the arch (centreline radius 1), m"));
+  m.parameters.add(makeParameter("columnWidth", 0.15, 0.02, 3.0, "side of the square columns, m"));
+  m.parameters.add(makeParameter("columnHeight", 1.5, 0.05, 20.0, "height of the columns, m"));
+  m.parameters.add(makeParameter("voussoirs", 8, 2, 400, "blocks of the arch", false));
+  m.parameters.add(makeParameter("drums", 1, 1, 100, "blocks of each column", false));
   m.suggestedFree = {{"thickness", 0.05, 0.5}, {"columnWidth", 0.05, 1.5}};
   m.build = [](const ParameterSet& p) {
     ArchSpec arch;
-    arch.blocks = count(p, "voussoirs");
+    arch.blocks = countOf(p, "voussoirs");
     arch.radius = 1.0;
     arch.thickness = p["thickness"];
     ColumnSpec column;
-    column.drums = count(p, "drums");
+    column.drums = countOf(p, "drums");
     column.sides = 4;
     column.radius = p["columnWidth"] / std::sqrt(2.0);
     column.height = p["columnHeight"];
@@ -146,12 +134,12 @@ ParametricModel barrelVaultExample() {
   m.name = "barrel-vault";
   m.description = "Fig. 13: a barrel vault on two walls backed by buttresses (140 blocks)";
   addVaultParameters(m, 2.0, 0.35);
-  m.parameters.add(param("buttressWidth", 0.1, 0.01, 10.0, "width of the buttresses behind the walls, m"));
+  m.parameters.add(makeParameter("buttressWidth", 0.1, 0.01, 10.0, "width of the buttresses behind the walls, m"));
   m.suggestedFree = {{"buttressWidth", 0.05, 3.0}};
   m.build = [](const ParameterSet& p) {
     return vaultOnWalls(p, [&](int r, double y, double depth, double x) {
       const double bw = p["buttressWidth"];
-      ButtressSpec buttress{p["wallHeight"], bw, bw, depth, count(p, "courses"), 2400.0};
+      ButtressSpec buttress{p["wallHeight"], bw, bw, depth, countOf(p, "courses"), 2400.0};
       return placed(buttressBlocks(buttress), Vec3(x, y, 0.0), "buttress " + std::to_string(r));
     });
   };
@@ -162,15 +150,15 @@ ParametricModel bezierArchExample() {
   ParametricModel m;
   m.name = "bezier-arch";
   m.description = "Fig. 12: a thin arch whose centreline is a cubic Bezier; its inner control points move";
-  m.parameters.add(param("x1", -1.0, -2.0, 2.0, "x of the first inner control point (span ±1), m"));
-  m.parameters.add(param("x2", 1.0, -2.0, 2.0, "x of the second inner control point, m"));
-  m.parameters.add(param("height", 1.2, 0.2, 5.0, "height of the centreline's crown, m"));
-  m.parameters.add(param("thickness", 0.05, 0.01, 0.5, "thickness across the centreline, m"));
-  m.parameters.add(param("voussoirs", 16, 4, 400, "blocks of the arch", false));
+  m.parameters.add(makeParameter("x1", -1.0, -2.0, 2.0, "x of the first inner control point (span ±1), m"));
+  m.parameters.add(makeParameter("x2", 1.0, -2.0, 2.0, "x of the second inner control point, m"));
+  m.parameters.add(makeParameter("height", 1.2, 0.2, 5.0, "height of the centreline's crown, m"));
+  m.parameters.add(makeParameter("thickness", 0.05, 0.01, 0.5, "thickness across the centreline, m"));
+  m.parameters.add(makeParameter("voussoirs", 16, 4, 400, "blocks of the arch", false));
   m.suggestedFree = {{"x1", -1.5, 0.5}, {"x2", -0.5, 1.5}};
   m.build = [](const ParameterSet& p) {
     BezierArchSpec s;
-    s.blocks = count(p, "voussoirs");
+    s.blocks = countOf(p, "voussoirs");
     s.x1 = p["x1"];
     s.x2 = p["x2"];
     s.height = p["height"];
@@ -185,9 +173,9 @@ ParametricModel flyingButtressVaultExample() {
   m.name = "flying-buttresses";
   m.description = "Fig. 13 with flying buttresses: a barrel vault on two walls propped by quarter-arc flyers on piers";
   addVaultParameters(m, 3.0, 0.3);
-  m.parameters.add(param("reach", 0.6, 0.1, 40.0, "radius of the flyers' quarter arcs: their reach from the wall and their rise, m"));
-  m.parameters.add(param("flyerThickness", 0.25, 0.02, 3.0, "thickness of the flyers, m"));
-  m.parameters.add(param("pierWidth", 0.5, 0.05, 10.0, "width of the flyers' piers, m"));
+  m.parameters.add(makeParameter("reach", 0.6, 0.1, 40.0, "radius of the flyers' quarter arcs: their reach from the wall and their rise, m"));
+  m.parameters.add(makeParameter("flyerThickness", 0.25, 0.02, 3.0, "thickness of the flyers, m"));
+  m.parameters.add(makeParameter("pierWidth", 0.5, 0.05, 10.0, "width of the flyers' piers, m"));
   m.suggestedFree = {{"reach", 0.3, 2.5}};
   m.build = [](const ParameterSet& p) {
     FlyingButtressSpec flyer;
@@ -223,23 +211,23 @@ ParametricModel chapelExample() {
   m.description =
       "Fig. 9 (after the Sainte Chapelle): a barrel-vaulted hall of bays, each side wall pierced by a tall window, "
       "buttress piers between the bays";
-  m.parameters.add(param("radius", 3.0, 0.5, 30.0, "centreline radius of the vault (half the span), m"));
-  m.parameters.add(param("thickness", 0.45, 0.05, 3.0, "thickness of the vault (a semicircle needs t/R > 0.1075), m"));
-  m.parameters.add(param("bays", 6, 1, 60, "bays along the hall", false));
-  m.parameters.add(param("bayLength", 3.0, 1.0, 20.0, "length of a bay along the hall, m"));
-  m.parameters.add(param("wallHeight", 6.0, 1.0, 60.0, "height of the side walls (the vault springs from their top), m"));
-  m.parameters.add(param("wallThickness", 0.6, 0.1, 5.0, "thickness of the side walls, m"));
-  m.parameters.add(param("courses", 6, 3, 100, "courses of the walls and piers", false));
-  m.parameters.add(param("windowWidth", 1.5, 0.2, 19.0, "width of each bay's window (centred in the bay), m"));
-  m.parameters.add(param("buttressWidth", 0.4, 0.05, 10.0, "how far the piers between the bays stand out from the walls, m"));
-  m.parameters.add(param("buttressDepth", 0.75, 0.1, 10.0, "depth of the piers along the hall, m"));
-  m.parameters.add(param("voussoirs", 14, 2, 400, "voussoirs per ring of the vault", false));
+  m.parameters.add(makeParameter("radius", 3.0, 0.5, 30.0, "centreline radius of the vault (half the span), m"));
+  m.parameters.add(makeParameter("thickness", 0.45, 0.05, 3.0, "thickness of the vault (a semicircle needs t/R > 0.1075), m"));
+  m.parameters.add(makeParameter("bays", 6, 1, 60, "bays along the hall", false));
+  m.parameters.add(makeParameter("bayLength", 3.0, 1.0, 20.0, "length of a bay along the hall, m"));
+  m.parameters.add(makeParameter("wallHeight", 6.0, 1.0, 60.0, "height of the side walls (the vault springs from their top), m"));
+  m.parameters.add(makeParameter("wallThickness", 0.6, 0.1, 5.0, "thickness of the side walls, m"));
+  m.parameters.add(makeParameter("courses", 6, 3, 100, "courses of the walls and piers", false));
+  m.parameters.add(makeParameter("windowWidth", 1.5, 0.2, 19.0, "width of each bay's window (centred in the bay), m"));
+  m.parameters.add(makeParameter("buttressWidth", 0.4, 0.05, 10.0, "how far the piers between the bays stand out from the walls, m"));
+  m.parameters.add(makeParameter("buttressDepth", 0.75, 0.1, 10.0, "depth of the piers along the hall, m"));
+  m.parameters.add(makeParameter("voussoirs", 14, 2, 400, "voussoirs per ring of the vault", false));
   m.suggestedFree = {{"buttressWidth", 0.1, 3.0}, {"buttressDepth", 0.3, 1.5}, {"wallThickness", 0.3, 1.5}, {"wallHeight", 3.0, 6.0}};
   m.build = [](const ParameterSet& p) {
-    const int bays = count(p, "bays"), courses = count(p, "courses");
+    const int bays = countOf(p, "bays"), courses = countOf(p, "courses");
     const double bay = p["bayLength"], h = p["wallHeight"], wt = p["wallThickness"];
     BarrelVaultSpec vault;
-    vault.blocks = count(p, "voussoirs");
+    vault.blocks = countOf(p, "voussoirs");
     vault.rings = 2 * bays;
     vault.radius = p["radius"];
     vault.thickness = p["thickness"];
@@ -300,36 +288,36 @@ ParametricModel mosqueExample() {
   m.description =
       "Fig. 10 (c): a dome with an oculus on a round drum pierced by windows, propped by radial flying buttresses on "
       "piers";
-  m.parameters.add(param("radius", 3.0, 0.5, 30.0, "middle-surface radius of the dome and the drum, m"));
-  m.parameters.add(param("domeThickness", 0.25, 0.02, 3.0, "thickness of the dome, m"));
-  m.parameters.add(param("drumHeight", 5.0, 0.5, 60.0, "height of the drum, m"));
-  m.parameters.add(param("drumThickness", 0.3, 0.05, 5.0, "thickness of the drum's wall, m"));
-  m.parameters.add(param("courses", 5, 1, 100, "courses of the drum", false));
-  m.parameters.add(param("segments", 16, 6, 400, "blocks round the drum and the dome", false));
-  m.parameters.add(param("rings", 8, 1, 100, "rings of the dome up to its oculus", false));
+  m.parameters.add(makeParameter("radius", 3.0, 0.5, 30.0, "middle-surface radius of the dome and the drum, m"));
+  m.parameters.add(makeParameter("domeThickness", 0.25, 0.02, 3.0, "thickness of the dome, m"));
+  m.parameters.add(makeParameter("drumHeight", 5.0, 0.5, 60.0, "height of the drum, m"));
+  m.parameters.add(makeParameter("drumThickness", 0.3, 0.05, 5.0, "thickness of the drum's wall, m"));
+  m.parameters.add(makeParameter("courses", 5, 1, 100, "courses of the drum", false));
+  m.parameters.add(makeParameter("segments", 16, 6, 400, "blocks round the drum and the dome", false));
+  m.parameters.add(makeParameter("rings", 8, 1, 100, "rings of the dome up to its oculus", false));
   m.parameters.add(
-      param("windowWidth", 0.5, 0.0, 20.0, "width of the windows in every other segment of the drum (0: none), m"));
-  m.parameters.add(param("windowSill", 1, 0, 99, "first course of the drum the windows open", false));
+      makeParameter("windowWidth", 0.5, 0.0, 20.0, "width of the windows in every other segment of the drum (0: none), m"));
+  m.parameters.add(makeParameter("windowSill", 1, 0, 99, "first course of the drum the windows open", false));
   m.parameters.add(
-      param("windowHead", 4, 1, 99, "course of the drum over the windows, whose blocks are their lintels", false));
-  m.parameters.add(param("flyers", 8, 0, 200, "radial flying buttresses, on every (segments / flyers)-th face of the drum", false));
-  m.parameters.add(param("reach", 1.0, 0.2, 40.0, "radius of the flyers' quarter arcs: their reach from the drum and their rise, m"));
-  m.parameters.add(param("flyerThickness", 0.4, 0.05, 3.0, "thickness of the flyers, m"));
-  m.parameters.add(param("pierWidth", 0.6, 0.05, 10.0, "width of the flyers' piers, m"));
-  m.parameters.add(param("hall", 0, 0, 1, "a square hall under the drum (1) or the drum on the ground (0)", false));
-  m.parameters.add(param("hallHeight", 4.0, 0.5, 60.0, "height of the hall's walls, m"));
+      makeParameter("windowHead", 4, 1, 99, "course of the drum over the windows, whose blocks are their lintels", false));
+  m.parameters.add(makeParameter("flyers", 8, 0, 200, "radial flying buttresses, on every (segments / flyers)-th face of the drum", false));
+  m.parameters.add(makeParameter("reach", 1.0, 0.2, 40.0, "radius of the flyers' quarter arcs: their reach from the drum and their rise, m"));
+  m.parameters.add(makeParameter("flyerThickness", 0.4, 0.05, 3.0, "thickness of the flyers, m"));
+  m.parameters.add(makeParameter("pierWidth", 0.6, 0.05, 10.0, "width of the flyers' piers, m"));
+  m.parameters.add(makeParameter("hall", 0, 0, 1, "a square hall under the drum (1) or the drum on the ground (0)", false));
+  m.parameters.add(makeParameter("hallHeight", 4.0, 0.5, 60.0, "height of the hall's walls, m"));
   m.parameters.add(
-      param("hallWallThickness", 0.8, 0.05, 10.0, "thickness of the hall's walls (at least the drum's), m"));
-  m.parameters.add(param("hallCourses", 4, 3, 100, "courses of the hall's walls", false));
+      makeParameter("hallWallThickness", 0.8, 0.05, 10.0, "thickness of the hall's walls (at least the drum's), m"));
+  m.parameters.add(makeParameter("hallCourses", 4, 3, 100, "courses of the hall's walls", false));
   m.parameters.add(
-      param("hallWindowWidth", 1.0, 0.0, 50.0, "width of the window in each of the hall's walls (0: none), m"));
+      makeParameter("hallWindowWidth", 1.0, 0.0, 50.0, "width of the window in each of the hall's walls (0: none), m"));
   m.parameters.add(
-      param("slabThickness", 0.4, 0.05, 5.0, "thickness of the corner slabs (squinches) the drum sits on, m"));
+      makeParameter("slabThickness", 0.4, 0.05, 5.0, "thickness of the corner slabs (squinches) the drum sits on, m"));
   m.suggestedFree = {{"drumThickness", 0.3, 1.5}, {"reach", 0.5, 3.0}};
   m.build = [](const ParameterSet& p) {
-    const int segments = count(p, "segments"), flyers = count(p, "flyers");
+    const int segments = countOf(p, "segments"), flyers = countOf(p, "flyers");
     DrumSpec drum;
-    drum.courses = count(p, "courses");
+    drum.courses = countOf(p, "courses");
     drum.segments = segments;
     drum.radius = p["radius"];
     drum.thickness = p["drumThickness"];
@@ -341,10 +329,10 @@ ParametricModel mosqueExample() {
     // Windows in the segments between the flyers' faces (those start at segment 0).
     drum.windowWidth = p["windowWidth"];
     drum.windowEvery = 2;
-    drum.windowSill = count(p, "windowSill");
-    drum.windowHead = count(p, "windowHead");
+    drum.windowSill = countOf(p, "windowSill");
+    drum.windowHead = countOf(p, "windowHead");
     DomeSpec dome;
-    dome.rings = count(p, "rings");
+    dome.rings = countOf(p, "rings");
     dome.segments = segments;
     dome.radius = p["radius"];
     dome.thickness = p["domeThickness"];
@@ -354,12 +342,12 @@ ParametricModel mosqueExample() {
     StructureBuilder b;
     double base = 0;        // where the drum stands
     double hallCorner = 0;  // the hall's outer corner's distance from the axis
-    if (count(p, "hall")) {
+    if (countOf(p, "hall")) {
       SquareHallSpec hall;
       hall.radius = drum.radius;
       hall.wallThickness = p["hallWallThickness"];
       hall.height = p["hallHeight"];
-      hall.courses = count(p, "hallCourses");
+      hall.courses = countOf(p, "hallCourses");
       hall.windowWidth = p["hallWindowWidth"];
       hall.slabThickness = p["slabThickness"];
       hall.cornerLine = squinchLine(hall, drum.radius - drum.thickness / 2, drum.radius + drum.thickness / 2, segments);
@@ -416,29 +404,29 @@ ParametricModel groinVaultExample() {
   ParametricModel m;
   m.name = "groin-vault";
   m.description = "A groin vault: two barrels of the same rise crossing over a bay, on four corner piers";
-  m.parameters.add(param("radius", 2.0, 0.3, 30.0, "centreline radius of both barrels (their rise; half the span along y), m"));
-  m.parameters.add(param("thickness", 0.3, 0.02, 3.0, "thickness of the webs, m"));
-  m.parameters.add(param("stretch", 1.0, 0.5, 2.0, "the bay's length along x over its length along y (1: square)"));
-  m.parameters.add(param("voussoirs", 12, 2, 400, "voussoirs per arch of each web", false));
-  m.parameters.add(param("courses", 3, 1, 400, "transverse courses of each web from the centre to the bay's face", false));
-  m.parameters.add(param("pierHeight", 2.0, 0.0, 50.0, "height of the corner piers (0: the vault springs from the ground), m"));
-  m.parameters.add(param("pierWidth", 1.0, 0.05, 10.0, "side of the square corner piers (at least the thickness), m"));
-  m.parameters.add(param("drums", 2, 1, 100, "courses of each pier", false));
-  m.parameters.add(param("ribs", 0, 0, 1, "diagonal ribs under the groins (1) or none (0); they need an even number of voussoirs", false));
-  m.parameters.add(param("ribWidth", 0.2, 0.01, 3.0, "width of the ribs across the diagonal (at most thickness·√2/2), m"));
-  m.parameters.add(param("ribDepth", 0.2, 0.01, 5.0, "depth of the ribs below the intrados, m"));
+  m.parameters.add(makeParameter("radius", 2.0, 0.3, 30.0, "centreline radius of both barrels (their rise; half the span along y), m"));
+  m.parameters.add(makeParameter("thickness", 0.3, 0.02, 3.0, "thickness of the webs, m"));
+  m.parameters.add(makeParameter("stretch", 1.0, 0.5, 2.0, "the bay's length along x over its length along y (1: square)"));
+  m.parameters.add(makeParameter("voussoirs", 12, 2, 400, "voussoirs per arch of each web", false));
+  m.parameters.add(makeParameter("courses", 3, 1, 400, "transverse courses of each web from the centre to the bay's face", false));
+  m.parameters.add(makeParameter("pierHeight", 2.0, 0.0, 50.0, "height of the corner piers (0: the vault springs from the ground), m"));
+  m.parameters.add(makeParameter("pierWidth", 1.0, 0.05, 10.0, "side of the square corner piers (at least the thickness), m"));
+  m.parameters.add(makeParameter("drums", 2, 1, 100, "courses of each pier", false));
+  m.parameters.add(makeParameter("ribs", 0, 0, 1, "diagonal ribs under the groins (1) or none (0); they need an even number of voussoirs", false));
+  m.parameters.add(makeParameter("ribWidth", 0.2, 0.01, 3.0, "width of the ribs across the diagonal (at most thickness·√2/2), m"));
+  m.parameters.add(makeParameter("ribDepth", 0.2, 0.01, 5.0, "depth of the ribs below the intrados, m"));
   m.suggestedFree = {{"thickness", 0.1, 0.6}, {"pierWidth", 0.3, 2.0}};
   m.build = [](const ParameterSet& p) {
     GroinVaultSpec s;
     s.radius = p["radius"];
     s.thickness = p["thickness"];
     s.stretch = p["stretch"];
-    s.voussoirs = count(p, "voussoirs");
-    s.courses = count(p, "courses");
+    s.voussoirs = countOf(p, "voussoirs");
+    s.courses = countOf(p, "courses");
     s.pierHeight = p["pierHeight"];
     s.pierWidth = p["pierWidth"];
-    s.pierDrums = count(p, "drums");
-    s.ribs = count(p, "ribs") != 0;
+    s.pierDrums = countOf(p, "drums");
+    s.ribs = countOf(p, "ribs") != 0;
     s.ribWidth = p["ribWidth"];
     s.ribDepth = p["ribDepth"];
     StructureBuilder b;
@@ -466,9 +454,11 @@ ParametricModel exampleByName(const std::string& name) {
   if (name == "mosque") return mosqueExample();
   if (name == "mosque-hall") return mosqueHallExample();
   if (name == "groin-vault") return groinVaultExample();
-  std::string known;
+  if (auto t = templateModelByName(name)) return std::move(*t);
+  std::string known, templates;
   for (const std::string& n : exampleNames()) known += (known.empty() ? "" : ", ") + n;
-  throw Error("unknown example '" + name + "' (examples: " + known + ")");
+  for (const std::string& n : templateModelNames()) templates += (templates.empty() ? "" : ", ") + n;
+  throw Error("unknown example '" + name + "' (examples: " + known + "; templates: " + templates + ")");
 }
 
 }  // namespace corbel::statics

@@ -71,7 +71,8 @@ ParametricModel mosqueHallExample();
 ParametricModel groinVaultExample();
 
 std::vector<std::string> exampleNames();
-// Throws corbel::Error for an unknown name, listing the known ones.
+// An example, or a template alone (statics/template_models.h), by name. Throws corbel::Error
+// for an unknown name, listing the known ones.
 ParametricModel exampleByName(const std::string& name);
 
 }  // namespace corbel::statics

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "statics/examples.h"
+#include "statics/loads.h"
 
 namespace corbel::statics {
 
@@ -20,6 +21,24 @@ ParametricModel modelOf(const MasonrySpec& spec) {
     } catch (const Error& e) {
       throw InputError("masonry.parameters." + p.name, e.what());
     }
+  }
+  if (!spec.ground) {
+    // Resting on other objects: the model's fixed blocks go, so the object is drawn without its
+    // slab; analysed alone it then reaches nothing fixed, and says so.
+    model.build = [inner = model.build](const ParameterSet& p) {
+      Assembly a = inner(p);
+      std::erase_if(a.blocks, [](const Block& b) { return b.fixed; });
+      return a;
+    };
+  }
+  if (!spec.loads.empty()) {
+    // The artist's loads ride on every assembly the model builds: the analysis, the search's
+    // evaluations and the simulation all see them.
+    model.build = [inner = model.build, loads = spec.loads](const ParameterSet& p) {
+      Assembly a = inner(p);
+      applyLoads(a, loads);
+      return a;
+    };
   }
   return model;
 }

@@ -10,7 +10,9 @@ namespace corbel::statics {
 
 // The parametric model `spec.model` names, with the spec's parameter values set. A model or
 // parameter that does not exist, or a value the model refuses, throws InputError at
-// "masonry.model" or "masonry.parameters.NAME" with the model's own reason.
+// "masonry.model" or "masonry.parameters.NAME" with the model's own reason. Its build() adds
+// the spec's loads (statics/loads.h) to every assembly it makes, and leaves out the model's
+// fixed blocks when the spec has no ground (MasonrySpec::ground).
 ParametricModel modelOf(const MasonrySpec& spec);
 
 // Every block of the model one closed polyhedron of kind Block, tagged "block" (or "ground"

@@ -26,6 +26,20 @@ double parseBound(const std::string& text, const std::string& whole) {
 
 }  // namespace
 
+Parameter makeParameter(std::string name, double value, double lo, double hi, std::string description,
+                        bool continuous) {
+  Parameter p;
+  p.name = std::move(name);
+  p.value = value;
+  p.lo = lo;
+  p.hi = hi;
+  p.continuous = continuous;
+  p.description = std::move(description);
+  return p;
+}
+
+int countOf(const ParameterSet& p, const std::string& name) { return int(std::lround(p[name])); }
+
 void ParameterSet::add(Parameter p) {
   if (p.name.empty()) throw Error("parameters: a parameter needs a name");
   if (has(p.name)) throw Error("parameters: '" + p.name + "' is defined twice");

@@ -54,6 +54,13 @@ struct ParametricModel {
   std::vector<FreeParameter> suggestedFree;  // what a search frees when the user names none
 };
 
+// A parameter of a model: its name, default value, valid range and what it is in words; counts
+// (blocks, courses) are not continuous.
+Parameter makeParameter(std::string name, double value, double lo, double hi, std::string description,
+                        bool continuous = true);
+// The value of a count parameter, rounded to the nearest integer.
+int countOf(const ParameterSet& p, const std::string& name);
+
 // Parses "NAME=LO:HI". Throws corbel::Error naming the problem (no '=', no ':', a bound that
 // is not a finite number, lo > hi).
 FreeParameter parseFreeParameter(const std::string& text);

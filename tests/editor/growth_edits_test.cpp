@@ -456,6 +456,40 @@ TEST(SiteEdits, StoreysAndTheirHeightAreCheckedAgainstTheCirculation) {
   EXPECT_EQ(setStoreys(spec, 2, std::nan("")).error, "growth.site.storey_height: must be positive");
 }
 
+// The Growth behaviour fields: what is set reads back through the site reader as the same
+// settings, a default is not written, every key back at its default removes "growth", and a
+// value the reader refuses is refused with its message, changing nothing.
+TEST(SiteEdits, GrowthBehaviourSettingsAreWrittenReadBackAndChecked) {
+  const GrowthSpec spec = smallSite();
+  History history(withSite(spec));
+  const Document original = history.current();
+  growth::GrowthSettings g;
+  g.tau = 0.45;
+  g.doubleVolumeChance = 0;
+  g.minSubUnits = g.maxSubUnits = 1;
+  const SiteEditResult r = setGrowthSettings(spec, g);
+  ASSERT_TRUE(r.spec) << r.error;
+  EXPECT_EQ(growth::parseSite(r.spec->site).growth, g);
+  const nlohmann::json written = nlohmann::json::parse(r.spec->site)["growth"];
+  EXPECT_EQ(written, nlohmann::json::parse(R"({"tau": 0.45, "double_volume_chance": 0.0, "sub_units": [1, 1]})"));
+  EXPECT_EQ(siteFrame(r.spec->site).growth, g);
+  commitSpec(history, *r.spec, "Edit the growth behaviour");
+  EXPECT_EQ(savedAndReloaded(history), *r.spec);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), original);
+
+  const SiteEditResult back = setGrowthSettings(*r.spec, growth::GrowthSettings{});
+  ASSERT_TRUE(back.spec) << back.error;
+  EXPECT_FALSE(nlohmann::json::parse(back.spec->site).contains("growth"));
+  growth::GrowthSettings bad;
+  bad.tau = 1.5;
+  EXPECT_NE(setGrowthSettings(spec, bad).error.find("growth.site.growth.tau"), std::string::npos)
+      << setGrowthSettings(spec, bad).error;
+  bad = {};
+  bad.aspectChance = std::nan("");
+  EXPECT_FALSE(setGrowthSettings(spec, bad).spec);
+}
+
 TEST(SiteEdits, SeedGenerationControlsAreWrittenAndGiveTheExitsCountedByHand) {
   // A 6 m landing [13, 19] × [4, 6] on storey 0. 3 m seeds step 3 m along its ∓y sides:
   // x = 13 and 16, at y = 4 - 3 = 1 and y = 6: four exits, all clear of the lift's 1 m

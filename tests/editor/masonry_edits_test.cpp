@@ -6,10 +6,14 @@
 #include "core/error.h"
 #include "core/history.h"
 #include "core/project_io.h"
+#include "editor/masonry_view.h"
 #include "statics/analysis.h"
 #include "statics/kernel.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace corbel::editor {
 namespace {
@@ -220,6 +224,179 @@ TEST(MakeItStand, WithNoFreeParameterTheModelsSuggestionIsSearched) {
   const auto suggested = statics::modelOf(s).suggestedFree;
   ASSERT_EQ(free.size(), suggested.size());
   for (std::size_t i = 0; i < free.size(); ++i) EXPECT_EQ(free[i].name, suggested[i].name);
+}
+
+}  // namespace
+}  // namespace corbel::editor
+
+namespace corbel::editor {
+namespace {
+
+// The panel's before → after list: exactly the parameters the search moved, with the values the
+// spec had (the model's defaults where it set none) and has.
+TEST(MakeItStand, TheChangesListIsEveryMovedParameterBeforeAndAfter) {
+  Example e;
+  const MasonrySpec start = e.spec();
+  const statics::SearchResult r = searchMasonry(start);
+  ASSERT_EQ(r.status, statics::SearchStatus::Feasible) << r.message;
+  const auto next = applySearch(e.doc, e.id, start, r);
+  ASSERT_TRUE(next);
+  const MasonrySpec& after = std::get<MasonrySpec>(next->find(e.id)->spec);
+  const std::vector<ParameterChange> changes = parameterChanges(start, after);
+  const statics::ParametricModel before = statics::modelOf(start), now = statics::modelOf(after);
+  std::size_t moved = 0;
+  for (const statics::Parameter& p : before.parameters.all()) moved += now.parameters[p.name] != p.value;
+  ASSERT_EQ(changes.size(), moved);
+  ASSERT_GT(moved, 0u);
+  for (const ParameterChange& c : changes) {
+    EXPECT_EQ(c.before, before.parameters[c.name]) << c.name;
+    EXPECT_EQ(c.after, now.parameters[c.name]) << c.name;
+    EXPECT_TRUE(std::any_of(r.free.begin(), r.free.end(), [&](const auto& f) { return f.name == c.name; }))
+        << c.name << " was not free";
+  }
+  EXPECT_TRUE(parameterChanges(start, start).empty());
+}
+
+// An object that frees no parameter (as Object > Add makes one) takes edits to its values, and
+// fixing its last free parameter is allowed: the search then falls back on the model's suggestion.
+TEST(SetMasonryParameter, AnObjectWithNothingFreeCanBeEdited) {
+  Document d;
+  MasonrySpec column;
+  column.model = "column";
+  const ObjectId id = d.add("Column", column);
+  EXPECT_NO_THROW(setMasonryParameter(d, id, "height", 4.0));
+  EXPECT_EQ(statics::modelOf(masonryOf(d, id)).parameters["height"], 4.0);
+  setMasonryFree(d, id, "radius", std::make_pair(0.1, 0.5));
+  EXPECT_NO_THROW(setMasonryFree(d, id, "radius", std::nullopt));
+  EXPECT_TRUE(masonryOf(d, id).free.empty());
+}
+
+// Friction, α/√2 and the kern margin are one undoable change each, checked, and reach the analysis:
+// α/√2 at α analyses as α/√2 does without it (the identity the option is defined by).
+TEST(SetMasonryAnalysis, SettingsAreCheckedUndoableAndReachTheAnalysis) {
+  Example e;
+  History history(e.doc);
+  Document d = history.current();
+  setMasonryAnalysis(d, e.id, 0.9, true, 0.1);
+  history.commit(d, "Edit friction");
+  const MasonrySpec& s = std::get<MasonrySpec>(history.current().find(e.id)->spec);
+  EXPECT_EQ(s.friction, 0.9);
+  EXPECT_TRUE(s.conservativeFriction);
+  EXPECT_EQ(s.kern, 0.1);
+  MasonrySpec plain = s;
+  plain.conservativeFriction = false;
+  plain.friction = 0.9 / std::sqrt(2.0);
+  const statics::ParametricModel m = statics::modelOf(s);
+  const statics::Assembly a = m.build(m.parameters);
+  EXPECT_NEAR(statics::analyse(a, analysisOptionsOf(s)).yNormalised,
+              statics::analyse(a, analysisOptionsOf(plain)).yNormalised, 1e-12);
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), e.doc);
+
+  Document bad = e.doc;
+  EXPECT_THROW(setMasonryAnalysis(bad, e.id, -0.1, false, 0), Error);
+  EXPECT_THROW(setMasonryAnalysis(bad, e.id, 0.7, false, 1.0), Error);
+  EXPECT_THROW(setMasonryAnalysis(bad, e.id, std::nan(""), false, 0), Error);
+  EXPECT_EQ(bad, e.doc);
+}
+
+// Loads: named by what they are, checked against the model, removed again; a load on a block the
+// model lacks is refused and changes nothing.
+TEST(MasonryLoadEdits, AddNamesChecksAndRemoves) {
+  Example e;
+  Document d = e.doc;
+  MasonryLoad bell;
+  bell.block = "arch/voussoir 4";
+  bell.force = Vec3(0, 0, -9810);
+  EXPECT_EQ(addMasonryLoad(d, e.id, bell), 0u);
+  EXPECT_EQ(addMasonryLoad(d, e.id, bell), 1u);
+  MasonryLoad wind;
+  wind.block = "left column/drum 0";
+  wind.face = 0;
+  wind.pressure = 600;
+  EXPECT_EQ(addMasonryLoad(d, e.id, wind), 2u);
+  const auto names = [&] {
+    std::vector<std::string> n;
+    for (const MasonryLoad& l : masonryOf(d, e.id).loads) n.push_back(l.name);
+    return n;
+  };
+  EXPECT_EQ(names(), (std::vector<std::string>{"load 1", "load 2", "wind 1"}));
+  removeMasonryLoad(d, e.id, 0);
+  EXPECT_EQ(names(), (std::vector<std::string>{"load 2", "wind 1"}));
+  EXPECT_EQ(addMasonryLoad(d, e.id, bell), 2u);
+  EXPECT_EQ(names().back(), "load 1") << "the first free number";
+
+  const Document before = d;
+  MasonryLoad lost = bell;
+  lost.block = "arch/voussoir 400";
+  EXPECT_THROW(addMasonryLoad(d, e.id, lost), Error);
+  EXPECT_THROW(setMasonryLoad(d, e.id, 0, lost), Error);
+  EXPECT_THROW(removeMasonryLoad(d, e.id, 9), Error);
+  EXPECT_EQ(d, before);
+}
+
+}  // namespace
+}  // namespace corbel::editor
+
+namespace corbel::editor {
+namespace {
+
+// The arch on columns as three objects (0.3 m columns at x = ±1, a 0.12 m arch on them), each
+// freeing its own size: as the composed example at those values, it does not stand.
+Document arcade() {
+  Document d;
+  MasonrySpec column;
+  column.model = "column";
+  column.parameters = {{"drums", 1}, {"height", 1.5}, {"radius", 0.3 / std::sqrt(2.0)}, {"sides", 4}};
+  column.free = {{"radius", 0.1, 1.0}};
+  MasonrySpec arch;
+  arch.model = "semicircular-arch";
+  arch.parameters = {{"radius", 1.0}, {"thickness", 0.12}, {"voussoirs", 8}};
+  arch.free = {{"thickness", 0.05, 0.5}};
+  d.find(d.add("Left", column))->placement.translation = Vec3(-1, 0, 0);
+  d.find(d.add("Right", column))->placement.translation = Vec3(1, 0, 0);
+  d.find(d.add("Arch", arch))->placement.translation = Vec3(0, 0, 1.5);
+  return d;
+}
+
+// Together, the objects' free parameters are searched at once and applied as one undoable change
+// to each object's own spec; the result stands together by the strict LP.
+TEST(MasonryTogether, MakeThemStandChangesEachObjectInOneUndoStep) {
+  const Document d = arcade();
+  const ObjectId arch = d.objects[2].id;
+  const MasonryTogether t = masonryTogether(d, arch, 0.001);
+  EXPECT_EQ(t.objects.size(), 3u);
+  ASSERT_EQ(t.free.size(), 3u);
+  EXPECT_EQ(t.free[0].name, "Left/radius");
+  EXPECT_EQ(t.options.contactTolerance, 0.001);
+  EXPECT_FALSE(statics::checkFeasibility(t.model.build(t.model.parameters), t.options).feasible);
+  const statics::SearchResult r = searchTogether(t);
+  ASSERT_EQ(r.status, statics::SearchStatus::Feasible) << r.message;
+  std::string why;
+  const auto next = applyTogether(d, d, t, r, &why);
+  ASSERT_TRUE(next) << why;
+  const MasonryTogether after = masonryTogether(*next, arch, 0.001);
+  EXPECT_TRUE(statics::checkFeasibility(after.model.build(after.model.parameters), after.options).feasible);
+  for (const statics::FreeParameter& f : r.free) {
+    const auto slash = f.name.find('/');
+    const DocObject* o = nullptr;
+    for (const DocObject& x : next->objects)
+      if (x.name == f.name.substr(0, slash)) o = &x;
+    ASSERT_NE(o, nullptr);
+    EXPECT_EQ(statics::modelOf(std::get<MasonrySpec>(o->spec)).parameters[f.name.substr(slash + 1)], r.values[f.name]);
+  }
+  History history(d);
+  history.commit(*next, "Make the masonry objects stand together");
+  ASSERT_TRUE(history.undo());
+  EXPECT_EQ(history.current(), d);
+
+  Document moved = d;
+  moved.objects[0].placement.translation = Vec3(-1.1, 0, 0);
+  EXPECT_FALSE(applyTogether(moved, d, t, r, &why));
+  EXPECT_EQ(why, "an object was edited while the search ran");
+  Document alone;
+  const ObjectId only = alone.add("Arch", std::get<MasonrySpec>(d.objects[2].spec));
+  EXPECT_THROW(masonryTogether(alone, only, 0.001), Error);
 }
 
 }  // namespace

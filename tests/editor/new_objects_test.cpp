@@ -7,7 +7,11 @@
 #include "statics/examples.h"
 #include "statics/kernel.h"
 
+#include "statics/template_models.h"
+
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace corbel::editor {
 namespace {
@@ -45,11 +49,17 @@ TEST(NewObjects, TheStarterGrowthSiteGrowsInsideItsEnvelope) {
 
 TEST(NewObjects, EveryMasonryTemplateIsOffered) {
   const auto t = masonryTemplates();
-  ASSERT_EQ(t.size(), statics::exampleNames().size());
+  ASSERT_EQ(t.size(), statics::exampleNames().size() + statics::templateModelNames().size());
+  std::size_t examples = 0;
   for (const MasonryTemplate& m : t) {
+    const auto& names = statics::exampleNames();
+    EXPECT_EQ(m.example, std::find(names.begin(), names.end(), m.model) != names.end()) << m.model;
+    examples += m.example;
     EXPECT_NE(m.label, m.model) << "a label in words for " << m.model;
     EXPECT_NO_THROW(statics::modelOf(masonryObject(m.model))) << m.model;
   }
+  EXPECT_EQ(examples, statics::exampleNames().size());
+  EXPECT_FALSE(t.front().example) << "the templates alone come first";
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #     step; picks of a list never merge as typed values do).
 set -euo pipefail
 editor=$1 work=$2
-source "$(dirname "$0")/test_log_lib.sh"  # wait_for, under_xvfb
+source "$(dirname "$0")/test_log_lib.sh"  # wait_for, click_widget, under_xvfb
 under_xvfb "$@"
 rm -rf "$work" && mkdir -p "$work"
 export CORBEL_STATE_DIR=$work/state
@@ -23,12 +23,6 @@ JSON
 log=$work/house.jsonl
 manual="manual (segment tags high, low)"
 
-click_widget() {
-  wait_for "'$1' in j.get('widgets', {})"
-  local x y
-  read -r x y <<<"$(python3 -c 'import json,sys; r=json.loads(open(sys.argv[1]).read().splitlines()[-1])["widgets"][sys.argv[2]]; print(int((r[0] + r[2]) / 2), int((r[1] + r[3]) / 2))' "$log" "$1")"
-  xdotool mousemove --sync --window "$wid" "$x" "$y" click 1
-}
 saved() {  # saves and checks the file's priority is $1
   xdotool key --clearmodifiers ctrl+s
   wait_for "not j['dirty']"

@@ -60,3 +60,12 @@ for arg in sys.argv[2:]:
     print(int(round(vx + (nx + 1) / 2 * vw)), int(round(vy + (1 - ny) / 2 * vh)))
 PY
 }
+
+# Clicks the middle of the widget the log names $1 (editor/widget_marks.h), once it is drawn; uses
+# the caller's $wid (the editor's window).
+click_widget() {
+  wait_for "'$1' in j.get('widgets', {})"
+  local x y
+  read -r x y <<<"$(python3 -c 'import json,sys; r=json.loads(open(sys.argv[1]).read().splitlines()[-1])["widgets"][sys.argv[2]]; print(int((r[0] + r[2]) / 2), int((r[1] + r[3]) / 2))' "$log" "$1")"
+  xdotool mousemove --sync --window "$wid" "$x" "$y" click 1
+}

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -118,6 +119,74 @@ TEST(StaticsCli, AProjectsMasonryObjectIsAnalysedAndMadeToStand) {
   EXPECT_GE(width, 0.1);
   EXPECT_LE(width, 1.5);
   EXPECT_EQ(cli(project + " --object 'No such'").code, 1);
+}
+
+// statics PROJECT --optimize --save writes the values found back: a fresh run reads the saved file
+// and finds it standing, at values within its free bounds, with its bounds, friction and name
+// kept; a run that leaves it as it was writes nothing.
+TEST(StaticsCli, SaveWritesTheValuesFoundIntoTheProject) {
+  const std::string path = testing::TempDir() + "save-arch.corbel";
+  {
+    std::ifstream in(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/masonry-arch.corbel");
+    std::ofstream(path) << in.rdbuf();
+  }
+  const std::string project = "'" + path + "'";
+  CliRun r = cli(project + " --optimize --save");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("saved: " + path), std::string::npos) << r.out;
+  r = cli(project + " --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(nlohmann::json::parse(r.out)["stands"].get<bool>()) << "the saved values stand: " << r.out;
+  const nlohmann::json saved = nlohmann::json::parse(std::ifstream(path));
+  const nlohmann::json& m = saved["objects"][0]["masonry"];
+  EXPECT_EQ(saved["objects"][0]["name"], "Arch on columns");
+  EXPECT_EQ(m["free"]["thickness"], nlohmann::json::parse("[0.05, 0.5]"));
+  EXPECT_EQ(m["friction"], 0.7);
+  const double t = m["parameters"]["thickness"];
+  EXPECT_GE(t, 0.05);
+  EXPECT_LE(t, 0.5);
+  EXPECT_NE(t, 0.12) << "the search moved it";
+
+  std::ifstream before(path);
+  const std::string bytes((std::istreambuf_iterator<char>(before)), std::istreambuf_iterator<char>());
+  r = cli(project + " --save");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("(unchanged)"), std::string::npos) << r.out;
+  std::ifstream after(path);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(after)), std::istreambuf_iterator<char>()), bytes);
+  EXPECT_NE(cli(project + " --save --scene").code, 0) << "--save has nothing to write with --scene";
+}
+
+// statics PROJECT --together: the arch on columns as three objects (two 0.3 m columns, a 0.12 m
+// arch: it does not stand, as the composed example at those values does not). --optimize over the
+// objects' free parameters with --save writes each object's own values back, and the saved
+// project then stands together. Without --together each column alone stands.
+TEST(StaticsCli, TogetherAnalysesObjectsAsOneStructureAndSavesEachOnesValues) {
+  const std::string path = testing::TempDir() + "arcade.corbel";
+  std::ofstream(path) << R"({"format": "corbel", "version": 2, "name": "Arcade", "objects": [
+    {"id": 1, "name": "Left", "placement": {"translation": [-1, 0, 0]}, "masonry": {"model": "column",
+      "parameters": {"drums": 1, "height": 1.5, "radius": 0.21213203435596427, "sides": 4}, "free": {"radius": [0.1, 1.0]}}},
+    {"id": 2, "name": "Right", "placement": {"translation": [1, 0, 0]}, "masonry": {"model": "column",
+      "parameters": {"drums": 1, "height": 1.5, "radius": 0.21213203435596427, "sides": 4}, "free": {"radius": [0.1, 1.0]}}},
+    {"id": 3, "name": "Arch", "placement": {"translation": [0, 0, 1.5]}, "masonry": {"model": "semicircular-arch",
+      "parameters": {"radius": 1, "thickness": 0.12, "voussoirs": 8}, "free": {"thickness": [0.05, 0.5]}}}]})";
+  const std::string project = "'" + path + "'";
+  CliRun r = cli(project + " --together --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["stands"].get<bool>());
+  EXPECT_EQ(j["blocks"], 11) << "2 drums, 8 voussoirs, one ground";
+  r = cli(project + " --json");
+  ASSERT_EQ(r.code, 0);
+  r = cli(project + " --together --optimize --save");
+  ASSERT_EQ(r.code, 0) << r.out;
+  r = cli(project + " --together --json");
+  j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["stands"].get<bool>()) << r.out;
+  const nlohmann::json saved = nlohmann::json::parse(std::ifstream(path));
+  EXPECT_NE(saved["objects"][2]["masonry"]["parameters"]["thickness"], 0.12) << "the arch's own value was saved";
+  EXPECT_EQ(saved["objects"][2]["masonry"]["parameters"].count("Arch/thickness"), 0u);
+  EXPECT_NE(cli(project + " --together --object Arch").code, 0);
 }
 
 // statics PROJECT --scene: a column x ∈ [0, 1] and a statue x ∈ [0.8, 2.8] (0.4 × 0.5) on it,

@@ -818,7 +818,56 @@ TEST(ProjectIo, MasonrySpecsRoundTrip) {
   // Only the model is required; the rest takes the defaults.
   const auto minimal = corbel::parseProject(withMasonry(R"("model": "tower")"));
   const auto& spec = std::get<corbel::MasonrySpec>(minimal.document.objects[0].spec);
-  EXPECT_EQ(spec, (corbel::MasonrySpec{"tower", {}, {}, 0.7, 0.0, "stone"}));
+  corbel::MasonrySpec tower;
+  tower.model = "tower";
+  EXPECT_EQ(spec, tower);
+  EXPECT_EQ(spec.friction, 0.7);
+  EXPECT_FALSE(spec.conservativeFriction);
+  EXPECT_EQ(spec.kern, 0.0);
+  EXPECT_TRUE(spec.loads.empty());
+  EXPECT_EQ(spec.material, "stone");
+}
+
+// A key the reader does not know inside a placement that is otherwise the identity (a misspelt
+// "translation") is kept through a save: the placement is written to hold it.
+TEST(ProjectIo, AnUnknownKeyInAnIdentityPlacementIsKept) {
+  const std::string text = R"({"format": "corbel", "version": 2, "objects": [{"id": 1, "name": "B", "box": {"size": [1, 1, 1]},
+    "placement": {"traslation": [1, 2, 3]}}]})";
+  const corbel::LoadedProject p = corbel::parseProject(text);
+  ASSERT_EQ(p.warnings.size(), 1u);
+  const std::string saved = corbel::serializeProject(p.document);
+  EXPECT_NE(saved.find("traslation"), std::string::npos) << saved;
+  EXPECT_EQ(corbel::parseProject(saved).document, p.document);
+}
+
+// Loads and α/√2 round trip: a point load keeps its block, offset and force, a pressure its face;
+// a spec without them writes neither key (older files stay as they were).
+TEST(ProjectIo, MasonryLoadsAndConservativeFrictionRoundTrip) {
+  Document d;
+  corbel::MasonrySpec m;
+  m.model = "arch-on-columns";
+  m.conservativeFriction = true;
+  m.loads = {{"bell", "arch/voussoir 4", corbel::Vec3(0, 0.1, 0.05), corbel::Vec3(0, 0, -9810), -1, 0.0},
+             {"wind 1", "left column/drum 0", corbel::Vec3(0.0), corbel::Vec3(0.0), 2, 600.0}};
+  m.ground = false;
+  d.add("arch", m);
+  d.add("plain", corbel::MasonrySpec{});
+  const std::string text = corbel::serializeProject(d);
+  const corbel::LoadedProject back = corbel::parseProject(text);
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(back.document, d);
+  EXPECT_EQ(corbel::serializeProject(back.document), text);
+  EXPECT_NE(text.find(R"("conservative_friction": true)"), std::string::npos);
+  EXPECT_NE(text.find(R"("ground": false)"), std::string::npos);
+  EXPECT_EQ(text.find(R"("ground": true)"), std::string::npos) << "the default is not written";
+  EXPECT_NE(text.find(R"("face": 2)"), std::string::npos);
+  EXPECT_EQ(text.find(R"("conservative_friction": false)"), std::string::npos);
+  const std::string plain = corbel::serializeProject([] {
+    Document one;
+    one.add("plain", corbel::MasonrySpec{});
+    return one;
+  }());
+  EXPECT_EQ(plain.find("loads"), std::string::npos);
 }
 
 TEST(ProjectIoErrors, MasonryFaultsNameTheirPath) {
@@ -835,6 +884,14 @@ TEST(ProjectIoErrors, MasonryFaultsNameTheirPath) {
   EXPECT_FAULT(withMasonry(R"("model": "tower", "kern": 1)"), "objects[0].masonry.kern",
                "the kern factor must be below 1 (1 would shrink every contact to a point)");
   EXPECT_FAULT_CONTAINS(withMasonry(R"("model": "tower", "friction": -0.1)"), "objects[0].masonry.friction", "-0.1");
+  EXPECT_FAULT(withMasonry(R"("model": "tower", "loads": [{"block": "b", "face": 1, "pressure": 5, "force": [0, 0, 1]}])"),
+               "objects[0].masonry.loads[0]", "a load has either a face and a pressure or a force, not both");
+  EXPECT_FAULT(withMasonry(R"("model": "tower", "loads": [{"block": "b", "pressure": 5}])"),
+               "objects[0].masonry.loads[0]", "a pressure needs the face it acts on (\"face\": index in the block)");
+  EXPECT_FAULT(withMasonry(R"("model": "tower", "loads": [{"force": [0, 0, 1]}])"), "objects[0].masonry.loads[0].block",
+               "missing");
+  EXPECT_FAULT_CONTAINS(withMasonry(R"("model": "tower", "loads": [{"block": "b", "face": -1, "pressure": 5}])"),
+                        "objects[0].masonry.loads[0].face", "-1");
   EXPECT_FAULT(R"({"format": "corbel", "version": 1, "objects": [{"id": 1, "name": "M", "masonry": {"model": "tower"}, "box": {"size": [1, 1, 1]}}]})",
                "objects[0]", "more than one spec: an object has exactly one");
 }
