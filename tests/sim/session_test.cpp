@@ -372,9 +372,8 @@ TEST(Session, NonConvexBlocksAreRefusedByName) {
 
 // A point load acts where it is: a unit cube of weight W pushed sideways at its top edge's
 // middle by P tips over its far bottom edge when P·1 > W·½ (by hand; sliding needs P > 0.7 W).
-// At 0.9 of that it does not fall; at 1.1 it does. (Below the threshold the cube still creeps,
-// about 3 cm/s at 0.9: Bullet's contacts give under a steady torque; docs/sim.md.) Applied at
-// the centroid, the largest of these forces leaves it where it was.
+// At 0.9 of that it stays where it is, as a block held by friction should; at 1.1 it falls.
+// Applied at the centroid, the largest of these forces leaves it where it was.
 TEST(Session, PointLoadsTipACubeAtTheHandComputedForce) {
   const double W = 2400 * 9.81;
   for (const auto& [factor, falls] : {std::pair{0.9, false}, {1.1, true}}) {
@@ -386,13 +385,64 @@ TEST(Session, PointLoadsTipACubeAtTheHandComputedForce) {
     if (falls)
       EXPECT_GT(s.maxDisplacement()[0], 0.5) << factor;
     else
-      EXPECT_LT(s.maxDisplacement()[0], 0.1) << factor;
+      EXPECT_LT(s.maxDisplacement()[0], kStandsWithin) << factor;
   }
   statics::Assembly as = stack(1.0, {0.0});
   as.blocks[0].pointLoads.push_back({Vec3(0.5, 0.5, 0.5), Vec3(1.1 * W / 2, 0, 0)});
   Session s(as);
   s.runUntil(2.0);
   EXPECT_LT(s.maxDisplacement()[0], 1e-3);
+}
+
+}  // namespace
+}  // namespace corbel::sim
+
+namespace corbel::sim {
+namespace {
+
+// With exact contacts (hull_contact.h) blocks meet through their own faces. A box on level
+// ground and a cube on a cube are in equilibrium as built, their contacts the corners of the
+// faces that touch: they rest where they are, to a micrometre. On a slope of 30° (below
+// atan 0.7 = 35°) friction holds the box as still; on 40° it slides as Coulomb's law gives,
+// ½ g (sin θ − α cos θ) t².
+TEST(Session, ExactContactsHoldWhatIsInEquilibriumAndSlideAsCoulomb) {
+  SimSettings exact;
+  exact.exactContacts = true;
+  for (const statics::Assembly& as : {stack(0.4, {0}), stack(0.3, {0, 0})}) {
+    Session s(as, exact);
+    s.runUntil(5.0);
+    EXPECT_LT(largest(s.maxDisplacement()), 1e-6) << as.blocks.size() - 1 << " cubes";
+  }
+  const double g = 9.81, mu = 0.7;
+  auto onSlope = [&](double thetaDeg) {
+    statics::Assembly as;
+    as.blocks = {statics::boxBlock("box", Vec3(-0.2, -0.2, 0), Vec3(0.2, 0.2, 0.2)), ground()};
+    const double t = thetaDeg * M_PI / 180;
+    as.gravity = Vec3(std::sin(t), 0, -std::cos(t));
+    return as;
+  };
+  Session held(onSlope(30), exact);
+  held.runUntil(5.0);
+  EXPECT_LT(held.maxDisplacement()[0], 1e-6);
+  const double theta = 40 * M_PI / 180;
+  Session slides(onSlope(40), exact);
+  slides.runUntil(1.0);
+  const double expected = g * (std::sin(theta) - mu * std::cos(theta)) / 2;
+  EXPECT_NEAR(slides.poses()[0].translation[0], expected, 0.02 * expected);
+  EXPECT_NEAR(slides.poses()[0].translation[2], 0, 1e-6) << "it slides on the slope, not into it";
+}
+
+// The arch of ArchThatStandsWithAMarginStaysStill, with exact contacts.
+TEST(Session, ExactContactsKeepAnArchWithAMarginStill) {
+  statics::AnalysisOptions middleThird;
+  middleThird.kernShrink = kMiddleThird;
+  const double least = statics::minimumArchThickness(archOf(8, 0.2), middleThird, 1e-4);
+  SimSettings exact;
+  exact.exactContacts = true;
+  Session s(statics::semicircularArch(archOf(8, 1.5 * least)), exact);
+  s.runUntil(5.0);
+  EXPECT_LT(largest(s.maxDisplacement()), kStandsWithin);
+  EXPECT_TRUE(s.fallenBlocks().empty());
 }
 
 }  // namespace
