@@ -6,6 +6,7 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -144,6 +145,35 @@ TEST(SimulateCli, ProjectsWithAMasonryObjectRun) {
       corbel(std::string("simulate '") + CORBEL_SOURCE_DIR + "/assets/examples/masonry-arch.corbel' --seconds 0.2");
   ASSERT_EQ(run.exit, 0) << run.stderrText;
   EXPECT_EQ(nlohmann::json::parse(run.stdoutText)["model"], "Arch on columns");
+}
+
+// A masonry object's loads are simulated: a 0.4 × 0.4 × 2 m pier pushed sideways at its top by
+// a fraction f of the force that tips it (W·w/(2h), moments about its far edge; friction 2 rules
+// out sliding) stands at f = 0.8 and tips at f = 1.3; at 0.8 the thrust at the base lies 0.8 of
+// the way to the edge, so the statics kern margin is 1 − 0.8 (to the bisection's 0.01).
+TEST(SimulateCli, AMasonryObjectsLoadsAreSimulated) {
+  const double w = 0.4, h = 2.0, weight = 2400 * 9.81 * w * w * h, tipping = weight * (w / 2) / h;
+  for (const double f : {0.8, 1.3}) {
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / ("pier-" + std::to_string(f) + ".corbel");
+    nlohmann::json load = {{"name", "push"}, {"block", "column/drum 0"}, {"offset", {0, 0, h / 2}}, {"force", {f * tipping, 0, 0}}};
+    nlohmann::json doc = {{"format", "corbel"}, {"version", 2}, {"name", "pier"},
+                          {"objects", {{{"id", 1}, {"name", "Pier"},
+                                        {"masonry", {{"model", "column"},
+                                                     {"parameters", {{"drums", 1}, {"height", h}, {"radius", w / std::sqrt(2.0)}, {"sides", 4}}},
+                                                     {"friction", 2.0}, {"loads", {load}}}}}}}};
+    std::ofstream(path) << doc.dump();
+    const Outcome run = corbel("simulate '" + path.string() + "' --seconds 2");
+    ASSERT_EQ(run.exit, 0) << run.stderrText;
+    const auto j = nlohmann::json::parse(run.stdoutText);
+    if (f < 1) {
+      EXPECT_EQ(j["fallen_count"], 0);
+      EXPECT_LT(j["largest_displacement"].get<double>(), 1e-3);
+      EXPECT_NEAR(j["statics"]["kern_margin"].get<double>(), 1 - f, 0.01);
+    } else {
+      EXPECT_EQ(j["fallen_count"], 1);
+      EXPECT_FALSE(j["statics"]["stands"].get<bool>());
+    }
+  }
 }
 
 TEST(SimulateCli, BadInputIsRefusedWithTheReason) {
