@@ -306,8 +306,8 @@ statics::ParametricModel masonryModelOf(const DocObject& o) {
   return statics::modelOf(std::get<MasonrySpec>(o.spec));
 }
 
-// --save: object `o` of `saved` at the values its run ended with. A masonry object keeps every
-// parameter it set and gains each one the run changed (in name order); an extrusion in stone
+// --save: object `o` of `saved` at the values its run ended with: a masonry object's changed
+// parameters set as the editor sets them (editor::setMasonryParameter); an extrusion in stone
 // takes its section's values (statics::stoneWallsAt).
 void writeBack(Document& saved, const DocObject& o, const statics::ParameterSet& ended) {
   DocObject& target = *saved.find(o.id);
@@ -315,15 +315,10 @@ void writeBack(Document& saved, const DocObject& o, const statics::ParameterSet&
     e->masonry = statics::stoneWallsAt(*e->masonry, ended);
     return;
   }
-  const MasonrySpec& spec = std::get<MasonrySpec>(o.spec);
-  const statics::ParametricModel before = statics::modelOf(spec);
-  std::map<std::string, double> values;
-  for (const MasonryParameter& q : spec.parameters) values[q.name] = q.value;
+  // As the editor applies Make It Stand: each changed parameter set, in name order.
+  const statics::ParametricModel before = statics::modelOf(std::get<MasonrySpec>(o.spec));
   for (const statics::Parameter& q : ended.all())
-    if (values.count(q.name) || q.value != before.parameters[q.name]) values[q.name] = q.value;
-  MasonrySpec& next = std::get<MasonrySpec>(target.spec);
-  next.parameters.clear();
-  for (const auto& [name, value] : values) next.parameters.push_back({name, value});
+    if (q.value != before.parameters[q.name]) editor::setMasonryParameter(saved, o.id, q.name, q.value);
 }
 
 // statics PROJECT --together: every masonry object (and extrusion in stone) of the project as one
