@@ -80,6 +80,19 @@ void App::beginTransform(Transform::Mode mode, bool dragged) {
   if (start.empty()) return;
   const Ray r = view_.ray(tool_.pointerX(), tool_.pointerY());
   transform_.begin(mode, start, selectionPivot(), r);
+  if (mode == Transform::Mode::Move) {
+    // The faces a move snaps onto: every other object's, placed where they stand now; the reach
+    // is a few pixels at the pivot's depth, so it feels the same at every zoom.
+    std::vector<ObjectId> moving, others;
+    for (const auto& [id, p] : start) moving.push_back(id);
+    for (const auto& [id, info] : scene_.objects())
+      if (!start.count(id)) others.push_back(id);
+    const Vec3 pivot = transform_.pivot();
+    const Ray a = view_.ray(tool_.pointerX(), tool_.pointerY()), b = view_.ray(tool_.pointerX() + kFaceSnapPixels, tool_.pointerY());
+    const double depth = (pivot - a.origin).norm();
+    const double reach = ((a.origin + depth * a.direction) - (b.origin + depth * b.direction)).norm();
+    transform_.setFaceSnap(axisFaces(scene_, moving), std::make_shared<FaceSnapTargets>(axisFaces(scene_, others)), reach);
+  }
   transformDragged_ = dragged;
   transformCommitted_ = false;
   history_.closeMerge();
@@ -136,6 +149,7 @@ void App::transformInput() {
   }
   if (!transform_.active()) return;
   transform_.setSnap(ImGui::GetIO().KeyCtrl);
+  transform_.setFaceSnapOn(!ImGui::GetIO().KeyAlt);
   previewTransform();
   ImGui::SetTooltip("%s", transform_.describe().c_str());
 }
@@ -304,7 +318,8 @@ void App::registerStudioActions() {
        [this] { selection_.clear(); }, anySelected});
   add({"object.move", "Object", "Move",
        "Move the selection with the pointer (Blender's G): X, Y or Z keeps to an axis, type a distance and Enter, Ctrl "
-       "snaps to 0.5 m; click or Enter confirms, Esc or right click cancels. One undo step.",
+       "snaps to 0.5 m, a face near another object's face lies on it (Alt: freely); click or Enter confirms, Esc or "
+       "right click cancels. One undo step.",
        {GLFW_KEY_G}, true, [this] { beginTransform(Transform::Mode::Move, false); }, anyMovable, {}, true});
   add({"object.rotate", "Object", "Rotate",
        "Turn the selection about z round its base centre (Blender's R): type degrees and Enter, Ctrl snaps to 15°. One "

@@ -12,7 +12,8 @@ const std::vector<Gesture>& paneGestures() {
       {"3D view", "Ctrl+left drag, or B then drag", "Box select (Shift on release adds to the selection)."},
       {"3D view", "Drag the gizmo", "Arrows (x red, y green, z blue) move along an axis, the yellow square on the ground, the "
                                     "green square on x and z, the red one on y and z, the ring turns about z; type a "
-                                    "value and press Enter; Ctrl snaps (0.5 m, 15°)."},
+                                    "value and press Enter; Ctrl snaps (0.5 m, 15°). A moved face within 10 pixels of "
+                                    "another object's facing face is laid on it (Alt moves freely)."},
       {"3D view", "Click on the selected object", "Extrusion: pick the face (its plan edge and profile segment light "
                                                   "up in the panes). Town: pick a building. Simulated masonry: pick a block."},
       {"3D view", "P (Push/Pull), then drag a face", "Wall: its plan edge moves out or in (neighbours follow). Roof: its "

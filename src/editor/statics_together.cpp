@@ -95,7 +95,9 @@ void StaticsPanel::collectTogether(const StaticsHost& host) {
 }
 
 void StaticsPanel::drawTogether(const StaticsHost& host) {
-  if (!ImGui::CollapsingHeader("All masonry objects together")) return;
+  const bool open = ImGui::CollapsingHeader("All masonry objects together");
+  marks::mark("together header");
+  if (!open) return;
   if (!host.doc) return;
   int others = 0;
   for (const DocObject& o : host.doc->objects) others += std::holds_alternative<MasonrySpec>(o.spec) && o.id != host.object;

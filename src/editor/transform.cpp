@@ -27,6 +27,30 @@ void Transform::begin(Mode mode, const std::map<ObjectId, Placement>& objects, c
   startRay_ = ray_ = ray;
   viewDir_ = ray.direction;
   typed_.clear();
+  movingFaces_.clear();
+  targets_.reset();
+  faceTolerance_ = 0;
+  faceSnapOn_ = true;
+}
+
+void Transform::setFaceSnap(std::vector<AxisFace> moving, std::shared_ptr<const FaceSnapTargets> targets, double tolerance) {
+  movingFaces_ = std::move(moving);
+  targets_ = std::move(targets);
+  faceTolerance_ = tolerance;
+}
+
+FaceSnap Transform::faceSnap() const {
+  if (mode_ != Mode::Move || !faceSnapOn_ || snap_ || !targets_ || typed_.value()) return {};
+  std::array<bool, 3> free{};
+  switch (axis_) {
+    case Axis::X: free = {true, false, false}; break;
+    case Axis::Y: free = {false, true, false}; break;
+    case Axis::Z: free = {false, false, true}; break;
+    case Axis::Free: free = {true, true, false}; break;
+    case Axis::XZ: free = {true, false, true}; break;
+    case Axis::YZ: free = {false, true, true}; break;
+  }
+  return snapFaces(movingFaces_, *targets_, pointerOffset(), free, faceTolerance_);
 }
 
 void Transform::pointer(const Ray& ray) { ray_ = ray; }
@@ -51,6 +75,11 @@ std::optional<Vec3> Transform::planeHit(const Ray& r) const {
 }
 
 Vec3 Transform::offset() const {
+  if (mode_ != Mode::Move) return Vec3(0, 0, 0);
+  return pointerOffset() + faceSnap().delta;
+}
+
+Vec3 Transform::pointerOffset() const {
   if (mode_ != Mode::Move) return Vec3(0, 0, 0);
   const auto a = planeHit(startRay_), b = planeHit(ray_);
   Vec3 d = a && b ? *b - *a : Vec3(0, 0, 0);
@@ -121,6 +150,12 @@ std::string Transform::describe() const {
   if (mode_ == Mode::Move) {
     const Vec3 d = offset();
     std::snprintf(buf, sizeof buf, "Move%s: %.3f, %.3f, %.3f m", axis, d[0], d[1], d[2]);
+    if (const FaceSnap f = faceSnap(); f.any()) {
+      std::string on = " (face on face:";
+      for (int k = 0; k < 3; ++k)
+        if (f.onto[k]) on += std::string(" ") + "xyz"[k];
+      return buf + on + ")" + typed + "  — Alt moves freely, X/Y/Z axis, type a value, Ctrl snaps to the grid, Enter or click to confirm, Esc cancels";
+    }
   } else if (mode_ == Mode::Rotate) {
     std::snprintf(buf, sizeof buf, "Rotate about z: %.2f°", angle());
   } else {

@@ -2,13 +2,17 @@
 // Moving and turning the selected objects in the 3D view, Blender's G and R as a state machine
 // (no GL, no ImGui): the pointer drags, X/Y/Z constrains to an axis, digits typed meanwhile give
 // the exact value (3.5 Enter), Ctrl snaps (0.5 m grid, 15°), a left click or Enter confirms,
-// Escape or a right click puts everything back. What it computes is each object's placement;
+// Escape or a right click puts everything back. A move lays the moving objects' faces on other
+// objects' facing faces within a few pixels (face_snap.h) unless a value is typed, Ctrl snaps
+// to the grid, or the face snap is switched off (Alt held). What it computes is each object's placement;
 // the App commits them (one undo step per transform).
 #include "core/document.h"
+#include "editor/face_snap.h"
 #include "editor/typed_value.h"
 #include "editor/viewport.h"
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -16,6 +20,7 @@ namespace corbel::editor {
 
 inline constexpr double kMoveSnap = 0.5;     // m
 inline constexpr double kRotateSnap = 15.0;  // degrees
+inline constexpr float kFaceSnapPixels = 10;  // how near, on screen, a face snaps onto another
 
 class Transform {
  public:
@@ -34,6 +39,12 @@ class Transform {
   void pointer(const Ray& ray);            // the pointer moved
   void setAxis(Axis axis);                 // X, Y, Z, XZ, YZ; the same one again frees it
   void setSnap(bool snap) { snap_ = snap; }
+  // The faces a move may snap: the moving objects' (placed where the move began) and the
+  // others', and how near (m) a face must come.
+  void setFaceSnap(std::vector<AxisFace> moving, std::shared_ptr<const FaceSnapTargets> targets, double tolerance);
+  void setFaceSnapOn(bool on) { faceSnapOn_ = on; }
+  // What the face snap does to the move now (nothing when it is off or finds no face).
+  FaceSnap faceSnap() const;
   // A typed character of the value ('0'-'9', '.', '-'); false if it is none of those.
   bool type(char c) { return typed_.type(c); }
   void backspace() { typed_.backspace(); }
@@ -50,6 +61,7 @@ class Transform {
 
  private:
   std::optional<Vec3> planeHit(const Ray& ray) const;
+  Vec3 pointerOffset() const;  // the move before the face snap
   Mode mode_ = Mode::None;
   Axis axis_ = Axis::Free;
   bool snap_ = false;
@@ -58,6 +70,10 @@ class Transform {
   Ray startRay_, ray_;
   Vec3 viewDir_{0, 0, -1};
   TypedValue typed_;
+  std::vector<AxisFace> movingFaces_;
+  std::shared_ptr<const FaceSnapTargets> targets_;
+  double faceTolerance_ = 0;
+  bool faceSnapOn_ = true;
 };
 
 }  // namespace corbel::editor
