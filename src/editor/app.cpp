@@ -596,6 +596,16 @@ int App::run() {
     pollJob();
     syncScene();
 
+    // "Build in stone" of a selected extrusion: its work collected before the left panel draws it.
+    if (const DocObject* o = selected() ? history_.current().find(*selected()) : nullptr;
+        o && std::holds_alternative<ExtrusionSpec>(o->spec)) {
+      if (stoneFor_ != o->id) stone_.reset();
+      stoneFor_ = o->id;
+      stone_.update(staticsHost());
+    } else if (stoneFor_) {
+      stone_.reset();
+      stoneFor_.reset();
+    }
     drawMenuBar();
     drawLeftPanel();
     drawStatusBar();

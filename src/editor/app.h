@@ -29,6 +29,7 @@
 #include "editor/options.h"
 #include "editor/push_pull.h"
 #include "editor/statics_panel.h"
+#include "editor/stone_panel.h"
 #include "editor/tape_measure.h"
 #include "editor/test_log.h"
 #include "editor/transform.h"
@@ -261,6 +262,8 @@ class App {
   std::vector<std::function<void()>> deferred_;  // the panels' commits of this frame (deferredCommit)
   StaticsPanel statics_;
   std::optional<ObjectId> staticsFor_;
+  StonePanel stone_;  // "Build in stone" of a selected extrusion, in the left panel
+  std::optional<ObjectId> stoneFor_;
   double frameSeconds_ = 0;  // wall time since the last frame began
   std::chrono::steady_clock::time_point lastFrame_;
   // What the viewport draws while a simulation is shown: the Scene with the simulated object's

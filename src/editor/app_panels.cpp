@@ -243,6 +243,7 @@ void App::drawLeftPanel() {
   if (selected()) {
     if (const DocObject* o = history_.current().find(*selected())) drawObjectProperties(*o);
     if (const DocObject* o = selected() ? history_.current().find(*selected()) : nullptr) drawPlacementFields(*o);
+    if (stoneFor_ && selected() == stoneFor_) stone_.draw(staticsHost());
   }
   ImGui::PopItemWidth();
   ImGui::End();

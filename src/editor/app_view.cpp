@@ -184,6 +184,9 @@ void App::drawView() {
   const render::Overlay::Mark below = renderer_->overlay().mark(), above = renderer_->overlayOnTop().mark();
   if (const DocObject* m = selectedMasonry(); m && m->visible)
     statics_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), std::get<MasonrySpec>(m->spec), m->placement);
+  if (const DocObject* o = selected() ? doc.find(*selected()) : nullptr; o && o->visible && stoneFor_ == o->id)
+    if (const auto* e = std::get_if<ExtrusionSpec>(&o->spec))
+      stone_.drawOverlay(renderer_->overlay(), renderer_->overlayOnTop(), *e);
   if (growthFor_ && selected() == growthFor_) completion_.drawOverlay(renderer_->overlayOnTop());
   if (selectedTown()) townPanel_.drawOverlay(townHost(), renderer_->overlayOnTop());
   if (selectedGrowth()) growthPanel_.drawViewOverlay(renderer_->overlayOnTop());

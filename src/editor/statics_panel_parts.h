@@ -1,6 +1,6 @@
 #pragma once
 // What statics_panel.cpp and statics_simulate.cpp share: the panel's good and bad colours and
-// the host's object. Private to the statics panel's files.
+// the host's object. Private to the statics panel's files (and the stone panel's).
 #include "editor/statics_panel.h"
 
 #include <imgui.h>

@@ -1,0 +1,88 @@
+#include "editor/stone_edits.h"
+
+#include "compose/stone_extrusion.h"
+#include "core/error.h"
+
+#include <cmath>
+
+namespace corbel::editor {
+
+namespace {
+
+ExtrusionSpec& extrusionIn(Document& doc, ObjectId id) {
+  DocObject* o = doc.find(id);
+  auto* e = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
+  if (!e) throw InputError("object " + std::to_string(id), "not a procedural extrusion");
+  return *e;
+}
+
+}  // namespace
+
+Document setStone(const Document& doc, ObjectId id, bool on) {
+  Document next = doc;
+  ExtrusionSpec& e = extrusionIn(next, id);
+  if (on && !e.masonry) e.masonry = StoneWalls{};
+  if (!on) e.masonry.reset();
+  return next;
+}
+
+Document setStoneSetting(const Document& doc, ObjectId id, const std::string& name, double value) {
+  Document next = doc;
+  ExtrusionSpec& e = extrusionIn(next, id);
+  if (!e.masonry) throw InputError("masonry", "the extrusion is not built in stone: switch Build in stone on first");
+  const statics::ParametricModel model = statics::stoneModel(e);  // throws naming what cannot be stone
+  if (!model.parameters.has(name)) throw InputError("masonry." + name, "no such stone setting");
+  const statics::Parameter& p = model.parameters.find(name);
+  if (!std::isfinite(value) || value < p.lo || value > p.hi)
+    throw InputError("masonry." + name, std::to_string(value) + " is outside [" + std::to_string(p.lo) + ", " +
+                                            std::to_string(p.hi) + "] (" + p.description + ")");
+  statics::ParameterSet values = model.parameters;
+  values.set(name, p.continuous ? value : std::round(value));
+  e.masonry = statics::stoneWallsAt(*e.masonry, values);
+  return next;
+}
+
+MasonryView analyseStone(const ExtrusionSpec& spec, Progress* progress) {
+  try {
+    const statics::ParametricModel model = statics::stoneModel(spec);
+    return analyseModel(model, model.parameters, statics::AnalysisOptions{}, progress);
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const std::exception& ex) {
+    MasonryView v;
+    v.fromModel = true;
+    v.error = ex.what();
+    return v;
+  }
+}
+
+statics::SearchResult searchStone(const ExtrusionSpec& spec, Progress* progress, int maxEvaluations) {
+  const statics::ParametricModel model = statics::stoneModel(spec);
+  statics::SearchOptions options;
+  options.maxEvaluations = maxEvaluations;
+  options.progress = [progress, maxEvaluations](const statics::SearchProgress& p) {
+    if (!progress) return true;
+    progress->report(std::min(1.0, double(p.evaluation) / maxEvaluations), "searching");
+    return !progress->cancelled();
+  };
+  return statics::searchParameters(model, model.suggestedFree, options, &model.parameters);
+}
+
+std::optional<Document> applyStoneSearch(const Document& doc, ObjectId id, const ExtrusionSpec& started,
+                                         const statics::SearchResult& result, std::string* why) {
+  auto refuse = [why](std::string reason) -> std::optional<Document> {
+    if (why) *why = std::move(reason);
+    return std::nullopt;
+  };
+  if (result.status == statics::SearchStatus::Cancelled) return refuse("the search was cancelled");
+  if (result.status != statics::SearchStatus::Feasible) return refuse("no standing walls found: " + result.message);
+  const DocObject* o = doc.find(id);
+  const auto* e = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
+  if (!e || !(*e == started) || !e->masonry) return refuse("the extrusion was edited while the search ran");
+  Document next = doc;
+  ExtrusionSpec& target = extrusionIn(next, id);
+  target.masonry = statics::stoneWallsAt(*target.masonry, result.values);
+  return next;
+}
+
+}  // namespace corbel::editor
