@@ -3,7 +3,7 @@
 // positions are 16-bit integers per object, dequantized by the node's translation and scale, and
 // normals 8-bit (KHR_mesh_quantization); indices are 16-bit where they fit. With
 // ExportOptions::textures, a PNG per built-in texture used and TEXCOORD_0 from each face's
-// plane; with ExportOptions::instances, meshes placed by EXT_mesh_gpu_instancing; with
+// plane, 16-bit normalized where a patch of faces fits in [-1, 1] repeats; with ExportOptions::instances, meshes placed by EXT_mesh_gpu_instancing; with
 // ExportOptions::compress, meshoptimizer's EXT_meshopt_compression. glTF is Y up:
 // (x, y, z) → (x, z, −y). The JSON is written here (nlohmann); tinygltf only reads glb.
 #include "core/atomic_file.h"
@@ -42,13 +42,14 @@ constexpr double kMaxQuantizationStep = 1e-3;
 
 // Every accessor of one kind lies in the one buffer view of that kind: a view per accessor made a
 // town's JSON chunk a third of the file. Elements are padded to 4 bytes (glTF 2.0, 3.6.2.4).
-enum ViewKind { kPositions16, kPositions32, kNormals, kTexcoords, kIndices16, kIndices32, kTranslations, kRotations, kViewKinds };
+enum ViewKind { kPositions16, kPositions32, kNormals, kTexcoords, kTexcoords16, kIndices16, kIndices32, kTranslations, kRotations, kViewKinds };
 struct ViewKindInfo {
   int elementBytes;
   int target;  // 0: none (instance attributes)
 };
 constexpr ViewKindInfo kViewInfo[kViewKinds] = {{8, kArrayBuffer},         {12, kArrayBuffer},        {4, kArrayBuffer},
-                                                {8, kArrayBuffer},         {2, kElementArrayBuffer}, {4, kElementArrayBuffer},
+                                                {8, kArrayBuffer},         {4, kArrayBuffer},        {2, kElementArrayBuffer},
+                                                {4, kElementArrayBuffer},
                                                 {12, 0},                   {8, 0}};
 
 // x (> 0) rounded up to three significant digits, as the double nearest that decimal (which
@@ -292,9 +293,13 @@ class Materials {
   std::map<std::string, int> index_, textures_;
 };
 
-// One object's faces gathered into glTF's layout: a vertex set for the faces with texture
-// coordinates and one for those without, each shared by the primitives (one per material) that
-// draw from it.
+// One object's faces gathered into glTF's layout: up to three vertex sets, each shared by the
+// primitives (one per material) that draw from it: the faces without texture coordinates; the
+// textured faces whose coordinates fit in [-1, 1] once shifted by whole repeats (16-bit
+// normalized, KHR_mesh_quantization: windows, sills, doors and other small faces); the other
+// textured faces (floats). The shift by whole repeats is chosen per patch, the faces joined by
+// corners where they share a position, a normal and a repeat (a window frame's front), so that
+// such corners weld as well.
 class MeshBuilder {
  public:
   // A face in corbel's frame with its glTF material and, when textured, its texture's repeat.
@@ -303,14 +308,20 @@ class MeshBuilder {
     const double len = n.norm();
     if (len > 0) n /= len;
     const std::array<std::int8_t, 3> qn = quantizeNormal(toGltf(n));
-    Group& g = groups_[use.texture.texture ? 1 : 0];
+    const bool textured = use.texture.texture != nullptr;
+    Group& g = groups_[textured ? 1 : 0];
     const auto base = static_cast<std::uint32_t>(g.corners.size());
-    if (use.texture.texture) faceTextureCoordinates(poly, n, use.texture.metres, uv_);
-    for (std::size_t i = 0; i < poly.size(); ++i) {
+    const auto index = static_cast<std::uint32_t>(g.faces.size());
+    g.faces.push_back(textured ? use.texture.metres : 0.0);
+    for (const Vec3& p : poly) {
       Corner c;
-      c.p = toGltf(poly[i]);
+      c.p = toGltf(p);
       c.n = qn;
-      if (use.texture.texture) c.uv = {static_cast<float>(uv_[i][0]), static_cast<float>(uv_[i][1])};
+      c.face = index;
+      if (textured) {  // planeUv over the repeat, v flipped (glTF's v runs down the image); not yet shifted
+        const Vec2 t = planeUv(p, n) / use.texture.metres;
+        if (std::isfinite(t[0]) && std::isfinite(t[1])) c.uv = {t[0], -t[1]};  // (0, 0) on a face without a normal
+      }
       g.corners.push_back(c);
       for (int k = 0; k < 3; ++k) {
         lo_[k] = std::min(lo_[k], c.p[k]);
@@ -318,7 +329,7 @@ class MeshBuilder {
       }
     }
     for (const auto& t : triangulatePolygon(poly))
-      g.triangles.push_back({base + t[0], base + t[1], base + t[2], static_cast<std::uint32_t>(use.material)});
+      g.triangles.push_back({base + t[0], base + t[1], base + t[2], static_cast<std::uint32_t>(use.material), index});
   }
 
   bool empty() const { return groups_[0].triangles.empty() && groups_[1].triangles.empty(); }
@@ -327,124 +338,48 @@ class MeshBuilder {
   // its positions (none when they stay float). `quantize` false: float positions (instanced
   // meshes, whose node transform would apply after the instances' own).
   int write(GlbDocument& doc, const std::string& name, bool quantize, json& node) {
-    Vec3 centre(0, 0, 0);
-    double step = 0;
+    centre_ = Vec3(0, 0, 0);
+    step_ = 0;
     if (quantize) {
       // Short decimals, so the JSON stays short: the centre to the millimetre, the step rounded
       // up to three significant digits (the box still fits in ±32,767 steps).
       double half = 0;
       for (int k = 0; k < 3; ++k) {
-        centre[k] = std::round((lo_[k] + hi_[k]) / 2 * 1000) / 1000;
-        half = std::max({half, hi_[k] - centre[k], centre[k] - lo_[k]});
+        centre_[k] = std::round((lo_[k] + hi_[k]) / 2 * 1000) / 1000;
+        half = std::max({half, hi_[k] - centre_[k], centre_[k] - lo_[k]});
       }
-      step = half > 0 ? roundUp3(half / 32767) : 1.0;
-      if (step > kMaxQuantizationStep) step = 0;
+      step_ = half > 0 ? roundUp3(half / 32767) : 1.0;
+      if (step_ > kMaxQuantizationStep) step_ = 0;
     }
     json primitives = json::array();
-    for (Group& g : groups_) {
-      if (g.triangles.empty()) continue;
-      const bool uv = &g == &groups_[1];
-      // Weld: corners equal in every attribute as written become one vertex.
-      std::vector<std::uint32_t> vertexOf(g.corners.size());
-      std::unordered_map<Key, std::uint32_t, KeyHash> seen;
-      seen.reserve(g.corners.size());
-      std::vector<std::int16_t> p16;
-      std::vector<float> p32, uvs;
-      std::vector<std::int8_t> normals;
-      std::uint32_t vertices = 0;
-      std::array<double, 3> qlo{1e300, 1e300, 1e300}, qhi{-1e300, -1e300, -1e300};
-      for (std::size_t i = 0; i < g.corners.size(); ++i) {
-        const Corner& c = g.corners[i];
-        Key key{};
-        std::array<double, 3> value{};
-        for (int k = 0; k < 3; ++k) {
-          if (step > 0) {
-            value[k] = std::clamp<double>(std::lround((c.p[k] - centre[k]) / step), -32767, 32767);
-            key.p[k] = static_cast<std::int32_t>(value[k]);
-          } else {
-            const float f = static_cast<float>(c.p[k]);
-            value[k] = f;
-            std::memcpy(&key.p[k], &f, 4);
-          }
-          key.n[k] = c.n[k];
-        }
-        std::memcpy(&key.uv[0], &c.uv[0], 4);
-        std::memcpy(&key.uv[1], &c.uv[1], 4);
-        const auto [it, fresh] = seen.try_emplace(key, vertices);
-        vertexOf[i] = it->second;
-        if (!fresh) continue;
-        ++vertices;
-        for (int k = 0; k < 3; ++k) {
-          qlo[k] = std::min(qlo[k], value[k]);
-          qhi[k] = std::max(qhi[k], value[k]);
-          if (step > 0)
-            p16.push_back(static_cast<std::int16_t>(value[k]));
-          else
-            p32.push_back(static_cast<float>(value[k]));
-          normals.push_back(c.n[k]);
-        }
-        if (step > 0) p16.push_back(0);
-        normals.push_back(0);
-        if (uv) uvs.insert(uvs.end(), {c.uv[0], c.uv[1]});
-      }
-      json attributes;
-      if (step > 0) {
-        const std::array<int, 3> ilo{static_cast<int>(qlo[0]), static_cast<int>(qlo[1]), static_cast<int>(qlo[2])},
-            ihi{static_cast<int>(qhi[0]), static_cast<int>(qhi[1]), static_cast<int>(qhi[2])};
-        attributes["POSITION"] = doc.accessor(
-            kPositions16, p16.data(), p16.size() * 2,
-            {{"componentType", kShort}, {"count", vertices}, {"type", "VEC3"}, {"min", ilo}, {"max", ihi}});
-      } else {
-        attributes["POSITION"] = doc.accessor(
-            kPositions32, p32.data(), p32.size() * 4,
-            {{"componentType", kFloat}, {"count", vertices}, {"type", "VEC3"}, {"min", qlo}, {"max", qhi}});
-      }
-      attributes["NORMAL"] = doc.accessor(
-          kNormals, normals.data(), normals.size(),
-          {{"componentType", kByte}, {"normalized", true}, {"count", vertices}, {"type", "VEC3"}});
-      if (uv)
-        attributes["TEXCOORD_0"] =
-            doc.accessor(kTexcoords, uvs.data(), uvs.size() * 4, {{"componentType", kFloat}, {"count", vertices}, {"type", "VEC2"}});
-      // A primitive per material, in the order materials were first used; triangles that the
-      // weld made degenerate (corners within one quantization step) are left out.
-      std::map<std::uint32_t, std::vector<std::uint32_t>> byMaterial;
-      for (const Triangle& t : g.triangles) {
-        const std::uint32_t a = vertexOf[t.a], b = vertexOf[t.b], c = vertexOf[t.c];
-        if (a == b || b == c || a == c) continue;
-        byMaterial[t.material].insert(byMaterial[t.material].end(), {a, b, c});
-      }
-      for (const auto& [material, indices] : byMaterial) {
-        int index;
-        if (vertices <= 65535) {
-          const std::vector<std::uint16_t> i16(indices.begin(), indices.end());
-          index = doc.accessor(kIndices16, i16.data(), i16.size() * 2,
-                               {{"componentType", kUnsignedShort}, {"count", indices.size()}, {"type", "SCALAR"}});
-        } else {
-          index = doc.accessor(kIndices32, indices.data(), indices.size() * 4,
-                               {{"componentType", kUnsignedInt}, {"count", indices.size()}, {"type", "SCALAR"}});
-        }
-        primitives.push_back({{"attributes", attributes}, {"indices", index}, {"material", material}});
-      }
+    emit(doc, groups_[0], {}, Uv::None, primitives);
+    if (!groups_[1].triangles.empty()) {
+      const std::vector<Uv> uvOf = shiftTextureCoordinates(groups_[1]);
+      emit(doc, groups_[1], uvOf, Uv::Short, primitives);
+      emit(doc, groups_[1], uvOf, Uv::Float, primitives);
     }
-    if (step > 0) {
-      node["translation"] = {centre[0], centre[1], centre[2]};
-      node["scale"] = {step, step, step};
+    if (step_ > 0) {
+      node["translation"] = {centre_[0], centre_[1], centre_[2]};
+      node["scale"] = {step_, step_, step_};
     }
     return doc.push("meshes", json{{"name", name}, {"primitives", std::move(primitives)}});
   }
 
  private:
+  enum class Uv : std::uint8_t { None, Short, Float };
   struct Corner {
     Vec3 p;
     std::array<std::int8_t, 3> n{};
-    std::array<float, 2> uv{0, 0};
+    std::uint32_t face = 0;
+    std::array<double, 2> uv{0, 0};  // in repeats; shifted by write()
   };
   struct Triangle {
-    std::uint32_t a, b, c, material;
+    std::uint32_t a, b, c, material, face;
   };
   struct Group {
     std::vector<Corner> corners;
     std::vector<Triangle> triangles;
+    std::vector<double> faces;  // each face's repeat in metres (0: untextured)
   };
   struct Key {
     std::int32_t p[3];
@@ -467,9 +402,182 @@ class MeshBuilder {
       return static_cast<std::size_t>(h ^ (h >> 29));
     }
   };
-  Group groups_[2];
-  std::vector<Vec2> uv_;
+
+  // A corner's position as written (16-bit steps about the centre, or a float's bits) in `key`,
+  // and its value in `value`.
+  void positionOf(const Corner& c, Key& key, std::array<double, 3>& value) const {
+    for (int k = 0; k < 3; ++k) {
+      if (step_ > 0) {
+        value[k] = std::clamp<double>(std::lround((c.p[k] - centre_[k]) / step_), -32767, 32767);
+        key.p[k] = static_cast<std::int32_t>(value[k]);
+      } else {
+        const float f = static_cast<float>(c.p[k]);
+        value[k] = f;
+        std::memcpy(&key.p[k], &f, 4);
+      }
+      key.n[k] = c.n[k];
+    }
+  }
+
+  // Shifts the textured corners' coordinates by whole repeats, one shift per patch (faces joined
+  // where corners share a written position, a normal and a repeat), and returns per face whether
+  // its patch is written as 16-bit normalized integers (every coordinate then in [-1, 1]) or as
+  // floats (shifted so that the smallest u and v are in [0, 1), as faceTextureCoordinates does).
+  std::vector<Uv> shiftTextureCoordinates(Group& g) const {
+    std::vector<std::uint32_t> parent(g.faces.size());
+    for (std::uint32_t f = 0; f < parent.size(); ++f) parent[f] = f;
+    auto root = [&](std::uint32_t f) {
+      while (parent[f] != f) f = parent[f] = parent[parent[f]];
+      return f;
+    };
+    std::unordered_map<Key, std::uint32_t, KeyHash> firstFace;
+    firstFace.reserve(g.corners.size());
+    std::array<double, 3> unused{};
+    for (const Corner& c : g.corners) {
+      Key key{};
+      positionOf(c, key, unused);
+      const double metres = g.faces[c.face];
+      std::memcpy(key.uv, &metres, 8);
+      const auto [it, fresh] = firstFace.try_emplace(key, c.face);
+      if (!fresh) parent[root(c.face)] = root(it->second);
+    }
+    struct Extent {
+      std::array<double, 2> lo{1e300, 1e300}, hi{-1e300, -1e300};
+    };
+    std::vector<Extent> extent(g.faces.size());
+    for (const Corner& c : g.corners) {
+      Extent& e = extent[root(c.face)];
+      for (int k = 0; k < 2; ++k) {
+        e.lo[k] = std::min(e.lo[k], c.uv[k]);
+        e.hi[k] = std::max(e.hi[k], c.uv[k]);
+      }
+    }
+    // Per patch root: the shift and how it is written. An integer s with hi − 1 <= s <= lo + 1
+    // puts [lo, hi] into [-1, 1].
+    std::vector<std::array<double, 2>> shift(g.faces.size());
+    std::vector<Uv> kind(g.faces.size(), Uv::Float);
+    for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
+      if (root(f) != f) continue;
+      const Extent& e = extent[f];
+      std::array<double, 2> s{};
+      bool fits = true;
+      for (int k = 0; k < 2; ++k) {
+        s[k] = std::ceil(e.hi[k] - 1);
+        fits = fits && s[k] <= e.lo[k] + 1;
+      }
+      if (fits) {
+        kind[f] = Uv::Short;
+        shift[f] = s;
+      } else {
+        shift[f] = {std::floor(e.lo[0]), std::floor(e.lo[1])};
+      }
+    }
+    for (Corner& c : g.corners) {
+      const std::uint32_t r = root(c.face);
+      for (int k = 0; k < 2; ++k) c.uv[k] -= shift[r][k];
+    }
+    std::vector<Uv> byFace(g.faces.size());
+    for (std::uint32_t f = 0; f < g.faces.size(); ++f) byFace[f] = kind[root(f)];
+    return byFace;
+  }
+
+  // Writes the vertex set of group `g`'s faces whose kind in `uvOf` is `uv` (all of them for
+  // Uv::None) and a primitive per material over it. Corners equal in every attribute as written
+  // become one vertex; triangles the weld made degenerate (corners within one quantization step)
+  // are left out.
+  void emit(GlbDocument& doc, const Group& g, const std::vector<Uv>& uvOf, Uv uv, json& primitives) const {
+    auto inSet = [&](std::uint32_t face) { return uv == Uv::None || uvOf[face] == uv; };
+    std::vector<std::uint32_t> vertexOf(g.corners.size());
+    std::unordered_map<Key, std::uint32_t, KeyHash> seen;
+    std::vector<std::int16_t> p16, uv16;
+    std::vector<float> p32, uv32;
+    std::vector<std::int8_t> normals;
+    std::uint32_t vertices = 0;
+    std::array<double, 3> qlo{1e300, 1e300, 1e300}, qhi{-1e300, -1e300, -1e300};
+    for (std::size_t i = 0; i < g.corners.size(); ++i) {
+      const Corner& c = g.corners[i];
+      if (!inSet(c.face)) continue;
+      Key key{};
+      std::array<double, 3> value{};
+      positionOf(c, key, value);
+      std::array<std::int16_t, 2> q{};
+      std::array<float, 2> f{};
+      for (int k = 0; k < 2; ++k) {
+        if (uv == Uv::Short) {
+          q[k] = static_cast<std::int16_t>(std::clamp<long>(std::lround(c.uv[k] * 32767), -32767, 32767));
+          key.uv[k] = static_cast<std::uint16_t>(q[k]);
+        } else if (uv == Uv::Float) {
+          f[k] = static_cast<float>(c.uv[k]);
+          std::memcpy(&key.uv[k], &f[k], 4);
+        }
+      }
+      const auto [it, fresh] = seen.try_emplace(key, vertices);
+      vertexOf[i] = it->second;
+      if (!fresh) continue;
+      ++vertices;
+      for (int k = 0; k < 3; ++k) {
+        qlo[k] = std::min(qlo[k], value[k]);
+        qhi[k] = std::max(qhi[k], value[k]);
+        if (step_ > 0)
+          p16.push_back(static_cast<std::int16_t>(value[k]));
+        else
+          p32.push_back(static_cast<float>(value[k]));
+        normals.push_back(c.n[k]);
+      }
+      if (step_ > 0) p16.push_back(0);
+      normals.push_back(0);
+      if (uv == Uv::Short) uv16.insert(uv16.end(), {q[0], q[1]});
+      if (uv == Uv::Float) uv32.insert(uv32.end(), {f[0], f[1]});
+    }
+    if (vertices == 0) return;
+    json attributes;
+    if (step_ > 0) {
+      const std::array<int, 3> ilo{static_cast<int>(qlo[0]), static_cast<int>(qlo[1]), static_cast<int>(qlo[2])},
+          ihi{static_cast<int>(qhi[0]), static_cast<int>(qhi[1]), static_cast<int>(qhi[2])};
+      attributes["POSITION"] =
+          doc.accessor(kPositions16, p16.data(), p16.size() * 2,
+                       {{"componentType", kShort}, {"count", vertices}, {"type", "VEC3"}, {"min", ilo}, {"max", ihi}});
+    } else {
+      attributes["POSITION"] =
+          doc.accessor(kPositions32, p32.data(), p32.size() * 4,
+                       {{"componentType", kFloat}, {"count", vertices}, {"type", "VEC3"}, {"min", qlo}, {"max", qhi}});
+    }
+    attributes["NORMAL"] =
+        doc.accessor(kNormals, normals.data(), normals.size(),
+                     {{"componentType", kByte}, {"normalized", true}, {"count", vertices}, {"type", "VEC3"}});
+    if (uv == Uv::Short)
+      attributes["TEXCOORD_0"] =
+          doc.accessor(kTexcoords16, uv16.data(), uv16.size() * 2,
+                       {{"componentType", kShort}, {"normalized", true}, {"count", vertices}, {"type", "VEC2"}});
+    if (uv == Uv::Float)
+      attributes["TEXCOORD_0"] = doc.accessor(kTexcoords, uv32.data(), uv32.size() * 4,
+                                              {{"componentType", kFloat}, {"count", vertices}, {"type", "VEC2"}});
+    // A primitive per material, in the order of their glTF indices.
+    std::map<std::uint32_t, std::vector<std::uint32_t>> byMaterial;
+    for (const Triangle& t : g.triangles) {
+      if (!inSet(t.face)) continue;
+      const std::uint32_t a = vertexOf[t.a], b = vertexOf[t.b], c = vertexOf[t.c];
+      if (a == b || b == c || a == c) continue;
+      byMaterial[t.material].insert(byMaterial[t.material].end(), {a, b, c});
+    }
+    for (const auto& [material, indices] : byMaterial) {
+      int index;
+      if (vertices <= 65535) {
+        const std::vector<std::uint16_t> i16(indices.begin(), indices.end());
+        index = doc.accessor(kIndices16, i16.data(), i16.size() * 2,
+                             {{"componentType", kUnsignedShort}, {"count", indices.size()}, {"type", "SCALAR"}});
+      } else {
+        index = doc.accessor(kIndices32, indices.data(), indices.size() * 4,
+                             {{"componentType", kUnsignedInt}, {"count", indices.size()}, {"type", "SCALAR"}});
+      }
+      primitives.push_back({{"attributes", attributes}, {"indices", index}, {"material", material}});
+    }
+  }
+
+  Group groups_[2];  // untextured, textured
   std::array<double, 3> lo_{1e300, 1e300, 1e300}, hi_{-1e300, -1e300, -1e300};
+  Vec3 centre_{0, 0, 0};
+  double step_ = 0;
 };
 
 // A rotation matrix (columns) as a unit quaternion (x, y, z, w).

@@ -56,7 +56,8 @@ Vec2 planeUv(const Vec3& p, const Vec3& n);
 // planeUv / metres, shifted by whole repeats so that they stay small (float precision across a
 // town) with the smallest u and the smallest (flipped) v in [0, 1), and v flipped (v runs down the image,
 // as in glTF, and as a texture uploaded top row first samples), so the image's top is up on the
-// building. The glb and the renderer's textured mode both use this.
+// building. The renderer's textured mode uses this; the glb shifts planeUv by whole repeats per
+// patch of faces instead (docs/export.md), which looks the same.
 void faceTextureCoordinates(const std::vector<Vec3>& poly, const Vec3& n, double metres, std::vector<Vec2>& out);
 
 }  // namespace corbel

@@ -764,6 +764,98 @@ TEST(Export, GlbWeldsCornersThatShareANormal) {
   EXPECT_EQ(g.json["accessors"][prim[0]["indices"].get<int>()]["count"], 3 * 6);
 }
 
+// Texture coordinates and normals as KHR_mesh_quantization allows them, read back as the glTF
+// spec maps normalized integers (c / 32767, c / 127) and checked against coordinates worked by
+// hand from docs/city.md's rule (a wall's u runs along it, v up; a slope's v up the slope; v
+// flipped; whole repeats do not show). Two coplanar quads across a repeat boundary (u from 2.0 to
+// 2.8 and 2.8 to 3.6 m over stone's 2.4 m) are one patch: one shift, their shared edge's two
+// corners welded (6 vertices, not 8). A sloped quad gets its normal to within the byte lattice's
+// step, and an 18 m wall (7.5 repeats, too wide for [-1, 1]) keeps float coordinates.
+TEST(Export, GlbTextureCoordinatesAreShortsWithinHalfAStep) {
+  TempDir dir;
+  Scene s;
+  MeshData frame;
+  const int stone = frame.addMaterial("stone");
+  for (const Vec3& p : {Vec3(2.0, 0, 1), Vec3(2.8, 0, 1), Vec3(3.6, 0, 1), Vec3(2.0, 0, 2), Vec3(2.8, 0, 2),
+                        Vec3(3.6, 0, 2)})
+    frame.addPoint(p);
+  frame.addFace({0, 1, 4, 3}, 0, stone);  // facing -y (south)
+  frame.addFace({1, 2, 5, 4}, 0, stone);
+  s.replaceObject(1, Kind::Shell, "Frame", frame);
+  MeshData slope;  // 0.6 m along x, rising 0.3 m over 0.4 m: normal (0, -0.6, 0.8), 0.5 m up the slope
+  const int tile = slope.addMaterial("roof_tile");
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(0.6, 0, 0), Vec3(0.6, 0.4, 0.3), Vec3(0, 0.4, 0.3)}) slope.addPoint(p);
+  slope.addFace({0, 1, 2, 3}, 0, tile);
+  s.replaceObject(2, Kind::Shell, "Slope", slope);
+  MeshData wall;
+  const int stone2 = wall.addMaterial("stone");
+  for (const Vec3& p : {Vec3(0, 10, 0), Vec3(18, 10, 0), Vec3(18, 10, 7), Vec3(0, 10, 7)}) wall.addPoint(p);
+  wall.addFace({0, 1, 2, 3}, 0, stone2);
+  s.replaceObject(3, Kind::Shell, "Wall", wall);
+  corbel::ExportOptions textured;
+  textured.textures = true;
+  corbel::exportScene(s, dir.file("q.glb"), textured);
+  const corbel::test::GlbFile g = corbel::test::readGlbFile(dir.file("q.glb"));
+
+  // Each corner (glTF's frame: corbel's (x, y, z) is (x, z, -y)) with its hand-worked (u, v) in
+  // repeats before the flip, and the glTF normal.
+  struct Corner {
+    std::array<double, 3> p;
+    double u, v;
+  };
+  const double stoneM = 2.4, tileM = 2.0;
+  std::map<std::string, std::vector<Corner>> want;
+  for (double x : {2.0, 2.8, 3.6})
+    for (double z : {1.0, 2.0}) want["Frame"].push_back({{x, z, 0}, x / stoneM, z / stoneM});
+  // On the slope u = x (along the contour) and v = 0.8 y + 0.6 z (up the slope).
+  for (const auto& [x, y, z] : {std::array<double, 3>{0, 0, 0}, {0.6, 0, 0}, {0.6, 0.4, 0.3}, {0, 0.4, 0.3}})
+    want["Slope"].push_back({{x, z, -y}, x / tileM, (0.8 * y + 0.6 * z) / tileM});
+  const std::map<std::string, std::array<double, 3>> normal{{"Frame", {0, 0, 1}}, {"Slope", {0, 0.8, 0.6}}};
+  const double uvStep = 1.0 / 32767, normalStep = 1.0 / 127;
+
+  std::set<std::string> seen;
+  for (const corbel::test::WorldPrimitive& p : corbel::test::worldPrimitives(g)) {
+    SCOPED_TRACE(p.nodeName);
+    seen.insert(p.nodeName);
+    const auto& mesh = g.json["meshes"][p.mesh];
+    ASSERT_EQ(mesh["primitives"].size(), 1u);
+    const auto& uvAccessor = g.json["accessors"][mesh["primitives"][0]["attributes"]["TEXCOORD_0"].get<int>()];
+    if (p.nodeName == "Wall") {
+      EXPECT_EQ(uvAccessor["componentType"], 5126);
+      continue;
+    }
+    EXPECT_EQ(uvAccessor["componentType"], 5122);
+    EXPECT_EQ(uvAccessor.value("normalized", false), true);
+    const std::vector<Corner>& corners = want[p.nodeName];
+    ASSERT_EQ(p.positions.size(), corners.size());  // the Frame's shared edge welded: 6 vertices
+    std::set<std::pair<long, long>> shifts;
+    for (std::size_t i = 0; i < p.positions.size(); ++i) {
+      // The corner this vertex is: positions are within half a step (at most 0.5 mm) of it.
+      std::size_t best = 0;
+      double bestD = 1e300;
+      for (std::size_t c = 0; c < corners.size(); ++c) {
+        double d = 0;
+        for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(p.positions[i][k] - corners[c].p[k]));
+        if (d < bestD) bestD = d, best = c;
+      }
+      EXPECT_LE(bestD, 0.5e-3);
+      const double u = p.uvs[i][0], v = p.uvs[i][1];
+      EXPECT_LE(std::abs(u), 1.0);
+      EXPECT_LE(std::abs(v), 1.0);
+      // Written u = hand u - a whole number, v = -(hand v) - a whole number, each rounded to the
+      // nearest 1 / 32767: within half that step of a whole-number shift.
+      const double du = corners[best].u - u, dv = -corners[best].v - v;
+      EXPECT_NEAR(du, std::round(du), uvStep / 2 + 1e-9);
+      EXPECT_NEAR(dv, std::round(dv), uvStep / 2 + 1e-9);
+      shifts.insert({std::lround(du), std::lround(dv)});
+      // Byte normals: each component within one lattice step of the true unit normal.
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(p.normals[i][k], normal.at(p.nodeName)[k], normalStep);
+    }
+    EXPECT_EQ(shifts.size(), 1u);  // one patch, one shift: the coplanar quads share their edge
+  }
+  EXPECT_EQ(seen, (std::set<std::string>{"Frame", "Slope", "Wall"}));
+}
+
 // An object wider than 65 m keeps float positions (16 bits would step more than 1 mm); one with
 // more than 65,535 vertices gets 32-bit indices.
 TEST(Export, GlbFallsBackToFloatsAndWideIndices) {
