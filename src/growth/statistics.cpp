@@ -42,9 +42,18 @@ bool hasOutdoorSpace(const Site& site, const std::vector<Unit>& units, std::size
       bool atFloor = false;
       for (const Box& p : units[unit].parts) atFloor = atFloor || std::abs(p.lo[2] - z) <= kEps;
       if (!atFloor) continue;
-      std::vector<Rect> garden{footprint(roof)};
+      // A garden lies on the roof, so a roof that meets none of the unit's parts at z cannot
+      // give one; and only solids over the roof can take from it.
+      const Rect top = footprint(roof);
+      Rect x;
+      bool near = false;
+      for (const Box& p : units[unit].parts)
+        near = near || (std::abs(p.lo[2] - z) <= kEps && intersect(top, footprint(p), true, x));
+      if (!near) continue;
+      std::vector<Rect> garden{top};
       for (const Box& s : solids)
-        if (s.lo[2] <= z + kEps && s.hi[2] > z + kEps) garden = subtract(garden, footprint(s));
+        if (s.lo[2] <= z + kEps && s.hi[2] > z + kEps && intersect(top, footprint(s), false, x))
+          garden = subtract(garden, footprint(s));
       if (totalArea(garden) < kMinGardenArea) continue;
       for (const Box& p : units[unit].parts) {
         if (std::abs(p.lo[2] - z) > kEps) continue;
