@@ -39,16 +39,16 @@ void ConstraintEnforcer::circulationNear(const Rect& r, std::vector<std::size_t>
 }
 
 void ConstraintEnforcer::index(const std::vector<Unit>& units) {
-  indexed_ = &units;
+  indexed_.units = &units;
   parts_ = PlanGrid(footprint(site_.bounds()), kGridCell);
   indexedParts_.assign(units.size(), 0);
   for (std::size_t i = 0; i < units.size(); ++i) reindex(i);
 }
 
 void ConstraintEnforcer::reindex(std::size_t unit) {
-  if (!indexed_ || unit >= indexed_->size()) return;
+  if (!indexed_.units || unit >= indexed_.units->size()) return;
   for (int j = 0; j < indexedParts_[unit]; ++j) parts_.erase(partKey(unit, std::size_t(j)));
-  const std::vector<Box>& parts = (*indexed_)[unit].parts;
+  const std::vector<Box>& parts = (*indexed_.units)[unit].parts;
   for (std::size_t j = 0; j < parts.size(); ++j) parts_.insert(partKey(unit, j), footprint(parts[j]));
   indexedParts_[unit] = int(parts.size());
 }

@@ -77,7 +77,7 @@ class ConstraintEnforcer {
   void reindex(std::size_t unit);
 
  private:
-  bool indexed(const std::vector<Unit>& units) const { return indexed_ == &units; }
+  bool indexed(const std::vector<Unit>& units) const { return indexed_.units == &units; }
   // Keys of the parts (unit << 8 | part, ascending) and of the zones whose plans may meet r.
   void nearParts(const Rect& r, std::vector<std::uint64_t>& out) const { parts_.query(r, out); }
   void nearZones(const Rect& r, std::vector<std::uint64_t>& out) const { zoneGrid_.query(r, out); }
@@ -90,7 +90,18 @@ class ConstraintEnforcer {
   const Site& site_;
   std::vector<Box> zones_;  // cores and circulation grown by their clearances
   PlanGrid zoneGrid_;       // zones_ by index
-  const std::vector<Unit>* indexed_ = nullptr;
+  // The vector the grid mirrors; a copy of the enforcer does not inherit it (the copy's grid
+  // would fall behind as the original's owner moves units), so a copy scans.
+  struct IndexedUnits {
+    const std::vector<Unit>* units = nullptr;
+    IndexedUnits() = default;
+    IndexedUnits(const IndexedUnits&) {}
+    IndexedUnits& operator=(const IndexedUnits&) {
+      units = nullptr;
+      return *this;
+    }
+  };
+  IndexedUnits indexed_;
   PlanGrid parts_;                  // the parts of *indexed_
   std::vector<int> indexedParts_;  // per unit, how many of its parts parts_ holds
 };

@@ -95,6 +95,13 @@ TEST(PlanGrid, TheIndexedEnforcerAnswersAsTheFullScanDoes) {
     }
   }
   EXPECT_GT(compared, 1000);
+  // A copy of the enforcer scans: it answers as the original does, and stays right after the
+  // engine moves on (its own grid is not kept up).
+  const ConstraintEnforcer copy = e;
+  engine.run(10);
+  for (std::size_t i = 0; i < engine.units().size(); i += 7)
+    for (Side s : kVerticalSides)
+      EXPECT_EQ(copy.freeDistance(engine.units(), i, 0, s, 1e3), e.freeDistance(engine.units(), i, 0, s, 1e3));
 }
 
 TEST(Tiling, CopiesSitSideBySideAndABadRequestIsNamed) {
