@@ -14,7 +14,44 @@ std::vector<Box> clearanceZones(const Site& site) {
   return zones;
 }
 
-ConstraintEnforcer::ConstraintEnforcer(const Site& site) : site_(site), zones_(clearanceZones(site)) {}
+namespace {
+
+// Plan grids' cells: a few parts' widths, so a face's neighbourhood is a handful of cells.
+constexpr double kGridCell = 8.0;
+
+std::uint64_t partKey(std::size_t unit, std::size_t part) { return (std::uint64_t(unit) << 8) | part; }
+std::size_t keyUnit(std::uint64_t key) { return std::size_t(key >> 8); }
+std::size_t keyPart(std::uint64_t key) { return std::size_t(key & 0xFF); }
+
+}  // namespace
+
+ConstraintEnforcer::ConstraintEnforcer(const Site& site)
+    : site_(site), zones_(clearanceZones(site)), zoneGrid_(footprint(site.bounds()), kGridCell) {
+  for (std::size_t z = 0; z < zones_.size(); ++z) zoneGrid_.insert(z, footprint(zones_[z]));
+}
+
+void ConstraintEnforcer::circulationNear(const Rect& r, std::vector<std::size_t>& out) const {
+  out.clear();
+  std::vector<std::uint64_t> keys;
+  nearZones(r, keys);
+  for (std::uint64_t z : keys)
+    if (z >= site_.cores.size()) out.push_back(std::size_t(z - site_.cores.size()));
+}
+
+void ConstraintEnforcer::index(const std::vector<Unit>& units) {
+  indexed_.units = &units;
+  parts_ = PlanGrid(footprint(site_.bounds()), kGridCell);
+  indexedParts_.assign(units.size(), 0);
+  for (std::size_t i = 0; i < units.size(); ++i) reindex(i);
+}
+
+void ConstraintEnforcer::reindex(std::size_t unit) {
+  if (!indexed_.units || unit >= indexed_.units->size()) return;
+  for (int j = 0; j < indexedParts_[unit]; ++j) parts_.erase(partKey(unit, std::size_t(j)));
+  const std::vector<Box>& parts = (*indexed_.units)[unit].parts;
+  for (std::size_t j = 0; j < parts.size(); ++j) parts_.insert(partKey(unit, j), footprint(parts[j]));
+  indexedParts_[unit] = int(parts.size());
+}
 
 namespace {
 
@@ -60,11 +97,41 @@ double ConstraintEnforcer::distanceAhead(const std::vector<Unit>& units, std::si
     const double gap = sideSign(s) > 0 ? o.lo[k] - b.hi[k] : b.lo[k] - o.hi[k];
     d = std::min(d, std::max(gap, 0.0));
   };
-  for (const Box& z : zones_) against(z);
-  for (std::size_t i = 0; i < units.size(); ++i) {
-    const double grow = (i != unit && growing && i < growing->size() && (*growing)[i]) ? reach : 0.0;
-    for (std::size_t j = 0; j < units[i].parts.size(); ++j)
-      if (i != unit || int(j) != part) against(grownInPlan(units[i].parts[j], grow));
+  auto growOf = [&](std::size_t i) {
+    return (i != unit && growing && i < growing->size() && (*growing)[i]) ? reach : 0.0;
+  };
+  if (!indexed(units)) {
+    for (const Box& z : zones_) against(z);
+    for (std::size_t i = 0; i < units.size(); ++i)
+      for (std::size_t j = 0; j < units[i].parts.size(); ++j)
+        if (i != unit || int(j) != part) against(grownInPlan(units[i].parts[j], growOf(i)));
+  } else {
+    // Strips in front of the face, twice as deep each round, until the nearest obstacle lies
+    // within the strip (nothing beyond it can be nearer) or the strip covers the site. The
+    // minimum does not depend on the order of the obstacles, nor on seeing one twice.
+    const Rect site = footprint(site_.bounds());
+    const double margin = (growing ? reach : 0.0) + 1e-6;
+    std::vector<std::uint64_t> keys;
+    for (double depth = kGridCell;; depth *= 2) {
+      Box strip = sweptRegion(b, s, std::min(depth, d));
+      if (k != 2) {
+        // the face itself and (for the obstacles' reach) a margin all round
+        (sideSign(s) > 0 ? strip.lo[k] : strip.hi[k]) = sideCoord(b, s);
+      }
+      Rect r = grown(footprint(strip), margin);
+      nearZones(r, keys);
+      for (std::uint64_t z : keys) against(zones_[z]);
+      nearParts(r, keys);
+      for (std::uint64_t key : keys) {
+        const std::size_t i = keyUnit(key), j = keyPart(key);
+        if (i != unit || int(j) != part) against(grownInPlan(units[i].parts[j], growOf(i)));
+      }
+      const bool coversSite = r.u0 <= site.u0 && r.v0 <= site.v0 && r.u1 >= site.u1 && r.v1 >= site.v1;
+      if (d <= depth || depth >= limit || coversSite || k == 2) break;
+      if (k != 2 && (sideSign(s) > 0 ? sideCoord(b, s) + depth >= (k == 0 ? site.u1 : site.v1)
+                                     : sideCoord(b, s) - depth <= (k == 0 ? site.u0 : site.v0)))
+        break;
+    }
   }
   if (k == 2) {
     d = std::min(d, sideSign(s) > 0 ? site_.top() - b.hi[2] : b.lo[2] - site_.base);
@@ -95,10 +162,23 @@ FaceObstacles ConstraintEnforcer::obstaclesAhead(const std::vector<Unit>& units,
       out.obstacles.push_back({std::max(o.lo[along], b.lo[along]), std::max(o.lo[2], b.lo[2]),
                                std::min(o.hi[along], b.hi[along]), std::min(o.hi[2], b.hi[2])});
   };
-  for (const Box& z : zones_) against(z);
-  for (std::size_t i = 0; i < units.size(); ++i)
-    for (std::size_t j = 0; j < units[i].parts.size(); ++j)
-      if (i != unit || int(j) != part) against(units[i].parts[j]);
+  if (!indexed(units)) {
+    for (const Box& z : zones_) against(z);
+    for (std::size_t i = 0; i < units.size(); ++i)
+      for (std::size_t j = 0; j < units[i].parts.size(); ++j)
+        if (i != unit || int(j) != part) against(units[i].parts[j]);
+    return out;
+  }
+  // The same obstacles in the same order, from the grid: zones, then parts by unit and part.
+  Box strip = sweptRegion(b, s, std::max(distance, 0.0));
+  (sideSign(s) > 0 ? strip.lo[k] : strip.hi[k]) = sideCoord(b, s);
+  const Rect r = grown(footprint(strip), 1e-6);
+  std::vector<std::uint64_t> keys;
+  nearZones(r, keys);
+  for (std::uint64_t z : keys) against(zones_[z]);
+  nearParts(r, keys);
+  for (std::uint64_t key : keys)
+    if (keyUnit(key) != unit || int(keyPart(key)) != part) against(units[keyUnit(key)].parts[keyPart(key)]);
   return out;
 }
 
@@ -108,6 +188,7 @@ bool ConstraintEnforcer::plausible(const std::vector<Unit>& units, std::size_t u
 
 bool ConstraintEnforcer::plausibleAs(const std::vector<Unit>& units, std::size_t unit, const Unit& u) const {
   std::vector<Rect> anchors;
+  std::vector<std::uint64_t> keys, zoneKeys;
   for (const Box& p : u.parts) {
     const Rect fp = footprint(p);
     if (std::abs(p.lo[2] - site_.base) <= kEps) {
@@ -118,18 +199,35 @@ bool ConstraintEnforcer::plausibleAs(const std::vector<Unit>& units, std::size_t
     auto restsOn = [&](const Box& o) {
       if (std::abs(o.hi[2] - p.lo[2]) <= kEps && intersect(fp, footprint(o), false, x)) anchors.push_back(x);
     };
-    for (std::size_t i = 0; i < units.size(); ++i)
-      if (i != unit)
-        for (const Box& o : units[i].parts) restsOn(o);
-    for (const Box& c : site_.circulation) restsOn(c);
     auto fixedTo = [&](const Box& o, double clearance) {
       if (overlapLength(p.lo[2], p.hi[2], o.lo[2], o.hi[2]) <= kEps) return;
       const double reach = clearance + 10 * kEps;
       if (planGap(fp, footprint(o)) <= reach && intersect(fp, grown(footprint(o), reach), true, x))
         anchors.push_back(x);
     };
-    for (std::size_t i = 0; i < site_.cores.size(); ++i) fixedTo(site_.coreBox(i), site_.coreClearance);
-    for (const Box& c : site_.circulation) fixedTo(c, site_.circulationClearance);
+    const std::size_t cores = site_.cores.size();
+    if (!indexed(units)) {
+      for (std::size_t i = 0; i < units.size(); ++i)
+        if (i != unit)
+          for (const Box& o : units[i].parts) restsOn(o);
+      for (const Box& c : site_.circulation) restsOn(c);
+      for (std::size_t i = 0; i < cores; ++i) fixedTo(site_.coreBox(i), site_.coreClearance);
+      for (const Box& c : site_.circulation) fixedTo(c, site_.circulationClearance);
+      continue;
+    }
+    // The same anchors in the same order, from the grids. A zone holds its core or
+    // circulation box grown by the clearance, so it meets whatever that box is fixed to.
+    const Rect near = grown(fp, 1e-5);
+    nearParts(near, keys);
+    for (std::uint64_t key : keys)
+      if (keyUnit(key) != unit) restsOn(units[keyUnit(key)].parts[keyPart(key)]);
+    nearZones(near, zoneKeys);
+    for (std::uint64_t z : zoneKeys)
+      if (z >= cores) restsOn(site_.circulation[z - cores]);
+    for (std::uint64_t z : zoneKeys)
+      if (z < cores) fixedTo(site_.coreBox(z), site_.coreClearance);
+    for (std::uint64_t z : zoneKeys)
+      if (z >= cores) fixedTo(site_.circulation[z - cores], site_.circulationClearance);
   }
   if (anchors.empty()) return false;
   for (const Box& p : u.parts) {

@@ -18,6 +18,7 @@
 // A stair base (Fig. 5.4, Move::StairBase) is the whole top of a staircase or nothing: the
 // part of growth/collide.h's stairBasePart, refused when anything stands on any of it.
 #include "growth/collide.h"
+#include "growth/plan_grid.h"
 #include "growth/site.h"
 #include "growth/unit.h"
 
@@ -65,7 +66,21 @@ class ConstraintEnforcer {
 
   const Site& site() const { return site_; }
 
+  // The circulation boxes (indices, ascending) whose plans may meet r: all that do, maybe more.
+  void circulationNear(const Rect& r, std::vector<std::size_t>& out) const;
+
+  // Answers the queries on `units` from a plan grid instead of a scan of every part (the same
+  // answers, in the same order: growth/plan_grid.h). `units` is the caller's own vector, which
+  // must outlive the enforcer or be released by index of another; after changing units[i] the
+  // caller calls reindex(i). Queries on any other vector scan it as before.
+  void index(const std::vector<Unit>& units);
+  void reindex(std::size_t unit);
+
  private:
+  bool indexed(const std::vector<Unit>& units) const { return indexed_.units == &units; }
+  // Keys of the parts (unit << 8 | part, ascending) and of the zones whose plans may meet r.
+  void nearParts(const Rect& r, std::vector<std::uint64_t>& out) const { parts_.query(r, out); }
+  void nearZones(const Rect& r, std::vector<std::uint64_t>& out) const { zoneGrid_.query(r, out); }
   // Plausibility of `u` standing in for units[unit].
   bool plausibleAs(const std::vector<Unit>& units, std::size_t unit, const Unit& u) const;
   // From side s of box b, skipping part `skip` of units[unit] (−1: none).
@@ -74,6 +89,21 @@ class ConstraintEnforcer {
   Verdict checkStairBase(const std::vector<Unit>& units, std::size_t unit, const Move& m) const;
   const Site& site_;
   std::vector<Box> zones_;  // cores and circulation grown by their clearances
+  PlanGrid zoneGrid_;       // zones_ by index
+  // The vector the grid mirrors; a copy of the enforcer does not inherit it (the copy's grid
+  // would fall behind as the original's owner moves units), so a copy scans.
+  struct IndexedUnits {
+    const std::vector<Unit>* units = nullptr;
+    IndexedUnits() = default;
+    IndexedUnits(const IndexedUnits&) {}
+    IndexedUnits& operator=(const IndexedUnits&) {
+      units = nullptr;
+      return *this;
+    }
+  };
+  IndexedUnits indexed_;
+  PlanGrid parts_;                  // the parts of *indexed_
+  std::vector<int> indexedParts_;  // per unit, how many of its parts parts_ holds
 };
 
 }  // namespace corbel::growth

@@ -64,8 +64,7 @@ class ViewBehaviour : public Behaviour {
       double best = -1;
       Move split;
       Side splitSide = Side::PosX;
-      std::vector<bool> growing;
-      for (const UnitState& o : ctx.engine.states()) growing.push_back(o.status == UnitStatus::Growing);
+      const std::vector<bool>& growing = ctx.engine.growing();
       for (int p = 0; p < int(u.parts.size()); ++p)
         for (Side side : kVerticalSides) {
           if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
@@ -210,21 +209,22 @@ class ViewBehaviour : public Behaviour {
     if (site.circulation.empty() || int(u.parts.size()) >= kMaxParts) return;
     const int p = std::min<int>(s.activePart, int(u.parts.size()) - 1);
     const Box& b = u.parts[p];
-    std::vector<bool> growing;
+    const std::vector<bool>& growing = ctx.engine.growing();
+    std::vector<std::size_t> near;
     for (Side side : kVerticalSides) {
       if (u.locked[int(side)] || sideTouchesOwnPart(u, p, side)) continue;
-      for (int c = 0; c < int(site.circulation.size()); ++c) {
+      // Only a staircase within α of the face can be reached (stairBasePart's rule).
+      ctx.engine.enforcer().circulationNear(grown(footprint(sweptRegion(b, side, site.alpha)), 1e-6), near);
+      for (std::size_t c : near) {
         const std::optional<Box> part = stairBasePart(b, side, site.circulation[c], site.storeyHeight, site.alpha);
         if (!part) continue;
-        if (growing.empty())
-          for (const UnitState& o : ctx.engine.states()) growing.push_back(o.status == UnitStatus::Growing);
         const int k = sideAxis(side);
         Box face = *part;  // the new part's face on the plane of b's side
         face.lo[k] = face.hi[k] = sideCoord(b, side);
         const double depth = part->size(k);
         if (ctx.engine.enforcer().lookAheadFrom(ctx.engine.units(), ctx.unit, face, side, depth, site.alpha, growing) >=
             depth - kEps)
-          moves.push_back(Move::stairBase(p, side, c));
+          moves.push_back(Move::stairBase(p, side, int(c)));
       }
     }
   }
@@ -283,9 +283,11 @@ GrowthEngine::GrowthEngine(const Site& site, GrowthOptions options, ViewMapper* 
     while (s.subUnits > 1 && floorTarget / s.subUnits < 2 * kMinPartWidth * kMinPartWidth) --s.subUnits;
     s.wantsDoubleVolume = rng_.uniform() < options_.doubleVolumeChance;
     if (s.progress() >= s.target) s.status = UnitStatus::Reached;
+    growing_.push_back(s.status == UnitStatus::Growing);
     states_.push_back(std::move(s));
     units_.push_back(states_.back().unit);
   }
+  enforcer_.index(units_);
   for (std::size_t i = 0; i < units_.size(); ++i)
     if (!enforcer_.plausible(units_, i))
       throw InputError("seeds[" + std::to_string(i) + "]",
@@ -346,17 +348,24 @@ bool GrowthEngine::step() {
     }
     const int pick = valid.empty() ? -1 : behaviour.choose(ctx, valid);
     if (pick < 0) {
-      if (++s.idleSteps >= options_.patience) s.status = UnitStatus::Stuck;
+      if (++s.idleSteps >= options_.patience) {
+        s.status = UnitStatus::Stuck;
+        growing_[i] = false;
+      }
       continue;
     }
     s.idleSteps = 0;
     const Move m = valid[pick].move;
     applyMove(units_[i], m);
+    enforcer_.reindex(i);
     s.unit = units_[i];
     ++s.moves;
     ++commits_;
     behaviour.committed(ctx, m);
-    if (s.progress() >= s.target - kEps) s.status = UnitStatus::Reached;
+    if (s.progress() >= s.target - kEps) {
+      s.status = UnitStatus::Reached;
+      growing_[i] = false;
+    }
     if (onCommit_) onCommit_(*this, {steps_, i, m});
   }
   updateQuantifiers();

@@ -116,6 +116,9 @@ class GrowthEngine {
   // used. Throws InputError for a seed naming no registered behaviour.
   GrowthEngine(const Site& site, GrowthOptions options = {}, ViewMapper* mapper = nullptr,
                std::map<std::string, std::shared_ptr<Behaviour>> extraBehaviours = {});
+  // The enforcer indexes units_ by address (ConstraintEnforcer::index), so an engine stays put.
+  GrowthEngine(const GrowthEngine&) = delete;
+  GrowthEngine& operator=(const GrowthEngine&) = delete;
 
   void setArbitration(std::unique_ptr<Arbitration> a) { arbitration_ = std::move(a); }
   void onCommit(std::function<void(const GrowthEngine&, const CommitRecord&)> f) { onCommit_ = std::move(f); }
@@ -134,6 +137,8 @@ class GrowthEngine {
   const ViewMaps& views() const { return views_; }
   int steps() const { return steps_; }
   std::size_t commits() const { return commits_; }
+  // Per unit, whether it is still growing (status Growing), kept up to date as statuses change.
+  const std::vector<bool>& growing() const { return growing_; }
   // The view maps' boxes: every part (id = unit id) and cores and circulation (kObstacleId).
   std::vector<ViewBox> viewBoxes() const;
 
@@ -148,6 +153,7 @@ class GrowthEngine {
   std::unique_ptr<Arbitration> arbitration_;
   std::function<void(const GrowthEngine&, const CommitRecord&)> onCommit_;
   std::vector<UnitState> states_;
+  std::vector<bool> growing_;  // by unit: status == Growing
   std::vector<Unit> units_;  // the units alone, for the enforcer (kept equal to states_[i].unit)
   ViewMaps views_;
   Rng rng_;

@@ -2,6 +2,7 @@
 
 #include "growth/tolerances.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace corbel::growth {
@@ -17,14 +18,32 @@ int occupantsOf(char type) { return type == 'A' ? 5 : type == 'B' ? 3 : type == 
 
 namespace {
 
-// Length along which plan rectangles a and b share a boundary (0 unless they touch).
-double sharedBoundary(const Rect& a, const Rect& b) {
-  double s = 0;
-  if (std::abs(a.u1 - b.u0) <= kEps || std::abs(b.u1 - a.u0) <= kEps)
-    s = std::max(s, overlapLength(a.v0, a.v1, b.v0, b.v1));
-  if (std::abs(a.v1 - b.v0) <= kEps || std::abs(b.v1 - a.v0) <= kEps)
-    s = std::max(s, overlapLength(a.u0, a.u1, b.u0, b.u1));
-  return s;
+// The longest unbroken stretch along which the garden (disjoint rectangles) lies against the
+// sides of plan rectangle p: pieces of the garden side by side along one side of p add up, as
+// a door may straddle the line between them.
+double longestContact(const std::vector<Rect>& garden, const Rect& p) {
+  double best = 0;
+  for (int side = 0; side < 4; ++side) {
+    std::vector<std::pair<double, double>> along;
+    for (const Rect& g : garden) {
+      const bool touches = side == 0   ? std::abs(g.u1 - p.u0) <= kEps
+                           : side == 1 ? std::abs(g.u0 - p.u1) <= kEps
+                           : side == 2 ? std::abs(g.v1 - p.v0) <= kEps
+                                       : std::abs(g.v0 - p.v1) <= kEps;
+      if (!touches) continue;
+      const double lo = side < 2 ? std::max(g.v0, p.v0) : std::max(g.u0, p.u0);
+      const double hi = side < 2 ? std::min(g.v1, p.v1) : std::min(g.u1, p.u1);
+      if (hi > lo) along.push_back({lo, hi});
+    }
+    std::sort(along.begin(), along.end());
+    double lo = 0, hi = -1;
+    for (const auto& [a, b] : along) {
+      if (a > hi + kEps) lo = a;
+      hi = std::max(hi, b);
+      best = std::max(best, hi - lo);
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -42,15 +61,21 @@ bool hasOutdoorSpace(const Site& site, const std::vector<Unit>& units, std::size
       bool atFloor = false;
       for (const Box& p : units[unit].parts) atFloor = atFloor || std::abs(p.lo[2] - z) <= kEps;
       if (!atFloor) continue;
-      std::vector<Rect> garden{footprint(roof)};
+      // A garden lies on the roof, so a roof that meets none of the unit's parts at z cannot
+      // give one; and only solids over the roof can take from it.
+      const Rect top = footprint(roof);
+      Rect x;
+      bool near = false;
+      for (const Box& p : units[unit].parts)
+        near = near || (std::abs(p.lo[2] - z) <= kEps && intersect(grown(top, 2 * kEps), footprint(p), true, x));
+      if (!near) continue;
+      std::vector<Rect> garden{top};
       for (const Box& s : solids)
-        if (s.lo[2] <= z + kEps && s.hi[2] > z + kEps) garden = subtract(garden, footprint(s));
+        if (s.lo[2] <= z + kEps && s.hi[2] > z + kEps && intersect(top, footprint(s), false, x))
+          garden = subtract(garden, footprint(s));
       if (totalArea(garden) < kMinGardenArea) continue;
-      for (const Box& p : units[unit].parts) {
-        if (std::abs(p.lo[2] - z) > kEps) continue;
-        for (const Rect& g : garden)
-          if (sharedBoundary(g, footprint(p)) >= kMinDoorWidth - kEps) return true;
-      }
+      for (const Box& p : units[unit].parts)
+        if (std::abs(p.lo[2] - z) <= kEps && longestContact(garden, footprint(p)) >= kMinDoorWidth - kEps) return true;
     }
   }
   return false;

@@ -9,7 +9,8 @@
 //   way; "two views" and "three views" count units with exactly two and three;
 // - double volume: a part two storeys high;
 // - outdoor space: another unit's roof at the unit's floor level, open above over at least
-//   kMinGardenArea and meeting one of the unit's parts along at least kMinDoorWidth.
+//   kMinGardenArea and meeting one of the unit's parts along an unbroken stretch of at least
+//   kMinDoorWidth (a door).
 #include "growth/site.h"
 #include "growth/unit.h"
 #include "growth/view_map.h"

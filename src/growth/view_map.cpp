@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace corbel::growth {
 
@@ -109,6 +110,10 @@ std::vector<double> uniqueSorted(std::vector<double> v) {
   return v;
 }
 
+// From this many boxes the exact maps are made on two threads (below, a thread costs more than
+// it saves: grown Alpha's 195 boxes take about 50 µs).
+constexpr std::size_t kParallelBoxes = 1000;
+
 int edgeIndex(const std::vector<double>& edges, double x) {
   return int(std::lower_bound(edges.begin(), edges.end(), x) - edges.begin());
 }
@@ -117,7 +122,7 @@ int edgeIndex(const std::vector<double>& edges, double x) {
 
 ViewMaps ExactViewMapper::render(const std::vector<ViewBox>& boxes, const Box& frame) {
   ViewMaps out;
-  for (ViewDirection d : kViewDirections) {
+  auto one = [&](ViewDirection d) {
     const Rect f = projectFrame(frame, d);
     std::vector<double> u{f.u0, f.u1}, v{f.v0, f.v1};
     for (const ViewBox& b : boxes) {
@@ -138,6 +143,19 @@ ViewMaps ExactViewMapper::render(const std::vector<ViewBox>& boxes, const Box& f
     }
     m.finish();
     out[d] = std::move(m);
+  };
+  // The four maps are independent: on a large model, ±x on a second thread while this one
+  // does ±y (each map is the same whichever thread makes it).
+  if (boxes.size() >= kParallelBoxes) {
+    std::thread x([&] {
+      one(ViewDirection::PosX);
+      one(ViewDirection::NegX);
+    });
+    one(ViewDirection::PosY);
+    one(ViewDirection::NegY);
+    x.join();
+  } else {
+    for (ViewDirection d : kViewDirections) one(d);
   }
   return out;
 }

@@ -7,6 +7,7 @@
 #include "growth/engine.h"
 #include "growth/kernel.h"
 #include "growth/site.h"
+#include "growth/tiling.h"
 #include "render/gl_view_mapper.h"
 #include "render/headless_context.h"
 
@@ -118,6 +119,20 @@ void BM_FullRunBeta(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FullRunBeta)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// Scale (issue 33): the Beta-like site tiled n × n (132 n² seeds; 3 × 3: 1,188 units on
+// 300 m × 180 m) grown to the end. Wall time is what counts (the engine may use both cores).
+void BM_FullRunBetaTiled(benchmark::State& state) {
+  static const Site beta = loadSite(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/growth-beta.json");
+  const Site site = tiledSite(beta, int(state.range(0)), int(state.range(0)));
+  for (auto _ : state) {
+    GrowthEngine engine(site, optionsFor(site, 1));
+    state.counters["steps"] = engine.run(100000);
+    state.counters["moves"] = double(engine.commits());
+  }
+  state.counters["units"] = double(site.seeds.size());
+}
+BENCHMARK(BM_FullRunBetaTiled)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Collide-and-extrude's free columns (growth/collide.h) of every vertical face of grown Alpha
 // that something lies within α of: arg 0 by intervals, 1 by CGAL's polygon difference (items =

@@ -40,9 +40,7 @@ TEST(GrowthKernel, GrowsWhatTheEngineGrowsAndTheShellsHoldTheUnitsVolume) {
     ASSERT_EQ(g.error(), "");
     EXPECT_EQ(stoppedAfter(g.status().warnings), -1);  // a few steps do not finish Alpha
     const Site site = parseSite(text);
-    GrowthOptions o;
-    o.seed = 3;
-    GrowthEngine engine(site, o);
+    GrowthEngine engine(site, optionsFor(site, 3));
     for (int i = 0; i < steps; ++i) engine.step();
     double volume = 0;
     for (const Unit& u : engine.units()) volume += u.volume();
@@ -62,7 +60,7 @@ TEST(GrowthKernel, GrowingToTheEndSaysWhenEveryUnitStoppedAndKeepsTheConstraints
   const int stopped = stoppedAfter(g.status().warnings);
   ASSERT_GT(stopped, 0);
   const Site site = parseSite(text);
-  GrowthEngine engine(site);
+  GrowthEngine engine(site, optionsFor(site, 1));  // the site's growth settings, as the build's
   EXPECT_EQ(engine.run(100000), stopped);
   EXPECT_TRUE(test::independentViolations(site, engine.units()).empty());
   // The same count of steps gives the same growth, now finished too.
@@ -107,9 +105,7 @@ TEST(GrowthKernel, ASiteThatAsksForRoofsAndOpeningsIsBuiltFinished) {
   ASSERT_EQ(g.error(), "");
   for (const std::string& w : g.status().warnings) EXPECT_EQ(w.find("roof"), std::string::npos) << w;
   // The roofs and openings are what roofs.h and openings.h make of the units the engine grows.
-  GrowthOptions o;
-  o.seed = 1;
-  GrowthEngine engine(site, o);
+  GrowthEngine engine(site, optionsFor(site, 1));
   for (int i = 0; i < 30; ++i) engine.step();
   std::vector<std::string> warnings;
   const MeshData finish = finishMesh(site, engine.units(), warnings);
