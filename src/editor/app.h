@@ -30,6 +30,7 @@
 #include "editor/push_pull.h"
 #include "editor/statics_panel.h"
 #include "editor/stone_panel.h"
+#include "editor/kifs_followers.h"
 #include "editor/tape_measure.h"
 #include "editor/test_log.h"
 #include "editor/transform.h"
@@ -290,6 +291,7 @@ class App {
   std::array<double, 10> kifsView_{};
   std::chrono::steady_clock::time_point kifsChanged_{};
   unsigned long kifsGeneration_ = 0;
+  KifsFollowers followers_;  // the masses of KIFS buildings that follow another object, baked in the background
   bool kifsFailed_ = false;  // its shader did not build (logged once)
   bool kifsRefining_ = false;  // the march is coarse and will sharpen once the view is still
   bool firstFrame_ = true;

@@ -201,7 +201,17 @@ void App::drawView() {
             pw = int(view_.width() * sx), ph = int(view_.height() * sy);
   renderer_->draw(view_.camera, px, py, pw, ph, settings_);
   // KIFS buildings that are not meshed: ray-marched over the Scene, depth-tested against it.
-  const render::RaymarchedKifs raymarched = render::raymarchedKifs(doc, settings_.visible);
+  // Followers of a mass object (footprint "object") are not in `raymarched` (no Scene given):
+  // their masses are baked in the background and added with them.
+  render::RaymarchedKifs raymarched = render::raymarchedKifs(doc, settings_.visible);
+  if (followers_.update(doc, scene_, live_.current(), settings_.visible,
+                        [this](const std::string& line, bool error) { log(line, error); }, scripted()))
+    ++kifsGeneration_;
+  for (const KifsFollowers::Shown& f : followers_.shown(doc, settings_.visible)) {
+    raymarched.buildings.push_back(f.params);
+    raymarched.placements.push_back(Placement{});
+    raymarched.masses.push_back(f.mass);
+  }
   if (!raymarched.buildings.empty() && !kifsFailed_) {
     try {
       if (!kifsPass_) kifsPass_ = std::make_unique<render::KifsPass>();
@@ -227,7 +237,7 @@ void App::drawView() {
       std::vector<kifs::KifsParams> buildings;
       for (const kifs::KifsParams& p : raymarched.buildings) buildings.push_back(render::kifsForView(p, view_.camera, ph));
       kifsLayer_->update(*kifsPass_, buildings, view_.camera, pw, ph, still ? 1 : 4, render::KifsMode::Shaded,
-                         std::to_string(kifsGeneration_), raymarched.placements);
+                         std::to_string(kifsGeneration_), raymarched.placements, raymarched.masses);
       kifsLayer_->composite(px, py, pw, ph);
     } catch (const std::exception& e) {
       log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);

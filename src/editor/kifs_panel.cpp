@@ -72,16 +72,46 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
   }
 
   heading("Mass model");
-  int footprint = s.mass.footprint == "T" ? 1 : s.mass.footprint == "H" ? 2 : 0;
-  if (ImGui::Combo("Footprint", &footprint, "box\0T\0H\0")) {
-    s.mass.footprint = footprint == 1 ? "T" : footprint == 2 ? "H" : "box";
+  int footprint = s.mass.footprint == "T" ? 1 : s.mass.footprint == "H" ? 2 : s.mass.footprint == "object" ? 3 : 0;
+  if (ImGui::Combo("Footprint", &footprint, "box\0T\0H\0another object\0")) {
+    s.mass.footprint = footprint == 1 ? "T" : footprint == 2 ? "H" : footprint == 3 ? "object" : "box";
+    if (footprint == 3 && s.mass.object.empty())
+      for (const DocObject& m : host.doc->objects)  // the first object that can be a mass
+        if (m.id != o->id && !std::holds_alternative<KifsSpec>(m.spec) && !std::holds_alternative<TownSpec>(m.spec)) {
+          s.mass.object = m.name;
+          break;
+        }
     changed("footprint", false);
   }
-  sliders({{"Half width", &s.mass.halfWidth, 1, 40},
-           {"Half depth", &s.mass.halfDepth, 1, 40},
-           {"Height", &s.mass.height, 2, 100},
-           {"Wing", &s.mass.wing, 0.2f, 20},
-           {"Shell", &s.mass.shell, 0, 5}});
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The mass the fractal is carved from: a box, T or H of the sizes below, or another object's shell");
+  if (s.mass.footprint == "object") {
+    if (ImGui::BeginCombo("Follows", s.mass.object.empty() ? "(choose an object)" : s.mass.object.c_str())) {
+      for (const DocObject& m : host.doc->objects)
+        if (m.id != o->id && !std::holds_alternative<TownSpec>(m.spec) &&
+            ImGui::Selectable(m.name.c_str(), m.name == s.mass.object)) {
+          s.mass.object = m.name;
+          changed("the followed object", false);
+        }
+      ImGui::EndCombo();
+    }
+    int resolution = s.mass.resolution;
+    if (ImGui::SliderInt("Resolution", &resolution, 8, 256, "%d cells")) {
+      s.mass.resolution = resolution;
+      changed("resolution");
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Cells of the baked distance along the mass's longest side (baked in the background)");
+    if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+    ImGui::TextDisabled("(follows the object where it stands: this object's placement is ignored)");
+    sliders({{"Shell", &s.mass.shell, 0, 5}});
+  } else {
+    sliders({{"Half width", &s.mass.halfWidth, 1, 40},
+             {"Half depth", &s.mass.halfDepth, 1, 40},
+             {"Height", &s.mass.height, 2, 100},
+             {"Wing", &s.mass.wing, 0.2f, 20},
+             {"Shell", &s.mass.shell, 0, 5}});
+  }
   if (ImGui::Checkbox("Curvilinear (Eq. 5-6)", &s.curvilinear.enabled)) changed("curvilinear", false);
   if (s.curvilinear.enabled)
     sliders({{"s_theta", &s.curvilinear.sTheta, 0.5f, 40},

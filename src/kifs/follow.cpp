@@ -67,8 +67,11 @@ const DocObject& followedObject(const Document& doc, const DocObject& kifsObject
 std::shared_ptr<const MassField> followedMass(const Document& doc, const Scene& scene, const DocObject& kifsObject,
                                               Progress* progress) {
   const DocObject& mass = followedObject(doc, kifsObject);
-  const KifsParams params = paramsOf(std::get<KifsSpec>(kifsObject.spec));
-  const TriangleSoup triangles = sceneTriangles(scene, mass.id);
+  return bakeFollowedMass(mass, sceneTriangles(scene, mass.id), paramsOf(std::get<KifsSpec>(kifsObject.spec)), progress);
+}
+
+std::shared_ptr<const MassField> bakeFollowedMass(const DocObject& mass, const TriangleSoup& triangles,
+                                                  const KifsParams& params, Progress* progress) {
   const std::string what = "kifs.mass.object: " + quoted(mass.name) + " ";
   if (triangles.triangles.empty()) throw Error(what + "has no faces in the Scene (is its build failing?)");
   try {

@@ -31,6 +31,11 @@ const DocObject& followedObject(const Document& doc, const DocObject& kifsObject
 std::shared_ptr<const MassField> followedMass(const Document& doc, const Scene& scene, const DocObject& kifsObject,
                                               Progress* progress = nullptr);
 
+// The same bake from the mass object's triangles taken from the Scene beforehand (sceneTriangles),
+// so that a worker thread can bake while the Scene changes (the editor's followers).
+std::shared_ptr<const MassField> bakeFollowedMass(const DocObject& mass, const TriangleSoup& triangles,
+                                                  const KifsParams& params, Progress* progress = nullptr);
+
 // A KIFS object's building: its spec's parameters (paramsOf) and, with footprint "object", the
 // mass it follows, in world space (the object's own placement does not apply).
 Building buildingOf(const Document& doc, const Scene& scene, const DocObject& kifsObject, Progress* progress = nullptr);

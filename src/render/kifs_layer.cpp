@@ -48,7 +48,8 @@ void KifsLayer::resize(int w, int h) {
 
 bool KifsLayer::update(KifsPass& pass, const std::vector<kifs::KifsParams>& buildings, const OrbitCamera& camera,
                        int width, int height, int scale, KifsMode mode, const std::string& key,
-                       const std::vector<Placement>& placements) {
+                       const std::vector<Placement>& placements,
+                       const std::vector<std::shared_ptr<const kifs::MassField>>& masses) {
   scale = std::max(1, scale);
   const int w = std::max(1, (width + scale - 1) / scale), h = std::max(1, (height + scale - 1) / scale);
   if (key == key_ && !key.empty() && w == w_ && h == h_ && scale == scale_) return false;
@@ -69,7 +70,7 @@ bool KifsLayer::update(KifsPass& pass, const std::vector<kifs::KifsParams>& buil
     coarse.trace.pixelAngle *= scale;  // a texel spans `scale` pixels: a hit within it is enough
     // While the view keeps changing, the coarse frames skip shadows and occlusion.
     const KifsMode drawn = scale > 1 && mode == KifsMode::Shaded ? KifsMode::Preview : mode;
-    pass.draw(kifs::Building(coarse), i < placements.size() ? cameraInFrameOf(camera, placements[i]) : camera, 0, 0, w, h,
+    pass.draw(kifs::Building(coarse, i < masses.size() ? masses[i] : nullptr), i < placements.size() ? cameraInFrameOf(camera, placements[i]) : camera, 0, 0, w, h,
               drawn);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));

@@ -25,10 +25,12 @@ class KifsLayer {
   // camera or the mode do (the caller knows what it draws). Returns whether it marched. The
   // bound framebuffer and the viewport are as they were afterwards. At scale > 1 a Shaded
   // layer is drawn as KifsMode::Preview (no soft shadow, no occlusion: a cheaper coarse frame).
-  // `placements` (empty: none) places each building (RaymarchedKifs::placements).
+  // `placements` (empty: none) places each building (RaymarchedKifs::placements); `masses`
+  // (empty: none) are the followers' baked masses (RaymarchedKifs::masses).
   bool update(KifsPass& pass, const std::vector<kifs::KifsParams>& buildings, const OrbitCamera& camera, int width,
               int height, int scale, KifsMode mode, const std::string& key,
-              const std::vector<Placement>& placements = {});
+              const std::vector<Placement>& placements = {},
+              const std::vector<std::shared_ptr<const kifs::MassField>>& masses = {});
   // Draws the layer into the bound framebuffer's viewport (x, y, width, height), depth-tested
   // against what is there.
   void composite(int x, int y, int width, int height);

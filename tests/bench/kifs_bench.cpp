@@ -1,6 +1,11 @@
 // KIFS speeds (docs/kifs.md, "Speed"): CPU distance evaluations per second for each preset, CPU
 // rays per second, the shader's frame time through OSMesa (llvmpipe) at 256², 512² and 640² and
 // meshing at 64³ and 128³. Run: build/tests/bench/corbel_bench_kifs
+#include "core/project_io.h"
+#include "core/scene_sync.h"
+#include "extrude/kernel.h"
+#include "kifs/follow.h"
+#include "kifs/kernel.h"
 #include "kifs/mesher.h"
 #include "kifs/trace.h"
 #include "render/gl.h"
@@ -75,6 +80,39 @@ BENCHMARK(KifsShaderFrame)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()  // "CPU" counts llvmpipe's threads: steadier on a shared machine
     ->UseRealTime();
+
+// One shaded 640² frame of assets/examples/kifs-on-house.corbel: the box preset's facade on the
+// Fig. 1 house (a follower: d_o from the baked mass, a 3D texture), the house drawn under it,
+// as corbel-cli render draws the example; beside the box preset's frame above.
+void KifsFollowerFrame(benchmark::State& state) {
+  static render::HeadlessContext context;
+  static render::Renderer renderer;
+  static render::KifsPass pass;
+  const int n = static_cast<int>(state.range(0));
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/kifs-on-house.corbel");
+  SceneSync sync;
+  extrude::registerKernel(sync);
+  kifs::registerKernel(sync);
+  Scene scene;
+  sync.update(p.document, scene);
+  const DocObject* follower = nullptr;
+  for (const DocObject& o : p.document.objects)
+    if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->mass.footprint == "object") follower = &o;
+  if (!follower) {
+    state.SkipWithError("kifs-on-house.corbel has no follower");
+    return;
+  }
+  const kifs::Building whole = kifs::buildingOf(p.document, scene, *follower);
+  const render::OrbitCamera camera = render::kifsCamera(whole, 1.0);
+  const kifs::Building b(render::kifsForView(whole.params(), camera, n), whole.mass());
+  render::RenderSettings settings;
+  settings.edges = false;
+  (void)render::renderKifsImage(renderer, pass, b, scene, camera, n, n, render::KifsMode::Shaded, settings);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        render::renderKifsImage(renderer, pass, b, scene, camera, n, n, render::KifsMode::Shaded, settings).rgba[0]);
+}
+BENCHMARK(KifsFollowerFrame)->Arg(640)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
 // Where the 640² box frame goes: each part ends with glFinish and only it is timed. 0 the
 // target and the renderer's sky and grid, 1 the KIFS pass (march and shading), 2 the MSAA
