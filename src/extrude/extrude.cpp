@@ -3,6 +3,9 @@
 #include "core/error.h"
 #include "extrude/plan_check.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -225,6 +228,20 @@ bool vertexFansClosed(const SweepOutput& shell) {
   return true;
 }
 
+// Whether a face's loop is a simple polygon seen along the axis its normal is most across
+// (exact predicates): two of its corners in one place, or sides that cross, are not.
+bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::vector<int>& loop) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(f.normal[k]) > std::abs(f.normal[axis])) axis = k;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  std::vector<K::Point_2> flat;
+  flat.reserve(loop.size());
+  for (int i : loop) flat.emplace_back(shell.points[i][u], shell.points[i][v]);
+  return flat.size() >= 3 && CGAL::is_simple_2(flat.begin(), flat.end(), K());
+}
+
 }  // namespace
 
 std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace) {
@@ -283,10 +300,47 @@ std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFac
     }
     if (!g.loops.empty()) faces.push_back(std::move(g));
   }
+  // A merged group takes the place of its first vertex made. Where that leaves a face through
+  // it not simple in its plane, the groups on that face take the place of their highest member
+  // instead: events a few δ1 apart at an apex or along a ridge merge into one vertex, and the
+  // place of the first (the lowest) can put a face's top under the corners that later events
+  // made a little higher, so its sides cross. The sweep makes each face from the bottom up, so
+  // the highest member, from the group's last event, is above the face's other corners. (Only
+  // there: elsewhere the first made stays, as rebuilds with wider tolerances, whose groups are
+  // wider, agree best with the oracles that way.)
+  std::vector<int> highest(parent.size(), -1), size(parent.size(), 0);
+  for (std::size_t v = 0; v < parent.size(); ++v) {
+    const int r = find(static_cast<int>(v));
+    ++size[r];
+    if (highest[r] < 0 || shell.points[v][2] > shell.points[highest[r]][2]) highest[r] = static_cast<int>(v);
+  }
+  // (A group moves once; a move can spoil another face through the group, which is then
+  // looked at again.)
+  std::vector<std::pair<int, Vec3>> moved;  // (group, its place before): undone if the collapse is
+  for (bool again = true; again;) {
+    again = false;
+    for (const ShellFace& g : faces) {
+      bool merged = false;
+      for (const auto& l : g.loops)
+        for (int r : l) merged = merged || (size[r] > 1 && highest[r] != r);
+      bool simple = true;
+      for (const auto& l : g.loops) simple = simple && (!merged || simpleInItsPlane(shell, g, l));
+      if (simple) continue;
+      for (const auto& l : g.loops)
+        for (int r : l)
+          if (size[r] > 1 && highest[r] != r) {
+            moved.emplace_back(r, shell.points[r]);
+            shell.points[r] = shell.points[highest[r]];
+            highest[r] = r;
+            again = true;
+          }
+    }
+  }
   const std::size_t before = unpairedEdges(shell);
   std::swap(shell.faces, faces);
   if (unpairedEdges(shell) > before || (before == 0 && !vertexFansClosed(shell))) {
     std::swap(shell.faces, faces);
+    for (auto it = moved.rbegin(); it != moved.rend(); ++it) shell.points[it->first] = it->second;
     return 0;
   }
   return collapsed;

@@ -8,7 +8,9 @@
 // onto the footprint once (sum of area × n_z over the non-base faces = the plan's shoelace area,
 // within 1e-7 × the tolerance factor, as the random test checks), and, where volume_oracle.h has
 // an oracle (CGAL's skeleton under one profile; the unperturbed plan of a perturbed orthogonal
-// one), hold its volume within 1e-6. A rebuilt case must also be justified: three consecutive
+// one), hold its volume within 1e-6, and pass the shell checks (shell_checks.h: every face a
+// simple polygon in its plane, no triangle crossing another) unless
+// tests/data/extrude/shell_check_exemptions.txt names it. A rebuilt case must also be justified: three consecutive
 // factors' rebuilds, made here, all close and agree within 1e-6 (10×, 100×, 1000×, or, where the
 // 10× rebuild fails, 100×, 1000×, 10000×), and the kept one is the first of them. The
 // exceptions are named in
@@ -25,6 +27,7 @@
 #include "core/project_io.h"
 #include "core/scene.h"
 #include "extrude/batch.h"
+#include "shell_checks.h"
 #include "support.h"
 #include "volume_oracle.h"
 
@@ -142,9 +145,10 @@ struct Build {
   bool closed = false;
   std::string why;                                  // when not closed
   double volume = 0, roofArea = 0, projection = 0;  // projection: relative error of the identity
+  std::string geometry;                             // shellGeometryProblem, when asked for
 };
 
-Build buildAt(const ExtrusionSpec& spec, double factor) {
+Build buildAt(const ExtrusionSpec& spec, double factor, bool checkGeometry = false) {
   Build b;
   try {
     const ExtrusionResult er = extrude(spec, nullptr, ExtrudeOptions{kUsers.timeLimitSeconds, factor, false});
@@ -167,6 +171,7 @@ Build buildAt(const ExtrusionSpec& spec, double factor) {
       if (!f.base) projected += faceArea(er.shell, f) * f.normal[2];
     for (const auto& l : spec.loops) footprint += shoelace(l.points);
     b.projection = std::abs(projected - footprint) / footprint;
+    if (checkGeometry) b.geometry = shellGeometryProblem(er.shell, spec, factor);
     b.closed = true;
   } catch (const InputError& e) {
     b.why = std::string("bad input: ") + e.what();
@@ -305,9 +310,14 @@ TEST_P(Saved, Builds) {
   EXPECT_TRUE(r.watertight && r.manifold);
   // The shell the batch kept, built here at its factor: closed, 2-manifold, the same volume.
   const double factor = r.toleranceFactor;
-  const Build kept = buildAt(spec, factor);
+  const Build kept = buildAt(spec, factor, true);
   ASSERT_TRUE(kept.closed) << "built here at " << times(factor) << ": " << kept.why;
   EXPECT_EQ(kept.volume, r.measures.volume);
+  if (shellCheckExemptions().exempt("random", name, "geometry"))
+    EXPECT_NE(kept.geometry, "") << "passes the shell checks now: delete its line from "
+                                    "tests/data/extrude/shell_check_exemptions.txt";
+  else
+    EXPECT_EQ(kept.geometry, "") << "(built at " << times(factor) << "; not in tests/data/extrude/shell_check_exemptions.txt)";
   EXPECT_LT(kept.projection, 1e-7 * factor) << "the roof does not project onto the footprint once";
   if (factor == 1.0) {
     EXPECT_TRUE(first.ok) << first.error;
@@ -369,6 +379,11 @@ TEST(RandomCases, ListsNameSavedCases) {
     EXPECT_TRUE(kClasses.count(cls)) << name << ": unknown class \"" << cls << "\"";
   for (const auto& [name, reason] : disagreements().entries)
     EXPECT_FALSE(stillFailing().entries.count(name)) << name << " is on both lists";
+  for (const std::string& p : shellCheckExemptions().problems) ADD_FAILURE() << p;
+  // A refused case has no shell to check.
+  for (const auto& [name, cls] : stillFailing().entries)
+    for (const char* check : {"geometry", "above-skeleton"})
+      EXPECT_FALSE(shellCheckExemptions().exempt("random", name, check)) << name << " is refused and exempt from a shell check";
 }
 
 }  // namespace

@@ -9,7 +9,9 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace corbel::extrude::test {
@@ -207,6 +209,31 @@ std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& 
               where(pts[s[2]]) + " and " + where(pts[t[0]]) + ", " + where(pts[t[1]]) + ", " + where(pts[t[2]]);
   });
   return problem;
+}
+
+const ShellCheckExemptions& shellCheckExemptions() {
+  static const ShellCheckExemptions list = [] {
+    ShellCheckExemptions l;
+    const std::string file = std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/shell_check_exemptions.txt";
+    std::ifstream in(file);
+    if (!in) l.problems.push_back("cannot read " + file);
+    const std::set<std::string> runs{"random", "hip45", "mixed"}, checks{"geometry", "above-skeleton"};
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      std::istringstream ss(line);  // (ids may hold '#': only whole lines are comments)
+      std::string run, id, check, reason;
+      if (!(ss >> run) || run[0] == '#') continue;
+      ss >> id >> check;
+      std::getline(ss >> std::ws, reason);
+      const std::string at = "shell_check_exemptions.txt:" + std::to_string(n) + ": ";
+      if (!runs.count(run) || !checks.count(check) || id.empty() || reason.empty())
+        l.problems.push_back(at + "expected \"RUN ID CHECK REASON\" (RUN random, hip45 or mixed; CHECK geometry or above-skeleton)");
+      else if (!l.reasons.emplace(run + " " + id + " " + check, reason).second)
+        l.problems.push_back(at + run + " " + id + " " + check + " twice");
+    }
+    return l;
+  }();
+  return list;
 }
 
 }  // namespace corbel::extrude::test

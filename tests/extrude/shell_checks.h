@@ -6,6 +6,7 @@
 #include "extrude/extrude.h"
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,5 +29,20 @@ std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& 
 // area and is dropped.
 std::vector<std::array<int, 3>> cutIntoTriangles(const std::vector<Vec3>& pts, const std::vector<int>& polygon,
                                                  double tolerance);
+
+// The shells the random, real-footprint and saved-case runs may build although a check flags
+// them, each named with the reason (tests/data/extrude/shell_check_exemptions.txt): lines
+// "RUN  ID  CHECK  REASON" ('#' starts a comment line), RUN one of random (the random run and its saved cases), hip45 or
+// mixed (the real footprints' runs), CHECK geometry (shellGeometryProblem) or above-skeleton
+// (with one profile, the top above CGAL's skeleton by more than δ1). The runs fail on a flagged
+// shell the list does not name, and on a named one that passes (its line is to go).
+struct ShellCheckExemptions {
+  std::map<std::string, std::string> reasons;  // "RUN ID CHECK" -> reason
+  std::vector<std::string> problems;           // malformed or repeated lines
+  bool exempt(const std::string& run, const std::string& id, const std::string& check) const {
+    return reasons.count(run + " " + id + " " + check) > 0;
+  }
+};
+const ShellCheckExemptions& shellCheckExemptions();
 
 }  // namespace corbel::extrude::test
