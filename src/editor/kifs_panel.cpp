@@ -103,7 +103,9 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Cells of the baked distance along the mass's longest side (baked in the background)");
     if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+    ImGui::PushTextWrapPos(0);
     ImGui::TextDisabled("(follows the object where it stands: this object's placement is ignored)");
+    ImGui::PopTextWrapPos();
     sliders({{"Shell", &s.mass.shell, 0, 5}});
   } else {
     sliders({{"Half width", &s.mass.halfWidth, 1, 40},
