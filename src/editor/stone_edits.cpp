@@ -3,6 +3,7 @@
 #include "compose/stone_extrusion.h"
 #include "core/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace corbel::editor {
@@ -39,6 +40,21 @@ Document setStoneSetting(const Document& doc, ObjectId id, const std::string& na
   statics::ParameterSet values = model.parameters;
   values.set(name, p.continuous ? value : std::round(value));
   e.masonry = statics::stoneWallsAt(*e.masonry, values);
+  return next;
+}
+
+Document setOpeningHead(const Document& doc, ObjectId id, const std::string& anchor, OpeningHead head) {
+  Document next = doc;
+  ExtrusionSpec& e = extrusionIn(next, id);
+  if (!e.masonry) throw InputError("masonry", "the extrusion is not built in stone: switch Build in stone on first");
+  bool found = false;
+  for (const MeshAnchor& a : e.anchors)
+    found = found || (a.name == anchor && (a.feature == FeatureKind::Door || a.feature == FeatureKind::Window));
+  if (!found) throw InputError("masonry.openings." + anchor, "no door or window anchor named \"" + anchor + "\"");
+  std::vector<StoneOpening>& list = e.masonry->openings;
+  std::erase_if(list, [&](const StoneOpening& o) { return o.anchor == anchor; });
+  if (head != OpeningHead::Lintel) list.push_back({anchor, head});
+  std::sort(list.begin(), list.end(), [](const StoneOpening& a, const StoneOpening& b) { return a.anchor < b.anchor; });
   return next;
 }
 

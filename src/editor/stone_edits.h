@@ -25,6 +25,12 @@ Document setStone(const Document& doc, ObjectId id, bool on);
 // the value is outside the model's range (a wall thicker than a third of the shortest wall).
 Document setStoneSetting(const Document& doc, ObjectId id, const std::string& name, double value);
 
+// What spans the opening of door or window anchor `anchor` (every instance of a repeat): a
+// lintel (the default, kept out of the section's list), a flat or a semicircular arch. Throws
+// InputError naming the anchor when the extrusion has no door or window anchor of that name or
+// is not built in stone.
+Document setOpeningHead(const Document& doc, ObjectId id, const std::string& anchor, OpeningHead head);
+
 // The stone model of the extrusion analysed at its section's values (default friction, no kern
 // margin, as `corbel-cli statics --object`): a view with `error` set when it cannot be built.
 MasonryView analyseStone(const ExtrusionSpec& spec, Progress* progress = nullptr);

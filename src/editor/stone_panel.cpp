@@ -162,6 +162,25 @@ void StonePanel::draw(const StaticsHost& host) {
   marks::mark("stone ties");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("With tie beams the roof pushes no thrust onto the wall heads");
 
+  // What spans each door and window: a combo per anchor (every instance of a repeat alike).
+  for (const MeshAnchor& a : e->anchors) {
+    if (a.feature != FeatureKind::Door && a.feature != FeatureKind::Window) continue;
+    OpeningHead head = OpeningHead::Lintel;
+    for (const StoneOpening& o : m.openings)
+      if (o.anchor == a.name) head = o.head;
+    int choice = int(head);
+    if (marks::combo(("over " + a.name).c_str(), &choice, "lintel\0flat arch\0semicircular arch\0",
+                     "stone head " + a.name)) {
+      try {
+        host.commit(setOpeningHead(*host.doc, host.object, a.name, OpeningHead(choice)),
+                    "Span " + a.name + " with a " + std::string(choice == 0 ? "lintel" : choice == 1 ? "flat arch" : "semicircular arch"),
+                    "");
+      } catch (const std::exception& ex) {
+        host.log(ex.what(), true);
+      }
+      return;
+    }
+  }
   if (search_) {
     ImGui::ProgressBar(float(search_->progress().fraction()), ImVec2(-80, 0), "searching");
     ImGui::SameLine();

@@ -55,6 +55,36 @@ TEST(StoneEdits, ASettingIsCheckedAgainstTheStoneModelsRange) {
   EXPECT_THROW(setStoneSetting(setStone(d, 1, false), 1, "thickness", 0.4), InputError);
 }
 
+// A head chosen per door or window: a lintel is the default and leaves the list; the list stays
+// sorted by anchor, as the project file writes it; every choice builds in the stone model.
+TEST(StoneEdits, EachDoorAndWindowGetsTheHeadChosenForIt) {
+  const Document d = stoneHouses();
+  auto heads = [](const Document& doc) {
+    std::vector<std::pair<std::string, OpeningHead>> out;
+    for (const StoneOpening& o : extrusion(doc, 1).masonry->openings) out.emplace_back(o.anchor, o.head);
+    return out;
+  };
+  const Document lintel = setOpeningHead(d, 1, "door", OpeningHead::Lintel);
+  for (const auto& [anchor, head] : heads(lintel)) EXPECT_NE(anchor, "door");
+  EXPECT_EQ(heads(lintel).size(), heads(d).size() - 1);
+  const Document flat = setOpeningHead(lintel, 1, "door", OpeningHead::FlatArch);
+  EXPECT_EQ(heads(flat).size(), heads(d).size());
+  for (std::size_t i = 1; i < heads(flat).size(); ++i) EXPECT_LT(heads(flat)[i - 1].first, heads(flat)[i].first);
+  for (const auto& [anchor, head] : heads(flat)) {
+    if (anchor == "door") {
+      EXPECT_EQ(head, OpeningHead::FlatArch);
+    }
+  }
+  for (const Document& doc : {lintel, flat}) EXPECT_NO_THROW(statics::stoneModel(extrusion(doc, 1)));
+  try {
+    setOpeningHead(d, 1, "chimney", OpeningHead::FlatArch);
+    ADD_FAILURE() << "an unknown anchor was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("masonry.openings.chimney"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(setOpeningHead(setStone(d, 1, false), 1, "door", OpeningHead::FlatArch), InputError);
+}
+
 // The panel's analysis is the kernel's: the same y/W² and strict verdict as the stone model
 // analysed directly; the house stands and the thin-walled one does not.
 TEST(StoneEdits, TheAnalysisIsTheStoneModelsAsTheKernelAnalysesIt) {
