@@ -8,6 +8,7 @@
 #include "editor/menu_order.h"
 #include "editor/new_objects.h"
 #include "editor/shape_gallery.h"
+#include "editor/stone_edits.h"
 #include "extrude/edit.h"
 #include "kifs/kernel.h"
 
@@ -445,6 +446,37 @@ void App::registerActions() {
        false,
        [this] { statics_.cancelSearch(); },
        [this] { return statics_.searching(); }});
+  // An extrusion built in stone (the left panel's "Build in stone", editor/stone_panel.h).
+  auto selectedExtrusion = [this]() -> const ExtrusionSpec* {
+    const DocObject* o = selected() ? history_.current().find(*selected()) : nullptr;
+    return o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
+  };
+  add({"statics.build_in_stone",
+       "Statics",
+       "Build in Stone",
+       "Course the selected extrusion's walls into stone blocks carrying its roof, or back to a plain shell (one "
+       "undo step; its settings are in the left panel).",
+       {},
+       false,
+       [this, selectedExtrusion] {
+         const ExtrusionSpec* e = selectedExtrusion();
+         if (!e) return;
+         const bool on = !e->masonry;
+         commit(setStone(history_.current(), *selected(), on), on ? "Build the walls in stone" : "Walls not in stone");
+       },
+       [selectedExtrusion] { return selectedExtrusion() != nullptr; }});
+  add({"statics.make_walls_stand",
+       "Statics",
+       "Make the Stone Walls Stand",
+       "Search the wall thickness of the selected extrusion built in stone until its walls carry the roof (in the "
+       "background; one undo step).",
+       {},
+       true,
+       [this] { stone_.makeItStand(staticsHost()); },
+       [this, selectedExtrusion] {
+         const ExtrusionSpec* e = selectedExtrusion();
+         return e && e->masonry && stoneFor_ == selected() && !stone_.searching();
+       }});
   // The collapse simulation (Sec. 5): never a Document change, so none is undoable.
   auto masonrySelected = [this] { return selectedMasonry() != nullptr; };
   add({"statics.analyse_together",

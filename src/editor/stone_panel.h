@@ -27,6 +27,7 @@ class StonePanel {
   // The blocks and forces of the analysis, in the extrusion's frame, when it is of `spec`.
   void drawOverlay(render::Overlay& overlay, render::Overlay& onTop, const ExtrusionSpec& spec) const;
   void makeItStand(const StaticsHost& host);
+  bool searching() const { return search_ != nullptr; }
   void reset();  // another object was selected
 
  private:
