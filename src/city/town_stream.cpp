@@ -124,20 +124,29 @@ TownStream::TownStream(std::string path, ReadOptions options) : path_(std::move(
   }
 }
 
-Town TownStream::part(const std::vector<std::size_t>& own, double reach, std::vector<std::size_t>& indices) const {
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  for (std::size_t i : own)
-    for (int k = 0; k < 2; ++k) {
-      lo[k] = std::min(lo[k], buildings_[i].lo[k]);
-      hi[k] = std::max(hi[k], buildings_[i].hi[k]);
-    }
-  auto near = [&](const double* l, const double* h) {
-    for (int k = 0; k < 2; ++k)
-      if (!(l[k] <= hi[k] + reach && h[k] >= lo[k] - reach)) return false;
-    return true;
+Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double reach,
+                      std::vector<std::size_t>& indices) const {
+  // Each tile's box, grown by the reach: a building in none is too far to matter to any label.
+  struct Box {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   };
+  std::vector<Box> boxes;
   std::vector<bool> wanted(buildings_.size(), false);
-  for (std::size_t i : own) wanted[i] = true;
+  for (const auto& tile : tiles) {
+    Box& t = boxes.emplace_back();
+    for (std::size_t i : tile) {
+      wanted[i] = true;
+      for (int k = 0; k < 2; ++k) {
+        t.lo[k] = std::min(t.lo[k], buildings_[i].lo[k] - reach);
+        t.hi[k] = std::max(t.hi[k], buildings_[i].hi[k] + reach);
+      }
+    }
+  }
+  auto near = [&](const double* l, const double* h) {
+    for (const Box& t : boxes)
+      if (l[0] <= t.hi[0] && h[0] >= t.lo[0] && l[1] <= t.hi[1] && h[1] >= t.lo[1]) return true;
+    return false;
+  };
   for (std::size_t i = 0; i < buildings_.size(); ++i)
     if (!wanted[i] && near(buildings_[i].lo, buildings_[i].hi)) wanted[i] = true;
   std::vector<bool> features;

@@ -375,10 +375,12 @@ int run(const CityRequest& r) {
     for (std::size_t start = 0; start < order.size();) {
       std::size_t end = std::min(order.size(), start + r.streamBuildings);
       while (end < order.size() && sameTile(order[end - 1], order[end])) ++end;
-      std::vector<std::size_t> own(order.begin() + static_cast<std::ptrdiff_t>(start),
-                                   order.begin() + static_cast<std::ptrdiff_t>(end));
-      std::sort(own.begin(), own.end());
-      town = stream->part(own, reach, globalOf);
+      std::vector<std::vector<std::size_t>> tiles;  // the part's buildings by tile
+      for (std::size_t k = start; k < end; ++k) {
+        if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
+        tiles.back().push_back(order[k]);
+      }
+      town = stream->part(tiles, reach, globalOf);
       labels = city::labelTown(town, style.labels, r.jobs);
       std::vector<std::size_t> partOrder;  // `order`'s run in the part's numbers
       for (std::size_t k = start; k < end; ++k)
