@@ -22,6 +22,10 @@
 
 #include <nlohmann/json.hpp>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -57,6 +61,14 @@ constexpr double kTilesetPad = 0.01;
 // A tileset's leaf cells are at most this across, so no building is more than 283 m from the
 // point its leaf is placed by (docs/city.md, "Tilesets").
 constexpr double kMaxLeafSide = 400;
+
+// Hands the pages that freed memory left unused back to the system (glibc keeps them otherwise,
+// and a streamed town's parts would leave their read JSON's pages behind each time).
+void releaseFreedMemory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
 
 // A usage fault of city, named as the other commands name theirs.
 UsageError bad(const std::string& message) { return UsageError("city: " + message); }
@@ -380,7 +392,10 @@ int run(const CityRequest& r) {
         if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
         tiles.back().push_back(order[k]);
       }
+      town = {};  // the last part's, dropped before the next is read
+      labels = {};
       town = stream->part(tiles, reach, globalOf);
+      releaseFreedMemory();  // the part's reading (its JSON) is done with
       labels = city::labelTown(town, style.labels, r.jobs);
       std::vector<std::size_t> partOrder;  // `order`'s run in the part's numbers
       for (std::size_t k = start; k < end; ++k)
