@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <numbers>
 #include <queue>
@@ -342,9 +343,8 @@ void cleanBuilding(Building& b, const CleanupOptions& o) {
 namespace {
 
 // Every position of the features' geometries.
-struct Positions {
+struct Positions : PositionBounds {
   std::vector<nlohmann::json*> at;
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
 };
 
 Positions positionsOf(nlohmann::json& features) {
@@ -363,10 +363,11 @@ Positions positionsOf(nlohmann::json& features) {
       p.at.push_back(&q);
     });
   }
+  p.count = p.at.size();
   return p;
 }
 
-std::string range(const Positions& p) {
+std::string range(const PositionBounds& p) {
   return "x from " + describe(p.lo[0]) + " to " + describe(p.hi[0]) + ", y from " + describe(p.lo[1]) + " to " +
          describe(p.hi[1]);
 }
@@ -386,7 +387,7 @@ std::optional<SourceCrs> givenCrs(const ReadOptions& o) {
 }
 
 // The CRS of a GeoJSON document whose CRS was not given.
-SourceCrs geoJsonCrs(const nlohmann::json& root, const Positions& p) {
+SourceCrs geoJsonCrs(const nlohmann::json& root, const PositionBounds& p) {
   // A "crs" member first: ogr2ogr copies corbel's "frame" member into the files it writes, in
   // whatever CRS it writes them.
   if (const auto crs = root.find("crs"); crs != root.end() && crs->is_object()) {
@@ -407,7 +408,7 @@ SourceCrs geoJsonCrs(const nlohmann::json& root, const Positions& p) {
       const double x0 = lon0->get<double>(), y0 = lat0->get<double>();
       // Metres about the origin lie around (0, 0); positions all within 1° of (lon0, lat0) are
       // lon/lat written under a copied member (by ogr2ogr, without a "crs" member for WGS 84).
-      if (!p.at.empty() && std::abs(x0) + std::abs(y0) > 2 && p.lo[0] >= x0 - 1 && p.hi[0] <= x0 + 1 &&
+      if (p.count && std::abs(x0) + std::abs(y0) > 2 && p.lo[0] >= x0 - 1 && p.hi[0] <= x0 + 1 &&
           p.lo[1] >= y0 - 1 && p.hi[1] <= y0 + 1)
         return {SourceCrs::Kind::Reproject, "EPSG:4326",
                 "the file's \"frame\" member says metres about lon0/lat0, but every position lies within 1° of "
@@ -419,11 +420,11 @@ SourceCrs geoJsonCrs(const nlohmann::json& root, const Positions& p) {
             "the file's \"frame\" member gives metres (" + (projection.empty() ? std::string("a projection") : projection) +
                 "), not placed on the Earth"};
   }
-  if (p.at.empty()) return {SourceCrs::Kind::Local, "", "no positions"};
+  if (!p.count) return {SourceCrs::Kind::Local, "", "no positions"};
   if (p.lo[0] >= -180 && p.hi[0] <= 180 && p.lo[1] >= -90 && p.hi[1] <= 90 && p.hi[0] - p.lo[0] <= 5 &&
       p.hi[1] - p.lo[1] <= 5)
     return {SourceCrs::Kind::Reproject, "EPSG:4326",
-            "all " + std::to_string(p.at.size()) + " positions are valid lon/lat and span " + describe(p.hi[0] - p.lo[0]) +
+            "all " + std::to_string(p.count) + " positions are valid lon/lat and span " + describe(p.hi[0] - p.lo[0]) +
                 "° × " + describe(p.hi[1] - p.lo[1]) + "°: taken as RFC 7946 lon/lat"};
   const double reach = 100000;
   if (p.lo[0] >= -reach && p.hi[0] <= reach && p.lo[1] >= -reach && p.hi[1] <= reach)
@@ -453,70 +454,40 @@ std::string attributionOf(const nlohmann::json& root, const nlohmann::json& feat
   return "";
 }
 
-// Places a FeatureCollection in source coordinates into the local frame and reads its streets
-// and buildings. `text`, when given, is the document as it was (read again where nothing moved).
-Town placeTown(nlohmann::json& root, const std::function<SourceCrs(const Positions&)>& crsOf, const ReadOptions& options,
-               const std::string* text) {
+// The streets and buildings of a collection in source coordinates, placed as `placement` says.
+// `text`, when given, is the document as it was (read again where nothing moved); `east` gets
+// the largest |x| of a moved position.
+Town placeFeatures(nlohmann::json& root, const Placement& placement, const ReadOptions& options, const std::string* text,
+                   double* east) {
   Town town;
+  town.frame = placement.frame;
   nlohmann::json& features = root["features"];
-  town.attribution = attributionOf(root, features);
-  Positions positions = positionsOf(features);
-  const SourceCrs crs = crsOf(positions);
-  Frame& frame = town.frame;
-  frame.how = crs.how;
-  frame.coordinates = Coordinates::Metric;
   bool moved = false;
-  if (crs.kind == SourceCrs::Kind::Frame) {
-    frame.crs = crsName(crs.definition);
-    frame.proj = crs.definition;
-    const Vec2 origin = toLonLat(crs.definition, Vec2(0, 0));
-    frame.lon0 = origin[0];
-    frame.lat0 = origin[1];
-    if (!positions.at.empty())
-      for (double y : {positions.lo[1], positions.hi[1]}) {
-        const double lat = frame.lat0 + y / frame.radius / kDeg;
-        frame.scaleError =
-            std::max(frame.scaleError, std::abs(std::cos(frame.lat0 * kDeg) / std::cos(lat * kDeg) - 1));
-      }
-  } else if (crs.kind == SourceCrs::Kind::Reproject && !positions.at.empty()) {
-    const bool geographic = crsIsGeographic(crs.definition);
-    frame.coordinates = geographic ? Coordinates::Geographic : Coordinates::Projected;
-    frame.crs = crsName(crs.definition);
-    const Vec2 centre((positions.lo[0] + positions.hi[0]) / 2, (positions.lo[1] + positions.hi[1]) / 2);
-    const Reprojection to(crs.definition, centre);
-    frame.lon0 = to.lon0();
-    frame.lat0 = to.lat0();
-    frame.proj = to.definition();
+  if (placement.to) {
+    Positions positions = positionsOf(features);
     const std::size_t n = positions.at.size();
-    std::vector<double> x(n), y(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      x[i] = (*positions.at[i])[0].get<double>();
-      y[i] = (*positions.at[i])[1].get<double>();
+    if (n) {
+      std::vector<double> x(n), y(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        x[i] = (*positions.at[i])[0].get<double>();
+        y[i] = (*positions.at[i])[1].get<double>();
+      }
+      if (!placement.to->transform(n, x.data(), y.data()))
+        throw InputError("crs", "PROJ cannot transform every position from " + placement.frame.crs + " (" +
+                                    range(positions) + ") to the local frame; is the CRS right? " + kCrsHelp);
+      for (std::size_t i = 0; i < n; ++i) {
+        (*positions.at[i])[0] = x[i];
+        (*positions.at[i])[1] = y[i];
+        if (east) *east = std::max(*east, std::abs(x[i]));
+      }
+      moved = true;
     }
-    if (!to.transform(n, x.data(), y.data()))
-      throw InputError("crs", "PROJ cannot transform every position from " + frame.crs + " (" + range(positions) +
-                                  ") to the local frame; is the CRS right? " + kCrsHelp);
-    double east = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      (*positions.at[i])[0] = x[i];
-      (*positions.at[i])[1] = y[i];
-      east = std::max(east, std::abs(x[i]));
-    }
-    frame.scaleError = transverseMercatorScaleError(east);
-    moved = true;
   }
 
   // Streets.
   std::vector<std::size_t> lineFeatures;
-  for (std::size_t i = 0; i < features.size(); ++i) {
-    const auto& f = features[i];
-    if (!f.is_object() || !f.contains("geometry") || !f["geometry"].is_object()) continue;
-    const auto& g = f["geometry"];
-    if (g.contains("type") && g["type"].is_string()) {
-      const std::string gt = g["type"].get<std::string>();
-      if (gt == "LineString" || gt == "MultiLineString") lineFeatures.push_back(i);
-    }
-  }
+  for (std::size_t i = 0; i < features.size(); ++i)
+    if (isLineFeature(features[i])) lineFeatures.push_back(i);
   for (std::size_t i : lineFeatures) {
     const auto& g = features[i]["geometry"];
     const std::string path = "features[" + std::to_string(i) + "].geometry.coordinates";
@@ -556,6 +527,21 @@ Town placeTown(nlohmann::json& root, const std::function<SourceCrs(const Positio
   return town;
 }
 
+// Places a FeatureCollection in source coordinates into the local frame and reads its streets
+// and buildings. `text`, when given, is the document as it was (read again where nothing moved).
+Town placeTown(nlohmann::json& root, const std::function<SourceCrs(const PositionBounds&)>& crsOf,
+               const ReadOptions& options, const std::string* text) {
+  nlohmann::json& features = root["features"];
+  const std::string attribution = attributionOf(root, features);
+  const Positions positions = positionsOf(features);
+  const Placement placement = placementOf(crsOf(positions), positions);
+  double east = 0;
+  Town town = placeFeatures(root, placement, options, text, &east);
+  town.attribution = attribution;
+  if (placement.to) town.frame.scaleError = transverseMercatorScaleError(east);
+  return town;
+}
+
 void checkCollection(const nlohmann::json& root) {
   JsonReader r(root, "");
   r.expectObject();
@@ -577,7 +563,7 @@ Town readTown(const std::string& text, const ReadOptions& options) {
   checkCollection(root);
   const std::optional<SourceCrs> given = givenCrs(options);
   return placeTown(
-      root, [&](const Positions& p) { return given ? *given : geoJsonCrs(root, p); }, options, &text);
+      root, [&](const PositionBounds& p) { return given ? *given : geoJsonCrs(root, p); }, options, &text);
 }
 
 Town readTown(const std::string& text, Coordinates coordinates, const CleanupOptions& cleanup) {
@@ -604,7 +590,7 @@ Town readTownFile(const std::string& path, const ReadOptions& options) {
     }
     return placeTown(
         source.collection,
-        [&](const Positions& p) {
+        [&](const PositionBounds& p) {
           if (given) return *given;
           if (geoJson) return geoJsonCrs(source.collection, p);
           if (source.crs.empty())
@@ -622,6 +608,72 @@ Town readTownFile(const std::string& path, Coordinates coordinates, const Cleanu
   options.coordinates = coordinates;
   options.cleanup = cleanup;
   return readTownFile(path, options);
+}
+
+bool isLineFeature(const nlohmann::json& f) {
+  if (!f.is_object() || !f.contains("geometry") || !f["geometry"].is_object()) return false;
+  const auto& g = f["geometry"];
+  if (!g.contains("type") || !g["type"].is_string()) return false;
+  const std::string gt = g["type"].get<std::string>();
+  return gt == "LineString" || gt == "MultiLineString";
+}
+
+void addPositions(PositionBounds& bounds, nlohmann::json& feature) {
+  nlohmann::json features = nlohmann::json::array();
+  features.push_back(std::move(feature));
+  const Positions p = positionsOf(features);
+  for (int k = 0; k < 2; ++k) {
+    bounds.lo[k] = std::min(bounds.lo[k], p.lo[k]);
+    bounds.hi[k] = std::max(bounds.hi[k], p.hi[k]);
+  }
+  bounds.count += p.count;
+  feature = std::move(features[0]);
+}
+
+std::string creditOf(const nlohmann::json& members, const nlohmann::json& feature) {
+  nlohmann::json features = nlohmann::json::array();
+  if (feature.is_object()) features.push_back(feature);
+  return attributionOf(members, features);
+}
+
+Placement placementOf(const SourceCrs& crs, const PositionBounds& bounds) {
+  Placement placement;
+  Frame& frame = placement.frame;
+  frame.how = crs.how;
+  frame.coordinates = Coordinates::Metric;
+  if (crs.kind == SourceCrs::Kind::Frame) {
+    frame.crs = crsName(crs.definition);
+    frame.proj = crs.definition;
+    const Vec2 origin = toLonLat(crs.definition, Vec2(0, 0));
+    frame.lon0 = origin[0];
+    frame.lat0 = origin[1];
+    if (bounds.count)
+      for (double y : {bounds.lo[1], bounds.hi[1]}) {
+        const double lat = frame.lat0 + y / frame.radius / kDeg;
+        frame.scaleError =
+            std::max(frame.scaleError, std::abs(std::cos(frame.lat0 * kDeg) / std::cos(lat * kDeg) - 1));
+      }
+  } else if (crs.kind == SourceCrs::Kind::Reproject && bounds.count) {
+    const bool geographic = crsIsGeographic(crs.definition);
+    frame.coordinates = geographic ? Coordinates::Geographic : Coordinates::Projected;
+    frame.crs = crsName(crs.definition);
+    const Vec2 centre((bounds.lo[0] + bounds.hi[0]) / 2, (bounds.lo[1] + bounds.hi[1]) / 2);
+    auto to = std::make_shared<const Reprojection>(crs.definition, centre);
+    frame.lon0 = to->lon0();
+    frame.lat0 = to->lat0();
+    frame.proj = to->definition();
+    placement.to = std::move(to);
+  }
+  return placement;
+}
+
+Placement geoJsonPlacement(const nlohmann::json& members, const PositionBounds& bounds, const ReadOptions& options) {
+  const std::optional<SourceCrs> given = givenCrs(options);
+  return placementOf(given ? *given : geoJsonCrs(members, bounds), bounds);
+}
+
+Town placePart(nlohmann::json& collection, const Placement& placement, const ReadOptions& options, double* east) {
+  return placeFeatures(collection, placement, options, nullptr, east);
 }
 
 }  // namespace corbel::city

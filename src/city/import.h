@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -126,5 +128,32 @@ Town readTown(const std::string& text, Coordinates coordinates = Coordinates::Au
 Town readTownFile(const std::string& path, const ReadOptions& options);
 Town readTownFile(const std::string& path, Coordinates coordinates = Coordinates::Auto,
                   const CleanupOptions& options = {});
+
+// Reading a source in parts (city/town_stream.h) places every part as readTown places the whole:
+// in one frame decided up front from the source's CRS and the bounds of all its positions.
+struct PositionBounds {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  std::size_t count = 0;
+};
+struct Placement {
+  Frame frame;  // scaleError as far as the bounds tell (a reprojected source's: see placePart)
+  std::shared_ptr<const Reprojection> to;  // null: positions are taken as they are
+};
+// Adds a GeoJSON feature's positions to the bounds.
+void addPositions(PositionBounds& bounds, nlohmann::json& feature);
+// A LineString or MultiLineString feature: a street.
+bool isLineFeature(const nlohmann::json& feature);
+// Whom the data must be credited to, by the document's members other than "features" and one
+// feature ("" when they say nothing).
+std::string creditOf(const nlohmann::json& members, const nlohmann::json& feature);
+// The placement of a source in `crs` whose positions span `bounds`.
+Placement placementOf(const SourceCrs& crs, const PositionBounds& bounds);
+// The placement of a GeoJSON document with these members (all but "features"), as readTown
+// decides it (options.crs first, then "frame", "crs", then the positions).
+Placement geoJsonPlacement(const nlohmann::json& members, const PositionBounds& bounds, const ReadOptions& options);
+// The streets and buildings of a FeatureCollection in source coordinates, placed (and cleaned
+// unless asked not to be) as readTown does; `east` gets the largest |x| of a reprojected
+// position (the scale error's argument).
+Town placePart(nlohmann::json& collection, const Placement& placement, const ReadOptions& options, double* east = nullptr);
 
 }  // namespace corbel::city

@@ -16,6 +16,13 @@ namespace corbel::city {
 // The property that marks a margin building in a tile's source: labelled, not built.
 inline constexpr const char* kMarginProperty = "corbel_margin";
 
+// Whether a building's properties mark it as margin (kMarginProperty true or a number other than 0).
+inline bool marksMargin(const nlohmann::json& p) {
+  if (!p.is_object()) return false;
+  const auto m = p.find(kMarginProperty);
+  return m != p.end() && (m->is_boolean() ? m->get<bool>() : m->is_number() && m->get<double>() != 0);
+}
+
 struct SplitTile {
   long x = 0, y = 0;                 // the cell [x g, (x + 1) g) × [y g, (y + 1) g) of the local frame
   std::string name;                  // "X_Y"

@@ -9,6 +9,7 @@
 #include "city/style.h"
 #include "city/tileset.h"
 #include "city/town.h"
+#include "city/town_stream.h"
 #include "cli/guarded.h"
 #include "cli/number_list.h"
 #include "cli/run.h"
@@ -20,6 +21,10 @@
 #include "render/headless_context.h"
 
 #include <nlohmann/json.hpp>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <chrono>
 #include <cmath>
@@ -56,6 +61,14 @@ constexpr double kTilesetPad = 0.01;
 // A tileset's leaf cells are at most this across, so no building is more than 283 m from the
 // point its leaf is placed by (docs/city.md, "Tilesets").
 constexpr double kMaxLeafSide = 400;
+
+// Hands the pages that freed memory left unused back to the system (glibc keeps them otherwise,
+// and a streamed town's parts would leave their read JSON's pages behind each time).
+void releaseFreedMemory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
 
 // A usage fault of city, named as the other commands name theirs.
 UsageError bad(const std::string& message) { return UsageError("city: " + message); }
@@ -122,8 +135,12 @@ int run(const CityRequest& r) {
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   const city::Style style = city::loadStyle(r.style);
-  city::Town town;
+  city::Town town;  // the whole town, or (streamed) the part being built
   std::string source;
+  // Streamed: the source read a part at a time (city/town_stream.h), when nothing needs the whole
+  // town at once.
+  std::optional<city::TownStream> stream;
+  std::vector<std::size_t> globalOf;  // streamed: the part's building k is the source's globalOf[k]
   if (!r.street.empty()) {
     std::vector<Vec2> control;
     std::size_t k = 0;
@@ -140,24 +157,32 @@ int run(const CityRequest& r) {
     source = "street";
   } else {
     source = r.footprints;
-    town = city::readTownFile(source, read);
+    if (r.streamBuildings > 0 && r.out.empty() && r.render.empty() && (!r.tiles.empty() || !r.tileset.empty()) &&
+        city::TownStream::handles(source, read))
+      stream.emplace(source, read);
+    else
+      town = city::readTownFile(source, read);
   }
-  if (!r.tileset.empty() && town.frame.proj.empty())
+  const city::Frame townFrame = stream ? stream->frame() : town.frame;
+  const std::string attribution = stream ? stream->attribution() : town.attribution;
+  const std::size_t count = stream ? stream->size() : town.buildings.size();
+  if (!r.tileset.empty() && townFrame.proj.empty())
     throw bad("--tileset: the town is in local metres, with no place on the Earth to put it (footprints: give their "
               "CRS with --crs)");
-  const std::vector<city::BuildingLabels> labels = city::labelTown(town, style.labels, r.jobs);
+  std::vector<city::BuildingLabels> labels;
+  if (!stream) labels = city::labelTown(town, style.labels, r.jobs);
   const double readS = seconds();
 
   // Tiles: buildings sorted by the tile of their first corner's centroid, so one tile is in
   // memory at a time.
   const bool tiled = !r.tiles.empty();
-  std::vector<std::pair<long, long>> tileOf(town.buildings.size(), {0, 0});
-  std::vector<std::size_t> order(town.buildings.size());
+  std::vector<std::pair<long, long>> tileOf(count, {0, 0});
+  std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
-  std::vector<Vec2> centres(town.buildings.size(), Vec2(0, 0));
-  for (std::size_t i = 0; i < town.buildings.size(); ++i)
-    if (!town.buildings[i].loops.empty()) {
-      centres[i] = centroidOf(town.buildings[i].loops[0]);
+  std::vector<Vec2> centres(count, Vec2(0, 0));
+  for (std::size_t i = 0; i < count; ++i)
+    if (stream ? stream->centre(i) != Vec2(0, 0) : !town.buildings[i].loops.empty()) {
+      centres[i] = stream ? stream->centre(i) : centroidOf(town.buildings[i].loops[0]);
       tileOf[i] = {static_cast<long>(std::floor(centres[i][0] / tileSize)),
                    static_cast<long>(std::floor(centres[i][1] / tileSize))};
     }
@@ -167,11 +192,8 @@ int run(const CityRequest& r) {
   // A tile's source from city-split: its margin buildings are labelled with the rest but built
   // by their own tile.
   const std::size_t before = order.size();
-  std::erase_if(order, [&](std::size_t i) {
-    const auto& p = town.buildings[i].properties;
-    const auto m = p.is_object() ? p.find(city::kMarginProperty) : p.end();
-    return p.is_object() && m != p.end() && (m->is_boolean() ? m->get<bool>() : m->is_number() && m->get<double>() != 0);
-  });
+  std::erase_if(order,
+                [&](std::size_t i) { return stream ? stream->margin(i) : city::marksMargin(town.buildings[i].properties); });
   const std::size_t margin = before - order.size();
   if (tiled) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tileOf[a] < tileOf[b]; });
@@ -180,7 +202,7 @@ int run(const CityRequest& r) {
   // Tileset: a quadtree over the corners' means of the buildings in `order`, which is sorted by
   // leaf so that one leaf's buildings are in memory at a time.
   std::optional<city::Quadtree> tree;
-  std::vector<int> leafOf(town.buildings.size(), -1);
+  std::vector<int> leafOf(count, -1);
   if (!r.tileset.empty()) {
     std::vector<Vec2> points;
     for (std::size_t i : order) points.push_back(centres[i]);
@@ -195,8 +217,8 @@ int run(const CityRequest& r) {
   exportOptions.textures = r.textures == "on";
   exportOptions.tagTextures = city::tagTexturesOf(style);  // the style's tag_textures
   // The georeference and the data's attribution go into every glb.
-  exportOptions.georeference = {town.frame.crs, town.frame.proj, town.frame.lon0, town.frame.lat0, r.ground};
-  exportOptions.copyright = town.attribution;
+  exportOptions.georeference = {townFrame.crs, townFrame.proj, townFrame.lon0, townFrame.lat0, r.ground};
+  exportOptions.copyright = attribution;
   exportOptions.compress = r.compress;
   // --instances: the features of the buildings in a file (the whole town's, the tile's), once per shape.
   city::FeatureInstances wholeFeatures(style), tileFeatures(style);
@@ -229,7 +251,7 @@ int run(const CityRequest& r) {
   city::LeafContent leaf;
   city::LeafFrame frame;  // the leaf's
   std::array<double, 16> rootFrame{};
-  if (tree) rootFrame = city::enuToEcef(town.frame.lon0, town.frame.lat0, r.ground);
+  if (tree) rootFrame = city::enuToEcef(townFrame.lon0, townFrame.lat0, r.ground);
   std::size_t tilesetFiles = 0;
   auto flushLeaf = [&] {
     if (currentLeaf < 0 || !leafScene) return;
@@ -239,7 +261,7 @@ int run(const CityRequest& r) {
     leaf.blocksUri = "tiles/" + name + "-blocks.glb";
     // The tile's glb is in the leaf's frame, and says so.
     ExportOptions leafOptions = exportOptions;
-    leafOptions.georeference = {town.frame.crs, city::leafFrameDefinition(frame, r.ground), frame.lon, frame.lat, r.ground};
+    leafOptions.georeference = {townFrame.crs, city::leafFrameDefinition(frame, r.ground), frame.lon, frame.lat, r.ground};
     leafOptions.instances = &leafFeatures.meshes();
     addFeatures(leaf.detail, leafFeatures.meshes());
     exportScene(*leafScene, (std::filesystem::path(r.tileset) / leaf.detailUri).string(), leafOptions);
@@ -264,6 +286,7 @@ int run(const CityRequest& r) {
   std::map<std::string, std::size_t> reasons;
   std::size_t instancedFeatures = 0;
   auto sink = [&](const city::BuildingReport& b, MeshData* mesh) {
+    const std::size_t g = stream ? globalOf[b.index] : b.index;  // the building's number in the source
     if (report) {
       nlohmann::ordered_json j;
       j["id"] = b.id;
@@ -285,20 +308,20 @@ int run(const CityRequest& r) {
       ++reasons[head.find('[') == std::string::npos ? head : "geometry"];
       return;
     }
-    if (tiled && (!currentTile || *currentTile != tileOf[b.index])) {
+    if (tiled && (!currentTile || *currentTile != tileOf[g])) {
       flushTile();
-      currentTile = tileOf[b.index];
+      currentTile = tileOf[g];
     }
     if (tiled && !tile) {
       tile = std::make_unique<Scene>();
       tileId = 1;
     }
     if (tree) {
-      if (currentLeaf != leafOf[b.index]) {
+      if (currentLeaf != leafOf[g]) {
         flushLeaf();
-        currentLeaf = leafOf[b.index];
+        currentLeaf = leafOf[g];
         const city::QuadCell& cell = tree->cells[tree->leafCells[currentLeaf]];
-        frame = city::leafFrame(town.frame.proj, Vec2(cell.x0 + cell.size / 2, cell.y0 + cell.size / 2), rootFrame,
+        frame = city::leafFrame(townFrame.proj, Vec2(cell.x0 + cell.size / 2, cell.y0 + cell.size / 2), rootFrame,
                                 r.ground);
         leaf.transform = frame.toRoot;
       }
@@ -351,10 +374,47 @@ int run(const CityRequest& r) {
   options.detail = detail;
   options.featuresApart = r.instances;
   // (buildTown takes an empty order as every building: none are left to build here.)
-  const city::TownSummary sum =
-      order.empty() ? city::TownSummary{}
-                    : city::buildTown(town, labels, style, options, sink, order,
-                                      [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
+  city::TownSummary sum;
+  if (!stream) {
+    if (!order.empty())
+      sum = city::buildTown(town, labels, style, options, sink, order,
+                            [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
+  } else {
+    // Parts of about --stream-buildings buildings in `order`, cut between tiles; each read with
+    // its neighbours within the labels' reach, labelled, built, written and dropped.
+    const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
+    auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
+    for (std::size_t start = 0; start < order.size();) {
+      std::size_t end = std::min(order.size(), start + r.streamBuildings);
+      while (end < order.size() && sameTile(order[end - 1], order[end])) ++end;
+      std::vector<std::vector<std::size_t>> tiles;  // the part's buildings by tile
+      for (std::size_t k = start; k < end; ++k) {
+        if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
+        tiles.back().push_back(order[k]);
+      }
+      town = {};  // the last part's, dropped before the next is read
+      labels = {};
+      town = stream->part(tiles, reach, globalOf);
+      releaseFreedMemory();  // the part's reading (its JSON) is done with
+      labels = city::labelTown(town, style.labels, r.jobs);
+      std::vector<std::size_t> partOrder;  // `order`'s run in the part's numbers
+      for (std::size_t k = start; k < end; ++k)
+        partOrder.push_back(static_cast<std::size_t>(std::lower_bound(globalOf.begin(), globalOf.end(), order[k]) -
+                                                     globalOf.begin()));
+      const city::TownSummary s =
+          city::buildTown(town, labels, style, options, sink, partOrder,
+                          [&](std::size_t d, std::size_t) { drawBar(start + d, order.size(), seconds()); });
+      sum.buildings += s.buildings;
+      sum.ok += s.ok;
+      sum.refused += s.refused;
+      sum.failed += s.failed;
+      sum.faces += s.faces;
+      for (const auto& [type, n] : s.types) sum.types[type] += n;
+      start = end;
+    }
+    town = {};
+    labels.clear();
+  }
   flushTile();
   flushLeaf();
   if (tree) {
@@ -378,16 +438,17 @@ int run(const CityRequest& r) {
 
   nlohmann::ordered_json j;
   j["source"] = source;
-  j["frame"] = town.frame.how;
-  if (!town.frame.proj.empty()) {
-    j["crs"] = town.frame.crs;
-    j["local_frame"] = town.frame.proj;
-    j["lon0"] = town.frame.lon0;
-    j["lat0"] = town.frame.lat0;
-    j["scale_error"] = town.frame.scaleError;
+  j["frame"] = townFrame.how;
+  if (!townFrame.proj.empty()) {
+    j["crs"] = townFrame.crs;
+    j["local_frame"] = townFrame.proj;
+    j["lon0"] = townFrame.lon0;
+    j["lat0"] = townFrame.lat0;
+    j["scale_error"] = townFrame.scaleError;
   }
-  if (!town.attribution.empty()) j["attribution"] = town.attribution;
-  j["streets"] = town.streets.size();
+  if (!attribution.empty()) j["attribution"] = attribution;
+  j["streets"] = stream ? stream->streets().size() : town.streets.size();
+  if (stream) j["streamed"] = true;
   j["style"] = style.name;
   j["seed"] = options.seed;
   j["buildings"] = sum.buildings;

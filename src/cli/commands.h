@@ -140,6 +140,9 @@ struct CityRequest {
   double tileSize = 500;
   unsigned tileBuildings = 128;  // --tileset: at most this many buildings in a leaf tile
   double ground = 0;             // --tileset: the ellipsoidal height of the frame's origin, m
+  // --tiles/--tileset without --out and --render: the source is read this many buildings (whole
+  // tiles) at a time; 0 reads it whole (city/town_stream.h)
+  unsigned streamBuildings = 1024;
   bool instances = false, compress = false;  // glb: EXT_mesh_gpu_instancing, EXT_meshopt_compression
 };
 

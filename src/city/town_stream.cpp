@@ -1,0 +1,201 @@
+#include "city/town_stream.h"
+
+#include "city/split.h"
+#include "core/error.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+namespace corbel::city {
+
+namespace {
+
+// Calls `visit` on each entry of the file's "features" array in order, each built and dropped in
+// turn, and returns the document without them. An entry that is not an object stays in the
+// returned document's "features".
+nlohmann::json forEachFeature(const std::string& path, const std::function<void(nlohmann::json&)>& visit) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot read it");
+  using Event = nlohmann::json::parse_event_t;
+  std::string member;  // the root's member being read
+  try {
+    nlohmann::json root = nlohmann::json::parse(in, [&](int depth, Event event, nlohmann::json& parsed) {
+      if (depth > 64) throw InputError(path, "nested deeper than 64 levels");
+      if (depth == 1 && event == Event::key) member = parsed.get<std::string>();
+      if (depth == 2 && event == Event::object_end && member == "features") {
+        visit(parsed);
+        return false;  // dropped
+      }
+      return true;
+    });
+    return root;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path, std::string("not JSON: ") + e.what());
+  }
+}
+
+// The document's members but "features", checked as a FeatureCollection's.
+nlohmann::json membersOf(nlohmann::json root, const std::string& path) {
+  if (!root.is_object()) throw InputError(path, "expected a JSON object (a FeatureCollection)");
+  const auto type = root.find("type");
+  if (type == root.end() || !type->is_string() || *type != "FeatureCollection")
+    throw InputError(path, "type: expected \"FeatureCollection\"");
+  const auto features = root.find("features");
+  if (features == root.end() || !features->is_array()) throw InputError(path, "features: expected an array");
+  if (!features->empty()) throw InputError(path, "features: an entry is not an object (a Feature)");
+  root.erase("features");
+  return root;
+}
+
+// A feature's id as the kernel's reader gives it when it has none of its own: its place among
+// the file's footprint features.
+void nameByPlace(nlohmann::json& f, std::size_t place) {
+  const auto id = f.find("id");
+  if (id != f.end() && (id->is_string() || id->is_number())) return;
+  const auto p = f.find("properties");
+  if (p != f.end() && p->is_object() && p->contains("source_id") && (*p)["source_id"].is_string()) return;
+  f["id"] = std::to_string(place);
+}
+
+nlohmann::json collectionOf(const nlohmann::json& members) {
+  nlohmann::json c = members;
+  c["features"] = nlohmann::json::array();
+  return c;
+}
+
+}  // namespace
+
+bool TownStream::handles(const std::string& path, const ReadOptions& options) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return (ext == ".geojson" || ext == ".json") && options.layer.empty() && options.where.empty();
+}
+
+TownStream::TownStream(std::string path, ReadOptions options) : path_(std::move(path)), options_(std::move(options)) {
+  try {
+    // Pass 1: the bounds of every position, for the frame, and the credit.
+    PositionBounds bounds;
+    std::string credit;
+    members_ = membersOf(forEachFeature(path_,
+                                        [&](nlohmann::json& f) {
+                                          if (credit.empty()) credit = creditOf(nlohmann::json::object(), f);
+                                          addPositions(bounds, f);
+                                        }),
+                         path_);
+    // The document's own credit first, as a whole read gives it.
+    if (const std::string own = creditOf(members_, nullptr); !own.empty()) credit = own;
+    attribution_ = credit;
+    placement_ = geoJsonPlacement(members_, bounds, options_);
+    frame_ = placement_.frame;
+    // Pass 2: each feature placed and cleaned alone; of its buildings only their centres and boxes kept.
+    double east = 0;
+    std::size_t place = 0, feature = 0;
+    forEachFeature(path_, [&](nlohmann::json& f) {
+      const std::uint32_t at = static_cast<std::uint32_t>(feature++);
+      const bool line = isLineFeature(f);
+      if (!line) nameByPlace(f, place++);
+      nlohmann::json one = collectionOf(members_);
+      one["features"].push_back(std::move(f));
+      Town t = placePart(one, placement_, options_, &east);
+      for (Street& s : t.streets) streets_.push_back(std::move(s));
+      for (const Building& b : t.buildings) {
+        Entry e;
+        e.feature = at;
+        e.margin = marksMargin(b.properties);
+        if (!b.loops.empty() && !b.loops[0].empty()) {
+          for (const Vec2& p : b.loops[0]) e.centre += p;
+          e.centre /= static_cast<double>(b.loops[0].size());
+          for (const auto& loop : b.loops)
+            for (const Vec2& p : loop)
+              for (int k = 0; k < 2; ++k) {
+                e.lo[k] = std::min(e.lo[k], p[k]);
+                e.hi[k] = std::max(e.hi[k], p[k]);
+              }
+        }
+        buildings_.push_back(e);
+      }
+    });
+    if (placement_.to) frame_.scaleError = transverseMercatorScaleError(east);
+  } catch (const InputError& e) {
+    if (e.where.rfind(path_, 0) == 0) throw;
+    throw InputError(e.where.empty() ? path_ : path_ + ": " + e.where, e.reason);
+  }
+}
+
+Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double reach,
+                      std::vector<std::size_t>& indices) const {
+  // Each tile's box, grown by the reach: a building in none is too far to matter to any label.
+  struct Box {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  };
+  std::vector<Box> boxes;
+  std::vector<bool> wanted(buildings_.size(), false);
+  for (const auto& tile : tiles) {
+    Box& t = boxes.emplace_back();
+    for (std::size_t i : tile) {
+      wanted[i] = true;
+      for (int k = 0; k < 2; ++k) {
+        t.lo[k] = std::min(t.lo[k], buildings_[i].lo[k] - reach);
+        t.hi[k] = std::max(t.hi[k], buildings_[i].hi[k] + reach);
+      }
+    }
+  }
+  auto near = [&](const double* l, const double* h) {
+    for (const Box& t : boxes)
+      if (l[0] <= t.hi[0] && h[0] >= t.lo[0] && l[1] <= t.hi[1] && h[1] >= t.lo[1]) return true;
+    return false;
+  };
+  for (std::size_t i = 0; i < buildings_.size(); ++i)
+    if (!wanted[i] && near(buildings_[i].lo, buildings_[i].hi)) wanted[i] = true;
+  std::vector<bool> features;
+  for (std::size_t i = 0; i < buildings_.size(); ++i)
+    if (wanted[i]) {
+      if (features.size() <= buildings_[i].feature) features.resize(buildings_[i].feature + 1, false);
+      features[buildings_[i].feature] = true;
+    }
+  // The wanted features read again, in the file's order.
+  nlohmann::json collection = collectionOf(members_);
+  std::vector<std::size_t> first;  // each read feature's first building
+  std::size_t place = 0, feature = 0, building = 0;
+  forEachFeature(path_, [&](nlohmann::json& f) {
+    const std::size_t at = feature++;
+    const bool line = isLineFeature(f);
+    if (!line) nameByPlace(f, place++);
+    if (line || at >= features.size() || !features[at]) return;
+    while (building < buildings_.size() && buildings_[building].feature < at) ++building;
+    first.push_back(building);
+    collection["features"].push_back(std::move(f));
+  });
+  Town t = placePart(collection, placement_, options_);
+  if (!t.streets.empty()) throw InputError(path_, "changed while it was read");
+  Town out;
+  out.frame = frame_;
+  out.attribution = attribution_;
+  indices.clear();
+  // A read feature's buildings are numbered on from its first.
+  std::size_t k = 0;
+  for (std::size_t f = 0; f < first.size(); ++f) {
+    for (std::size_t g = first[f]; g < buildings_.size() && buildings_[g].feature == buildings_[first[f]].feature; ++g) {
+      if (k >= t.buildings.size()) throw InputError(path_, "changed while it was read");
+      Building& b = t.buildings[k++];
+      if (!wanted[g]) continue;
+      indices.push_back(g);
+      out.buildings.push_back(std::move(b));
+    }
+  }
+  if (k != t.buildings.size()) throw InputError(path_, "changed while it was read");
+  for (const Street& s : streets_) {
+    double sl[2] = {INFINITY, INFINITY}, sh[2] = {-INFINITY, -INFINITY};
+    for (const Vec2& p : s.points)
+      for (int d = 0; d < 2; ++d) {
+        sl[d] = std::min(sl[d], p[d]);
+        sh[d] = std::max(sh[d], p[d]);
+      }
+    if (near(sl, sh)) out.streets.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace corbel::city

@@ -1,0 +1,58 @@
+#pragma once
+// A GeoJSON footprint source read in parts (corbel-cli city with --tiles or --tileset,
+// docs/city.md "Memory"): one pass finds the frame, a second keeps of each building only what a
+// tiling needs (its centre, box and margin mark), and each part is read again from the file
+// with its neighbours, so that memory grows with a part, not with the town. A part's buildings
+// are the ones a whole read gives, cleaned and placed alike; read with the buildings and streets
+// within the labels' reach of them, they are labelled alike too.
+#include "city/import.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace corbel::city {
+
+class TownStream {
+ public:
+  // Whether `path` is read in parts: a GeoJSON file (.geojson, .json) read without a layer or
+  // where-clause (those go through GDAL/OGR whole).
+  static bool handles(const std::string& path, const ReadOptions& options);
+
+  // Reads the file twice, holding one feature at a time. Throws InputError naming the path as
+  // readTownFile does (not JSON, not a FeatureCollection, no CRS); a feature that is not a JSON
+  // object is refused here (a whole read reports it as that building's problem).
+  TownStream(std::string path, ReadOptions options);
+
+  const Frame& frame() const { return frame_; }
+  const std::string& attribution() const { return attribution_; }
+  const std::vector<Street>& streets() const { return streets_; }
+  std::size_t size() const { return buildings_.size(); }  // buildings, numbered as readTownFile's
+  // The mean of the corners of the building's cleaned outer ring; (0, 0) without an outline.
+  Vec2 centre(std::size_t i) const { return buildings_[i].centre; }
+  // Marked as a margin building of a city-split tile (kMarginProperty): labelled, not built.
+  bool margin(std::size_t i) const { return buildings_[i].margin; }
+
+  // The buildings of `tiles` (each a tile's buildings) with every other building and street
+  // within `reach` m of the box around a tile's outlines, read again from the file: a town
+  // whose building k is building indices[k] of the source (ascending).
+  Town part(const std::vector<std::vector<std::size_t>>& tiles, double reach, std::vector<std::size_t>& indices) const;
+
+ private:
+  struct Entry {
+    Vec2 centre{0, 0};
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};  // of the outline
+    std::uint32_t feature = 0;  // the file's feature it came from
+    bool margin = false;
+  };
+  std::string path_;
+  ReadOptions options_;
+  nlohmann::json members_;  // the document's members but "features"
+  Placement placement_;
+  Frame frame_;
+  std::string attribution_;
+  std::vector<Entry> buildings_;
+  std::vector<Street> streets_;
+};
+
+}  // namespace corbel::city
