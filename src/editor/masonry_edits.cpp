@@ -149,14 +149,10 @@ std::vector<statics::FreeParameter> searchFreeOf(const MasonrySpec& spec) {
   return free;
 }
 
-namespace {
-
-// The search settings of a spec, reporting evaluations to `progress` and stopping when it is
-// cancelled.
-statics::SearchOptions searchOptionsOf(const MasonrySpec& spec, Progress* progress, int maxEvaluations,
-                                       SearchTrace* trace = nullptr) {
+statics::SearchOptions reportingSearchOptions(const statics::AnalysisOptions& analysis, Progress* progress,
+                                              int maxEvaluations, SearchTrace* trace) {
   statics::SearchOptions options;
-  options.analysis = analysisOptionsOf(spec);
+  options.analysis = analysis;
   options.maxEvaluations = maxEvaluations;
   options.progress = [progress, maxEvaluations, trace](const statics::SearchProgress& p) {
     if (trace) trace->add(p.measure, p.values);
@@ -165,6 +161,15 @@ statics::SearchOptions searchOptionsOf(const MasonrySpec& spec, Progress* progre
     return !progress->cancelled();
   };
   return options;
+}
+
+namespace {
+
+// The search settings of a spec, reporting evaluations to `progress` and stopping when it is
+// cancelled.
+statics::SearchOptions searchOptionsOf(const MasonrySpec& spec, Progress* progress, int maxEvaluations,
+                                       SearchTrace* trace = nullptr) {
+  return reportingSearchOptions(analysisOptionsOf(spec), progress, maxEvaluations, trace);
 }
 
 statics::SearchResult cancelledSearch() {
@@ -232,15 +237,9 @@ MasonryTogether masonryTogether(const Document& doc, ObjectId lead, double conta
 }
 
 statics::SearchResult searchTogether(const MasonryTogether& together, Progress* progress, int maxEvaluations) {
-  statics::SearchOptions options;
-  options.analysis = together.options;
-  options.maxEvaluations = maxEvaluations;
-  options.progress = [progress, maxEvaluations](const statics::SearchProgress& p) {
-    if (!progress) return true;
-    progress->report(std::min(1.0, double(p.evaluation) / maxEvaluations), "searching");
-    return !progress->cancelled();
-  };
-  return statics::searchParameters(together.model, together.free, options, &together.model.parameters);
+  return statics::searchParameters(together.model, together.free,
+                                   reportingSearchOptions(together.options, progress, maxEvaluations),
+                                   &together.model.parameters);
 }
 
 std::optional<Document> applyTogether(const Document& doc, const Document& started, const MasonryTogether& together,

@@ -110,6 +110,12 @@ struct MasonryTogether {
 };
 MasonryTogether masonryTogether(const Document& doc, ObjectId lead, double contactTolerance);
 
+// Search settings with `analysis` that report each evaluation to `progress` (may be null) as a
+// fraction of `maxEvaluations`, record it in `trace` (may be null) and stop once the progress is
+// cancelled: what every search the editor runs in the background uses.
+statics::SearchOptions reportingSearchOptions(const statics::AnalysisOptions& analysis, Progress* progress,
+                                              int maxEvaluations, SearchTrace* trace = nullptr);
+
 // Make them stand together: the search over `together.free`, then (applyTogether) every object's
 // own values written into the Document as one change. Nothing is applied (nullopt, the reason in
 // `why`) when the search did not stand or any of the objects changed while it ran.

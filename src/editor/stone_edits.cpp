@@ -1,6 +1,7 @@
 #include "editor/stone_edits.h"
 
 #include "compose/stone_extrusion.h"
+#include "editor/masonry_edits.h"
 #include "core/error.h"
 
 #include <algorithm>
@@ -74,14 +75,9 @@ MasonryView analyseStone(const ExtrusionSpec& spec, Progress* progress) {
 
 statics::SearchResult searchStone(const ExtrusionSpec& spec, Progress* progress, int maxEvaluations) {
   const statics::ParametricModel model = statics::stoneModel(spec);
-  statics::SearchOptions options;
-  options.maxEvaluations = maxEvaluations;
-  options.progress = [progress, maxEvaluations](const statics::SearchProgress& p) {
-    if (!progress) return true;
-    progress->report(std::min(1.0, double(p.evaluation) / maxEvaluations), "searching");
-    return !progress->cancelled();
-  };
-  return statics::searchParameters(model, model.suggestedFree, options, &model.parameters);
+  return statics::searchParameters(model, model.suggestedFree,
+                                   reportingSearchOptions(statics::AnalysisOptions{}, progress, maxEvaluations),
+                                   &model.parameters);
 }
 
 std::optional<Document> applyStoneSearch(const Document& doc, ObjectId id, const ExtrusionSpec& started,
