@@ -37,6 +37,15 @@ uniform vec3 uShellLo;
 uniform vec3 uShellHi;
 uniform vec3 uFrameOrigin;  // the followed object's frame (MassField::toFrame)
 uniform vec2 uFrameAxis;
+#if KIFS_WALLS
+// Walls facing more than one way (kifs/facings.h): each wall in the frame's plan (a.xy, b.xy)
+// and its facing, each facing's axis (cos, sin; MassField::facings).
+uniform int uWallCount;
+uniform vec4 uWalls[KIFS_MAX_WALLS];
+uniform int uWallFacing[KIFS_MAX_WALLS];
+uniform int uFacingCount;
+uniform vec2 uFacings[KIFS_MAX_FACINGS];
+#endif
 #endif
 
 // Algorithm 2 and the id transform; Eq. 4 (h, y0, s_y); stretch L_f.
@@ -159,6 +168,44 @@ float massField(vec3 p) {
   vec3 gap = max(max(uShellLo - p, p - uShellHi), 0.0);
   return max(inside - length(p - q), length(gap));
 }
+
+#if KIFS_WALLS
+float wallDistance(vec2 p, vec4 w) {
+  vec2 ab = w.zw - w.xy, ap = p - w.xy;
+  float len2 = dot(ab, ab);
+  float t = len2 > 0.0 ? clamp(dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
+  return length(ap - t * ab);
+}
+
+// MassField::facingAt: (the nearest wall's facing, the next facing, half the first's lead over
+// it, half the first's lead over a third).
+vec4 facingAt(vec2 p) {
+  float nearest[KIFS_MAX_FACINGS];
+  for (int f = 0; f < KIFS_MAX_FACINGS; ++f) nearest[f] = kInf;
+  for (int i = 0; i < uWallCount; ++i) {
+    int f = uWallFacing[i];
+    nearest[f] = min(nearest[f], wallDistance(p, uWalls[i]));
+  }
+  // The three nearest facings, in order (a, b, c; −1: none).
+  int a = -1, b = -1, c = -1;
+  float da = kInf, db = kInf, dc = kInf;
+  for (int f = 0; f < uFacingCount; ++f) {
+    float d = nearest[f];
+    if (a < 0 || d < da) {
+      c = b, dc = db, b = a, db = da, a = f, da = d;
+    } else if (b < 0 || d < db) {
+      c = b, dc = db, b = f, db = d;
+    } else if (c < 0 || d < dc) {
+      c = f, dc = d;
+    }
+  }
+  int facing = max(a, 0);
+  int other = b < 0 ? facing : b;
+  float gap = b < 0 ? kInf : 0.5 * (db - da);
+  float beyond = c < 0 ? kInf : 0.5 * (dc - da);
+  return vec4(float(facing), float(other), gap, beyond);
+}
+#endif
 #endif
 
 // Algorithm 2 for one coordinate: (fold value, id, gap in fold units).
@@ -176,13 +223,49 @@ vec3 facadeFold(float x) {
 
 float polarStretch(float r) { return max(max(1.0, uPolar.z), uPolar.x / max(r, kMinRadius)); }
 
+// Algorithm 1 on the folds of mass-model coordinates m (Algorithm 2, Eq. 4): (d_KIFS, the cell
+// the bound may step in, the ids), as foldCell in kifs/distance.cpp; withBound false skips the
+// neighbouring storey and the id caps, which only the bound uses.
+vec4 foldCell(vec3 m, float d0, bool withBound) {
+  vec3 fx = facadeFold(m.x), fz = facadeFold(m.z);
+  float fh = uFloors.x;
+  float my = mod(m.y - uFloors.y, fh);  // Eq. 4
+  vec4 a = uIdTransform;
+  vec3 q = vec3((a.x * fx.y + a.y) * fx.x + a.z * fx.y + a.w, uFloors.z * my / fh,
+                (a.x * fz.y + a.y) * fz.x + a.z * fz.y + a.w);
+  float dk = kifs(q) / uStretch;
+  bool below = my < 0.5 * fh;
+  float gapNear = below ? my : fh - my, gapFar = fh - gapNear;
+  float cell = min(dk, gapFar);
+  if (withBound && gapNear < cell && d0 < cell) {
+    vec3 qn = q;
+    qn.y = uFloors.z * (below ? my + fh : my - fh) / fh;
+    cell = min(cell, max(gapNear, kifs(qn) / uStretch));
+  }
+  if (withBound && kIdsCut) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
+  return vec4(dk, cell, fx.y, fz.y);
+}
+
+#if KIFS_FOOTPRINT == 3 && KIFS_WALLS
+// Building coordinates (y up) in a facing's turn of a point d = world − uFrameOrigin.
+vec3 facingBuilding(vec3 d, int facing) {
+  vec2 t = uFacings[facing];
+  return vec3(t.x * d.x + t.y * d.y, d.z, -t.y * d.x + t.x * d.y);
+}
+#endif
+
 // withBound false: only the estimate (normals, occlusion); o.bound is then not a bound. It
-// skips the neighbouring storey's second Algorithm 1 and the id caps, which only the bound uses.
+// skips the neighbouring storey's second Algorithm 1, the id caps and the neighbouring facing,
+// which only the bound uses.
 Sample evaluateFor(vec3 world, bool withBound) {
   ++gEvaluations;
 #if KIFS_FOOTPRINT == 3
   vec3 d = world - uFrameOrigin;
   vec3 b = vec3(uFrameAxis.x * d.x + uFrameAxis.y * d.y, d.z, -uFrameAxis.y * d.x + uFrameAxis.x * d.y);
+#if KIFS_WALLS
+  vec4 at = facingAt(b.xz);
+  b = facingBuilding(d, int(at.x));
+#endif
 #else
   vec3 b = world.xzy;  // building coordinates, y up
 #endif
@@ -196,31 +279,21 @@ Sample evaluateFor(vec3 world, bool withBound) {
     ring = max(max(uRing.x - radius, radius - uRing.y), max(-b.y, b.y - uMass.z));
     if (!kClosedRing) cut = dx < 0.0 ? abs(dz) : radius;
   }
-  vec3 fx = facadeFold(m.x), fz = facadeFold(m.z);
-  float fh = uFloors.x;
-  float my = mod(m.y - uFloors.y, fh);  // Eq. 4
-  Sample o;
-  o.ids = vec2(fx.y, fz.y);
-  o.floorIndex = floor((m.y - uFloors.y) / fh);
-  vec4 a = uIdTransform;
-  vec3 q = vec3((a.x * fx.y + a.y) * fx.x + a.z * fx.y + a.w, uFloors.z * my / fh,
-                (a.x * fz.y + a.y) * fz.x + a.z * fz.y + a.w);
-  float dk = kifs(q) / uStretch;
-  bool below = my < 0.5 * fh;
-  float gapNear = below ? my : fh - my, gapFar = fh - gapNear;
 #if KIFS_FOOTPRINT == 3
   float d0 = massField(world), di = d0 + uShell;
 #else
   float di = massModel(m, uShell), d0 = massModel(m, 0.0);
 #endif
-  float cell = min(dk, gapFar);
-  if (withBound && gapNear < cell && d0 < cell) {
-    vec3 qn = q;
-    qn.y = uFloors.z * (below ? my + fh : my - fh) / fh;
-    cell = min(cell, max(gapNear, kifs(qn) / uStretch));
-  }
-  if (withBound && kIdsCut) cell = min(cell, min(0.5 * fx.z * uPeriod, 0.5 * fz.z * uPeriod));
-  float surface = min(di, max(d0, dk));
+  vec4 own = foldCell(m, d0, withBound);
+  Sample o;
+  o.ids = own.zw;
+  o.floorIndex = floor((m.y - uFloors.y) / uFloors.x);
+  float cell = own.y;
+#if KIFS_FOOTPRINT == 3 && KIFS_WALLS
+  if (withBound && at.z < cell && d0 < cell)
+    cell = min(min(cell, max(at.z, foldCell(facingBuilding(d, int(at.y)), d0, true).y)), at.w);
+#endif
+  float surface = min(di, max(d0, own.x));
   float bound = min(di, max(d0, cell));
   if (!kCurvilinear) {
     o.surface = surface;

@@ -3,9 +3,11 @@
 #include "city/street.h"
 
 #include "core/error.h"
+#include "core/placement.h"
 #include "core/project_io.h"
 #include "extrude/kernel.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
@@ -255,6 +257,23 @@ MeshData TownCache::mesh(ObjectId object, const std::string& id) const {
   std::lock_guard lock(mutex_);
   auto it = entries_.find({object, id});
   return it == entries_.end() ? MeshData{} : it->second.mesh;
+}
+
+MeshData buildingMesh(const TownCache& cache, const DocObject& town, const std::string& id) {
+  const std::vector<BuiltBuilding> built = cache.buildings(town.id);
+  if (built.empty()) throw Error("is not built yet");
+  const auto it = std::find_if(built.begin(), built.end(), [&](const BuiltBuilding& b) { return b.id == id; });
+  if (it == built.end()) throw Error("has no building \"" + id + "\"");
+  if (!it->error.empty()) throw Error("building \"" + id + "\" was not built: " + it->error);
+  MeshData mesh = cache.mesh(town.id, id);
+  applyPlacement(mesh, town.placement);
+  return mesh;
+}
+
+std::function<MeshData(const DocObject&, const std::string&)> buildingMeshes(std::shared_ptr<const TownCache> cache) {
+  return [cache = std::move(cache)](const DocObject& town, const std::string& id) {
+    return buildingMesh(*cache, town, id);
+  };
 }
 
 std::shared_ptr<const TownInputs> TownCache::inputs(ObjectId object) const {

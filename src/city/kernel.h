@@ -14,6 +14,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -83,6 +84,14 @@ class TownCache {
   std::map<ObjectId, std::vector<BuiltBuilding>> last_;
   std::atomic<std::size_t> extrusions_{0};
 };
+
+// One building of a town object's last build, placed as the object is (world space): the mass a
+// KIFS follower names with kifs.mass.building (kifs/follow.h). Throws corbel::Error "has no
+// building \"ID\"" or "building \"ID\" was not built: WHY"; before the town's first build,
+// "is not built yet".
+MeshData buildingMesh(const TownCache& cache, const DocObject& town, const std::string& id);
+// The same as a function holding the cache (the type of kifs::TownBuildings).
+std::function<MeshData(const DocObject&, const std::string&)> buildingMeshes(std::shared_ptr<const TownCache> cache);
 
 // Registers the builder of town objects; the cache (made when null) is shared with the caller
 // (the editor lists and picks buildings from it, the tests count its extrusions).

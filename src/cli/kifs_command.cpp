@@ -54,7 +54,8 @@ kifs::Building buildingFrom(const std::string& source) {
     const auto& spec = std::get<KifsSpec>(object->spec);
     if (spec.mass.footprint != "object") return kifs::Building(kifs::paramsOf(spec));
     const LoadedScene loaded = loadScene(source);
-    return kifs::buildingOf(loaded.doc, loaded.scene, *loaded.doc.find(object->id));
+    return kifs::buildingOf(loaded.doc, loaded.scene, *loaded.doc.find(object->id), nullptr,
+                            city::buildingMeshes(loaded.towns));
   }
   // A preset's name has no '/' and no extension (kifs/params.h); anything else is a file.
   std::error_code ec;

@@ -61,7 +61,7 @@ int run(const RenderRequest& r) {
   for (const auto& [id, info] : l.scene.objects())
     if (settings.visible(id)) box.add(l.scene.bounds(id));
   // KIFS buildings that are not meshed are ray-marched over the Scene (render/kifs_pass.h).
-  const render::RaymarchedKifs raymarched = render::raymarchedKifs(l.doc, settings.visible, &l.scene);
+  const render::RaymarchedKifs raymarched = render::raymarchedKifs(l.doc, settings.visible, &l.scene, city::buildingMeshes(l.towns));
   if (!raymarched.errors.empty()) throw Error("KIFS building " + raymarched.errors.front());
   box.add(raymarched.bounds);
   const int width = r.size.width, height = r.size.height;

@@ -25,7 +25,9 @@ ExportableScene exportableScene(const Document& doc, const Scene& built, const c
   for (const DocObject& o : doc.objects) {
     if (!picked(o)) continue;
     if (const auto* k = std::get_if<KifsSpec>(&o.spec); k && k->meshResolution == 0) {
-      const kifs::Building building = kifs::buildingOf(doc, built, o);
+      kifs::TownBuildings buildings;
+      if (towns) buildings = [towns](const DocObject& town, const std::string& id) { return city::buildingMesh(*towns, town, id); };
+      const kifs::Building building = kifs::buildingOf(doc, built, o, nullptr, buildings);
       MeshData mesh = kifs::meshBuilding(building, resolution);
       if (building.mass()) out.placements.erase(o.id);  // it stands in its mass object, in world space
       else applyPlacement(mesh, o.placement);

@@ -23,6 +23,7 @@ struct KifsSpec {
     std::string footprint = "box";  // "box", "T", "H" or "object"
     double halfWidth = 6.0, halfDepth = 6.0, height = 24.0, wing = 2.5, shell = 1.2;
     std::string object;   // footprint "object": the name of the Document's object it follows
+    std::string building; // when that object is a town: the footprint id of the one building it follows
     int resolution = 64;  // footprint "object": cells of the baked distance along the longest side
     bool operator==(const Mass&) const = default;
   } mass;

@@ -206,6 +206,7 @@ ojson kifsToJson(const KifsSpec& k) {
   // Written when used or set (a file may name an object under another footprint: kept, not
   // lost), so other files stay as they were.
   if (k.mass.footprint == "object" || !k.mass.object.empty()) j["mass"]["object"] = k.mass.object;
+  if (!k.mass.building.empty()) j["mass"]["building"] = k.mass.building;
   if (k.mass.footprint == "object" || k.mass.resolution != KifsSpec::Mass{}.resolution)
     j["mass"]["resolution"] = k.mass.resolution;
   j["facade"] = {{"period", k.facade.period}, {"r", vec(k.facade.r)}, {"a1", k.facade.a1},
@@ -255,7 +256,7 @@ KifsSpec kifsFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   vector(root, "r1", k.r1);
   vector(root, "r2", k.r2);
   number(root, "bailout", k.bailout);
-  if (auto g = group("mass", {"footprint", "halfWidth", "halfDepth", "height", "wing", "shell", "object", "resolution"})) {
+  if (auto g = group("mass", {"footprint", "halfWidth", "halfDepth", "height", "wing", "shell", "object", "building", "resolution"})) {
     if (auto v = g->find("footprint")) {
       k.mass.footprint = v->string(limits::kMaxNameLength);
       if (k.mass.footprint != "box" && k.mass.footprint != "T" && k.mass.footprint != "H" &&
@@ -263,6 +264,7 @@ KifsSpec kifsFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
         v->fail("expected \"box\", \"T\", \"H\" or \"object\", found \"" + k.mass.footprint + "\"");
     }
     if (auto v = g->find("object")) k.mass.object = v->string(limits::kMaxNameLength);
+    if (auto v = g->find("building")) k.mass.building = v->string(limits::kMaxNameLength);
     if (auto v = g->find("resolution")) k.mass.resolution = static_cast<int>(v->integer(1, 512));  // kifs::kMaxMassResolution
     for (auto [key, out] : {std::pair{"halfWidth", &k.mass.halfWidth}, std::pair{"halfDepth", &k.mass.halfDepth},
                             std::pair{"height", &k.mass.height}, std::pair{"wing", &k.mass.wing},

@@ -646,6 +646,12 @@ int App::run() {
       host.commit = deferredCommit();
       host.endDrag = deferredEndDrag();
       host.log = [this](const std::string& line, bool error) { log(line, error); };
+      host.townBuildings = [this](ObjectId town) {
+        std::vector<std::string> ids;
+        for (const city::BuiltBuilding& b : townCache_->buildings(town))
+          if (b.error.empty()) ids.push_back(b.id);
+        return ids;
+      };
       kifsPanel_.draw(host, pane.x, pane.y, pane.w, pane.h);
     }
     // The growth panel of a selected growth site, the form completion panel under it.

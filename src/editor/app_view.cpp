@@ -205,7 +205,8 @@ void App::drawView() {
   // their masses are baked in the background and added with them.
   render::RaymarchedKifs raymarched = render::raymarchedKifs(doc, settings_.visible);
   if (followers_.update(doc, scene_, live_.current(), settings_.visible,
-                        [this](const std::string& line, bool error) { log(line, error); }, scripted()))
+                        [this](const std::string& line, bool error) { log(line, error); }, scripted(),
+                        city::buildingMeshes(townCache_)))
     ++kifsGeneration_;
   for (const KifsFollowers::Shown& f : followers_.shown(doc, settings_.visible)) {
     raymarched.buildings.push_back(f.params);

@@ -20,7 +20,8 @@ bool isFollower(const DocObject& o) {
 
 bool KifsFollowers::update(const Document& doc, const Scene& scene, bool sceneCurrent,
                            const std::function<bool(ObjectId)>& visible,
-                           const std::function<void(const std::string&, bool)>& log, bool wait) {
+                           const std::function<void(const std::string&, bool)>& log, bool wait,
+                           const kifs::TownBuildings& buildings) {
   bool arrived = false;
   // Followers that are gone, or follow no more, are dropped (their jobs cancelled and joined).
   for (auto it = entries_.begin(); it != entries_.end();) {
@@ -53,24 +54,34 @@ bool KifsFollowers::update(const Document& doc, const Scene& scene, bool sceneCu
     collect();
     const DocObject* mass = nullptr;
     int resolution = 0;
+    const KifsSpec& spec = std::get<KifsSpec>(o.spec);
     try {
       mass = &kifs::followedObject(doc, o);
-      resolution = kifs::paramsOf(std::get<KifsSpec>(o.spec)).mass.resolution;
+      resolution = kifs::paramsOf(spec).mass.resolution;
     } catch (const std::exception& ex) {
       report(ex.what());
       continue;
     }
-    auto matches = [&](const Bake& b) { return sameMass(b.mass, *mass) && b.resolution == resolution; };
+    auto matches = [&](const Bake& b) {
+      return sameMass(b.mass, *mass) && b.building == spec.mass.building && b.resolution == resolution;
+    };
     if (e.done && matches(*e.done)) continue;
     if (e.job && matches(*e.running)) continue;
     if (!sceneCurrent) continue;  // the Scene still shows the mass as it was
     if (e.job) e.job.reset();     // cancels and joins the bake of an older mass
+    kifs::TriangleSoup triangles;
+    try {
+      triangles = kifs::massTriangles(*mass, spec, scene, buildings);
+    } catch (const std::exception& ex) {
+      report(ex.what());
+      continue;
+    }
     auto bake = std::make_shared<Bake>();
     bake->mass = *mass;
+    bake->building = spec.mass.building;
     bake->resolution = resolution;
     e.running = bake;
-    const kifs::KifsParams params = kifs::paramsOf(std::get<KifsSpec>(o.spec));
-    kifs::TriangleSoup triangles = kifs::sceneTriangles(scene, mass->id);
+    const kifs::KifsParams params = kifs::paramsOf(spec);
     e.job = std::make_unique<BackgroundJob>(
         "Baking the mass of " + o.name, [bake, params, triangles = std::move(triangles)](Progress& progress) {
           bake->field = kifs::bakeFollowedMass(bake->mass, triangles, params, &progress);

@@ -29,9 +29,11 @@ class KifsFollowers {
   // the mass object's triangles as the Scene holds them). Collects finished bakes (true when a
   // new field arrived), starts a bake for each visible follower whose mass changed, and logs a
   // follower's error once when it first appears (`log(text, isError)`). `wait` (scripted runs)
-  // waits for the bakes it starts.
+  // waits for the bakes it starts. `buildings` gives a town's building to a follower that
+  // names one (kifs.mass.building).
   bool update(const Document& doc, const Scene& scene, bool sceneCurrent, const std::function<bool(ObjectId)>& visible,
-              const std::function<void(const std::string&, bool)>& log, bool wait);
+              const std::function<void(const std::string&, bool)>& log, bool wait,
+              const kifs::TownBuildings& buildings = {});
   // The visible followers that have a field, in the Document's order.
   std::vector<Shown> shown(const Document& doc, const std::function<bool(ObjectId)>& visible) const;
   bool baking() const;
@@ -39,6 +41,7 @@ class KifsFollowers {
  private:
   struct Bake {
     DocObject mass;  // the followed object as the bake saw it
+    std::string building;  // the town's building it follows ("" = the whole object)
     int resolution = 0;
     std::shared_ptr<const kifs::MassField> field;
   };

@@ -86,14 +86,37 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("The mass the fractal is carved from: a box, T or H of the sizes below, or another object's shell");
   if (s.mass.footprint == "object") {
+    auto buildingsOf = [&](const DocObject& town) {
+      return host.townBuildings ? host.townBuildings(town.id) : std::vector<std::string>{};
+    };
     if (ImGui::BeginCombo("Follows", s.mass.object.empty() ? "(choose an object)" : s.mass.object.c_str())) {
       for (const DocObject& m : host.doc->objects)
-        if (m.id != o->id && !std::holds_alternative<TownSpec>(m.spec) &&
-            ImGui::Selectable(m.name.c_str(), m.name == s.mass.object)) {
+        if (m.id != o->id && ImGui::Selectable(m.name.c_str(), m.name == s.mass.object)) {
           s.mass.object = m.name;
+          s.mass.building.clear();
+          if (std::holds_alternative<TownSpec>(m.spec))  // a town: one of its buildings, the first to start with
+            if (const auto ids = buildingsOf(m); !ids.empty()) s.mass.building = ids.front();
           changed("the followed object", false);
         }
       ImGui::EndCombo();
+    }
+    const DocObject* followed = host.doc->findByName(s.mass.object);
+    if (followed && std::holds_alternative<TownSpec>(followed->spec)) {
+      const std::vector<std::string> ids = buildingsOf(*followed);
+      if (ImGui::BeginCombo("Building", s.mass.building.empty() ? "(the whole town)" : s.mass.building.c_str(),
+                            ImGuiComboFlags_HeightLarge)) {
+        ImGuiListClipper clipper;  // a town may have thousands
+        clipper.Begin(int(ids.size()));
+        while (clipper.Step())
+          for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i)
+            if (ImGui::Selectable(ids[i].c_str(), ids[i] == s.mass.building)) {
+              s.mass.building = ids[i];
+              changed("the followed building", false);
+            }
+        ImGui::EndCombo();
+      }
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The footprint id of the town's building the fractal follows (the Town panel shows ids)");
     }
     int resolution = s.mass.resolution;
     if (ImGui::SliderInt("Resolution", &resolution, 8, 256, "%d cells")) {

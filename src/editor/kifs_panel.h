@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace corbel::editor {
 
@@ -22,6 +23,8 @@ struct KifsHost {
   std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
   std::function<void()> endDrag;
   std::function<void(const std::string&, bool)> log;
+  // The ids of a town object's buildings as last built, in footprint order (null: none known).
+  std::function<std::vector<std::string>(ObjectId town)> townBuildings;
 };
 
 class KifsPanel {

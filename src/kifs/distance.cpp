@@ -137,12 +137,62 @@ double Building::kifs(glm::dvec3 p) const {
   return (glm::length(p) - rho_) / scl;
 }
 
+namespace {
+
+// Algorithm 1 on the folds of mass-model coordinates m (Algorithm 2, Eq. 4): d_KIFS, and the
+// cell the bound may step in. Eq. 4 is a sawtooth, so the storeys are cells. The nearer
+// neighbouring storey starts gapNear away, and its own fold (this one shifted by a storey,
+// continuous everywhere) bounds the distance to its solid; every other storey is at least
+// gapFar away. Facade ids are cells too when they change the transform; they cap the bound at
+// their distance. Where d0 ≥ the cell, max(d0, cell) is d0 whatever the neighbour gives, so it
+// is not evaluated. `ids` (may be null) receives the ids and the storey.
+struct FoldCell {
+  double dk, cell;
+};
+FoldCell foldCell(const Building& building, const glm::dvec3& m, double d0, Sample* ids) {
+  const KifsParams& p = building.params();
+  const FacadeFold fx = facadeFold(m.x, p.facade), fz = facadeFold(m.z, p.facade);
+  const Floors& fl = p.floors;
+  const double my = glslMod(m.y - fl.y0, fl.height);  // Eq. 4
+  if (ids) {
+    ids->idX = fx.id;
+    ids->idZ = fz.id;
+    ids->floor = static_cast<int>(std::floor((m.y - fl.y0) / fl.height));
+  }
+  const Facade& fc = p.facade;
+  const glm::dvec3 q((fc.a1 * fx.id + fc.a2) * fx.f + fc.b1 * fx.id + fc.b2, fl.sy * my / fl.height,
+                     (fc.a1 * fz.id + fc.a2) * fz.f + fc.b1 * fz.id + fc.b2);
+  const double stretch = building.fractalStretch();
+  const double dk = building.kifs(q) / stretch;
+  const bool below = my < 0.5 * fl.height;
+  const double gapNear = below ? my : fl.height - my, gapFar = fl.height - gapNear;
+  double cell = std::min(dk, gapFar);
+  if (gapNear < cell && d0 < cell) {
+    glm::dvec3 qn = q;
+    qn.y = fl.sy * (below ? my + fl.height : my - fl.height) / fl.height;
+    cell = std::min(cell, std::max(gapNear, building.kifs(qn) / stretch));
+  }
+  if (building.idsCut()) cell = std::min({cell, 0.5 * fx.gap * fc.period, 0.5 * fz.gap * fc.period});
+  return {dk, cell};
+}
+
+}  // namespace
+
 Sample Building::evaluate(const glm::dvec3& world) const {
   const glm::dvec3 local = mass_ ? mass_->toFrame(world) : world;  // a followed object's frame
-  const glm::dvec3 b(local.x, local.z, local.y);  // building coordinates, y up
-  glm::dvec3 m = b;                               // mass-model coordinates
-  double radius = 0, ring = -kInf, cut = kInf;
   const Curvilinear& cv = p_.curvilinear;
+  // Walls that face several ways (kifs/facings.h): the point's facing turns the folds' axes.
+  const bool faced = mass_ && !mass_->walls.empty() && !cv.enabled;
+  const MassField::FacingAt at = faced ? mass_->facingAt({local.x, local.y}) : MassField::FacingAt{};
+  auto building = [&](int facing) {  // building coordinates, y up, in a facing's turn
+    if (!faced) return glm::dvec3(local.x, local.z, local.y);
+    const glm::dvec2 t = mass_->facings[facing];
+    const glm::dvec3 d = world - mass_->frameOrigin;
+    return glm::dvec3(t.x * d.x + t.y * d.y, d.z, -t.y * d.x + t.x * d.y);
+  };
+  const glm::dvec3 b = building(at.facing);
+  glm::dvec3 m = b;  // mass-model coordinates
+  double radius = 0, ring = -kInf, cut = kInf;
   if (cv.enabled) {  // Eq. 5-6
     const double dx = b.x, dz = b.z - cv.z0;
     radius = std::sqrt(dx * dx + dz * dz);
@@ -151,36 +201,19 @@ Sample Building::evaluate(const glm::dvec3& world) const {
     ring = std::max({ringInner_ - radius, radius - ringOuter_, -b.y, b.y - p_.mass.height});
     if (!closedRing_) cut = dx < 0 ? std::abs(dz) : radius;  // the angle jumps on this half-plane
   }
-  const FacadeFold fx = facadeFold(m.x, p_.facade), fz = facadeFold(m.z, p_.facade);
-  const Floors& fl = p_.floors;
-  const double my = glslMod(m.y - fl.y0, fl.height);  // Eq. 4
-  Sample out;
-  out.idX = fx.id;
-  out.idZ = fz.id;
-  out.floor = static_cast<int>(std::floor((m.y - fl.y0) / fl.height));
-  const Facade& fc = p_.facade;
-  const glm::dvec3 q((fc.a1 * fx.id + fc.a2) * fx.f + fc.b1 * fx.id + fc.b2, fl.sy * my / fl.height,
-                     (fc.a1 * fz.id + fc.a2) * fz.f + fc.b1 * fz.id + fc.b2);
-  const double dk = kifs(q) / stretch_;
-  // Eq. 4 is a sawtooth, so the storeys are cells. The nearer neighbouring storey starts
-  // gapNear away, and its own fold (this one shifted by a storey, continuous everywhere) bounds
-  // the distance to its solid; every other storey is at least gapFar away. Facade ids are
-  // cells too when they change the transform; they cap the bound at their distance.
-  const bool below = my < 0.5 * fl.height;
-  const double gapNear = below ? my : fl.height - my, gapFar = fl.height - gapNear;
   // A mass object's shell: its baked distance (a lower bound, mass_field.h) is d_o, and d_o +
   // shell bounds the distance to the shell offset inward by `shell` from below (a point of the
   // inner solid has the ball of radius `shell` about it in the outer one), so d_i = d_o + shell.
   const double d0 = mass_ ? mass_->distance(world) : massModelDistance(p_.mass, m, 0.0);
   const double di = mass_ ? d0 + p_.mass.shell : massModelDistance(p_.mass, m, p_.mass.shell);
-  double cell = std::min(dk, gapFar);
-  if (gapNear < cell && d0 < cell) {  // else max(d0, cell) is d0 whatever the neighbour gives
-    glm::dvec3 qn = q;
-    qn.y = fl.sy * (below ? my + fl.height : my - fl.height) / fl.height;
-    cell = std::min(cell, std::max(gapNear, kifs(qn) / stretch_));
-  }
-  if (idsCut_) cell = std::min({cell, 0.5 * fx.gap * fc.period, 0.5 * fz.gap * fc.period});
-  const double surface = std::min(di, std::max(d0, dk));  // g(d_KIFS, d_i, d_o), Sec. 3
+  Sample out;
+  const FoldCell own = foldCell(*this, m, d0, &out);
+  double cell = own.cell;
+  // Facings are cells as storeys are: the nearest other facing's region starts at.gap away and
+  // its own fractal bounds the distance to its solid; every further facing's is at.beyond away.
+  if (faced && at.gap < cell && d0 < cell)
+    cell = std::min({cell, std::max(at.gap, foldCell(*this, building(at.other), d0, nullptr).cell), at.beyond});
+  const double surface = std::min(di, std::max(d0, own.dk));  // g(d_KIFS, d_i, d_o), Sec. 3
   const double bound = std::min(di, std::max(d0, cell));
   if (!cv.enabled) {
     out.surface = surface;

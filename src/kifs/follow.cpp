@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/geometry.h"
 #include "core/placement.h"
+#include "kifs/facings.h"
 #include "kifs/kernel.h"
 
 #include <map>
@@ -42,6 +43,21 @@ TriangleSoup sceneTriangles(const Scene& scene, ObjectId id) {
   return out;
 }
 
+TriangleSoup massTriangles(const DocObject& mass, const KifsSpec& follower, const Scene& scene,
+                           const TownBuildings& buildings) {
+  const std::string& building = follower.mass.building;
+  if (building.empty()) return sceneTriangles(scene, mass.id);
+  const std::string what = "kifs.mass.building: ";
+  if (!std::holds_alternative<TownSpec>(mass.spec))
+    throw Error(what + quoted(mass.name) + " is not a town; only a town's buildings can be named (leave it empty)");
+  if (!buildings) throw Error(what + "the buildings of town " + quoted(mass.name) + " are not at hand here");
+  try {
+    return trianglesOf(buildings(mass, building));
+  } catch (const Error& e) {
+    throw Error(what + "town " + quoted(mass.name) + " " + e.what());
+  }
+}
+
 const DocObject& followedObject(const Document& doc, const DocObject& kifsObject) {
   const KifsSpec* spec = following(kifsObject);
   if (!spec) throw Error("kifs.mass.footprint: " + quoted(kifsObject.name) + " does not follow an object");
@@ -65,9 +81,10 @@ const DocObject& followedObject(const Document& doc, const DocObject& kifsObject
 }
 
 std::shared_ptr<const MassField> followedMass(const Document& doc, const Scene& scene, const DocObject& kifsObject,
-                                              Progress* progress) {
+                                              Progress* progress, const TownBuildings& buildings) {
   const DocObject& mass = followedObject(doc, kifsObject);
-  return bakeFollowedMass(mass, sceneTriangles(scene, mass.id), paramsOf(std::get<KifsSpec>(kifsObject.spec)), progress);
+  const KifsSpec& spec = std::get<KifsSpec>(kifsObject.spec);
+  return bakeFollowedMass(mass, massTriangles(mass, spec, scene, buildings), paramsOf(spec), progress);
 }
 
 std::shared_ptr<const MassField> bakeFollowedMass(const DocObject& mass, const TriangleSoup& triangles,
@@ -79,8 +96,8 @@ std::shared_ptr<const MassField> bakeFollowedMass(const DocObject& mass, const T
     auto field = std::make_shared<MassField>(bakeMassField(shell, params.mass.resolution, progress));
     const Vec3& t = mass.placement.translation;
     const auto [c, s] = cosSinDegrees(mass.placement.rotation_deg);
-    field->frameOrigin = glm::dvec3(t[0], t[1], t[2]);
-    field->frameAxis = glm::dvec2(c, s);
+    const glm::dvec3 origin(t[0], t[1], t[2]);
+    setFrame(*field, origin, glm::dvec2(c, s), facingsOf(triangles, origin, glm::dvec2(c, s)));
     return field;
   } catch (const Cancelled&) {
     throw;
@@ -89,10 +106,11 @@ std::shared_ptr<const MassField> bakeFollowedMass(const DocObject& mass, const T
   }
 }
 
-Building buildingOf(const Document& doc, const Scene& scene, const DocObject& kifsObject, Progress* progress) {
+Building buildingOf(const Document& doc, const Scene& scene, const DocObject& kifsObject, Progress* progress,
+                    const TownBuildings& buildings) {
   const KifsParams params = paramsOf(std::get<KifsSpec>(kifsObject.spec));
   if (params.mass.footprint != Footprint::Object) return Building(params);
-  return Building(params, followedMass(doc, scene, kifsObject, progress));
+  return Building(params, followedMass(doc, scene, kifsObject, progress, buildings));
 }
 
 }  // namespace corbel::kifs

@@ -59,6 +59,12 @@ class ShellDistance {
   std::size_t triangles_ = 0;
 };
 
+// A wall of a mass in plan (kifs/facings.h): its extent in the frame's x and y, and its facing.
+struct PlanWall {
+  glm::dvec2 a{0.0}, b{0.0};
+  int facing = 0;
+};
+
 // The signed distance sampled at the vertices of a grid of cubic cells over the shell's box
 // (plus a margin of kMassFieldMargin cells each way), each sample lowered by the trilinear
 // interpolation's error bound (mass_field.cpp) and rounded down to float: the values the shader
@@ -79,6 +85,21 @@ struct MassField {
     const glm::dvec3 d = world - frameOrigin;
     return {frameAxis.x * d.x + frameAxis.y * d.y, -frameAxis.y * d.x + frameAxis.x * d.y, d.z};
   }
+  // With walls that face more than one way (kifs/facings.h; the frame above is then turned to
+  // the longest walls): the walls in the frame's plan, each with its facing, and each facing's
+  // axis (cos, sin of the frame's turn and the facing's together: one rotation from world, as
+  // frameAxis is). Empty with one facing.
+  std::vector<PlanWall> walls;
+  std::vector<glm::dvec2> facings;
+  // The facing of the wall nearest to a point of the frame's plan; `other`, the facing whose
+  // nearest wall comes next, and `gap`, half of how much nearer the first wall is than that one:
+  // the point is at least `gap` from every point that takes `other` (distances to walls are
+  // 1-Lipschitz), and at least `beyond` from every point that takes any third facing.
+  struct FacingAt {
+    int facing = 0, other = 0;
+    double gap = 0, beyond = 0;
+  };
+  FacingAt facingAt(const glm::dvec2& plan) const;
 
   Aabb grid() const { return {origin, origin + cell * glm::dvec3(count - 1)}; }
   float at(int i, int j, int k) const { return values[(std::size_t(k) * count.y + j) * count.x + i]; }

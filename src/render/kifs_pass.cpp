@@ -1,5 +1,7 @@
 #include "render/kifs_pass.h"
 
+#include "kifs/facings.h"
+
 #include "core/error.h"
 #include "kifs/follow.h"
 #include "kifs/kernel.h"
@@ -57,11 +59,12 @@ KifsVariant kifsVariant(const kifs::Building& b) {
   v.r2Identity = b.r2Identity();
   v.idsCut = b.idsCut();
   v.closedRing = p.curvilinear.enabled && b.closedRing();
+  v.walls = v.footprint == 3 && b.mass() && !b.mass()->walls.empty() && !v.curvilinear;  // as Building::evaluate
   return v;
 }
 
 int KifsVariant::key() const {
-  return footprint | curvilinear << 2 | r1Identity << 3 | r2Identity << 4 | idsCut << 5 | closedRing << 6;
+  return footprint | curvilinear << 2 | r1Identity << 3 | r2Identity << 4 | idsCut << 5 | closedRing << 6 | walls << 7;
 }
 
 std::string kifsShaderSource(const KifsVariant& v) {
@@ -73,7 +76,9 @@ std::string kifsShaderSource(const KifsVariant& v) {
       "#define KIFS_R1_IDENTITY " + std::to_string(int(v.r1Identity)) + "\n#define KIFS_R2_IDENTITY " +
       std::to_string(int(v.r2Identity)) + "\n#define KIFS_FOOTPRINT " + std::to_string(v.footprint) +
       "\n#define KIFS_IDS_CUT " + std::to_string(int(v.idsCut)) + "\n#define KIFS_CURVILINEAR " +
-      std::to_string(int(v.curvilinear)) + "\n#define KIFS_CLOSED_RING " + std::to_string(int(v.closedRing)) + "\n";
+      std::to_string(int(v.curvilinear)) + "\n#define KIFS_CLOSED_RING " + std::to_string(int(v.closedRing)) + "\n#define KIFS_WALLS " + std::to_string(int(v.walls)) +
+      "\n#define KIFS_MAX_WALLS " + std::to_string(kifs::kMaxWalls) + "\n#define KIFS_MAX_FACINGS " +
+      std::to_string(kifs::kMaxFacings) + "\n";
   return text.insert(line + 1, defines);
 }
 
@@ -101,6 +106,20 @@ std::vector<std::string> setKifsUniforms(unsigned program, const kifs::Building&
     w.v3("uShellHi", m.shell.hi);
     w.v3("uFrameOrigin", m.frameOrigin);
     w.v2("uFrameAxis", m.frameAxis.x, m.frameAxis.y);
+    if (v.walls) {
+      std::vector<float> walls, facings;
+      std::vector<int> facing;
+      for (const kifs::PlanWall& wall : m.walls) {
+        walls.insert(walls.end(), {float(wall.a.x), float(wall.a.y), float(wall.b.x), float(wall.b.y)});
+        facing.push_back(wall.facing);
+      }
+      for (const glm::dvec2& f : m.facings) facings.insert(facings.end(), {float(f.x), float(f.y)});
+      w.i("uWallCount", int(m.walls.size()));
+      w.i("uFacingCount", int(m.facings.size()));
+      glUniform4fv(w.at("uWalls[0]"), GLsizei(m.walls.size()), walls.data());
+      glUniform1iv(w.at("uWallFacing[0]"), GLsizei(facing.size()), facing.data());
+      glUniform2fv(w.at("uFacings[0]"), GLsizei(m.facings.size()), facings.data());
+    }
   }
   w.f("uShell", p.mass.shell);
   w.f("uPeriod", p.facade.period);
@@ -373,7 +392,8 @@ Image renderKifsImage(Renderer& renderer, KifsPass& pass, const kifs::Building& 
   return target.read();
 }
 
-RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible, const Scene* scene) {
+RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible, const Scene* scene,
+                              const kifs::TownBuildings& buildings) {
   RaymarchedKifs out;
   for (const DocObject& o : doc.objects) {
     const auto* k = std::get_if<KifsSpec>(&o.spec);
@@ -381,7 +401,7 @@ RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(Obje
     std::optional<kifs::Building> building;
     try {
       if (k->mass.footprint != "object") building.emplace(kifs::paramsOf(*k));
-      else if (scene) building.emplace(kifs::buildingOf(doc, *scene, o));
+      else if (scene) building.emplace(kifs::buildingOf(doc, *scene, o, nullptr, buildings));
     } catch (const Error& e) {
       if (k->mass.footprint == "object" && scene) out.errors.push_back(o.name + ": " + e.what());
     }

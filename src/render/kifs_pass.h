@@ -4,6 +4,7 @@
 // composes with the Scene drawn by Renderer before it.
 #include "core/document.h"
 #include "kifs/distance.h"
+#include "kifs/follow.h"
 #include "kifs/mass_field.h"
 #include "render/camera.h"
 #include "render/image.h"
@@ -42,6 +43,7 @@ struct KifsCost {
 struct KifsVariant {
   int footprint = 0;  // kifs::Footprint
   bool curvilinear = false, r1Identity = true, r2Identity = true, idsCut = false, closedRing = false;
+  bool walls = false;  // a followed mass whose walls face more than one way (kifs/facings.h)
   int key() const;  // distinct for distinct variants
 };
 KifsVariant kifsVariant(const kifs::Building& building);
@@ -150,8 +152,9 @@ struct RaymarchedKifs {
 // by `placement` (a move and a turn about z; a KIFS placement has no scale): the marcher draws
 // a placed building by marching its own frame with this camera, so pixels and depths match.
 OrbitCamera cameraInFrameOf(const OrbitCamera& camera, const Placement& placement);
+// `buildings` gives a town's building to a follower that names one (kifs.mass.building).
 RaymarchedKifs raymarchedKifs(const Document& doc, const std::function<bool(ObjectId)>& visible,
-                              const Scene* scene = nullptr);
+                              const Scene* scene = nullptr, const kifs::TownBuildings& buildings = {});
 
 // A picture of the Scene with ray-marched buildings over it (none: the Scene alone), each one's
 // hit threshold set for this view (kifsForView); compiles a KifsPass only when there are some.

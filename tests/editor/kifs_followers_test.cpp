@@ -4,6 +4,8 @@
 // baked again exactly when the followed object changes.
 #include "editor/kifs_followers.h"
 
+#include "city/kernel.h"
+#include "core/project_io.h"
 #include "core/scene_sync.h"
 #include "kifs/kernel.h"
 #include "kifs/params.h"
@@ -84,6 +86,49 @@ TEST(KifsFollowers, AMissingMassIsReportedOnce) {
   EXPECT_NE(w.errors[0].find("kifs.mass.object: no object named \"Nothing\""), std::string::npos) << w.errors[0];
   EXPECT_TRUE(f.shown(w.doc, nullptr).empty());
   EXPECT_FALSE(f.baking());
+}
+
+// A follower of one building of a town (kifs.mass.building): the field is the bake of that
+// building, and naming another building bakes that one.
+TEST(KifsFollowers, ATownsBuildingIsBakedAndNamingAnotherBakesThatOne) {
+  LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/town-oldtown.corbel");
+  Document doc;
+  for (const DocObject& o : p.document.objects)
+    if (auto* t = std::get_if<TownSpec>(&o.spec)) {
+      TownSpec town = *t;
+      town.detail = "massing";
+      doc.add("Town", town);
+    }
+  KifsSpec spec;
+  spec.mass.footprint = "object";
+  spec.mass.object = "Town";
+  spec.mass.resolution = 12;
+  const ObjectId k = doc.add("Facade", spec);
+  SceneSync sync;
+  kifs::registerKernel(sync);
+  const std::shared_ptr<city::TownCache> towns = city::registerKernel(sync);
+  Scene scene;
+  sync.update(doc, scene);
+  const std::vector<city::BuiltBuilding> built = towns->buildings(doc.findByName("Town")->id);
+  ASSERT_GE(built.size(), 2u);
+  KifsFollowers f;
+  std::vector<std::string> errors;
+  auto update = [&] {
+    return f.update(doc, scene, true, nullptr, [&](const std::string& l, bool) { errors.push_back(l); }, true,
+                    city::buildingMeshes(towns));
+  };
+  for (const std::size_t i : {std::size_t(0), built.size() - 1}) {
+    std::get<KifsSpec>(doc.find(k)->spec).mass.building = built[i].id;
+    EXPECT_TRUE(update()) << built[i].id;
+    const auto oracle = kifs::followedMass(doc, scene, *doc.find(k), nullptr, city::buildingMeshes(towns));
+    const auto shown = f.shown(doc, nullptr);
+    ASSERT_EQ(shown.size(), 1u);
+    EXPECT_EQ(shown[0].mass->values, oracle->values);
+    // The building's own box, not the town's.
+    EXPECT_NEAR(shown[0].mass->shell.lo.x, built[i].bounds.lo[0], 1e-9);
+    EXPECT_NEAR(shown[0].mass->shell.hi.y, built[i].bounds.hi[1], 1e-9);
+  }
+  EXPECT_TRUE(errors.empty()) << errors.front();
 }
 
 }  // namespace

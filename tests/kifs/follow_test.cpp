@@ -3,6 +3,7 @@
 // exact distance to the house shell placed by hand where it is the Fig. 1 house.
 #include "kifs/follow.h"
 
+#include "city/kernel.h"
 #include "core/error.h"
 #include "core/project_io.h"
 #include "core/scene_sync.h"
@@ -14,9 +15,12 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <random>
 #include <string>
+#include <tuple>
 
 namespace corbel::kifs {
 namespace {
@@ -227,10 +231,81 @@ TEST(KifsFollow, BadMassesAreNamed) {
   EXPECT_NE(bm.sync.status().at(mid).error.find("kifs.meshResolution"), std::string::npos);
 }
 
+// A town of two square footprints in metres, massing only: "small" x 30..36, y 0..6 and
+// "large" x 0..10, y 0..8, the town moved 100 m along x.
+DocObject twoBuildingTown() {
+  nlohmann::json fc = {{"type", "FeatureCollection"}, {"frame", {{"units", "m"}}}, {"features", nlohmann::json::array()}};
+  for (const auto& [id, x0, x1, y1] : {std::tuple{"large", 0.0, 10.0, 8.0}, std::tuple{"small", 30.0, 36.0, 6.0}})
+    fc["features"].push_back({{"type", "Feature"},
+                              {"id", id},
+                              {"properties", nlohmann::json::object()},
+                              {"geometry",
+                               {{"type", "Polygon"},
+                                {"coordinates", {{{x0, 0.0}, {x1, 0.0}, {x1, y1}, {x0, y1}, {x0, 0.0}}}}}}});
+  DocObject o;
+  TownSpec t;
+  t.footprintsJson = fc.dump();
+  t.style = std::string(CORBEL_SOURCE_DIR) + "/assets/styles/oldtown.json";
+  t.detail = "massing";
+  o.name = "Town";
+  o.spec = t;
+  o.placement.translation = Vec3(100.0, 0.0, 0.0);
+  return o;
+}
+
+// kifs.mass.building: the follower stands on one building of a town, placed with the town. The
+// oracle is the footprint by hand: the baked shell's box is that square moved 100 m (and its eaves), the field is
+// negative at its centre and, at the other building's centre, at least the 20 m gap between them.
+TEST(KifsFollow, ATownsBuildingIsItsMass) {
+  Document d;
+  const DocObject town = twoBuildingTown();
+  const ObjectId townId = d.add(town.name, std::get<TownSpec>(town.spec));
+  d.find(townId)->placement = town.placement;
+  KifsSpec k = follower("Town", 24);
+  k.mass.building = "small";
+  const ObjectId kid = d.add("Ornament", k);
+  d.add("Mass", BoxSpec{});
+  Scene scene;
+  SceneSync sync;
+  extrude::registerKernel(sync);
+  kifs::registerKernel(sync);
+  const std::shared_ptr<city::TownCache> towns = city::registerKernel(sync);
+  sync.update(d, scene);
+  ASSERT_EQ(sync.status().at(townId).error, "");
+  const Building b = buildingOf(d, scene, *d.find(kid), nullptr, city::buildingMeshes(towns));
+  // Every profile of the old-town style overhangs 0.3 m at the wall head (assets/styles/oldtown.json:
+  // [0, h] to [-0.3, h]), so the shell's plan box is the square grown by 0.3 m.
+  const Aabb shell = b.mass()->shell;
+  EXPECT_NEAR(shell.lo.x, 130.0 - 0.3, 1e-6);
+  EXPECT_NEAR(shell.hi.x, 136.0 + 0.3, 1e-6);
+  EXPECT_NEAR(shell.lo.y, 0.0 - 0.3, 1e-6);
+  EXPECT_NEAR(shell.hi.y, 6.0 + 0.3, 1e-6);
+  EXPECT_NEAR(shell.lo.z, 0.0, 1e-6);
+  const double h = shell.hi.z;
+  EXPECT_GT(h, 2.0);
+  EXPECT_LT(b.mass()->distance({133.0, 3.0, 0.5 * h}), 0.0);
+  EXPECT_GE(b.mass()->distance({105.0, 4.0, 0.5 * h}), 20.0 - std::sqrt(3.0) * b.mass()->cell);
+  // Errors name kifs.mass.building and what is wrong.
+  auto error = [&](const std::string& building, const std::string& mass, const TownBuildings& buildings) {
+    KifsSpec bad = follower(mass, 16);
+    bad.mass.building = building;
+    Document e = d;
+    const ObjectId id = e.add("Bad", bad);
+    return errorOf([&] { buildingOf(e, scene, *e.find(id), nullptr, buildings); });
+  };
+  EXPECT_EQ(error("nope", "Town", city::buildingMeshes(towns)), "kifs.mass.building: town \"Town\" has no building \"nope\"");
+  EXPECT_EQ(error("small", "Mass", city::buildingMeshes(towns)),
+            "kifs.mass.building: \"Mass\" is not a town; only a town's buildings can be named (leave it empty)");
+  EXPECT_EQ(error("small", "Town", {}), "kifs.mass.building: the buildings of town \"Town\" are not at hand here");
+}
+
 TEST(KifsFollow, TheProjectFileKeepsTheMassObject) {
   Document d;
   d.add("Mass", BoxSpec{});
   d.add("K", follower("Mass", 24));
+  KifsSpec onTown = follower("Town", 24);
+  onTown.mass.building = "w17";
+  d.add("L", onTown);
   const std::string path = ::testing::TempDir() + "follow.corbel";
   saveProject(d, path);
   const Document back = loadProject(path).document;
@@ -238,6 +313,7 @@ TEST(KifsFollow, TheProjectFileKeepsTheMassObject) {
   EXPECT_EQ(k.mass.footprint, "object");
   EXPECT_EQ(k.mass.object, "Mass");
   EXPECT_EQ(k.mass.resolution, 24);
+  EXPECT_EQ(std::get<KifsSpec>(back.findByName("L")->spec).mass.building, "w17");
   EXPECT_EQ(back, d);
   // A resolution out of range is the kernel's to name.
   KifsSpec bad = follower("Mass", 600);

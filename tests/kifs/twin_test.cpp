@@ -218,6 +218,21 @@ TEST(KifsTwin, FacadeOnTheFig1HouseAgreesWithTheCpu) {
   compareAllViews("house", buildingOf(d, scene, *d.find(id)));
 }
 
+// A facade on a mass whose walls face two ways (kifs/facings.h): a plan with one wall at 30° to
+// the others, so the shader chooses each point's facing among the walls as the CPU does.
+TEST(KifsTwin, FacadeOnWallsFacingTwoWaysAgreesWithTheCpu) {
+  const double slant = 20 * std::tan(std::acos(-1.0) / 6);
+  KifsParams params = preset("box");  // each facing folds its own turned coordinates
+  params.mass.footprint = Footprint::Object;
+  params.mass.shell = 0.6;
+  params.mass.resolution = 48;
+  DocObject mass;
+  mass.name = "Mass";
+  const Building b(params, bakeFollowedMass(mass, prism({{0, 0}, {20, 0}, {20, 10}, {0, 10 + slant}}, 12), params));
+  ASSERT_TRUE(render::kifsVariant(b).walls);
+  compareAllViews("slanted", b);
+}
+
 // Every preset file of assets/kifs, not a chosen few.
 INSTANTIATE_TEST_SUITE_P(Presets, KifsTwin, ::testing::ValuesIn(presetNames()));
 
