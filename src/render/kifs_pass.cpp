@@ -1,8 +1,7 @@
 #include "render/kifs_pass.h"
 
-#include "kifs/facings.h"
-
 #include "core/error.h"
+#include "kifs/facings.h"
 #include "kifs/follow.h"
 #include "kifs/kernel.h"
 #include "kifs/trace.h"
