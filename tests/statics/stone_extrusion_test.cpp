@@ -252,6 +252,24 @@ TEST(StoneExtrusion, MakeItStandIsOneUndoStepOfTheProjectThatStands) {
 namespace corbel::statics {
 namespace {
 
+// Where buttresses go on the thin-walled house (8 × 6 m, 5 m walls, a 1 m door mid-front), by
+// the rule of proposedButtresses worked by hand: ⌊8/5⌋ = ⌊6/5⌋ = 1 pier mid-wall, 0.8 m long;
+// the front one would meet the door, whose keep-out is [3.5 − 1.1, 4.5 + 1.1] (a course 0.5 m
+// and three quarters of a 0.8 m block), so it moves to both sides: [1.6, 2.4] and [5.6, 6.4].
+TEST(StoneExtrusion, ProposedButtressesStandMidWallAndBesideTheDoor) {
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  const StoneHouse h = stoneHouseOf(std::get<ExtrusionSpec>(p.document.findByName("Stone house, thin walls")->spec));
+  const std::vector<WallButtress> b = proposedButtresses(h, 0.8, 0.5, 0.2);
+  ASSERT_EQ(b.size(), 5u);
+  const double expected[5][3] = {{0, 1.6, 2.4}, {0, 5.6, 6.4}, {1, 2.6, 3.4}, {2, 3.6, 4.4}, {3, 2.6, 3.4}};
+  for (std::size_t k = 0; k < 5; ++k) {
+    EXPECT_EQ(b[k].edge, int(expected[k][0])) << k;
+    EXPECT_NEAR(b[k].from, expected[k][1], 1e-9) << k;
+    EXPECT_NEAR(b[k].to, expected[k][2], 1e-9) << k;
+    EXPECT_DOUBLE_EQ(b[k].top, 5.0);
+  }
+}
+
 // Make It Stand allowed only the buttresses' depth (Kelly & Wonka's buttresses as natural steps,
 // Fig. 23) on the thin-walled house, which has none: it adds them, and what it finds stands by
 // the strict LP; written back they are rectangle steps of the extrusion, whose own model builds
