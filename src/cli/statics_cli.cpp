@@ -308,11 +308,11 @@ statics::ParametricModel masonryModelOf(const DocObject& o) {
 
 // --save: object `o` of `saved` at the values its run ended with: a masonry object's changed
 // parameters set as the editor sets them (editor::setMasonryParameter); an extrusion in stone
-// takes its section's values (statics::stoneWallsAt).
+// takes its section's values and buttress steps (statics::stoneSpecAt).
 void writeBack(Document& saved, const DocObject& o, const statics::ParameterSet& ended) {
   DocObject& target = *saved.find(o.id);
   if (auto* e = std::get_if<ExtrusionSpec>(&target.spec)) {
-    e->masonry = statics::stoneWallsAt(*e->masonry, ended);
+    *e = statics::stoneSpecAt(*e, ended);
     return;
   }
   // As the editor applies Make It Stand: each changed parameter set, in name order.

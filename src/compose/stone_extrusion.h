@@ -18,14 +18,35 @@ struct StoneHouse {
   std::vector<double> roofArea;    // per edge: m² of roof surface bearing on it
   std::vector<double> thrustArea;  // per edge: Σ A / (2 tan θ) over those faces, m²
   double roofPitchDeg = 0;         // the steepest roof face's pitch
+  // The extrusion's buttresses (walls.buttresses, at their steps' depths): which entry of
+  // spec.steps made each (repeats expanded).
+  std::vector<int> buttressStep;
 };
+
+// Buttresses below this depth (m) are not built: a search on buttressDepth starting from 0
+// adds them (proposedButtresses) once the depth reaches it.
+inline constexpr double kMinButtressDepth = 0.05;
 
 // Reads the extrusion: one plan loop with convex corners, every edge's profile starting with a
 // vertical wall of one common height; roof faces (those above the wall segment facing up) go to
-// the edge that traced them; door and window anchors become openings (heads from the masonry
-// section). Throws InputError at "masonry", "masonry.openings.NAME", "plan" or "steps" naming
-// what cannot be built in stone.
+// the edge that traced them (in the extrusion without its steps: the roof bears on the main
+// walls); door and window anchors become openings (heads from the masonry section). Natural
+// steps of rectangle shape standing on the ground (anchor height 0) and reaching out of the
+// wall (depth > 0) are buttresses: solid piers of stone `width` × `depth` about their anchor,
+// as high as their front profile's first, vertical segment (at most the wall head), every
+// instance of a repeat. Throws InputError at "masonry", "masonry.openings.NAME", "plan" or
+// "steps[i]" naming what cannot be built in stone (bays, recesses, forced steps, steps above the
+// ground).
 StoneHouse stoneHouseOf(const ExtrusionSpec& spec);
+
+// Where Make It Stand puts buttresses on an extrusion that has none (Kelly & Wonka's
+// buttresses, Fig. 23, as natural steps): on each wall of length L and height h, ⌊L / h⌋ (at
+// least one) evenly spaced piers one block long; a pier that would meet an opening (with a
+// course and three quarters of a block of clearance for its head) is replaced by one on each
+// side of it; piers that would reach a corner's square or another pier are left out. Their
+// depth is 0 (the caller sets it) and they reach the wall head.
+std::vector<WallButtress> proposedButtresses(const StoneHouse& house, double blockLength, double courseHeight,
+                                             double thickness);
 
 // The loads on the wall heads for a covering weight q (N/m²): per edge, down = q·A/L and, unless
 // the roof has ties, out = q·Σ A/(2 tan θ) / L (each rafter of weight w = qA, pinned to its
@@ -35,9 +56,14 @@ std::vector<HeadLoad> roofLoads(const StoneHouse& house, double coveringWeight, 
 
 inline constexpr const char* kStoneModelName = "stone extrusion";
 
-// The extrusion's stone model (named kStoneModelName): parameters thickness, courseHeight, blockLength, coveringWeight,
-// density, ties (0 or 1), windPressure and windDirection from the masonry section; the walls
-// coursed, loaded by the roof and the wind (loadWind), on a fixed ground slab. Free by default: thickness (Make It Stand thickens the walls).
+// The extrusion's stone model (named kStoneModelName): parameters thickness, courseHeight,
+// blockLength, coveringWeight, density, ties (0 or 1), windPressure and windDirection from the
+// masonry section, and buttressDepth: the deepest buttress step's depth, every buttress scaled
+// with it; on an extrusion without buttresses it is 0 and a value of kMinButtressDepth or more
+// adds proposedButtresses of that depth. The walls coursed, loaded by the roof and the wind
+// (loadWind), on a fixed ground slab. Free by default: thickness, and buttressDepth where the
+// extrusion has buttresses (Make It Stand thickens the walls and deepens the buttresses); free
+// buttressDepth yourself (e.g. 0.1 to 2 m) to let it add buttresses.
 ParametricModel stoneModel(const ExtrusionSpec& spec);
 
 // The masonry section at the model's values: thickness, course height, block length, covering
@@ -45,5 +71,13 @@ ParametricModel stoneModel(const ExtrusionSpec& spec);
 // It Stand writes back, so its result stays the extrusion the artist keeps editing and is one
 // edit of the Document.
 StoneWalls stoneWallsAt(const StoneWalls& section, const ParameterSet& values);
+
+// The extrusion at the model's values: its masonry section (stoneWallsAt) and its buttress
+// steps at `buttressDepth` (scaled as the model does), or, where it has none and the value adds
+// them, the proposed buttresses written as rectangle steps (anchored at the ground on their
+// walls, a fraction along, with a profile "buttress": vertical to the wall head, then leaning
+// in at 60°). What Make It Stand writes back: the result stays an extrusion the artist keeps
+// editing.
+ExtrusionSpec stoneSpecAt(const ExtrusionSpec& spec, const ParameterSet& values);
 
 }  // namespace corbel::statics

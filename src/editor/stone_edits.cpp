@@ -40,7 +40,7 @@ Document setStoneSetting(const Document& doc, ObjectId id, const std::string& na
                                             std::to_string(p.hi) + "] (" + p.description + ")");
   statics::ParameterSet values = model.parameters;
   values.set(name, p.continuous ? value : std::round(value));
-  e.masonry = statics::stoneWallsAt(*e.masonry, values);
+  e = statics::stoneSpecAt(e, values);
   return next;
 }
 
@@ -73,11 +73,29 @@ MasonryView analyseStone(const ExtrusionSpec& spec, Progress* progress) {
   }
 }
 
-statics::SearchResult searchStone(const ExtrusionSpec& spec, Progress* progress, int maxEvaluations) {
+statics::SearchResult searchStone(const ExtrusionSpec& spec, Progress* progress, int maxEvaluations,
+                                  const std::vector<statics::FreeParameter>* free) {
   const statics::ParametricModel model = statics::stoneModel(spec);
-  return statics::searchParameters(model, model.suggestedFree,
+  return statics::searchParameters(model, free ? *free : model.suggestedFree,
                                    reportingSearchOptions(statics::AnalysisOptions{}, progress, maxEvaluations),
                                    &model.parameters);
+}
+
+std::vector<statics::FreeParameter> stoneSearchFree(const ExtrusionSpec& spec, bool addButtresses) {
+  const statics::ParametricModel model = statics::stoneModel(spec);
+  std::vector<statics::FreeParameter> free = model.suggestedFree;
+  const bool has = std::any_of(free.begin(), free.end(), [](const statics::FreeParameter& f) { return f.name == "buttressDepth"; });
+  if (addButtresses && !has) {
+    const statics::Parameter& p = model.parameters.find("buttressDepth");
+    free.push_back({"buttressDepth", std::min(0.1, p.hi), p.hi});
+  }
+  return free;
+}
+
+double buttressDepthOf(const ExtrusionSpec& spec) {
+  double deepest = 0;
+  for (const PlanStep& st : spec.steps) deepest = std::max(deepest, st.depth);
+  return deepest;
 }
 
 std::optional<Document> applyStoneSearch(const Document& doc, ObjectId id, const ExtrusionSpec& started,
@@ -93,7 +111,7 @@ std::optional<Document> applyStoneSearch(const Document& doc, ObjectId id, const
   if (!e || !(*e == started) || !e->masonry) return refuse("the extrusion was edited while the search ran");
   Document next = doc;
   ExtrusionSpec& target = extrusionIn(next, id);
-  target.masonry = statics::stoneWallsAt(*target.masonry, result.values);
+  target = statics::stoneSpecAt(target, result.values);
   return next;
 }
 

@@ -20,7 +20,8 @@ namespace corbel::editor {
 Document setStone(const Document& doc, ObjectId id, bool on);
 
 // One setting of the section by the stone model's parameter name (thickness, courseHeight,
-// blockLength, coveringWeight, density, ties, windPressure, windDirection). Throws InputError
+// blockLength, coveringWeight, density, ties, windPressure, windDirection; buttressDepth sizes
+// the buttress steps, or adds them: statics::stoneSpecAt). Throws InputError
 // naming the setting when the extrusion cannot be built in stone, the name is none of those, or
 // the value is outside the model's range (a wall thicker than a third of the shortest wall).
 Document setStoneSetting(const Document& doc, ObjectId id, const std::string& name, double value);
@@ -35,11 +36,22 @@ Document setOpeningHead(const Document& doc, ObjectId id, const std::string& anc
 // margin, as `corbel-cli statics --object`): a view with `error` set when it cannot be built.
 MasonryView analyseStone(const ExtrusionSpec& spec, Progress* progress = nullptr);
 
-// Make It Stand on the stone model: its suggested free parameters (the wall thickness) searched
-// from the section's values.
-statics::SearchResult searchStone(const ExtrusionSpec& spec, Progress* progress = nullptr, int maxEvaluations = 200);
+// Make It Stand on the stone model: `free` (by default its suggested free parameters: the wall
+// thickness, and the buttresses' depth where it has buttress steps) searched from the section's
+// values. Free buttressDepth (from above kMinButtressDepth) to let it add buttresses.
+statics::SearchResult searchStone(const ExtrusionSpec& spec, Progress* progress = nullptr, int maxEvaluations = 200,
+                                  const std::vector<statics::FreeParameter>* free = nullptr);
 
-// The search's result written into extrusion `id` of `doc` (statics::stoneWallsAt), or nullopt
+// What Make It Stand frees: the model's suggested free parameters and, when `addButtresses`,
+// buttressDepth from 0.1 m to the wall height too (on an extrusion without buttresses, so the
+// search may add them). Throws InputError when the extrusion cannot be built in stone.
+std::vector<statics::FreeParameter> stoneSearchFree(const ExtrusionSpec& spec, bool addButtresses);
+
+// The deepest buttress step's depth (the stone model's buttressDepth), 0 when there is none.
+double buttressDepthOf(const ExtrusionSpec& spec);
+
+// The search's result written into extrusion `id` of `doc` (statics::stoneSpecAt: the section
+// and the buttress steps), or nullopt
 // with the reason: cancelled, nothing standing found, or the extrusion was edited meanwhile
 // (its spec is no longer `started`).
 std::optional<Document> applyStoneSearch(const Document& doc, ObjectId id, const ExtrusionSpec& started,

@@ -79,9 +79,11 @@ void StonePanel::makeItStand(const StaticsHost& host) {
   auto result = std::make_shared<statics::SearchResult>();
   searchResult_ = result;
   const ExtrusionSpec start = *e;
+  const bool addButtresses = addButtresses_;
   host.log("Make the stone walls stand…", false);
-  search_ = std::make_unique<BackgroundJob>("Make the walls stand", [result, start](Progress& progress) {
-    *result = searchStone(start, &progress);
+  search_ = std::make_unique<BackgroundJob>("Make the walls stand", [result, start, addButtresses](Progress& progress) {
+    const std::vector<statics::FreeParameter> free = stoneSearchFree(start, addButtresses);
+    *result = searchStone(start, &progress, 200, &free);
     if (result->status == statics::SearchStatus::Cancelled) progress.cancel();
   });
   if (host.wait) finishSearch(host);
@@ -108,6 +110,9 @@ void StonePanel::finishSearch(const StaticsHost& host) {
     for (const Setting& s : settingsOf(*searchStart_.masonry))
       if (f.name == s.name && s.value != searchResult_->values[f.name])
         lastChanges_.push_back({s.label, s.value, searchResult_->values[f.name]});
+    const double depth = buttressDepthOf(searchStart_);
+    if (f.name == "buttressDepth" && depth != searchResult_->values[f.name])
+      lastChanges_.push_back({"buttress depth", depth, searchResult_->values[f.name]});
   }
   const DocObject* o = host.doc->find(searchObject_);
   host.commit(*next, "Make the stone walls of " + (o ? o->name : std::string("the extrusion")) + " stand", "");
@@ -147,6 +152,27 @@ void StonePanel::draw(const StaticsHost& host) {
       return;
     }
     marks::mark(std::string("stone ") + s.label);
+    if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
+  }
+  {
+    // The buttress steps' depth: sizes them, or (from 0) adds buttresses as steps.
+    float v = float(buttressDepthOf(*e));
+    float hi = 10;
+    if (view)
+      for (const statics::Parameter& p : view->parameters)
+        if (p.name == "buttressDepth") hi = float(p.hi);
+    if (ImGui::DragFloat("buttress depth", &v, 0.01f, 0.0f, hi, "%.3f m", ImGuiSliderFlags_AlwaysClamp)) {
+      try {
+        host.commit(setStoneSetting(*host.doc, host.object, "buttressDepth", v), "Edit buttress depth",
+                    "stone" + std::to_string(host.object) + ".buttressDepth");
+      } catch (const std::exception& ex) {
+        host.log(ex.what(), true);
+      }
+      return;
+    }
+    marks::mark("stone buttress depth");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("How far the buttress steps reach out of the walls; from 0 it adds buttresses as steps");
     if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();
   }
   bool ties = m.ties;
@@ -208,7 +234,13 @@ void StonePanel::draw(const StaticsHost& host) {
   }
   if (ImGui::Button("Make the walls stand")) makeItStand(host);
   marks::mark("stone make it stand");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Search the wall thickness until the walls carry the roof; one undo step");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Search the wall thickness (and the buttresses' depth) until the walls carry the roof; one undo step");
+  ImGui::SameLine();
+  ImGui::Checkbox("add buttresses", &addButtresses_);
+  marks::mark("stone add buttresses");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Let Make the walls stand add buttresses as steps of the extrusion (and deepen them)");
   ImGui::Checkbox("Show blocks", &showBlocks_);
   marks::mark("stone show blocks");
   ImGui::SameLine();

@@ -44,6 +44,7 @@ class StonePanel {
   ObjectId searchObject_ = 0;
   std::vector<ParameterChange> lastChanges_;
   bool showBlocks_ = true;
+  bool addButtresses_ = false;  // Make It Stand may add buttress steps (frees their depth)
   bool showForces_ = false;  // hundreds of joints: the arrows hide the walls until asked for
 };
 

@@ -256,6 +256,31 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
     placed.push_back(std::move(p));
   }
 
+  // Buttresses: snapped to courses, checked against their wall, each other and the openings.
+  struct Pier {
+    const WallButtress* b;
+    int courses;  // it stands in courses [0, courses)
+  };
+  std::vector<Pier> piers;
+  for (const WallButtress& w : spec.buttresses) {
+    const std::string who = "coursing: buttress \"" + w.name + "\"";
+    if (w.edge < 0 || std::size_t(w.edge) >= ne) throw Error(who + ": no edge " + std::to_string(w.edge));
+    if (!std::isfinite(w.from) || !std::isfinite(w.to) || !(w.to > w.from) || !std::isfinite(w.top) ||
+        !std::isfinite(w.depth) || !(w.depth > 0))
+      throw Error(who + ": needs from < to, a depth > 0 and a finite top");
+    const EdgeFrame& f = edges[std::size_t(w.edge)];
+    if (w.from < f.startSquare - tol || w.to > f.length - f.endSquare + tol)
+      throw Error(who + ": it leaves its wall or reaches a corner's square");
+    const Pier pier{&w, std::clamp(int(std::lround(w.top / ch)), 1, courses)};
+    for (const Pier& q : piers)
+      if (q.b->edge == w.edge && w.from < q.b->to - tol && q.b->from < w.to - tol)
+        throw Error(who + " overlaps buttress \"" + q.b->name + "\"");
+    for (const Placed& p : placed)
+      if (p.o->edge == w.edge && w.from < p.hi && p.lo < w.to && p.sill < pier.courses)
+        throw Error(who + " overlaps opening \"" + p.o->name + "\" (with its head)");
+    piers.push_back(pier);
+  }
+
   CoursedWalls out;
   out.courses = courses;
   out.courseHeight = ch;
@@ -287,6 +312,15 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
           cuts.insert(cuts.end(), p.headCuts.begin(), p.headCuts.end());
           spans.push_back({p.headCuts.front().lo(), p.headCuts.back().hi(), false});
         }
+      }
+      // Through-stones: the wall behind a buttress is one block with it on even courses.
+      std::vector<const WallButtress*> throughs;
+      for (const Pier& p : piers) {
+        if (std::size_t(p.b->edge) != e || c >= p.courses || odd) continue;
+        cuts.push_back({p.b->from, p.b->from});
+        cuts.push_back({p.b->to, p.b->to});
+        spans.push_back({p.b->from, p.b->to, false});
+        throughs.push_back(p.b);
       }
       // Keep-outs for bond joints: every cut so far and the inner corner lines.
       std::vector<Cut> avoid = cuts;
@@ -352,13 +386,31 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
           }
           continue;
         }
+        const WallButtress* through = nullptr;
+        for (const WallButtress* w : throughs)
+          if (std::abs(l.bottom - w->from) <= tol && std::abs(r.bottom - w->to) <= tol) through = w;
+        const double out0 = through ? -through->depth : 0.0;  // the block's outer face, v
         auto onFace = [&](double u, double z) {
-          const Vec2 p = f.at(u, 0.0);
+          const Vec2 p = f.at(u, out0);
           return Vec3(p[0], p[1], z);
         };
         const std::vector<Vec3> face = {onFace(l.bottom, z0), onFace(r.bottom, z0), onFace(r.top, z1), onFace(l.top, z1)};
-        out.blocks.push_back(prismBlock(name, face, Vec3(f.n[0] * t, f.n[1] * t, 0.0), spec.density));
+        out.blocks.push_back(prismBlock(through ? name + " through \"" + through->name + "\"" : name, face,
+                                        Vec3(f.n[0], f.n[1], 0.0) * (t - out0), spec.density));
         if (c == courses - 1) out.heads.push_back({index, int(e), l.top, r.top});
+      }
+      // Buttresses on odd courses: a block of their own against the wall's outer face.
+      for (const Pier& p : piers) {
+        if (std::size_t(p.b->edge) != e || c >= p.courses || !odd) continue;
+        const WallButtress& w = *p.b;
+        auto outside = [&](double u, double z) {
+          const Vec2 q = f.at(u, -w.depth);
+          return Vec3(q[0], q[1], z);
+        };
+        out.blocks.push_back(prismBlock("wall " + std::to_string(e) + " buttress \"" + w.name + "\" course " +
+                                            std::to_string(c),
+                                        {outside(w.from, z0), outside(w.to, z0), outside(w.to, z1), outside(w.from, z1)},
+                                        Vec3(f.n[0], f.n[1], 0.0) * w.depth, spec.density));
       }
       // Semicircular arches whose zone this course crosses: the voussoirs (once, in the
       // springing course) and the course's spandrel pieces.

@@ -21,6 +21,18 @@ struct WallOpening {
   double archDepth = 0.0;        // m, a semicircular arch's ring depth; 0: one course height
 };
 
+// A buttress (a pier of solid stone) against the outer face of one plan edge's wall, from its
+// foot up: [from, to] along the face, `depth` out of it. On even courses (the first included)
+// the wall's stretch behind it and the buttress are one through-stone, so the pier is bonded
+// into the wall; on odd courses the buttress is a block of its own against the wall.
+struct WallButtress {
+  std::string name;              // for messages
+  int edge = 0;
+  double from = 0.0, to = 1.0;   // m along the edge's outer face, from its first corner
+  double depth = 0.5;            // m out of the face
+  double top = 3.0;              // m above the wall's foot; snapped to a course joint (≥ 1 course)
+};
+
 struct CoursingSpec {
   // The walls' outer faces: corners counter-clockwise seen from above, each wall lying on the
   // left of its edge (inside the plan). Every corner of a closed plan must turn left (convex).
@@ -33,6 +45,7 @@ struct CoursingSpec {
   double thickness = 0.5;
   double density = 2400.0;
   std::vector<WallOpening> openings;
+  std::vector<WallButtress> buttresses;
 };
 
 // A top-course block's share of one edge's wall head: the stretch [from, to] (m along the edge's
@@ -66,8 +79,12 @@ struct CoursedWalls {
 // beyond the extrados on each side and up to a course joint at least a quarter course above
 // it, are cut in their courses along the voussoirs' joints carried on outwards, neighbouring
 // pieces joined wherever the join is convex.
+// Buttresses (WallButtress) are cut out of the bond: on their through-stone courses the wall is
+// cut at the buttress's sides and bond joints between and within a quarter block of them are
+// dropped.
 // Throws corbel::Error for bad numbers, a reflex corner, openings that leave their wall, reach
-// a corner's square or the wall head, or overlap.
+// a corner's square or the wall head, or overlap; buttresses that leave their wall's stretch
+// between the corner squares, overlap each other or an opening with its head.
 CoursedWalls courseWalls(const CoursingSpec& spec);
 
 // Loads along an edge's wall head, in N per metre of the edge: `down` acts downwards and

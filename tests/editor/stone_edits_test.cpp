@@ -127,5 +127,43 @@ TEST(StoneEdits, MakeItStandWritesStandingWallsBack) {
   EXPECT_NE(why.find("edited"), std::string::npos) << why;
 }
 
+// Make It Stand allowed only the buttresses' depth adds buttresses to the thin-walled house as
+// steps of its extrusion, and the walls written back stand by the strict LP; the depth set as a
+// setting adds them too, and a second setting resizes the same steps.
+TEST(StoneEdits, MakeItStandMayAddButtressSteps) {
+  const Document d = stoneHouses();
+  const ExtrusionSpec start = extrusion(d, 2);
+  // The panel's "add buttresses" frees the depth from 0.1 m to the wall height (5 m) beside
+  // the thickness; without it only the thickness is free on a house without buttresses.
+  EXPECT_EQ(stoneSearchFree(start, false).size(), 1u);
+  const std::vector<statics::FreeParameter> both = stoneSearchFree(start, true);
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_EQ(both[1].name, "buttressDepth");
+  EXPECT_DOUBLE_EQ(both[1].lo, 0.1);
+  EXPECT_DOUBLE_EQ(both[1].hi, 5.0);
+  const std::vector<statics::FreeParameter> free = {{"buttressDepth", 0.1, 2.0}};
+  const statics::SearchResult r = searchStone(start, nullptr, 200, &free);
+  ASSERT_EQ(r.status, statics::SearchStatus::Feasible) << r.message;
+  std::string why;
+  const std::optional<Document> next = applyStoneSearch(d, 2, start, r, &why);
+  ASSERT_TRUE(next) << why;
+  const ExtrusionSpec& after = extrusion(*next, 2);
+  EXPECT_EQ(*after.masonry, *start.masonry);  // the walls as they were
+  ASSERT_FALSE(after.steps.empty());
+  for (const PlanStep& st : after.steps) EXPECT_DOUBLE_EQ(st.depth, r.values["buttressDepth"]);
+  const statics::ParametricModel model = statics::stoneModel(after);
+  EXPECT_TRUE(statics::checkFeasibility(model.build(model.parameters)).feasible);
+
+  const Document set = setStoneSetting(d, 2, "buttressDepth", 0.5);
+  const std::size_t added = extrusion(set, 2).steps.size();
+  EXPECT_EQ(added, after.steps.size());
+  const Document resized = setStoneSetting(set, 2, "buttressDepth", 0.8);
+  ASSERT_EQ(extrusion(resized, 2).steps.size(), added);
+  for (const PlanStep& st : extrusion(resized, 2).steps) EXPECT_DOUBLE_EQ(st.depth, 0.8);
+  EXPECT_DOUBLE_EQ(buttressDepthOf(extrusion(resized, 2)), 0.8);
+  // With buttresses, Make It Stand's default frees their depth too.
+  EXPECT_EQ(stoneSearchFree(extrusion(resized, 2), false).size(), 2u);
+}
+
 }  // namespace
 }  // namespace corbel::editor

@@ -1,12 +1,14 @@
 // Coursed stone walls (statics/coursing.h) against independent oracles: the wall's volume by
 // hand (ring area = perimeter·t − t²·Σ cot(φ/2), openings subtracted), a point-by-point check
 // that the blocks tile it, the overturning load of a free-standing wall by hand (W·t / 2h), and
-// the existing wall template (wall.h) for a straight wall with openings.
+// the existing wall template (wall.h) for a straight wall with openings; buttresses: the stepped
+// walls' volume and tiling by hand, and the moment a pier adds against a head load.
 #include "core/error.h"
 #include "statics/analysis.h"
 #include "statics/arch.h"
 #include "statics/builder.h"
 #include "statics/coursing.h"
+#include "statics/interfaces.h"
 #include "statics/shapes.h"
 #include "statics/thresholds.h"
 #include "statics/tolerances.h"
@@ -377,6 +379,131 @@ TEST(Coursing, SemicircularArchIsTheArchTemplateAndStandsWhereItDoes) {
   }
 }
 
+// Buttresses against the house's walls: a pier 0.8 m long, 0.6 m deep and as high as the walls
+// on the front (edge 0, x in [4, 4.8], outside y < 0) and one 1 m long, 0.4 m deep and 2 m high
+// on the back (edge 2 runs from (6, 4) to (0, 4): u in [2, 3] is x in [3, 4], outside y > 4).
+CoursingSpec buttressedHouse() {
+  CoursingSpec s = house();
+  s.buttresses = {{"front", 0, 4.0, 4.8, 0.6, 3.2}, {"back", 2, 2.0, 3.0, 0.4, 2.0}};
+  return s;
+}
+
+// The stepped plan's walls by hand: the ring and openings of BlocksTileTheWallsOfARectangularHouse
+// plus each pier's plan area × its height; sampled point by point like that test.
+TEST(Coursing, ButtressesTileTheSteppedWalls) {
+  const CoursingSpec s = buttressedHouse();
+  const CoursedWalls w = courseWalls(s);
+  ASSERT_EQ(w.courses, 8);
+  const double expected = 9.0 * 3.2 - (1.0 * 2.0 + 1.0 * 1.2) * 0.5 + 0.8 * 0.6 * 3.2 + 1.0 * 0.4 * 2.0;
+  EXPECT_NEAR(volumeOf(w.blocks), expected, 1e-9);
+  std::vector<BBox> boxes;
+  for (const Block& b : w.blocks) {
+    BBox box;
+    for (const Vec3& v : b.vertices) box.add(v);
+    boxes.push_back(box);
+  }
+  int wrong = 0, samples = 0;
+  for (double x = -0.2 + 0.0137; x < 6.2; x += 0.0731)
+    for (double y = -0.8 + 0.0091; y < 4.6; y += 0.0693)
+      for (double z = 0.0113; z < 3.2; z += 0.0977) {
+        const bool inRing = x > 0 && x < 6 && y > 0 && y < 4 && !(x > 0.5 && x < 5.5 && y > 0.5 && y < 3.5);
+        const bool inDoor = y < 0.5 && x > 2 && x < 3 && z < 2.0;
+        const bool inWindow = x > 5.5 && y > 1.5 && y < 2.5 && z > 0.8 && z < 2.0;
+        const bool inFront = x > 4 && x < 4.8 && y > -0.6 && y < 0;
+        const bool inBack = x > 3 && x < 4 && y > 4 && y < 4.4 && z < 2.0;
+        const Vec3 p(x, y, z);
+        int count = 0;
+        for (std::size_t i = 0; i < w.blocks.size(); ++i)
+          if (within(boxes[i], p) && inside(w.blocks[i], p)) ++count;
+        wrong += count != (((inRing && !inDoor && !inWindow) || inFront || inBack) ? 1 : 0);
+        ++samples;
+      }
+  EXPECT_EQ(wrong, 0) << "of " << samples << " samples";
+
+  // Bonded: through-stones (wall and pier one block) on even courses, 4 for the front pier's 8
+  // courses and 3 for the back one's 5; the piers' own blocks on the odd ones, each against a
+  // wall block over a vertical interface.
+  int through = 0, own = 0;
+  for (const Block& b : w.blocks) {
+    through += b.name.find("through") != std::string::npos;
+    own += b.name.find(" buttress ") != std::string::npos;
+  }
+  EXPECT_EQ(through, 4 + 3);
+  EXPECT_EQ(own, 4 + 2);
+  Assembly as;
+  as.blocks = w.blocks;
+  BBox box;
+  for (const BBox& b : boxes) box.add(b.lo), box.add(b.hi);
+  const std::vector<BlockProperties> props = validateAssembly(as, lengthTolerance(box));
+  const Contacts c = findContacts(as, props, lengthTolerance(box), 0.0);
+  for (std::size_t i = 0; i < w.blocks.size(); ++i) {
+    if (w.blocks[i].name.find(" buttress ") == std::string::npos) continue;
+    double againstWall = 0;
+    for (const Interface& f : c.interfaces) {
+      const int other = f.a == int(i) ? f.b : f.b == int(i) ? f.a : -1;
+      if (other < 0 || std::abs(f.normal[2]) > 1e-9) continue;
+      const std::string& name = w.blocks[std::size_t(other)].name;
+      if (name.find("buttress") == std::string::npos && name.find("through") == std::string::npos) againstWall += f.area;
+    }
+    // The whole face against the wall: pier length × course height.
+    const double length = w.blocks[i].name.find("front") != std::string::npos ? 0.8 : 1.0;
+    EXPECT_NEAR(againstWall, length * 0.4, 1e-9) << w.blocks[i].name;
+  }
+  EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible);
+}
+
+// A free-standing wall (length L, thickness t, height h, weight W) under a horizontal load P at
+// its head tips about its outer foot once P·h > W·t/2; here P = W·t/h, twice that. A pier of
+// depth d, as long as the wall and as high (weight W_b = W·d/t), moves the pivot to its own
+// outer foot: the rigid wall and pier resist W·(d + t/2) + W_b·d/2 (in N·m, t = 0.3 m, so
+// P·h = 0.3 W). For d = 0.1 m that is 0.25 W + 0.017 W = 0.267 W, short of it: rotating the
+// whole about the pier's foot is a mechanism, so it falls whatever the LP. For d = 0.3 m it is
+// 0.45 W + 0.15 W = 0.6 W, over 1.5 × 0.3 W; each bed joint above carries the same ratio
+// (weight and load moment both scale with the height above it), so it stands by the LP.
+TEST(Coursing, ButtressHoldsAWallTheHeadLoadOverturns) {
+  CoursingSpec s;
+  s.plan = {Vec2(0, 0), Vec2(2.4, 0)};
+  s.closed = false;
+  s.height = 3.0;
+  s.courseHeight = 0.5;
+  s.blockLength = 0.6;
+  s.thickness = 0.3;
+  const double L = 2.4, W = s.density * 9.81 * L * s.thickness * s.height;
+  const double P = W * s.thickness / s.height;  // twice the free wall's W·t / (2h)
+  auto stands = [&](double depth) {
+    CoursingSpec b = s;
+    if (depth > 0) b.buttresses = {{"pier", 0, 0.0, L, depth, s.height}};
+    CoursedWalls w = courseWalls(b);
+    loadWallHeads(b, w, {{0.0, P / L}});
+    return checkFeasibility(onGround(w.blocks)).feasible;
+  };
+  auto resisting = [&](double d) { return W * (d + s.thickness / 2) + W * d / s.thickness * d / 2; };
+  EXPECT_GT(P * s.height, W * s.thickness / 2);
+  EXPECT_FALSE(stands(0.0));
+  EXPECT_LT(resisting(0.1), P * s.height);
+  EXPECT_FALSE(stands(0.1));
+  EXPECT_GE(resisting(0.3), 1.5 * P * s.height);
+  EXPECT_TRUE(stands(0.3));
+
+  // A pier 0.8 m long in the middle of the wall: the same mechanism about its foot needs
+  // W·(d + t/2) + W_b·d/2 ≥ P·h (W_b = W·(0.8 / L)·d/t), so d = 0.1 m falls; the hand moment is
+  // only necessary here, since the wall's 0.8 m ends beyond the pier must be held by the bond
+  // (the LP finds them turning off at d = 0.3 m, 1.67 times over the moment); at d = 0.6 m,
+  // three times over, the LP finds the bonded pier holds the whole wall.
+  auto middle = [&](double depth) {
+    CoursingSpec b = s;
+    b.buttresses = {{"pier", 0, 0.8, 1.6, depth, s.height}};
+    CoursedWalls w = courseWalls(b);
+    loadWallHeads(b, w, {{0.0, P / L}});
+    return checkFeasibility(onGround(w.blocks)).feasible;
+  };
+  auto resistingMiddle = [&](double d) { return W * (d + s.thickness / 2) + W * (0.8 / L) * d / s.thickness * d / 2; };
+  EXPECT_LT(resistingMiddle(0.1), P * s.height);
+  EXPECT_FALSE(middle(0.1));
+  EXPECT_GE(resistingMiddle(0.6), 3 * P * s.height);
+  EXPECT_TRUE(middle(0.6));
+}
+
 TEST(Coursing, RefusesWhatCannotBeCoursed) {
   CoursingSpec s = house();
   s.plan = {Vec2(0, 0), Vec2(6, 0), Vec2(6, 4), Vec2(3, 2), Vec2(0, 4)};  // reflex corner at (3, 2)
@@ -400,6 +527,17 @@ TEST(Coursing, RefusesWhatCannotBeCoursed) {
   EXPECT_THROW(courseWalls(s), Error);
   s = house();
   s.openings[1] = {"wide", 1, 0.8, 3.2, 0.0, 0.8, OpeningHead::SemicircularArch};  // zone into a corner
+  EXPECT_THROW(courseWalls(s), Error);  s = buttressedHouse();
+  s.buttresses[0].from = 0.2;  // into the corner's square
+  EXPECT_THROW(courseWalls(s), Error);
+  s = buttressedHouse();
+  s.buttresses[0].from = 3.0;  // on the door's lintel
+  EXPECT_THROW(courseWalls(s), Error);
+  s = buttressedHouse();
+  s.buttresses.push_back({"overlap", 0, 4.5, 5.0, 0.3, 1.0});
+  EXPECT_THROW(courseWalls(s), Error);
+  s = buttressedHouse();
+  s.buttresses[1].depth = 0;
   EXPECT_THROW(courseWalls(s), Error);
 }
 

@@ -1,12 +1,14 @@
 // Extrusions built in stone (compose/stone_extrusion.h): the roof's loads against a hand
 // computation for a hipped roof, and the shipped stone houses: the one meant to stand stands by
-// the LP, the thin-walled one does not until its roof has ties or its walls are thickened.
+// the LP, the thin-walled one does not until its roof has ties, its walls are thickened or Make
+// It Stand adds buttresses (steps of the extrusion: their volume by hand).
 #include "core/error.h"
 #include "core/history.h"
 #include "core/project_io.h"
 #include "statics/analysis.h"
 #include "statics/search.h"
 #include "compose/stone_extrusion.h"
+#include "extrude/extrude.h"
 
 #include <gtest/gtest.h>
 
@@ -110,6 +112,77 @@ TEST(StoneExtrusion, RefusesWhatItCannotBuild) {
   EXPECT_THROW(stoneModel(e), InputError);
 }
 
+// The hipped house with a buttress step on edge 1 (from (8, 0) to (8, 6)): 0.8 m wide about a
+// quarter of the way along (u = 1.5 m), 0.5 m out, its front profile vertical for 2 m.
+ExtrusionSpec buttressedHouse() {
+  ExtrusionSpec e = hippedHouse();
+  e.profiles.push_back({"pier", {Vec2(0, 0), Vec2(0, 2), Vec2(0.5, 3)}, {}});
+  PlanStep st;
+  st.name = "pier";
+  st.anchor = Anchor{0, 1, false, 0.25, 0.0};
+  st.width = 0.8;
+  st.depth = 0.5;
+  st.frontProfile = st.sideProfile = 1;
+  e.steps = {st};
+  return e;
+}
+
+double wallVolume(const Assembly& as) {
+  BBox box;
+  for (const Block& b : as.blocks)
+    for (const Vec3& v : b.vertices) box.add(v);
+  const std::vector<BlockProperties> props = validateAssembly(as, 1e-9 * box.diagonal());
+  double v = 0;
+  for (std::size_t i = 0; i < as.blocks.size(); ++i)
+    if (as.blocks[i].name != "ground") v += props[i].volume;
+  return v;
+}
+
+// By hand: the ring of 0.5 m walls on the 8 × 6 plan is 28·0.5 − 4·0.25 = 13 m² over 3 m; the
+// door takes 1 × 2 m and the window 1 × 1 m (0.9 to 2.1 m snapped to the 0.5 m courses) through
+// 0.5 m; the pier adds 0.8 × 0.5 m over 2 m. The roof still bears on the main walls.
+TEST(StoneExtrusion, ButtressStepsArePiersCoursedWithTheWalls) {
+  const ExtrusionSpec e = buttressedHouse();
+  const StoneHouse h = stoneHouseOf(e);
+  ASSERT_EQ(h.walls.buttresses.size(), 1u);
+  const WallButtress& b = h.walls.buttresses[0];
+  EXPECT_EQ(b.edge, 1);
+  EXPECT_NEAR(b.from, 1.1, 1e-9);
+  EXPECT_NEAR(b.to, 1.9, 1e-9);
+  EXPECT_DOUBLE_EQ(b.depth, 0.5);
+  EXPECT_DOUBLE_EQ(b.top, 2.0);
+  EXPECT_EQ(h.roofArea, stoneHouseOf(hippedHouse()).roofArea);
+  const ParametricModel model = stoneModel(e);
+  EXPECT_DOUBLE_EQ(model.parameters["buttressDepth"], 0.5);
+  const Assembly as = model.build(model.parameters);
+  EXPECT_NEAR(wallVolume(as), 13.0 * 3 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5 + 0.8 * 0.5 * 2.0, 1e-9);
+  EXPECT_TRUE(checkFeasibility(as).feasible);
+  // buttressDepth sizes it (the extrusion's step written back too).
+  ParameterSet deeper = model.parameters;
+  deeper.set("buttressDepth", 1.0);
+  EXPECT_NEAR(wallVolume(model.build(deeper)), 13.0 * 3 - 1.0 - 0.5 + 0.8 * 1.0 * 2.0, 1e-9);
+  const ExtrusionSpec written = stoneSpecAt(e, deeper);
+  ASSERT_EQ(written.steps.size(), 1u);
+  EXPECT_DOUBLE_EQ(written.steps[0].depth, 1.0);
+  EXPECT_EQ(written.profiles, e.profiles);
+}
+
+TEST(StoneExtrusion, RefusesStepsThatAreNotButtresses) {
+  ExtrusionSpec e = buttressedHouse();
+  e.steps[0].shape = StepShape::Bay;
+  e.steps[0].cant = 0.1;
+  EXPECT_THROW(stoneModel(e), InputError);
+  e = buttressedHouse();
+  e.steps[0].depth = -0.3;  // a recess
+  EXPECT_THROW(stoneModel(e), InputError);
+  e = buttressedHouse();
+  e.steps[0].anchor.height = 1.0;  // off the ground
+  EXPECT_THROW(stoneModel(e), InputError);
+  e = buttressedHouse();
+  e.steps[0].anchor.along = 0.5;  // on the window
+  EXPECT_THROW(stoneModel(e).build(stoneModel(e).parameters), Error);
+}
+
 ParametricModel shippedStone(const std::string& object) {
   const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
   const DocObject* o = p.document.findByName(object);
@@ -171,6 +244,70 @@ TEST(StoneExtrusion, MakeItStandIsOneUndoStepOfTheProjectThatStands) {
   ASSERT_TRUE(history.undo());
   EXPECT_EQ(std::get<ExtrusionSpec>(history.current().findByName(name)->spec), thin);
   EXPECT_FALSE(standsInProject(history.current()));
+}
+
+}  // namespace
+}  // namespace corbel::statics
+
+namespace corbel::statics {
+namespace {
+
+// Where buttresses go on the thin-walled house (8 × 6 m, 5 m walls, a 1 m door mid-front), by
+// the rule of proposedButtresses worked by hand: ⌊8/5⌋ = ⌊6/5⌋ = 1 pier mid-wall, 0.8 m long;
+// the front one would meet the door, whose keep-out is [3.5 − 1.1, 4.5 + 1.1] (a course 0.5 m
+// and three quarters of a 0.8 m block), so it moves to both sides: [1.6, 2.4] and [5.6, 6.4].
+TEST(StoneExtrusion, ProposedButtressesStandMidWallAndBesideTheDoor) {
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  const StoneHouse h = stoneHouseOf(std::get<ExtrusionSpec>(p.document.findByName("Stone house, thin walls")->spec));
+  const std::vector<WallButtress> b = proposedButtresses(h, 0.8, 0.5, 0.2);
+  ASSERT_EQ(b.size(), 5u);
+  const double expected[5][3] = {{0, 1.6, 2.4}, {0, 5.6, 6.4}, {1, 2.6, 3.4}, {2, 3.6, 4.4}, {3, 2.6, 3.4}};
+  for (std::size_t k = 0; k < 5; ++k) {
+    EXPECT_EQ(b[k].edge, int(expected[k][0])) << k;
+    EXPECT_NEAR(b[k].from, expected[k][1], 1e-9) << k;
+    EXPECT_NEAR(b[k].to, expected[k][2], 1e-9) << k;
+    EXPECT_DOUBLE_EQ(b[k].top, 5.0);
+  }
+}
+
+// Make It Stand allowed only the buttresses' depth (Kelly & Wonka's buttresses as natural steps,
+// Fig. 23) on the thin-walled house, which has none: it adds them, and what it finds stands by
+// the strict LP; written back they are rectangle steps of the extrusion, whose own model builds
+// the same blocks and stands.
+TEST(StoneExtrusion, MakeItStandAddsButtressStepsToTheThinWalledHouse) {
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  const ExtrusionSpec thin = std::get<ExtrusionSpec>(p.document.findByName("Stone house, thin walls")->spec);
+  const ParametricModel model = stoneModel(thin);
+  EXPECT_EQ(model.parameters["buttressDepth"], 0.0);
+  const SearchResult r = searchParameters(model, {{"buttressDepth", 0.1, 2.0}}, SearchOptions{});
+  ASSERT_EQ(r.status, SearchStatus::Feasible) << r.message;
+  EXPECT_TRUE(r.standsStrictly);
+  EXPECT_EQ(r.values["thickness"], thin.masonry->thickness);
+  const Assembly found = model.build(r.values);
+  EXPECT_TRUE(checkFeasibility(found).feasible);
+
+  const ExtrusionSpec after = stoneSpecAt(thin, r.values);
+  EXPECT_FALSE(after.steps.empty());
+  for (const PlanStep& st : after.steps) {
+    EXPECT_EQ(st.shape, StepShape::Rectangle);
+    EXPECT_DOUBLE_EQ(st.depth, r.values["buttressDepth"]);
+    EXPECT_EQ(st.anchor.height, 0.0);
+  }
+  EXPECT_NO_THROW(extrude::extrude(after));
+  const ParametricModel again = stoneModel(after);
+  EXPECT_DOUBLE_EQ(again.parameters["buttressDepth"], r.values["buttressDepth"]);
+  const Assembly built = again.build(again.parameters);
+  EXPECT_EQ(built.blocks.size(), found.blocks.size());
+  EXPECT_NEAR(wallVolume(built), wallVolume(found), 1e-9);
+  EXPECT_TRUE(checkFeasibility(built).feasible);
+  // Saved and read back, the steps and their profile stay.
+  Document doc = p.document;
+  std::get<ExtrusionSpec>(doc.find(p.document.findByName("Stone house, thin walls")->id)->spec) = after;
+  const ExtrusionSpec reread =
+      std::get<ExtrusionSpec>(parseProject(serializeProject(doc)).document.findByName("Stone house, thin walls")->spec);
+  EXPECT_EQ(reread.steps.size(), after.steps.size());
+  const ParametricModel read = stoneModel(reread);
+  EXPECT_TRUE(checkFeasibility(read.build(read.parameters)).feasible);
 }
 
 }  // namespace
