@@ -919,7 +919,7 @@ TEST(ProjectIo, KifsSpecsRoundTripEveryField) {
   k.r1 = corbel::Vec3(1, 2, 3);
   k.r2 = corbel::Vec3(0, 15, 0);
   k.bailout = 500;
-  k.mass = {"H", 12, 10, 15, 3.5, 1.1, "", 64};
+  k.mass = {"H", 12, 10, 15, 3.5, 1.1, "", "w3", 64};
   k.facade = {5.5, corbel::Vec3(0.2, 0.1, 0.3), 0.5, 1.5, 0.2, -0.1};
   k.floors = {3.2, 0.4, 0.9};
   k.curvilinear = {true, 9, 0.1, 1.2, -12, 0.5};
