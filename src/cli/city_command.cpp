@@ -17,6 +17,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
+#include "core/glb_writer.h"
 #include "core/scene.h"
 #include "render/headless_context.h"
 
@@ -223,7 +224,16 @@ int run(const CityRequest& r) {
   // --instances: the features of the buildings in a file (the whole town's, the tile's), once per shape.
   city::FeatureInstances wholeFeatures(style), tileFeatures(style);
   // The PNG of --render: colours unless asked for (the renderer's textured mode).
-  if (!r.out.empty()) whole = std::make_unique<Scene>();
+  // A glb --out is written building by building as they come (no Scene holds the town), unless
+  // --render needs the Scene.
+  std::unique_ptr<GlbWriter> glbOut;
+  if (!r.out.empty() && r.render.empty() && exportFormatFor(r.out) == ExportFormat::Glb) {
+    ExportOptions o = exportOptions;
+    o.instances = &wholeFeatures.meshes();
+    glbOut = std::make_unique<GlbWriter>(o);
+  } else if (!r.out.empty()) {
+    whole = std::make_unique<Scene>();
+  }
   if (!r.render.empty() && !whole) view = std::make_unique<Scene>();  // else the output's Scene is rendered
   ObjectId wholeId = 1, tileId = 1, viewId = 1;
   std::optional<std::pair<long, long>> currentTile;
@@ -362,9 +372,10 @@ int run(const CityRequest& r) {
     if (view) view->replaceObject(viewId++, Kind::Shell, b.id, *mesh);
     if (tile) tile->replaceObject(tileId++, Kind::Shell, b.id, *mesh);
     if (whole) whole->replaceObject(wholeId++, Kind::Shell, b.id, *mesh);
+    if (glbOut) glbOut->add(wholeId++, Kind::Shell, b.id, *mesh);
     if (r.instances) {
       if (tile) tileFeatures.add(b.features);
-      if (whole) wholeFeatures.add(b.features);
+      if (whole || glbOut) wholeFeatures.add(b.features);
       instancedFeatures += b.features.size();
     }
   };
@@ -428,6 +439,8 @@ int run(const CityRequest& r) {
     exportOptions.instances = &wholeFeatures.meshes();
     exportScene(*whole, r.out, exportOptions);
   }
+  if (glbOut) glbOut->write(r.out);
+  glbOut.reset();
   if (!r.render.empty()) {
     render::HeadlessContext context;
     writeScenePng(whole ? *whole : *view, {-60, 35, 0.75, r.renderTextures == "on", exportOptions.tagTextures},

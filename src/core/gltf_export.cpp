@@ -9,6 +9,8 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/export.h"
+#include "core/glb_writer.h"
+#include "core/manifold_order.h"
 #include "core/materials.h"
 #include "core/textures.h"
 
@@ -130,6 +132,11 @@ class GlbDocument {
   // writes the glb atomically.
   void write(const std::string& path) {
     std::size_t fallback = 0;
+    if (!compress_) {  // the chunk's size known, it is not copied as it grows
+      std::size_t bytes = bin_.size();
+      for (const auto& v : views_) bytes += v.size() + 3;
+      bin_.reserve(bytes + 3);
+    }
     for (int k = 0; k < kViewKinds; ++k) {
       std::vector<unsigned char>& v = views_[k];
       if (v.empty()) continue;
@@ -606,32 +613,26 @@ std::array<double, 4> quaternionOf(const Vec3& c0, const Vec3& c1, const Vec3& c
 
 }  // namespace
 
-void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& options) {
-  GlbDocument g(options.compress);
-  g.doc["asset"] = {{"version", "2.0"}, {"generator", "corbel"}};
-  if (!options.copyright.empty()) g.doc["asset"]["copyright"] = options.copyright;
-  Materials materials(g, options);
-  const PolyMesh& mesh = scene.mesh();
-  json sceneNodes = json::array();
-  bool any = false;
+// The file being written: the document, its materials and the scene's nodes so far.
+struct GlbWriter::State {
+  explicit State(const ExportOptions& o) : options(o), g(o.compress), materials(g, options) {
+    g.doc["asset"] = {{"version", "2.0"}, {"generator", "corbel"}};
+    if (!options.copyright.empty()) g.doc["asset"]["copyright"] = options.copyright;
+  }
 
-  const auto byObject = scene.facesByObject();
-  std::vector<Vec3> poly;
-  for (const auto& [id, info] : scene.objects()) {
-    if (options.include && !options.include(id)) continue;
+  // One object: `faces(use)` hands each face's polygon and its material, kind and tag to `use`.
+  template <class Faces>
+  void object(ObjectId id, Kind kind, const std::string& name, const Faces& faces) {
+    if (options.include && !options.include(id)) return;
     const bool textured = options.textured ? options.textured(id) : options.textures;
-    const auto found = byObject.find(id);
-    if (found == byObject.end()) continue;
     MeshBuilder builder;
-    for (auto f : found->second) {
-      poly.clear();
-      for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
-      builder.face(poly, materials.of(id, textured, scene.faceMaterial(f), scene.faceKind(f), scene.faceTag(f)));
-    }
-    if (builder.empty()) continue;
-    json node{{"name", info.name}};
-    node["mesh"] = builder.write(g, info.name, true, node);
-    json extras{{"corbel_object_id", static_cast<int>(id)}, {"corbel_kind", std::string(kindName(info.kind))}};
+    faces([&](const std::vector<Vec3>& poly, const std::string& material, Kind faceKind, const std::string& tag) {
+      builder.face(poly, materials.of(id, textured, material, faceKind, tag));
+    });
+    if (builder.empty()) return;
+    json node{{"name", name}};
+    node["mesh"] = builder.write(g, name, true, node);
+    json extras{{"corbel_object_id", static_cast<int>(id)}, {"corbel_kind", std::string(kindName(kind))}};
     // The placement the vertices were moved by, in corbel's frame (z up): a town's buildings
     // stand where the scene shows them, and this takes them back to the town's own frame.
     if (const auto pl = options.placements.find(id); pl != options.placements.end()) {
@@ -647,58 +648,111 @@ void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& 
     any = true;
   }
 
-  // Instanced meshes: a node each, its copies placed by EXT_mesh_gpu_instancing in glTF's frame
-  // (rotation C R Cᵀ for corbel's rotation R and C the change of axes): translations as floats,
-// rotations as normalized 16-bit quaternions (each component within 1.6e-5).
-  if (options.instances)
-    for (const InstancedMesh& im : *options.instances) {
-      if (im.placements.empty()) continue;
-      MeshBuilder builder;
-      for (std::size_t f = 0; f < im.mesh.faces.size(); ++f) {
-        poly.clear();
-        for (int v : im.mesh.faces[f]) poly.push_back(im.mesh.points[v]);
-        builder.face(poly, materials.of(0, options.textures, im.mesh.materials[im.mesh.faceMaterial[f]], Kind::Shell,
-                                        im.mesh.tags[im.mesh.faceTag[f]]));
+  void write(const std::string& path) {
+    // Instanced meshes: a node each, its copies placed by EXT_mesh_gpu_instancing in glTF's
+    // frame (rotation C R Cᵀ for corbel's rotation R and C the change of axes): translations as
+    // floats, rotations as normalized 16-bit quaternions (each component within 1.6e-5).
+    std::vector<Vec3> poly;
+    if (options.instances)
+      for (const InstancedMesh& im : *options.instances) {
+        if (im.placements.empty()) continue;
+        MeshBuilder builder;
+        for (std::size_t f = 0; f < im.mesh.faces.size(); ++f) {
+          poly.clear();
+          for (int v : im.mesh.faces[f]) poly.push_back(im.mesh.points[v]);
+          builder.face(poly, materials.of(0, options.textures, im.mesh.materials[im.mesh.faceMaterial[f]], Kind::Shell,
+                                          im.mesh.tags[im.mesh.faceTag[f]]));
+        }
+        if (builder.empty()) continue;
+        json node{{"name", im.name}};
+        node["mesh"] = builder.write(g, im.name, false, node);
+        std::vector<float> translations;
+        std::vector<std::int16_t> rotations;
+        translations.reserve(im.placements.size() * 3);
+        rotations.reserve(im.placements.size() * 4);
+        for (const RigidPlacement& p : im.placements) {
+          const Vec3 t = toGltf(p.translation);
+          translations.insert(translations.end(),
+                              {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])});
+          // Column j of C R Cᵀ is C (R (Cᵀ e_j)); Cᵀ takes glTF's x, y, z to corbel's x, −z, y.
+          const auto q = quaternionOf(toGltf(p.ex), toGltf(p.ez), -toGltf(p.ey));
+          for (double x : q) rotations.push_back(static_cast<std::int16_t>(std::lround(x * 32767)));
+        }
+        const std::size_t n = im.placements.size();
+        const int t = g.accessor(kTranslations, translations.data(), translations.size() * 4,
+                                 {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}});
+        const int r = g.accessor(kRotations, rotations.data(), rotations.size() * 2,
+                                 {{"componentType", kShort}, {"normalized", true}, {"count", n}, {"type", "VEC4"}});
+        node["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", t}, {"ROTATION", r}}}};
+        g.use("EXT_mesh_gpu_instancing", true);
+        sceneNodes.push_back(g.push("nodes", std::move(node)));
+        any = true;
       }
-      if (builder.empty()) continue;
-      json node{{"name", im.name}};
-      node["mesh"] = builder.write(g, im.name, false, node);
-      std::vector<float> translations;
-      std::vector<std::int16_t> rotations;
-      translations.reserve(im.placements.size() * 3);
-      rotations.reserve(im.placements.size() * 4);
-      for (const RigidPlacement& p : im.placements) {
-        const Vec3 t = toGltf(p.translation);
-        translations.insert(translations.end(),
-                            {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])});
-        // Column j of C R Cᵀ is C (R (Cᵀ e_j)); Cᵀ takes glTF's x, y, z to corbel's x, −z, y.
-        const auto q = quaternionOf(toGltf(p.ex), toGltf(p.ez), -toGltf(p.ey));
-        for (double x : q) rotations.push_back(static_cast<std::int16_t>(std::lround(x * 32767)));
-      }
-      const std::size_t n = im.placements.size();
-      const int t = g.accessor(kTranslations, translations.data(), translations.size() * 4,
-                               {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}});
-      const int r = g.accessor(kRotations, rotations.data(), rotations.size() * 2,
-                               {{"componentType", kShort}, {"normalized", true}, {"count", n}, {"type", "VEC4"}});
-      node["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", t}, {"ROTATION", r}}}};
-      g.use("EXT_mesh_gpu_instancing", true);
-      sceneNodes.push_back(g.push("nodes", std::move(node)));
-      any = true;
-    }
-  if (any) g.use("KHR_mesh_quantization", true);  // normals are bytes in every mesh
+    if (any) g.use("KHR_mesh_quantization", true);  // normals are bytes in every mesh
 
-  json sceneJson{{"name", "corbel"}};
-  if (!sceneNodes.empty()) sceneJson["nodes"] = std::move(sceneNodes);
-  if (const auto& geo = options.georeference; !geo.proj.empty()) {
-    json r{{"proj", geo.proj},
-           {"origin", {geo.lon, geo.lat, geo.height}},
-           {"axes", "glTF +X east, -Z north, +Y up, metres"}};
-    if (!geo.crs.empty()) r["crs"] = geo.crs;
-    sceneJson["extras"] = {{"georeference", std::move(r)}};
+    json sceneJson{{"name", "corbel"}};
+    if (!sceneNodes.empty()) sceneJson["nodes"] = std::move(sceneNodes);
+    if (const auto& geo = options.georeference; !geo.proj.empty()) {
+      json r{{"proj", geo.proj},
+             {"origin", {geo.lon, geo.lat, geo.height}},
+             {"axes", "glTF +X east, -Z north, +Y up, metres"}};
+      if (!geo.crs.empty()) r["crs"] = geo.crs;
+      sceneJson["extras"] = {{"georeference", std::move(r)}};
+    }
+    g.push("scenes", std::move(sceneJson));
+    g.doc["scene"] = 0;
+    g.write(path);
   }
-  g.push("scenes", std::move(sceneJson));
-  g.doc["scene"] = 0;
-  g.write(path);
+
+  const ExportOptions options;
+  GlbDocument g;
+  Materials materials;
+  json sceneNodes = json::array();
+  bool any = false;
+};
+
+GlbWriter::GlbWriter(const ExportOptions& options) : state_(std::make_unique<State>(options)) {}
+
+GlbWriter::~GlbWriter() = default;
+
+void GlbWriter::add(ObjectId id, Kind kind, const std::string& name, const MeshData& mesh) {
+  std::size_t rejected = 0;
+  const std::vector<int> order = manifoldFaceOrder(mesh, rejected);
+  // A face's tag and material as Scene::replaceObject reads them (none where out of range).
+  auto entry = [](const std::vector<int>& of, std::size_t f, const std::vector<std::string>& names) -> const std::string& {
+    static const std::string none;
+    const int k = f < of.size() ? of[f] : 0;
+    return k >= 0 && static_cast<std::size_t>(k) < names.size() ? names[k] : none;
+  };
+  std::vector<Vec3> poly;
+  state_->object(id, kind, name, [&](const auto& use) {
+    for (int f : order) {
+      poly.clear();
+      for (int v : mesh.faces[f]) poly.push_back(mesh.points[v]);
+      use(poly, entry(mesh.faceMaterial, f, mesh.materials), kind, entry(mesh.faceTag, f, mesh.tags));
+    }
+  });
+}
+
+void GlbWriter::write(const std::string& path) { state_->write(path); }
+
+void writeGlb(const Scene& scene, const std::string& path, const ExportOptions& options) {
+  GlbWriter::State state(options);
+  const PolyMesh& mesh = scene.mesh();
+  const auto byObject = scene.facesByObject();
+  std::vector<Vec3> poly;
+  for (const auto& [id, info] : scene.objects()) {
+    const auto found = byObject.find(id);
+    if (found == byObject.end()) continue;
+    state.object(id, info.kind, info.name, [&](const auto& use) {
+      for (auto f : found->second) {
+        poly.clear();
+        for (auto v : mesh.fv_range(f)) poly.push_back(mesh.point(v));
+        use(poly, scene.faceMaterial(f), scene.faceKind(f), scene.faceTag(f));
+      }
+    });
+  }
+  state.write(path);
 }
 
 }  // namespace corbel

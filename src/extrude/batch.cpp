@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/scene.h"
 #include "extrude/features.h"
+#include "extrude/part_validity.h"
 
 #include <algorithm>
 #include <atomic>
@@ -45,12 +46,9 @@ Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge,
       return a;
     }
     MeshData mesh = toMeshData(er.shell, item.spec, item.spec.material);
-    MeshData shellOnly;  // features apart: the shell as built, before its features are added
-    if (keepMesh && apart && !merge) shellOnly = mesh;
-    appendFeatures(mesh, item.spec, er, a.warnings);
-    Scene scene;
-    scene.replaceObject(1, Kind::Shell, item.id, mesh);
-    const ValidityReport v = scene.validate(1);
+    std::vector<PlacedFeature> features = placeFeatures(item.spec, er, a.warnings);
+    // The shell with its features, checked in parts (their faces outnumber the shell's).
+    const ValidityReport v = validateWithFeatures(mesh, features, item.id);
     a.meshFaces = v.faces;
     a.meshVertices = v.vertices;
     a.watertight = v.watertight();
@@ -60,12 +58,12 @@ Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge,
       a.error = "the shell is not a closed 2-manifold:";
       for (const auto& p : v.problems()) a.error += " " + p + ";";
     }
-    if (keepMesh && (merge || apart)) {
-      a.mesh = merge ? toMeshData(er.shell, item.spec, item.spec.material, true) : std::move(shellOnly);
-      std::vector<std::string> again;
-      appendFeatures(a.mesh, item.spec, er, again, apart ? &a.features : nullptr);
-    } else if (keepMesh) {
-      a.mesh = std::move(mesh);
+    if (keepMesh) {
+      a.mesh = merge ? toMeshData(er.shell, item.spec, item.spec.material, true) : std::move(mesh);
+      if (apart)
+        for (PlacedFeature& f : features) a.features.push_back(f.placement);
+      else
+        appendFeatures(a.mesh, features);
     }
   } catch (const InputError& e) {
     a.error = e.what();  // bad input: the same with any tolerance

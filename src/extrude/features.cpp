@@ -165,8 +165,13 @@ std::vector<FeaturePart> featureParts(FeatureKind kind, const FeatureSize& size,
   return featureParts(featurePlacement(kind, size, frame));
 }
 
-void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionResult& result,
-                    std::vector<std::string>& warnings, std::vector<FeaturePlacement>* apart) {
+namespace {
+
+// The instanced features of the extrusion in anchor order, each handed to `use` with its mesh
+// anchor; a warning for each instance whose anchor was not placed.
+template <class Use>
+void forEachFeature(const ExtrusionSpec& spec, const ExtrusionResult& result, std::vector<std::string>& warnings,
+                    Use use) {
   for (const AnchorFrame& f : result.anchors) {
     if (f.source < 0 || f.source >= static_cast<int>(spec.anchors.size())) continue;
     const MeshAnchor& m = spec.anchors[f.source];
@@ -180,21 +185,44 @@ void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionRe
                                                             : "height " + std::to_string(spec.baseZ + m.anchor.height)));
       continue;
     }
-    if (apart) {
-      apart->push_back(featurePlacement(m.feature, m.size, f));
-      continue;
-    }
-    const int tag = mesh.addTag(featureTag(m.feature));
-    for (const FeaturePart& part : featureParts(m.feature, m.size, f)) {
-      const int base = static_cast<int>(mesh.points.size());
-      const int material = mesh.addMaterial(part.material);
-      for (const Vec3& q : part.points) mesh.addPoint(q);
-      for (std::vector<int> loop : part.faces) {
-        for (int& v : loop) v += base;
-        mesh.addFace(std::move(loop), tag, material);
-      }
+    use(featurePlacement(m.feature, m.size, f));
+  }
+}
+
+void appendParts(MeshData& mesh, FeatureKind kind, const std::vector<FeaturePart>& parts) {
+  const int tag = mesh.addTag(featureTag(kind));
+  for (const FeaturePart& part : parts) {
+    const int base = static_cast<int>(mesh.points.size());
+    const int material = mesh.addMaterial(part.material);
+    for (const Vec3& q : part.points) mesh.addPoint(q);
+    for (std::vector<int> loop : part.faces) {
+      for (int& v : loop) v += base;
+      mesh.addFace(std::move(loop), tag, material);
     }
   }
+}
+
+}  // namespace
+
+void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionResult& result,
+                    std::vector<std::string>& warnings, std::vector<FeaturePlacement>* apart) {
+  forEachFeature(spec, result, warnings, [&](const FeaturePlacement& p) {
+    if (apart)
+      apart->push_back(p);
+    else
+      appendParts(mesh, p.kind, featureParts(p));
+  });
+}
+
+std::vector<PlacedFeature> placeFeatures(const ExtrusionSpec& spec, const ExtrusionResult& result,
+                                         std::vector<std::string>& warnings) {
+  std::vector<PlacedFeature> placed;
+  forEachFeature(spec, result, warnings, [&](const FeaturePlacement& p) { placed.push_back({p, featureParts(p)}); });
+  return placed;
+}
+
+void appendFeatures(MeshData& mesh, const std::vector<PlacedFeature>& features) {
+  for (const PlacedFeature& f : features) appendParts(mesh, f.placement.kind, f.parts);
 }
 
 }  // namespace corbel::extrude

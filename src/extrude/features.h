@@ -75,4 +75,17 @@ std::string featureTag(FeatureKind kind);
 void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionResult& result,
                     std::vector<std::string>& warnings, std::vector<FeaturePlacement>* apart = nullptr);
 
+// A feature of an extrusion where its anchor put it, with its parts there (world coordinates).
+struct PlacedFeature {
+  FeaturePlacement placement;
+  std::vector<FeaturePart> parts;
+};
+// Every instanced feature of the extrusion, in the order appendFeatures adds them, with the
+// same warnings for instances whose anchors were not placed.
+std::vector<PlacedFeature> placeFeatures(const ExtrusionSpec& spec, const ExtrusionResult& result,
+                                         std::vector<std::string>& warnings);
+// Appends the parts of `features` to `mesh` as appendFeatures does (their own vertices, the
+// feature's tag, each part's material).
+void appendFeatures(MeshData& mesh, const std::vector<PlacedFeature>& features);
+
 }  // namespace corbel::extrude
