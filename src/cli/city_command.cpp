@@ -157,8 +157,7 @@ int run(const CityRequest& r) {
     source = "street";
   } else {
     source = r.footprints;
-    if (r.streamBuildings > 0 && r.out.empty() && r.render.empty() && (!r.tiles.empty() || !r.tileset.empty()) &&
-        city::TownStream::handles(source, read))
+    if (r.streamBuildings > 0 && r.out.empty() && r.render.empty() && (!r.tiles.empty() || !r.tileset.empty()))
       stream.emplace(source, read);
     else
       town = city::readTownFile(source, read);
