@@ -133,6 +133,8 @@ TownStream::TownStream(std::string path, ReadOptions options)
       }
     });
     if (placement_.to) frame_.scaleError = transverseMercatorScaleError(east);
+    buildings_.shrink_to_fit();  // held to the end: not the doubling's slack too
+    streets_.shrink_to_fit();
   } catch (const InputError& e) {
     if (e.where.rfind(path_, 0) == 0) throw;
     throw InputError(e.where.empty() ? path_ : path_ + ": " + e.where, e.reason);

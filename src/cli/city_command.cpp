@@ -25,6 +25,7 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+#include <dlfcn.h>
 
 #include <chrono>
 #include <cmath>
@@ -62,9 +63,21 @@ constexpr double kTilesetPad = 0.01;
 // point its leaf is placed by (docs/city.md, "Tilesets").
 constexpr double kMaxLeafSide = 400;
 
-// Hands the pages that freed memory left unused back to the system (glibc keeps them otherwise,
-// and a streamed town's parts would leave their read JSON's pages behind each time).
+// Streamed, buildTown extrudes this many buildings a round: a round's meshes are held until
+// they are written, and the next round's are made meanwhile, so that two rounds' meshes (at full
+// detail, about 65 kB a building) are what a streamed town's peak rises and falls by.
+constexpr std::size_t kStreamRound = 256;
+
+// Hands the pages that freed memory left unused back to the system (the allocator keeps them
+// otherwise, and a streamed town's parts would leave their read JSON's pages behind each time):
+// jemalloc's, when the program runs on it (CMake's CORBEL_JEMALLOC), else glibc's.
 void releaseFreedMemory() {
+  using Mallctl = int (*)(const char*, void*, std::size_t*, void*, std::size_t);
+  static const auto mallctl = reinterpret_cast<Mallctl>(dlsym(RTLD_DEFAULT, "mallctl"));
+  if (mallctl) {
+    mallctl("arena.4096.purge", nullptr, nullptr, nullptr, 0);  // 4096: MALLCTL_ARENAS_ALL
+    return;
+  }
 #ifdef __GLIBC__
   malloc_trim(0);
 #endif
@@ -382,6 +395,7 @@ int run(const CityRequest& r) {
     // Parts of about --stream-buildings buildings in `order`, cut between tiles; each read with
     // its neighbours within the labels' reach, labelled, built, written and dropped.
     const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
+    options.chunk = std::min(options.chunk, kStreamRound);
     auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
     for (std::size_t start = 0; start < order.size();) {
       std::size_t end = std::min(order.size(), start + r.streamBuildings);
