@@ -36,6 +36,7 @@
 #include <memory>
 #include <numeric>
 #include <set>
+#include <thread>
 
 namespace corbel::cli {
 
@@ -63,10 +64,11 @@ constexpr double kTilesetPad = 0.01;
 // point its leaf is placed by (docs/city.md, "Tilesets").
 constexpr double kMaxLeafSide = 400;
 
-// Streamed, buildTown extrudes this many buildings a round: a round's meshes are held until
-// they are written, and the next round's are made meanwhile, so that two rounds' meshes (at full
-// detail, about 65 kB a building) are what a streamed town's peak rises and falls by.
-constexpr std::size_t kStreamRound = 256;
+// Streamed, buildTown extrudes this many buildings a round for each worker thread: a round's
+// meshes are held until they are written, and the next round's are made meanwhile, so that two
+// rounds' meshes (at full detail, about 65 kB a building) are what a streamed town's peak rises
+// and falls by.
+constexpr std::size_t kStreamRoundPerJob = 32;
 
 // Hands the pages that freed memory left unused back to the system (the allocator keeps them
 // otherwise, and a streamed town's parts would leave their read JSON's pages behind each time):
@@ -395,7 +397,8 @@ int run(const CityRequest& r) {
     // Parts of about --stream-buildings buildings in `order`, cut between tiles; each read with
     // its neighbours within the labels' reach, labelled, built, written and dropped.
     const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
-    options.chunk = std::min(options.chunk, kStreamRound);
+    const unsigned jobs = r.jobs ? r.jobs : std::max(1u, std::thread::hardware_concurrency());
+    options.chunk = std::min(options.chunk, kStreamRoundPerJob * jobs);
     auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
     for (std::size_t start = 0; start < order.size();) {
       std::size_t end = std::min(order.size(), start + r.streamBuildings);
