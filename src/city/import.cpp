@@ -434,6 +434,18 @@ SourceCrs geoJsonCrs(const nlohmann::json& root, const PositionBounds& p) {
                               ") are neither lon/lat nor metres about a local origin; " + kCrsHelp);
 }
 
+// The CRS of a layer read through GDAL/OGR whose document has these members (a GeoJSON file's
+// own, else none): the one given, a GeoJSON file's as when it is read directly (GDAL takes one
+// without a "crs" member as lon/lat), else the layer's; refused when it names none.
+SourceCrs layerCrs(const SourceLayer& layer, const nlohmann::json& members, const PositionBounds& p,
+                   const ReadOptions& options) {
+  if (const std::optional<SourceCrs> given = givenCrs(options)) return *given;
+  if (layer.driver == "GeoJSON") return geoJsonCrs(members, p);
+  if (layer.crs.empty())
+    throw InputError("crs", "layer \"" + layer.layer + "\" (" + layer.driver + ") names no CRS; " + kCrsHelp);
+  return SourceCrs{SourceCrs::Kind::Reproject, layer.crs, "the layer's CRS: " + crsName(layer.crs)};
+}
+
 // Who to credit: OpenStreetMap data must carry its ODbL attribution.
 std::string attributionOf(const nlohmann::json& root, const nlohmann::json& features) {
   const std::string osm = "© OpenStreetMap contributors, ODbL 1.0 (https://www.openstreetmap.org/copyright)";
@@ -575,12 +587,10 @@ Town readTown(const std::string& text, Coordinates coordinates, const CleanupOpt
 
 Town readTownFile(const std::string& path, const ReadOptions& options) {
   try {
-    if (isGeoJsonName(path) && options.layer.empty() && options.where.empty())
+    if (readsGeoJsonText(path, options))
       return readTown(readFile(path, std::size_t(1) << 31), options);
     SourceFeatures source = readOgrSource(path, {options.layer, options.where});
-    const std::optional<SourceCrs> given = givenCrs(options);
-    const bool geoJson = source.driver == "GeoJSON";
-    if (geoJson) {
+    if (source.driver == "GeoJSON") {
       // GDAL takes a GeoJSON without a "crs" member as lon/lat: the document's own members
       // ("frame", "crs", "source") say what it is, as when it is read directly.
       nlohmann::json root = parseJsonText(readFile(path, std::size_t(1) << 31));
@@ -589,14 +599,7 @@ Town readTownFile(const std::string& path, const ReadOptions& options) {
         if (it.key() != "features" && it.key() != "type") source.collection[it.key()] = it.value();
     }
     return placeTown(
-        source.collection,
-        [&](const PositionBounds& p) {
-          if (given) return *given;
-          if (geoJson) return geoJsonCrs(source.collection, p);
-          if (source.crs.empty())
-            throw InputError("crs", "layer \"" + source.layer + "\" (" + source.driver + ") names no CRS; " + kCrsHelp);
-          return SourceCrs{SourceCrs::Kind::Reproject, source.crs, "the layer's CRS: " + crsName(source.crs)};
-        },
+        source.collection, [&](const PositionBounds& p) { return layerCrs(source, source.collection, p, options); },
         options, nullptr);
   } catch (const InputError& e) {
     throw InputError(e.where.empty() ? path : path + ": " + e.where, e.reason);
@@ -670,6 +673,15 @@ Placement placementOf(const SourceCrs& crs, const PositionBounds& bounds) {
 Placement geoJsonPlacement(const nlohmann::json& members, const PositionBounds& bounds, const ReadOptions& options) {
   const std::optional<SourceCrs> given = givenCrs(options);
   return placementOf(given ? *given : geoJsonCrs(members, bounds), bounds);
+}
+
+Placement layerPlacement(const SourceLayer& layer, const nlohmann::json& members, const PositionBounds& bounds,
+                         const ReadOptions& options) {
+  return placementOf(layerCrs(layer, members, bounds, options), bounds);
+}
+
+bool readsGeoJsonText(const std::string& path, const ReadOptions& options) {
+  return isGeoJsonName(path) && options.layer.empty() && options.where.empty();
 }
 
 Town placePart(nlohmann::json& collection, const Placement& placement, const ReadOptions& options, double* east) {

@@ -3,6 +3,7 @@
 // reads: buildings in a local metric frame (city/local_frame.h), street centrelines, and a
 // clean-up of each outline whose every change or refusal is reported.
 #include "city/local_frame.h"
+#include "city/ogr_source.h"
 #include "core/geometry.h"
 
 #include <nlohmann/json.hpp>
@@ -151,6 +152,14 @@ Placement placementOf(const SourceCrs& crs, const PositionBounds& bounds);
 // The placement of a GeoJSON document with these members (all but "features"), as readTown
 // decides it (options.crs first, then "frame", "crs", then the positions).
 Placement geoJsonPlacement(const nlohmann::json& members, const PositionBounds& bounds, const ReadOptions& options);
+// The placement of a layer read through GDAL/OGR (city/ogr_source.h) whose positions span
+// `bounds`, as readTownFile decides it; `members` are a GeoJSON document's members but
+// "features" (its "frame" and "crs"), else none.
+Placement layerPlacement(const SourceLayer& layer, const nlohmann::json& members, const PositionBounds& bounds,
+                         const ReadOptions& options);
+// Whether readTownFile reads `path` itself as GeoJSON text (a .geojson or .json file, without a
+// layer or a where-clause) rather than through GDAL/OGR.
+bool readsGeoJsonText(const std::string& path, const ReadOptions& options);
 // The streets and buildings of a FeatureCollection in source coordinates, placed (and cleaned
 // unless asked not to be) as readTown does; `east` gets the largest |x| of a reprojected
 // position (the scale error's argument).

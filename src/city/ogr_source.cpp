@@ -90,13 +90,23 @@ nlohmann::json field(const OGRFeature& f, int i) {
 }  // namespace
 
 SourceFeatures readOgrSource(const std::string& path, const SourceOptions& options) {
+  SourceFeatures out;
+  out.collection = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
+  nlohmann::json& features = out.collection["features"];
+  static_cast<SourceLayer&>(out) =
+      forEachOgrFeature(path, options, [&](nlohmann::json& f) { features.push_back(std::move(f)); });
+  return out;
+}
+
+SourceLayer forEachOgrFeature(const std::string& path, const SourceOptions& options,
+                              const std::function<void(nlohmann::json&)>& visit) {
   registerDrivers();
   const QuietGdal quiet;
   CPLErrorReset();
   std::unique_ptr<GDALDataset, DatasetCloser> data(
       GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!data) throw InputError(path, lastError("GDAL/OGR cannot open it as a vector source"));
-  SourceFeatures out;
+  SourceLayer out;
   out.driver = data->GetDriver() ? data->GetDriver()->GetDescription() : "";
   OGRLayer* layer = nullptr;
   const int layers = data->GetLayerCount();
@@ -126,11 +136,20 @@ SourceFeatures readOgrSource(const std::string& path, const SourceOptions& optio
     if (srs->exportToWkt(&wkt, wktOptions) == OGRERR_NONE && wkt) out.crs = wkt;
     CPLFree(wkt);
   }
-  out.collection = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
-  nlohmann::json& features = out.collection["features"];
+  // GDAL's failures while reading; those of `visit`'s own work (PROJ, say) are not the source's.
+  auto failed = [&] {
+    if (CPLGetLastErrorType() < CE_Failure) return;
+    // Some drivers (GeoPackage) check a filter only when they read.
+    if (!options.where.empty())
+      throw InputError("where", "\"" + options.where + "\" on layer \"" + out.layer + "\": " + lastError("GDAL failed"));
+    throw InputError(path, "reading layer \"" + out.layer + "\": " + lastError("GDAL failed"));
+  };
   layer->ResetReading();
   CPLErrorReset();
-  for (auto& f : *layer) {
+  while (true) {
+    const OGRFeatureUniquePtr f(layer->GetNextFeature());
+    failed();
+    if (!f) break;
     nlohmann::json props = nlohmann::json::object();
     for (int i = 0; i < f->GetFieldCount(); ++i)
       if (f->IsFieldSetAndNotNull(i)) props[f->GetFieldDefnRef(i)->GetNameRef()] = field(*f, i);
@@ -140,13 +159,8 @@ SourceFeatures readOgrSource(const std::string& path, const SourceOptions& optio
       feature["id"] = *id;
     feature["properties"] = std::move(props);
     feature["geometry"] = geometry(f->GetGeometryRef());
-    features.push_back(std::move(feature));
-  }
-  if (CPLGetLastErrorType() >= CE_Failure) {
-    // Some drivers (GeoPackage) check a filter only when they read.
-    if (!options.where.empty())
-      throw InputError("where", "\"" + options.where + "\" on layer \"" + out.layer + "\": " + lastError("GDAL failed"));
-    throw InputError(path, "reading layer \"" + out.layer + "\": " + lastError("GDAL failed"));
+    visit(feature);
+    CPLErrorReset();
   }
   return out;
 }

@@ -4,6 +4,7 @@
 // FeatureCollection in the source's own coordinates, with the layer's CRS.
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,11 +15,15 @@ struct SourceOptions {
   std::string where;  // OGR SQL attribute filter ("" = every feature), e.g. "height > 3"
 };
 
-struct SourceFeatures {
+// What a source's layer is.
+struct SourceLayer {
+  std::string crs;     // the layer's CRS as WKT; "" when it names none
+  std::string driver;  // GDAL's short name of the format ("GPKG", "ESRI Shapefile", ...)
+  std::string layer;   // the layer read
+};
+
+struct SourceFeatures : SourceLayer {
   nlohmann::json collection;  // {"type": "FeatureCollection", "features": [...]}
-  std::string crs;            // the layer's CRS as WKT; "" when it names none
-  std::string driver;         // GDAL's short name of the format ("GPKG", "ESRI Shapefile", ...)
-  std::string layer;          // the layer read
 };
 
 // Reads `path` (a file, a folder or any dataset name GDAL opens). Polygons, multipolygons and
@@ -27,6 +32,13 @@ struct SourceFeatures {
 // it). Throws InputError naming the path, the layer or "where" when GDAL cannot open the source,
 // the layer is not there or ambiguous, or the filter is not valid OGR SQL.
 SourceFeatures readOgrSource(const std::string& path, const SourceOptions& options = {});
+
+// The same features one at a time: `visit` gets each as readOgrSource would list it, in the
+// layer's order, and may keep or drop it; only the feature being visited is held (GDAL's drivers
+// read Shapefile, GeoPackage and FlatGeobuf a feature at a time). Throws as readOgrSource does,
+// and passes on what `visit` throws.
+SourceLayer forEachOgrFeature(const std::string& path, const SourceOptions& options,
+                              const std::function<void(nlohmann::json&)>& visit);
 
 // The file extensions of every vector format this GDAL reads (".geojson", ".shp", ".gpkg",
 // ".fgb", ...), as its drivers declare them, GeoJSON's first: what a footprint dialog offers.

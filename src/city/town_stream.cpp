@@ -59,6 +59,19 @@ void nameByPlace(nlohmann::json& f, std::size_t place) {
   f["id"] = std::to_string(place);
 }
 
+// What the reader says of a building of the part's feature `from` (its notes and problem name
+// "features[from]"), said of the feature's place in the source, as a whole read says it.
+void renumber(Building& b, std::size_t from, std::size_t to) {
+  if (from == to) return;
+  const std::string was = "features[" + std::to_string(from) + "]", is = "features[" + std::to_string(to) + "]";
+  auto fix = [&](std::string& text) {
+    for (std::size_t at = text.find(was); at != std::string::npos; at = text.find(was, at + is.size()))
+      text.replace(at, was.size(), is);
+  };
+  for (std::string& note : b.notes) fix(note);
+  fix(b.problem);
+}
+
 nlohmann::json collectionOf(const nlohmann::json& members) {
   nlohmann::json c = members;
   c["features"] = nlohmann::json::array();
@@ -67,32 +80,34 @@ nlohmann::json collectionOf(const nlohmann::json& members) {
 
 }  // namespace
 
-bool TownStream::handles(const std::string& path, const ReadOptions& options) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return (ext == ".geojson" || ext == ".json") && options.layer.empty() && options.where.empty();
-}
-
-TownStream::TownStream(std::string path, ReadOptions options) : path_(std::move(path)), options_(std::move(options)) {
+TownStream::TownStream(std::string path, ReadOptions options)
+    : path_(std::move(path)), options_(std::move(options)), ogr_(!readsGeoJsonText(path_, options_)) {
   try {
     // Pass 1: the bounds of every position, for the frame, and the credit.
     PositionBounds bounds;
     std::string credit;
-    members_ = membersOf(forEachFeature(path_,
-                                        [&](nlohmann::json& f) {
-                                          if (credit.empty()) credit = creditOf(nlohmann::json::object(), f);
-                                          addPositions(bounds, f);
-                                        }),
-                         path_);
+    auto pass1 = [&](nlohmann::json& f) {
+      if (credit.empty()) credit = creditOf(nlohmann::json::object(), f);
+      addPositions(bounds, f);
+    };
+    SourceLayer layer;
+    if (!ogr_) {
+      members_ = membersOf(forEachFeature(path_, pass1), path_);
+    } else {
+      layer = forEachOgrFeature(path_, {options_.layer, options_.where}, pass1);
+      // A GeoJSON file's own members say what its coordinates are, as when it is read whole.
+      members_ = layer.driver == "GeoJSON" ? membersOf(forEachFeature(path_, [](nlohmann::json&) {}), path_)
+                                           : nlohmann::json{{"type", "FeatureCollection"}};
+    }
     // The document's own credit first, as a whole read gives it.
     if (const std::string own = creditOf(members_, nullptr); !own.empty()) credit = own;
     attribution_ = credit;
-    placement_ = geoJsonPlacement(members_, bounds, options_);
+    placement_ = ogr_ ? layerPlacement(layer, members_, bounds, options_) : geoJsonPlacement(members_, bounds, options_);
     frame_ = placement_.frame;
     // Pass 2: each feature placed and cleaned alone; of its buildings only their centres and boxes kept.
     double east = 0;
     std::size_t place = 0, feature = 0;
-    forEachFeature(path_, [&](nlohmann::json& f) {
+    forEach([&](nlohmann::json& f) {
       const std::uint32_t at = static_cast<std::uint32_t>(feature++);
       const bool line = isLineFeature(f);
       if (!line) nameByPlace(f, place++);
@@ -118,10 +133,19 @@ TownStream::TownStream(std::string path, ReadOptions options) : path_(std::move(
       }
     });
     if (placement_.to) frame_.scaleError = transverseMercatorScaleError(east);
+    buildings_.shrink_to_fit();  // held to the end: not the doubling's slack too
+    streets_.shrink_to_fit();
   } catch (const InputError& e) {
     if (e.where.rfind(path_, 0) == 0) throw;
     throw InputError(e.where.empty() ? path_ : path_ + ": " + e.where, e.reason);
   }
+}
+
+void TownStream::forEach(const std::function<void(nlohmann::json&)>& visit) const {
+  if (ogr_)
+    forEachOgrFeature(path_, {options_.layer, options_.where}, visit);
+  else
+    forEachFeature(path_, visit);
 }
 
 Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double reach,
@@ -158,14 +182,16 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
   // The wanted features read again, in the file's order.
   nlohmann::json collection = collectionOf(members_);
   std::vector<std::size_t> first;  // each read feature's first building
+  std::vector<std::size_t> placeOf;  // each read feature's place among the source's footprint features
   std::size_t place = 0, feature = 0, building = 0;
-  forEachFeature(path_, [&](nlohmann::json& f) {
+  forEach([&](nlohmann::json& f) {
     const std::size_t at = feature++;
     const bool line = isLineFeature(f);
     if (!line) nameByPlace(f, place++);
     if (line || at >= features.size() || !features[at]) return;
     while (building < buildings_.size() && buildings_[building].feature < at) ++building;
     first.push_back(building);
+    placeOf.push_back(place - 1);
     collection["features"].push_back(std::move(f));
   });
   Town t = placePart(collection, placement_, options_);
@@ -181,6 +207,7 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
       if (k >= t.buildings.size()) throw InputError(path_, "changed while it was read");
       Building& b = t.buildings[k++];
       if (!wanted[g]) continue;
+      renumber(b, f, placeOf[f]);
       indices.push_back(g);
       out.buildings.push_back(std::move(b));
     }

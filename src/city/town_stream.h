@@ -1,5 +1,5 @@
 #pragma once
-// A GeoJSON footprint source read in parts (corbel-cli city with --tiles or --tileset,
+// A footprint source read in parts (corbel-cli city with --tiles or --tileset,
 // docs/city.md "Memory"): one pass finds the frame, a second keeps of each building only what a
 // tiling needs (its centre, box and margin mark), and each part is read again from the file
 // with its neighbours, so that memory grows with a part, not with the town. A part's buildings
@@ -8,6 +8,7 @@
 #include "city/import.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,12 @@ namespace corbel::city {
 
 class TownStream {
  public:
-  // Whether `path` is read in parts: a GeoJSON file (.geojson, .json) read without a layer or
-  // where-clause (those go through GDAL/OGR whole).
-  static bool handles(const std::string& path, const ReadOptions& options);
-
-  // Reads the file twice, holding one feature at a time. Throws InputError naming the path as
-  // readTownFile does (not JSON, not a FeatureCollection, no CRS); a feature that is not a JSON
-  // object is refused here (a whole read reports it as that building's problem).
+  // Reads the source twice, holding one feature at a time: a GeoJSON file by itself, any other
+  // source (or a GeoJSON file with options.layer or options.where) through GDAL/OGR
+  // (city/ogr_source.h), as readTownFile reads them. Throws InputError naming the path as
+  // readTownFile does (not JSON, not a FeatureCollection, no CRS, no such layer, a bad
+  // where-clause); a feature of a GeoJSON file that is not a JSON object is refused here (a whole
+  // read reports it as that building's problem).
   TownStream(std::string path, ReadOptions options);
 
   const Frame& frame() const { return frame_; }
@@ -45,8 +45,12 @@ class TownStream {
     std::uint32_t feature = 0;  // the file's feature it came from
     bool margin = false;
   };
+  // Calls `visit` on each of the source's features in order, one at a time.
+  void forEach(const std::function<void(nlohmann::json&)>& visit) const;
+
   std::string path_;
   ReadOptions options_;
+  bool ogr_ = false;  // read through GDAL/OGR
   nlohmann::json members_;  // the document's members but "features"
   Placement placement_;
   Frame frame_;

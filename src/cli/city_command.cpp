@@ -26,6 +26,7 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+#include <dlfcn.h>
 
 #include <chrono>
 #include <cmath>
@@ -36,6 +37,7 @@
 #include <memory>
 #include <numeric>
 #include <set>
+#include <thread>
 
 namespace corbel::cli {
 
@@ -63,9 +65,22 @@ constexpr double kTilesetPad = 0.01;
 // point its leaf is placed by (docs/city.md, "Tilesets").
 constexpr double kMaxLeafSide = 400;
 
-// Hands the pages that freed memory left unused back to the system (glibc keeps them otherwise,
-// and a streamed town's parts would leave their read JSON's pages behind each time).
+// Streamed, buildTown extrudes this many buildings a round for each worker thread: a round's
+// meshes are held until they are written, and the next round's are made meanwhile, so that two
+// rounds' meshes (at full detail, about 65 kB a building) are what a streamed town's peak rises
+// and falls by.
+constexpr std::size_t kStreamRoundPerJob = 32;
+
+// Hands the pages that freed memory left unused back to the system (the allocator keeps them
+// otherwise, and a streamed town's parts would leave their read JSON's pages behind each time):
+// jemalloc's, when the program runs on it (CMake's CORBEL_JEMALLOC), else glibc's.
 void releaseFreedMemory() {
+  using Mallctl = int (*)(const char*, void*, std::size_t*, void*, std::size_t);
+  static const auto mallctl = reinterpret_cast<Mallctl>(dlsym(RTLD_DEFAULT, "mallctl"));
+  if (mallctl) {
+    mallctl("arena.4096.purge", nullptr, nullptr, nullptr, 0);  // 4096: MALLCTL_ARENAS_ALL
+    return;
+  }
 #ifdef __GLIBC__
   malloc_trim(0);
 #endif
@@ -158,8 +173,7 @@ int run(const CityRequest& r) {
     source = "street";
   } else {
     source = r.footprints;
-    if (r.streamBuildings > 0 && r.out.empty() && r.render.empty() && (!r.tiles.empty() || !r.tileset.empty()) &&
-        city::TownStream::handles(source, read))
+    if (r.streamBuildings > 0 && r.out.empty() && r.render.empty() && (!r.tiles.empty() || !r.tileset.empty()))
       stream.emplace(source, read);
     else
       town = city::readTownFile(source, read);
@@ -394,6 +408,8 @@ int run(const CityRequest& r) {
     // Parts of about --stream-buildings buildings in `order`, cut between tiles; each read with
     // its neighbours within the labels' reach, labelled, built, written and dropped.
     const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
+    const unsigned jobs = r.jobs ? r.jobs : std::max(1u, std::thread::hardware_concurrency());
+    options.chunk = std::min(options.chunk, kStreamRoundPerJob * jobs);
     auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
     for (std::size_t start = 0; start < order.size();) {
       std::size_t end = std::min(order.size(), start + r.streamBuildings);

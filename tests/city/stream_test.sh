@@ -9,14 +9,15 @@
 # byte for byte those of the whole read. The same on the footprints turned into RFC 7946 lon/lat
 # by the frame's own formulas (so the frame comes from the positions and they are reprojected),
 # and the streamed tileset read as a 3D Tiles client reads it against the whole town's glb.
-# Bad input (broken JSON, a feature that is not an object, no FeatureCollection) is refused with
-# the file named.
+# The same for a Shapefile, a GeoPackage layer and a FlatGeobuf made by ogr2ogr, and with
+# --where. Bad input (broken JSON, a feature that is not an object, no FeatureCollection, a layer
+# not named, a bad filter) is refused with the file named.
 set -euo pipefail
 cli=$1
 footprints=$2/moosburg_de.geojson
 source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+trap '[[ -n ${KEEP:-} ]] || rm -rf "$work"' EXIT
 for m in @loaders.gl/3d-tiles @loaders.gl/core @loaders.gl/gltf; do
   [[ -d "$source_dir/tools/node/node_modules/$m" ]] || { echo "$m is not installed: run bash scripts/setup"; exit 1; }
 done
@@ -58,6 +59,28 @@ compare tiles "$footprints"
 n=$(ls "$work/tiles-part" | wc -l)
 (( n >= 16 )) || { echo "only $n tiles"; exit 1; }
 
+# Other formats, read through GDAL/OGR feature by feature: the footprints within 300 m written by
+# ogr2ogr as a Shapefile in UTM, a GeoPackage in lon/lat beside a second layer (so --layer must
+# name it) and a FlatGeobuf in web Mercator; each tileset streamed is the one read whole, with
+# --where too.
+command -v ogr2ogr >/dev/null || { echo "ogr2ogr is not installed: run bash scripts/setup"; exit 1; }
+frame="+proj=eqc +lat_ts=$lat +lat_0=$lat +lon_0=$lon +x_0=0 +y_0=0 +R=$radius +units=m +no_defs"
+ogr() { ogr2ogr -s_srs "$frame" -spat -300 -300 300 300 "$@" "$footprints" 2>/dev/null; }
+ogr -f "ESRI Shapefile" -t_srs EPSG:32632 "$work/utm.shp"
+ogr -f GPKG -t_srs EPSG:4326 -nln buildings "$work/lonlat.gpkg"
+ogr -f GPKG -t_srs EPSG:4326 -nln other -update "$work/lonlat.gpkg"
+ogr -f FlatGeobuf -t_srs EPSG:3857 "$work/mercator.fgb"
+ogr2ogr -f GeoJSON -spat -300 -300 300 300 "$work/centre.geojson" "$footprints"  # in the file's frame
+out=(--tileset @ --tile-buildings 16)
+compare shapefile "$work/utm.shp"
+compare geopackage "$work/lonlat.gpkg" --layer buildings
+compare flatgeobuf-where "$work/mercator.fgb" --where "area_m2 > 100"
+compare geojson-where "$work/centre.geojson" --where "area_m2 > 100"
+grep -q '"buildings":[1-9]' "$work/flatgeobuf-where-part.json" || { echo "the filter left nothing"; exit 1; }
+[[ $(node -p 'JSON.parse(require("fs").readFileSync(process.argv[1])).buildings' "$work/flatgeobuf-where-part.json") -lt \
+   $(node -p 'JSON.parse(require("fs").readFileSync(process.argv[1])).buildings' "$work/shapefile-part.json") ]] ||
+  { echo "--where filtered nothing out"; exit 1; }
+
 # The streamed tileset as a client reads it, against the same buildings written whole.
 "$cli" city "$footprints" --style "$style" --seed 1 --jobs 2 --around 0,0,300 --detail massing --out "$work/whole.glb" \
   >/dev/null 2>&1 || [[ $? == 1 ]] || { echo "city --out failed"; exit 1; }
@@ -75,4 +98,11 @@ refused() {  # TEXT EXPECTED
 refused '{"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": ' "not JSON"
 refused '{"type": "FeatureCollection", "features": [null]}' "not an object"
 refused '{"type": "Feature", "geometry": null}' "FeatureCollection"
+# Through GDAL/OGR: a layer not there, a filter that is not OGR SQL.
+"$cli" city "$work/lonlat.gpkg" --style "$style" --tileset "$work/bad-layer" 2>"$work/err" >/dev/null &&
+  { echo "accepted a GeoPackage of two layers without --layer"; exit 1; }
+grep -q "choose one with --layer" "$work/err" || { echo "two layers: $(cat "$work/err")"; exit 1; }
+"$cli" city "$work/utm.shp" --style "$style" --where "no such field >" --tileset "$work/bad-where" 2>"$work/err" >/dev/null &&
+  { echo "accepted a bad --where"; exit 1; }
+grep -q "where" "$work/err" || { echo "bad --where: $(cat "$work/err")"; exit 1; }
 echo "stream: ok"

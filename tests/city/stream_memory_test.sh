@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# A streamed town's peak memory does not grow with its number of buildings (docs/city.md,
+# "Memory"):
+#   stream_memory_test.sh CORBEL_CLI FOOTPRINTS_DIR
+# The Moosburg buildings within 120 m of its origin (the shared footprints), once and 16 times
+# side by side (1 km apart, ids suffixed), built streamed into a tileset in parts of 64: the peak
+# resident memory (GNU time's) of the 16 copies may exceed the one copy's by at most 2 kB for
+# each building added. What a streamed town holds of each building to the end is its place in
+# the tiling, about 100 bytes; a whole read holds several kB of each (footprint, labels,
+# properties), and the same two read whole must grow by more than the bound, or the test could
+# not tell the two apart. jemalloc is asked to hand freed pages back at once, so that the peak
+# is what is held, not what its 10 s decay has not yet returned (which depends on the timing).
+set -euo pipefail
+cli=$1
+footprints=$2/moosburg_de.geojson
+source_dir=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+[[ -x /usr/bin/time ]] || { echo "GNU time is not installed (Debian's time): run bash scripts/setup"; exit 1; }
+[[ -f "$footprints" ]] || { echo "no $footprints"; exit 1; }
+style=$source_dir/assets/styles/oldtown.json
+node -e '
+  const fs = require("fs"), fc = JSON.parse(fs.readFileSync(process.argv[1]));
+  const flat = (c) => Array.isArray(c[0][0]) ? c.flatMap(flat) : c;
+  const near = fc.features.filter((f) => {
+    const p = flat(f.geometry.coordinates), n = p.length;
+    const x = p.reduce((s, q) => s + q[0], 0) / n, y = p.reduce((s, q) => s + q[1], 0) / n;
+    return Math.hypot(x, y) <= 120;
+  });
+  for (const copies of [1, 16]) {
+    const out = [];
+    for (let k = 0; k < copies; ++k)
+      for (const f of near) {
+        const g = JSON.parse(JSON.stringify(f));
+        const move = (c) => Array.isArray(c[0]) ? c.map(move) : [c[0] + 1000 * k, c[1]];
+        g.geometry.coordinates = move(g.geometry.coordinates);
+        if (k) g.properties.source_id += "/" + k;
+        out.push(g);
+      }
+    fs.writeFileSync(`${process.argv[2]}/x${copies}.geojson`, JSON.stringify({...fc, features: out}));
+  }' "$footprints" "$work"
+
+peak() {  # NAME SOURCE STREAM-BUILDINGS: prints the peak resident memory, kB
+  MALLOC_CONF=dirty_decay_ms:0,muzzy_decay_ms:0 /usr/bin/time -f %M -o "$work/$1.rss" "$cli" city "$2" --style "$style" --seed 1 --jobs 2 --detail massing \
+    --tileset "$work/$1" --tile-buildings 16 --stream-buildings "$3" >"$work/$1.json" 2>/dev/null ||
+    [[ $? == 1 ]] || { echo "$1: city failed"; exit 1; }
+  tail -1 "$work/$1.rss"
+}
+count() { node -p 'JSON.parse(require("fs").readFileSync(process.argv[1])).buildings' "$work/$1.json"; }
+one=$(peak one "$work/x1.geojson" 64)
+many=$(peak many "$work/x16.geojson" 64)
+grep -q '"streamed":true' "$work/many.json" || { echo "not streamed: $(cat "$work/many.json")"; exit 1; }
+added=$(( $(count many) - $(count one) ))
+(( added > 1000 )) || { echo "only $added buildings added"; exit 1; }
+bound=$(( added * 2000 / 1024 ))  # kB
+wholeOne=$(peak whole-one "$work/x1.geojson" 0)
+wholeMany=$(peak whole-many "$work/x16.geojson" 0)
+echo "streamed: $one kB for $(count one) buildings, $many kB for $(count many); read whole: $wholeOne kB, $wholeMany kB; bound +$bound kB"
+(( wholeMany - wholeOne > bound )) || { echo "read whole, the peak grew by only $((wholeMany - wholeOne)) kB: the bound tells nothing"; exit 1; }
+(( many - one <= bound )) || { echo "streamed, the peak grew by $((many - one)) kB, more than $bound kB"; exit 1; }
+echo "stream memory: ok"
