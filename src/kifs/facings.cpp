@@ -44,7 +44,7 @@ struct Line {
 
 }  // namespace
 
-Facings facingsOf(const TriangleSoup& soup, const glm::dvec3& origin, const glm::dvec2& axis) {
+Facings facingsOf(const TriangleSoup& soup, const glm::dvec3& origin, const glm::dvec2& axis, double shortest) {
   auto plan = [&](const glm::dvec3& world) {
     const glm::dvec3 d = world - origin;
     return glm::dvec3(axis.x * d.x + axis.y * d.y, -axis.y * d.x + axis.x * d.y, d.z);
@@ -81,7 +81,7 @@ Facings facingsOf(const TriangleSoup& soup, const glm::dvec3& origin, const glm:
     std::sort(line.spans.begin(), line.spans.end());
     const glm::dvec2 normal(std::cos(line.psi), std::sin(line.psi)), tangent(-normal.y, normal.x);
     auto add = [&](double lo, double hi) {
-      if (hi - lo < kMinWallLength) return;
+      if (hi - lo < shortest) return;
       walls.push_back({{line.offset * normal + lo * tangent, line.offset * normal + hi * tangent, 0}, turnOf(line.psi), hi - lo});
     };
     double lo = line.spans[0].first, hi = line.spans[0].second;

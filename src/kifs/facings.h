@@ -18,7 +18,6 @@ namespace corbel::kifs {
 inline constexpr int kMaxWalls = 32;    // walls kept for choosing a facing (the shader's arrays)
 inline constexpr int kMaxFacings = 8;
 inline constexpr double kFacingToleranceDeg = 2.0;
-inline constexpr double kMinWallLength = 0.1;  // metres in plan; shorter walls are trim, not facades
 inline constexpr double kWallEndTrim = 0.01;   // metres taken off each end of a wall (facings.cpp)
 
 struct Facings {
@@ -34,8 +33,10 @@ struct Facings {
 
 // The facings of a shell's walls: the triangles (world space) whose normal is within 45° of
 // horizontal, seen in the frame that `origin` and `axis` (cos, sin of its turn) define, merged
-// where they lie on one line in plan.
-Facings facingsOf(const TriangleSoup& soup, const glm::dvec3& origin, const glm::dvec2& axis);
+// where they lie on one line in plan. Walls shorter than `shortest` (in plan) are left out: the
+// follower passes its facade period w, so a wall too short to hold one bay (a bay window's
+// cheek, a dormer, a window's reveal) takes the facing of the walls around it.
+Facings facingsOf(const TriangleSoup& soup, const glm::dvec3& origin, const glm::dvec2& axis, double shortest);
 
 // Sets the field's frame (origin and turn, the turn followed by facings.main), its walls and
 // its facings' turns.

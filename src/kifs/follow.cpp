@@ -97,7 +97,7 @@ std::shared_ptr<const MassField> bakeFollowedMass(const DocObject& mass, const T
     const Vec3& t = mass.placement.translation;
     const auto [c, s] = cosSinDegrees(mass.placement.rotation_deg);
     const glm::dvec3 origin(t[0], t[1], t[2]);
-    setFrame(*field, origin, glm::dvec2(c, s), facingsOf(triangles, origin, glm::dvec2(c, s)));
+    setFrame(*field, origin, glm::dvec2(c, s), facingsOf(triangles, origin, glm::dvec2(c, s), params.facade.period));
     return field;
   } catch (const Cancelled&) {
     throw;

@@ -51,7 +51,8 @@ render::Image renderExample(const std::string& name, bool textures = false) {
   BBox box;
   for (const auto& o : p.document.objects)
     if (o.visible) box.add(scene.bounds(o.id));
-  const render::RaymarchedKifs kifs = render::raymarchedKifs(p.document, settings.visible, &scene);
+  const render::RaymarchedKifs kifs =
+      render::raymarchedKifs(p.document, settings.visible, &scene, city::buildingMeshes(towns));
   for (const std::string& e : kifs.errors) ADD_FAILURE() << name << ": " << e;
   box.add(kifs.bounds);
   render::OrbitCamera camera;

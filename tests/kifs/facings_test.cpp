@@ -59,15 +59,15 @@ std::vector<glm::dvec2> slantedPlan() {
 TEST(KifsFacings, ATurnedRectangleHasOneFacingThatTurnsTheFrame) {
   std::vector<glm::dvec2> plan;
   for (const glm::dvec2& p : std::vector<glm::dvec2>{{-6, -6}, {6, -6}, {6, 6}, {-6, 6}}) plan.push_back(rotated(p, 30));
-  const Facings f = facingsOf(test::prism(plan, 22.8), glm::dvec3(0.0), glm::dvec2(1, 0));
+  const Facings f = facingsOf(test::prism(plan, 22.8), glm::dvec3(0.0), glm::dvec2(1, 0), 6.0);
   EXPECT_NEAR(f.main, 30 * kDeg, 1e-12);
   EXPECT_TRUE(f.turns.empty());
   EXPECT_TRUE(f.walls.empty());
   // Seen from a frame already turned by 10°, the walls turn by 20° more.
-  EXPECT_NEAR(facingsOf(test::prism(plan, 22.8), glm::dvec3(0.0), glm::dvec2(std::cos(10 * kDeg), std::sin(10 * kDeg))).main,
+  EXPECT_NEAR(facingsOf(test::prism(plan, 22.8), glm::dvec3(0.0), glm::dvec2(std::cos(10 * kDeg), std::sin(10 * kDeg)), 6.0).main,
               20 * kDeg, 1e-12);
   // An axis-aligned box turns by exactly nothing.
-  EXPECT_EQ(facingsOf(test::prism({{-6, -6}, {6, -6}, {6, 6}, {-6, 6}}, 22.8), glm::dvec3(0.0), glm::dvec2(1, 0)).main, 0.0);
+  EXPECT_EQ(facingsOf(test::prism({{-6, -6}, {6, -6}, {6, 6}, {-6, 6}}, 22.8), glm::dvec3(0.0), glm::dvec2(1, 0), 6.0).main, 0.0);
 }
 
 // The box preset's own box (12 × 12 × 22.8 m) turned by 30° as geometry: at the turned image
@@ -100,7 +100,7 @@ TEST(KifsFacings, OnATurnedBoxTheFacadeIsTheBoxPresetsTurned) {
 }
 
 TEST(KifsFacings, AWallAt30DegreesIsAFacingOfItsOwn) {
-  const Facings f = facingsOf(test::prism(slantedPlan(), 12), glm::dvec3(0.0), glm::dvec2(1, 0));
+  const Facings f = facingsOf(test::prism(slantedPlan(), 12), glm::dvec3(0.0), glm::dvec2(1, 0), 6.0);
   EXPECT_NEAR(f.main, -30 * kDeg, 1e-12);  // the longest wall's
   ASSERT_EQ(f.turns.size(), 2u);
   EXPECT_NEAR(f.turns[0], 0.0, 1e-12);
@@ -108,6 +108,19 @@ TEST(KifsFacings, AWallAt30DegreesIsAFacingOfItsOwn) {
   ASSERT_EQ(f.walls.size(), 4u);
   EXPECT_EQ(f.walls[0].facing, 0);  // CD
   for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(f.walls[i].facing, 1);
+}
+
+// A wall shorter than the facade period cannot hold a bay: a 2 m chamfer at 45° on a 20 × 10 m
+// plan is a facing of its own only when shorter walls count.
+TEST(KifsFacings, AWallShorterThanOneBayTakesTheFacingAroundIt) {
+  const double cut = std::sqrt(2.0);  // the chamfer's legs: 2 m along the diagonal
+  const TriangleSoup plan = test::prism({{0, 0}, {20, 0}, {20, 10 - cut}, {20 - cut, 10}, {0, 10}}, 9);
+  const Facings bays = facingsOf(plan, glm::dvec3(0.0), glm::dvec2(1, 0), 6.0);
+  EXPECT_EQ(bays.main, 0.0);
+  EXPECT_TRUE(bays.turns.empty());
+  const Facings every = facingsOf(plan, glm::dvec3(0.0), glm::dvec2(1, 0), 1.0);
+  ASSERT_EQ(every.turns.size(), 2u);
+  EXPECT_NEAR(std::abs(every.turns[1]), 45 * kDeg, 1e-12);
 }
 
 // Along every wall of the slanted plan, 0.3 m inside it and mid-storey: the id across the wall
