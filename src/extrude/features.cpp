@@ -189,6 +189,8 @@ void forEachFeature(const ExtrusionSpec& spec, const ExtrusionResult& result, st
   }
 }
 
+}  // namespace
+
 void appendParts(MeshData& mesh, FeatureKind kind, const std::vector<FeaturePart>& parts) {
   const int tag = mesh.addTag(featureTag(kind));
   for (const FeaturePart& part : parts) {
@@ -201,8 +203,6 @@ void appendParts(MeshData& mesh, FeatureKind kind, const std::vector<FeaturePart
     }
   }
 }
-
-}  // namespace
 
 void appendFeatures(MeshData& mesh, const ExtrusionSpec& spec, const ExtrusionResult& result,
                     std::vector<std::string>& warnings, std::vector<FeaturePlacement>* apart) {

@@ -69,6 +69,9 @@ std::vector<FeaturePart> featureParts(const FeaturePlacement& placement, bool ow
 // Tag of a feature's faces ("door", "window", "roof_window", "chimney_pot").
 std::string featureTag(FeatureKind kind);
 
+// Appends a feature's parts to `mesh`: their own vertices, the kind's tag, each part's material.
+void appendParts(MeshData& mesh, FeatureKind kind, const std::vector<FeaturePart>& parts);
+
 // Appends every instanced feature of the extrusion to `mesh` (its own vertices, tag and
 // materials), or with `apart`, its placement there in place of its parts; an instance whose
 // anchor was not placed adds a warning naming the feature.

@@ -163,16 +163,7 @@ MeshData openingsMesh(const std::vector<Opening>& openings) {
     frame.up = Vec3(0, 0, 1);
     frame.along = Vec3(-frame.normal[1], frame.normal[0], 0);  // normal × along = up
     frame.instanced = true;
-    const int tag = mesh.addTag(extrude::featureTag(o.kind));
-    for (const extrude::FeaturePart& part : extrude::featureParts(o.kind, o.size, frame)) {
-      const int base = static_cast<int>(mesh.points.size());
-      const int material = mesh.addMaterial(part.material);
-      for (const Vec3& q : part.points) mesh.addPoint(q);
-      for (std::vector<int> loop : part.faces) {
-        for (int& v : loop) v += base;
-        mesh.addFace(std::move(loop), tag, material);
-      }
-    }
+    extrude::appendParts(mesh, o.kind, extrude::featureParts(o.kind, o.size, frame));
   }
   return mesh;
 }
