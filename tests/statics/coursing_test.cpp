@@ -149,17 +149,24 @@ TEST(Coursing, HexagonalPlanHasTheRingVolumeAndBondedCorners) {
   EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible);
 }
 
-// A free-standing wall of weight W, thickness t and height h overturns about its outer foot
-// when a horizontal load P at its head exceeds W·t / (2h): its weight's moment about that edge
-// is W·t/2, the load's P·h (and the same at every bed joint above, for the share of each).
-TEST(Coursing, FreeStandingWallTipsAtTheHandComputedHeadLoad) {
+// A straight free-standing wall `length` long, 3 m high and 0.3 m thick, in 0.5 m courses of
+// 0.6 m blocks.
+CoursingSpec freeWall(double length) {
   CoursingSpec s;
-  s.plan = {Vec2(0, 0), Vec2(4, 0)};
+  s.plan = {Vec2(0, 0), Vec2(length, 0)};
   s.closed = false;
   s.height = 3.0;
   s.courseHeight = 0.5;
   s.blockLength = 0.6;
   s.thickness = 0.3;
+  return s;
+}
+
+// A free-standing wall of weight W, thickness t and height h overturns about its outer foot
+// when a horizontal load P at its head exceeds W·t / (2h): its weight's moment about that edge
+// is W·t/2, the load's P·h (and the same at every bed joint above, for the share of each).
+TEST(Coursing, FreeStandingWallTipsAtTheHandComputedHeadLoad) {
+  const CoursingSpec s = freeWall(4.0);
   const double W = s.density * 9.81 * 4.0 * 0.3 * 3.0;
   const double critical = W * s.thickness / (2 * s.height);
   for (const auto& [factor, expectStands] : {std::pair{0.98, true}, {1.02, false}}) {
@@ -461,13 +468,7 @@ TEST(Coursing, ButtressesTileTheSteppedWalls) {
 // 0.45 W + 0.15 W = 0.6 W, over 1.5 × 0.3 W; each bed joint above carries the same ratio
 // (weight and load moment both scale with the height above it), so it stands by the LP.
 TEST(Coursing, ButtressHoldsAWallTheHeadLoadOverturns) {
-  CoursingSpec s;
-  s.plan = {Vec2(0, 0), Vec2(2.4, 0)};
-  s.closed = false;
-  s.height = 3.0;
-  s.courseHeight = 0.5;
-  s.blockLength = 0.6;
-  s.thickness = 0.3;
+  const CoursingSpec s = freeWall(2.4);
   const double L = 2.4, W = s.density * 9.81 * L * s.thickness * s.height;
   const double P = W * s.thickness / s.height;  // twice the free wall's W·t / (2h)
   auto stands = [&](double depth) {
