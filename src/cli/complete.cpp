@@ -125,7 +125,7 @@ int run(const CompleteRequest& r) {
         throw Error(from + (objectName.empty() ? ": no growth object to complete"
                                                : ": no growth object named \"" + objectName + "\""));
       if (growths.size() > 1) throw Error(from + ": several growth objects; choose one with --object NAME");
-      model = growth::grow(std::get<GrowthSpec>(growths[0]->spec));
+      model = growth::grow(growth::growthInputOf(p.document, *growths[0]));
     } catch (const Error& e) {
       std::cerr << "corbel-cli: complete: " << e.what() << "\n";
       return 1;

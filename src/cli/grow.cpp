@@ -10,6 +10,7 @@
 #include "core/project_io.h"
 #include "core/scene.h"
 #include "growth/engine.h"
+#include "growth/kernel.h"
 #include "growth/openings.h"
 #include "growth/roofs.h"
 #include "growth/statistics.h"
@@ -122,6 +123,9 @@ int run(const GrowRequest& r) {
                            (e.where.empty() ? "" : "." + e.where),
                        e.reason);
     }
+    std::vector<std::string> around;
+    growth::placeFixedUnits(site, growth::unitsAround(o, growth::unitObjectsFor(p.document, o), &around));
+    warnings.insert(warnings.end(), around.begin(), around.end());
     if (!r.seed) seed = static_cast<long long>(spec.seed);
     if (!r.steps && spec.steps >= 0) steps = spec.steps;
   } else {

@@ -12,6 +12,9 @@ struct GrowthSpec {
   std::string site = "{}";  // the site's JSON object (docs/growth.md, "Site file"), as compact text
   std::uint64_t seed = 1;   // the run is deterministic for a seed
   int steps = 0;            // simulation steps to grow; -1: until every unit stops
+  // Grow around the Document's unit objects (frozen units, completed forms): they are units
+  // already there, which the seeds avoid and the roofs, doors and windows finish (Freeze sets it).
+  bool aroundUnits = false;
   bool operator==(const GrowthSpec&) const = default;
 };
 

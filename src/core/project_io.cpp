@@ -308,19 +308,21 @@ ojson growthToJson(const GrowthSpec& g) {
   j["site"] = ojson::parse(g.site);
   j["seed"] = g.seed;
   j["steps"] = g.steps;
+  if (g.aroundUnits) j["around_units"] = true;
   return j;
 }
 
 // The site's own keys are checked by the growth kernel (growth/site.h) when it builds the object.
 GrowthSpec growthFromJson(const JsonReader& r, std::vector<std::string>& warnings) {
   r.expectObject();
-  for (auto& k : r.unknownKeys({"site", "seed", "steps"})) warnings.push_back(k + ": unknown key kept");
+  for (auto& k : r.unknownKeys({"site", "seed", "steps", "around_units"})) warnings.push_back(k + ": unknown key kept");
   GrowthSpec g;
   const JsonReader site = r.at("site");
   site.expectObject();
   g.site = site.raw().dump();
   if (auto v = r.find("seed")) g.seed = static_cast<std::uint64_t>(v->integer(0, (1L << 53)));
   if (auto v = r.find("steps")) g.steps = static_cast<int>(v->integer(-1, limits::kMaxGrowthSteps));
+  if (auto v = r.find("around_units")) g.aroundUnits = v->boolean();
   return g;
 }
 

@@ -8,7 +8,7 @@
 
 namespace corbel {
 
-SceneSync::SceneSync() : builders_(std::variant_size_v<Spec>) {
+SceneSync::SceneSync() : inputs_(std::variant_size_v<Spec>), builders_(std::variant_size_v<Spec>) {
   setBuilder<BoxSpec>([](const DocObject& o, Progress*) {
     BuildResult r;
     r.kind = Kind::Mass;
@@ -18,8 +18,18 @@ SceneSync::SceneSync() : builders_(std::variant_size_v<Spec>) {
 }
 
 void SceneSync::setBuilder(std::size_t specIndex, Builder builder) {
-  if (specIndex < builders_.size()) builders_[specIndex] = std::move(builder);
+  InputBuilder b;
+  if (builder) b = [builder = std::move(builder)](const DocObject& o, const std::vector<DocObject>&, Progress* p) { return builder(o, p); };
+  setBuilder(specIndex, nullptr, std::move(b));
+}
+
+void SceneSync::setBuilder(std::size_t specIndex, Inputs inputs, InputBuilder builder) {
+  if (specIndex < builders_.size()) {
+    inputs_[specIndex] = std::move(inputs);
+    builders_[specIndex] = std::move(builder);
+  }
   built_.clear();
+  builtInputs_.clear();
   unplaced_.clear();
 }
 
@@ -33,9 +43,16 @@ SceneSync::Job SceneSync::plan(const Document& doc, const Scene& scene) const {
     auto it = built_.find(o.id);
     const auto st = status_.find(o.id);
     const bool failedBefore = st != status_.end() && !st->second.error.empty();
-    const bool stale = it == built_.end() || !(it->second.spec == o.spec) || (!scene.hasObject(o.id) && !failedBefore);
+    std::vector<DocObject> inputs;
+    if (const Inputs& pick = inputs_[o.spec.index()]) inputs = pick(doc, o);
+    bool stale = it == built_.end() || !(it->second.spec == o.spec) || (!scene.hasObject(o.id) && !failedBefore);
+    if (!stale && inputs_[o.spec.index()]) {
+      const auto was = builtInputs_.find(o.id);
+      stale = was == builtInputs_.end() ? !inputs.empty() : was->second != inputs;
+    }
     if (stale) {
       job.build.push_back(o);
+      job.inputs.push_back(std::move(inputs));
       continue;
     }
     if (it->second.name != o.name) job.renamed.emplace_back(o.id, o.name);
@@ -51,9 +68,10 @@ void SceneSync::run(Job& job, Progress* progress) const {
     const DocObject& o = job.build[i];
     Job::Outcome& out = job.outcomes[i];
     try {
-      const Builder& b = builders_[o.spec.index()];
+      const InputBuilder& b = builders_[o.spec.index()];
       if (!b) throw Error("this build of corbel has no kernel for this kind of object");
-      out.result = b(o, progress);
+      static const std::vector<DocObject> none;
+      out.result = b(o, i < job.inputs.size() ? job.inputs[i] : none, progress);
       out.ran = true;
     } catch (const Cancelled&) {
       return;  // this object and the rest stay as they were; a later job rebuilds them
@@ -69,6 +87,7 @@ std::size_t SceneSync::apply(Job& job, Scene& scene) {
   for (ObjectId id : job.gone) {
     scene.removeObject(id);
     built_.erase(id);
+    builtInputs_.erase(id);
     unplaced_.erase(id);
     status_.erase(id);
   }
@@ -94,6 +113,8 @@ std::size_t SceneSync::apply(Job& job, Scene& scene) {
     if (!out.ran) continue;
     const DocObject& o = job.build[i];
     built_[o.id] = o;
+    if (i < job.inputs.size() && inputs_[o.spec.index()]) builtInputs_[o.id] = job.inputs[i];
+    else builtInputs_.erase(o.id);
     Status& st = status_[o.id];
     if (!out.error.empty()) {
       st.error = out.error;

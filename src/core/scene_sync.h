@@ -26,6 +26,11 @@ struct BuildResult {
 // Cancelled when the progress (may be null) is cancelled. A pure function of the object: it
 // may run on any thread.
 using Builder = std::function<BuildResult(const DocObject&, Progress*)>;
+// Other objects of the Document a build reads (a growth site grown around the Document's unit
+// objects): chosen when a job is planned and handed to the builder as copies, so the build stays
+// a pure function of what it was given; the object is rebuilt whenever they change.
+using Inputs = std::function<std::vector<DocObject>(const Document&, const DocObject&)>;
+using InputBuilder = std::function<BuildResult(const DocObject&, const std::vector<DocObject>& inputs, Progress*)>;
 
 class SceneSync {
  public:
@@ -35,6 +40,12 @@ class SceneSync {
   template <class SpecT>
   void setBuilder(Builder builder) {
     setBuilder(indexOf<SpecT>(), std::move(builder));
+  }
+  // A builder that also reads other objects, which `inputs` picks from the Document.
+  void setBuilder(std::size_t specIndex, Inputs inputs, InputBuilder builder);
+  template <class SpecT>
+  void setBuilder(Inputs inputs, InputBuilder builder) {
+    setBuilder(indexOf<SpecT>(), std::move(inputs), std::move(builder));
   }
 
   // Returns the number of objects rebuilt. Cancelling leaves the Scene consistent with the
@@ -47,6 +58,7 @@ class SceneSync {
   // since it was planned; the next plan() then picks up what changed after it.
   struct Job {
     std::vector<DocObject> build;  // objects to (re)build, as the document had them
+    std::vector<std::vector<DocObject>> inputs;  // per build entry: the other objects it reads
     std::vector<ObjectId> gone;    // objects to remove from the Scene
     std::vector<std::pair<ObjectId, std::string>> renamed;
     // Objects whose placement alone changed: their last build is placed again, no kernel runs.
@@ -80,8 +92,10 @@ class SceneSync {
     if constexpr (std::is_same_v<std::variant_alternative_t<I, Spec>, SpecT>) return I;
     else return indexOf<SpecT, I + 1>();
   }
-  std::vector<Builder> builders_;
+  std::vector<Inputs> inputs_;  // by spec index; empty: the builder reads its object only
+  std::vector<InputBuilder> builders_;
   std::map<ObjectId, DocObject> built_;  // what each object was last built (or tried) from
+  std::map<ObjectId, std::vector<DocObject>> builtInputs_;  // ... and the other objects it read
   // Each object's last good build in its own frame, before its placement, with its kind.
   std::map<ObjectId, std::pair<Kind, MeshData>> unplaced_;
   std::map<ObjectId, Status> status_;

@@ -421,6 +421,10 @@ GrowthHost App::growthHost() {
   host.commit = deferredCommit();
   host.endDrag = deferredEndDrag();
   host.log = [this](const std::string& line, bool error) { log(line, error); };
+  host.busy = job_ != nullptr;
+  host.startJob = [this](std::string title, BackgroundJob::Work work, std::function<void()> done) {
+    startJob(std::move(title), std::move(work), std::move(done));
+  };
   return host;
 }
 

@@ -173,11 +173,18 @@ class App {
   void frameSelected();
   void duplicateSelected();
   void drawPlacementFields(const DocObject& object);  // the left panel's Placement section
+  void drawUnitEdits(const DocObject& object);        // a unit's Split and Merge
+  struct {
+    ObjectId object = 0;
+    int axis = 0;
+    double at = 0;
+  } unitSplit_;  // the split plane the unit panel offers
   // The Push/Pull tool (app_push_pull.cpp).
   struct PushPullPick {
     ObjectId object = 0;
     Ray ray;  // in the object's frame
     extrude::pushpull::Target target;
+    std::optional<UnitFace> unit;  // a unit object's side (target.outline and hit are its)
   };
   void registerPushPullActions();
   void togglePushPullTool();

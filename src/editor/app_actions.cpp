@@ -717,6 +717,15 @@ void App::registerActions() {
        [this] { growthPanel_.toggleViewMaps(); },
        growthSelected,
        [this] { return growthPanel_.viewMapsShown(); }});
+  add({"growth.freeze",
+       "Growth",
+       "Freeze Units",
+       "Turn the selected site's grown units into unit objects to edit by hand (one undo step); the site then "
+       "grows new seeds around them and keeps roofing them.",
+       {},
+       true,
+       [this] { growthPanel_.freeze(growthHost()); },
+       [this, growthSelected] { return growthSelected() && !job_ && !growthPanel_.running(); }});
   // Form completion (Ch. 7, Fig. 8.6) in a region of the selected growth site.
   add({"completion.seeds",
        "Growth",

@@ -13,6 +13,63 @@
 
 namespace corbel::editor {
 
+// A unit object by hand (editor/unit_edits.h): split by a plane, merged with a unit it touches;
+// P pushes its walls. Each is one undo step.
+void App::drawUnitEdits(const DocObject& object) {
+  ImGui::TextDisabled("P pushes a wall past what it meets (Ng Fig. 8.4)");
+  const auto& u = std::get<UnitSpec>(object.spec);
+  if (unitSplit_.object != object.id) {  // the plane starts across the middle of the unit's x extent
+    double lo = u.parts[0].lo[0], hi = u.parts[0].hi[0];
+    for (const UnitPart& p : u.parts) {
+      lo = std::min(lo, p.lo[0]);
+      hi = std::max(hi, p.hi[0]);
+    }
+    unitSplit_ = {object.id, 0, 0.5 * (lo + hi)};
+  }
+  ImGui::RadioButton("x =", &unitSplit_.axis, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("y =", &unitSplit_.axis, 1);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  ImGui::InputDouble("##splitAt", &unitSplit_.at, 0, 0, "%.2f m");
+  ImGui::SameLine();
+  if (ImGui::Button("Split")) {
+    try {
+      ObjectId added = 0;
+      Document d = splitUnit(history_.current(), object.id, unitSplit_.axis, unitSplit_.at, &added);
+      deferredCommit()(std::move(d), "Split " + object.name, "");  // after the panel: `object` stays valid
+      log("Split " + object.name + " at " + (unitSplit_.axis ? "y" : "x") + " = " + std::to_string(unitSplit_.at));
+    } catch (const std::exception& e) {
+      log("Split " + object.name + ": " + e.what(), true);
+    }
+  }
+  // The units it touches over a face, each a merge.
+  std::vector<ObjectId> touching;
+  for (const DocObject& other : history_.current().objects) {
+    if (other.id == object.id || !std::holds_alternative<UnitSpec>(other.spec)) continue;
+    try {
+      mergeUnits(history_.current(), object.id, other.id);
+      touching.push_back(other.id);
+    } catch (const std::exception&) {
+    }
+  }
+  if (touching.empty()) {
+    ImGui::TextDisabled("No unit touches it over a face to merge with.");
+    return;
+  }
+  if (ImGui::BeginCombo("Merge with", "a unit it touches")) {
+    for (ObjectId id : touching) {
+      const DocObject* other = history_.current().find(id);
+      if (ImGui::Selectable(other->name.c_str())) {
+        deferredCommit()(mergeUnits(history_.current(), object.id, id), "Merge " + other->name + " into " + object.name, "");
+        ImGui::EndCombo();
+        return;
+      }
+    }
+    ImGui::EndCombo();
+  }
+}
+
 void App::drawObjectProperties(const DocObject& object) {
   Document d = history_.current();
   DocObject* o = d.find(object.id);
@@ -130,7 +187,7 @@ void App::drawObjectProperties(const DocObject& object) {
                 t->overrides.size(), t->overrides.size() == 1 ? "" : "s");
   } else if (auto* u = std::get_if<UnitSpec>(&o->spec)) {
     ImGui::Separator();
-    ImGui::TextDisabled("Housing unit (a completed form's, Ng Ch. 7)");
+    ImGui::TextDisabled("Housing unit (Ng Sec. 5.1): frozen from a growth site, or a completed form's");
     double floor = 0;
     for (const UnitPart& p : u->parts) floor += (p.hi[0] - p.lo[0]) * (p.hi[1] - p.lo[1]);
     ImGui::Text("%zu part%s, floor area %.1f m²", u->parts.size(), u->parts.size() == 1 ? "" : "s", floor);
@@ -142,6 +199,7 @@ void App::drawObjectProperties(const DocObject& object) {
         }
       ImGui::EndCombo();
     }
+    drawUnitEdits(object);
   }
   // A pick from a list (a material, the priority) is an undo step of its own; typed and dragged
   // values merge while the same field keeps changing.

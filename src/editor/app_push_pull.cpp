@@ -33,10 +33,20 @@ void App::togglePushPullTool() {
   log(pushPullTool_ ? "Push/Pull: drag a face of a building (P again, or the toolbar, to leave)" : "Push/Pull off");
 }
 
-// The face of an extrusion under the pointer, its object, and the ray in that object's frame.
+// The face of an extrusion or a unit under the pointer, its object, and the ray in that object's frame.
 std::optional<App::PushPullPick> App::pushPullPick(const Ray& world) {
   const std::optional<ObjectId> id = objectUnder(world);
   const DocObject* o = id ? history_.current().find(*id) : nullptr;
+  if (const auto* unit = o ? std::get_if<UnitSpec>(&o->spec) : nullptr) {
+    PushPullPick p;
+    p.object = o->id;
+    p.ray = intoFrame(o->placement, world);
+    p.unit = pickUnitFace(*unit, p.ray.origin, p.ray.direction);
+    if (!p.unit) return std::nullopt;
+    p.target.hit = p.unit->hit;
+    p.target.outline = p.unit->outline;
+    return p;
+  }
   const auto* spec = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
   if (!spec) return std::nullopt;
   if (pushPullBuilt_.object != o->id || pushPullBuilt_.state != history_.stateId()) {
@@ -62,7 +72,10 @@ bool App::beginPushPull(const Ray& world) {
   const auto p = pushPullPick(world);
   if (!p) return false;
   selection_.select(p->object);
-  pushPull_.begin(std::get<ExtrusionSpec>(history_.current().find(p->object)->spec), p->target, p->ray);
+  if (p->unit)
+    pushPull_.beginUnit(history_.current(), p->object, *p->unit, p->ray);
+  else
+    pushPull_.begin(std::get<ExtrusionSpec>(history_.current().find(p->object)->spec), p->target, p->ray);
   pushPullObject_ = p->object;
   pushPullPlacement_ = history_.current().find(p->object)->placement;
   pushPullDragged_ = true;
@@ -73,6 +86,20 @@ bool App::beginPushPull(const Ray& world) {
 }
 
 void App::previewPushPull() {
+  if (pushPull_.unitMode()) {
+    Document d;
+    try {
+      d = pushPull_.document();
+      pushPullError_.clear();
+    } catch (const std::exception& e) {
+      pushPullError_ = e.what();
+      d = pushPull_.startDocument();  // nothing moves while the push cannot be made
+    }
+    if (d == history_.current()) return;
+    commit(std::move(d), pushPull_.label(), "push-pull");
+    pushPullCommitted_ = true;
+    return;
+  }
   ExtrusionSpec s;
   try {
     s = pushPull_.spec();
@@ -96,7 +123,9 @@ void App::endPushPull(bool confirm) {
     if (!pushPullError_.empty()) log(pushPull_.label() + ": " + pushPullError_, true);
     const DocObject* o = history_.current().find(pushPullObject_);
     const auto* s = o ? std::get_if<ExtrusionSpec>(&o->spec) : nullptr;
-    if (pushPullCommitted_ && s && *s == pushPull_.startSpec()) {
+    const bool unchanged = pushPull_.unitMode() ? history_.current() == pushPull_.startDocument()
+                                                : s && *s == pushPull_.startSpec();
+    if (pushPullCommitted_ && unchanged) {
       history_.undo();  // back where it began: no step
     } else if (pushPullCommitted_) {
       const std::string d = pushPull_.describe();
@@ -125,7 +154,7 @@ void App::pushPullInput() {
     if (e.type == T::Char && e.codepoint < 128) pushPull_.type(char(e.codepoint));
     if (e.type == T::Key && e.down) {
       if (e.code == GLFW_KEY_BACKSPACE) pushPull_.backspace();
-      if (e.code == GLFW_KEY_LEFT_ALT || e.code == GLFW_KEY_RIGHT_ALT) pushPull_.setOwnCopy(true);
+      if ((e.code == GLFW_KEY_LEFT_ALT || e.code == GLFW_KEY_RIGHT_ALT) && !pushPull_.unitMode()) pushPull_.setOwnCopy(true);
       if (e.code == GLFW_KEY_ENTER || e.code == GLFW_KEY_KP_ENTER) endPushPull(true);
       if (e.code == GLFW_KEY_ESCAPE) endPushPull(false);
     }
@@ -200,8 +229,9 @@ void App::drawPushPullOverlay() {
 void App::registerPushPullActions() {
   actions_.add({"tool.push_pull", "Object", "Push/Pull",
                 "Drag a face of a building: a wall moves its plan edge, a roof turns its profile segment, a step or a "
-                "feature slides along its wall. Type a value and Enter (metres; a roof's pitch in degrees); Ctrl snaps; "
-                "Alt gives a roof's edge its own profile. P again leaves the tool.",
+                "feature slides along its wall; a housing unit's wall collides and extrudes past what it meets. Type a "
+                "value and Enter (metres; a roof's pitch in degrees); Ctrl snaps; Alt gives a roof's edge its own "
+                "profile. P again leaves the tool.",
                 {GLFW_KEY_P}, false, [this] { togglePushPullTool(); }, nullptr, [this] { return pushPullTool_; }});
 }
 

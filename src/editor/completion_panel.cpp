@@ -44,9 +44,14 @@ const GrowthSpec* CompletionPanel::specOf(const CompletionHost& host) const {
   return o ? std::get_if<GrowthSpec>(&o->spec) : nullptr;
 }
 
+growth::GrowthInput CompletionPanel::inputOf(const CompletionHost& host) const {
+  const DocObject* o = host.doc ? host.doc->find(host.object) : nullptr;
+  return o ? growth::growthInputOf(*host.doc, *o) : growth::GrowthInput{};
+}
+
 bool CompletionPanel::modelCurrent(const CompletionHost& host) const {
   const GrowthSpec* spec = specOf(host);
-  return spec && model_ && model_->of == *spec && model_->maps == host.maps;
+  return spec && model_ && model_->of == inputOf(host) && model_->maps == host.maps;
 }
 
 void CompletionPanel::reset() { *this = CompletionPanel(); }
@@ -125,9 +130,9 @@ void CompletionPanel::takeSeeds(const CompletionHost& host) {
   fromModel_ = true;
   if (modelCurrent(host)) return;
   auto result = std::make_shared<Model>();
-  result->of = *spec;
+  result->of = inputOf(host);
   result->maps = host.maps;
-  attempted_ = *spec;
+  attempted_ = result->of;
   run(
       host, "Growing the model for its entrances",
       [result, mapper = host.mapper](Progress& p) { result->grown = growth::grow(result->of, &p, mapper.get()); },
@@ -493,7 +498,7 @@ void CompletionPanel::draw(const CompletionHost& host, float x, float y, float w
     }
   }
   const bool current = modelCurrent(host);
-  if (fromModel_ && !current && !host.busy && !host.wait && host.settled && !(attempted_ && *attempted_ == *spec))
+  if (fromModel_ && !current && !host.busy && !host.wait && host.settled && !(attempted_ && *attempted_ == inputOf(host)))
     takeSeeds(host);  // the entrances follow the model
   updateEntrances();
   ImGui::TextDisabled("Ng, Ch. 7: complete a region of the model (Fig. 8.6)");

@@ -59,11 +59,12 @@ class CompletionPanel {
 
  private:
   struct Model {
-    GrowthSpec of;
+    growth::GrowthInput of;
     std::string maps;  // the view maps it grew on (CompletionHost::maps)
     growth::GrownModel grown;
   };
   const GrowthSpec* specOf(const CompletionHost& host) const;
+  growth::GrowthInput inputOf(const CompletionHost& host) const;  // what the site's build grows from
   bool modelCurrent(const CompletionHost& host) const;
   void run(const CompletionHost& host, std::string title, BackgroundJob::Work work, std::function<void()> done);
   void defaultRegion(const growth::Site& site);
@@ -90,7 +91,7 @@ class CompletionPanel {
   int storeys_ = 1;
 
   std::shared_ptr<const Model> model_;
-  std::optional<GrowthSpec> attempted_;  // the spec last grown for (a failed one is not retried by itself)
+  std::optional<growth::GrowthInput> attempted_;  // the spec last grown for (a failed one is not retried by itself)
   std::vector<growth::Entrance> entrances_;
   growth::PlanRect entrancesFor_{};
   int entrancesStorey_ = -1;

@@ -510,4 +510,32 @@ std::optional<growth::Seed> freeSeedSpot(const growth::Site& site, const growth:
   return std::nullopt;
 }
 
+Document freezeGrowth(const Document& doc, ObjectId id, const growth::GrownModel& grown, std::vector<ObjectId>* added) {
+  const DocObject* o = doc.find(id);
+  const auto* spec = o ? std::get_if<GrowthSpec>(&o->spec) : nullptr;
+  if (!spec) throw InputError("freeze", "the object is not a growth site");
+  json site = json::parse(spec->site, nullptr, false);
+  if (!site.is_object()) throw InputError("growth.site", "must be an object");
+  Document out = doc;
+  std::vector<ObjectId> ids;
+  const int grownCount = int(grown.site.seeds.size());
+  for (const growth::Unit& u : grown.units) {
+    if (u.id > grownCount || u.parts.empty()) continue;  // a unit already there stays as it is
+    UnitSpec unit;
+    for (const growth::Box& b : u.parts) unit.parts.push_back({b.lo, b.hi});
+    if (auto problem = checkUnitSpec(unit)) throw InputError("unit " + std::to_string(u.id), *problem);
+    const ObjectId unitId = out.add(o->name + " unit " + std::to_string(u.id), std::move(unit));
+    out.find(unitId)->placement = o->placement;
+    ids.push_back(unitId);
+  }
+  if (ids.empty()) throw InputError("freeze", "the site has grown no units to freeze");
+  site["seeds"] = json::array();
+  site.erase("generate_seeds");
+  auto& g = std::get<GrowthSpec>(out.find(id)->spec);
+  g.site = site.dump();
+  g.aroundUnits = true;
+  if (added) *added = std::move(ids);
+  return out;
+}
+
 }  // namespace corbel::editor

@@ -4,7 +4,9 @@
 // editor's changes to the site's hand-placed cores, circulation and seeds, each checked as the
 // kernel will check it (growth/site.h's validator, then the engine's own refusals) before the
 // panel commits it.
+#include "core/document.h"
 #include "core/growth_spec.h"
+#include "growth/kernel.h"
 #include "growth/seeding.h"
 #include "growth/site.h"
 
@@ -137,5 +139,15 @@ std::optional<Vec2> rayOnPlane(const Vec3& origin, const Vec3& dir, double z);
 // the site stays valid, or nullopt if there is none.
 std::optional<growth::Rect> freeCoreSpot(const growth::Site& site, Vec2 size);
 std::optional<growth::Seed> freeSeedSpot(const growth::Site& site, const growth::Seed& like);
+
+// Freeze (the grown units taken over by hand): `doc` with the growth object's grown units (those
+// of `grown` grown from its seeds, not the fixed ones) as unit objects, named "<object> unit
+// <id>", each with the growth object's placement and its parts in the site's frame, so each
+// stands where it grew. The site's seeds become an empty list and generate_seeds goes (they are
+// spent), and the growth object grows around unit objects from then on (aroundUnits): it still
+// roofs and opens them, and new seeds grow around them. One edit: one undo step. `added` gets
+// the new objects' ids. Throws InputError when `id` is no growth object or grew no unit.
+Document freezeGrowth(const Document& doc, ObjectId id, const growth::GrownModel& grown,
+                      std::vector<ObjectId>* added = nullptr);
 
 }  // namespace corbel::editor

@@ -19,12 +19,12 @@ std::vector<growth::ViewBox> viewBoxesOf(const growth::Site& site, const std::ve
   return boxes;
 }
 
-GrowthInspection inspectGrowth(const GrowthSpec& spec, Progress* progress, growth::ViewMapper* mapper,
+GrowthInspection inspectGrowth(const growth::GrowthInput& input, Progress* progress, growth::ViewMapper* mapper,
                                const std::string& maps) {
   GrowthInspection out;
-  out.of = spec;
+  out.of = input;
   out.maps = maps;
-  out.grown = growth::grow(spec, progress, mapper);
+  out.grown = growth::grow(input, progress, mapper);
   growth::ExactViewMapper exact;
   growth::ViewMapper& m = mapper ? *mapper : exact;
   out.views = m.render(viewBoxesOf(out.grown.site, out.grown.units), out.grown.site.bounds());

@@ -21,7 +21,7 @@ namespace corbel::editor {
 
 // A grown model with its view maps and statistics.
 struct GrowthInspection {
-  GrowthSpec of;
+  growth::GrowthInput of;
   std::string maps;  // which view maps ("exact", or the GL mapper's name), as the request said
   growth::GrownModel grown;
   growth::ViewMaps views;
@@ -34,7 +34,7 @@ std::vector<growth::ViewBox> viewBoxesOf(const growth::Site& site, const std::ve
 // Grows `spec` as its build does (growth::grow) on `mapper` (null: the exact CPU mapper) and
 // measures the result on the same mapper; `maps` names it in the result.
 // Throws InputError for a bad site, Cancelled when `progress` is cancelled.
-GrowthInspection inspectGrowth(const GrowthSpec& spec, Progress* progress = nullptr,
+GrowthInspection inspectGrowth(const growth::GrowthInput& input, Progress* progress = nullptr,
                                growth::ViewMapper* mapper = nullptr, const std::string& maps = "exact");
 
 // Table 8.1 as (row, value) text, in the paper's order.

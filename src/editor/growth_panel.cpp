@@ -220,7 +220,7 @@ void GrowthPanel::sliceStorey(const GrowthHost& host, int by) {
   slice_ = s.base + k * s.storeyHeight;
 }
 
-void GrowthPanel::requestInspection(const GrowthHost& host, const GrowthSpec& spec) {
+void GrowthPanel::requestInspection(const GrowthHost& host, const growth::GrowthInput& spec) {
   if (inspection_ && inspection_->of == spec && inspection_->maps == host.maps) return;
   if (pendingFor_ && *pendingFor_ == spec && pendingMaps_ == host.maps) return;
   if (failedFor_ && *failedFor_ == spec && failedMaps_ == host.maps) return;
@@ -300,6 +300,11 @@ void GrowthPanel::drawGrow(const GrowthHost& host, const GrowthSpec& spec) {
   ImGui::EndDisabled();
   ImGui::TextDisabled("Run commits one step at a time as the view catches up;");
   ImGui::TextDisabled("the whole run is one undo step.");
+  ImGui::BeginDisabled(running_ || freezing_ != nullptr || host.busy);
+  if (ImGui::Button("Freeze units")) freeze(host);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextDisabled(spec.aroundUnits ? "grows around the unit objects" : "units become objects to edit by hand");
   // The view maps the runs grow on (Sec. 5.2): an editor setting, like the slice and shadows.
   ImGui::Separator();
   ImGui::TextUnformatted("View maps:");
@@ -785,7 +790,7 @@ void GrowthPanel::drawStatistics(const GrowthHost& host) {
     ImGui::TextDisabled("measuring the model...");
     return;
   }
-  if (pendingFor_ || !host.current || running_ || !(inspection_->of == *specOf(host)) || inspection_->maps != host.maps)
+  if (pendingFor_ || !host.current || running_ || !(inspection_->of == growth::growthInputOf(*host.doc, *host.doc->find(host.object))) || inspection_->maps != host.maps)
     ImGui::TextDisabled("(of the model before the last change; measuring...)");
   if (ImGui::BeginTable("table81", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     ImGui::TableSetupColumn("Table 8.1", ImGuiTableColumnFlags_WidthStretch, 0.45f);
@@ -803,9 +808,53 @@ void GrowthPanel::drawStatistics(const GrowthHost& host) {
   ImGui::TextDisabled("occupants: Type A > 85 m² five, B 50-85 m² three, C 30-50 m² one");
 }
 
+void GrowthPanel::freeze(const GrowthHost& host) {
+  const DocObject* o = host.doc->find(host.object);
+  if (!o || !std::holds_alternative<GrowthSpec>(o->spec)) return;
+  auto job = std::make_shared<Freezing>();
+  job->of = growth::growthInputOf(*host.doc, *o);
+  freezing_ = job;
+  auto work = [job, mapper = host.mapper](Progress& p) { job->grown = growth::grow(job->of, &p, mapper.get()); };
+  if (host.wait || !host.startJob) {
+    Progress p;
+    try {
+      work(p);
+      job->done = true;
+    } catch (const std::exception& e) {
+      host.log(std::string("Freeze failed: ") + e.what(), true);
+      freezing_.reset();
+      return;
+    }
+    applyFreeze(host);
+    return;
+  }
+  host.startJob("Growing " + o->name + " to freeze its units", std::move(work), [job] { job->done = true; });
+}
+
+void GrowthPanel::applyFreeze(const GrowthHost& host) {
+  if (freezing_ && !freezing_->done && !host.busy && !host.wait) freezing_.reset();  // failed or cancelled
+  if (!freezing_ || !freezing_->done) return;
+  const std::shared_ptr<Freezing> job = std::move(freezing_);
+  const DocObject* o = host.doc->find(host.object);
+  if (!o || !std::holds_alternative<GrowthSpec>(o->spec) || !(growth::growthInputOf(*host.doc, *o) == job->of)) {
+    host.log("Freeze: the site changed while it grew; freeze again", true);
+    return;
+  }
+  try {
+    std::vector<ObjectId> added;
+    Document d = freezeGrowth(*host.doc, host.object, job->grown, &added);
+    host.commit(std::move(d), "Freeze the units of " + o->name, "");
+    host.log("Froze " + std::to_string(added.size()) + " units of " + o->name +
+             " into unit objects; the site grows around them", false);
+  } catch (const std::exception& e) {
+    host.log(std::string("Freeze: ") + e.what(), true);
+  }
+}
+
 void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float h) {
   const GrowthSpec* spec = specOf(host);
   if (!spec) return;
+  applyFreeze(host);
   const DocObject* o = host.doc->find(host.object);
   parseSite(*spec);
   ImGui::SetNextWindowPos(ImVec2(x, y));
@@ -842,7 +891,7 @@ void GrowthPanel::draw(const GrowthHost& host, float x, float y, float w, float 
     ImGui::EndTabBar();
   }
   ImGui::End();
-  if (statsShown_ || showViewMaps_) requestInspection(host, *spec);
+  if (statsShown_ || showViewMaps_) requestInspection(host, growth::growthInputOf(*host.doc, *o));
 }
 
 bool GrowthPanel::beginViewDrag(const GrowthHost& host, const Vec3& origin, const Vec3& dir) {

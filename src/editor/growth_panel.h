@@ -15,6 +15,7 @@
 // window never waits and a whole Run is one undo step. A refused change names the field and
 // leaves the Document as it was.
 #include "core/document.h"
+#include "core/progress.h"
 #include "editor/growth_edits.h"
 #include "editor/growth_inspect.h"
 #include "render/overlay.h"
@@ -39,6 +40,9 @@ struct GrowthHost {
   std::function<void(Document, const std::string& label, const std::string& mergeKey)> commit;
   std::function<void()> endDrag;
   std::function<void(const std::string&, bool)> log;
+  // The editor's background job (progress bar and Cancel in the status bar), for Freeze.
+  std::function<void(std::string title, BackgroundJob::Work work, std::function<void()> onDone)> startJob;
+  bool busy = false;  // that job is taken
   // The 3D view's shadows and sun (Fig. 8.5), view settings the Grow tab changes; may be null.
   bool* shadows = nullptr;
   double* sunAzimuth = nullptr;
@@ -54,6 +58,9 @@ struct GrowthHost {
 
 class GrowthPanel {
  public:
+  // Freeze: grows the model as the build does (a background job; at once when the host waits),
+  // then turns its units into unit objects (freezeGrowth), if the site has not changed meanwhile.
+  void freeze(const GrowthHost& host);
   // Advances a running growth by one step once the Scene has caught up with the last one.
   void update(const GrowthHost& host);
   void draw(const GrowthHost& host, float x, float y, float w, float h);
@@ -107,8 +114,9 @@ class GrowthPanel {
   void drawFrame(const GrowthHost& host, const GrowthSpec& spec);
   void drawPlan(const GrowthHost& host, const GrowthSpec& spec, float w, float h);
   void drawStatistics(const GrowthHost& host);
+  void applyFreeze(const GrowthHost& host);
   // Starts (or, waiting, does) measuring the model when the shown one is not of `spec`.
-  void requestInspection(const GrowthHost& host, const GrowthSpec& spec);
+  void requestInspection(const GrowthHost& host, const growth::GrowthInput& input);
   void pollInspection();
   void uploadViewMaps();
 
@@ -135,11 +143,18 @@ class GrowthPanel {
   bool slicing_ = false;
   double slice_ = 0;
 
+  struct Freezing {
+    growth::GrowthInput of;
+    growth::GrownModel grown;
+    bool done = false;
+  };
+  std::shared_ptr<Freezing> freezing_;  // a Freeze on its way
+
   bool statsShown_ = false;
   bool showViewMaps_ = false;
   std::shared_ptr<const GrowthInspection> inspection_;
   std::future<std::shared_ptr<const GrowthInspection>> pending_;
-  std::optional<GrowthSpec> pendingFor_, failedFor_;
+  std::optional<growth::GrowthInput> pendingFor_, failedFor_;
   std::string pendingMaps_, failedMaps_;  // the view maps of pendingFor_ and failedFor_
   std::string inspectError_;
   std::array<unsigned, 8> textures_{};  // per direction its unit ids, then (4 + d) its depth

@@ -32,7 +32,28 @@ const Anchor* anchorOf(const ExtrusionSpec& s, const pp::Target& t) {
 }
 }  // namespace
 
+void PushPull::beginUnit(const Document& doc, ObjectId unit, const UnitFace& face, const Ray& ray) {
+  begin(ExtrusionSpec{}, pp::Target{}, ray);
+  active_ = true;
+  unit_ = unit;
+  face_ = face;
+  startDoc_ = doc;
+  target_.hit = face.hit;
+  target_.outline = face.outline;
+  along_ = Vec3(0, 0, 0);
+  along_[growth::sideAxis(face.side)] = growth::sideSign(face.side);
+}
+
+Document PushPull::document() const {
+  if (!unit_) return startDoc_;
+  const double v = value();
+  if (std::abs(v) < 1e-9) return startDoc_;
+  return pushUnitFace(startDoc_, unit_, face_.part, face_.side, v);
+}
+
 void PushPull::begin(const ExtrusionSpec& spec, const pp::Target& target, const Ray& ray) {
+  unit_ = 0;
+  startDoc_ = {};
   active_ = target.kind != pp::Kind::None;
   start_ = spec;
   target_ = target;
@@ -77,7 +98,7 @@ std::optional<double> PushPull::rawPitch(const Ray& r) const {
 // The pointer's value before snapping: metres along the line, or the segment's pitch turned
 // as far as the pointer has turned round the segment's lower end.
 double PushPull::pointerValue(const Ray& r) const {
-  if (target_.kind == pp::Kind::Roof) {
+  if (!unit_ && target_.kind == pp::Kind::Roof) {
     const auto pitch = rawPitch(r);
     if (!pitch) return startPitch_;
     double turn = *pitch - startPointerPitch_;
@@ -92,7 +113,7 @@ double PushPull::pointerValue(const Ray& r) const {
 double PushPull::value() const {
   if (const std::optional<double> typed = typed_.value()) return *typed;
   double v = pointerValue(ray_);
-  if (target_.kind == pp::Kind::Roof) {
+  if (!unit_ && target_.kind == pp::Kind::Roof) {
     if (snap_) v = std::round(v / kPitchSnap) * kPitchSnap;
     const Profile& p = start_.profiles[target_.profile];
     auto [lo, hi] = pp::pitchRange(p, target_.segment);
@@ -123,6 +144,7 @@ ExtrusionSpec PushPull::spec() const {
 }
 
 std::string PushPull::label() const {
+  if (unit_) return "Push unit wall";
   switch (target_.kind) {
     case pp::Kind::Wall: return "Push wall";
     case pp::Kind::Roof: return "Turn roof";
@@ -137,6 +159,11 @@ std::string PushPull::describe() const {
   char buf[320];
   const double v = value();
   const std::string typed = typed_.text().empty() ? "" : " (typed " + typed_.text() + ")";
+  if (unit_) {
+    std::snprintf(buf, sizeof buf, "Push unit wall (part %d, side %s): %.3f m out%s", face_.part,
+                  std::string(growth::sideName(face_.side)).c_str(), v, typed.c_str());
+    return std::string(buf) + "  — collides and extrudes past what it meets; type a value, Enter or click confirms, Esc cancels";
+  }
   switch (target_.kind) {
     case pp::Kind::Wall:
       std::snprintf(buf, sizeof buf, "Push wall (loop %d, edge %d): %.3f m out%s", target_.loop, target_.edge, v,

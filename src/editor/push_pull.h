@@ -6,8 +6,12 @@
 // the vertical plane across the edge), a step or a feature follows it along its wall. Digits
 // typed meanwhile give the exact value (metres out; the new pitch in degrees; metres along the
 // wall); Ctrl snaps (0.1 m, 5°); with own copy (Alt) a roof's edge gets a profile of its own
-// first. The App commits what spec() gives (one undo step per drag).
+// first. The App commits what spec() gives (one undo step per drag). On a unit object's side
+// (beginUnit) the pointer reads metres out along the side's normal and document() pushes the
+// wall with collide-and-extrude (editor/unit_edits.h).
+#include "core/document.h"
 #include "editor/typed_value.h"
+#include "editor/unit_edits.h"
 #include "editor/viewport.h"
 #include "extrude/push_pull.h"
 
@@ -23,6 +27,13 @@ class PushPull {
  public:
   // Starts on `target` of `spec` with the pointer's ray (the extrusion's frame).
   void begin(const ExtrusionSpec& spec, const extrude::pushpull::Target& target, const Ray& ray);
+  // Starts on side `face` of unit object `unit` in `doc` (the ray in the unit's frame).
+  void beginUnit(const Document& doc, ObjectId unit, const UnitFace& face, const Ray& ray);
+  bool unitMode() const { return unit_ != 0; }
+  ObjectId unitObject() const { return unit_; }
+  const Document& startDocument() const { return startDoc_; }
+  // Unit mode: the document with the push made; throws InputError when it cannot be.
+  Document document() const;
   bool active() const { return active_; }
   void end() { active_ = false; }
   const extrude::pushpull::Target& target() const { return target_; }
@@ -62,6 +73,9 @@ class PushPull {
   // horizontal, up) and the turning line's point, and the segment's pitch at the start.
   Vec3 along_{1, 0, 0}, inward_{0, 1, 0}, pivot_{0, 0, 0};
   double startPitch_ = 0, startPointerPitch_ = 0;
+  ObjectId unit_ = 0;  // unit mode: the unit object, its side, and the document at the start
+  UnitFace face_;
+  Document startDoc_;
 };
 
 }  // namespace corbel::editor

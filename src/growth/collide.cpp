@@ -175,4 +175,88 @@ std::optional<Box> stairBasePart(const Box& b, Side s, const Box& c, double stor
   return part;
 }
 
+std::optional<Extruded> collideAndExtrude(const Unit& u, int part, Side s, double d, const std::vector<Box>& obstacles,
+                                          double least, std::string* why) {
+  auto refuse = [&](const std::string& reason) -> std::optional<Extruded> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (part < 0 || part >= int(u.parts.size())) return refuse("no such part");
+  if (!std::isfinite(d) || d == 0) return refuse("no distance");
+  const int a = sideAxis(s);
+  if (a == 2) return refuse("floors and ceilings move by whole storeys in the growth (double volume); push a wall");
+  if (sideTouchesOwnPart(u, part, s)) return refuse("this side meets another part of the unit; push that part's side");
+  const Box& b = u.parts[std::size_t(part)];
+  const double sign = sideSign(s);
+  Extruded out{u, 0};
+  if (d < 0) {
+    if (b.size(a) + d < least - kEps) return refuse("the part would be under " + std::to_string(least) + " m deep");
+    Box& moved = out.unit.parts[std::size_t(part)];
+    (sign > 0 ? moved.hi[a] : moved.lo[a]) += sign * d;
+    out.added = d * b.size(1 - a) * b.size(2);
+    return out;
+  }
+  // What lies in the swept region: each obstacle's stretch of the face and its distance from it.
+  const int t = 1 - a;
+  const Box swept = sweptRegion(b, s, d);
+  struct Hit {
+    double lo, hi, distance;
+  };
+  std::vector<Hit> hits;
+  auto consider = [&](const Box& o) {
+    if (!interiorsOverlap(swept, o, kEps)) return;
+    const double gap = sign > 0 ? o.lo[a] - b.hi[a] : b.lo[a] - o.hi[a];
+    hits.push_back({std::max(o.lo[t], b.lo[t]), std::min(o.hi[t], b.hi[t]), std::max(gap, 0.0)});
+  };
+  for (const Box& o : obstacles) consider(o);
+  for (std::size_t i = 0; i < u.parts.size(); ++i)
+    if (int(i) != part) consider(u.parts[i]);
+  std::vector<double> cuts{b.lo[t], b.hi[t]};
+  for (const Hit& h : hits) cuts.insert(cuts.end(), {h.lo, h.hi});
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end(), [](double x, double y) { return std::abs(x - y) <= kEps; }), cuts.end());
+  struct Run {
+    double lo, hi, reach;
+  };
+  std::vector<Run> runs;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    double reach = d;
+    for (const Hit& h : hits)
+      if (overlapLength(h.lo, h.hi, cuts[i], cuts[i + 1]) > kEps) reach = std::min(reach, h.distance);
+    if (!runs.empty() && std::abs(runs.back().reach - reach) <= kEps) runs.back().hi = cuts[i + 1];
+    else runs.push_back({cuts[i], cuts[i + 1], reach});
+  }
+  // Narrow runs join the neighbour that reaches less (the joined run reaches the lesser).
+  while (runs.size() > 1) {
+    std::size_t narrow = runs.size();
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (runs[i].hi - runs[i].lo < least - kEps && (narrow == runs.size() || runs[i].hi - runs[i].lo < runs[narrow].hi - runs[narrow].lo))
+        narrow = i;
+    if (narrow == runs.size()) break;
+    std::size_t with = narrow == 0 ? 1 : narrow - 1;
+    if (narrow > 0 && narrow + 1 < runs.size() && runs[narrow + 1].reach < runs[narrow - 1].reach) with = narrow + 1;
+    const std::size_t lo = std::min(narrow, with), hi = std::max(narrow, with);
+    runs[lo] = {runs[lo].lo, runs[hi].hi, std::min(runs[lo].reach, runs[hi].reach)};
+    runs.erase(runs.begin() + std::ptrdiff_t(hi));
+    for (std::size_t i = 1; i < runs.size(); ++i)  // neighbours that now reach alike are one run
+      if (std::abs(runs[i].reach - runs[i - 1].reach) <= kEps) {
+        runs[i - 1].hi = runs[i].hi;
+        runs.erase(runs.begin() + std::ptrdiff_t(i));
+        break;
+      }
+  }
+  if (std::all_of(runs.begin(), runs.end(), [](const Run& r) { return r.reach <= kEps; }))
+    return refuse("something stands right at the face along its whole width");
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    Box piece = b;
+    piece.lo[t] = runs[i].lo;
+    piece.hi[t] = runs[i].hi;
+    if (runs[i].reach > kEps) (sign > 0 ? piece.hi[a] : piece.lo[a]) += sign * runs[i].reach;
+    out.added += (runs[i].hi - runs[i].lo) * runs[i].reach * b.size(2);
+    if (i == 0) out.unit.parts[std::size_t(part)] = piece;
+    else out.unit.parts.push_back(piece);
+  }
+  return out;
+}
+
 }  // namespace corbel::growth

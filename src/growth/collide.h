@@ -16,6 +16,7 @@
 // Fig. 5.4's stair base: `stairBasePart` is the part a unit adds when a face of its part has
 // reached an external staircase whose roof lies one storey below the part's floor.
 #include "growth/box.h"
+#include "growth/unit.h"
 
 #include <optional>
 #include <string>
@@ -68,6 +69,22 @@ struct CollideSplit {
 // columns reaching an end of the face (a wholly free piece) first, then low before high.
 // Nothing when the face is wholly free or wholly blocked.
 std::vector<CollideSplit> collideSplits(const Rect& face, const std::vector<Interval>& columns, double least);
+
+// Collide-and-extrude by hand (Fig. 5.3, Fig. 8.4): the vertical side s of part `part` of u
+// pushed out by d > 0 past whatever it meets. Along the face each stretch advances until it meets
+// an obstacle (the nearest of `obstacles` and the unit's own other parts whose box enters the
+// swept region), at most d; the part is split where the reach changes, so every piece stays a
+// box and the unit gains exactly the swept region up to the obstacles. A stretch narrower than
+// `least` goes with the neighbour that reaches less, so no piece is narrower than `least` unless
+// the face is. d < 0 pulls the side in (the part keeps at least `least` of depth). Without a
+// change (`why` says why): a floor or ceiling side, a side that meets another part of the unit,
+// an obstacle right at the face along its whole width, a pull past `least`.
+struct Extruded {
+  Unit unit;
+  double added = 0;  // volume gained (negative: lost)
+};
+std::optional<Extruded> collideAndExtrude(const Unit& u, int part, Side s, double d, const std::vector<Box>& obstacles,
+                                          double least, std::string* why = nullptr);
 
 // Fig. 5.4: a unit may take the whole top of an external staircase as a part whose floor is
 // the staircase's roof, when side s of its one-storey part b has reached the staircase: the

@@ -287,8 +287,19 @@ GrowthEngine::GrowthEngine(const Site& site, GrowthOptions options, ViewMapper* 
     states_.push_back(std::move(s));
     units_.push_back(states_.back().unit);
   }
+  for (const Site::FixedUnit& f : site.fixed) {
+    UnitState s;
+    s.unit.id = int(states_.size()) + 1;
+    s.unit.parts = f.parts;
+    s.unit.locked.fill(true);
+    s.status = UnitStatus::Fixed;
+    s.behaviour = "fixed";
+    growing_.push_back(false);
+    states_.push_back(std::move(s));
+    units_.push_back(states_.back().unit);
+  }
   enforcer_.index(units_);
-  for (std::size_t i = 0; i < units_.size(); ++i)
+  for (std::size_t i = 0; i < site.seeds.size(); ++i)
     if (!enforcer_.plausible(units_, i))
       throw InputError("seeds[" + std::to_string(i) + "]",
                        "is not supported: it rests on nothing and is fixed to no core or circulation within the "

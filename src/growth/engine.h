@@ -24,7 +24,8 @@
 
 namespace corbel::growth {
 
-enum class UnitStatus { Growing, Reached, Stuck };
+// Fixed: a unit already there (Site::fixed), which never moves.
+enum class UnitStatus { Growing, Reached, Stuck, Fixed };
 
 // A unit and its form quantifiers and behaviour state.
 struct UnitState {

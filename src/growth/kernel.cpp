@@ -5,6 +5,8 @@
 #include "growth/openings.h"
 #include "growth/roofs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -28,14 +30,16 @@ void addSolid(MeshData& out, const Box& b, const std::string& material) {
 void registerKernel(SceneSync& sync) { registerKernelWith(sync, {}); }
 
 void registerKernelWith(SceneSync& sync, MapperSource mappers) {
-  sync.setBuilder<GrowthSpec>([mappers](const DocObject& o, Progress* progress) {
+  sync.setBuilder<GrowthSpec>(unitObjectsFor, [mappers](const DocObject& o, const std::vector<DocObject>& inputs,
+                                                      Progress* progress) {
     const auto& spec = std::get<GrowthSpec>(o.spec);
     const std::shared_ptr<ViewMapper> mapper = mappers ? mappers() : nullptr;
-    GrownModel grown = grow(spec, progress, mapper.get());
-    const Site& site = grown.site;
     BuildResult b;
+    GrownModel grown = grow(GrowthInput{spec, unitsAround(o, inputs, &b.warnings)}, progress, mapper.get());
+    const Site& site = grown.site;
     b.kind = Kind::Unit;
     for (const Unit& u : grown.units) {
+      if (u.id > int(site.seeds.size())) continue;  // a unit already there: its own object meshes it
       MeshData m = unitMesh(u);
       const int mat = m.addMaterial("plaster");
       for (int& f : m.faceMaterial) f = mat;
@@ -66,10 +70,79 @@ void registerKernelWith(SceneSync& sync, MapperSource mappers) {
   });
 }
 
-GrownModel grow(const GrowthSpec& spec, Progress* progress, ViewMapper* mapper) {
+std::vector<DocObject> unitObjectsFor(const Document& doc, const DocObject& growthObject) {
+  std::vector<DocObject> out;
+  const auto* spec = std::get_if<GrowthSpec>(&growthObject.spec);
+  if (!spec || !spec->aroundUnits) return out;
+  for (const DocObject& o : doc.objects)
+    if (o.id != growthObject.id && std::holds_alternative<UnitSpec>(o.spec)) out.push_back(o);
+  return out;
+}
+
+std::vector<Site::FixedUnit> unitsAround(const DocObject& growthObject, const std::vector<DocObject>& others,
+                                         std::vector<std::string>* warnings) {
+  std::vector<Site::FixedUnit> out;
+  const Placement& site = growthObject.placement;
+  for (const DocObject& o : others) {
+    const auto* spec = std::get_if<UnitSpec>(&o.spec);
+    if (!spec || spec->parts.empty() || checkUnitSpec(*spec)) continue;  // a bad unit fails its own build
+    const double turn = std::remainder(o.placement.rotation_deg - site.rotation_deg, 90.0);
+    if (std::abs(turn) > 1e-9 || o.placement.scale != site.scale) {
+      if (warnings)
+        warnings->push_back("unit \"" + o.name + "\" is turned or scaled against the site: growth does not see it");
+      continue;
+    }
+    Site::FixedUnit f;
+    f.name = o.name;
+    for (const UnitPart& p : spec->parts) {
+      if (o.placement == site) {  // frozen from this site: the same frame, no rounding
+        f.parts.push_back({p.lo, p.hi});
+        continue;
+      }
+      // The part's corners in world space, then in the site's frame (a quarter turn keeps the box).
+      const Vec3 a = site.unapply(o.placement.apply(p.lo)), c = site.unapply(o.placement.apply(p.hi));
+      Box b;
+      for (int k = 0; k < 3; ++k) {
+        b.lo[k] = std::min(a[k], c[k]);
+        b.hi[k] = std::max(a[k], c[k]);
+      }
+      f.parts.push_back(b);
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+GrowthInput growthInputOf(const Document& doc, const DocObject& growthObject) {
+  GrowthInput in;
+  if (const auto* spec = std::get_if<GrowthSpec>(&growthObject.spec)) in.spec = *spec;
+  in.fixed = unitsAround(growthObject, unitObjectsFor(doc, growthObject));
+  return in;
+}
+
+void placeFixedUnits(Site& site, std::vector<Site::FixedUnit> fixed) {
+  const Box bounds = site.bounds();
+  for (Site::FixedUnit& f : fixed) {
+    const bool inside = std::any_of(f.parts.begin(), f.parts.end(), [&](const Box& p) {
+      for (int k = 0; k < 3; ++k)
+        if (p.hi[k] <= bounds.lo[k] || p.lo[k] >= bounds.hi[k]) return false;
+      return true;
+    });
+    if (inside) site.fixed.push_back(std::move(f));
+  }
+}
+
+GrownModel grow(const GrowthInput& input, Progress* progress, ViewMapper* mapper) {
+  const GrowthSpec& spec = input.spec;
   GrownModel out;
   try {
     out.site = parseSite(spec.site);
+  } catch (const InputError& e) {
+    throw InputError(e.where.empty() ? "growth.site" : "growth.site." + e.where, e.reason);
+  }
+  placeFixedUnits(out.site, input.fixed);
+  try {
+    validateSite(out.site);
   } catch (const InputError& e) {
     throw InputError(e.where.empty() ? "growth.site" : "growth.site." + e.where, e.reason);
   }

@@ -186,6 +186,19 @@ void validateSite(const Site& site) {
         bad(where, "overlaps (or lies within the clearance of) circulation[" + std::to_string(j) + "]");
     for (std::size_t j = 0; j < i; ++j)
       if (interiorsOverlap(b, site.seedBox(j), kEps)) bad(where, "overlaps seeds[" + std::to_string(j) + "]");
+    for (const Site::FixedUnit& f : site.fixed)
+      for (const Box& p : f.parts)
+        if (interiorsOverlap(b, p, kEps)) bad(where, "overlaps the unit \"" + f.name + "\" already there");
+  }
+  for (const Site::FixedUnit& f : site.fixed) {
+    if (f.parts.empty()) bad("unit \"" + f.name + "\"", "has no parts");
+    for (const Box& p : f.parts) {
+      for (int k = 0; k < 3; ++k) {
+        finite("unit \"" + f.name + "\"", p.lo[k]);
+        finite("unit \"" + f.name + "\"", p.hi[k]);
+      }
+      if (!(p.size(0) > 0 && p.size(1) > 0 && p.size(2) > 0)) bad("unit \"" + f.name + "\"", "a part has no volume");
+    }
   }
 }
 

@@ -69,6 +69,16 @@ struct Site {
   std::vector<Rect> cores;       // plan rectangles (u = x, v = y), full height
   std::vector<Box> circulation;  // staircases, corridors, landings
   std::vector<Seed> seeds;
+  // Units already there (a growth object grown around the Document's unit objects, as after
+  // Freeze): each a list of parts, with its name for messages. They never move; the seeds grow
+  // around them as around each other, and roofs, doors and windows finish them with the rest.
+  // In a run their unit ids follow the seeds' (seeds.size() + 1, ...). Not read from the site file.
+  struct FixedUnit {
+    std::string name;
+    std::vector<Box> parts;
+    bool operator==(const FixedUnit&) const = default;
+  };
+  std::vector<FixedUnit> fixed;
   double coreClearance = 1.0;         // least plan gap (L∞) between a unit and a core
   double circulationClearance = 0.0;  // ... and circulation (0: units may touch it)
   double cantilever = 4.0;            // the farthest a unit reaches beyond its supports

@@ -160,5 +160,92 @@ TEST(Collide, StairBasePartCoversTheWholeTop) {
   EXPECT_FALSE(stairBasePart(Box{{0, 0, 6}, {7, 4, 9}}, Side::PosX, stair, 3, 0.3));
 }
 
+// Collide-and-extrude by hand (Fig. 5.3, Fig. 8.4), on cases worked by hand.
+Box box(double x0, double y0, double z0, double x1, double y1, double z1) { return {{x0, y0, z0}, {x1, y1, z1}}; }
+
+Unit oneRoom() {
+  Unit u;
+  u.id = 1;
+  u.parts = {box(0, 0, 0, 10, 10, 3)};
+  return u;
+}
+
+double unionVolume(const Unit& u) {
+  double v = 0;
+  for (const Box& p : u.parts) v += p.volume();
+  return v;
+}
+
+void expectSound(const Unit& u, const std::vector<Box>& obstacles) {
+  for (std::size_t i = 0; i < u.parts.size(); ++i) {
+    for (std::size_t j = i + 1; j < u.parts.size(); ++j) EXPECT_FALSE(interiorsOverlap(u.parts[i], u.parts[j], kEps));
+    for (const Box& o : obstacles) EXPECT_FALSE(interiorsOverlap(u.parts[i], o, kEps)) << "part " << i;
+  }
+}
+
+TEST(CollideAndExtrude, EachStretchOfTheFaceAdvancesUntilItMeetsSomething) {
+  // +x of a 10 × 10 room pushed 4 m; a block 2 m out covers y 0..4: that stretch stops at it.
+  const std::vector<Box> obstacles{box(12, 0, 0, 20, 4, 3)};
+  const auto e = collideAndExtrude(oneRoom(), 0, Side::PosX, 4, obstacles, 3);
+  ASSERT_TRUE(e);
+  ASSERT_EQ(e->unit.parts.size(), 2u);
+  EXPECT_EQ(e->unit.parts[0], box(0, 0, 0, 12, 4, 3));
+  EXPECT_EQ(e->unit.parts[1], box(0, 4, 0, 14, 10, 3));
+  EXPECT_DOUBLE_EQ(e->added, (4 * 2 + 6 * 4) * 3.0);
+  EXPECT_DOUBLE_EQ(unionVolume(e->unit), 300 + e->added);
+  expectSound(e->unit, obstacles);
+}
+
+TEST(CollideAndExtrude, AStretchNarrowerThanARoomGoesWithTheNeighbourThatReachesLess) {
+  // A 1 m post 1 m out at y 4..5 between the block (reach 2) and open ground (reach 4): the
+  // post's stretch joins the block's, which then stops at the post.
+  const std::vector<Box> obstacles{box(12, 0, 0, 20, 4, 3), box(11, 4, 0, 12, 5, 3)};
+  const auto e = collideAndExtrude(oneRoom(), 0, Side::PosX, 4, obstacles, 3);
+  ASSERT_TRUE(e);
+  ASSERT_EQ(e->unit.parts.size(), 2u);
+  EXPECT_EQ(e->unit.parts[0], box(0, 0, 0, 11, 5, 3));
+  EXPECT_EQ(e->unit.parts[1], box(0, 5, 0, 14, 10, 3));
+  EXPECT_DOUBLE_EQ(e->added, (5 * 1 + 5 * 4) * 3.0);
+  expectSound(e->unit, obstacles);
+}
+
+TEST(CollideAndExtrude, WhatIsAboveTheStoreyOrBesideTheFaceDoesNotStopIt) {
+  const std::vector<Box> obstacles{box(11, 0, 3, 20, 10, 6), box(11, 10, 0, 20, 14, 3), box(-5, 0, 0, -1, 10, 3)};
+  const auto e = collideAndExtrude(oneRoom(), 0, Side::PosX, 4, obstacles, 3);
+  ASSERT_TRUE(e);
+  ASSERT_EQ(e->unit.parts.size(), 1u);
+  EXPECT_EQ(e->unit.parts[0], box(0, 0, 0, 14, 10, 3));
+  // -y the same way, 2 m: a part may grow on every side.
+  const auto f = collideAndExtrude(e->unit, 0, Side::NegY, 2, obstacles, 3);
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->unit.parts[0], box(0, -2, 0, 14, 10, 3));
+}
+
+TEST(CollideAndExtrude, TheUnitsOwnPartsAreInTheWayAndASideAgainstOneCannotMove) {
+  Unit u = oneRoom();
+  u.parts = {box(0, 0, 0, 4, 4, 3), box(0, 6, 0, 8, 10, 3), box(4, 0, 0, 8, 4, 3)};
+  const auto e = collideAndExtrude(u, 0, Side::PosY, 5, {}, 3);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->unit.parts[0], box(0, 0, 0, 4, 6, 3)) << "stops at its own part 2 m out";
+  std::string why;
+  EXPECT_FALSE(collideAndExtrude(u, 0, Side::PosX, 1, {}, 3, &why)) << "its +x side is the third part's -x";
+  EXPECT_NE(why.find("another part"), std::string::npos) << why;
+}
+
+TEST(CollideAndExtrude, PullsInKeepARoomAndFloorsAndBlockedFacesAreRefused) {
+  const auto in = collideAndExtrude(oneRoom(), 0, Side::PosX, -2, {}, 3);
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->unit.parts[0], box(0, 0, 0, 8, 10, 3));
+  EXPECT_DOUBLE_EQ(in->added, -2 * 10 * 3.0);
+  std::string why;
+  EXPECT_FALSE(collideAndExtrude(oneRoom(), 0, Side::PosX, -8, {}, 3, &why));
+  EXPECT_NE(why.find("deep"), std::string::npos) << why;
+  EXPECT_FALSE(collideAndExtrude(oneRoom(), 0, Side::Top, 3, {}, 3, &why));
+  EXPECT_NE(why.find("storeys"), std::string::npos) << why;
+  EXPECT_FALSE(collideAndExtrude(oneRoom(), 0, Side::PosX, 2, {box(10, -1, 0, 12, 11, 3)}, 3, &why));
+  EXPECT_NE(why.find("right at the face"), std::string::npos) << why;
+  EXPECT_FALSE(collideAndExtrude(oneRoom(), 3, Side::PosX, 2, {}, 3, &why));
+}
+
 }  // namespace
 }  // namespace corbel::growth

@@ -294,3 +294,68 @@ TEST(SceneSync, APlanBackgroundNeverRebuildsItsObject) {
 }
 
 }  // namespace
+
+// A builder that reads other objects (SceneSync inputs) sees copies of them as the Document had
+// them when the job was planned, and its object is rebuilt when they change, are added or are
+// removed, but not when an object it does not read changes.
+TEST(SceneSync, AnObjectThatReadsOthersIsRebuiltWhenTheyChange) {
+  Document doc;
+  corbel::ExtrusionSpec e;
+  const ObjectId reader = doc.add("reader", e);
+  const ObjectId a = doc.add("A", box(0, 0, 4, 4, 4));
+  const ObjectId other = doc.add("other", box(10, 0, 4, 4, 4, "glass"));
+  Scene scene;
+  SceneSync sync;
+  std::vector<std::vector<std::string>> seen;  // per build: the materials of the boxes read
+  // The reader reads the plaster boxes; its shell has as many unit cubes as it read boxes.
+  sync.setBuilder<corbel::ExtrusionSpec>(
+      [](const Document& d, const corbel::DocObject&) {
+        std::vector<corbel::DocObject> in;
+        for (const auto& o : d.objects)
+          if (const auto* b = std::get_if<BoxSpec>(&o.spec); b && b->material != "glass") in.push_back(o);
+        return in;
+      },
+      [&](const corbel::DocObject&, const std::vector<corbel::DocObject>& in, Progress*) {
+        std::vector<std::string> names;
+        corbel::BuildResult r;
+        r.kind = corbel::Kind::Shell;
+        for (const auto& o : in) {
+          names.push_back(o.name + ":" + std::get<BoxSpec>(o.spec).material);
+          r.mesh.append(corbel::buildBoxes(box(double(names.size()) * 2, 0, 1, 1, 1)));
+        }
+        seen.push_back(names);
+        return r;
+      });
+  sync.update(doc, scene);
+  ASSERT_EQ(seen.size(), 1u);
+  EXPECT_EQ(seen.back(), (std::vector<std::string>{"A:plaster"}));
+  EXPECT_EQ(scene.faces(reader).size(), 6u);
+
+  std::get<BoxSpec>(doc.find(other)->spec).size[2] = 9;  // not read: only `other` rebuilds
+  EXPECT_EQ(sync.update(doc, scene), 1u);
+  EXPECT_EQ(seen.size(), 1u);
+
+  std::get<BoxSpec>(doc.find(a)->spec).material = "stone";  // read: A and the reader rebuild
+  EXPECT_EQ(sync.update(doc, scene), 2u);
+  ASSERT_EQ(seen.size(), 2u);
+  EXPECT_EQ(seen.back(), (std::vector<std::string>{"A:stone"}));
+
+  doc.find(a)->placement.translation = Vec3(1, 0, 0);  // a placement is part of what it reads
+  sync.update(doc, scene);
+  EXPECT_EQ(seen.size(), 3u);
+
+  doc.add("B", box(20, 0, 4, 4, 4));  // a new object it reads
+  sync.update(doc, scene);
+  ASSERT_EQ(seen.size(), 4u);
+  EXPECT_EQ(seen.back(), (std::vector<std::string>{"A:stone", "B:plaster"}));
+  EXPECT_EQ(scene.faces(reader).size(), 12u);
+
+  doc.remove(a);  // one it read goes
+  sync.update(doc, scene);
+  ASSERT_EQ(seen.size(), 5u);
+  EXPECT_EQ(seen.back(), (std::vector<std::string>{"B:plaster"}));
+  EXPECT_EQ(scene.faces(reader).size(), 6u);
+
+  EXPECT_EQ(sync.update(doc, scene), 0u);  // nothing changed: nothing rebuilds
+  EXPECT_EQ(seen.size(), 5u);
+}
