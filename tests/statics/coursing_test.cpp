@@ -701,6 +701,32 @@ TEST(Coursing, CantedBayAndRecessHaveTheRingVolume) {
   EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible);
 }
 
+// A free-standing wall (L = 2.4 m, t = 0.3 m, h = 3 m, weight W) with a return at each end
+// turning back towards its outer side (reflex corners at (0, 0) and (L, 0)), pushed outwards at
+// its head by P = 3·W·t/(2h), three times what tips it alone. Whole, it can only turn about the
+// returns' outer feet (y = −R): its weight resists W·(R + t/2) plus, for each return with its
+// corner square (t × (R + t) in plan, weight W_r), W_r·(R + t)/2; P·h overturns. For R = 0.15 m
+// that is short of P·h, so it falls whatever the bond; for R = 1.2 m it is five times over, and
+// the returns, bonded at the reflex corners, hold it by the LP.
+TEST(Coursing, ReturnsAtReflexCornersHoldAWallTheHeadLoadOverturns) {
+  const double L = 2.4, t = 0.3, h = 3.0, rho = 2400 * 9.81;
+  const double W = rho * L * t * h, P = 3 * W * t / (2 * h);
+  auto resisting = [&](double R) { return W * (R + t / 2) + 2 * rho * t * (R + t) * h * (R + t) / 2; };
+  auto stands = [&](double R) {
+    CoursingSpec s = freeWall(L);
+    s.plan = {Vec2(0, -R), Vec2(0, 0), Vec2(L, 0), Vec2(L, -R)};
+    CoursedWalls w = courseWalls(s);
+    EXPECT_NEAR(volumeOf(w.blocks), (L * t + 2 * t * (R + t)) * h, 1e-9);
+    EXPECT_EQ(overlappingPairs(w.blocks), 0);
+    loadWallHeads(s, w, {{0.0, 0.0}, {0.0, P / L}, {0.0, 0.0}});
+    return checkFeasibility(onGround(w.blocks)).feasible;
+  };
+  EXPECT_LT(resisting(0.15), P * h);
+  EXPECT_FALSE(stands(0.15));
+  EXPECT_GE(resisting(1.2), 5 * P * h);
+  EXPECT_TRUE(stands(1.2));
+}
+
 TEST(Coursing, RefusesWhatCannotBeCoursed) {
   CoursingSpec s = house();
   s.plan = {Vec2(0, 0), Vec2(6, 0), Vec2(6, 4), Vec2(3, 0.5), Vec2(0, 4)};  // turns right by more than 90° at (3, 0.5)
