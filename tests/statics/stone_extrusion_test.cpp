@@ -256,6 +256,24 @@ TEST(StoneExtrusion, BayIsPartOfTheCoursedPlanAndCarriesItsRoof) {
   }
 }
 
+// Wind blowing towards −y onto the bay house's back: the two pieces of the back wall (2.5 m
+// each) and the bay's front (2 m) face it squarely; each cheek (√1.25 m, its outward normal
+// (1, ±0.5)/√1.25) meets it at cos θ = 0.5/√1.25 and takes p·A·cos θ along its normal, of which
+// cos θ along y and the x parts cancel. By hand: p·3·(2.5 + 2.5 + 2 + 2·√1.25·0.2) towards −y.
+TEST(StoneExtrusion, WindOnABayMeetsItsCheeksAtTheirSlant) {
+  ExtrusionSpec e = bayHouse();
+  e.masonry->coveringWeight = 0;
+  e.masonry->windPressure = 500;
+  e.masonry->windDirection = -90;
+  const ParametricModel model = stoneModel(e);
+  Vec3 f(0.0);
+  for (const Block& b : model.build(model.parameters).blocks)
+    for (const PointLoad& l : b.pointLoads) f += l.force;
+  EXPECT_NEAR(f[0], 0.0, 1e-9);
+  EXPECT_NEAR(f[1], -500 * 3 * (7 + 2 * std::sqrt(1.25) * 0.2), 1e-9);
+  EXPECT_EQ(f[2], 0.0);
+}
+
 // A recess: the same step reaching 1 m into the plan (a rectangle, no cant). Its roof covers
 // the notched plan, 48 − 3 = 45 m² at 45°; its walls' ring: perimeter 28 + 2 m, the house's
 // four corners and the recess's two convex ones at the mouth against its two reflex ones at the
