@@ -22,8 +22,57 @@ namespace {
 struct PlanBay {
   int instance = -1, source = -1, edge = -1;
   double from = 0, to = 0, depth = 0, cant = 0;
+  double top = 0;      // its walls' height (m)
+  bool lower = false;  // lower than the house's walls: the wall above spans its mouth
   std::string field, who;
 };
+
+// A plan of walls: the input loop, broken where the given bays open an edge, with each bay's
+// cheeks and front between the pieces.
+struct BrokenPlan {
+  std::vector<Vec2> points;
+  std::vector<int> source;                 // per edge: the input edge, or -1 for a bay's wall
+  std::vector<double> offset;              // per edge: where along its input edge it starts (m)
+  std::vector<std::array<int, 2>> bayEdge; // per edge: (index into the bays, side 0-2), or -1s
+
+  double length(std::size_t k) const { return (points[(k + 1) % points.size()] - points[k]).norm(); }
+  // The piece of input edge e holding [from, to] (m along e), or -1.
+  int pieceOf(int e, double from, double to) const {
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (source[k] == e && from >= offset[k] - 1e-9 && to <= offset[k] + length(k) + 1e-9) return int(k);
+    return -1;
+  }
+};
+
+BrokenPlan brokenPlan(const PlanLoop& loop, const std::vector<PlanBay>& bays, bool lowerToo) {
+  BrokenPlan plan;
+  const std::size_t n = loop.points.size();
+  for (std::size_t e = 0; e < n; ++e) {
+    const Vec2 p0 = loop.points[e], v = loop.points[(e + 1) % n] - p0;
+    const Vec2 d = v / v.norm(), out(d[1], -d[0]);  // out: right of the edge, out of the plan
+    plan.points.push_back(p0);
+    plan.source.push_back(int(e));
+    plan.offset.push_back(0.0);
+    plan.bayEdge.push_back({-1, -1});
+    for (std::size_t k = 0; k < bays.size(); ++k) {
+      const PlanBay& b = bays[k];
+      if (b.edge != int(e) || (b.lower && !lowerToo)) continue;
+      const std::array<Vec2, 4> corners = {p0 + d * b.from, p0 + d * (b.from + b.cant) + out * b.depth,
+                                           p0 + d * (b.to - b.cant) + out * b.depth, p0 + d * b.to};
+      for (int j = 0; j < 3; ++j) {
+        plan.points.push_back(corners[std::size_t(j)]);
+        plan.source.push_back(-1);
+        plan.offset.push_back(0.0);
+        plan.bayEdge.push_back({int(k), j});
+      }
+      plan.points.push_back(corners[3]);
+      plan.source.push_back(int(e));
+      plan.offset.push_back(b.to);
+      plan.bayEdge.push_back({-1, -1});
+    }
+  }
+  return plan;
+}
 
 // Where a natural step's anchor lies: the input edge of its wall's run nearest the anchor
 // point and how far along it (m).
@@ -110,16 +159,19 @@ StoneHouse stoneHouseOf(const ExtrusionSpec& spec) {
       continue;
     }
     // A bay (or a rectangle reaching in: a recess): its cheeks and front are walls of the plan,
-    // as high as the house's.
+    // as high as their profiles' first, vertical segments, at most the house's.
     const double side = wallHeightOf(spec.profiles.at(std::size_t(st.sideProfile)), field, who + "'s side profile");
     const char* kind = st.depth > 0 ? "bay" : "recess";
-    if (std::abs(front - height) > 1e-9 || std::abs(side - height) > 1e-9)
-      throw InputError(field, who + " is a " + kind + " whose walls rise " + std::to_string(std::min(front, side)) +
-                                  " m (its front and side profiles' first segments) and the house's " +
-                                  std::to_string(height) + " m; only " + kind +
-                                  "s as high as the walls are built in stone (a lower one needs the wall over "
-                                  "its mouth carried)");
+    if (std::abs(front - side) > 1e-9)
+      throw InputError(field, who + " is a " + kind + " whose front rises " + std::to_string(front) +
+                                  " m and whose cheeks rise " + std::to_string(side) +
+                                  " m (their profiles' first segments); its walls must have one height");
+    if (front > height + 1e-9)
+      throw InputError(field, who + " is a " + kind + " whose walls rise " + std::to_string(front) +
+                                  " m, above the house's " + std::to_string(height) + " m; not built in stone");
     PlanBay bay;
+    bay.top = std::min(front, height);
+    bay.lower = front < height - 1e-9;
     bay.instance = int(i);
     bay.source = source;
     bay.edge = edge;
@@ -140,44 +192,35 @@ StoneHouse stoneHouseOf(const ExtrusionSpec& spec) {
       throw InputError(bays[k].field, bays[k].who + " meets " + bays[k - 1].who + " on plan edge " +
                                           std::to_string(bays[k].edge));
 
-  // The coursed plan: each input edge, broken where a bay or recess opens it, with the bay's
-  // cheeks and front between the pieces.
-  std::vector<std::array<int, 2>> bayEdge;  // per coursed edge: (index into bays, side 0-2) or -1
-  for (std::size_t e = 0; e < n; ++e) {
-    const Vec2 p0 = loop.points[e], d = (loop.points[(e + 1) % n] - p0) / edgeLength(e);
-    const Vec2 out(d[1], -d[0]);  // outward, right of the edge
-    house.walls.plan.push_back(p0);
-    house.edgeSource.push_back(int(e));
-    house.edgeOffset.push_back(0.0);
-    bayEdge.push_back({-1, -1});
-    for (std::size_t k = 0; k < bays.size(); ++k) {
-      const PlanBay& b = bays[k];
-      if (b.edge != int(e)) continue;
-      const std::array<Vec2, 4> corners = {p0 + d * b.from, p0 + d * (b.from + b.cant) + out * b.depth,
-                                           p0 + d * (b.to - b.cant) + out * b.depth, p0 + d * b.to};
-      for (int j = 0; j < 3; ++j) {
-        house.walls.plan.push_back(corners[std::size_t(j)]);
-        house.edgeSource.push_back(-1);
-        house.edgeOffset.push_back(0.0);
-        bayEdge.push_back({int(k), j});
-      }
-      house.walls.plan.push_back(corners[3]);
-      house.edgeSource.push_back(int(e));
-      house.edgeOffset.push_back(b.to);
-      bayEdge.push_back({-1, -1});
-    }
-  }
+  // Bays lower than the walls all rise to one height, where the wall above spans their mouths
+  // (the first in the file sets it).
+  const PlanBay* setter = nullptr;
+  for (const PlanBay& b : bays)
+    if (b.lower && (!setter || b.instance < setter->instance)) setter = &b;
+  if (setter) house.bayTop = setter->top;
+  for (const PlanBay& b : bays)
+    if (b.lower && std::abs(b.top - house.bayTop) > 1e-9)
+      throw InputError(b.field, b.who + "'s walls rise " + std::to_string(b.top) + " m and " + setter->who + "'s " +
+                                    std::to_string(house.bayTop) + " m: the bays and recesses lower than the walls "
+                                    "must have one height");
+  const bool banded = house.bayTop > 0;
+
+  // The coursed plans: at the ground with every bay; above the lower bays' head without them.
+  const BrokenPlan ground = brokenPlan(loop, bays, true);
+  house.walls.plan = ground.points;
+  house.edgeSource = ground.source;
+  house.edgeOffset = ground.offset;
   for (const PlanBay& b : bays) house.bayStep.push_back(b.source);
-  const std::size_t m = house.walls.plan.size();
-  auto pieceLength = [&](std::size_t k) { return (house.walls.plan[(k + 1) % m] - house.walls.plan[k]).norm(); };
-  // The piece of input edge e holding [from, to], or -1.
-  auto pieceOf = [&](int e, double from, double to) {
-    for (std::size_t k = 0; k < m; ++k)
-      if (house.edgeSource[k] == e && from >= house.edgeOffset[k] - 1e-9 &&
-          to <= house.edgeOffset[k] + pieceLength(k) + 1e-9)
-        return int(k);
-    return -1;
-  };
+  BrokenPlan above;
+  if (banded) {
+    above = brokenPlan(loop, bays, false);
+    house.upper.plan = above.points;
+    house.upper.base = spec.baseZ;
+    house.upper.height = height;
+    house.upperSource = above.source;
+    house.upperOffset = above.offset;
+  }
+  const std::size_t m = ground.points.size();
   auto bayAcross = [&](int e, double from, double to) -> const PlanBay* {
     for (const PlanBay& b : bays)
       if (b.edge == e && from < b.to && b.from < to) return &b;
@@ -185,41 +228,46 @@ StoneHouse stoneHouseOf(const ExtrusionSpec& spec) {
   };
 
   // The roof from the extrusion with its bays and recesses (without buttresses: they stand
-  // against the walls): the main shell's faces bear on the walls of the edge that traced them,
-  // spread evenly along its pieces; a bay's roof faces on the bay's wall that traced them.
+  // against the walls): a main edge's faces bear on its wall (spread evenly along its pieces,
+  // above the lower bays where there are some), a bay's on the bay's wall that traced them.
   ExtrusionSpec roofed = spec;  // its anchors as written (their repeats expanded by extrude)
   roofed.steps.clear();
   for (const PlanBay& b : bays) roofed.steps.push_back(expanded.spec.steps[std::size_t(b.instance)]);
   const extrude::ExtrusionResult shell = extrude::extrude(roofed);
   house.roofArea.assign(m, 0.0);
   house.thrustArea.assign(m, 0.0);
-  std::vector<double> sourceLength(n, 0.0);
-  for (std::size_t k = 0; k < m; ++k)
-    if (house.edgeSource[k] >= 0) sourceLength[std::size_t(house.edgeSource[k])] += pieceLength(k);
+  house.upperRoofArea.assign(above.points.size(), 0.0);
+  house.upperThrustArea.assign(above.points.size(), 0.0);
   constexpr double kFlat = 5.0 * std::numbers::pi / 180.0;
   for (const extrude::ShellFace& f : shell.shell.faces) {
     if (f.base || f.segment < 1 || !(f.normal[2] > 1e-6)) continue;
-    std::vector<std::pair<std::size_t, double>> shares;  // (coursed edge, fraction)
-    if (f.step >= 0 && std::size_t(f.step) < bays.size() && f.sourceEdge >= 0 && f.sourceEdge < 3) {
-      for (std::size_t k = 0; k < m; ++k)
-        if (bayEdge[k][0] == f.step && bayEdge[k][1] == f.sourceEdge) shares.emplace_back(k, 1.0);
-    } else if (f.step < 0 && f.sourceLoop == 0 && f.sourceEdge >= 0 && std::size_t(f.sourceEdge) < n) {
-      for (std::size_t k = 0; k < m; ++k)
-        if (house.edgeSource[k] == f.sourceEdge)
-          shares.emplace_back(k, pieceLength(k) / sourceLength[std::size_t(f.sourceEdge)]);
+    const bool onBay = f.step >= 0 && std::size_t(f.step) < bays.size() && f.sourceEdge >= 0 && f.sourceEdge < 3;
+    const bool onMain = f.step < 0 && f.sourceLoop == 0 && f.sourceEdge >= 0 && std::size_t(f.sourceEdge) < n;
+    if (!onBay && !onMain) continue;
+    const bool up = banded && !(onBay && bays[std::size_t(f.step)].lower);
+    const BrokenPlan& plan = up ? above : ground;
+    std::vector<double>& area = up ? house.upperRoofArea : house.roofArea;
+    std::vector<double>& thrust = up ? house.upperThrustArea : house.thrustArea;
+    std::vector<std::pair<std::size_t, double>> shares;  // (edge of the plan, fraction)
+    double along = 0;
+    for (std::size_t k = 0; k < plan.points.size(); ++k)
+      if (onMain && plan.source[k] == f.sourceEdge) along += plan.length(k);
+    for (std::size_t k = 0; k < plan.points.size(); ++k) {
+      if (onBay && plan.bayEdge[k][0] == f.step && plan.bayEdge[k][1] == f.sourceEdge) shares.emplace_back(k, 1.0);
+      if (onMain && plan.source[k] == f.sourceEdge) shares.emplace_back(k, plan.length(k) / along);
     }
-    if (shares.empty()) continue;
-    const double area = extrude::faceArea(shell.shell, f);
+    const double a = extrude::faceArea(shell.shell, f);
     const double pitch = std::acos(std::clamp(f.normal[2], -1.0, 1.0));
     for (const auto& [k, share] : shares) {
-      house.roofArea[k] += area * share;
-      if (pitch >= kFlat) house.thrustArea[k] += area * share / (2 * std::tan(pitch));
+      area[k] += a * share;
+      if (pitch >= kFlat) thrust[k] += a * share / (2 * std::tan(pitch));
     }
     house.roofPitchDeg = std::max(house.roofPitchDeg, pitch * 180 / std::numbers::pi);
   }
 
   // Openings at door and window anchors (every instance of a repeat), placed on the extrusion
-  // without its steps, on the piece of their edge that holds them.
+  // without its steps, on the piece of their edge that holds them; one over a lower bay's
+  // mouth goes on the wall above it.
   ExtrusionSpec bare = spec;
   bare.steps.clear();
   const extrude::ExtrusionResult anchored = bays.empty() ? shell : extrude::extrude(bare);
@@ -237,30 +285,52 @@ StoneHouse stoneHouseOf(const ExtrusionSpec& spec) {
     o.to = u + ma.size.width / 2;
     o.bottom = a.position[2] - spec.baseZ;
     o.top = o.bottom + ma.size.height;
-    o.edge = pieceOf(e, o.from, o.to);
-    if (o.edge < 0) {
-      const PlanBay* b = bayAcross(e, o.from, o.to);
-      throw InputError(b ? b->field : "masonry.openings." + ma.name,
-                       (b ? b->who + " opens the wall where " : std::string("")) + "the " +
-                           (ma.feature == FeatureKind::Door ? "door" : "window") + " \"" + a.name + "\" is" +
-                           (b ? "" : " (it leaves its wall)"));
+    const char* what = ma.feature == FeatureKind::Door ? "door" : "window";
+    o.edge = ground.pieceOf(e, o.from, o.to);
+    if (o.edge >= 0) {
+      o.from -= ground.offset[std::size_t(o.edge)];
+      o.to -= ground.offset[std::size_t(o.edge)];
+      house.walls.openings.push_back(o);
+      continue;
     }
-    o.from -= house.edgeOffset[std::size_t(o.edge)];
-    o.to -= house.edgeOffset[std::size_t(o.edge)];
-    house.walls.openings.push_back(o);
+    const PlanBay* b = bayAcross(e, o.from, o.to);
+    const int piece = banded && b && b->lower ? above.pieceOf(e, o.from, o.to) : -1;
+    if (piece < 0)
+      throw InputError(b ? b->field : "masonry.openings." + ma.name,
+                       (b ? b->who + " opens the wall where " : std::string("")) + "the " + what + " \"" + a.name +
+                           "\" is" + (b ? "" : " (it leaves its wall)"));
+    o.edge = piece;
+    o.from -= above.offset[std::size_t(piece)];
+    o.to -= above.offset[std::size_t(piece)];
+    house.upper.openings.push_back(o);
+  }
+
+  // The lower bays' mouths: the wall above spans each on a lintel.
+  for (const PlanBay& b : bays) {
+    if (!b.lower) continue;
+    const int piece = above.pieceOf(b.edge, b.from, b.to);
+    if (piece < 0) throw InputError(b.field, b.who + " is not on one wall of the plan above it");
+    WallOpening mouth;
+    mouth.name = b.who.substr(b.who.find('"')) + "'s mouth";
+    mouth.edge = piece;
+    mouth.from = b.from - above.offset[std::size_t(piece)];
+    mouth.to = b.to - above.offset[std::size_t(piece)];
+    mouth.bottom = -b.top;
+    mouth.top = 0;
+    house.mouths.push_back(mouth);
   }
 
   // Buttresses on the pieces of their edges.
   for (PlacedButtress& p : buttresses) {
-    const int piece = pieceOf(p.b.edge, p.b.from, p.b.to);
+    const int piece = ground.pieceOf(p.b.edge, p.b.from, p.b.to);
     if (piece < 0) {
       const PlanBay* b = bayAcross(p.b.edge, p.b.from, p.b.to);
       throw InputError("steps[" + std::to_string(p.source) + "]",
                        "the buttress \"" + p.b.name + "\" " +
                            (b ? "stands where " + b->who + " opens the wall" : std::string("leaves its plan edge")));
     }
-    p.b.from -= house.edgeOffset[std::size_t(piece)];
-    p.b.to -= house.edgeOffset[std::size_t(piece)];
+    p.b.from -= ground.offset[std::size_t(piece)];
+    p.b.to -= ground.offset[std::size_t(piece)];
     p.b.edge = piece;
     house.walls.buttresses.push_back(p.b);
     house.buttressStep.push_back(p.source);
@@ -321,15 +391,23 @@ std::vector<WallButtress> proposedButtresses(const StoneHouse& house, double blo
   return kept;
 }
 
-std::vector<HeadLoad> roofLoads(const StoneHouse& house, double coveringWeight, bool ties) {
-  const std::vector<Vec2>& plan = house.walls.plan;
+namespace {
+
+std::vector<HeadLoad> headLoads(const std::vector<Vec2>& plan, const std::vector<double>& area,
+                                const std::vector<double>& thrust, double coveringWeight, bool ties) {
   std::vector<HeadLoad> loads(plan.size());
   for (std::size_t e = 0; e < plan.size(); ++e) {
     const double length = (plan[(e + 1) % plan.size()] - plan[e]).norm();
-    loads[e].down = coveringWeight * house.roofArea[e] / length;
-    loads[e].out = ties ? 0.0 : coveringWeight * house.thrustArea[e] / length;
+    loads[e].down = coveringWeight * area[e] / length;
+    loads[e].out = ties ? 0.0 : coveringWeight * thrust[e] / length;
   }
   return loads;
+}
+
+}  // namespace
+
+std::vector<HeadLoad> roofLoads(const StoneHouse& house, double coveringWeight, bool ties) {
+  return headLoads(house.walls.plan, house.roofArea, house.thrustArea, coveringWeight, ties);
 }
 
 namespace {
@@ -347,6 +425,85 @@ std::vector<WallButtress> buttressesAt(const StoneHouse& house, double deepest, 
     for (WallButtress& b : out) b.depth = depth;
   }
   return out;
+}
+
+// The walls of a house with bays lower than its walls in two bands, from the ground plan's
+// spec `s` (the model's numbers set): below the bays' head (snapped to a course joint, at
+// least one course each side) the ground plan with every opening, buttress and bay; above it
+// the plan without the lower bays, going on with the courses' bond, the wall spanning each
+// lower bay's mouth on a lintel, with the openings over the mouths and the parts of the others
+// and of the buttresses that reach it.
+std::pair<CoursingSpec, CoursingSpec> bands(const StoneHouse& house, const CoursingSpec& s) {
+  if (!(std::isfinite(s.courseHeight) && s.courseHeight > 0 && std::isfinite(s.height) && s.height > 0))
+    throw Error("coursing: height and course height must be positive numbers");
+  const int courses = std::max(1, int(std::lround(s.height / s.courseHeight)));
+  if (courses < 2) throw Error("stone house: a bay lower than the walls needs at least two courses");
+  const double ch = s.height / courses;
+  const int kb = std::clamp(int(std::lround(house.bayTop / ch)), 1, courses - 1);
+  const double zb = kb * ch;
+  CoursingSpec lower = s, upper = s;
+  lower.height = zb;
+  lower.courseHeight = ch;
+  lower.openings.clear();
+  upper.plan = house.upper.plan;
+  upper.base = s.base + zb;
+  upper.height = s.height - zb;
+  upper.courseHeight = ch;
+  upper.firstCourse = kb;
+  upper.openings.clear();
+  upper.buttresses.clear();
+  // From a piece of the ground plan to the piece of the plan above that holds [from, to].
+  auto lifted = [&](int edge, double& from, double& to, const std::string& who) {
+    const int source = house.edgeSource[std::size_t(edge)];
+    const double at = house.edgeOffset[std::size_t(edge)];
+    for (std::size_t k = 0; k < house.upperSource.size(); ++k) {
+      const double len = (upper.plan[(k + 1) % upper.plan.size()] - upper.plan[k]).norm();
+      if (house.upperSource[k] == source && at + from >= house.upperOffset[k] - 1e-9 &&
+          at + to <= house.upperOffset[k] + len + 1e-9) {
+        from += at - house.upperOffset[k];
+        to += at - house.upperOffset[k];
+        return int(k);
+      }
+    }
+    throw Error("stone house: " + who + " reaches above the bays' head on no wall");
+  };
+  for (const WallOpening& o : s.openings) {
+    const int sill = std::max(0, int(std::lround(o.bottom / ch)));
+    const int head = std::max(int(std::lround(o.top / ch)), sill + 1);
+    if (head < kb) {  // below the bays' head, with its own
+      lower.openings.push_back(o);
+      continue;
+    }
+    WallOpening up = o;
+    up.edge = lifted(o.edge, up.from, up.to, "opening \"" + o.name + "\"");
+    up.bottom = sill < kb ? -zb : o.bottom - zb;
+    up.top = (head - kb) * ch;
+    upper.openings.push_back(up);
+    if (sill < kb) {
+      WallOpening low = o;
+      low.throughHead = true;
+      lower.openings.push_back(low);
+    }
+  }
+  for (WallOpening o : house.upper.openings) {
+    if (int(std::lround(o.bottom / ch)) < kb)
+      throw Error("stone house: the opening \"" + o.name + "\" over a bay's mouth starts below the bay's head");
+    o.bottom -= zb;
+    o.top -= zb;
+    upper.openings.push_back(o);
+  }
+  for (WallOpening mouth : house.mouths) {
+    mouth.bottom = -zb;
+    upper.openings.push_back(mouth);
+  }
+  for (const WallButtress& b : s.buttresses) {
+    if (std::clamp(int(std::lround(b.top / ch)), 1, courses) <= kb) continue;
+    WallButtress up = b;
+    up.edge = lifted(b.edge, up.from, up.to, "buttress \"" + b.name + "\"");
+    up.top = b.top - zb;
+    upper.buttresses.push_back(up);
+  }
+  return {lower, upper};
 }
 
 }  // namespace
@@ -399,14 +556,27 @@ ParametricModel stoneModel(const ExtrusionSpec& spec) {
     s.blockLength = p["blockLength"];
     s.density = p["density"];
     s.buttresses = buttressesAt(house, deepest, p);
-    CoursedWalls w = courseWalls(s);
-    loadWallHeads(s, w, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
     const double towards = p["windDirection"] * std::numbers::pi / 180;
-    loadWind(s, w, p["windPressure"], Vec2(std::cos(towards), std::sin(towards)));
+    const Vec2 wind(std::cos(towards), std::sin(towards));
+    Assembly as;
+    if (house.bayTop <= 0) {
+      CoursedWalls w = courseWalls(s);
+      loadWallHeads(s, w, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
+      loadWind(s, w, p["windPressure"], wind);
+      as.blocks = std::move(w.blocks);
+    } else {
+      auto [lower, upper] = bands(house, s);
+      CoursedWalls below = courseWalls(lower), above = courseWalls(upper);
+      loadWallHeads(lower, below, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
+      loadWallHeads(upper, above,
+                    headLoads(upper.plan, house.upperRoofArea, house.upperThrustArea, p["coveringWeight"], p["ties"] != 0));
+      loadWind(lower, below, p["windPressure"], wind);
+      loadWind(upper, above, p["windPressure"], wind);
+      as.blocks = std::move(below.blocks);
+      as.blocks.insert(as.blocks.end(), above.blocks.begin(), above.blocks.end());
+    }
     BBox box;
     for (const Vec2& q : s.plan) box.add(Vec3(q[0], q[1], 0.0));
-    Assembly as;
-    as.blocks = std::move(w.blocks);
     as.blocks.push_back(boxBlock("ground", Vec3(box.lo[0] - 1, box.lo[1] - 1, s.base - 1),
                                  Vec3(box.hi[0] + 1, box.hi[1] + 1, s.base), 1.0, true));
     return as;

@@ -21,6 +21,17 @@ struct StoneHouse {
   std::vector<int> edgeSource;
   std::vector<double> edgeOffset;
   std::vector<int> bayStep;        // the entry of spec.steps behind each bay or recess built
+  // Bays and recesses lower than the walls (all rising to bayTop, m above the base; 0: none):
+  // below bayTop (snapped to a course joint) the walls follow walls.plan, with them; above it
+  // they follow upper.plan, without them, the wall spanning each one's mouth on a lintel
+  // (mouths, on upper.plan's edges). upper.openings are the doors and windows over a mouth;
+  // the others, in walls.openings, are carried on into the band above where they reach it.
+  double bayTop = 0;
+  CoursingSpec upper;
+  std::vector<int> upperSource;     // as edgeSource and edgeOffset, for upper.plan
+  std::vector<double> upperOffset;
+  std::vector<WallOpening> mouths;
+  std::vector<double> upperRoofArea, upperThrustArea;  // per edge of upper.plan
   std::vector<double> roofArea;    // per edge: m² of roof surface bearing on it
   std::vector<double> thrustArea;  // per edge: Σ A / (2 tan θ) over those faces, m²
   double roofPitchDeg = 0;         // the steepest roof face's pitch
@@ -41,14 +52,16 @@ inline constexpr double kMinButtressDepth = 0.05;
 //   segment (at most the wall head);
 // - bays (any depth), and rectangles reaching in (recesses): walls of the plan. The edge's wall
 //   is opened over the step's width and the step's cheeks and front close the plan around it
-//   (out of it for a bay, into it for a recess), meeting the main wall at reflex corners; their
-//   profiles must rise as high as the main walls.
+//   (out of it for a bay, into it for a recess), meeting the main wall at reflex corners, as
+//   high as their profiles' first, vertical segments (front and sides alike, at most the main
+//   walls'). Those lower than the main walls all rise to one height (bayTop), above which the
+//   main wall spans their mouths on lintels.
 // Roof faces (those above the wall segment facing up, in the extrusion with its bays and
 // recesses) go to the edge that traced them: a main edge's spread along its pieces, a bay's
 // to the bay's wall. Throws InputError at "masonry", "masonry.openings.NAME", "plan" or
 // "steps[i]" naming what cannot be built in stone (forced steps, steps above the ground, bays
-// lower or higher than the walls, bays past their edge's end or meeting another, openings and
-// buttresses where a bay opens the wall).
+// higher than the walls, lower bays of different heights, bays past their edge's end or
+// meeting another, openings and buttresses where a bay opens the wall).
 StoneHouse stoneHouseOf(const ExtrusionSpec& spec);
 
 // Where Make It Stand puts buttresses on an extrusion that has none (Kelly & Wonka's

@@ -230,10 +230,17 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
       throw Error(who + ": needs from < to and bottom < top");
     Placed p{&o, int(std::lround(o.bottom / ch)), int(std::lround(o.top / ch)), {}, 0, 0.0, 0.0, std::nullopt};
     p.sill = std::max(p.sill, 0);
-    if (p.head <= p.sill) p.head = p.sill + 1;
-    if (p.head >= courses)
+    if (o.top <= 0) p.sill = p.head = 0;  // below the foot: only its head, in the first course
+    else if (p.head <= p.sill) p.head = p.sill + 1;
+    if (!o.throughHead && p.head >= courses)
       throw Error(who + ": its head reaches the wall head (no course above it for a lintel or arch)");
-    if (o.head == OpeningHead::SemicircularArch) {
+    if (o.throughHead) {
+      if (p.sill >= courses) throw Error(who + ": it starts above the wall head");
+      p.head = courses;  // open to the head; the band above goes on with it
+      p.top = courses - 1;
+      p.lo = o.from;
+      p.hi = o.to;
+    } else if (o.head == OpeningHead::SemicircularArch) {
       const double depth = o.archDepth > 0 ? o.archDepth : ch;
       if (!std::isfinite(depth)) throw Error(who + ": the arch's depth is not a number");
       p.arch = archHead(o.from, o.to, p.head * ch, p.head, ch, depth, bearing);
@@ -255,7 +262,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         p.headCuts.push_back({x, mid + (x - mid) * (depth + ch) / depth});
       }
     }
-    if (!p.arch) {
+    if (!p.arch && !o.throughHead) {
       p.top = p.head;
       p.lo = p.headCuts.front().lo();
       p.hi = p.headCuts.back().hi();
@@ -302,7 +309,8 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
   out.courseHeight = ch;
   for (int c = 0; c < courses; ++c) {
     const double z0 = spec.base + c * ch, z1 = spec.base + (c + 1) * ch;
-    const bool odd = c % 2 != 0;
+    const bool odd = (c + spec.firstCourse) % 2 != 0;
+    const std::string course = std::to_string(c + spec.firstCourse);
     for (std::size_t e = 0; e < ne; ++e) {
       const EdgeFrame& f = edges[e];
       const bool ownsStart = f.startCorner && odd, ownsEnd = f.endCorner && !odd;
@@ -367,7 +375,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         for (const Span& s : spans) isOpen = isOpen || (s.open && mid > s.lo && mid < s.hi);
         if (isOpen) continue;
         const std::string name =
-            "wall " + std::to_string(e) + " course " + std::to_string(c) + " block " + std::to_string(k);
+            "wall " + std::to_string(e) + " course " + course + " block " + std::to_string(k);
         const int index = int(out.blocks.size());
         const bool first = k == 0, last = k + 2 == cuts.size();
         const bool atStart = first && ownsStart, atEnd = last && ownsEnd;  // the block holds a corner's square
@@ -438,8 +446,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
           const Vec2 q = f.at(u, -w.depth);
           return Vec3(q[0], q[1], z);
         };
-        out.blocks.push_back(prismBlock("wall " + std::to_string(e) + " buttress \"" + w.name + "\" course " +
-                                            std::to_string(c),
+        out.blocks.push_back(prismBlock("wall " + std::to_string(e) + " buttress \"" + w.name + "\" course " + course,
                                         {outside(w.from, z0), outside(w.to, z0), outside(w.to, z1), outside(w.from, z1)},
                                         Vec3(f.n[0], f.n[1], 0.0) * w.depth, spec.density));
       }
@@ -464,7 +471,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         const std::vector<Poly2> pieces = spandrelPieces(a, c * ch, (c + 1) * ch, tol);
         for (std::size_t k = 0; k < pieces.size(); ++k) {
           const int index = int(out.blocks.size());
-          prism(prefix + "course " + std::to_string(c) + " spandrel " + std::to_string(k), pieces[k]);
+          prism(prefix + "course " + course + " spandrel " + std::to_string(k), pieces[k]);
           if (c != courses - 1) continue;
           double lo = std::numeric_limits<double>::infinity(), hi = -lo;
           for (const Vec2& q : pieces[k])

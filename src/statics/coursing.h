@@ -19,6 +19,9 @@ struct WallOpening {
   double bottom = 0.0, top = 1.0;  // m above the wall's foot; snapped to the nearest course joints
   OpeningHead head = OpeningHead::Lintel;
   double archDepth = 0.0;        // m, a semicircular arch's ring depth; 0: one course height
+  // Open up to the wall head, with no head of its own here: the wall above is laid as another
+  // band (a second courseWalls on top) whose opening goes on from its foot.
+  bool throughHead = false;
 };
 
 // A buttress (a pier of solid stone) against the outer face of one plan edge's wall, from its
@@ -45,6 +48,9 @@ struct CoursingSpec {
   double blockLength = 0.8;    // odd courses are shifted by half a block (running bond)
   double thickness = 0.5;
   double density = 2400.0;
+  // The number of the first course: its parity sets the bond (even courses give a corner's
+  // square to the incoming wall), so a band laid on another carries its bond on.
+  int firstCourse = 0;
   std::vector<WallOpening> openings;
   std::vector<WallButtress> buttresses;
 };
@@ -64,6 +70,8 @@ struct CoursedWalls {
   double courseHeight = 0.0;   // the height actually used, height / courses
 };
 
+// An opening whose top is at or below the wall's foot (top ≤ 0) has only its head, in the first
+// course: the wall of a band spanning an opening below it (a lower bay's mouth).
 // Each course of each edge's wall is cut at bond joints (k·b on even courses, (k + ½)·b on odd
 // ones, measured from the edge's first corner), at the sides of openings it crosses and at the
 // ends of the lintel or arch it holds; joints closer than a quarter block to another cut or to

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -725,6 +726,44 @@ TEST(Coursing, ReturnsAtReflexCornersHoldAWallTheHeadLoadOverturns) {
   EXPECT_FALSE(stands(0.15));
   EXPECT_GE(resisting(1.2), 5 * P * h);
   EXPECT_TRUE(stands(1.2));
+}
+
+// Two bands laid one on the other are the walls coursed at once: the house's door and window
+// (heads in course 5) cut through the lower band open to its head (throughHead) and go on in
+// the upper one from below its foot; split at course 5 the upper band holds only their heads
+// (top 0). The upper band numbers its courses on (firstCourse), so the bond goes on. Identity:
+// block by block (by name), the same vertices.
+TEST(Coursing, TwoBandsAreTheWallsCoursedAtOnce) {
+  const CoursingSpec whole = house();
+  const CoursedWalls once = courseWalls(whole);
+  for (int kb : {3, 5}) {
+    const double zb = kb * 0.4;
+    CoursingSpec lower = whole, upper = whole;
+    lower.height = zb;
+    upper.base = zb;
+    upper.height = 3.2 - zb;
+    upper.firstCourse = kb;
+    for (std::size_t k = 0; k < whole.openings.size(); ++k) {
+      lower.openings[k].throughHead = true;
+      upper.openings[k].bottom = -zb;
+      upper.openings[k].top = 5 * 0.4 - zb;
+    }
+    std::vector<Block> both = courseWalls(lower).blocks;
+    for (const Block& b : courseWalls(upper).blocks) both.push_back(b);
+    ASSERT_EQ(both.size(), once.blocks.size()) << kb;
+    auto sorted = [](const Block& b) {
+      std::vector<std::array<double, 3>> v;
+      for (const Vec3& p : b.vertices) v.push_back({std::round(p[0] * 1e9), std::round(p[1] * 1e9), std::round(p[2] * 1e9)});
+      std::sort(v.begin(), v.end());
+      return v;
+    };
+    int differ = 0;
+    for (const Block& b : both) {
+      const auto it = std::find_if(once.blocks.begin(), once.blocks.end(), [&](const Block& o) { return o.name == b.name; });
+      differ += it == once.blocks.end() || sorted(*it) != sorted(b);
+    }
+    EXPECT_EQ(differ, 0) << kb;
+  }
 }
 
 TEST(Coursing, RefusesWhatCannotBeCoursed) {

@@ -169,11 +169,13 @@ TEST(StoneExtrusion, ButtressStepsArePiersCoursedWithTheWalls) {
 
 TEST(StoneExtrusion, RefusesStepsItCannotBuild) {
   ExtrusionSpec e = buttressedHouse();
-  e.steps[0].shape = StepShape::Bay;  // a bay whose walls (the pier profile, 2 m) are lower than the house's
-  e.steps[0].cant = 0.1;
+  e.profiles.push_back({"tall", {Vec2(0, 0), Vec2(0, 4), Vec2(1, 5)}, {}});
+  e.steps[0].shape = StepShape::Bay;  // a bay whose walls rise 4 m, above the house's 3 m
+  e.steps[0].frontProfile = e.steps[0].sideProfile = 2;
   EXPECT_THROW(stoneModel(e), InputError);
   e = buttressedHouse();
-  e.steps[0].depth = -0.3;  // a recess, 2 m high in 3 m walls
+  e.steps[0].depth = -0.3;  // a recess whose front rises 2 m (the pier profile) and cheeks 3 m
+  e.steps[0].sideProfile = 0;
   EXPECT_THROW(stoneModel(e), InputError);
   e = buttressedHouse();
   e.steps[0].shape = StepShape::Forced;
@@ -315,6 +317,63 @@ TEST(StoneExtrusion, LShapedHouseIsCoursedAndStands) {
   EXPECT_TRUE(checkFeasibility(as).feasible);
 }
 
+// The canted bay lower than the walls: its front and cheeks rise 1.5 m (three of the six 0.5 m
+// courses), then its roof leans in at 45° to the wall. Below 1.5 m the walls follow the plan
+// with the bay, above it the rectangle, the back wall spanning the bay's mouth on a lintel; the
+// door (2 m) goes on through both bands. By hand: walls (ring with the bay, as in
+// BayIsPartOfTheCoursedPlanAndCarriesItsRoof) × 1.5 m + 13 m² × 1.5 m less door and window;
+// the bay's roof (2.5 m² of plan at 45°) bears on the bay, the house's (48 m² at 45°) on the
+// walls above.
+TEST(StoneExtrusion, LowerBayCarriesTheWallOverItsMouthOnALintel) {
+  ExtrusionSpec e = bayHouse();
+  e.profiles.push_back({"bay", {Vec2(0, 0), Vec2(0, 1.5), Vec2(3, 4.5)}, {}});
+  e.steps[0].frontProfile = e.steps[0].sideProfile = 1;
+  const StoneHouse h = stoneHouseOf(e);
+  EXPECT_DOUBLE_EQ(h.bayTop, 1.5);
+  EXPECT_EQ(h.walls.plan.size(), 8u);
+  EXPECT_EQ(h.upper.plan, e.loops[0].points);
+  ASSERT_EQ(h.mouths.size(), 1u);
+  EXPECT_EQ(h.mouths[0].edge, 2);
+  EXPECT_NEAR(h.mouths[0].from, 2.5, 1e-9);
+  EXPECT_NEAR(h.mouths[0].to, 5.5, 1e-9);
+  double low = 0, high = 0;
+  for (double a : h.roofArea) low += a;
+  for (double a : h.upperRoofArea) high += a;
+  EXPECT_NEAR(low, 2.5 * std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(high, 48 * std::sqrt(2.0), 1e-6);
+
+  ExtrusionSpec loaded = e;
+  const double q = 800;
+  loaded.masonry->coveringWeight = q;
+  const ParametricModel model = stoneModel(loaded);
+  const Assembly as = model.build(model.parameters);
+  Vec3 total(0.0);
+  for (const Block& b : as.blocks)
+    for (const PointLoad& l : b.pointLoads) total += l.force;
+  EXPECT_NEAR(total[2], -q * 50.5 * std::sqrt(2.0), 1e-6);
+  const double ring = (27 + 2 * std::sqrt(1.25)) * 0.5 - 0.25 * 4;
+  EXPECT_NEAR(wallVolume(as), ring * 1.5 + 13.0 * 1.5 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5, 1e-9);
+  // Over the mouth (x from 2.5 to 5.5 in the back wall) stone from 1.5 m up, none below.
+  auto stone = [&](const Vec3& p) {
+    int count = 0;
+    for (const Block& b : as.blocks) {
+      bool in = b.name != "ground";
+      for (const auto& f : b.faces) {
+        std::vector<Vec3> poly;
+        for (int i : f) poly.push_back(b.vertices[std::size_t(i)]);
+        in = in && dot(p - poly[0], newellNormal(poly)) <= 0;
+      }
+      count += in;
+    }
+    return count;
+  };
+  EXPECT_EQ(stone(Vec3(4.0, 5.75, 0.8)), 0);
+  EXPECT_EQ(stone(Vec3(4.0, 5.75, 1.75)), 1);
+  EXPECT_EQ(stone(Vec3(4.0, 6.75, 0.8)), 1);  // the bay's front
+  EXPECT_EQ(stone(Vec3(4.0, 6.75, 1.75)), 0);
+  EXPECT_TRUE(checkFeasibility(as).feasible);
+}
+
 TEST(StoneExtrusion, RefusesBaysItCannotBuild) {
   auto where = [](const ExtrusionSpec& e) {
     try {
@@ -326,8 +385,15 @@ TEST(StoneExtrusion, RefusesBaysItCannotBuild) {
   };
   ExtrusionSpec e = bayHouse();
   e.profiles.push_back({"low", {Vec2(0, 0), Vec2(0, 2), Vec2(1, 3)}, {}});
-  e.steps[0].frontProfile = 1;  // its front 2 m high in 3 m walls
+  e.steps[0].frontProfile = 1;  // its front 2 m high, its cheeks 3 m
   EXPECT_EQ(where(e), "steps[0]");
+  e.steps[0].sideProfile = 1;  // all 2 m, beside another bay of 1.5 m
+  e.profiles.push_back({"lower", {Vec2(0, 0), Vec2(0, 1.5), Vec2(1, 2.5)}, {}});
+  e.steps.push_back(e.steps[0]);
+  e.steps[1].anchor.edge = 0;
+  e.steps[1].anchor.along = 0.2;
+  e.steps[1].frontProfile = e.steps[1].sideProfile = 2;
+  EXPECT_EQ(where(e), "steps[1]");
   e = bayHouse();
   e.steps[0].width = 8.5;  // past the ends of its 8 m edge
   EXPECT_EQ(where(e), "steps[0]");
