@@ -311,7 +311,7 @@ StoneHouse stoneHouseOf(const ExtrusionSpec& spec) {
     const int piece = above.pieceOf(b.edge, b.from, b.to);
     if (piece < 0) throw InputError(b.field, b.who + " is not on one wall of the plan above it");
     WallOpening mouth;
-    mouth.name = b.who.substr(b.who.find('"')) + "'s mouth";
+    mouth.name = "the mouth of " + b.field;
     mouth.edge = piece;
     mouth.from = b.from - above.offset[std::size_t(piece)];
     mouth.to = b.to - above.offset[std::size_t(piece)];
