@@ -359,6 +359,18 @@ std::vector<WallButtress> proposedButtresses(const StoneHouse& house, double blo
     const double length = (plan[(e + 1) % n] - plan[e]).norm();
     const double lo = square(e) + sliver, hi = length - square((e + 1) % n) - sliver;
     const int m = std::max(1, int(std::floor(length / house.walls.height)));
+    // What a pier keeps clear of: the openings of this wall and the lintels over lower bays'
+    // mouths beside it, on the wall above (in this wall's coordinates).
+    std::vector<WallOpening> keepOut;
+    for (const WallOpening& o : house.walls.openings)
+      if (o.edge == int(e)) keepOut.push_back(o);
+    for (WallOpening o : house.mouths) {
+      if (e >= house.edgeSource.size() || house.upperSource[std::size_t(o.edge)] != house.edgeSource[e]) continue;
+      const double shift = house.upperOffset[std::size_t(o.edge)] - house.edgeOffset[e];
+      o.from += shift;
+      o.to += shift;
+      keepOut.push_back(o);
+    }
     std::vector<std::pair<double, int>> centres;  // (centre, how many times moved)
     for (int k = 1; k <= m; ++k) centres.emplace_back(length * k / (m + 1), 0);
     int index = 0;
@@ -366,8 +378,8 @@ std::vector<WallButtress> proposedButtresses(const StoneHouse& house, double blo
       const auto [centre, moved] = centres[c];
       const double from = centre - width / 2, to = centre + width / 2;
       bool clear = from >= lo && to <= hi;
-      for (const WallOpening& o : house.walls.openings) {
-        if (o.edge != int(e) || !(from < o.to + clearance && o.from - clearance < to)) continue;
+      for (const WallOpening& o : keepOut) {
+        if (!(from < o.to + clearance && o.from - clearance < to)) continue;
         clear = false;
         if (moved < 2) {
           centres.emplace_back(o.from - clearance - width / 2, moved + 1);

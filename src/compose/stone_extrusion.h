@@ -67,8 +67,8 @@ StoneHouse stoneHouseOf(const ExtrusionSpec& spec);
 // Where Make It Stand puts buttresses on an extrusion that has none (Kelly & Wonka's
 // buttresses, Fig. 23, as natural steps): on each main wall (not a bay's) of length L and height h, ⌊L / h⌋ (at
 // least one) evenly spaced piers one block long; a pier that would meet an opening (with a
-// course and three quarters of a block of clearance for its head) is replaced by one on each
-// side of it; piers that would reach a corner's square or another pier are left out. Their
+// course and three quarters of a block of clearance for its head), or the lintel over a lower
+// bay's mouth beside it, is replaced by one on each side of it; piers that would reach a corner's square or another pier are left out. Their
 // depth is 0 (the caller sets it) and they reach the wall head.
 std::vector<WallButtress> proposedButtresses(const StoneHouse& house, double blockLength, double courseHeight,
                                              double thickness);

@@ -372,6 +372,16 @@ TEST(StoneExtrusion, LowerBayCarriesTheWallOverItsMouthOnALintel) {
   EXPECT_EQ(stone(Vec3(4.0, 6.75, 0.8)), 1);  // the bay's front
   EXPECT_EQ(stone(Vec3(4.0, 6.75, 1.75)), 0);
   EXPECT_TRUE(checkFeasibility(as).feasible);
+  // Proposed buttresses keep clear of the lintel over the mouth ([2.5, 5.5] of edge 2, a
+  // course and three quarters of a 0.8 m block beyond), and the model builds with them.
+  for (const WallButtress& b : proposedButtresses(h, 0.8, 0.5, 0.5)) {
+    if (h.edgeSource[std::size_t(b.edge)] != 2) continue;
+    const double from = h.edgeOffset[std::size_t(b.edge)] + b.from, to = h.edgeOffset[std::size_t(b.edge)] + b.to;
+    EXPECT_TRUE(to <= 2.5 - 1.1 + 1e-9 || from >= 5.5 + 1.1 - 1e-9) << b.name << " " << from << " " << to;
+  }
+  ParameterSet piers = model.parameters;
+  piers.set("buttressDepth", 0.5);
+  EXPECT_NO_THROW(model.build(piers));
 }
 
 TEST(StoneExtrusion, RefusesBaysItCannotBuild) {
