@@ -15,6 +15,23 @@ namespace corbel::statics {
 // roof resting on that edge's wall head.
 struct StoneHouse {
   CoursingSpec walls;        // without the masonry section's numbers (set by stoneModel's build)
+  // Per edge of walls.plan (the input loop, broken where a bay or recess opens an edge, with
+  // the bay's cheeks and front between the pieces): the input edge it lies on and how far along
+  // it the piece starts (m), or -1 and 0 for a bay's or recess's own walls.
+  std::vector<int> edgeSource;
+  std::vector<double> edgeOffset;
+  std::vector<int> bayStep;        // the entry of spec.steps behind each bay or recess built
+  // Bays and recesses lower than the walls (all rising to bayTop, m above the base; 0: none):
+  // below bayTop (snapped to a course joint) the walls follow walls.plan, with them; above it
+  // they follow upper.plan, without them, the wall spanning each one's mouth on a lintel
+  // (mouths, on upper.plan's edges). upper.openings are the doors and windows over a mouth;
+  // the others, in walls.openings, are carried on into the band above where they reach it.
+  double bayTop = 0;
+  CoursingSpec upper;
+  std::vector<int> upperSource;     // as edgeSource and edgeOffset, for upper.plan
+  std::vector<double> upperOffset;
+  std::vector<WallOpening> mouths;
+  std::vector<double> upperRoofArea, upperThrustArea;  // per edge of upper.plan
   std::vector<double> roofArea;    // per edge: m² of roof surface bearing on it
   std::vector<double> thrustArea;  // per edge: Σ A / (2 tan θ) over those faces, m²
   double roofPitchDeg = 0;         // the steepest roof face's pitch
@@ -27,23 +44,31 @@ struct StoneHouse {
 // adds them (proposedButtresses) once the depth reaches it.
 inline constexpr double kMinButtressDepth = 0.05;
 
-// Reads the extrusion: one plan loop with convex corners, every edge's profile starting with a
-// vertical wall of one common height; roof faces (those above the wall segment facing up) go to
-// the edge that traced them (in the extrusion without its steps: the roof bears on the main
-// walls); door and window anchors become openings (heads from the masonry section). Natural
-// steps of rectangle shape standing on the ground (anchor height 0) and reaching out of the
-// wall (depth > 0) are buttresses: solid piers of stone `width` × `depth` about their anchor,
-// as high as their front profile's first, vertical segment (at most the wall head), every
-// instance of a repeat. Throws InputError at "masonry", "masonry.openings.NAME", "plan" or
-// "steps[i]" naming what cannot be built in stone (bays, recesses, forced steps, steps above the
-// ground).
+// Reads the extrusion: one plan loop, every edge's profile starting with a vertical wall of one
+// common height; door and window anchors become openings (heads from the masonry section).
+// Natural steps standing on the ground (anchor height 0), every instance of a repeat:
+// - of rectangle shape reaching out of the wall (depth > 0): buttresses, solid piers of stone
+//   `width` × `depth` about their anchor, as high as their front profile's first, vertical
+//   segment (at most the wall head);
+// - bays (any depth), and rectangles reaching in (recesses): walls of the plan. The edge's wall
+//   is opened over the step's width and the step's cheeks and front close the plan around it
+//   (out of it for a bay, into it for a recess), meeting the main wall at reflex corners, as
+//   high as their profiles' first, vertical segments (front and sides alike, at most the main
+//   walls'). Those lower than the main walls all rise to one height (bayTop), above which the
+//   main wall spans their mouths on lintels.
+// Roof faces (those above the wall segment facing up, in the extrusion with its bays and
+// recesses) go to the edge that traced them: a main edge's spread along its pieces, a bay's
+// to the bay's wall. Throws InputError at "masonry", "masonry.openings.NAME", "plan" or
+// "steps[i]" naming what cannot be built in stone (forced steps, steps above the ground, bays
+// higher than the walls, lower bays of different heights, bays past their edge's end or
+// meeting another, openings and buttresses where a bay opens the wall).
 StoneHouse stoneHouseOf(const ExtrusionSpec& spec);
 
 // Where Make It Stand puts buttresses on an extrusion that has none (Kelly & Wonka's
-// buttresses, Fig. 23, as natural steps): on each wall of length L and height h, ⌊L / h⌋ (at
+// buttresses, Fig. 23, as natural steps): on each main wall (not a bay's) of length L and height h, ⌊L / h⌋ (at
 // least one) evenly spaced piers one block long; a pier that would meet an opening (with a
-// course and three quarters of a block of clearance for its head) is replaced by one on each
-// side of it; piers that would reach a corner's square or another pier are left out. Their
+// course and three quarters of a block of clearance for its head), or the lintel over a lower
+// bay's mouth beside it, is replaced by one on each side of it; piers that would reach a corner's square or another pier are left out. Their
 // depth is 0 (the caller sets it) and they reach the wall head.
 std::vector<WallButtress> proposedButtresses(const StoneHouse& house, double blockLength, double courseHeight,
                                              double thickness);

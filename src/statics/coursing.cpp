@@ -23,6 +23,10 @@ struct EdgeFrame {
   double length = 0.0;
   double startSquare = 0.0, endSquare = 0.0;  // a_s, a_e: the corner squares' extent along the face
   bool startCorner = false, endCorner = false;
+  // At a reflex corner the square lies beyond the face's end (its squares above are 0): the
+  // wall that does not hold it stops at the outer corner.
+  bool startReflex = false, endReflex = false;
+  double startKeep = 0.0, endKeep = 0.0;  // openings and buttresses stay this far from the ends
   Vec2 at(double u, double v) const { return p0 + d * u + n * v; }
 };
 
@@ -180,8 +184,19 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
     EdgeFrame& in = edges[(k + ne - 1) % ne];
     EdgeFrame& out = edges[k % ne];
     const double turn = cross2(in.d, out.d);
-    if (turn < -1e-9) throw Error("coursing: the plan turns right at corner " + std::to_string(k) +
-                                  " (a reflex corner); only convex corners are coursed");
+    if (turn < -1e-9) {
+      // A reflex corner: the square between the outer corner P, the inner corner Q and P's feet
+      // on the two inner faces is convex, and so is either wall's end with it, while the plan
+      // turns by at most a right angle.
+      if (dot(in.d, out.d) < -1e-9)
+        throw Error("coursing: the plan turns right by more than a right angle at corner " + std::to_string(k) +
+                    "; reflex corners are coursed up to 90°");
+      in.endSquare = out.startSquare = 0.0;
+      in.endCorner = out.startCorner = true;
+      in.endReflex = out.startReflex = true;
+      in.endKeep = out.startKeep = sliver;
+      continue;
+    }
     double a = 0;
     if (turn > 1e-9) {
       // The inner faces' lines meet at Q = P + n_in t + s d_in = P + n_out t + r d_out.
@@ -194,6 +209,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
       throw Error("coursing: the walls at corner " + std::to_string(k) + " are thicker than the edges are long");
     in.endSquare = out.startSquare = a;
     in.endCorner = out.startCorner = a > tol;
+    in.endKeep = out.startKeep = a;
   }
 
   // Openings: snapped to courses, checked against their wall and each other.
@@ -214,10 +230,17 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
       throw Error(who + ": needs from < to and bottom < top");
     Placed p{&o, int(std::lround(o.bottom / ch)), int(std::lround(o.top / ch)), {}, 0, 0.0, 0.0, std::nullopt};
     p.sill = std::max(p.sill, 0);
-    if (p.head <= p.sill) p.head = p.sill + 1;
-    if (p.head >= courses)
+    if (o.top <= 0) p.sill = p.head = 0;  // below the foot: only its head, in the first course
+    else if (p.head <= p.sill) p.head = p.sill + 1;
+    if (!o.throughHead && p.head >= courses)
       throw Error(who + ": its head reaches the wall head (no course above it for a lintel or arch)");
-    if (o.head == OpeningHead::SemicircularArch) {
+    if (o.throughHead) {
+      if (p.sill >= courses) throw Error(who + ": it starts above the wall head");
+      p.head = courses;  // open to the head; the band above goes on with it
+      p.top = courses - 1;
+      p.lo = o.from;
+      p.hi = o.to;
+    } else if (o.head == OpeningHead::SemicircularArch) {
       const double depth = o.archDepth > 0 ? o.archDepth : ch;
       if (!std::isfinite(depth)) throw Error(who + ": the arch's depth is not a number");
       p.arch = archHead(o.from, o.to, p.head * ch, p.head, ch, depth, bearing);
@@ -239,13 +262,13 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         p.headCuts.push_back({x, mid + (x - mid) * (depth + ch) / depth});
       }
     }
-    if (!p.arch) {
+    if (!p.arch && !o.throughHead) {
       p.top = p.head;
       p.lo = p.headCuts.front().lo();
       p.hi = p.headCuts.back().hi();
     }
     const EdgeFrame& f = edges[std::size_t(o.edge)];
-    if (p.lo < f.startSquare - tol || p.hi > f.length - f.endSquare + tol)
+    if (p.lo < f.startKeep - tol || p.hi > f.length - f.endKeep + tol)
       throw Error(who + ": the opening and its " + (o.head == OpeningHead::Lintel ? "lintel's bearings" : "arch") +
                   " leave its wall or reach a corner's square");
     for (const Placed& q : placed) {
@@ -269,7 +292,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         !std::isfinite(w.depth) || !(w.depth > 0))
       throw Error(who + ": needs from < to, a depth > 0 and a finite top");
     const EdgeFrame& f = edges[std::size_t(w.edge)];
-    if (w.from < f.startSquare - tol || w.to > f.length - f.endSquare + tol)
+    if (w.from < f.startKeep - tol || w.to > f.length - f.endKeep + tol)
       throw Error(who + ": it leaves its wall or reaches a corner's square");
     const Pier pier{&w, std::clamp(int(std::lround(w.top / ch)), 1, courses)};
     for (const Pier& q : piers)
@@ -286,7 +309,8 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
   out.courseHeight = ch;
   for (int c = 0; c < courses; ++c) {
     const double z0 = spec.base + c * ch, z1 = spec.base + (c + 1) * ch;
-    const bool odd = c % 2 != 0;
+    const bool odd = (c + spec.firstCourse) % 2 != 0;
+    const std::string course = std::to_string(c + spec.firstCourse);
     for (std::size_t e = 0; e < ne; ++e) {
       const EdgeFrame& f = edges[e];
       const bool ownsStart = f.startCorner && odd, ownsEnd = f.endCorner && !odd;
@@ -351,31 +375,46 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         for (const Span& s : spans) isOpen = isOpen || (s.open && mid > s.lo && mid < s.hi);
         if (isOpen) continue;
         const std::string name =
-            "wall " + std::to_string(e) + " course " + std::to_string(c) + " block " + std::to_string(k);
+            "wall " + std::to_string(e) + " course " + course + " block " + std::to_string(k);
         const int index = int(out.blocks.size());
         const bool first = k == 0, last = k + 2 == cuts.size();
-        if ((first && ownsStart) || (last && ownsEnd)) {
-          if (first && last) throw Error("coursing: wall " + std::to_string(e) + " is one block between two corners");
+        const bool atStart = first && ownsStart, atEnd = last && ownsEnd;  // the block holds a corner's square
+        if (atStart || atEnd) {
+          if (atStart && atEnd) throw Error("coursing: wall " + std::to_string(e) + " is one block between two corners");
           // The block holding a corner: between the course's planes, the wall's faces, the
           // other wall's outer face and its joint at the corner square, and the cut on the far
           // side (slanted at an arch's skewback). Convex: a convex plan prism cut by a plane.
-          const EdgeFrame& other = first ? edges[(e + ne - 1) % ne] : edges[(e + 1) % ne];
+          const EdgeFrame& other = atStart ? edges[(e + ne - 1) % ne] : edges[(e + 1) % ne];
           auto horizontal = [](const Vec2& nrm, double d) { return HalfSpace{Vec3(nrm[0], nrm[1], 0.0), d}; };
           std::vector<HalfSpace> hs = {{Vec3(0, 0, -1), -z0}, {Vec3(0, 0, 1), z1},
-                                       horizontal(-f.n, -dot(f.n, f.p0)), horizontal(f.n, dot(f.n, f.p0) + t),
-                                       horizontal(-other.n, -dot(other.n, other.p0))};
-          if (first)  // u_prev ≥ L_prev − a
-            hs.push_back(horizontal(-other.d, -(dot(other.d, other.p0) + other.length - f.startSquare)));
-          else  // u_next ≤ a
-            hs.push_back(horizontal(other.d, dot(other.d, other.p0) + f.endSquare));
-          // The far cut: u − s·z ≤ c (first) or ≥ c (last), u = d·(p − p0), s = (top − bottom) / (z1 − z0).
-          const Cut& cut = first ? r : l;
+                                       horizontal(-f.n, -dot(f.n, f.p0)), horizontal(f.n, dot(f.n, f.p0) + t)};
+          if (atStart ? f.startReflex : f.endReflex) {
+            // A reflex corner P: the square's sides are the other wall's end joint through P
+            // (across its face) and its inner face.
+            const Vec2 corner = atStart ? f.p0 : other.p0;
+            if (atStart)  // (p − P)·d_prev ≥ 0
+              hs.push_back(horizontal(-other.d, -dot(other.d, corner)));
+            else  // (p − P)·d_next ≤ 0
+              hs.push_back(horizontal(other.d, dot(other.d, corner)));
+            hs.push_back(horizontal(other.n, dot(other.n, corner) + t));
+          } else {
+            hs.push_back(horizontal(-other.n, -dot(other.n, other.p0)));
+            if (atStart)  // u_prev ≥ L_prev − a
+              hs.push_back(horizontal(-other.d, -(dot(other.d, other.p0) + other.length - f.startSquare)));
+            else  // u_next ≤ a
+              hs.push_back(horizontal(other.d, dot(other.d, other.p0) + f.endSquare));
+          }
+          // The far cut: u − s·z ≤ c (a start corner) or ≥ c (an end one), u = d·(p − p0), s = (top − bottom) / (z1 − z0).
+          const Cut& cut = atStart ? r : l;
           const double slope = (cut.top - cut.bottom) / (z1 - z0), c0 = cut.bottom - slope * z0 + dot(f.d, f.p0);
           const Vec3 along(f.d[0], f.d[1], -slope);
-          hs.push_back(first ? HalfSpace{along, c0} : HalfSpace{-along, -c0});
+          hs.push_back(atStart ? HalfSpace{along, c0} : HalfSpace{-along, -c0});
           out.blocks.push_back(halfspaceBlock(name, hs, spec.density));
-          if (c == courses - 1) {
-            if (first) {
+          if (c == courses - 1 && (atStart ? f.startReflex : f.endReflex)) {
+            // The square lies beyond both outer faces: the block's head is its own edge's.
+            out.heads.push_back(atStart ? HeadSpan{index, int(e), 0.0, r.top} : HeadSpan{index, int(e), l.top, f.length});
+          } else if (c == courses - 1) {
+            if (atStart) {
               const EdgeFrame& prev = edges[(e + ne - 1) % ne];
               out.heads.push_back({index, int((e + ne - 1) % ne), prev.length - f.startSquare, prev.length});
               out.heads.push_back({index, int(e), 0.0, r.top});
@@ -407,8 +446,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
           const Vec2 q = f.at(u, -w.depth);
           return Vec3(q[0], q[1], z);
         };
-        out.blocks.push_back(prismBlock("wall " + std::to_string(e) + " buttress \"" + w.name + "\" course " +
-                                            std::to_string(c),
+        out.blocks.push_back(prismBlock("wall " + std::to_string(e) + " buttress \"" + w.name + "\" course " + course,
                                         {outside(w.from, z0), outside(w.to, z0), outside(w.to, z1), outside(w.from, z1)},
                                         Vec3(f.n[0], f.n[1], 0.0) * w.depth, spec.density));
       }
@@ -433,7 +471,7 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
         const std::vector<Poly2> pieces = spandrelPieces(a, c * ch, (c + 1) * ch, tol);
         for (std::size_t k = 0; k < pieces.size(); ++k) {
           const int index = int(out.blocks.size());
-          prism(prefix + "course " + std::to_string(c) + " spandrel " + std::to_string(k), pieces[k]);
+          prism(prefix + "course " + course + " spandrel " + std::to_string(k), pieces[k]);
           if (c != courses - 1) continue;
           double lo = std::numeric_limits<double>::infinity(), hi = -lo;
           for (const Vec2& q : pieces[k])
@@ -483,29 +521,38 @@ void loadWind(const CoursingSpec& spec, CoursedWalls& walls, double pressure, co
     if (meets <= 1e-12) continue;
     for (Block& b : walls.blocks)
       for (const auto& face : b.faces) {
-        std::vector<Vec3> poly;
+        // The face in the outer face's coordinates (u along the edge, z up), if it lies there.
+        Poly2 poly;
         bool onFace = true;
         for (int i : face) {
           const Vec3& q = b.vertices[std::size_t(i)];
           const Vec2 r = Vec2(q[0], q[1]) - p0;
-          const double u = dot(r, d);
-          onFace = onFace && std::abs(dot(r, o)) <= tol && u >= -tol && u <= length + tol;
-          poly.push_back(q);
+          onFace = onFace && std::abs(dot(r, o)) <= tol;
+          poly.emplace_back(dot(r, d), q[2]);
         }
-        if (!onFace) continue;
-        const Vec3 normal = newellNormal(poly);  // twice the area, outwards
-        const double area = normal.norm() / 2;
-        if (!(area > 0) || dot(normal / (2 * area), Vec3(o[0], o[1], 0.0)) < 1 - 1e-9) continue;
+        if (!onFace || poly.size() < 3) continue;
+        std::vector<Vec3> loop;
+        for (int i : face) loop.push_back(b.vertices[std::size_t(i)]);
+        const Vec3 normal = newellNormal(loop);
+        if (!(normal.norm() > 0) || dot(normal.normalized(), Vec3(o[0], o[1], 0.0)) < 1 - 1e-9) continue;
+        // Only its part on the edge's stretch (a block holding a reflex corner's square reaches
+        // past the face's end along the face's line, behind the other wall).
+        poly = clipped(clipped(poly, Vec2(-1.0, 0.0), 0.0), Vec2(1.0, 0.0), length);
+        if (poly.size() < 3) continue;
+        const double area = std::abs(signedArea(poly));
+        if (!(area > tol * tol)) continue;
         // Area centroid by a fan of triangles from the first vertex.
-        Vec3 c(0.0);
+        Vec2 cu(0.0, 0.0);
         double total = 0;
         for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
-          const double a = cross(poly[k] - poly[0], poly[k + 1] - poly[0]).norm() / 2;
-          c += (poly[0] + poly[k] + poly[k + 1]) * (a / 3);
+          const double a = cross2(poly[k] - poly[0], poly[k + 1] - poly[0]) / 2;
+          cu += (poly[0] + poly[k] + poly[k + 1]) * (a / 3);
           total += a;
         }
+        cu /= total;
+        const Vec2 at = p0 + d * cu[0];
         PointLoad l;
-        l.at = c / total;
+        l.at = Vec3(at[0], at[1], cu[1]);
         l.force = Vec3(-o[0], -o[1], 0.0) * (pressure * area * meets);
         b.pointLoads.push_back(l);
       }

@@ -19,6 +19,9 @@ struct WallOpening {
   double bottom = 0.0, top = 1.0;  // m above the wall's foot; snapped to the nearest course joints
   OpeningHead head = OpeningHead::Lintel;
   double archDepth = 0.0;        // m, a semicircular arch's ring depth; 0: one course height
+  // Open up to the wall head, with no head of its own here: the wall above is laid as another
+  // band (a second courseWalls on top) whose opening goes on from its foot.
+  bool throughHead = false;
 };
 
 // A buttress (a pier of solid stone) against the outer face of one plan edge's wall, from its
@@ -35,7 +38,8 @@ struct WallButtress {
 
 struct CoursingSpec {
   // The walls' outer faces: corners counter-clockwise seen from above, each wall lying on the
-  // left of its edge (inside the plan). Every corner of a closed plan must turn left (convex).
+  // left of its edge (inside the plan). A corner may turn left (convex) or right (reflex, by at
+  // most a right angle, as where a bay's cheek leaves the main wall).
   std::vector<Vec2> plan;
   bool closed = true;          // false: an open polyline whose two ends are free wall ends
   double base = 0.0;           // z of the wall's foot
@@ -44,6 +48,9 @@ struct CoursingSpec {
   double blockLength = 0.8;    // odd courses are shifted by half a block (running bond)
   double thickness = 0.5;
   double density = 2400.0;
+  // The number of the first course: its parity sets the bond (even courses give a corner's
+  // square to the incoming wall), so a band laid on another carries its bond on.
+  int firstCourse = 0;
   std::vector<WallOpening> openings;
   std::vector<WallButtress> buttresses;
 };
@@ -63,13 +70,16 @@ struct CoursedWalls {
   double courseHeight = 0.0;   // the height actually used, height / courses
 };
 
+// An opening whose top is at or below the wall's foot (top ≤ 0) has only its head, in the first
+// course: the wall of a band spanning an opening below it (a lower bay's mouth).
 // Each course of each edge's wall is cut at bond joints (k·b on even courses, (k + ½)·b on odd
 // ones, measured from the edge's first corner), at the sides of openings it crosses and at the
 // ends of the lintel or arch it holds; joints closer than a quarter block to another cut or to
 // the inner corner line are dropped (no slivers). At a corner the wall square (the
-// quadrilateral between the outer corner, the inner corner and their feet on both faces)
-// belongs to the incoming wall's last block on even courses and to the outgoing wall's first
-// block on odd ones, so the corner is bonded. A lintel spans its opening and half a block of
+// quadrilateral between the outer corner, the inner corner and their feet on both faces; at a
+// reflex corner, between the outer corner, the inner corner and the outer corner's feet on both
+// inner faces) belongs to the incoming wall's last block on even courses and to the outgoing
+// wall's first block on odd ones, so the corner is bonded. Every block stays convex. A lintel spans its opening and half a block of
 // bearing each side in the course over the opening as one stone; a flat arch fills the opening's
 // width in that course with an odd number of voussoirs whose joints meet below the opening (at
 // the apex of the equilateral triangle under it), the two outer joints being its skewbacks.
@@ -82,8 +92,9 @@ struct CoursedWalls {
 // Buttresses (WallButtress) are cut out of the bond: on their through-stone courses the wall is
 // cut at the buttress's sides and bond joints between and within a quarter block of them are
 // dropped.
-// Throws corbel::Error for bad numbers, a reflex corner, openings that leave their wall, reach
-// a corner's square or the wall head, or overlap; buttresses that leave their wall's stretch
+// Throws corbel::Error for bad numbers, a reflex corner turning by more than a right angle,
+// openings that leave their wall, reach a corner's square (come within a quarter block of a
+// reflex corner) or the wall head, or overlap; buttresses that leave their wall's stretch
 // between the corner squares, overlap each other or an opening with its head.
 CoursedWalls courseWalls(const CoursingSpec& spec);
 

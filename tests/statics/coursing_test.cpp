@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -505,10 +506,273 @@ TEST(Coursing, ButtressHoldsAWallTheHeadLoadOverturns) {
   EXPECT_TRUE(middle(0.6));
 }
 
+// Inside a simple polygon (crossing number).
+bool inPolygon(const std::vector<Vec2>& poly, double x, double y) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vec2 &a = poly[i], &b = poly[j];
+    if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])) in = !in;
+  }
+  return in;
+}
+
+// Two convex blocks share no volume when some axis separates them (the separating axis
+// theorem: for polyhedra, a face normal of either or the cross product of an edge of each):
+// their projections on it overlap by at most `tol`.
+bool disjoint(const Block& a, const Block& b, double tol) {
+  auto normals = [](const Block& k) {
+    std::vector<Vec3> out;
+    for (const auto& f : k.faces) {
+      std::vector<Vec3> poly;
+      for (int i : f) poly.push_back(k.vertices[std::size_t(i)]);
+      out.push_back(newellNormal(poly).normalized());
+    }
+    return out;
+  };
+  auto edges = [](const Block& k) {
+    std::vector<Vec3> out;
+    for (const auto& f : k.faces)
+      for (std::size_t i = 0; i < f.size(); ++i)
+        out.push_back((k.vertices[std::size_t(f[(i + 1) % f.size()])] - k.vertices[std::size_t(f[i])]).normalized());
+    return out;
+  };
+  std::vector<Vec3> axes = normals(a);
+  for (const Vec3& n : normals(b)) axes.push_back(n);
+  for (const Vec3& u : edges(a))
+    for (const Vec3& v : edges(b)) {
+      const Vec3 c = cross(u, v);
+      if (c.norm() > 1e-6) axes.push_back(c.normalized());
+    }
+  for (const Vec3& n : axes) {
+    double loA = 1e300, hiA = -1e300, loB = 1e300, hiB = -1e300;
+    for (const Vec3& v : a.vertices) loA = std::min(loA, dot(n, v)), hiA = std::max(hiA, dot(n, v));
+    for (const Vec3& v : b.vertices) loB = std::min(loB, dot(n, v)), hiB = std::max(hiB, dot(n, v));
+    if (hiA <= loB + tol || hiB <= loA + tol) return true;
+  }
+  return false;
+}
+
+// Pairs of blocks that share volume.
+int overlappingPairs(const std::vector<Block>& blocks) {
+  std::vector<BBox> boxes;
+  for (const Block& b : blocks) {
+    BBox box;
+    for (const Vec3& v : b.vertices) box.add(v);
+    boxes.push_back(box);
+  }
+  int pairs = 0;
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    for (std::size_t j = i + 1; j < blocks.size(); ++j) {
+      bool apart = false;
+      for (int k = 0; k < 3; ++k)
+        apart = apart || boxes[i].hi[k] <= boxes[j].lo[k] + 1e-9 || boxes[j].hi[k] <= boxes[i].lo[k] + 1e-9;
+      if (!apart && !disjoint(blocks[i], blocks[j], 1e-9)) ++pairs;
+    }
+  return pairs;
+}
+
+// Sample points over the box [lo, hi] that lie in no block or in several, against `solid`.
+template <class Solid>
+int wronglyCovered(const std::vector<Block>& blocks, const Vec3& lo, const Vec3& hi, Solid solid) {
+  std::vector<BBox> boxes;
+  for (const Block& b : blocks) {
+    BBox box;
+    for (const Vec3& v : b.vertices) box.add(v);
+    boxes.push_back(box);
+  }
+  int wrong = 0;
+  for (double x = lo[0] + 0.0137; x < hi[0]; x += 0.0731)
+    for (double y = lo[1] + 0.0091; y < hi[1]; y += 0.0693)
+      for (double z = lo[2] + 0.0113; z < hi[2]; z += 0.0977) {
+        const Vec3 p(x, y, z);
+        int count = 0;
+        for (std::size_t i = 0; i < blocks.size(); ++i)
+          if (within(boxes[i], p) && inside(blocks[i], p)) ++count;
+        wrong += count != (solid(p) ? 1 : 0);
+      }
+  return wrong;
+}
+
+// A ring of walls of thickness t inside a plan of perimeter P whose corners turn by τ_i (left
+// positive) has the area P·t − t²·Σ tan(τ_i / 2): each corner's interior angle is π − τ_i, and
+// the inner face's miter takes t²·cot((π − τ_i)/2) there; a reflex corner (τ < 0) gives it back.
+double ringArea(const std::vector<Vec2>& plan, double t) {
+  double perimeter = 0, corners = 0;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const Vec2 a = plan[(i + plan.size() - 1) % plan.size()], b = plan[i], c = plan[(i + 1) % plan.size()];
+    const Vec2 u = b - a, v = c - b;
+    perimeter += v.norm();
+    corners += std::tan(std::atan2(u[0] * v[1] - u[1] * v[0], dot(u, v)) / 2);
+  }
+  return perimeter * t - t * t * corners;
+}
+
+// An L-shaped plan: one reflex corner at (3, 3), turning by −90°. Its ring by hand: perimeter
+// 24 m, five convex corners and one reflex: 24·0.5 − 0.25·(5 − 1) = 11 m², over 2 m.
+TEST(Coursing, LShapedPlanTilesItsWallsAndBondsTheReflexCorner) {
+  CoursingSpec s;
+  s.plan = {Vec2(0, 0), Vec2(6, 0), Vec2(6, 3), Vec2(3, 3), Vec2(3, 6), Vec2(0, 6)};
+  s.height = 2.0;
+  s.courseHeight = 0.4;
+  s.blockLength = 0.8;
+  s.thickness = 0.5;
+  s.openings = {{"door", 3, 1.0, 2.0, 0.0, 1.2, OpeningHead::Lintel}};  // on the wall at y = 3 → 6, x = 3
+  const CoursedWalls w = courseWalls(s);
+  ASSERT_EQ(w.courses, 5);
+  EXPECT_NEAR(ringArea(s.plan, 0.5), 11.0, 1e-12);
+  EXPECT_NEAR(volumeOf(w.blocks), 11.0 * 2.0 - 1.0 * 1.2 * 0.5, 1e-9);
+  const std::vector<Vec2> inner = {Vec2(0.5, 0.5), Vec2(5.5, 0.5), Vec2(5.5, 2.5),
+                                   Vec2(2.5, 2.5), Vec2(2.5, 5.5), Vec2(0.5, 5.5)};
+  EXPECT_EQ(wronglyCovered(w.blocks, Vec3(-0.2, -0.2, 0.0), Vec3(6.2, 6.2, 2.0),
+                           [&](const Vec3& p) {
+                             const bool door = p[0] > 2.5 && p[0] < 3 && p[1] > 4 && p[1] < 5 && p[2] < 1.2;
+                             return inPolygon(s.plan, p[0], p[1]) && !inPolygon(inner, p[0], p[1]) && !door;
+                           }),
+            0);
+  EXPECT_EQ(overlappingPairs(w.blocks), 0);
+  // Bonded: the square between the outer corner (3, 3) and the inner one (2.5, 2.5) belongs to
+  // the incoming wall (edge 2, from (6, 3)) on even courses and to the outgoing one (edge 3) on
+  // odd ones, and the block holding it runs on past the corner along its own wall.
+  for (int c = 0; c < w.courses; ++c) {
+    const Vec3 p(2.75, 2.75, 0.4 * c + 0.2);
+    int holders = 0;
+    for (const Block& b : w.blocks) {
+      if (!inside(b, p)) continue;
+      ++holders;
+      EXPECT_EQ(b.name.rfind(c % 2 == 0 ? "wall 2 " : "wall 3 ", 0), 0u) << b.name << " course " << c;
+      EXPECT_TRUE(inside(b, c % 2 == 0 ? Vec3(3.1, 2.75, p[2]) : Vec3(2.75, 3.1, p[2]))) << b.name;
+    }
+    EXPECT_EQ(holders, 1);
+  }
+  std::vector<double> covered(6, 0.0);
+  for (const HeadSpan& h : w.heads) covered[std::size_t(h.edge)] += h.to - h.from;
+  for (int e = 0; e < 6; ++e)
+    EXPECT_NEAR(covered[std::size_t(e)], (s.plan[std::size_t(e + 1) % 6] - s.plan[std::size_t(e)]).norm(), 1e-12);
+  EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible);
+}
+
+// The 6 × 4 m house with a bay on its front wall: the wall opened from x = 1.5 to 4.5 and the
+// bay's cheeks and front 1 m out (reflex corners at (1.5, 0) and (4.5, 0)), a window in the
+// bay's front and a door in the back wall. By hand: perimeter 22 m, six convex corners, two
+// reflex: 22·0.5 − 0.25·(6 − 2) = 10 m² over 3.2 m, less the window 1 × 1.2 m and the door
+// 1 × 2 m.
+TEST(Coursing, BayTilesTheSteppedWalls) {
+  CoursingSpec s;
+  s.plan = {Vec2(0, 0), Vec2(1.5, 0), Vec2(1.5, -1), Vec2(4.5, -1), Vec2(4.5, 0), Vec2(6, 0), Vec2(6, 4), Vec2(0, 4)};
+  s.height = 3.2;
+  s.courseHeight = 0.4;
+  s.blockLength = 0.8;
+  s.thickness = 0.5;
+  s.openings = {{"window", 2, 1.0, 2.0, 0.8, 2.0, OpeningHead::Lintel}, {"door", 6, 2.0, 3.0, 0.0, 2.0, OpeningHead::FlatArch}};
+  const CoursedWalls w = courseWalls(s);
+  ASSERT_EQ(w.courses, 8);
+  EXPECT_NEAR(ringArea(s.plan, 0.5), 10.0, 1e-12);
+  EXPECT_NEAR(volumeOf(w.blocks), 10.0 * 3.2 - (1.0 * 1.2 + 1.0 * 2.0) * 0.5, 1e-9);
+  const std::vector<Vec2> inner = {Vec2(0.5, 0.5), Vec2(2.0, 0.5), Vec2(2.0, -0.5), Vec2(4.0, -0.5),
+                                   Vec2(4.0, 0.5), Vec2(5.5, 0.5), Vec2(5.5, 3.5), Vec2(0.5, 3.5)};
+  EXPECT_EQ(wronglyCovered(w.blocks, Vec3(-0.2, -1.2, 0.0), Vec3(6.2, 4.2, 3.2),
+                           [&](const Vec3& p) {
+                             const bool window = p[1] < -0.5 && p[0] > 2.5 && p[0] < 3.5 && p[2] > 0.8 && p[2] < 2.0;
+                             const bool door = p[1] > 3.5 && p[0] > 3 && p[0] < 4 && p[2] < 2.0;
+                             return inPolygon(s.plan, p[0], p[1]) && !inPolygon(inner, p[0], p[1]) && !window && !door;
+                           }),
+            0);
+  EXPECT_EQ(overlappingPairs(w.blocks), 0);
+  EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible);
+}
+
+// A canted bay (cheeks from (2, 0) to (2.5, −1) and (3.5, −1) to (4, 0)) and a recess notched
+// into the back wall: every corner's miter by hand (ringArea), blocks convex by construction
+// (halfspaceBlock / prismBlock) and disjoint.
+TEST(Coursing, CantedBayAndRecessHaveTheRingVolume) {
+  CoursingSpec s;
+  s.plan = {Vec2(0, 0), Vec2(2, 0), Vec2(2.5, -1), Vec2(3.5, -1), Vec2(4, 0), Vec2(6, 0), Vec2(6, 5),
+            Vec2(4, 5), Vec2(4, 3.8), Vec2(2, 3.8), Vec2(2, 5), Vec2(0, 5)};
+  s.height = 2.4;
+  s.courseHeight = 0.4;
+  s.blockLength = 0.8;
+  s.thickness = 0.4;
+  const CoursedWalls w = courseWalls(s);
+  // Perimeter: 2 + 2·√1.25 + 1 + 2 + 5 + 2 + 1.2 + 2 + 1.2 + 2 + 5; the cheeks' turns cancel
+  // (tan is odd), leaving the four house corners and the recess's four (two each way): Σ = 4.
+  const double perimeter = 22.4 + 2 * std::sqrt(1.25) + 1.0;
+  EXPECT_NEAR(ringArea(s.plan, 0.4), perimeter * 0.4 - 0.16 * 4, 1e-12);
+  EXPECT_NEAR(volumeOf(w.blocks), (perimeter * 0.4 - 0.16 * 4) * 2.4, 1e-9);
+  EXPECT_EQ(overlappingPairs(w.blocks), 0);
+  EXPECT_TRUE(checkFeasibility(onGround(w.blocks)).feasible);
+}
+
+// A free-standing wall (L = 2.4 m, t = 0.3 m, h = 3 m, weight W) with a return at each end
+// turning back towards its outer side (reflex corners at (0, 0) and (L, 0)), pushed outwards at
+// its head by P = 3·W·t/(2h), three times what tips it alone. Whole, it can only turn about the
+// returns' outer feet (y = −R): its weight resists W·(R + t/2) plus, for each return with its
+// corner square (t × (R + t) in plan, weight W_r), W_r·(R + t)/2; P·h overturns. For R = 0.15 m
+// that is short of P·h, so it falls whatever the bond; for R = 1.2 m it is five times over, and
+// the returns, bonded at the reflex corners, hold it by the LP.
+TEST(Coursing, ReturnsAtReflexCornersHoldAWallTheHeadLoadOverturns) {
+  const double L = 2.4, t = 0.3, h = 3.0, rho = 2400 * 9.81;
+  const double W = rho * L * t * h, P = 3 * W * t / (2 * h);
+  auto resisting = [&](double R) { return W * (R + t / 2) + 2 * rho * t * (R + t) * h * (R + t) / 2; };
+  auto stands = [&](double R) {
+    CoursingSpec s = freeWall(L);
+    s.plan = {Vec2(0, -R), Vec2(0, 0), Vec2(L, 0), Vec2(L, -R)};
+    CoursedWalls w = courseWalls(s);
+    EXPECT_NEAR(volumeOf(w.blocks), (L * t + 2 * t * (R + t)) * h, 1e-9);
+    EXPECT_EQ(overlappingPairs(w.blocks), 0);
+    loadWallHeads(s, w, {{0.0, 0.0}, {0.0, P / L}, {0.0, 0.0}});
+    return checkFeasibility(onGround(w.blocks)).feasible;
+  };
+  EXPECT_LT(resisting(0.15), P * h);
+  EXPECT_FALSE(stands(0.15));
+  EXPECT_GE(resisting(1.2), 5 * P * h);
+  EXPECT_TRUE(stands(1.2));
+}
+
+// Two bands laid one on the other are the walls coursed at once: the house's door and window
+// (heads in course 5) cut through the lower band open to its head (throughHead) and go on in
+// the upper one from below its foot; split at course 5 the upper band holds only their heads
+// (top 0). The upper band numbers its courses on (firstCourse), so the bond goes on. Identity:
+// block by block (by name), the same vertices.
+TEST(Coursing, TwoBandsAreTheWallsCoursedAtOnce) {
+  const CoursingSpec whole = house();
+  const CoursedWalls once = courseWalls(whole);
+  for (int kb : {3, 5}) {
+    const double zb = kb * 0.4;
+    CoursingSpec lower = whole, upper = whole;
+    lower.height = zb;
+    upper.base = zb;
+    upper.height = 3.2 - zb;
+    upper.firstCourse = kb;
+    for (std::size_t k = 0; k < whole.openings.size(); ++k) {
+      lower.openings[k].throughHead = true;
+      upper.openings[k].bottom = -zb;
+      upper.openings[k].top = 5 * 0.4 - zb;
+    }
+    std::vector<Block> both = courseWalls(lower).blocks;
+    for (const Block& b : courseWalls(upper).blocks) both.push_back(b);
+    ASSERT_EQ(both.size(), once.blocks.size()) << kb;
+    auto sorted = [](const Block& b) {
+      std::vector<std::array<double, 3>> v;
+      for (const Vec3& p : b.vertices) v.push_back({std::round(p[0] * 1e9), std::round(p[1] * 1e9), std::round(p[2] * 1e9)});
+      std::sort(v.begin(), v.end());
+      return v;
+    };
+    int differ = 0;
+    for (const Block& b : both) {
+      const auto it = std::find_if(once.blocks.begin(), once.blocks.end(), [&](const Block& o) { return o.name == b.name; });
+      differ += it == once.blocks.end() || sorted(*it) != sorted(b);
+    }
+    EXPECT_EQ(differ, 0) << kb;
+  }
+}
+
 TEST(Coursing, RefusesWhatCannotBeCoursed) {
   CoursingSpec s = house();
-  s.plan = {Vec2(0, 0), Vec2(6, 0), Vec2(6, 4), Vec2(3, 2), Vec2(0, 4)};  // reflex corner at (3, 2)
+  s.plan = {Vec2(0, 0), Vec2(6, 0), Vec2(6, 4), Vec2(3, 0.5), Vec2(0, 4)};  // turns right by more than 90° at (3, 0.5)
   s.openings.clear();
+  EXPECT_THROW(courseWalls(s), Error);
+  s.plan = {Vec2(0, 0), Vec2(2, 0), Vec2(2, -1), Vec2(4, -1), Vec2(4, 0), Vec2(6, 0), Vec2(6, 4), Vec2(0, 4)};
+  s.openings = {{"at the corner", 4, 0.5, 1.0, 0.0, 1.2, OpeningHead::Lintel}};  // its lintel within b/4 of the reflex corner
   EXPECT_THROW(courseWalls(s), Error);
   s = house();
   s.openings[0].from = 0.2;  // into the corner's square

@@ -167,13 +167,19 @@ TEST(StoneExtrusion, ButtressStepsArePiersCoursedWithTheWalls) {
   EXPECT_EQ(written.profiles, e.profiles);
 }
 
-TEST(StoneExtrusion, RefusesStepsThatAreNotButtresses) {
+TEST(StoneExtrusion, RefusesStepsItCannotBuild) {
   ExtrusionSpec e = buttressedHouse();
-  e.steps[0].shape = StepShape::Bay;
-  e.steps[0].cant = 0.1;
+  e.profiles.push_back({"tall", {Vec2(0, 0), Vec2(0, 4), Vec2(1, 5)}, {}});
+  e.steps[0].shape = StepShape::Bay;  // a bay whose walls rise 4 m, above the house's 3 m
+  e.steps[0].frontProfile = e.steps[0].sideProfile = 2;
   EXPECT_THROW(stoneModel(e), InputError);
   e = buttressedHouse();
-  e.steps[0].depth = -0.3;  // a recess
+  e.steps[0].depth = -0.3;  // a recess whose front rises 2 m (the pier profile) and cheeks 3 m
+  e.steps[0].sideProfile = 0;
+  EXPECT_THROW(stoneModel(e), InputError);
+  e = buttressedHouse();
+  e.steps[0].shape = StepShape::Forced;
+  e.steps[0].points = {Vec2(-0.4, 0), Vec2(0, 0.5), Vec2(0.4, 0)};
   EXPECT_THROW(stoneModel(e), InputError);
   e = buttressedHouse();
   e.steps[0].anchor.height = 1.0;  // off the ground
@@ -181,6 +187,234 @@ TEST(StoneExtrusion, RefusesStepsThatAreNotButtresses) {
   e = buttressedHouse();
   e.steps[0].anchor.along = 0.5;  // on the window
   EXPECT_THROW(stoneModel(e).build(stoneModel(e).parameters), Error);
+}
+
+// The hipped house with a canted bay window on its back wall (edge 2, from (8, 6) to (0, 6)):
+// 3 m wide at the wall about its middle, 1 m out, its front 0.5 m narrower each side, its
+// cheeks and front rising with the house's hip profile (3 m walls, 45° roof).
+ExtrusionSpec bayHouse() {
+  ExtrusionSpec e = hippedHouse();
+  PlanStep st;
+  st.name = "bay";
+  st.anchor = Anchor{0, 2, false, 0.5, 0.0};
+  st.shape = StepShape::Bay;
+  st.width = 3.0;
+  st.depth = 1.0;
+  st.cant = 0.5;
+  st.frontProfile = st.sideProfile = 0;
+  e.steps = {st};
+  return e;
+}
+
+// By hand: the back wall opened from x = 5.5 to 2.5, the bay's corners (5, 7) and (3, 7). The
+// roof: every face pitched 45° over the stepped plan (48 m² + the bay's trapezoid (3 + 2)/2 · 1
+// = 2.5 m²), so its surface is 50.5·√2 m² and a covering q weighs q·50.5·√2 on the walls. The
+// walls: perimeter 28 − 3 + 2·√1.25 + 2 m, the four house corners' miters t² each and the
+// bay's four cancelling (its cheeks turn by ±φ: tan(φ/2) − tan(φ/2)), less the door and the
+// window as in ButtressStepsArePiersCoursedWithTheWalls.
+TEST(StoneExtrusion, BayIsPartOfTheCoursedPlanAndCarriesItsRoof) {
+  const ExtrusionSpec e = bayHouse();
+  const StoneHouse h = stoneHouseOf(e);
+  const std::vector<Vec2> plan = {Vec2(0, 0), Vec2(8, 0), Vec2(8, 6), Vec2(5.5, 6), Vec2(5, 7),
+                                  Vec2(3, 7), Vec2(2.5, 6), Vec2(0, 6)};
+  ASSERT_EQ(h.walls.plan.size(), plan.size());
+  for (std::size_t k = 0; k < plan.size(); ++k) EXPECT_NEAR((h.walls.plan[k] - plan[k]).norm(), 0.0, 1e-9) << k;
+  EXPECT_EQ(h.edgeSource, (std::vector<int>{0, 1, 2, -1, -1, -1, 2, 3}));
+  EXPECT_NEAR(h.edgeOffset[6], 5.5, 1e-9);
+  EXPECT_EQ(h.bayStep, std::vector<int>{0});
+  double roof = 0, thrust = 0;
+  for (std::size_t k = 0; k < plan.size(); ++k) roof += h.roofArea[k], thrust += h.thrustArea[k];
+  EXPECT_NEAR(roof, 50.5 * std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(thrust, roof / 2, 1e-6);  // every face at 45°: w / (2 tan 45°) = w/2
+  for (std::size_t k = 3; k < 6; ++k) EXPECT_GT(h.roofArea[k], 0.0) << "the bay's wall " << k;
+  // The main roof's share per metre is the same on both pieces of the opened back wall.
+  EXPECT_NEAR(h.roofArea[2] / 2.5, h.roofArea[6] / 2.5, 1e-9);
+
+  ExtrusionSpec loaded = e;
+  const double q = 800;
+  loaded.masonry->coveringWeight = q;
+  const ParametricModel model = stoneModel(loaded);
+  const Assembly as = model.build(model.parameters);
+  Vec3 total(0.0);
+  for (const Block& b : as.blocks)
+    for (const PointLoad& l : b.pointLoads) total += l.force;
+  EXPECT_NEAR(total[2], -q * 50.5 * std::sqrt(2.0), 1e-6);
+  const double ring = (27 + 2 * std::sqrt(1.25)) * 0.5 - 0.25 * 4;
+  EXPECT_NEAR(wallVolume(as), ring * 3 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5, 1e-9);
+  EXPECT_TRUE(checkFeasibility(as).feasible);
+  // Make It Stand proposes buttresses on the main walls only, written back on input edges:
+  // the extrusion read again builds the same piers.
+  ParameterSet withPiers = model.parameters;
+  withPiers.set("buttressDepth", 0.5);
+  const std::vector<WallButtress> proposed = proposedButtresses(h, 0.8, 0.5, 0.5);
+  for (const WallButtress& b : proposed) EXPECT_GE(h.edgeSource[std::size_t(b.edge)], 0) << b.name;
+  const ExtrusionSpec written = stoneSpecAt(loaded, withPiers);
+  ASSERT_EQ(written.steps.size(), 1 + proposed.size());
+  const StoneHouse again = stoneHouseOf(written);
+  ASSERT_EQ(again.walls.buttresses.size(), proposed.size());
+  for (std::size_t k = 0; k < proposed.size(); ++k) {
+    EXPECT_EQ(again.walls.buttresses[k].edge, proposed[k].edge) << k;
+    EXPECT_NEAR(again.walls.buttresses[k].from, proposed[k].from, 1e-9) << k;
+  }
+}
+
+// Wind blowing towards −y onto the bay house's back: the two pieces of the back wall (2.5 m
+// each) and the bay's front (2 m) face it squarely; each cheek (√1.25 m, its outward normal
+// (1, ±0.5)/√1.25) meets it at cos θ = 0.5/√1.25 and takes p·A·cos θ along its normal, of which
+// cos θ along y and the x parts cancel. By hand: p·3·(2.5 + 2.5 + 2 + 2·√1.25·0.2) towards −y.
+TEST(StoneExtrusion, WindOnABayMeetsItsCheeksAtTheirSlant) {
+  ExtrusionSpec e = bayHouse();
+  e.masonry->coveringWeight = 0;
+  e.masonry->windPressure = 500;
+  e.masonry->windDirection = -90;
+  const ParametricModel model = stoneModel(e);
+  Vec3 f(0.0);
+  for (const Block& b : model.build(model.parameters).blocks)
+    for (const PointLoad& l : b.pointLoads) f += l.force;
+  EXPECT_NEAR(f[0], 0.0, 1e-9);
+  EXPECT_NEAR(f[1], -500 * 3 * (7 + 2 * std::sqrt(1.25) * 0.2), 1e-9);
+  EXPECT_EQ(f[2], 0.0);
+}
+
+// A recess: the same step reaching 1 m into the plan (a rectangle, no cant). Its roof covers
+// the notched plan, 48 − 3 = 45 m² at 45°; its walls' ring: perimeter 28 + 2 m, the house's
+// four corners and the recess's two convex ones at the mouth against its two reflex ones at the
+// back: Σ tan(τ/2) = 4.
+TEST(StoneExtrusion, RecessNotchesThePlan) {
+  ExtrusionSpec e = bayHouse();
+  e.steps[0].shape = StepShape::Rectangle;
+  e.steps[0].depth = -1.0;
+  e.steps[0].cant = 0.0;
+  const StoneHouse h = stoneHouseOf(e);
+  const std::vector<Vec2> plan = {Vec2(0, 0), Vec2(8, 0), Vec2(8, 6), Vec2(5.5, 6), Vec2(5.5, 5),
+                                  Vec2(2.5, 5), Vec2(2.5, 6), Vec2(0, 6)};
+  ASSERT_EQ(h.walls.plan.size(), plan.size());
+  for (std::size_t k = 0; k < plan.size(); ++k) EXPECT_NEAR((h.walls.plan[k] - plan[k]).norm(), 0.0, 1e-9) << k;
+  EXPECT_TRUE(h.walls.buttresses.empty());
+  double roof = 0;
+  for (double a : h.roofArea) roof += a;
+  EXPECT_NEAR(roof, 45 * std::sqrt(2.0), 1e-6);
+  const ParametricModel model = stoneModel(e);
+  const Assembly as = model.build(model.parameters);
+  EXPECT_NEAR(wallVolume(as), (30 * 0.5 - 0.25 * 4) * 3 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5, 1e-9);
+  EXPECT_TRUE(checkFeasibility(as).feasible);
+}
+
+// An L-shaped house (one reflex corner at (4, 4)) with the hipped house's profile, door and
+// window. By hand: its roof covers the 48 m² plan at 45°; its walls' ring is 32·0.5 − 0.25·(5 − 1)
+// = 15 m² over 3 m, less the door and the window.
+TEST(StoneExtrusion, LShapedHouseIsCoursedAndStands) {
+  ExtrusionSpec e = hippedHouse();
+  e.loops = {PlanLoop({Vec2(0, 0), Vec2(8, 0), Vec2(8, 4), Vec2(4, 4), Vec2(4, 8), Vec2(0, 8)}, {0, 0, 0, 0, 0, 0})};
+  const StoneHouse h = stoneHouseOf(e);
+  EXPECT_EQ(h.walls.plan, e.loops[0].points);
+  double roof = 0;
+  for (double a : h.roofArea) roof += a;
+  EXPECT_NEAR(roof, 48 * std::sqrt(2.0), 1e-6);
+  const ParametricModel model = stoneModel(e);
+  const Assembly as = model.build(model.parameters);
+  EXPECT_NEAR(wallVolume(as), 15.0 * 3 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5, 1e-9);
+  EXPECT_TRUE(checkFeasibility(as).feasible);
+}
+
+// The canted bay lower than the walls: its front and cheeks rise 1.5 m (three of the six 0.5 m
+// courses), then its roof leans in at 45° to the wall. Below 1.5 m the walls follow the plan
+// with the bay, above it the rectangle, the back wall spanning the bay's mouth on a lintel; the
+// door (2 m) goes on through both bands. By hand: walls (ring with the bay, as in
+// BayIsPartOfTheCoursedPlanAndCarriesItsRoof) × 1.5 m + 13 m² × 1.5 m less door and window;
+// the bay's roof (2.5 m² of plan at 45°) bears on the bay, the house's (48 m² at 45°) on the
+// walls above.
+TEST(StoneExtrusion, LowerBayCarriesTheWallOverItsMouthOnALintel) {
+  ExtrusionSpec e = bayHouse();
+  e.profiles.push_back({"bay", {Vec2(0, 0), Vec2(0, 1.5), Vec2(3, 4.5)}, {}});
+  e.steps[0].frontProfile = e.steps[0].sideProfile = 1;
+  const StoneHouse h = stoneHouseOf(e);
+  EXPECT_DOUBLE_EQ(h.bayTop, 1.5);
+  EXPECT_EQ(h.walls.plan.size(), 8u);
+  EXPECT_EQ(h.upper.plan, e.loops[0].points);
+  ASSERT_EQ(h.mouths.size(), 1u);
+  EXPECT_EQ(h.mouths[0].edge, 2);
+  EXPECT_NEAR(h.mouths[0].from, 2.5, 1e-9);
+  EXPECT_NEAR(h.mouths[0].to, 5.5, 1e-9);
+  double low = 0, high = 0;
+  for (double a : h.roofArea) low += a;
+  for (double a : h.upperRoofArea) high += a;
+  EXPECT_NEAR(low, 2.5 * std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(high, 48 * std::sqrt(2.0), 1e-6);
+
+  ExtrusionSpec loaded = e;
+  const double q = 800;
+  loaded.masonry->coveringWeight = q;
+  const ParametricModel model = stoneModel(loaded);
+  const Assembly as = model.build(model.parameters);
+  Vec3 total(0.0);
+  for (const Block& b : as.blocks)
+    for (const PointLoad& l : b.pointLoads) total += l.force;
+  EXPECT_NEAR(total[2], -q * 50.5 * std::sqrt(2.0), 1e-6);
+  const double ring = (27 + 2 * std::sqrt(1.25)) * 0.5 - 0.25 * 4;
+  EXPECT_NEAR(wallVolume(as), ring * 1.5 + 13.0 * 1.5 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5, 1e-9);
+  // Over the mouth (x from 2.5 to 5.5 in the back wall) stone from 1.5 m up, none below.
+  auto stone = [&](const Vec3& p) {
+    int count = 0;
+    for (const Block& b : as.blocks) {
+      bool in = b.name != "ground";
+      for (const auto& f : b.faces) {
+        std::vector<Vec3> poly;
+        for (int i : f) poly.push_back(b.vertices[std::size_t(i)]);
+        in = in && dot(p - poly[0], newellNormal(poly)) <= 0;
+      }
+      count += in;
+    }
+    return count;
+  };
+  EXPECT_EQ(stone(Vec3(4.0, 5.75, 0.8)), 0);
+  EXPECT_EQ(stone(Vec3(4.0, 5.75, 1.75)), 1);
+  EXPECT_EQ(stone(Vec3(4.0, 6.75, 0.8)), 1);  // the bay's front
+  EXPECT_EQ(stone(Vec3(4.0, 6.75, 1.75)), 0);
+  EXPECT_TRUE(checkFeasibility(as).feasible);
+  // Proposed buttresses keep clear of the lintel over the mouth ([2.5, 5.5] of edge 2, a
+  // course and three quarters of a 0.8 m block beyond), and the model builds with them.
+  for (const WallButtress& b : proposedButtresses(h, 0.8, 0.5, 0.5)) {
+    if (h.edgeSource[std::size_t(b.edge)] != 2) continue;
+    const double from = h.edgeOffset[std::size_t(b.edge)] + b.from, to = h.edgeOffset[std::size_t(b.edge)] + b.to;
+    EXPECT_TRUE(to <= 2.5 - 1.1 + 1e-9 || from >= 5.5 + 1.1 - 1e-9) << b.name << " " << from << " " << to;
+  }
+  ParameterSet piers = model.parameters;
+  piers.set("buttressDepth", 0.5);
+  EXPECT_NO_THROW(model.build(piers));
+}
+
+TEST(StoneExtrusion, RefusesBaysItCannotBuild) {
+  auto where = [](const ExtrusionSpec& e) {
+    try {
+      stoneHouseOf(e);
+    } catch (const InputError& x) {
+      return x.where;
+    }
+    return std::string("built");
+  };
+  ExtrusionSpec e = bayHouse();
+  e.profiles.push_back({"low", {Vec2(0, 0), Vec2(0, 2), Vec2(1, 3)}, {}});
+  e.steps[0].frontProfile = 1;  // its front 2 m high, its cheeks 3 m
+  EXPECT_EQ(where(e), "steps[0]");
+  e.steps[0].sideProfile = 1;  // all 2 m, beside another bay of 1.5 m
+  e.profiles.push_back({"lower", {Vec2(0, 0), Vec2(0, 1.5), Vec2(1, 2.5)}, {}});
+  e.steps.push_back(e.steps[0]);
+  e.steps[1].anchor.edge = 0;
+  e.steps[1].anchor.along = 0.2;
+  e.steps[1].frontProfile = e.steps[1].sideProfile = 2;
+  EXPECT_EQ(where(e), "steps[1]");
+  e = bayHouse();
+  e.steps[0].width = 8.5;  // past the ends of its 8 m edge
+  EXPECT_EQ(where(e), "steps[0]");
+  e = bayHouse();
+  e.steps.push_back(e.steps[0]);
+  e.steps[1].anchor.along = 0.6;  // on the first
+  EXPECT_EQ(where(e), "steps[1]");
+  e = bayHouse();
+  e.anchors.push_back(MeshAnchor("back window", Anchor{0, 2, false, 0.5, 0.9}, FeatureKind::Window, {1.0, 1.2, 0.1}));
+  EXPECT_EQ(where(e), "steps[0]");  // the bay opens the wall where the window is
+  EXPECT_EQ(where(bayHouse()), "built");
 }
 
 ParametricModel shippedStone(const std::string& object) {
