@@ -244,20 +244,40 @@ bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::v
 
 }  // namespace
 
-std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace) {
+std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace, double baseHeight) {
   std::vector<int> parent(shell.points.size());
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
   auto find = [&](int v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
   };
+  // Per group: whether it holds a corner of the base, and its lowest and highest member. A
+  // group never joins a corner of the base to a vertex more than baseHeight above it: an event
+  // a little above the base next to a plan corner (a corner between two edges a few 1e-7 rad
+  // apart, of different angles, racing along one of them and ending it 6e-7 m up) would take
+  // the plan corner's place, and the face beside it, whose bottom then runs along the base
+  // round the other edge's corner, would lie flat on the base there. Kept apart, that edge's
+  // face stays the sliver the sweep made.
+  std::vector<char> onBase(parent.size(), 0);
+  for (const ShellFace& f : shell.faces)
+    if (f.base)
+      for (const auto& loop : f.loops)
+        for (int v : loop) onBase[v] = 1;
+  std::vector<double> low(parent.size()), high(parent.size());
+  for (std::size_t v = 0; v < parent.size(); ++v) low[v] = high[v] = shell.points[v][2];
   std::size_t collapsed = 0;
   for (const ShellFace& f : shell.faces)
     for (const auto& loop : f.loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const int a = find(loop[i]), b = find(loop[(i + 1) % loop.size()]);
         if (a == b || (shell.points[loop[i]] - shell.points[loop[(i + 1) % loop.size()]]).norm() >= length) continue;
-        parent[std::max(a, b)] = std::min(a, b);
+        const double lo = std::min(low[a], low[b]), hi = std::max(high[a], high[b]);
+        if ((onBase[a] || onBase[b]) && hi - lo > baseHeight) continue;
+        const int r = std::min(a, b);
+        parent[std::max(a, b)] = r;
+        onBase[r] = onBase[a] || onBase[b];
+        low[r] = lo;
+        high[r] = hi;
         ++collapsed;
       }
   // A face all within tinyFace of its first corner (the last speck of a loop a change closed)

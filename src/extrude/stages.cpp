@@ -267,7 +267,7 @@ ExtrusionResult Stager::run(double scale) {
   SweepOutput& out = result.shell;
   traceFaces(points_, faces_, tol_, out.faces, warnings_);
   out.points = std::move(points_);
-  collapseShortEdges(out, tol_.collapse, tol_.tinyFace);
+  collapseShortEdges(out, tol_.collapse, tol_.tinyFace, tol_.height);
   for (const Vec3& p : out.points) out.maxHeight = std::max(out.maxHeight, p[2]);
   out.warnings = std::move(warnings_);
   out.events = events_;

@@ -109,8 +109,11 @@ void traceFaces(const std::vector<Vec3>& points, const std::vector<RawFace>& raw
 // clustering kept apart leave such edges, and faces of no area between them) and every corner
 // of a face that lies within `tinyFace` of its first corner, drops loops and faces that vanish,
 // and keeps the result only if it is as closed as before, every vertex has one fan of faces and
-// no face passes a vertex twice. Returns the number of merges (0: the shell is unchanged).
-std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace = 0);
+// no face passes a vertex twice. No merge joins a corner of a base face to a vertex more than
+// `baseHeight` above it (the sweep's δ1). Returns the number of merges (0: the shell is
+// unchanged).
+std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace = 0,
+                               double baseHeight = std::numeric_limits<double>::infinity());
 
 // Runs the sweep. The input must already be valid (see checkSpec): simple, consistently
 // oriented loops and angles within (−π/2, π/2) with the last one > 0.

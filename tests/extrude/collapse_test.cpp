@@ -89,5 +89,38 @@ TEST(CollapseShortEdges, ATinyFaceBecomesAPoint) {
   EXPECT_NEAR(measure(s).volume, 1.0, 1e-6);
 }
 
+// The cube standing on its base face, a vertex `h` above its base corner (1, 1, 0) on the
+// vertical edge there (the right and back faces pass through it). Within baseHeight of the base
+// it is the corner's; higher, it stays a vertex of its own, however short the edge: taking the
+// corner's place, an event a little above the base would lay the faces through it on the base
+// (random3091, docs/extrude.md).
+TEST(CollapseShortEdges, KeepsAVertexAboveTheBaseOffTheBasesCorners) {
+  const double h = 1e-9;
+  auto cube = [&] {
+    SweepOutput s;
+    s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1), Vec3(1, 1, h)};
+    auto face = [&](std::vector<int> loop, Vec3 n) { addFace(s, std::move(loop), n); };
+    face({0, 3, 2, 1}, Vec3(0, 0, -1));
+    s.faces.back().base = true;
+    face({4, 5, 6, 7}, Vec3(0, 0, 1));
+    face({0, 1, 5, 4}, Vec3(0, -1, 0));
+    face({3, 7, 6, 8, 2}, Vec3(0, 1, 0));
+    face({0, 4, 7, 3}, Vec3(-1, 0, 0));
+    face({1, 2, 8, 6, 5}, Vec3(1, 0, 0));
+    return s;
+  };
+  SweepOutput above = cube();
+  ASSERT_EQ(unpairedEdges(above), 0u);
+  EXPECT_EQ(collapseShortEdges(above, 1e-8, 0, 0.5 * h), 0u) << "h is above the base's height tolerance";
+  EXPECT_EQ(above.faces[3].loops[0].size(), 5u);
+  EXPECT_EQ(above.points[8], Vec3(1, 1, h));
+  SweepOutput within = cube();
+  EXPECT_EQ(collapseShortEdges(within, 1e-8, 0, 2 * h), 1u) << "h is within the base's height tolerance";
+  EXPECT_EQ(unpairedEdges(within), 0u);
+  for (const ShellFace& f : within.faces) EXPECT_EQ(f.loops[0].size(), 4u) << "every face of a cube is a quad";
+  EXPECT_EQ(within.points[2], Vec3(1, 1, 0)) << "the base corner stays where it is";
+}
+
 }  // namespace
 }  // namespace corbel::extrude::test

@@ -276,6 +276,17 @@ TEST(RandomRobustness, HundredThousandFootprints) {
     const auto heights = cgalHeightsIsolated(queries);
     for (std::size_t k = 0; k < asked.size(); ++k) checks[asked[k]].cgalHeight = heights[k];
   }
+  // CORBEL_RANDOM_VOLUMES=FILE writes each closed shell's id, tolerance factor, volume and roof
+  // area, and whether the shell checks flag it (to compare two versions of the kernel shell by
+  // shell).
+  if (const char* file = std::getenv("CORBEL_RANDOM_VOLUMES")) {
+    std::ofstream out(file);
+    out.precision(17);
+    for (std::size_t i = 0; i < results.size(); ++i)
+      if (results[i].ok)
+        out << results[i].id << " " << results[i].toleranceFactor << " " << results[i].measures.volume << " "
+            << results[i].measures.roofArea << " " << (checks[i].geometry.empty() ? "ok" : "flagged") << "\n";
+  }
   const ShellCheckExemptions& exemptions = shellCheckExemptions();
   for (const std::string& p : exemptions.problems) ADD_FAILURE() << p;
   std::vector<std::string> withoutSkeleton;  // CGAL crashed or refused
