@@ -1,6 +1,7 @@
 // The shell checks' own triangulation (shell_checks.h): a check that cuts a face badly reports
 // a needle the kernel did not make.
 #include "shell_checks.h"
+#include "skeleton_oracle.h"
 
 #include "core/project_io.h"
 
@@ -72,6 +73,16 @@ TEST(ShellChecks, DISABLED_Files) {
       std::cout.precision(12);
       std::cout << "volume " << measure(shell).volume << ", roof area " << measure(shell).roofArea << "\n";
       problem = shellGeometryProblem(shell, spec);
+      // One profile on every edge: the top against CGAL's skeleton (the random run's check).
+      bool one = spec.steps.empty() && spec.offsets.empty();
+      for (const auto& l : spec.loops)
+        for (int k : l.profile) one = one && spec.profiles[k].points == spec.profiles[spec.loops[0].profile[0]].points;
+      if (one) {
+        std::vector<std::vector<Vec2>> loops;
+        for (const auto& l : spec.loops) loops.push_back(l.points);
+        std::cout << "top " << shell.maxHeight << " m, CGAL's skeleton "
+                  << cgalHeightUnderProfile(loops, spec.profiles[spec.loops[0].profile[0]].points) << " m\n";
+      }
       // CORBEL_SHELL_CHECK_FACE=N also prints face N's corners.
       if (const char* face = std::getenv("CORBEL_SHELL_CHECK_FACE")) {
         const ShellFace& f = shell.faces.at(std::atoi(face));
