@@ -173,7 +173,10 @@ int run(const CityRequest& r) {
     source = "street";
   } else {
     source = r.footprints;
-    if (r.streamBuildings > 0 && r.out.empty() && r.render.empty() && (!r.tiles.empty() || !r.tileset.empty()))
+    // Every output takes the buildings one at a time but a --render's picture and an --out other
+    // than glb (made from a whole Scene).
+    const bool outGlb = !r.out.empty() && exportFormatFor(r.out) == ExportFormat::Glb;
+    if (r.streamBuildings > 0 && r.render.empty() && (r.out.empty() || outGlb))
       stream.emplace(source, read);
     else
       town = city::readTownFile(source, read);
@@ -410,14 +413,25 @@ int run(const CityRequest& r) {
     const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
     const unsigned jobs = r.jobs ? r.jobs : std::max(1u, std::thread::hardware_concurrency());
     options.chunk = std::min(options.chunk, kStreamRoundPerJob * jobs);
-    auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
+    auto sameTile = [&](std::size_t a, std::size_t b) {
+      return tree ? leafOf[a] == leafOf[b] : tiled && tileOf[a] == tileOf[b];
+    };
     for (std::size_t start = 0; start < order.size();) {
       std::size_t end = std::min(order.size(), start + r.streamBuildings);
       while (end < order.size() && sameTile(order[end - 1], order[end])) ++end;
       std::vector<std::vector<std::size_t>> tiles;  // the part's buildings by tile
-      for (std::size_t k = start; k < end; ++k) {
-        if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
-        tiles.back().push_back(order[k]);
+      if (tiled || tree) {
+        for (std::size_t k = start; k < end; ++k) {
+          if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
+          tiles.back().push_back(order[k]);
+        }
+      } else {  // --out alone: the source's order, its neighbours looked for by --tile-size cell
+        std::map<std::pair<long, long>, std::size_t> cell;
+        for (std::size_t k = start; k < end; ++k) {
+          const auto [at, fresh] = cell.try_emplace(tileOf[order[k]], tiles.size());
+          if (fresh) tiles.emplace_back();
+          tiles[at->second].push_back(order[k]);
+        }
       }
       town = {};  // the last part's, dropped before the next is read
       labels = {};
