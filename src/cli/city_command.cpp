@@ -71,6 +71,12 @@ constexpr double kMaxLeafSide = 400;
 // and falls by.
 constexpr std::size_t kStreamRoundPerJob = 32;
 
+// Streamed into one glb, a part's buildings come in the source's order, which may scatter them
+// over the town: their neighbours are looked for around the boxes of the part's buildings in
+// each cell of this side (m), so that a part reads little more than its buildings and their
+// neighbours.
+constexpr double kOutPartCell = 50;
+
 // Hands the pages that freed memory left unused back to the system (the allocator keeps them
 // otherwise, and a streamed town's parts would leave their read JSON's pages behind each time):
 // jemalloc's, when the program runs on it (CMake's CORBEL_JEMALLOC), else glibc's.
@@ -425,10 +431,13 @@ int run(const CityRequest& r) {
           if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
           tiles.back().push_back(order[k]);
         }
-      } else {  // --out alone: the source's order, its neighbours looked for by --tile-size cell
+      } else {  // --out alone: the source's order, whose neighbours are looked for by small cells
         std::map<std::pair<long, long>, std::size_t> cell;
         for (std::size_t k = start; k < end; ++k) {
-          const auto [at, fresh] = cell.try_emplace(tileOf[order[k]], tiles.size());
+          const Vec2 c = centres[order[k]];
+          const std::pair<long, long> key{static_cast<long>(std::floor(c[0] / kOutPartCell)),
+                                          static_cast<long>(std::floor(c[1] / kOutPartCell))};
+          const auto [at, fresh] = cell.try_emplace(key, tiles.size());
           if (fresh) tiles.emplace_back();
           tiles[at->second].push_back(order[k]);
         }

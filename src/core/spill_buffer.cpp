@@ -19,8 +19,8 @@ std::string reason() { return std::strerror(errno); }
 // A new file in the temporary folder, already unlinked.
 std::FILE* anonymousFile() {
   std::error_code ec;
-  std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
-  if (ec) dir = "/tmp";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
+  if (ec) throw Error("no folder for temporary files (TMPDIR): " + ec.message());
   std::string name = (dir / "corbel-spill-XXXXXX").string();
   const int fd = ::mkstemp(name.data());
   if (fd < 0) throw Error("cannot make a temporary file in " + dir.string() + ": " + reason());

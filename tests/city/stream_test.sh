@@ -68,6 +68,19 @@ compare glb-lonlat "$work/lonlat.geojson" --instances --compress
 compare glb-full "$footprints" --detail full --around 0,0,200 --textures on
 (( $(stat -c %s "$work/glb-full-part.glb") > 4 << 20 )) || { echo "the full-detail glb is too small to spill"; exit 1; }
 ext=
+# A run that fails while the glb is written (no temporary folder to spill into) says why and
+# leaves the existing --out as it was, with nothing beside it.
+mkdir "$work/keep"
+printf 'old' >"$work/keep/town.glb"
+for tmp in "$work/no-such-folder" /proc; do
+  if TMPDIR=$tmp "$cli" city "$footprints" --style "$style" --seed 1 --jobs 2 --around 0,0,300 --detail massing \
+    --out "$work/keep/town.glb" >/dev/null 2>"$work/err"; then
+    echo "TMPDIR=$tmp: the glb was written"; exit 1
+  fi
+  grep -q "temporary" "$work/err" || { echo "TMPDIR=$tmp: $(cat "$work/err")"; exit 1; }
+  [[ $(cat "$work/keep/town.glb") == old && $(ls -A "$work/keep") == town.glb ]] ||
+    { echo "TMPDIR=$tmp: the existing glb was touched: $(ls -A "$work/keep")"; exit 1; }
+done
 
 # Other formats, read through GDAL/OGR feature by feature: the footprints within 300 m written by
 # ogr2ogr as a Shapefile in UTM, a GeoPackage in lon/lat beside a second layer (so --layer must
