@@ -446,11 +446,12 @@ int run(const CityRequest& r) {
       labels = {};
       town = stream->part(tiles, reach, globalOf);
       releaseFreedMemory();  // the part's reading (its JSON) is done with
-      labels = city::labelTown(town, style.labels, r.jobs);
       std::vector<std::size_t> partOrder;  // `order`'s run in the part's numbers
       for (std::size_t k = start; k < end; ++k)
         partOrder.push_back(static_cast<std::size_t>(std::lower_bound(globalOf.begin(), globalOf.end(), order[k]) -
                                                      globalOf.begin()));
+      // Only the part's buildings are labelled: the neighbours read with them are not built.
+      labels = city::labelTown(town, style.labels, r.jobs, &partOrder);
       const city::TownSummary s =
           city::buildTown(town, labels, style, options, sink, partOrder,
                           [&](std::size_t d, std::size_t) { drawBar(start + d, order.size(), seconds()); });

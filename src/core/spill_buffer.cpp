@@ -49,12 +49,16 @@ void SpillBuffer::append(const void* data, std::size_t bytes) {
         throw Error("cannot write a temporary file: " + reason());
       std::vector<char>().swap(memory_);
     }
-    if (std::fseek(file_, 0, SEEK_END) != 0 || std::fwrite(p, 1, bytes, file_) != bytes) throw Error("cannot write a temporary file: " + reason());
+    // Back to the end after a reading (seeking flushes the stream's buffer, so only then).
+    if (read_ && std::fseek(file_, 0, SEEK_END) != 0) throw Error("cannot write a temporary file: " + reason());
+    read_ = false;
+    if (std::fwrite(p, 1, bytes, file_) != bytes) throw Error("cannot write a temporary file: " + reason());
   }
   size_ += bytes;
 }
 
 void SpillBuffer::rewindForReading() const {
+  read_ = true;
   if (std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0)
     throw Error("cannot read a temporary file back: " + reason());
 }
@@ -74,6 +78,7 @@ std::vector<unsigned char> SpillBuffer::bytes() const {
 void SpillBuffer::clear() {
   if (file_) std::fclose(file_);
   file_ = nullptr;
+  read_ = false;
   std::vector<char>().swap(memory_);
   size_ = 0;
 }

@@ -57,6 +57,7 @@ class SpillBuffer {
   std::size_t size_ = 0;
   std::vector<char> memory_;
   std::FILE* file_ = nullptr;
+  mutable bool read_ = false;  // read since the last append: the file is not at its end
 };
 
 }  // namespace corbel
