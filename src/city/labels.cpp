@@ -118,7 +118,8 @@ std::vector<EdgeLabel> labelEdges(const std::vector<std::vector<Vec2>>& loops, c
   return out;
 }
 
-std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o, unsigned jobsWanted) {
+std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o, unsigned jobsWanted,
+                                      const std::vector<std::size_t>* only) {
   const auto& bs = town.buildings;
   std::vector<BuildingLabels> out(bs.size());
   struct Segment {
@@ -222,12 +223,13 @@ std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& o, u
         L.longestStreetEdge = k;
       }
   };
+  const std::size_t count = only ? only->size() : bs.size();
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < bs.size();) labelOne(i);
+    for (std::size_t k; (k = next.fetch_add(1)) < count;) labelOne(only ? (*only)[k] : k);
   };
   const unsigned jobs = static_cast<unsigned>(std::min<std::size_t>(
-      jobsWanted ? jobsWanted : std::max(1u, std::thread::hardware_concurrency()), bs.size() / 256 + 1));
+      jobsWanted ? jobsWanted : std::max(1u, std::thread::hardware_concurrency()), count / 256 + 1));
   std::vector<std::thread> pool;
   for (unsigned j = 1; j < jobs; ++j) pool.emplace_back(worker);
   worker();

@@ -44,8 +44,11 @@ struct LabelOptions {
 };
 
 // Labels every usable building of the town (unusable ones get empty labels), on `jobs`
-// threads (0 = all cores).
-std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& options = {}, unsigned jobs = 0);
+// threads (0 = all cores). Given `only`, just those buildings (the others get empty labels): a
+// building's labels depend on the other buildings' outlines and the streets, not on their
+// labels, so they are the ones labelling the whole town gives.
+std::vector<BuildingLabels> labelTown(const Town& town, const LabelOptions& options = {}, unsigned jobs = 0,
+                                      const std::vector<std::size_t>* only = nullptr);
 
 // Labels of one footprint facing `front` (unit vector).
 std::vector<EdgeLabel> labelEdges(const std::vector<std::vector<Vec2>>& loops, const Vec2& front,

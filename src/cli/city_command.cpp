@@ -71,6 +71,12 @@ constexpr double kMaxLeafSide = 400;
 // and falls by.
 constexpr std::size_t kStreamRoundPerJob = 32;
 
+// Streamed into one glb, a part's buildings come in the source's order, which may scatter them
+// over the town: their neighbours are looked for around the boxes of the part's buildings in
+// each cell of this side (m), so that a part reads little more than its buildings and their
+// neighbours.
+constexpr double kOutPartCell = 50;
+
 // Hands the pages that freed memory left unused back to the system (the allocator keeps them
 // otherwise, and a streamed town's parts would leave their read JSON's pages behind each time):
 // jemalloc's, when the program runs on it (CMake's CORBEL_JEMALLOC), else glibc's.
@@ -173,7 +179,10 @@ int run(const CityRequest& r) {
     source = "street";
   } else {
     source = r.footprints;
-    if (r.streamBuildings > 0 && r.out.empty() && r.render.empty() && (!r.tiles.empty() || !r.tileset.empty()))
+    // Every output takes the buildings one at a time but a --render's picture and an --out other
+    // than glb (made from a whole Scene).
+    const bool outGlb = !r.out.empty() && exportFormatFor(r.out) == ExportFormat::Glb;
+    if (r.streamBuildings > 0 && r.render.empty() && (r.out.empty() || outGlb))
       stream.emplace(source, read);
     else
       town = city::readTownFile(source, read);
@@ -410,24 +419,39 @@ int run(const CityRequest& r) {
     const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
     const unsigned jobs = r.jobs ? r.jobs : std::max(1u, std::thread::hardware_concurrency());
     options.chunk = std::min(options.chunk, kStreamRoundPerJob * jobs);
-    auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
+    auto sameTile = [&](std::size_t a, std::size_t b) {
+      return tree ? leafOf[a] == leafOf[b] : tiled && tileOf[a] == tileOf[b];
+    };
     for (std::size_t start = 0; start < order.size();) {
       std::size_t end = std::min(order.size(), start + r.streamBuildings);
       while (end < order.size() && sameTile(order[end - 1], order[end])) ++end;
       std::vector<std::vector<std::size_t>> tiles;  // the part's buildings by tile
-      for (std::size_t k = start; k < end; ++k) {
-        if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
-        tiles.back().push_back(order[k]);
+      if (tiled || tree) {
+        for (std::size_t k = start; k < end; ++k) {
+          if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
+          tiles.back().push_back(order[k]);
+        }
+      } else {  // --out alone: the source's order, whose neighbours are looked for by small cells
+        std::map<std::pair<long, long>, std::size_t> cell;
+        for (std::size_t k = start; k < end; ++k) {
+          const Vec2 c = centres[order[k]];
+          const std::pair<long, long> key{static_cast<long>(std::floor(c[0] / kOutPartCell)),
+                                          static_cast<long>(std::floor(c[1] / kOutPartCell))};
+          const auto [at, fresh] = cell.try_emplace(key, tiles.size());
+          if (fresh) tiles.emplace_back();
+          tiles[at->second].push_back(order[k]);
+        }
       }
       town = {};  // the last part's, dropped before the next is read
       labels = {};
       town = stream->part(tiles, reach, globalOf);
       releaseFreedMemory();  // the part's reading (its JSON) is done with
-      labels = city::labelTown(town, style.labels, r.jobs);
       std::vector<std::size_t> partOrder;  // `order`'s run in the part's numbers
       for (std::size_t k = start; k < end; ++k)
         partOrder.push_back(static_cast<std::size_t>(std::lower_bound(globalOf.begin(), globalOf.end(), order[k]) -
                                                      globalOf.begin()));
+      // Only the part's buildings are labelled: the neighbours read with them are not built.
+      labels = city::labelTown(town, style.labels, r.jobs, &partOrder);
       const city::TownSummary s =
           city::buildTown(town, labels, style, options, sink, partOrder,
                           [&](std::size_t d, std::size_t) { drawBar(start + d, order.size(), seconds()); });

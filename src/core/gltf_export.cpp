@@ -12,6 +12,7 @@
 #include "core/glb_writer.h"
 #include "core/manifold_order.h"
 #include "core/materials.h"
+#include "core/spill_buffer.h"
 #include "core/textures.h"
 
 #include <meshoptimizer.h>
@@ -90,7 +91,10 @@ std::array<std::int8_t, 3> quantizeNormal(const Vec3& n) {
   return best;
 }
 
-// The document being written and its binary chunk.
+// The document being written and its binary chunk. What grows with the objects (the buffer
+// views' bytes and the accessors, meshes and nodes of the JSON) is kept in SpillBuffers, so that
+// a town's glb goes through a temporary file rather than memory; the rest of the JSON (materials,
+// images, the scene) is small and kept as a JSON value.
 class GlbDocument {
  public:
   explicit GlbDocument(bool compress) : compress_(compress) {}
@@ -98,21 +102,30 @@ class GlbDocument {
   json doc = json::object();
 
   int push(const char* array, json value) {
+    for (Spilled& s : spilled_)
+      if (s.name == array) {
+        if (s.count) s.text.append(",");
+        s.text.append(value.dump(-1, ' ', false, json::error_handler_t::replace));
+        return s.count++;
+      }
     json& a = doc[array];
     if (a.is_null()) a = json::array();
     a.push_back(std::move(value));
     return static_cast<int>(a.size()) - 1;
   }
 
-  // An accessor over `bytes` appended to the view of `kind`; its bufferView is set by finish().
+  // An accessor over `bytes` appended to the view of `kind`; its bufferView is set by write().
   int accessor(ViewKind kind, const void* data, std::size_t bytes, json a) {
-    std::vector<unsigned char>& v = views_[kind];
+    SpillBuffer& v = views_[kind];
     a["byteOffset"] = v.size();
-    const auto* p = static_cast<const unsigned char*>(data);
-    v.insert(v.end(), p, p + bytes);
-    const int index = push("accessors", std::move(a));
-    users_[kind].push_back(index);
-    return index;
+    v.append(data, bytes);
+    // A record per accessor: its kind, its JSON without the bufferView, a newline (which a
+    // compact dump never holds).
+    const char k = static_cast<char>(kind);
+    accessors_.append(&k, 1);
+    accessors_.append(a.dump(-1, ' ', false, json::error_handler_t::replace));
+    accessors_.append("\n");
+    return accessorCount_++;
   }
 
   // A buffer view of its own in the binary chunk (an image), never compressed.
@@ -131,32 +144,51 @@ class GlbDocument {
   // Lays the views out (compressed, with a fallback buffer that has no data, when asked) and
   // writes the glb atomically.
   void write(const std::string& path) {
+    // The binary chunk: the images (bin_), then a view per kind, each after the zeros that
+    // align it; an uncompressed view is copied from its buffer straight into the file.
+    struct Segment {
+      std::size_t zeros;
+      const SpillBuffer* bytes;
+    };
+    std::vector<Segment> bin;
+    SpillBuffer images;
+    images.append(bin_.data(), bin_.size());
+    bin.push_back({0, &images});
+    std::size_t binSize = bin_.size();
+    std::vector<unsigned char>().swap(bin_);
+    std::size_t zeros = 0;  // before the next segment
+    auto alignBin = [&] {
+      zeros += (4 - binSize % 4) % 4;
+      binSize = (binSize + 3) / 4 * 4;
+    };
+    SpillBuffer encodedViews[kViewKinds];
     std::size_t fallback = 0;
-    if (!compress_) {  // the chunk's size known, it is not copied as it grows
-      std::size_t bytes = bin_.size();
-      for (const auto& v : views_) bytes += v.size() + 3;
-      bin_.reserve(bytes + 3);
-    }
+    int viewOf[kViewKinds];
     for (int k = 0; k < kViewKinds; ++k) {
-      std::vector<unsigned char>& v = views_[k];
+      viewOf[k] = -1;
+      SpillBuffer& v = views_[k];
       if (v.empty()) continue;
       const ViewKindInfo& info = kViewInfo[k];
       json view{{"byteLength", v.size()}};
       if (info.target) view["target"] = info.target;
       if (info.target == kArrayBuffer) view["byteStride"] = info.elementBytes;
       if (!compress_) {
-        align(bin_);
+        alignBin();
         view["buffer"] = 0;
-        view["byteOffset"] = bin_.size();
-        bin_.insert(bin_.end(), v.begin(), v.end());
+        view["byteOffset"] = binSize;
+        bin.push_back({zeros, &v});
+        zeros = 0;
+        binSize += v.size();
       } else {
         // The spec's fallback rules: the view points into a buffer marked as the fallback, which
         // has no data here (so the extension is required), and its extension into the chunk.
+        // meshoptimizer encodes a view whole, so one view at a time is read back into memory.
+        const std::vector<unsigned char> raw = v.bytes();
         fallback = (fallback + 3) / 4 * 4;
         view["buffer"] = 1;
         view["byteOffset"] = fallback;
-        fallback += v.size();
-        const std::size_t count = v.size() / info.elementBytes;
+        fallback += raw.size();
+        const std::size_t count = raw.size() / info.elementBytes;
         std::vector<unsigned char> encoded;
         const char* mode;
         if (info.target == kElementArrayBuffer) {
@@ -164,10 +196,10 @@ class GlbDocument {
           std::vector<unsigned int> indices(count);
           if (info.elementBytes == 2) {
             std::vector<std::uint16_t> i16(count);
-            std::memcpy(i16.data(), v.data(), v.size());
+            std::memcpy(i16.data(), raw.data(), raw.size());
             std::copy(i16.begin(), i16.end(), indices.begin());
           } else {
-            std::memcpy(indices.data(), v.data(), v.size());
+            std::memcpy(indices.data(), raw.data(), raw.size());
           }
           const unsigned int vertices = indices.empty() ? 0 : *std::max_element(indices.begin(), indices.end()) + 1;
           encoded.resize(meshopt_encodeIndexBufferBound(count, vertices));
@@ -175,71 +207,154 @@ class GlbDocument {
         } else {
           mode = "ATTRIBUTES";
           encoded.resize(meshopt_encodeVertexBufferBound(count, info.elementBytes));
-          encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), v.data(), count, info.elementBytes));
+          encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), raw.data(), count, info.elementBytes));
         }
         if (encoded.empty()) throw Error("cannot write '" + path + "': meshoptimizer could not encode a buffer view");
-        align(bin_);
+        alignBin();
         view["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},
-                                                         {"byteOffset", bin_.size()},
+                                                         {"byteOffset", binSize},
                                                          {"byteLength", encoded.size()},
                                                          {"byteStride", info.elementBytes},
                                                          {"mode", mode},
                                                          {"count", count}};
-        bin_.insert(bin_.end(), encoded.begin(), encoded.end());
+        encodedViews[k].append(encoded.data(), encoded.size());
+        bin.push_back({zeros, &encodedViews[k]});
+        zeros = 0;
+        binSize += encoded.size();
+        v.clear();
       }
-      const int index = push("bufferViews", std::move(view));
-      for (int a : users_[k]) doc["accessors"][a]["bufferView"] = index;
-      std::vector<unsigned char>().swap(v);
+      viewOf[k] = push("bufferViews", std::move(view));
     }
     // glTF forbids an empty buffer (byteLength >= 1): with nothing to hold, none.
-    if (!bin_.empty()) push("buffers", json{{"byteLength", bin_.size()}});
+    if (binSize) push("buffers", json{{"byteLength", binSize}});
     if (fallback) {
-      if (bin_.empty()) push("buffers", json{{"byteLength", 4}});  // never: compressed views take bytes
+      if (!binSize) push("buffers", json{{"byteLength", 4}});  // never: compressed views take bytes
       push("buffers", json{{"byteLength", fallback}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
       use("EXT_meshopt_compression", true);
     }
     if (!used_.empty()) doc["extensionsUsed"] = used_;
     if (!required_.empty()) doc["extensionsRequired"] = required_;
 
-    std::string text = doc.dump(-1, ' ', false, json::error_handler_t::replace);
-    while (text.size() % 4) text += ' ';
-    align(bin_);
-    const bool withBin = !bin_.empty();
-    const std::uint32_t total =
-        static_cast<std::uint32_t>(12 + 8 + text.size() + (withBin ? 8 + bin_.size() : 0));
+    // The JSON chunk as nlohmann would dump the whole document (members in key order, no
+    // spaces): the kept members and the spilled arrays merged by name.
+    SpillBuffer text;
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : doc.items()) keys.push_back(key);
+    if (accessorCount_) keys.emplace_back("accessors");
+    for (const Spilled& s : spilled_)
+      if (s.count) keys.push_back(s.name);
+    std::sort(keys.begin(), keys.end());
+    text.append("{");
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      const std::string& key = keys[i];
+      text.append((i ? ",\"" : "\"") + key + "\":");
+      if (key == "accessors" && accessorCount_) {
+        text.append("[");
+        writeAccessors(text, viewOf);
+        text.append("]");
+      } else if (const Spilled* s = spilledNamed(key); s && s->count) {
+        text.append("[");
+        s->text.read([&](const char* p, std::size_t n) { text.append(p, n); });
+        text.append("]");
+      } else {
+        text.append(doc[key].dump(-1, ' ', false, json::error_handler_t::replace));
+      }
+    }
+    text.append("}");
+    while (text.size() % 4) text.append(" ");
+    alignBin();
+    const bool withBin = binSize > 0;
+    const std::uint64_t total = 12 + 8 + text.size() + (withBin ? 8 + binSize : 0);
+    if (total > 0xFFFFFFFFull)
+      throw Error("cannot write '" + path + "': " + std::to_string(total) + " bytes, more than a glb holds (4 GiB)");
     const std::string temp = makeTempSibling(path);
-    {
+    try {
       std::ofstream out(temp, std::ios::binary);
-      auto u32 = [&](std::uint32_t x) { out.write(reinterpret_cast<const char*>(&x), 4); };
+      auto u32 = [&](std::uint64_t x) {
+        const auto y = static_cast<std::uint32_t>(x);
+        out.write(reinterpret_cast<const char*>(&y), 4);
+      };
       u32(0x46546C67);  // "glTF"
       u32(2);
       u32(total);
-      u32(static_cast<std::uint32_t>(text.size()));
+      u32(text.size());
       u32(0x4E4F534A);  // "JSON"
-      out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      text.copyTo(out);
       if (withBin) {
-        u32(static_cast<std::uint32_t>(bin_.size()));
+        u32(binSize);
         u32(0x004E4942);  // "BIN\0"
-        out.write(reinterpret_cast<const char*>(bin_.data()), static_cast<std::streamsize>(bin_.size()));
+        static const char pad[3] = {0, 0, 0};
+        for (const Segment& segment : bin) {
+          out.write(pad, static_cast<std::streamsize>(segment.zeros));
+          segment.bytes->copyTo(out);
+        }
+        out.write(pad, static_cast<std::streamsize>(zeros));
       }
       out.flush();
-      if (!out) {
-        out.close();
-        std::remove(temp.c_str());
-        throw Error("cannot write '" + path + "'");
-      }
+      if (!out) throw Error("cannot write '" + path + "'");
+    } catch (...) {
+      std::remove(temp.c_str());
+      throw;
     }
     commitTempFile(temp, path);
   }
 
  private:
+  struct Spilled {
+    explicit Spilled(const char* n) : name(n) {}
+    std::string name;
+    SpillBuffer text;  // the elements' JSON, comma-separated
+    int count = 0;
+  };
+
+  const Spilled* spilledNamed(const std::string& name) const {
+    for (const Spilled& s : spilled_)
+      if (s.name == name) return &s;
+    return nullptr;
+  }
+
+  // The accessors' records as JSON elements, each with the bufferView of its kind first ("bufferView"
+  // sorts before every other member of an accessor).
+  void writeAccessors(SpillBuffer& text, const int* viewOf) const {
+    std::string piece;
+    enum { kKind, kBrace, kBody } state = kKind;
+    int kind = 0;
+    bool first = true;
+    accessors_.read([&](const char* p, std::size_t n) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const char c = p[i];
+        if (state == kKind) {
+          kind = static_cast<unsigned char>(c);
+          state = kBrace;
+        } else if (state == kBrace) {
+          if (!first) piece += ',';
+          first = false;
+          piece += '{';
+          if (viewOf[kind] >= 0) piece += "\"bufferView\":" + std::to_string(viewOf[kind]) + ",";
+          state = kBody;
+        } else if (c == '\n') {
+          state = kKind;
+        } else {
+          piece += c;
+        }
+      }
+      if (piece.size() > (std::size_t{1} << 20)) {
+        text.append(piece);
+        piece.clear();
+      }
+    });
+    text.append(piece);
+  }
+
   static void align(std::vector<unsigned char>& b) {
     while (b.size() % 4) b.push_back(0);
   }
   bool compress_;
-  std::vector<unsigned char> bin_;
-  std::vector<unsigned char> views_[kViewKinds];
-  std::vector<int> users_[kViewKinds];
+  std::vector<unsigned char> bin_;  // the images
+  SpillBuffer views_[kViewKinds];
+  SpillBuffer accessors_;
+  int accessorCount_ = 0;
+  Spilled spilled_[2] = {Spilled("meshes"), Spilled("nodes")};
   std::set<std::string> used_, required_;
 };
 

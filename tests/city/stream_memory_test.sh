@@ -3,7 +3,8 @@
 # "Memory"):
 #   stream_memory_test.sh CORBEL_CLI FOOTPRINTS_DIR
 # The Moosburg buildings within 120 m of its origin (the shared footprints), once and 16 times
-# side by side (1 km apart, ids suffixed), built streamed into a tileset in parts of 64: the peak
+# side by side (1 km apart, ids suffixed), built streamed into a tileset, into one glb and into
+# one glb with --instances --compress, in parts of 64: the peak
 # resident memory (GNU time's) of the 16 copies may exceed the one copy's by at most 2 kB for
 # each building added. What a streamed town holds of each building to the end is its place in
 # the tiling, about 100 bytes; a whole read holds several kB of each (footprint, labels,
@@ -40,22 +41,31 @@ node -e '
     fs.writeFileSync(`${process.argv[2]}/x${copies}.geojson`, JSON.stringify({...fc, features: out}));
   }' "$footprints" "$work"
 
-peak() {  # NAME SOURCE STREAM-BUILDINGS: prints the peak resident memory, kB
-  MALLOC_CONF=dirty_decay_ms:0,muzzy_decay_ms:0 /usr/bin/time -f %M -o "$work/$1.rss" "$cli" city "$2" --style "$style" --seed 1 --jobs 2 --detail massing \
-    --tileset "$work/$1" --tile-buildings 16 --stream-buildings "$3" >"$work/$1.json" 2>/dev/null ||
-    [[ $? == 1 ]] || { echo "$1: city failed"; exit 1; }
-  tail -1 "$work/$1.rss"
+peak() {  # NAME SOURCE STREAM-BUILDINGS OUTPUT...: prints the peak resident memory, kB
+  local name=$1 src=$2 parts=$3
+  shift 3
+  MALLOC_CONF=dirty_decay_ms:0,muzzy_decay_ms:0 /usr/bin/time -f %M -o "$work/$name.rss" "$cli" city "$src" --style "$style" --seed 1 --jobs 2 --detail massing \
+    "${@/@/$work/$name}" --stream-buildings "$parts" >"$work/$name.json" 2>/dev/null ||
+    [[ $? == 1 ]] || { echo "$name: city failed"; exit 1; }
+  tail -1 "$work/$name.rss"
 }
 count() { node -p 'JSON.parse(require("fs").readFileSync(process.argv[1])).buildings' "$work/$1.json"; }
-one=$(peak one "$work/x1.geojson" 64)
-many=$(peak many "$work/x16.geojson" 64)
-grep -q '"streamed":true' "$work/many.json" || { echo "not streamed: $(cat "$work/many.json")"; exit 1; }
-added=$(( $(count many) - $(count one) ))
-(( added > 1000 )) || { echo "only $added buildings added"; exit 1; }
-bound=$(( added * 2000 / 1024 ))  # kB
-wholeOne=$(peak whole-one "$work/x1.geojson" 0)
-wholeMany=$(peak whole-many "$work/x16.geojson" 0)
-echo "streamed: $one kB for $(count one) buildings, $many kB for $(count many); read whole: $wholeOne kB, $wholeMany kB; bound +$bound kB"
-(( wholeMany - wholeOne > bound )) || { echo "read whole, the peak grew by only $((wholeMany - wholeOne)) kB: the bound tells nothing"; exit 1; }
-(( many - one <= bound )) || { echo "streamed, the peak grew by $((many - one)) kB, more than $bound kB"; exit 1; }
+check() {  # OUTPUT...: the streamed peak's growth within the bound, the whole read's beyond it
+  local one many added bound wholeOne wholeMany
+  one=$(peak one "$work/x1.geojson" 64 "$@")
+  many=$(peak many "$work/x16.geojson" 64 "$@")
+  grep -q '"streamed":true' "$work/many.json" || { echo "not streamed: $(cat "$work/many.json")"; exit 1; }
+  added=$(( $(count many) - $(count one) ))
+  (( added > 1000 )) || { echo "only $added buildings added"; exit 1; }
+  bound=$(( added * 2000 / 1024 ))  # kB
+  wholeOne=$(peak whole-one "$work/x1.geojson" 0 "$@")
+  wholeMany=$(peak whole-many "$work/x16.geojson" 0 "$@")
+  echo "$*: streamed: $one kB for $(count one) buildings, $many kB for $(count many); read whole: $wholeOne kB, $wholeMany kB; bound +$bound kB"
+  (( wholeMany - wholeOne > bound )) || { echo "read whole, the peak grew by only $((wholeMany - wholeOne)) kB: the bound tells nothing"; exit 1; }
+  (( many - one <= bound )) || { echo "$1: streamed, the peak grew by $((many - one)) kB, more than $bound kB"; exit 1; }
+}
+check --tileset @ --tile-buildings 16
+# One glb: its buffers and the JSON's per-building arrays go through temporary files.
+check --out @.glb
+check --out @.glb --instances --compress
 echo "stream memory: ok"

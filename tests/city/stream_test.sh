@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# `corbel-cli city` reading its footprints a part at a time (--tiles, --tileset without --out or
-# --render; docs/city.md "Memory") against the same command reading them whole
+# `corbel-cli city` reading its footprints a part at a time (--tiles, --tileset, a glb --out,
+# without --render; docs/city.md "Memory") against the same command reading them whole
 # (--stream-buildings 0):
 #   stream_test.sh CORBEL_CLI FOOTPRINTS_DIR
 # The buildings of Moosburg within 300 m of its origin (the shared footprints), cut into parts of
 # about 60 buildings, so that most buildings' labels depend on neighbours read with another part:
-# every file of the tileset and of the tiles, the per-building report and the summary's counts are
+# every file of the tileset, of the tiles and the --out glb, the per-building report and the summary's counts are
 # byte for byte those of the whole read. The same on the footprints turned into RFC 7946 lon/lat
 # by the frame's own formulas (so the frame comes from the positions and they are reprojected),
 # and the streamed tileset read as a 3D Tiles client reads it against the whole town's glb.
@@ -44,7 +44,7 @@ compare() {  # NAME SOURCE ARGS...: streamed against whole, every output file al
     >"$work/$name-part.json" 2>/dev/null || [[ $? == 1 ]] || { echo "$name: the streamed read failed"; exit 1; }
   grep -q '"streamed":true' "$work/$name-part.json" || { echo "$name: not streamed: $(cat "$work/$name-part.json")"; exit 1; }
   echo "$name: $(cat "$work/$name-part.json")"
-  diff -r "$work/$name-whole" "$work/$name-part" || { echo "$name: the streamed files differ"; exit 1; }
+  diff -r "$work/$name-whole${ext:-}" "$work/$name-part${ext:-}" || { echo "$name: the streamed files differ"; exit 1; }
   diff "$work/$name-whole.jsonl" "$work/$name-part.jsonl" || { echo "$name: the streamed report differs"; exit 1; }
   node -e '
     const [a, b] = process.argv.slice(1).map((f) => { const j = JSON.parse(require("fs").readFileSync(f));
@@ -58,6 +58,29 @@ out=(--tiles @ --tile-size 100)
 compare tiles "$footprints"
 n=$(ls "$work/tiles-part" | wc -l)
 (( n >= 16 )) || { echo "only $n tiles"; exit 1; }
+# One glb (--out): the buildings in the source's order, plain and with --instances --compress,
+# and at full detail, where the glb's buffers pass the 64 KiB it keeps in memory of each and go through
+# temporary files.
+out=(--out @.glb)
+ext=.glb
+compare glb "$footprints"
+compare glb-lonlat "$work/lonlat.geojson" --instances --compress
+compare glb-full "$footprints" --detail full --around 0,0,200 --textures on
+(( $(stat -c %s "$work/glb-full-part.glb") > 4 << 20 )) || { echo "the full-detail glb is too small to spill"; exit 1; }
+ext=
+# A run that fails while the glb is written (no temporary folder to spill into) says why and
+# leaves the existing --out as it was, with nothing beside it.
+mkdir "$work/keep"
+printf 'old' >"$work/keep/town.glb"
+for tmp in "$work/no-such-folder" /proc; do
+  if TMPDIR=$tmp "$cli" city "$footprints" --style "$style" --seed 1 --jobs 2 --around 0,0,300 --detail massing \
+    --out "$work/keep/town.glb" >/dev/null 2>"$work/err"; then
+    echo "TMPDIR=$tmp: the glb was written"; exit 1
+  fi
+  grep -q "temporary" "$work/err" || { echo "TMPDIR=$tmp: $(cat "$work/err")"; exit 1; }
+  [[ $(cat "$work/keep/town.glb") == old && $(ls -A "$work/keep") == town.glb ]] ||
+    { echo "TMPDIR=$tmp: the existing glb was touched: $(ls -A "$work/keep")"; exit 1; }
+done
 
 # Other formats, read through GDAL/OGR feature by feature: the footprints within 300 m written by
 # ogr2ogr as a Shapefile in UTM, a GeoPackage in lon/lat beside a second layer (so --layer must

@@ -9,6 +9,10 @@
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <cstring>
 
 #include <functional>
 #include <string>
@@ -145,6 +149,64 @@ TEST(GlbWriter, ASceneRefusesTheSmallerFanOfAPinchedCorner) {
   scene.replaceObject(1, Kind::Shell, "pinched", pinched());
   EXPECT_EQ(scene.objects().at(1).rejected_faces, 5u);
   EXPECT_EQ(scene.faces(1).size(), 4u);
+}
+
+}  // namespace
+
+namespace {
+
+// A town's worth of objects: the buffer views and the JSON's accessors, meshes and nodes pass
+// 64 KiB each and go through temporary files. The JSON chunk is still what nlohmann writes of the
+// whole document (its own compact dump, members in key order), every accessor names a buffer
+// view of its kind's bytes, the chunks' lengths add up to the file's, and no temporary file is
+// left in the temporary folder.
+TEST(GlbWriter, AWriterFedATownSpillsAndStillWritesOneDocument) {
+  TempDir dir, tmp;
+  const char* before = std::getenv("TMPDIR");
+  const std::string saved = before ? before : "";
+  setenv("TMPDIR", tmp.path().c_str(), 1);
+  const int n = 6000;
+  {
+    GlbWriter writer(options(false, false));
+    for (int k = 0; k < n; ++k) {
+      const double x = 30.0 * (k % 80), y = 30.0 * (k / 80);
+      writer.add(static_cast<ObjectId>(k + 1), Kind::Shell, "house " + std::to_string(k),
+                 prism({{x, y}, {x + 7.3, y}, {x + 7.3, y + 5.1}, {x + 3.6, y + 7.9 + k % 5}, {x, y + 5.1}}, 0,
+                       6.2 + k % 7, k % 2 ? "brick" : "plaster", "roof"));
+    }
+    writer.write(dir.file("town.glb"));
+  }
+  if (before)
+    setenv("TMPDIR", saved.c_str(), 1);
+  else
+    unsetenv("TMPDIR");
+  EXPECT_TRUE(tmp.entries().empty());
+  const std::string f = readText(dir.file("town.glb"));
+  ASSERT_GT(f.size(), 4u << 20);
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t x;
+    std::memcpy(&x, f.data() + at, 4);
+    return x;
+  };
+  EXPECT_EQ(u32(0), 0x46546C67u);
+  EXPECT_EQ(u32(8), f.size());
+  const std::uint32_t jsonBytes = u32(12);
+  EXPECT_EQ(u32(16), 0x4E4F534Au);
+  const std::uint32_t binBytes = u32(20 + jsonBytes);
+  EXPECT_EQ(20 + jsonBytes + 8 + binBytes, f.size());
+  std::string text = f.substr(20, jsonBytes);
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  const nlohmann::json doc = nlohmann::json::parse(text);
+  EXPECT_TRUE(doc.dump() == text);
+  EXPECT_EQ(doc["nodes"].size(), static_cast<std::size_t>(n));
+  EXPECT_EQ(doc["meshes"].size(), static_cast<std::size_t>(n));
+  EXPECT_GT(doc["accessors"].size(), 3u * n);
+  for (const auto& a : doc["accessors"]) {
+    ASSERT_TRUE(a.contains("bufferView"));
+    const auto& view = doc["bufferViews"][a["bufferView"].get<std::size_t>()];
+    EXPECT_LE(a["byteOffset"].get<std::size_t>(), view["byteLength"].get<std::size_t>());
+  }
+  EXPECT_EQ(doc["buffers"][0]["byteLength"].get<std::size_t>() + 3 >= binBytes, true);
 }
 
 }  // namespace
