@@ -180,8 +180,9 @@ int run(const CityRequest& r) {
   } else {
     source = r.footprints;
     // Every output takes the buildings one at a time but a --render's picture and an --out other
-    // than glb (made from a whole Scene).
-    const bool outGlb = !r.out.empty() && exportFormatFor(r.out) == ExportFormat::Glb;
+    // than glb (made from a whole Scene). A glb with --instances is read whole: it holds every
+    // feature placement to the end anyway, and reading whole keeps it twice as fast.
+    const bool outGlb = !r.out.empty() && exportFormatFor(r.out) == ExportFormat::Glb && !r.instances;
     if (r.streamBuildings > 0 && r.render.empty() && (r.out.empty() || outGlb))
       stream.emplace(source, read);
     else

@@ -382,8 +382,8 @@ void declareCity(CLI::App& app, Requests& requests) {
   number(*c, "--ground", r.ground, -1e4, 1e4, "M", "The tileset's ground at the town's origin, above the WGS 84 ellipsoid.")
       ->needs(tileset);
   whole(*c, "--stream-buildings", r.streamBuildings, 0, 100000000, "N",
-        "With --tiles, --tileset or a glb --out, and no --render, read the footprints about N buildings (whole "
-        "tiles) at a time; 0: read it whole (docs/city.md, \"Memory\").");
+        "With --tiles, --tileset or a glb --out without --instances, and no --render, read the footprints about N "
+        "buildings (whole tiles) at a time; 0: read it whole (docs/city.md, \"Memory\").");
   text(*c, "--render", r.render, "PNG", "Render the town.");
   text(*c, "--around", r.around, "X,Y,R", "Only the buildings within R meters of (X, Y).");
   choice(*c, "--coordinates", r.coordinates, {"auto", "lonlat", "metric"},

@@ -4,7 +4,7 @@
 #   stream_memory_test.sh CORBEL_CLI FOOTPRINTS_DIR
 # The Moosburg buildings within 120 m of its origin (the shared footprints), once and 16 times
 # side by side (1 km apart, ids suffixed), built streamed into a tileset, into one glb and into
-# one glb with --instances --compress, in parts of 64: the peak
+# one glb with --compress, in parts of 64: the peak
 # resident memory (GNU time's) of the 16 copies may exceed the one copy's by at most 2 kB for
 # each building added. What a streamed town holds of each building to the end is its place in
 # the tiling, about 100 bytes; a whole read holds several kB of each (footprint, labels,
@@ -67,5 +67,5 @@ check() {  # OUTPUT...: the streamed peak's growth within the bound, the whole r
 check --tileset @ --tile-buildings 16
 # One glb: its buffers and the JSON's per-building arrays go through temporary files.
 check --out @.glb
-check --out @.glb --instances --compress
+check --out @.glb --compress
 echo "stream memory: ok"
