@@ -127,6 +127,14 @@ ExtrusionSpec buttressedHouse() {
   return e;
 }
 
+// The point loads' total downward force (N).
+double downwardLoad(const Assembly& as) {
+  Vec3 total(0.0);
+  for (const Block& b : as.blocks)
+    for (const PointLoad& l : b.pointLoads) total += l.force;
+  return -total[2];
+}
+
 double wallVolume(const Assembly& as) {
   BBox box;
   for (const Block& b : as.blocks)
@@ -235,10 +243,7 @@ TEST(StoneExtrusion, BayIsPartOfTheCoursedPlanAndCarriesItsRoof) {
   loaded.masonry->coveringWeight = q;
   const ParametricModel model = stoneModel(loaded);
   const Assembly as = model.build(model.parameters);
-  Vec3 total(0.0);
-  for (const Block& b : as.blocks)
-    for (const PointLoad& l : b.pointLoads) total += l.force;
-  EXPECT_NEAR(total[2], -q * 50.5 * std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(downwardLoad(as), q * 50.5 * std::sqrt(2.0), 1e-6);
   const double ring = (27 + 2 * std::sqrt(1.25)) * 0.5 - 0.25 * 4;
   EXPECT_NEAR(wallVolume(as), ring * 3 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5, 1e-9);
   EXPECT_TRUE(checkFeasibility(as).feasible);
@@ -347,10 +352,7 @@ TEST(StoneExtrusion, LowerBayCarriesTheWallOverItsMouthOnALintel) {
   loaded.masonry->coveringWeight = q;
   const ParametricModel model = stoneModel(loaded);
   const Assembly as = model.build(model.parameters);
-  Vec3 total(0.0);
-  for (const Block& b : as.blocks)
-    for (const PointLoad& l : b.pointLoads) total += l.force;
-  EXPECT_NEAR(total[2], -q * 50.5 * std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(downwardLoad(as), q * 50.5 * std::sqrt(2.0), 1e-6);
   const double ring = (27 + 2 * std::sqrt(1.25)) * 0.5 - 0.25 * 4;
   EXPECT_NEAR(wallVolume(as), ring * 1.5 + 13.0 * 1.5 - 1.0 * 2.0 * 0.5 - 1.0 * 1.0 * 0.5, 1e-9);
   // Over the mouth (x from 2.5 to 5.5 in the back wall) stone from 1.5 m up, none below.
