@@ -5,9 +5,13 @@
 namespace corbel {
 
 void Progress::report(double fraction, std::string_view stage) {
-  fraction_.store(std::clamp(fraction, 0.0, 1.0), std::memory_order_relaxed);
-  std::lock_guard lock(mutex_);
-  if (stage_ != stage) stage_ = stage;
+  // The stage is written first and the fraction published with release order, so whoever
+  // sees the new fraction also sees its stage (the UI shows both side by side).
+  {
+    std::lock_guard lock(mutex_);
+    if (stage_ != stage) stage_ = stage;
+  }
+  fraction_.store(std::clamp(fraction, 0.0, 1.0), std::memory_order_release);
 }
 
 std::string Progress::stage() const {

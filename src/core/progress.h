@@ -18,7 +18,7 @@ class Progress {
   void report(double fraction, std::string_view stage);
   bool cancelled() const { return cancel_.load(std::memory_order_relaxed); }
   void cancel() { cancel_.store(true, std::memory_order_relaxed); }
-  double fraction() const { return fraction_.load(std::memory_order_relaxed); }
+  double fraction() const { return fraction_.load(std::memory_order_acquire); }
   std::string stage() const;
 
  private:
