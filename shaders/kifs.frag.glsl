@@ -284,6 +284,7 @@ Sample evaluateFor(vec3 world, bool withBound) {
 #else
   float di = massModel(m, uShell), d0 = massModel(m, 0.0);
 #endif
+  if (uMode == 5) di = kInf;  // bare: no inner shell (Fig. 3c); less solid, so every bound below still holds
   vec4 own = foldCell(m, d0, withBound);
   Sample o;
   o.ids = own.zw;

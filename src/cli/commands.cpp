@@ -310,7 +310,8 @@ void declareKifs(CLI::App& app, Requests& requests) {
   text(*c, "--preset", r.preset, "NAME", "A preset's name (as SOURCE).")->excludes(source);
   text(*c, "--out", r.out, "PNG", "Render the building to this image.");
   addSize(*c, "--size", r.size, 1, 8192, "The image's size.");
-  choice(*c, "--mode", r.mode, {"shaded", "preview", "facades", "floors", "cost"}, "What the image shows.", {"ids"});
+  choice(*c, "--mode", r.mode, {"shaded", "preview", "facades", "floors", "bare", "cost"},
+         "What the image shows (bare: the fractal without the inner shell, McGraw's Fig. 3c).", {"ids"});
   text(*c, "--camera", r.camera, "AZ,EL", "Azimuth and elevation in degrees (default -60,22; EL in [-89, 89]).");
   whole(*c, "--frames", r.frames, 1, 1000, "N", "Time N frames.");
   text(*c, "--eval", r.eval, "POINTS", "Evaluate the distance at the points of this file.");

@@ -112,6 +112,7 @@ int run(const KifsRequest& r) {
   else if (r.mode == "floors") mode = render::KifsMode::Floors;
   else if (r.mode == "cost") mode = render::KifsMode::Cost;
   else if (r.mode == "preview") mode = render::KifsMode::Preview;  // the editor's coarse frames' shading
+  else if (r.mode == "bare") mode = render::KifsMode::Bare;
   double az = -60.0, el = 22.0;
   if (!r.camera.empty()) {
     const auto v = numbers(r.camera, ',', "--camera");

@@ -18,8 +18,11 @@ ExportableScene exportableScene(const Document& doc, const Scene& built, const c
     const DocObject* o = doc.find(id);
     if (!o || !picked(*o)) out.scene.removeObject(id);
   }
-  for (const DocObject& o : doc.objects)
-    if (!o.placement.identity() && picked(o)) out.placements[o.id] = o.placement;
+  for (const DocObject& o : doc.objects) {
+    const auto* k = std::get_if<KifsSpec>(&o.spec);
+    const bool follower = k && k->mass.footprint == "object";  // it stands in its mass object, in world space
+    if (!o.placement.identity() && picked(o) && !follower) out.placements[o.id] = o.placement;
+  }
   ObjectId next = doc.nextId();
   std::map<ObjectId, ObjectId> townOf;  // a building's object → its town's
   for (const DocObject& o : doc.objects) {

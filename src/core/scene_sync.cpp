@@ -33,6 +33,19 @@ void SceneSync::setBuilder(std::size_t specIndex, Inputs inputs, InputBuilder bu
   unplaced_.clear();
 }
 
+std::vector<DocObject> SceneSync::inputsOf(const Document& doc, const DocObject& o) const {
+  const Inputs& pick = inputs_[o.spec.index()];
+  return pick ? pick(doc, o) : std::vector<DocObject>{};
+}
+
+MeshData SceneSync::buildPlaced(const DocObject& o, const std::vector<DocObject>& inputs, Progress* progress) const {
+  const InputBuilder& b = builders_[o.spec.index()];
+  if (!b) throw Error("this build of corbel has no kernel for this kind of object");
+  BuildResult r = b(o, inputs, progress);
+  if (!r.worldSpace) applyPlacement(r.mesh, o.placement);
+  return std::move(r.mesh);
+}
+
 SceneSync::Job SceneSync::plan(const Document& doc, const Scene& scene) const {
   Job job;
   for (const auto& [id, _] : built_)
@@ -43,8 +56,7 @@ SceneSync::Job SceneSync::plan(const Document& doc, const Scene& scene) const {
     auto it = built_.find(o.id);
     const auto st = status_.find(o.id);
     const bool failedBefore = st != status_.end() && !st->second.error.empty();
-    std::vector<DocObject> inputs;
-    if (const Inputs& pick = inputs_[o.spec.index()]) inputs = pick(doc, o);
+    std::vector<DocObject> inputs = inputsOf(doc, o);
     bool stale = it == built_.end() || !(it->second.spec == o.spec) || (!scene.hasObject(o.id) && !failedBefore);
     if (!stale && inputs_[o.spec.index()]) {
       const auto was = builtInputs_.find(o.id);
@@ -102,10 +114,10 @@ std::size_t SceneSync::apply(Job& job, Scene& scene) {
     if (b == built_.end()) continue;
     b->second.placement = placement;
     const auto u = unplaced_.find(id);
-    if (u == unplaced_.end() || !scene.hasObject(id)) continue;
-    MeshData placed = u->second.second;
+    if (u == unplaced_.end() || u->second.worldSpace || !scene.hasObject(id)) continue;
+    MeshData placed = u->second.mesh;
     applyPlacement(placed, placement);
-    scene.replaceObject(id, u->second.first, b->second.name, placed);
+    scene.replaceObject(id, u->second.kind, b->second.name, placed);
     ++rebuilt;
   }
   for (std::size_t i = 0; i < job.build.size() && i < job.outcomes.size(); ++i) {
@@ -120,15 +132,15 @@ std::size_t SceneSync::apply(Job& job, Scene& scene) {
       st.error = out.error;
       // The last good geometry stays, placed where the object now is.
       if (const auto u = unplaced_.find(o.id); u != unplaced_.end() && scene.hasObject(o.id)) {
-        MeshData placed = u->second.second;
-        applyPlacement(placed, o.placement);
-        scene.replaceObject(o.id, u->second.first, o.name, placed);
+        MeshData placed = u->second.mesh;
+        if (!u->second.worldSpace) applyPlacement(placed, o.placement);
+        scene.replaceObject(o.id, u->second.kind, o.name, placed);
       }
       continue;
     }
     MeshData placed = out.result.mesh;
-    applyPlacement(placed, o.placement);
-    unplaced_[o.id] = {out.result.kind, std::move(out.result.mesh)};
+    if (!out.result.worldSpace) applyPlacement(placed, o.placement);
+    unplaced_[o.id] = {out.result.kind, std::move(out.result.mesh), out.result.worldSpace};
     scene.replaceObject(o.id, out.result.kind, o.name, placed);
     st.error.clear();
     st.warnings = std::move(out.result.warnings);

@@ -21,6 +21,9 @@ struct BuildResult {
   MeshData mesh;
   Kind kind = Kind::Mass;
   std::vector<std::string> warnings;
+  // The mesh is already where it stands (world space) and the object's placement does not apply
+  // to it: a KIFS building meshed on the object it follows (kifs/follow.h).
+  bool worldSpace = false;
 };
 // Spec → geometry; throws (InputError or Error) with a message a user can act on, or
 // Cancelled when the progress (may be null) is cancelled. A pure function of the object: it
@@ -35,6 +38,9 @@ using InputBuilder = std::function<BuildResult(const DocObject&, const std::vect
 class SceneSync {
  public:
   SceneSync();  // the box kernel is built in
+  // Builders may hold this object's address (buildPlaced), so it stays where it was made.
+  SceneSync(const SceneSync&) = delete;
+  SceneSync& operator=(const SceneSync&) = delete;
   // Registers the builder of the spec alternative with index `specIndex` in Spec.
   void setBuilder(std::size_t specIndex, Builder builder);
   template <class SpecT>
@@ -47,6 +53,14 @@ class SceneSync {
   void setBuilder(Inputs inputs, InputBuilder builder) {
     setBuilder(indexOf<SpecT>(), std::move(inputs), std::move(builder));
   }
+
+  // The other objects of `doc` that `o`'s builder reads (empty: none, or a builder that reads
+  // its object only).
+  std::vector<DocObject> inputsOf(const Document& doc, const DocObject& o) const;
+  // Runs `o`'s builder on `inputs` (inputsOf) and places the result as the Scene would hold it
+  // (world space), for a builder that stands on another object's shell (a KIFS building meshed
+  // on the object it follows). Throws what the builder throws. Safe on any thread.
+  MeshData buildPlaced(const DocObject& o, const std::vector<DocObject>& inputs, Progress* progress) const;
 
   // Returns the number of objects rebuilt. Cancelling leaves the Scene consistent with the
   // objects already processed; a later call finishes the work.
@@ -97,7 +111,12 @@ class SceneSync {
   std::map<ObjectId, DocObject> built_;  // what each object was last built (or tried) from
   std::map<ObjectId, std::vector<DocObject>> builtInputs_;  // ... and the other objects it read
   // Each object's last good build in its own frame, before its placement, with its kind.
-  std::map<ObjectId, std::pair<Kind, MeshData>> unplaced_;
+  struct Unplaced {
+    Kind kind = Kind::Mass;
+    MeshData mesh;
+    bool worldSpace = false;  // BuildResult::worldSpace: the placement does not apply
+  };
+  std::map<ObjectId, Unplaced> unplaced_;
   std::map<ObjectId, Status> status_;
 };
 

@@ -740,6 +740,10 @@ int App::run() {
       }
       script_.shotDone(ok);
     }
+    if (screenshotDue_) {
+      screenshotDue_ = false;
+      saveScreenshot();
+    }
     ++frame_;
     if (script_.quitAfter(frame_)) {
       if (!script_.finalScreenshot().empty()) {

@@ -141,6 +141,8 @@ class App {
   char searchText_[160] = {};
   int searchPick_ = 0;
   void takeScreenshot(const std::string& path);
+  // "Save Screenshot": the window as NAME-shot-N.png beside the project (the first N free), logged.
+  void saveScreenshot();
   std::optional<ObjectId> selected() const { return selection_.active(); }
   // The selected object when it is masonry, for the statics panel.
   const DocObject* selectedMasonry() const;
@@ -240,6 +242,7 @@ class App {
   RecentFiles recent_;
 
   std::string path_;  // current file ("" = never saved)
+  bool screenshotDue_ = false;  // "Save Screenshot" was asked for: taken once this frame is drawn
   std::uint64_t autosavedState_ = 0;
   std::chrono::steady_clock::time_point lastAutosave_;
 

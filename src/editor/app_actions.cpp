@@ -263,6 +263,9 @@ void App::registerActions() {
   add({"view.frame", "View", "Frame All", "Fit the visible objects in the view.", {GLFW_KEY_HOME}, false, [this] {
          frameAll();
        }});
+  add({"view.screenshot", "View", "Save Screenshot",
+       "Save the window as a PNG beside the project (NAME-shot-N.png), as this frame draws it.", {GLFW_KEY_F12},
+       false, [this] { screenshotDue_ = true; }});
   // The angled view is perspective; the six sides are orthographic, as Blender's side views
   // are. Top-row digits do what the numpad's do (Blender's "emulate numpad"), Ctrl the opposite side.
   add({"view.perspective",

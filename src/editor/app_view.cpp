@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <filesystem>
 #include <limits>
 
 namespace corbel::editor {
@@ -237,13 +238,37 @@ void App::drawView() {
       const bool still = now - kifsChanged_ > std::chrono::milliseconds(300);
       std::vector<kifs::KifsParams> buildings;
       for (const kifs::KifsParams& p : raymarched.buildings) buildings.push_back(render::kifsForView(p, view_.camera, ph));
-      kifsLayer_->update(*kifsPass_, buildings, view_.camera, pw, ph, still ? 1 : 4, render::KifsMode::Shaded,
-                         std::to_string(kifsGeneration_), raymarched.placements, raymarched.masses);
+      const KifsView shown = kifsPanel_.view();
+      const render::KifsMode mode = shown == KifsView::Facades ? render::KifsMode::Facades
+                                    : shown == KifsView::Floors ? render::KifsMode::Floors
+                                    : shown == KifsView::Bare   ? render::KifsMode::Bare
+                                                                : render::KifsMode::Shaded;
+      kifsLayer_->update(*kifsPass_, buildings, view_.camera, pw, ph, still ? 1 : 4, mode,
+                         std::to_string(kifsGeneration_) + "/" + std::to_string(int(mode)), raymarched.placements,
+                         raymarched.masses);
       kifsLayer_->composite(px, py, pw, ph);
     } catch (const std::exception& e) {
       log(std::string("KIFS buildings cannot be drawn: ") + e.what(), true);
       kifsFailed_ = true;
     }
+  }
+}
+
+void App::saveScreenshot() {
+  namespace fs = std::filesystem;
+  const fs::path project = path_.empty() ? fs::path("untitled") : fs::path(path_);
+  const fs::path folder = project.has_parent_path() ? project.parent_path() : fs::current_path();
+  fs::path shot;
+  for (int n = 1;; ++n) {
+    shot = folder / (project.stem().string() + "-shot-" + std::to_string(n) + ".png");
+    std::error_code ec;
+    if (!fs::exists(shot, ec) || n > 100000) break;
+  }
+  try {
+    takeScreenshot(shot.string());
+    log("Saved a screenshot: " + shot.string());
+  } catch (const std::exception& e) {
+    log(std::string("The screenshot was not saved: ") + e.what(), true);
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include "editor/kifs_edits.h"
 #include "editor/pane_window.h"
+#include "editor/widget_marks.h"
 #include "kifs/mesher.h"
 #include "kifs/params.h"
 
@@ -28,6 +29,15 @@ void heading(const char* text) {
 }
 
 }  // namespace
+
+const char* kifsViewName(KifsView view) {
+  switch (view) {
+    case KifsView::Facades: return "Facade ids";
+    case KifsView::Floors: return "Floors";
+    case KifsView::Bare: return "Fractal alone";
+    default: return "Shaded";
+  }
+}
 
 void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
   const DocObject* o = host.doc ? host.doc->find(host.object) : nullptr;
@@ -70,6 +80,17 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
     ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", host.error.c_str());
     ImGui::PopTextWrapPos();
   }
+
+  int view = int(view_);
+  if (marks::combo("View", &view, "Shaded\0Facade ids (Fig. 5-6)\0Floors\0Fractal alone (Fig. 3c)\0", "kifs: view")) {
+    view_ = KifsView(view);
+    if (host.log) host.log(std::string("KIFS view: ") + kifsViewName(view_), false);
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "What the view shows of every ray-marched KIFS building: shaded; one colour per facade id "
+        "(id_x + 4 id_z); one colour per storey; or the fractal carved by the outer shell alone, "
+        "without the inner shell's walls");
 
   heading("Mass model");
   int footprint = s.mass.footprint == "T" ? 1 : s.mass.footprint == "H" ? 2 : s.mass.footprint == "object" ? 3 : 0;
@@ -142,15 +163,16 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
     sliders({{"s_theta", &s.curvilinear.sTheta, 0.5f, 40},
              {"c_theta", &s.curvilinear.cTheta, -3.1416f, 3.1416f},
              {"s_r", &s.curvilinear.sR, 0.1f, 5},
-             {"c_r", &s.curvilinear.cR, -40, 10}});
+             {"c_r", &s.curvilinear.cR, -40, 10},
+             {"z0", &s.curvilinear.z0, -40, 40}});
 
   heading("Facade and fractal (Sec. 4)");
   double rx = s.facade.r[0], ry = s.facade.r[1], rz = s.facade.r[2];
   double cx = s.centre[0], cy = s.centre[1], cz = s.centre[2], theta = s.r2[1];
   sliders({{"w (bay)", &s.facade.period, 0.5f, 20},
-           {"r.x", &rx, 0, 0.5f},
-           {"r.y", &ry, 0, 0.5f},
-           {"r.z", &rz, 0, 0.5f},
+           {"r1 (width)", &rx, 0, 0.5f},
+           {"r2 (width)", &ry, 0, 0.5f},
+           {"r3 (width)", &rz, 0, 0.5f},
            {"a1", &s.facade.a1, -2, 2},
            {"a2", &s.facade.a2, 0.05f, 4},
            {"b1", &s.facade.b1, -2, 2},
@@ -163,6 +185,11 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
   s.centre = Vec3(cx, cy, cz);
   s.r2[1] = theta;
 
+  heading("Storeys (Eq. 4)");
+  sliders({{"h (storey)", &s.floors.height, 0.5f, 10},
+           {"y0 (storey start)", &s.floors.y0, -10, 10},
+           {"s_y (storey scale)", &s.floors.sy, 0.1f, 4}});
+
   if (ImGui::CollapsingHeader("Advanced")) {
     if (ImGui::SliderInt("M (iterations)", &s.iterations, 0, kifs::kMaxIterations)) changed("iterations");
     explainSymbol("M (iterations)");
@@ -172,8 +199,7 @@ void KifsPanel::draw(const KifsHost& host, float x, float y, float w, float h) {
              {"R1 x (deg)", &r1x, -180, 180},
              {"R1 y (deg)", &r1y, -180, 180},
              {"R1 z (deg)", &r1z, -180, 180},
-             {"Bailout", &s.bailout, 4, 5000},
-             {"Floor height", &s.floors.height, 0.5f, 10}});
+             {"Bailout", &s.bailout, 4, 5000}});
     s.r1 = Vec3(r1x, r1y, r1z);
     if (ImGui::SliderInt("Steps", &s.trace.maxSteps, 16, 1000)) changed("steps");
     if (ImGui::IsItemDeactivatedAfterEdit()) host.endDrag();

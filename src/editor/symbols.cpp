@@ -8,9 +8,13 @@ const char* symbolWords(std::string_view label) {
   static const std::pair<std::string_view, const char*> table[] = {
       // KIFS (McGraw): Algorithm 1, Algorithm 2 (the facade fold), Eq. 4-6.
       {"w (bay)", "w: the facade's period, the width of one bay (Algorithm 2)."},
-      {"r.x", "r.x: the first of the facade fold's three thresholds (Algorithm 2), where a bay splits into facade regions."},
-      {"r.y", "r.y: the second threshold of the facade fold (Algorithm 2), splitting the regions again."},
-      {"r.z", "r.z: the third threshold of the facade fold (Algorithm 2)."},
+      {"r1 (width)", "r1: the first width of the facade fold (Algorithm 2, r_1), a fraction of the bay: where a bay splits into facade regions."},
+      {"r2 (width)", "r2: the second width of the facade fold (Algorithm 2, r_2), splitting the regions again."},
+      {"r3 (width)", "r3: the third width of the facade fold (Algorithm 2, r_3)."},
+      {"h (storey)", "h: the storey height (Eq. 4), metres."},
+      {"y0 (storey start)", "y0: where the storeys start (Eq. 4): shifts which slab of the fractal each storey shows, metres."},
+      {"s_y (storey scale)", "s_y: how tall a slab of the fractal one storey shows (Eq. 4: y_f = s_y mod(y - y0, h) / h)."},
+      {"z0", "z0: the centre of the ring along z (Eq. 6), metres."},
       {"a1", "a1: how much the fractal's scale changes from one facade region to the next (s = a1·id + a2)."},
       {"a2", "a2: the fractal's scale in facade region 0 (s = a1·id + a2)."},
       {"b1", "b1: how much the fractal's offset changes from one facade region to the next (t = b1·id + b2)."},

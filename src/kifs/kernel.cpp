@@ -2,7 +2,11 @@
 
 #include "core/error.h"
 #include "kifs/distance.h"
+#include "kifs/follow.h"
+#include "kifs/mass_field.h"
 #include "kifs/mesher.h"
+
+#include <set>
 
 namespace corbel::kifs {
 
@@ -104,16 +108,68 @@ KifsSpec specOf(const KifsParams& params, std::string preset) {
   return s;
 }
 
+namespace {
+
+const KifsSpec* following(const DocObject& o) {
+  const auto* k = std::get_if<KifsSpec>(&o.spec);
+  return k && k->mass.footprint == "object" ? k : nullptr;
+}
+
+// What a meshed follower reads: the objects its kifs.mass.object chain names, as far as the
+// chain goes (so the build finds the mass, or the same error followedObject gives on the whole
+// Document), then what the mass's own builder reads.
+std::vector<DocObject> followerInputs(const SceneSync& sync, const Document& doc, const DocObject& o) {
+  const KifsSpec* spec = following(o);
+  if (!spec || spec->meshResolution <= 0) return {};
+  std::vector<DocObject> out;
+  std::set<ObjectId> seen{o.id};
+  for (const KifsSpec* s = spec; s && !s->mass.object.empty();) {
+    const DocObject* next = doc.findByName(s->mass.object);
+    if (!next || !seen.insert(next->id).second) break;
+    out.push_back(*next);
+    s = following(*next);
+  }
+  if (out.size() == 1)
+    for (DocObject& more : sync.inputsOf(doc, out.front()))
+      if (more.id != o.id) out.push_back(std::move(more));
+  return out;
+}
+
+}  // namespace
+
 void registerKernel(SceneSync& sync) {
-  sync.setBuilder<KifsSpec>([](const DocObject& o, Progress* progress) {
+  const SceneSync* self = &sync;
+  auto inputs = [self](const Document& doc, const DocObject& o) { return followerInputs(*self, doc, o); };
+  sync.setBuilder<KifsSpec>(inputs, [self](const DocObject& o, const std::vector<DocObject>& read, Progress* progress) {
     const auto& spec = std::get<KifsSpec>(o.spec);
     const KifsParams params = paramsOf(spec);
     BuildResult b;
     b.kind = Kind::Ornament;
     if (spec.meshResolution <= 0) return b;
-    if (params.mass.footprint == Footprint::Object)  // the mass is another object's: not this builder's to see
-      throw Error("kifs.meshResolution: a building that follows a mass object is ray-marched only (0)");
-    b.mesh = meshBuilding(Building(params), spec.meshResolution, progress);
+    if (params.mass.footprint == Footprint::Object) {
+      // The mass object is built here from its spec, as the Scene holds it (world space), and
+      // baked as the view bakes it; the mesh stands where the mass does.
+      if (!spec.mass.building.empty())
+        throw Error("kifs.meshResolution: a building that follows one building of a town is ray-marched only (0); "
+                    "exports mesh it");
+      Document chain;
+      chain.objects.push_back(o);
+      chain.objects.insert(chain.objects.end(), read.begin(), read.end());
+      const DocObject& mass = followedObject(chain, chain.objects.front());
+      MeshData shell;
+      try {
+        shell = self->buildPlaced(mass, self->inputsOf(chain, mass), progress);
+      } catch (const Cancelled&) {
+        throw;
+      } catch (const std::exception& e) {
+        throw Error("kifs.mass.object: \"" + mass.name + "\" does not build: " + e.what());
+      }
+      const Building building(params, bakeFollowedMass(mass, trianglesOf(shell), params, progress));
+      b.mesh = meshBuilding(building, spec.meshResolution, progress);
+      b.worldSpace = true;
+    } else {
+      b.mesh = meshBuilding(Building(params), spec.meshResolution, progress);
+    }
     const int material = b.mesh.addMaterial(spec.material);
     for (int& m : b.mesh.faceMaterial) m = material;
     return b;

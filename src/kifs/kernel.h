@@ -19,7 +19,10 @@ KifsSpec specOf(const KifsParams& params, std::string preset = {});
 // A KIFS object's builder: the parameters are validated (a bad one is the object's error); with
 // spec.meshResolution = 0 the object has no faces (it is ray-marched by render::KifsPass), else
 // its building is meshed at that resolution (kifs/mesher.h, cancellable through the build's
-// progress), faces of kind Ornament tagged "kifs" in the spec's material.
+// progress), faces of kind Ornament tagged "kifs" in the spec's material. A building that
+// follows another object (footprint "object") is meshed on that object's shell, built from its
+// spec by the same SceneSync, in world space (BuildResult::worldSpace); it is rebuilt whenever
+// that object changes. A follower of one building of a town is refused (ray-marched only).
 void registerKernel(SceneSync& sync);
 
 }  // namespace corbel::kifs

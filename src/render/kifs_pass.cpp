@@ -373,9 +373,9 @@ KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const O
 }
 
 std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
-                                   int height) {
+                                   int height, KifsMode mode) {
   DepthTarget target(width, height);
-  drawAlone(target, pass, building, camera, width, height, KifsMode::Shaded);
+  drawAlone(target, pass, building, camera, width, height, mode);
   return target.readDepth();
 }
 

@@ -22,7 +22,10 @@ namespace corbel::render {
 // march and shading together; decode with kifsCost).
 // Preview is Shaded without the soft shadow and the ambient occlusion (about half the
 // evaluations of a hit pixel): render/kifs_layer's coarse frames.
-enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2, Cost = 3, Preview = 4 };
+// What a ray-marched KIFS building shows. Bare is Shaded without the inner shell (McGraw's
+// Fig. 3c: the fractal carved by the outer shell alone), so the fractal's own shape shows where
+// the inner shell would hide it.
+enum class KifsMode { Shaded = 0, Facades = 1, Floors = 2, Cost = 3, Preview = 4, Bare = 5 };
 
 // Evaluations of the distance function per pixel (march and shading), drawn in KifsMode::Cost.
 struct KifsCost {
@@ -126,7 +129,7 @@ class DepthTarget {
 
 // The window depth ([0, 1], 1 where the ray misses) of the building alone (DepthTarget).
 std::vector<float> renderKifsDepth(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
-                                   int height);
+                                   int height, KifsMode mode = KifsMode::Shaded);
 // The cost of drawing the building alone, one sample per pixel.
 KifsCost measureKifsCost(KifsPass& pass, const kifs::Building& building, const OrbitCamera& camera, int width,
                          int height);

@@ -5,18 +5,21 @@
 
 #include "city/kernel.h"
 #include "core/error.h"
+#include "core/placement.h"
 #include "core/project_io.h"
 #include "core/scene_sync.h"
 #include "extrude/extrude.h"
 #include "extrude/features.h"
 #include "extrude/kernel.h"
 #include "kifs/kernel.h"
+#include "kifs/mesher.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -220,15 +223,95 @@ TEST(KifsFollow, BadMassesAreNamed) {
   EXPECT_NE(error(chained).find("kifs.mass.object: \"G\" is a KIFS building that follows another object"),
             std::string::npos);
   EXPECT_EQ(error(open), "kifs.mass.object: \"Open\" is not closed (4 open edges)");
-  // Without the mass it cannot be built at all, and meshing one into the Scene is refused.
+  // Without the mass it cannot be built at all.
   EXPECT_THROW(Building(paramsOf(follower("Mass", 16))), Error);
-  Document m;
-  m.add("Mass", BoxSpec{});
-  KifsSpec meshed = follower("Mass", 16);
-  meshed.meshResolution = 32;
-  const ObjectId mid = m.add("K", meshed);
-  const Built bm(m);
-  EXPECT_NE(bm.sync.status().at(mid).error.find("kifs.meshResolution"), std::string::npos);
+  // Meshed into the Scene, the same errors are the object's build errors.
+  for (const char* name : {"A", "C", "D", "F"}) b.doc.find(b.doc.findByName(name)->id)->spec = [&] {
+      KifsSpec k = std::get<KifsSpec>(b.doc.findByName(name)->spec);
+      k.meshResolution = 16;
+      return k;
+    }();
+  b.sync.update(b.doc, b.scene);
+  EXPECT_EQ(b.sync.status().at(none).error, "kifs.mass.object: no object named \"Nothing\"");
+  EXPECT_EQ(b.sync.status().at(self).error, "kifs.mass.object: a cycle: \"C\" → \"C\"");
+  EXPECT_EQ(b.sync.status().at(loop1).error, "kifs.mass.object: a cycle: \"D\" → \"E\" → \"D\"");
+  EXPECT_NE(b.sync.status().at(chained).error.find("\"G\" is a KIFS building that follows another object"),
+            std::string::npos);
+}
+
+Aabb boundsOf(const TriangleSoup& soup) {
+  Aabb box{glm::dvec3(1e300), glm::dvec3(-1e300)};
+  for (const glm::dvec3& p : soup.points) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+  return box;
+}
+
+// Meshed into the Scene (meshResolution > 0), a follower stands on its mass where the mass
+// stands. Oracles: the closed form of the box it follows, and the mass's move. (1) Every vertex
+// lies within the box grown by what the mesh may add: the mesher's level set lies kMeshOffset
+// mesher cells out, a vertex interpolated on a tetrahedron's edge lies within one mesher cell
+// diagonal of it, and the baked d_o lies within one bake cell diagonal of the exact one. (2) Its
+// own placement changes nothing. (3) Moving the mass by a whole number of metres rebuilds it
+// (the mass is one of its inputs) and moves every vertex by exactly that.
+TEST(KifsFollow, MeshedIntoTheSceneItStandsOnItsMassAndMovesWithIt) {
+  Document d;
+  BoxSpec box;
+  box.size = Vec3(12.0, 12.0, 22.8);
+  const ObjectId mass = d.add("Mass", box);
+  Placement turned;
+  turned.translation = Vec3(30.0, -10.0, 0.0);
+  turned.rotation_deg = 35.0;
+  d.find(mass)->placement = turned;
+  KifsSpec k = follower("Mass", 24);
+  k.meshResolution = 40;
+  const ObjectId id = d.add("Ornament", k);
+  d.find(id)->placement.translation = Vec3(100.0, 100.0, 0.0);  // ignored while it follows
+  Built b(std::move(d));
+  ASSERT_EQ(b.sync.status().at(id).error, "");
+  const TriangleSoup mesh = sceneTriangles(b.scene, id);
+  ASSERT_GT(mesh.triangles.size(), 1000u);
+
+  const Building follow = buildingOf(b.doc, b.scene, *b.doc.find(id));
+  const glm::dvec3 size = follow.worldBounds().size();
+  const double meshCell = std::max({size.x, size.y, size.z}) / k.meshResolution;
+  const double slack = (kMeshOffset + std::sqrt(3.0)) * meshCell + std::sqrt(3.0) * follow.mass()->cell;
+  const auto [c, s] = cosSinDegrees(35.0);
+  double worst = -1e300;
+  for (const glm::dvec3& p : mesh.points) {
+    const double x = p.x - 30.0, y = p.y + 10.0;  // back into the box's frame: turn by −35°
+    const glm::dvec3 q(c * x + s * y, -s * x + c * y, p.z);
+    const double out = std::max({std::abs(q.x) - 6.0, std::abs(q.y) - 6.0, q.z - 22.8, -q.z});
+    worst = std::max(worst, out);
+  }
+  EXPECT_LE(worst, slack);
+  EXPECT_GT(worst, -meshCell);  // it reaches the box's faces: the facade is on the walls
+
+  b.doc.find(id)->placement.translation = Vec3(-50.0, 0.0, 7.0);
+  b.sync.update(b.doc, b.scene);
+  const TriangleSoup same = sceneTriangles(b.scene, id);
+  ASSERT_EQ(same.points.size(), mesh.points.size());
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) ASSERT_EQ(same.points[i], mesh.points[i]);
+
+  b.doc.find(mass)->placement.translation = Vec3(38.0, -14.0, 2.0);
+  EXPECT_EQ(b.sync.update(b.doc, b.scene), 2u);  // the mass and its follower
+  const TriangleSoup moved = sceneTriangles(b.scene, id);
+  ASSERT_EQ(moved.points.size(), mesh.points.size());
+  const Aabb before = boundsOf(mesh), after = boundsOf(moved);
+  const glm::dvec3 shift(8.0, -4.0, 2.0);
+  EXPECT_LT(glm::length(after.lo - (before.lo + shift)), 1e-6);
+  EXPECT_LT(glm::length(after.hi - (before.hi + shift)), 1e-6);
+}
+
+// A follower of one building of a town is ray-marched only: meshing it says so.
+TEST(KifsFollow, AMeshedFollowerOfATownsBuildingIsRefused) {
+  Document d;
+  d.add("Town", BoxSpec{});
+  KifsSpec k = follower("Town", 16);
+  k.mass.building = "w1";
+  k.meshResolution = 16;
+  const ObjectId id = d.add("K", k);
+  const Built b(std::move(d));
+  EXPECT_NE(b.sync.status().at(id).error.find("kifs.meshResolution: a building that follows one building of a town"),
+            std::string::npos);
 }
 
 // A town of two square footprints in metres, massing only: "small" x 30..36, y 0..6 and
