@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "extrude/extrude.h"
+#include "statics/pier_loads.h"
 
 #include <algorithm>
 #include <array>
@@ -573,14 +574,14 @@ ParametricModel stoneModel(const ExtrusionSpec& spec) {
     Assembly as;
     if (house.bayTop <= 0) {
       CoursedWalls w = courseWalls(s);
-      loadWallHeads(s, w, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
+      loadHeadsOnPiers(s, w, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
       loadWind(s, w, p["windPressure"], wind);
       as.blocks = std::move(w.blocks);
     } else {
       auto [lower, upper] = bands(house, s);
       CoursedWalls below = courseWalls(lower), above = courseWalls(upper);
-      loadWallHeads(lower, below, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
-      loadWallHeads(upper, above,
+      loadHeadsOnPiers(lower, below, roofLoads(house, p["coveringWeight"], p["ties"] != 0));
+      loadHeadsOnPiers(upper, above,
                     headLoads(upper.plan, house.upperRoofArea, house.upperThrustArea, p["coveringWeight"], p["ties"] != 0));
       loadWind(lower, below, p["windPressure"], wind);
       loadWind(upper, above, p["windPressure"], wind);

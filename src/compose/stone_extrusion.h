@@ -76,7 +76,8 @@ std::vector<WallButtress> proposedButtresses(const StoneHouse& house, double blo
 // The loads on the wall heads for a covering weight q (N/m²): per edge, down = q·A/L and, unless
 // the roof has ties, out = q·Σ A/(2 tan θ) / L (each rafter of weight w = qA, pinned to its
 // partner at the ridge, pushes its foot out by w / (2 tan θ)). Faces pitched under 5° push
-// nothing (a flat roof on beams).
+// nothing (a flat roof on beams). The model puts them on the blocks with loadHeadsOnPiers: a
+// wall with buttresses up to its head carries its roof on them.
 std::vector<HeadLoad> roofLoads(const StoneHouse& house, double coveringWeight, bool ties);
 
 inline constexpr const char* kStoneModelName = "stone extrusion";
@@ -85,8 +86,9 @@ inline constexpr const char* kStoneModelName = "stone extrusion";
 // blockLength, coveringWeight, density, ties (0 or 1), windPressure and windDirection from the
 // masonry section, and buttressDepth: the deepest buttress step's depth, every buttress scaled
 // with it; on an extrusion without buttresses it is 0 and a value of kMinButtressDepth or more
-// adds proposedButtresses of that depth. The walls coursed, loaded by the roof and the wind
-// (loadWind), on a fixed ground slab. Free by default: thickness, and buttressDepth where the
+// adds proposedButtresses of that depth. The walls coursed, loaded by the roof (on the piers
+// where a wall has buttresses up to its head: loadHeadsOnPiers) and the wind (loadWind), on a
+// fixed ground slab. Free by default: thickness, and buttressDepth where the
 // extrusion has buttresses (Make It Stand thickens the walls and deepens the buttresses); free
 // buttressDepth yourself (e.g. 0.1 to 2 m) to let it add buttresses.
 ParametricModel stoneModel(const ExtrusionSpec& spec);

@@ -337,10 +337,12 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
           spans.push_back({p.headCuts.front().lo(), p.headCuts.back().hi(), false});
         }
       }
-      // Through-stones: the wall behind a buttress is one block with it on even courses.
+      // Through-stones: the wall behind a buttress is one block with it on even courses, and on
+      // the head course over a pier that reaches it.
+      auto bonded = [&](const Pier& p) { return !odd || (c == courses - 1 && p.courses == courses); };
       std::vector<const WallButtress*> throughs;
       for (const Pier& p : piers) {
-        if (std::size_t(p.b->edge) != e || c >= p.courses || odd) continue;
+        if (std::size_t(p.b->edge) != e || c >= p.courses || !bonded(p)) continue;
         cuts.push_back({p.b->from, p.b->from});
         cuts.push_back({p.b->to, p.b->to});
         spans.push_back({p.b->from, p.b->to, false});
@@ -438,9 +440,9 @@ CoursedWalls courseWalls(const CoursingSpec& spec) {
                                         Vec3(f.n[0], f.n[1], 0.0) * (t - out0), spec.density));
         if (c == courses - 1) out.heads.push_back({index, int(e), l.top, r.top});
       }
-      // Buttresses on odd courses: a block of their own against the wall's outer face.
+      // Buttresses on their other courses: a block of their own against the wall's outer face.
       for (const Pier& p : piers) {
-        if (std::size_t(p.b->edge) != e || c >= p.courses || !odd) continue;
+        if (std::size_t(p.b->edge) != e || c >= p.courses || bonded(p)) continue;
         const WallButtress& w = *p.b;
         auto outside = [&](double u, double z) {
           const Vec2 q = f.at(u, -w.depth);

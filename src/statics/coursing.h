@@ -27,7 +27,9 @@ struct WallOpening {
 // A buttress (a pier of solid stone) against the outer face of one plan edge's wall, from its
 // foot up: [from, to] along the face, `depth` out of it. On even courses (the first included)
 // the wall's stretch behind it and the buttress are one through-stone, so the pier is bonded
-// into the wall; on odd courses the buttress is a block of its own against the wall.
+// into the wall; on odd courses the buttress is a block of its own against the wall, except the
+// wall's head course, which is a through-stone over a pier reaching it (the stone a roof truss
+// bears on, so the wall stones under the truss cannot be pushed off the pier).
 struct WallButtress {
   std::string name;              // for messages
   int edge = 0;
@@ -89,7 +91,8 @@ struct CoursedWalls {
 // beyond the extrados on each side and up to a course joint at least a quarter course above
 // it, are cut in their courses along the voussoirs' joints carried on outwards, neighbouring
 // pieces joined wherever the join is convex.
-// Buttresses (WallButtress) are cut out of the bond: on their through-stone courses the wall is
+// Buttresses (WallButtress) are cut out of the bond: on their through-stone courses (even ones
+// and the head course over a pier reaching the head) the wall is
 // cut at the buttress's sides and bond joints between and within a quarter block of them are
 // dropped.
 // Throws corbel::Error for bad numbers, a reflex corner turning by more than a right angle,

@@ -548,3 +548,63 @@ TEST(StoneExtrusion, MakeItStandAddsButtressStepsToTheThinWalledHouse) {
 
 }  // namespace
 }  // namespace corbel::statics
+
+namespace corbel::statics {
+namespace {
+
+// Where a wall has buttresses the roof bears on them (its principal rafters over the piers, a
+// wall plate between): the thin-walled house (8 × 6 m plan at x 12…20, y 0…6, 5 m walls, a
+// hipped roof at 45° rising 3 m, 1,500 N/m²) with buttresses 0.5 m deep where
+// proposedButtresses puts them (worked by hand above: front [1.6, 2.4] and [5.6, 6.4], sides
+// and back one mid-wall). By hand: a long slope is 15√2 m² of roof, a hip end 9√2 m², and at
+// 45° a rafter pair's thrust W / (2 tan θ) is half its weight. The front's two piers, at 2 and
+// 6 m, each carry the 4 m of roof nearest them, half the slope; the others carry their whole
+// wall's slope. Every load acts on the wall's centre line at its head, over its pier.
+TEST(StoneExtrusion, TheRoofBearsOnThePiersWithAllItsWeightAndThrust) {
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/stone-house.corbel");
+  const ParametricModel model = stoneModel(std::get<ExtrusionSpec>(p.document.findByName("Stone house, thin walls")->spec));
+  ParameterSet values = model.parameters;
+  values.set("buttressDepth", 0.5);
+  const Assembly as = model.build(values);
+
+  const double q = 1500, slope = q * 15 * std::sqrt(2.0), end = q * 9 * std::sqrt(2.0);
+  struct Pier {
+    Vec2 from, along, in;  // the edge's first corner, its direction, into the wall
+    double lo, hi;         // the pier's stretch along the edge
+    Vec3 force;            // by hand
+  };
+  const Pier piers[] = {
+      {Vec2(12, 0), Vec2(1, 0), Vec2(0, 1), 1.6, 2.4, Vec3(0, -slope / 4, -slope / 2)},
+      {Vec2(12, 0), Vec2(1, 0), Vec2(0, 1), 5.6, 6.4, Vec3(0, -slope / 4, -slope / 2)},
+      {Vec2(20, 0), Vec2(0, 1), Vec2(-1, 0), 2.6, 3.4, Vec3(end / 2, 0, -end)},
+      {Vec2(20, 6), Vec2(-1, 0), Vec2(0, -1), 3.6, 4.4, Vec3(0, slope / 2, -slope)},
+      {Vec2(12, 6), Vec2(0, -1), Vec2(1, 0), 2.6, 3.4, Vec3(-end / 2, 0, -end)},
+  };
+  std::vector<Vec3> carried(std::size(piers), Vec3(0.0));
+  Vec3 total(0.0);
+  int loads = 0, placed = 0;
+  for (const Block& b : as.blocks)
+    for (const PointLoad& l : b.pointLoads) {
+      ++loads;
+      total += l.force;
+      EXPECT_NEAR(l.at[2], 5.0, 1e-9) << "at the wall head";
+      for (std::size_t k = 0; k < std::size(piers); ++k) {
+        const Vec2 r = Vec2(l.at[0], l.at[1]) - piers[k].from;
+        const double u = dot(r, piers[k].along);
+        if (std::abs(dot(r, piers[k].in) - 0.1) < 1e-9 && u > piers[k].lo - 1e-9 && u < piers[k].hi + 1e-9) {
+          carried[k] += l.force;
+          ++placed;
+        }
+      }
+    }
+  EXPECT_GT(loads, 0);
+  EXPECT_EQ(placed, loads) << "every load over a pier, on the wall's centre line";
+  for (std::size_t k = 0; k < std::size(piers); ++k)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(carried[k][i], piers[k].force[i], 1e-6) << "pier " << k << " axis " << i;
+  EXPECT_NEAR(total[2], -q * 48 * std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(total[0], 0.0, 1e-6);
+  EXPECT_NEAR(total[1], 0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace corbel::statics
