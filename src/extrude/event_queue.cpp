@@ -52,6 +52,43 @@ void Sweeper::predict(int ci) {
     if (!(z > after) || !std::isfinite(z) || z > before) continue;
     h.push_back({z, q + v * z, ci, ++nextId_});
   }
+  // A racing corner (one that moves more than δ2 in δ1 of height) heading for the far corner of
+  // one of its edges, where that edge meets a second edge of its own line (within the merge
+  // sine), meets that corner where its path crosses the second edge's plane. The two planes lie
+  // within rounding of one another there, so that crossing is ill-conditioned: it can land
+  // metres short of the far corner and below the racing corner's own height, where predict
+  // drops it, and the corner then races past the end of its edge (random20886: 1.8e7 m/m along
+  // a ridge, the second wall 5e-8 rad off, the crossing 6 m short). Only then is the meeting
+  // predicted along the shared edge instead: where the two corners reach one place along it, a
+  // well-conditioned solve. Where the plane's crossing is kept, it stands (and a coincident
+  // collapse along a ridge stays one event).
+  if (c.speed * tol_.height > tol_.cluster) {
+    for (const bool forward : {false, true}) {
+      const int ei = forward ? c.next : c.prev;
+      const int cj = forward ? edges_[ei].end : edges_[ei].start;
+      if (cj < 0 || cj == ci || !corners_[cj].alive) continue;
+      const int eo = forward ? corners_[cj].next : corners_[cj].prev;
+      if (eo < 0 || eo == c.prev || eo == c.next || !edges_[eo].alive) continue;
+      const Edge& e = edges_[ei];
+      const Edge& o = edges_[eo];
+      if (!(OpenMesh::dot(e.d, o.d) > 0 && std::abs(cross2(e.d, o.d)) <= tol_.mergeSine)) continue;
+      // The crossing with the second edge's plane, as predict computes it: kept (or beyond
+      // lastUseful), it stands.
+      const double dn = OpenMesh::dot(o.n, v) - o.k;
+      if (std::abs(dn) < 1e-14) continue;
+      const double zPlane = (o.c - OpenMesh::dot(o.n, q)) / dn;
+      if (!std::isfinite(zPlane) || zPlane > after) continue;
+      // Along the edge: where the racing corner and the far corner reach one place on it.
+      const Vec2 pj = cornerAt(cj, z_), vj = cornerAt(cj, z_ + 1.0) - pj;
+      const double denom = OpenMesh::dot(e.d, v - vj);
+      if (std::abs(denom) < 1e-14) continue;
+      const double z = OpenMesh::dot(e.d, pj - vj * z_ - q) / denom;
+      if (!(z > after) || !std::isfinite(z) || z > before) continue;
+      SWEEP_TRACE("   racing corner %d meets corner %d along edge %d at %.12g (the crossing with plane %d: %.12g)", ci, cj, ei,
+                  z, eo, zPlane);
+      h.push_back({z, q + v * z, ci, ++nextId_});
+    }
+  }
   if (h.size() == had) return;
   if (wasEmpty) std::make_heap(h.begin(), h.end(), std::greater<Candidate>());
   else

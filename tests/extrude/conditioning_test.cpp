@@ -1,10 +1,16 @@
 // Conditioning of the sweep's geometry between almost colinear edges, where two lines meet
 // at a sine of 1e-8 and their meeting point is 1e8 times as sensitive as the lines.
+#include "core/project_io.h"
 #include "extrude/extrude.h"
+#include "extrude/tolerances.h"
+#include "shell_checks.h"
+#include "skeleton_oracle.h"
 #include "support.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <variant>
 #include <vector>
 
 namespace corbel::extrude::test {
@@ -40,6 +46,28 @@ TEST(Conditioning, AnAlmostStraightCornerDoesNotDriftThroughProfileChanges) {
   for (const ShellFace& f : a.shell.faces)
     if (!f.base) projected += faceArea(a.shell, f) * f.normal[2];
   EXPECT_NEAR(projected, shoelace(kinked), 1e-8 * shoelace(kinked));
+}
+
+// A perturbed orthogonal plan from the random run (random20886, one profile on every edge): at
+// 18.93 m a split leaves a corner between two edges 2.5e-8 rad from antiparallel, racing at
+// 1.8e7 m per m of rise along a ridge toward the far end of its edge, where that edge meets a
+// second wall of its own line 5e-8 rad off. Its path's crossing with that wall's plane is
+// ill-conditioned (it fell 6 m short and below the corner's height), and the corner raced past
+// the edge's end: the roof closed 3.28 m too high with a face crossing itself. The oracle: CGAL's
+// straight skeleton of the same plan under the same profile; the top may lie above it by no
+// more than the kernel's event height tolerance δ1, and every face must be simple.
+TEST(Conditioning, ARacingCornerStopsAtTheFarEndOfItsEdge) {
+  const auto path = std::filesystem::path(CORBEL_SOURCE_DIR) / "tests/data/extrude/random/random20886.corbel";
+  const Document d = loadProject(path.string()).document;
+  const ExtrusionSpec& spec = std::get<ExtrusionSpec>(d.objects.at(0).spec);
+  const ExtrusionResult r = extrude(spec);
+  ASSERT_EQ(unpairedEdges(r.shell), 0u);
+  for (const auto& w : r.shell.warnings) ADD_FAILURE() << "warning: " << w;
+  EXPECT_EQ(shellGeometryProblem(r.shell, spec), "");
+  std::vector<std::vector<Vec2>> loops;
+  for (const auto& l : spec.loops) loops.push_back(l.points);
+  const double cgal = cgalHeightUnderProfile(loops, spec.profiles[spec.loops[0].profile[0]].points);
+  EXPECT_LE(r.shell.maxHeight, cgal + Tolerances::forScale(r.scale).height) << "CGAL's skeleton: " << cgal << " m";
 }
 
 }  // namespace
