@@ -43,8 +43,9 @@ constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 // 65 m across); a larger one keeps float positions.
 constexpr double kMaxQuantizationStep = 1e-3;
 
-// Every accessor of one kind lies in the one buffer view of that kind: a view per accessor made a
-// town's JSON chunk a third of the file. Elements are padded to 4 bytes (glTF 2.0, 3.6.2.4).
+// Every accessor of one kind lies in the one buffer view of that kind (a view per accessor made a
+// town's JSON chunk a third of the file); compressed, in one of that kind's views of up to
+// kChunkBytes each. Elements are padded to 4 bytes (glTF 2.0, 3.6.2.4).
 enum ViewKind { kPositions16, kPositions32, kNormals, kTexcoords, kTexcoords16, kIndices16, kIndices32, kTranslations, kRotations, kViewKinds };
 struct ViewKindInfo {
   int elementBytes;
@@ -54,6 +55,12 @@ constexpr ViewKindInfo kViewInfo[kViewKinds] = {{8, kArrayBuffer},         {12, 
                                                 {8, kArrayBuffer},         {4, kArrayBuffer},        {2, kElementArrayBuffer},
                                                 {4, kElementArrayBuffer},
                                                 {12, 0},                   {8, 0}};
+
+// Compressed, a kind's bytes are encoded by meshoptimizer a chunk of at most this many at a time
+// (more only for one accessor larger than that), each chunk its own buffer view, as the glb is
+// written: the writer holds one open chunk per kind, as it holds 64 KiB of each kind uncompressed
+// (SpillBuffer's memory), whatever the number of objects.
+constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
 
 // x (> 0) rounded up to three significant digits, as the double nearest that decimal (which
 // prints short).
@@ -97,7 +104,7 @@ std::array<std::int8_t, 3> quantizeNormal(const Vec3& n) {
 // images, the scene) is small and kept as a JSON value.
 class GlbDocument {
  public:
-  explicit GlbDocument(bool compress) : compress_(compress) {}
+  explicit GlbDocument(bool compress) : compress_(compress) { std::fill(std::begin(openChunk_), std::end(openChunk_), -1); }
 
   json doc = json::object();
 
@@ -114,15 +121,30 @@ class GlbDocument {
     return static_cast<int>(a.size()) - 1;
   }
 
-  // An accessor over `bytes` appended to the view of `kind`; its bufferView is set by write().
+  // An accessor over `bytes` appended to the view of `kind` (compressed: to that kind's open
+  // chunk, which is encoded first when the bytes would take it past kChunkBytes); its bufferView
+  // is set by write().
   int accessor(ViewKind kind, const void* data, std::size_t bytes, json a) {
-    SpillBuffer& v = views_[kind];
-    a["byteOffset"] = v.size();
-    v.append(data, bytes);
-    // A record per accessor: its kind, its JSON without the bufferView, a newline (which a
-    // compact dump never holds).
-    const char k = static_cast<char>(kind);
-    accessors_.append(&k, 1);
+    std::uint32_t slot = kind;  // uncompressed: the kind; compressed: the chunk's number
+    if (!compress_) {
+      SpillBuffer& v = views_[kind];
+      a["byteOffset"] = v.size();
+      v.append(data, bytes);
+    } else {
+      std::vector<unsigned char>& open = open_[kind];
+      if (!open.empty() && open.size() + bytes > kChunkBytes) closeChunk(kind);
+      if (openChunk_[kind] < 0) {
+        openChunk_[kind] = static_cast<int>(chunks_.size());
+        chunks_.push_back({kind});
+      }
+      a["byteOffset"] = open.size();
+      const auto* p = static_cast<const unsigned char*>(data);
+      open.insert(open.end(), p, p + bytes);
+      slot = static_cast<std::uint32_t>(openChunk_[kind]);
+    }
+    // A record per accessor: its slot (4 bytes), its JSON without the bufferView, a newline
+    // (which a compact dump never holds).
+    accessors_.append(&slot, 4);
     accessors_.append(a.dump(-1, ' ', false, json::error_handler_t::replace));
     accessors_.append("\n");
     return accessorCount_++;
@@ -144,8 +166,8 @@ class GlbDocument {
   // Lays the views out (compressed, with a fallback buffer that has no data, when asked) and
   // writes the glb atomically.
   void write(const std::string& path) {
-    // The binary chunk: the images (bin_), then a view per kind, each after the zeros that
-    // align it; an uncompressed view is copied from its buffer straight into the file.
+    // The binary chunk: the images (bin_), then a view per kind (each after the zeros that align
+    // it) or the encoded chunks, copied from their buffers straight into the file.
     struct Segment {
       std::size_t zeros;
       const SpillBuffer* bytes;
@@ -161,69 +183,57 @@ class GlbDocument {
       zeros += (4 - binSize % 4) % 4;
       binSize = (binSize + 3) / 4 * 4;
     };
-    SpillBuffer encodedViews[kViewKinds];
     std::size_t fallback = 0;
-    int viewOf[kViewKinds];
-    for (int k = 0; k < kViewKinds; ++k) {
-      viewOf[k] = -1;
-      SpillBuffer& v = views_[k];
-      if (v.empty()) continue;
-      const ViewKindInfo& info = kViewInfo[k];
-      json view{{"byteLength", v.size()}};
-      if (info.target) view["target"] = info.target;
-      if (info.target == kArrayBuffer) view["byteStride"] = info.elementBytes;
-      if (!compress_) {
+    std::vector<int> viewOf;  // by accessor slot
+    if (!compress_) {
+      viewOf.assign(kViewKinds, -1);
+      for (int k = 0; k < kViewKinds; ++k) {
+        SpillBuffer& v = views_[k];
+        if (v.empty()) continue;
+        const ViewKindInfo& info = kViewInfo[k];
+        json view{{"byteLength", v.size()}};
+        if (info.target) view["target"] = info.target;
+        if (info.target == kArrayBuffer) view["byteStride"] = info.elementBytes;
         alignBin();
         view["buffer"] = 0;
         view["byteOffset"] = binSize;
         bin.push_back({zeros, &v});
         zeros = 0;
         binSize += v.size();
-      } else {
-        // The spec's fallback rules: the view points into a buffer marked as the fallback, which
-        // has no data here (so the extension is required), and its extension into the chunk.
-        // meshoptimizer encodes a view whole, so one view at a time is read back into memory.
-        const std::vector<unsigned char> raw = v.bytes();
-        fallback = (fallback + 3) / 4 * 4;
-        view["buffer"] = 1;
-        view["byteOffset"] = fallback;
-        fallback += raw.size();
-        const std::size_t count = raw.size() / info.elementBytes;
-        std::vector<unsigned char> encoded;
-        const char* mode;
-        if (info.target == kElementArrayBuffer) {
-          mode = "TRIANGLES";
-          std::vector<unsigned int> indices(count);
-          if (info.elementBytes == 2) {
-            std::vector<std::uint16_t> i16(count);
-            std::memcpy(i16.data(), raw.data(), raw.size());
-            std::copy(i16.begin(), i16.end(), indices.begin());
-          } else {
-            std::memcpy(indices.data(), raw.data(), raw.size());
-          }
-          const unsigned int vertices = indices.empty() ? 0 : *std::max_element(indices.begin(), indices.end()) + 1;
-          encoded.resize(meshopt_encodeIndexBufferBound(count, vertices));
-          encoded.resize(meshopt_encodeIndexBuffer(encoded.data(), encoded.size(), indices.data(), count));
-        } else {
-          mode = "ATTRIBUTES";
-          encoded.resize(meshopt_encodeVertexBufferBound(count, info.elementBytes));
-          encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), raw.data(), count, info.elementBytes));
-        }
-        if (encoded.empty()) throw Error("cannot write '" + path + "': meshoptimizer could not encode a buffer view");
-        alignBin();
-        view["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},
-                                                         {"byteOffset", binSize},
-                                                         {"byteLength", encoded.size()},
-                                                         {"byteStride", info.elementBytes},
-                                                         {"mode", mode},
-                                                         {"count", count}};
-        encodedViews[k].append(encoded.data(), encoded.size());
-        bin.push_back({zeros, &encodedViews[k]});
-        zeros = 0;
-        binSize += encoded.size();
-        v.clear();
+        viewOf[k] = push("bufferViews", std::move(view));
       }
-      viewOf[k] = push("bufferViews", std::move(view));
+    } else {
+      // The chunks still open are encoded, then a view per chunk is listed in the order they were
+      // opened. The spec's fallback rules: each view points into a buffer marked as the fallback,
+      // which has no data here (so the extension is required), and its extension into the binary
+      // chunk, where the encoded chunks lie one after another after the images, each padded to 4
+      // bytes.
+      for (int k = 0; k < kViewKinds; ++k)
+        if (openChunk_[k] >= 0) closeChunk(static_cast<ViewKind>(k));
+      alignBin();
+      const std::size_t encodedAt = binSize;
+      if (!encoded_.empty()) {
+        bin.push_back({zeros, &encoded_});
+        zeros = 0;
+        binSize += encoded_.size();
+      }
+      viewOf.reserve(chunks_.size());
+      for (const Chunk& c : chunks_) {
+        const ViewKindInfo& info = kViewInfo[c.kind];
+        fallback = (fallback + 3) / 4 * 4;
+        json view{{"buffer", 1}, {"byteOffset", fallback}, {"byteLength", c.raw}};
+        if (info.target) view["target"] = info.target;
+        if (info.target == kArrayBuffer) view["byteStride"] = info.elementBytes;
+        view["extensions"]["EXT_meshopt_compression"] = {
+            {"buffer", 0},
+            {"byteOffset", encodedAt + c.encodedAt},
+            {"byteLength", c.encoded},
+            {"byteStride", info.elementBytes},
+            {"mode", info.target == kElementArrayBuffer ? "TRIANGLES" : "ATTRIBUTES"},
+            {"count", c.raw / info.elementBytes}};
+        fallback += c.raw;
+        viewOf.push_back(push("bufferViews", std::move(view)));
+      }
     }
     // glTF forbids an empty buffer (byteLength >= 1): with nothing to hold, none.
     if (binSize) push("buffers", json{{"byteLength", binSize}});
@@ -315,25 +325,28 @@ class GlbDocument {
 
   // The accessors' records as JSON elements, each with the bufferView of its kind first ("bufferView"
   // sorts before every other member of an accessor).
-  void writeAccessors(SpillBuffer& text, const int* viewOf) const {
+  void writeAccessors(SpillBuffer& text, const std::vector<int>& viewOf) const {
     std::string piece;
-    enum { kKind, kBrace, kBody } state = kKind;
-    int kind = 0;
+    enum { kSlot, kBrace, kBody } state = kSlot;
+    std::uint32_t slot = 0;
+    int slotBytes = 0;
     bool first = true;
     accessors_.read([&](const char* p, std::size_t n) {
       for (std::size_t i = 0; i < n; ++i) {
         const char c = p[i];
-        if (state == kKind) {
-          kind = static_cast<unsigned char>(c);
-          state = kBrace;
+        if (state == kSlot) {
+          slot |= static_cast<std::uint32_t>(static_cast<unsigned char>(c)) << (8 * slotBytes);
+          if (++slotBytes == 4) state = kBrace;
         } else if (state == kBrace) {
           if (!first) piece += ',';
           first = false;
           piece += '{';
-          if (viewOf[kind] >= 0) piece += "\"bufferView\":" + std::to_string(viewOf[kind]) + ",";
+          if (slot < viewOf.size() && viewOf[slot] >= 0) piece += "\"bufferView\":" + std::to_string(viewOf[slot]) + ",";
           state = kBody;
         } else if (c == '\n') {
-          state = kKind;
+          state = kSlot;
+          slot = 0;
+          slotBytes = 0;
         } else {
           piece += c;
         }
@@ -349,12 +362,63 @@ class GlbDocument {
   static void align(std::vector<unsigned char>& b) {
     while (b.size() % 4) b.push_back(0);
   }
+
+  // Encodes the open chunk of `kind` (TRIANGLES for indices, else ATTRIBUTES) onto encoded_,
+  // padded to 4 bytes, and closes it. Throws corbel::Error when meshoptimizer cannot.
+  void closeChunk(ViewKind kind) {
+    std::vector<unsigned char>& raw = open_[kind];
+    Chunk& chunk = chunks_[static_cast<std::size_t>(openChunk_[kind])];
+    const ViewKindInfo& info = kViewInfo[kind];
+    const std::size_t count = raw.size() / info.elementBytes;
+    std::vector<unsigned char>& encoded = encodeScratch_;
+    if (info.target == kElementArrayBuffer) {
+      std::vector<unsigned int> indices(count);
+      if (info.elementBytes == 2) {
+        for (std::size_t i = 0; i < count; ++i) {
+          std::uint16_t x;
+          std::memcpy(&x, raw.data() + 2 * i, 2);
+          indices[i] = x;
+        }
+      } else {
+        std::memcpy(indices.data(), raw.data(), raw.size());
+      }
+      const unsigned int vertices = indices.empty() ? 0 : *std::max_element(indices.begin(), indices.end()) + 1;
+      encoded.resize(meshopt_encodeIndexBufferBound(count, vertices));
+      encoded.resize(meshopt_encodeIndexBuffer(encoded.data(), encoded.size(), indices.data(), count));
+    } else {
+      encoded.resize(meshopt_encodeVertexBufferBound(count, info.elementBytes));
+      encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), raw.data(), count, info.elementBytes));
+    }
+    if (encoded.empty()) throw Error("meshoptimizer could not encode a buffer view");
+    chunk.raw = raw.size();
+    chunk.encodedAt = encoded_.size();
+    chunk.encoded = encoded.size();
+    encoded_.append(encoded.data(), encoded.size());
+    static const char pad[3] = {0, 0, 0};
+    encoded_.append(pad, (4 - encoded.size() % 4) % 4);
+    raw.clear();
+    openChunk_[kind] = -1;
+  }
+
+  // A compressed buffer view: `raw` bytes of one kind, encoded at encodedAt in encoded_.
+  struct Chunk {
+    ViewKind kind;
+    std::size_t raw = 0, encodedAt = 0, encoded = 0;
+  };
+
   bool compress_;
   std::vector<unsigned char> bin_;  // the images
-  SpillBuffer views_[kViewKinds];
+  SpillBuffer views_[kViewKinds];  // uncompressed: each kind's bytes
+  // Compressed: each kind's open chunk (its number in chunks_, -1 when none), the chunks in the
+  // order they were opened, their encoded bytes one after another.
+  std::vector<unsigned char> open_[kViewKinds];
+  int openChunk_[kViewKinds];
+  std::vector<Chunk> chunks_;
+  SpillBuffer encoded_;
+  std::vector<unsigned char> encodeScratch_;
   SpillBuffer accessors_;
   int accessorCount_ = 0;
-  Spilled spilled_[2] = {Spilled("meshes"), Spilled("nodes")};
+  Spilled spilled_[3] = {Spilled("meshes"), Spilled("nodes"), Spilled("bufferViews")};  // a view per chunk
   std::set<std::string> used_, required_;
 };
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -137,27 +138,24 @@ TEST(CityOutput, InstancedFeaturesAreThePlainFilesFeatures) {
   EXPECT_LT(fs::file_size(dir() / "instances.glb") * 2, fs::file_size(dir() / "plain.glb"));
 }
 
-// The triangles of an index view as sets of rotations-equal triples: meshoptimizer's TRIANGLES
-// mode may start a triangle at another corner, keeping its winding.
-std::multiset<std::array<std::uint32_t, 3>> triangles(const std::vector<unsigned char>& bytes, int indexBytes) {
-  std::multiset<std::array<std::uint32_t, 3>> out;
-  const std::size_t n = bytes.size() / indexBytes;
-  std::vector<std::uint32_t> v(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (indexBytes == 2) {
-      std::uint16_t x;
-      std::memcpy(&x, bytes.data() + 2 * i, 2);
-      v[i] = x;
-    } else {
-      std::memcpy(&v[i], bytes.data() + 4 * i, 4);
-    }
-  }
-  for (std::size_t t = 0; t + 2 < n; t += 3) {
-    std::array<std::uint32_t, 3> a{v[t], v[t + 1], v[t + 2]};
+// An index accessor's triangles as a sorted list, each from its smallest index: meshoptimizer's
+// TRIANGLES mode may start a triangle at another corner, keeping its winding.
+std::vector<std::array<double, 3>> triangles(const std::vector<double>& v) {
+  std::vector<std::array<double, 3>> out;
+  for (std::size_t t = 0; t + 2 < v.size(); t += 3) {
+    std::array<double, 3> a{v[t], v[t + 1], v[t + 2]};
     while (a[0] != std::min({a[0], a[1], a[2]})) a = {a[1], a[2], a[0]};
-    out.insert(a);
+    out.push_back(a);
   }
+  std::sort(out.begin(), out.end());
   return out;
+}
+
+// An accessor's JSON without where it lies.
+nlohmann::json placeless(nlohmann::json a) {
+  a.erase("bufferView");
+  a.erase("byteOffset");
+  return a;
 }
 
 TEST(CityOutput, CompressedViewsDecodeToTheUncompressedFile) {
@@ -174,27 +172,49 @@ TEST(CityOutput, CompressedViewsDecodeToTheUncompressedFile) {
     ASSERT_EQ(c.json["buffers"].size(), 2u);
     EXPECT_FALSE(c.json["buffers"][1].contains("uri"));
     EXPECT_EQ(c.json["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"], true);
-    // The same document but for the buffers and views.
-    for (const char* key : {"accessors", "meshes", "nodes", "materials", "scenes"}) EXPECT_EQ(c.json[key], u.json[key]) << key;
-    ASSERT_EQ(c.views.size(), u.views.size());
-    std::size_t compressed = 0;
-    for (std::size_t v = 0; v < u.views.size(); ++v) {
-      const auto& cv = c.json["bufferViews"][v];
-      const auto& uv = u.json["bufferViews"][v];
-      EXPECT_EQ(cv.value("byteStride", 0), uv.value("byteStride", 0));
-      EXPECT_EQ(cv.value("target", 0), uv.value("target", 0));
-      if (!cv.contains("extensions")) {
-        EXPECT_EQ(c.views[v], u.views[v]) << "view " << v;
-        continue;
-      }
-      ++compressed;
-      const auto& e = cv["extensions"]["EXT_meshopt_compression"];
-      if (e["mode"] == "TRIANGLES")
-        EXPECT_EQ(triangles(c.views[v], e["byteStride"]), triangles(u.views[v], e["byteStride"])) << "view " << v;
+    // The same document but for the buffers, the views and where each accessor lies in them.
+    for (const char* key : {"meshes", "nodes", "materials", "scenes", "images"}) EXPECT_EQ(c.json[key], u.json[key]) << key;
+    const auto& ua = u.json.at("accessors");
+    const auto& ca = c.json.at("accessors");
+    ASSERT_EQ(ca.size(), ua.size());
+    std::set<int> indexAccessors;
+    for (const auto& m : u.json["meshes"])
+      for (const auto& p : m["primitives"]) indexAccessors.insert(p["indices"].get<int>());
+    // Every accessor decodes to the uncompressed one's values; every geometry view is compressed.
+    for (std::size_t i = 0; i < ua.size(); ++i) {
+      EXPECT_EQ(placeless(ca[i]), placeless(ua[i])) << "accessor " << i;
+      const auto& view = c.json["bufferViews"][ca[i]["bufferView"].get<int>()];
+      ASSERT_TRUE(view.contains("extensions")) << "accessor " << i << " in an uncompressed view";
+      const auto& e = view["extensions"]["EXT_meshopt_compression"];
+      EXPECT_EQ(e["mode"], indexAccessors.count(static_cast<int>(i)) ? "TRIANGLES" : "ATTRIBUTES") << "accessor " << i;
+      const std::vector<double> a = corbel::test::accessorValues(u, static_cast<int>(i)),
+                                b = corbel::test::accessorValues(c, static_cast<int>(i));
+      if (indexAccessors.count(static_cast<int>(i)))
+        EXPECT_EQ(triangles(b), triangles(a)) << "accessor " << i;
       else
-        EXPECT_EQ(c.views[v], u.views[v]) << "view " << v;
+        EXPECT_EQ(b, a) << "accessor " << i;
     }
+    // The chunks: a view holds at most 64 KiB decoded unless one accessor alone is larger, so a
+    // kind of view (a mode and stride) comes in several views here.
+    std::map<int, int> accessorsIn;
+    for (const auto& a : ca) ++accessorsIn[a["bufferView"].get<int>()];
+    std::map<std::string, int> viewsOfKind;
+    std::size_t compressed = 0;
+    for (std::size_t v = 0; v < c.json["bufferViews"].size(); ++v) {
+      const auto& view = c.json["bufferViews"][v];
+      if (!view.contains("extensions")) continue;
+      ++compressed;
+      const auto& e = view["extensions"]["EXT_meshopt_compression"];
+      ++viewsOfKind[e["mode"].get<std::string>() + std::to_string(e["byteStride"].get<int>())];
+      if (view["byteLength"].get<std::size_t>() > 65536) {
+        EXPECT_EQ(accessorsIn[static_cast<int>(v)], 1) << "view " << v;
+      }
+    }
+    int most = 0;
+    for (const auto& [kind, n] : viewsOfKind) most = std::max(most, n);
+    EXPECT_GE(most, 3);
     EXPECT_GE(compressed, 3u);
+    EXPECT_EQ(compressed + c.json.value("images", nlohmann::json::array()).size(), c.json["bufferViews"].size());
     EXPECT_LT(fs::file_size(dir() / packed), fs::file_size(dir() / base));
     std::cout << base << " " << fs::file_size(dir() / base) << " bytes, compressed " << fs::file_size(dir() / packed)
               << "\n";
