@@ -199,6 +199,7 @@ Renderer::~Renderer() {
 }
 
 std::size_t Renderer::triangleCount() const { return impl_->triangles; }
+std::size_t Renderer::edgeCount() const { return std::size_t(impl_->edges.count) / 2; }
 
 void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
   std::vector<ObjectId> ids;
@@ -271,6 +272,12 @@ void Renderer::setScene(const Scene& scene, const RenderSettings& settings) {
     if (!settings.wireframe && f0.is_valid() && f1.is_valid() && scene.faceObject(f0) == scene.faceObject(f1) &&
         scene.faceMaterial(f0) == scene.faceMaterial(f1) && scene.faceTag(f0) == scene.faceTag(f1) &&
         OpenMesh::dot(normals[f0.idx()], normals[f1.idx()]) > 1 - 1e-9)
+      continue;
+    // A meshed KIFS building is an isosurface cut into many small facets: outlined, every facet
+    // edge would paint it dark. Only its creases (faces more than 30° apart) are drawn.
+    if (!settings.wireframe && f0.is_valid() && f1.is_valid() && scene.faceObject(f0) == scene.faceObject(f1) &&
+        scene.faceTag(f0) == "kifs" && scene.faceTag(f1) == "kifs" &&
+        OpenMesh::dot(normals[f0.idx()], normals[f1.idx()]) > 0.8660254037844387)  // cos 30°
       continue;
     for (auto v : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)}) {
       const auto& p = mesh.point(v);

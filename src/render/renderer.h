@@ -63,6 +63,9 @@ class Renderer {
   void draw(const OrbitCamera& camera, int x, int y, int width, int height, const RenderSettings& settings);
 
   std::size_t triangleCount() const;
+  // The outline segments the last setScene drew (with settings.edges): the faces' edges, less
+  // those inside one planar face and a meshed KIFS building's edges under 30°.
+  std::size_t edgeCount() const;
 
  private:
   struct Impl;

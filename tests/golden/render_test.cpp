@@ -138,6 +138,35 @@ TEST(Renderer, HiddenObjectsAreNotDrawn) {
   EXPECT_NE(shown.rgba, empty.rgba);
 }
 
+// Outlines: two unit quads sharing the edge x = 0, the second folded up by `degrees` about it,
+// tagged `tag`. By hand: 7 edges, the shared one among them unless it is not drawn. A plain
+// face's fold is an outline at any angle; a meshed KIFS building's ("kifs") only past 30°.
+std::size_t outlineEdges(double degrees, const std::string& tag) {
+  MeshData m;
+  const int t = m.addTag(tag);
+  const double c = std::cos(degrees * 3.14159265358979323846 / 180.0), s = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  const int a = m.addPoint(Vec3(0, 0, 0)), b = m.addPoint(Vec3(0, 1, 0));
+  const int p = m.addPoint(Vec3(-1, 0, 0)), q = m.addPoint(Vec3(-1, 1, 0));
+  const int r = m.addPoint(Vec3(c, 0, s)), u = m.addPoint(Vec3(c, 1, s));
+  m.addFace({p, a, b, q}, t);
+  m.addFace({a, r, u, b}, t);
+  Scene scene;
+  scene.replaceObject(1, Kind::Ornament, "folded", m);
+  render::RenderSettings settings = plain();
+  settings.edges = true;
+  sharedRenderer().setScene(scene, settings);
+  return sharedRenderer().edgeCount();
+}
+
+TEST(Renderer, AMeshedKifsBuildingIsOutlinedAtItsCreasesOnly) {
+  EXPECT_EQ(outlineEdges(10, ""), 7u);
+  EXPECT_EQ(outlineEdges(10, "kifs"), 6u);
+  EXPECT_EQ(outlineEdges(29, "kifs"), 6u);
+  EXPECT_EQ(outlineEdges(31, "kifs"), 7u);
+  EXPECT_EQ(outlineEdges(90, "kifs"), 7u);
+  EXPECT_EQ(outlineEdges(0, ""), 6u);  // one planar face cut in two: no outline inside it
+}
+
 TEST(Renderer, OverlayArrowIsDrawnWhereItProjects) {
   const Scene scene;
   auto& renderer = sharedRenderer();
