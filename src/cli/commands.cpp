@@ -295,7 +295,7 @@ void declareKifs(CLI::App& app, Requests& requests) {
   CLI::App* c = command(
       app, "kifs", "A KIFS building (McGraw) raymarched headless, meshed, or its distance evaluated.",
       "Presets: the files assets/kifs/NAME.json (box, menger, t, h, polar, curved, sparse, crumbling, turned,\n"
-      "star; default box). A project gives its first KIFS object.\n"
+      "star, tower, balconies; default box). A project gives its first KIFS object.\n"
       "--out renders a PNG; --frames N renders N times after one untimed frame (the first draw compiles the\n"
       "shader) and prints the mean milliseconds per frame. --mode preview shades without soft shadow and\n"
       "occlusion, as the editor's coarse frames do; --mode cost writes a heat map of distance evaluations per\n"

@@ -14,14 +14,14 @@ namespace corbel::kifs {
 
 namespace {
 
-const KifsSpec* following(const DocObject& o) {
-  const auto* k = std::get_if<KifsSpec>(&o.spec);
-  return k && k->mass.footprint == "object" ? k : nullptr;
-}
-
 std::string quoted(const std::string& name) { return "\"" + name + "\""; }
 
 }  // namespace
+
+const KifsSpec* followingSpec(const DocObject& o) {
+  const auto* k = std::get_if<KifsSpec>(&o.spec);
+  return k && k->mass.footprint == "object" ? k : nullptr;
+}
 
 TriangleSoup sceneTriangles(const Scene& scene, ObjectId id) {
   const PolyMesh& mesh = scene.mesh();
@@ -59,7 +59,7 @@ TriangleSoup massTriangles(const DocObject& mass, const KifsSpec& follower, cons
 }
 
 const DocObject& followedObject(const Document& doc, const DocObject& kifsObject) {
-  const KifsSpec* spec = following(kifsObject);
+  const KifsSpec* spec = followingSpec(kifsObject);
   if (!spec) throw Error("kifs.mass.footprint: " + quoted(kifsObject.name) + " does not follow an object");
   std::string chain = quoted(kifsObject.name);
   std::set<ObjectId> seen{kifsObject.id};
@@ -71,9 +71,9 @@ const DocObject& followedObject(const Document& doc, const DocObject& kifsObject
     chain += " → " + quoted(next->name);
     if (!seen.insert(next->id).second) throw Error("kifs.mass.object: a cycle: " + chain);
     if (!first) first = next;
-    s = following(*next);
+    s = followingSpec(*next);
   }
-  if (following(*first))
+  if (followingSpec(*first))
     throw Error("kifs.mass.object: " + quoted(first->name) +
                 " is a KIFS building that follows another object; a mass must be a shell (an extrusion, a box, a "
                 "unit, a meshed KIFS building)");

@@ -34,6 +34,10 @@ using TownBuildings = std::function<MeshData(const DocObject& town, const std::s
 TriangleSoup massTriangles(const DocObject& mass, const KifsSpec& follower, const Scene& scene,
                            const TownBuildings& buildings);
 
+// The object's KIFS spec when it is a KIFS object that follows a mass (footprint "object"),
+// else nullptr.
+const KifsSpec* followingSpec(const DocObject& o);
+
 // The object a KIFS object with footprint "object" follows. Throws corbel::Error beginning
 // "kifs.mass.object: " when the name is empty, names no object, names the object itself or
 // leads back to it through KIFS objects that follow others (a cycle), or names a KIFS object

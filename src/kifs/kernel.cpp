@@ -110,16 +110,11 @@ KifsSpec specOf(const KifsParams& params, std::string preset) {
 
 namespace {
 
-const KifsSpec* following(const DocObject& o) {
-  const auto* k = std::get_if<KifsSpec>(&o.spec);
-  return k && k->mass.footprint == "object" ? k : nullptr;
-}
-
 // What a meshed follower reads: the objects its kifs.mass.object chain names, as far as the
 // chain goes (so the build finds the mass, or the same error followedObject gives on the whole
 // Document), then what the mass's own builder reads.
 std::vector<DocObject> followerInputs(const SceneSync& sync, const Document& doc, const DocObject& o) {
-  const KifsSpec* spec = following(o);
+  const KifsSpec* spec = followingSpec(o);
   if (!spec || spec->meshResolution <= 0) return {};
   std::vector<DocObject> out;
   std::set<ObjectId> seen{o.id};
@@ -127,7 +122,7 @@ std::vector<DocObject> followerInputs(const SceneSync& sync, const Document& doc
     const DocObject* next = doc.findByName(s->mass.object);
     if (!next || !seen.insert(next->id).second) break;
     out.push_back(*next);
-    s = following(*next);
+    s = followingSpec(*next);
   }
   if (out.size() == 1)
     for (DocObject& more : sync.inputsOf(doc, out.front()))

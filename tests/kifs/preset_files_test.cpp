@@ -3,17 +3,20 @@
 // refused with its path and the JSON path of the fault.
 #include "core/error.h"
 #include "core/kifs_json.h"
+#include "kifs/distance.h"
 #include "kifs/kernel.h"
 #include "kifs/params.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
 #include <numbers>
+#include <set>
 
 #include <unistd.h>
 
@@ -130,9 +133,10 @@ const std::map<std::string, std::function<KifsParams()>>& table() {
 }  // namespace former
 
 TEST(KifsPresetFiles, EveryFormerPresetIsAFileWithTheSameNumbers) {
-  std::vector<std::string> formerNames;
-  for (const auto& [name, make] : former::table()) formerNames.push_back(name);
-  EXPECT_EQ(presetNames(), formerNames);
+  // The former presets are among the files (later ones, like Fig. 9's, were files from the start).
+  const std::vector<std::string> names = presetNames();
+  for (const auto& [name, make] : former::table())
+    EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
   for (const auto& [name, make] : former::table()) {
     SCOPED_TRACE(name);
     const KifsParams want = make(), got = preset(name);
@@ -152,6 +156,30 @@ TEST(KifsPresetFiles, FilesAreWhatTheProjectFormatWrites) {
     const nlohmann::json file = nlohmann::json::parse(in);
     EXPECT_EQ(file, nlohmann::json::parse(kifsToJson(specOf(preset(name), name)).dump()));
     EXPECT_EQ(file.value("preset", ""), name);
+  }
+}
+
+// The presets in the spirit of McGraw's Fig. 9 ("additional KIFS building results"; our copy of
+// the paper has its caption only, so the looks are corbel's): a tower and a T-plan block of
+// balconies. Unlike `box`, whose roof cuts a storey into a parapet, each is a whole number of
+// storeys, so the roof lies on a floor line; and like `h`, Algorithm 2 divides each bay into
+// id regions (r, a1, b1 set), so the facade is not one motif repeated.
+TEST(KifsPresetFiles, TheFig9PresetsEndOnAFloorLineAndDivideTheirBays) {
+  for (const auto& [name, storeys] : std::vector<std::pair<std::string, int>>{{"tower", 12}, {"balconies", 12}}) {
+    SCOPED_TRACE(name);
+    const KifsParams p = preset(name);
+    const Building b(p);
+    const double h = p.floors.height, top = p.mass.height;
+    // Just under the roof is the last storey; just under its floor line, the one before.
+    EXPECT_EQ(b.evaluate({0, 0, top - 1e-3}).floor, storeys - 1);
+    EXPECT_EQ(b.evaluate({0, 0, top - h + 1e-3}).floor, storeys - 1);
+    EXPECT_EQ(b.evaluate({0, 0, top - h - 1e-3}).floor, storeys - 2);
+    EXPECT_TRUE(b.idsCut());
+    // Across one bay of the front (x-)face, the ids take more than one value.
+    std::set<int> ids;
+    for (int i = 0; i < 600; ++i)
+      ids.insert(b.evaluate({-p.mass.halfWidth + p.facade.period * (i + 0.5) / 600, -p.mass.halfDepth, h / 2}).idX);
+    EXPECT_GE(ids.size(), 2u);
   }
 }
 
