@@ -144,7 +144,8 @@ ExtrusionSpec PushPull::spec() const {
 }
 
 std::string PushPull::label() const {
-  if (unit_) return "Push unit wall";
+  if (unit_)
+    return face_.side == growth::Side::Top ? "Move unit ceiling" : face_.side == growth::Side::Bottom ? "Move unit floor" : "Push unit wall";
   switch (target_.kind) {
     case pp::Kind::Wall: return "Push wall";
     case pp::Kind::Roof: return "Turn roof";
@@ -160,8 +161,10 @@ std::string PushPull::describe() const {
   const double v = value();
   const std::string typed = typed_.text().empty() ? "" : " (typed " + typed_.text() + ")";
   if (unit_) {
-    std::snprintf(buf, sizeof buf, "Push unit wall (part %d, side %s): %.3f m out%s", face_.part,
+    std::snprintf(buf, sizeof buf, "%s (part %d, side %s): %.3f m out%s", label().c_str(), face_.part,
                   std::string(growth::sideName(face_.side)).c_str(), v, typed.c_str());
+    if (growth::sideAxis(face_.side) == 2)
+      return std::string(buf) + "  — moves by whole storeys (a room of one or two); type a value, Enter or click confirms, Esc cancels";
     return std::string(buf) + "  — collides and extrudes past what it meets; type a value, Enter or click confirms, Esc cancels";
   }
   switch (target_.kind) {

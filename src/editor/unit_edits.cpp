@@ -49,6 +49,29 @@ std::vector<UnitPart> toParts(const growth::Unit& u) {
   return parts;
 }
 
+// The storeys a unit's floors and ceilings move by, and the ground: those of the growth site it
+// was frozen from or grows beside (a growth object with around_units first, then any whose site
+// parses), else its lowest part's height (parts are one or two storeys) over z = 0.
+struct Storeys {
+  double height = 3.0, ground = 0.0;
+};
+Storeys storeysOf(const Document& doc, const UnitSpec& spec) {
+  for (const bool around : {true, false})
+    for (const DocObject& o : doc.objects)
+      if (const auto* g = std::get_if<GrowthSpec>(&o.spec); g && g->aroundUnits == around) {
+        try {
+          const growth::Site site = growth::parseSite(g->site);
+          return {site.storeyHeight, site.base};
+        } catch (const std::exception&) {
+          // a site that does not parse has its own error
+        }
+      }
+  Storeys out;
+  out.height = INFINITY;
+  for (const UnitPart& p : spec.parts) out.height = std::min(out.height, p.hi[2] - p.lo[2]);
+  return out;
+}
+
 }  // namespace
 
 std::vector<growth::Box> obstaclesAround(const Document& doc, ObjectId id) {
@@ -79,7 +102,15 @@ Document pushUnitFace(const Document& doc, ObjectId id, int part, growth::Side s
   const UnitSpec& spec = unitOf(doc, id, "push");
   if (!std::isfinite(distance)) throw InputError("push", "the distance must be a number");
   std::string why;
-  const auto e = growth::collideAndExtrude(toUnit(spec), part, side, distance, obstaclesAround(doc, id), kUnitLeast, &why);
+  std::optional<growth::Extruded> e;
+  if (growth::sideAxis(side) == 2) {
+    const Storeys storeys = storeysOf(doc, spec);
+    const double n = std::round(distance / storeys.height);
+    if (std::abs(n) > 2) throw InputError("push", "a floor or ceiling moves by one or two storeys");
+    e = growth::moveFloorOrCeiling(toUnit(spec), part, side, int(n), storeys.height, obstaclesAround(doc, id), storeys.ground, &why);
+  } else {
+    e = growth::collideAndExtrude(toUnit(spec), part, side, distance, obstaclesAround(doc, id), kUnitLeast, &why);
+  }
   if (!e) throw InputError("push", why);
   Document out = doc;
   std::get<UnitSpec>(out.find(id)->spec).parts = toParts(e->unit);

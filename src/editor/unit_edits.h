@@ -23,7 +23,10 @@ inline constexpr double kUnitLeast = 3.0;
 std::vector<growth::Box> obstaclesAround(const Document& doc, ObjectId id);
 
 // `doc` with side `side` of part `part` of unit `id` pushed out by `distance` (m; negative pulls
-// it in) past what it meets (growth::collideAndExtrude with obstaclesAround).
+// it in) past what it meets (growth::collideAndExtrude with obstaclesAround). A floor or ceiling
+// moves by the whole storeys nearest `distance` (growth::moveFloorOrCeiling): the storeys and
+// ground of the Document's growth site (one with around_units first), else the unit's lowest
+// part's height over z = 0.
 Document pushUnitFace(const Document& doc, ObjectId id, int part, growth::Side side, double distance);
 
 // `doc` with unit `id` cut by the plane `axis` = `at` (axis 0: x, 1: y, in its frame): it keeps

@@ -11,11 +11,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 
 namespace corbel::growth {
 
 namespace {
+
+// "3 m", "4.5 m": a length for a message.
+std::string metres(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g m", x);
+  return text;
+}
 
 // Exact constructions: the difference's corners are the inputs' coordinates, exactly.
 using K = CGAL::Exact_predicates_exact_constructions_kernel;
@@ -184,7 +192,7 @@ std::optional<Extruded> collideAndExtrude(const Unit& u, int part, Side s, doubl
   if (part < 0 || part >= int(u.parts.size())) return refuse("no such part");
   if (!std::isfinite(d) || d == 0) return refuse("no distance");
   const int a = sideAxis(s);
-  if (a == 2) return refuse("floors and ceilings move by whole storeys in the growth (double volume); push a wall");
+  if (a == 2) return refuse("floors and ceilings move by whole storeys (moveFloorOrCeiling)");
   if (sideTouchesOwnPart(u, part, s)) return refuse("this side meets another part of the unit; push that part's side");
   const Box& b = u.parts[std::size_t(part)];
   const double sign = sideSign(s);
@@ -255,6 +263,45 @@ std::optional<Extruded> collideAndExtrude(const Unit& u, int part, Side s, doubl
     out.added += (runs[i].hi - runs[i].lo) * runs[i].reach * b.size(2);
     if (i == 0) out.unit.parts[std::size_t(part)] = piece;
     else out.unit.parts.push_back(piece);
+  }
+  return out;
+}
+
+std::optional<Extruded> moveFloorOrCeiling(const Unit& u, int part, Side s, int storeys, double storeyHeight,
+                                           const std::vector<Box>& obstacles, double ground, std::string* why) {
+  auto refuse = [&](const std::string& reason) -> std::optional<Extruded> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (part < 0 || part >= int(u.parts.size())) return refuse("no such part");
+  if (sideAxis(s) != 2) return refuse("a wall is pushed, not moved by storeys");
+  if (!(std::isfinite(storeyHeight) && storeyHeight > 0)) return refuse("the storey height must be positive");
+  if (storeys == 0) return refuse("a floor or ceiling moves by whole storeys of " + metres(storeyHeight));
+  if (sideTouchesOwnPart(u, part, s)) return refuse("this side meets another part of the unit");
+  const Box& b = u.parts[std::size_t(part)];
+  const double d = storeys * storeyHeight;  // outward
+  const double height = b.size(2) + d;
+  const double whole = height / storeyHeight;
+  if (std::abs(whole - std::round(whole)) > 1e-6 || std::round(whole) < 1 || std::round(whole) > 2)
+    return refuse("the room would be " + metres(height) + " high; a part is one or two storeys (" +
+                  metres(storeyHeight) + " each)");
+  Extruded out{u, d * b.size(0) * b.size(1)};
+  Box& moved = out.unit.parts[std::size_t(part)];
+  (s == Side::Top ? moved.hi[2] : moved.lo[2]) += sideSign(s) * d;
+  if (moved.lo[2] < ground - kEps) return refuse("the floor would go below the ground (" + metres(ground) + ")");
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Box& p : out.unit.parts) {
+    lo = std::min(lo, p.lo[2]);
+    hi = std::max(hi, p.hi[2]);
+  }
+  if (hi - lo > 2 * storeyHeight + kEps) return refuse("a unit spans at most two storeys");
+  if (d > 0) {
+    const Box swept = sweptRegion(b, s, d);
+    for (const Box& o : obstacles)
+      if (interiorsOverlap(swept, o, kEps)) return refuse(std::string("something stands ") + (s == Side::Top ? "above the ceiling" : "below the floor"));
+    for (std::size_t i = 0; i < u.parts.size(); ++i)
+      if (int(i) != part && interiorsOverlap(swept, u.parts[i], kEps))
+        return refuse(std::string("another part of the unit is ") + (s == Side::Top ? "above" : "below"));
   }
   return out;
 }

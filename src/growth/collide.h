@@ -77,7 +77,7 @@ std::vector<CollideSplit> collideSplits(const Rect& face, const std::vector<Inte
 // box and the unit gains exactly the swept region up to the obstacles. A stretch narrower than
 // `least` goes with the neighbour that reaches less, so no piece is narrower than `least` unless
 // the face is. d < 0 pulls the side in (the part keeps at least `least` of depth). Without a
-// change (`why` says why): a floor or ceiling side, a side that meets another part of the unit,
+// change (`why` says why): a floor or ceiling side (moveFloorOrCeiling moves those), a side that meets another part of the unit,
 // an obstacle right at the face along its whole width, a pull past `least`.
 struct Extruded {
   Unit unit;
@@ -85,6 +85,17 @@ struct Extruded {
 };
 std::optional<Extruded> collideAndExtrude(const Unit& u, int part, Side s, double d, const std::vector<Box>& obstacles,
                                           double least, std::string* why = nullptr);
+
+// A floor or ceiling moved by hand: side s (Bottom or Top) of part `part` of u moved out by
+// `storeys` whole storeys of `storeyHeight` (negative: in), so that a room becomes a double
+// volume or one again (Sec. 5.3: parts are one or two storeys high, a unit spans at most two).
+// The whole face moves or nothing does: unlike a wall it is not split, since a part of one and
+// a half storeys is no room. Without a change (`why` says why): a vertical side, no storeys, a
+// side that meets another part of the unit, a part that would not be one or two whole storeys
+// high, a unit that would span more than two storeys, a floor below `ground`, or something
+// (another part, an obstacle) in the swept region.
+std::optional<Extruded> moveFloorOrCeiling(const Unit& u, int part, Side s, int storeys, double storeyHeight,
+                                           const std::vector<Box>& obstacles, double ground, std::string* why = nullptr);
 
 // Fig. 5.4: a unit may take the whole top of an external staircase as a part whose floor is
 // the staircase's roof, when side s of its one-storey part b has reached the staircase: the

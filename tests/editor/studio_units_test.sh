@@ -7,7 +7,9 @@
 #  2. P, a drag on A's east wall (x = 9) with 5 typed and Enter pushes it with collide-and-
 #     extrude: by hand, y 1..5 meets B 3 m out (x = 12), y 5..9 runs the whole 5 m (x = 14), so
 #     A is [1, 12] × [1, 5] and [1, 14] × [5, 9]; one undo step ("Push unit wall");
-#  3. Ctrl+Z undoes the push alone: A is its seed again.
+#  3. Ctrl+Z undoes the push alone: A is its seed again;
+#  4. a drag up on A's ceiling (z = 3) with 2 typed moves it by the nearest whole storey (3 m):
+#     A becomes a double volume [1, 9] × [1, 9] × [0, 6]; one undo step ("Move unit ceiling").
 set -euo pipefail
 editor=$1 work=$2
 source "$(dirname "$0")/test_log_lib.sh"  # wait_for, screen, under_xvfb
@@ -86,6 +88,19 @@ wait_for "j['undo'] == 'Freeze the units of Site' and j['dirty']"
 xdotool key --clearmodifiers ctrl+s
 wait_for "not j['dirty']"
 expect_parts "Site unit 1" "[[1, 1, 0, 9, 9, 3]]"
+
+echo "== 4: A's ceiling dragged up, 2 typed: one whole storey (3 m), a double volume"
+read -r cx cy <<<"$(screen 5,5,3)"
+xdotool mousemove --sync --window "$wid" "$cx" "$cy"
+xdotool mousedown 1 mousemove --sync --window "$wid" "$cx" $((cy - 10)) mousemove --sync --window "$wid" "$cx" $((cy - 20))
+xdotool type --delay 60 "2"
+xdotool key Return
+xdotool mouseup 1
+wait_for "j['undo'] == 'Move unit ceiling' and j['selection'] == ['Site unit 1']"
+xdotool key --clearmodifiers ctrl+s
+wait_for "not j['dirty']"
+expect_parts "Site unit 1" "[[1, 1, 0, 9, 9, 6]]"
+expect_parts "Site unit 2" "[[12, 1, 0, 16, 5, 3]]"
 kill "$pid"
 trap - EXIT
 echo "studio units test passed"

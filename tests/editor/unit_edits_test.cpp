@@ -104,5 +104,30 @@ TEST(UnitEdits, ARayPicksTheFirstSideItEnters) {
   EXPECT_FALSE(pickUnitFace(u, Vec3(20, 10, 1.5), Vec3(-1, 0, 0))) << "passes by";
 }
 
+TEST(UnitEdits, AFloorOrCeilingMovesByTheSitesWholeStoreys) {
+  // A site of 3.5 m storeys: a ceiling dragged 2.5 m rises one storey, 3.5 m (the nearest whole
+  // storey), and a drag of 1 m is no storey at all.
+  Document d;
+  const ObjectId a = d.add("A", unitOf({{0, 0, 0, 10, 10, 3.5}}));
+  GrowthSpec g;
+  g.site = R"({"envelope": {"origin": [0, 0], "size": [40, 40]}, "storeys": 3, "storey_height": 3.5, "seeds": []})";
+  d.add("Site", g);
+  const Document up = pushUnitFace(d, a, 0, growth::Side::Top, 2.5);
+  EXPECT_EQ(spec(up, a).parts[0].hi, Vec3(10, 10, 7));
+  EXPECT_DOUBLE_EQ(volume(spec(up, a)), 2 * volume(spec(d, a)));
+  EXPECT_THROW(pushUnitFace(d, a, 0, growth::Side::Top, 1), InputError);
+  // Back down, and its floor cannot go under the site's ground.
+  EXPECT_EQ(spec(pushUnitFace(up, a, 0, growth::Side::Top, -3.5), a), spec(d, a));
+  EXPECT_THROW(pushUnitFace(d, a, 0, growth::Side::Bottom, 3.5), InputError);
+  // Without a site the unit's lowest room gives the storey: 4 m rooms rise by 4 m.
+  Document alone;
+  const ObjectId b = alone.add("B", unitOf({{0, 0, 0, 6, 6, 4}, {6, 0, 0, 12, 6, 4}}));
+  EXPECT_EQ(spec(pushUnitFace(alone, b, 1, growth::Side::Top, 3), b).parts[1].hi, Vec3(12, 6, 8));
+  // Another unit over the ceiling stops it.
+  const ObjectId c = alone.add("C", unitOf({{0, 0, 4, 6, 6, 8}}));
+  (void)c;
+  EXPECT_THROW(pushUnitFace(alone, b, 0, growth::Side::Top, 4), InputError);
+}
+
 }  // namespace
 }  // namespace corbel::editor

@@ -247,5 +247,55 @@ TEST(CollideAndExtrude, PullsInKeepARoomAndFloorsAndBlockedFacesAreRefused) {
   EXPECT_FALSE(collideAndExtrude(oneRoom(), 3, Side::PosX, 2, {}, 3, &why));
 }
 
+// A floor or ceiling moved by hand goes by whole storeys and keeps the growth's rules: parts of
+// one or two storeys, a unit over at most two, nothing in the way, nothing under the ground.
+TEST(MoveFloorOrCeiling, ARoomBecomesADoubleVolumeAndBackByWholeStoreys) {
+  const auto up = moveFloorOrCeiling(oneRoom(), 0, Side::Top, 1, 3, {}, 0);
+  ASSERT_TRUE(up);
+  EXPECT_EQ(up->unit.parts[0], box(0, 0, 0, 10, 10, 6));
+  EXPECT_DOUBLE_EQ(up->added, 10 * 10 * 3.0);
+  EXPECT_DOUBLE_EQ(unionVolume(up->unit), 300 + up->added);
+  // Back down by one storey: the room again, the volume given back.
+  const auto down = moveFloorOrCeiling(up->unit, 0, Side::Top, -1, 3, {}, 0);
+  ASSERT_TRUE(down);
+  EXPECT_EQ(down->unit.parts[0], oneRoom().parts[0]);
+  EXPECT_DOUBLE_EQ(down->added, -300.0);
+  // A room on the first floor (z 3..6) takes the storey below it.
+  Unit high = oneRoom();
+  high.parts[0] = box(0, 0, 3, 10, 10, 6);
+  const auto floor = moveFloorOrCeiling(high, 0, Side::Bottom, 1, 3, {}, 0);
+  ASSERT_TRUE(floor);
+  EXPECT_EQ(floor->unit.parts[0], box(0, 0, 0, 10, 10, 6));
+}
+
+TEST(MoveFloorOrCeiling, WhatBreaksAGrowthRuleIsRefusedAndNothingMoves) {
+  std::string why;
+  auto refused = [&](const Unit& u, int part, Side s, int storeys, const std::vector<Box>& obstacles, const char* says) {
+    why.clear();
+    EXPECT_FALSE(moveFloorOrCeiling(u, part, s, storeys, 3, obstacles, 0, &why)) << says;
+    EXPECT_NE(why.find(says), std::string::npos) << why;
+  };
+  refused(oneRoom(), 0, Side::Top, 2, {}, "one or two storeys");      // three storeys high
+  refused(oneRoom(), 0, Side::Top, -1, {}, "one or two storeys");     // no height left
+  refused(oneRoom(), 0, Side::Bottom, 1, {}, "below the ground");
+  refused(oneRoom(), 0, Side::Top, 0, {}, "whole storeys");
+  refused(oneRoom(), 0, Side::PosX, 1, {}, "a wall");
+  // A neighbour's room over one corner of the ceiling stops the whole ceiling: no part is a
+  // storey and a half, and a ceiling is not split.
+  refused(oneRoom(), 0, Side::Top, 1, {box(8, 8, 3, 14, 14, 6)}, "above the ceiling");
+  // Beside the ceiling (touching its edge) is not in the way.
+  EXPECT_TRUE(moveFloorOrCeiling(oneRoom(), 0, Side::Top, 1, 3, {box(10, 0, 3, 14, 10, 6)}, 0));
+  // A unit of a ground-floor room and a first-floor room beside it spans two storeys already:
+  // the upper room cannot rise, the lower one can.
+  Unit split = oneRoom();
+  split.parts = {box(0, 0, 0, 5, 10, 3), box(5, 0, 3, 10, 10, 6)};
+  refused(split, 1, Side::Top, 1, {}, "two storeys");
+  EXPECT_TRUE(moveFloorOrCeiling(split, 0, Side::Top, 1, 3, {}, 0));
+  // A ceiling under the unit's own room above cannot move.
+  Unit stacked = oneRoom();
+  stacked.parts = {box(0, 0, 0, 10, 10, 3), box(0, 0, 3, 10, 10, 6)};
+  refused(stacked, 0, Side::Top, 1, {}, "meets another part");
+}
+
 }  // namespace
 }  // namespace corbel::growth
