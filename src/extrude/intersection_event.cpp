@@ -44,6 +44,10 @@ bool Sweeper::handleIntersection(const Candidate& cand) {
 // of metres per metre of rise, and the rounding of two predictions of one event in height
 // alone would put it microns away.
 constexpr double kRaceReach = 100;
+// Walls this close to one line (a sine) make a near-straight corner (nearestOnPath).
+constexpr double kNearStraight = 1e-4;
+// ... and a racing corner may reach such a corner this many δ2 along its path (nearestOnPath).
+constexpr double kFarEndReach = 1000;
 
 Vec2 Sweeper::nearestOnPath(int ci, const Vec2& p, double z) const {
   // A corner does not exist below the height it was made at: events clustered within δ1 may
@@ -58,9 +62,36 @@ Vec2 Sweeper::nearestOnPath(int ci, const Vec2& p, double z) const {
   // clustering of ordinary events stays exactly δ2.
   if (!(vv * tol_.height * tol_.height > tol_.cluster * tol_.cluster)) return at;
   // ... but never further along its path than kRaceReach δ2, so a corner racing at 1e8 m/m
-  // cannot skip past the ends of its own edges into an unrelated event on its line.
+  // cannot skip past the ends of its own edges into an unrelated event on its line. Its own
+  // edge's far end it may reach up to kFarEndReach δ2 away (within δ1 of height, and not
+  // when it was made within 2 δ1), where that end is a near-straight corner (the edge and
+  // the next wall within kNearStraight of one line): there the two small sines together
+  // leave the meeting point uncertain by 1e-4 m along the ridge, far more than kRaceReach
+  // δ2, while its height is certain to 1e-9 m (osm:w387700951: a hip end's ridge corner
+  // reaching the opposite wall's corner 1.1e-5 rad off straight, 108 δ2 back along its path;
+  // missed, it split that wall and left a two-edge sliver that rose 0.46 m above the ridge).
+  const double tp = OpenMesh::dot(v, p - at) / vv;
+  if (std::abs(tp) <= tol_.height && std::abs(tp) * std::sqrt(vv) <= kFarEndReach * tol_.cluster && tp >= z0 - z &&
+      z - z0 > 2 * tol_.height) {
+    const Corner& c = corners_[ci];
+    for (const int ei : {c.prev, c.next}) {
+      const bool forward = ei == c.next;
+      const int cj = forward ? edges_[ei].end : edges_[ei].start;
+      if (cj < 0 || cj == ci || !corners_[cj].alive) continue;
+      const int eo = forward ? corners_[cj].next : corners_[cj].prev;
+      if (eo < 0 || !edges_[eo].alive) continue;
+      const Edge& e = edges_[ei];
+      const Edge& o = edges_[eo];
+      if (!(OpenMesh::dot(e.d, o.d) > 0 && std::abs(cross2(e.d, o.d)) <= kNearStraight)) continue;
+      if ((liveAt(cj, z) - p).norm() <= tol_.cluster) {
+        SWEEP_TRACE("   racing corner %d reaches the far end of edge %d, corner %d, %.3g above (%.3g m along its path)", ci, ei, cj,
+                    tp, tp * std::sqrt(vv));
+        return at + v * tp;
+      }
+    }
+  }
   const double window = std::min(tol_.height, kRaceReach * tol_.cluster / std::sqrt(vv));
-  const double t = std::clamp(OpenMesh::dot(v, p - at) / vv, std::max(-window, z0 - z), window);
+  const double t = std::clamp(tp, std::max(-window, z0 - z), window);
   return at + v * t;
 }
 
