@@ -63,16 +63,18 @@ Vec2 Sweeper::nearestOnPath(int ci, const Vec2& p, double z) const {
   if (!(vv * tol_.height * tol_.height > tol_.cluster * tol_.cluster)) return at;
   // ... but never further along its path than kRaceReach δ2, so a corner racing at 1e8 m/m
   // cannot skip past the ends of its own edges into an unrelated event on its line. Its own
-  // edge's far end it may reach up to kFarEndReach δ2 away (within δ1 of height, and not
-  // when it was made within 2 δ1), where that end is a near-straight corner (the edge and
-  // the next wall within kNearStraight of one line): there the two small sines together
-  // leave the meeting point uncertain by 1e-4 m along the ridge, far more than kRaceReach
-  // δ2, while its height is certain to 1e-9 m (osm:w387700951: a hip end's ridge corner
-  // reaching the opposite wall's corner 1.1e-5 rad off straight, 108 δ2 back along its path;
-  // missed, it split that wall and left a two-edge sliver that rose 0.46 m above the ridge).
+  // edge's far end, where that end is a near-straight corner (the edge and the next wall
+  // within kNearStraight of one line), it reaches further: there the two small sines leave
+  // the meeting point uncertain along the ridge by far more than kRaceReach δ2, while its
+  // height is certain to 1e-9 m. Back along its path (it has passed that corner) anywhere
+  // within δ1 of height; ahead, up to kFarEndReach δ2 (further ahead it may still meet
+  // something else first); never when it was made within 2 δ1. osm:w387700951: a hip end's
+  // ridge corner had passed the opposite wall's corner (1.1e-5 rad off straight) by 108 δ2;
+  // missed, it split that wall and left a two-edge sliver 0.46 m above the ridge. In a dozen
+  // random plans (walls 1e-9 to 1e-7 rad off one line) a corner had passed by 0.03 to 1 m,
+  // within δ1, and left a face that ran past the corner and back.
   const double tp = OpenMesh::dot(v, p - at) / vv;
-  if (std::abs(tp) <= tol_.height && std::abs(tp) * std::sqrt(vv) <= kFarEndReach * tol_.cluster && tp >= z0 - z &&
-      z - z0 > 2 * tol_.height) {
+  if (tp >= -tol_.height && tp * std::sqrt(vv) <= kFarEndReach * tol_.cluster && tp >= z0 - z && z - z0 > 2 * tol_.height) {
     const Corner& c = corners_[ci];
     for (const int ei : {c.prev, c.next}) {
       const bool forward = ei == c.next;
@@ -84,8 +86,8 @@ Vec2 Sweeper::nearestOnPath(int ci, const Vec2& p, double z) const {
       const Edge& o = edges_[eo];
       if (!(OpenMesh::dot(e.d, o.d) > 0 && std::abs(cross2(e.d, o.d)) <= kNearStraight)) continue;
       if ((liveAt(cj, z) - p).norm() <= tol_.cluster) {
-        SWEEP_TRACE("   racing corner %d reaches the far end of edge %d, corner %d, %.3g above (%.3g m along its path)", ci, ei, cj,
-                    tp, tp * std::sqrt(vv));
+        SWEEP_TRACE("   racing corner %d reaches the far end of edge %d, corner %d, %.3g above (%.3g m along its path, %.3g δ2; sine %.3g)", ci, ei, cj,
+                    tp, tp * std::sqrt(vv), tp * std::sqrt(vv) / tol_.cluster, cross2(e.d, o.d));
         return at + v * tp;
       }
     }
