@@ -190,7 +190,7 @@ class SchurFactor {
       return cholmod_.info() == Eigen::Success;
     }
     if (kind_ == SchurSolver::BlockLdlt) {
-      std::vector<BlockLdlt::Block>& v = blocks_.values();
+      BlockLdlt::Values& v = blocks_.values();
       for (BlockLdlt::Block& b : v) b.setZero();
       double* out = v.empty() ? nullptr : v[0].data();
       const double* in = S.valuePtr();
@@ -389,7 +389,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   }
   // Sums A H⁻¹ Aᵀ + regularisation·I into the block factorisation and factors it.
   auto factorBlockwise = [&](double shift) {
-    std::vector<BlockLdlt::Block>& v = ldlt.blocks().values();
+    BlockLdlt::Values& v = ldlt.blocks().values();
     for (BlockLdlt::Block& b : v) b.setZero();
     for (int j = 0; j < nb; ++j) {
       const BlockCols12& bc = cols12[std::size_t(j)];
