@@ -7,6 +7,7 @@
 // Smaller allocations, and other systems, go to the aligned operator new.
 #include <cstddef>
 #include <new>
+#include <vector>
 
 namespace corbel::statics {
 
@@ -41,5 +42,8 @@ struct HugePageAllocator {
     return true;
   }
 };
+
+template <typename T>
+using BigVector = std::vector<T, HugePageAllocator<T>>;
 
 }  // namespace corbel::statics
