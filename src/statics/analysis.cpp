@@ -273,7 +273,9 @@ BlockQP penaltyQP(const EquilibriumSystem& p) {
       vb.size = 4;
       vb.hessian = {0, 2, 0, 0};  // ½·2·(f_n⁻)²
       // The pyramid bounds friction by α·f_n⁺ (statics notes): f_n⁺ ≥ 0, f_n⁻ ≥ 0, α f_n⁺ ± f_t ≥ 0.
-      vb.rows = {{1, 0, 0, 0}, {0, 1, 0, 0}};
+      vb.rows.reserve(std::size_t(2 + p.frictionSides));  // one allocation, not three
+      vb.rows.push_back({1, 0, 0, 0});
+      vb.rows.push_back({0, 1, 0, 0});
       addFrictionRows(vb, p, 0, 2);
       vb.nullDirection = {-1, -1, 0, 0};  // the columns of f_n⁺ and f_n⁻ are exact opposites
       vb.interiorDirection = {1, 1, 0, 0};  // more of both: every row grows (α > 0 on the pyramid's)
@@ -386,7 +388,8 @@ FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& op
       VarBlock vb;
       vb.offset = col;
       vb.size = 3;
-      vb.rows = {{1, 0, 0, 0}};
+      vb.rows.reserve(std::size_t(1 + p.frictionSides));
+      vb.rows.push_back({1, 0, 0, 0});
       addFrictionRows(vb, p, 0, 1);
       qp.blocks.push_back(vb);
       col += 3;
