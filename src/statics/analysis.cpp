@@ -220,27 +220,23 @@ class ColumnWriter {
   }
   // The column of a unit force `dir` acting on b (and −dir on a) at `point`, as addForceColumn.
   void force(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir) {
-    std::array<std::pair<int, double>, 12> e;
-    int k = 0;
-    for (int side = 0; side < 2; ++side) {
-      const int blk = side == 0 ? itf.b : itf.a;
+    int* inner = A_.innerIndexPtr();
+    double* value = A_.valuePtr();
+    // Each side's rows come in order (force r..r+2, torque r+3..r+5), so the side with the
+    // lower rows goes first.
+    const int rb = p.rowOf[std::size_t(itf.b)], ra = p.rowOf[std::size_t(itf.a)];
+    const bool bFirst = ra < 0 || (rb >= 0 && rb < ra);
+    for (int pass = 0; pass < 2; ++pass) {
+      const int blk = (pass == 0) == bFirst ? itf.b : itf.a;
       const int r = p.rowOf[std::size_t(blk)];
       if (r < 0) continue;
-      const double sgn = side == 0 ? 1.0 : -1.0;
+      const double sgn = blk == itf.b ? 1.0 : -1.0;
       const Vec3 arm = point - p.props[std::size_t(blk)].centroid;
       const Vec3 tq = cross(arm, dir);
       for (int i = 0; i < 3; ++i)
-        if (dir[i] != 0) e[std::size_t(k++)] = {r + i, sgn * dir[i]};
+        if (dir[i] != 0) inner[nnz_] = r + i, value[nnz_++] = sgn * dir[i];
       for (int i = 0; i < 3; ++i)
-        if (tq[i] != 0) e[std::size_t(k++)] = {r + 3 + i, sgn * tq[i]};
-    }
-    std::sort(e.begin(), e.begin() + k, [](const auto& x, const auto& y) { return x.first < y.first; });
-    int* inner = A_.innerIndexPtr();
-    double* value = A_.valuePtr();
-    for (int i = 0; i < k; ++i) {
-      inner[nnz_] = e[std::size_t(i)].first;
-      value[nnz_] = e[std::size_t(i)].second;
-      ++nnz_;
+        if (tq[i] != 0) inner[nnz_] = r + 3 + i, value[nnz_++] = sgn * tq[i];
     }
     A_.outerIndexPtr()[++col_] = nnz_;
   }
