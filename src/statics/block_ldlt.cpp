@@ -170,7 +170,9 @@ void BlockLdlt::analyze(int n, const std::vector<std::pair<int, int>>& pairs) {
     for (int q : col[std::size_t(p)]) rows_.push_back(q);
   }
   colStart_[std::size_t(n)] = int(rows_.size());
-  values_.assign(rows_.size(), Block::Zero());
+  // Not zeroed here: the caller zeroes the blocks before it sums the matrix in (values()).
+  values_.clear();
+  values_.resize(rows_.size());
   // Copies of a factorised LDLT: Eigen 3.4 leaves a default-constructed one's status
   // uninitialised, and copying that is undefined behaviour (UBSan reports it).
   dfac_.assign(std::size_t(n), Eigen::LDLT<Block>(Block::Identity()));
