@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "statics/equilibrium.h"
+#include "statics/huge_pages.h"
 #include "statics/tolerances.h"
 
 #include <algorithm>
@@ -217,6 +218,8 @@ class ColumnWriter {
   ColumnWriter(Eigen::SparseMatrix<double>& A, int rows, int cols, int maxNonZeros) : A_(A) {
     A_.resize(rows, cols);
     A_.resizeNonZeros(maxNonZeros);
+    hugepages::advise(A_.valuePtr(), std::size_t(maxNonZeros) * sizeof(double));
+    hugepages::advise(A_.innerIndexPtr(), std::size_t(maxNonZeros) * sizeof(int));
   }
   // The column of a unit force `dir` acting on b (and −dir on a) at `point`, as addForceColumn.
   void force(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir) {

@@ -37,6 +37,19 @@ void release(void* p, std::size_t bytes) noexcept {
   if (p) munmap(p, rounded(bytes));
 }
 
+void advise(void* p, std::size_t bytes) noexcept {
+#if defined(MADV_HUGEPAGE)
+  if (!p || bytes < kHugeBytes) return;
+  const auto start = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t first = (start + kHugePage - 1) / kHugePage * kHugePage;
+  const std::uintptr_t last = (start + bytes) / kHugePage * kHugePage;
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
 #else
 
 void* allocate(std::size_t bytes) {
@@ -45,6 +58,8 @@ void* allocate(std::size_t bytes) {
 }
 
 void release(void* p, std::size_t) noexcept { ::operator delete(p, std::align_val_t(64)); }
+
+void advise(void*, std::size_t) noexcept {}
 
 #endif
 

@@ -16,6 +16,10 @@ inline constexpr std::size_t kHugeBytes = std::size_t(4) << 20;
 // Maps `bytes` (≥ kHugeBytes) as described above; throws std::bad_alloc when it cannot.
 void* allocate(std::size_t bytes);
 void release(void* p, std::size_t bytes) noexcept;
+// Asks for huge pages on the whole 2 MiB pages inside [p, p + bytes) of memory allocated
+// elsewhere (Eigen's vectors and sparse matrices, which take no allocator), before it is first
+// written. Advice only: does nothing under kHugeBytes, on other systems, or where refused.
+void advise(void* p, std::size_t bytes) noexcept;
 }  // namespace hugepages
 
 template <typename T>

@@ -1,6 +1,7 @@
 #include "statics/ipm.h"
 
 #include "statics/block_ldlt.h"
+#include "statics/huge_pages.h"
 
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
@@ -462,7 +463,11 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // order as the expressions they replace, so the iterates are bit for bit the same.
   VectorXd gx(mi), rd(n), rp(m), rg(mi), d(mi), rc(mi), tn(n), tm(m), tm2(m), ti(mi);
   VectorXd w(mi), rho(n), rhs(m), r1(n), r2(m), ddy(m), dx(n), dy(m), dz(mi), ds(mi), xt(n), gxt(mi), rpt(m);
-  VectorXd sn1(n), sn2(n), xc(n), zeroN = VectorXd::Zero(n);
+  VectorXd sn1(n), sn2(n), xc(n);
+  for (VectorXd* v : {&gx, &rd, &rp, &rg, &d, &rc, &tn, &tm, &tm2, &ti, &w, &rho, &rhs, &r1, &r2, &ddy, &dx, &dy, &dz, &ds,
+                      &xt, &gxt, &rpt, &sn1, &sn2, &xc})
+    hugepages::advise(v->data(), std::size_t(v->size()) * sizeof(double));
+  const VectorXd zeroN = VectorXd::Zero(n);
   // The projection of the early exit: every block with a null direction e moved along it by the
   // δ that minimises the block's objective ½Σq(x + δe)², clamped so that its rows g·x ≥ 0 hold.
   // One-sided (δ ≥ 0, rows taken as max(0, g·x)) for an interior iterate; two-sided for the
