@@ -460,7 +460,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // The iteration's vectors, allocated once: a fresh vector of 50,000 doubles costs its page
   // faults (the kernel zeroing new pages was 14 % of the 1,040-block wall's QP when every
   // step allocated its temporaries). Each is computed with the same operations in the same
-  // order as the expressions they replace, so the iterates are bit for bit the same.
+  // order as the expressions they replace, so the iterates are bit for bit the same. Large ones
+  // are advised onto huge pages (huge_pages.h) before they are first written.
   VectorXd gx(mi), rd(n), rp(m), rg(mi), d(mi), rc(mi), tn(n), tm(m), tm2(m), ti(mi);
   VectorXd w(mi), rho(n), rhs(m), r1(n), r2(m), ddy(m), dx(n), dy(m), dz(mi), ds(mi), xt(n), gxt(mi), rpt(m);
   VectorXd sn1(n), sn2(n), xc(n);
