@@ -170,21 +170,9 @@ void BlockLdlt::analyze(int n, const std::vector<std::pair<int, int>>& pairs) {
     for (int q : col[std::size_t(p)]) rows_.push_back(q);
   }
   colStart_[std::size_t(n)] = int(rows_.size());
-  auto find = [&](int row, int column) {
-    const auto b = rows_.begin() + colStart_[std::size_t(column)], e = rows_.begin() + colStart_[std::size_t(column) + 1];
-    return int(std::lower_bound(b, e, row) - rows_.begin());
-  };
-  // Update targets: for rows qa ≥ qb of column p, the block (qa, qb) in column qb.
-  updStart_.assign(std::size_t(n) + 1, 0);
-  updTarget_.clear();
-  for (int p = 0; p < n; ++p) {
-    updStart_[std::size_t(p)] = int(updTarget_.size());
-    const std::vector<int>& c = col[std::size_t(p)];
-    for (std::size_t a = 0; a < c.size(); ++a)
-      for (std::size_t b = 0; b <= a; ++b) updTarget_.push_back(find(c[a], c[b]));
-  }
-  updStart_[std::size_t(n)] = int(updTarget_.size());
-  values_.assign(rows_.size(), Block::Zero());
+  // Not zeroed here: the caller zeroes the blocks before it sums the matrix in (values()).
+  values_.clear();
+  values_.resize(rows_.size());
   // Copies of a factorised LDLT: Eigen 3.4 leaves a default-constructed one's status
   // uninitialised, and copying that is undefined behaviour (UBSan reports it).
   dfac_.assign(std::size_t(n), Eigen::LDLT<Block>(Block::Identity()));
@@ -223,9 +211,25 @@ bool BlockLdlt::factorize(double minPivot) {
     Eigen::Map<Block>(pv.L) = f.matrixLDLT();
     L.resize(std::size_t(m));
     if (m > 0) pivotColumn(m, pv, values_[std::size_t(start + 1)].data(), L[0].data());
-    if (m > 0)
-      updateColumn(m, L[0].data(), values_[std::size_t(start + 1)].data(),
-                   updTarget_.data() + updStart_[std::size_t(p)], values_[0].data());
+    if (m > 0) {
+      // The slots updated, for the rows a ≥ b of this column (a·(a+1)/2 + b): block (c_a, c_b)
+      // lies in column c_b, whose rows include every c_a > c_b (the symbolic factorisation
+      // closes each column over its children), so one forward walk of column c_b finds them.
+      const int* c = rows_.data() + start + 1;
+      std::vector<int>& targets = scratchTargets_;
+      targets.resize(std::size_t(m) * std::size_t(m + 1) / 2);
+      for (int b = 0; b < m; ++b) {
+        const int q = c[b];
+        int s = colStart_[std::size_t(q)];
+        targets[std::size_t(b) * std::size_t(b + 1) / 2 + std::size_t(b)] = s;  // the diagonal block
+        for (int a = b + 1; a < m; ++a) {
+          do ++s;
+          while (rows_[std::size_t(s)] != c[a]);
+          targets[std::size_t(a) * std::size_t(a + 1) / 2 + std::size_t(b)] = s;
+        }
+      }
+      updateColumn(m, L[0].data(), values_[std::size_t(start + 1)].data(), targets.data(), values_[0].data());
+    }
     for (int a = 0; a < m; ++a) values_[std::size_t(start + 1 + a)] = L[std::size_t(a)];
   }
   return true;

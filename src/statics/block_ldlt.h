@@ -7,6 +7,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "statics/huge_pages.h"
+
 #include <utility>
 #include <vector>
 
@@ -15,6 +17,8 @@ namespace corbel::statics {
 class BlockLdlt {
  public:
   using Block = Eigen::Matrix<double, 6, 6>;
+  // Block storage on huge pages where the system gives them (huge_pages.h).
+  using Values = std::vector<Block, HugePageAllocator<Block>>;
 
   // `pairs`: the block positions (i, j) of the matrix's nonzero blocks, either triangle, the
   // diagonal included; n block rows.
@@ -30,7 +34,7 @@ class BlockLdlt {
 
   // The matrix's blocks by slot (fill positions included): set them to zero, add the matrix,
   // then factorize. The factorisation overwrites them.
-  std::vector<Block>& values() { return values_; }
+  Values& values() { return values_; }
 
   // S = L D Lᵀ with unit block-lower L and dense 6×6 blocks D_j, each factored by a dense
   // LDLᵀ with pivoting. Returns false (the caller regularises) when a pivot is not above
@@ -49,11 +53,10 @@ class BlockLdlt {
   std::vector<int> pos_;        // block row → position
   std::vector<int> colStart_;   // position → first slot of its column (the diagonal), then its rows
   std::vector<int> rows_;       // per off-diagonal slot: the position of its row (> column)
-  std::vector<int> updStart_;   // position → first entry of its update list
-  std::vector<int> updTarget_;  // per pair (a ≥ b) of a column's rows: the slot updated
-  std::vector<Block> values_;
+  Values values_;
   std::vector<Eigen::LDLT<Block>> dfac_;  // per position: D's factorisation
   std::vector<Block> scratchL_;           // factorize's L of one column
+  std::vector<int> scratchTargets_;       // factorize's update targets of one column
   mutable Eigen::VectorXd scratchY_;      // solve's permuted vector
  public:
   // D_p's factorisation D = Pᵀ L diag(d) Lᵀ P as plain arrays, for the vectorised kernels.

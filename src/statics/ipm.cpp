@@ -1,6 +1,7 @@
 #include "statics/ipm.h"
 
 #include "statics/block_ldlt.h"
+#include "statics/huge_pages.h"
 
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
@@ -190,7 +191,7 @@ class SchurFactor {
       return cholmod_.info() == Eigen::Success;
     }
     if (kind_ == SchurSolver::BlockLdlt) {
-      std::vector<BlockLdlt::Block>& v = blocks_.values();
+      BlockLdlt::Values& v = blocks_.values();
       for (BlockLdlt::Block& b : v) b.setZero();
       double* out = v.empty() ? nullptr : v[0].data();
       const double* in = S.valuePtr();
@@ -295,30 +296,34 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   const double bnorm = qp.b.size() ? qp.b.lpNorm<Eigen::Infinity>() : 0.0;
   const double cnorm = c.size() ? c.lpNorm<Eigen::Infinity>() : 0.0;
 
-  // Per block: the rows of A it touches and the block of A there (dense, rows × size).
+  // Per block: the rows of A it touches and the block of A there (dense, rows × size); only
+  // the scalar path (below) needs them.
   struct BlockCols {
     std::vector<int> rows;
     Eigen::Matrix<double, Eigen::Dynamic, 4> vals;
   };
-  std::vector<BlockCols> cols(nb);
-  for (int j = 0; j < nb; ++j) {
-    const VarBlock& blk = qp.blocks[j];
-    std::vector<int>& rows = cols[j].rows;
-    for (int k = 0; k < blk.size; ++k)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it) rows.push_back(int(it.row()));
-    std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    cols[j].vals = Eigen::Matrix<double, Eigen::Dynamic, 4>::Zero(Eigen::Index(rows.size()), 4);
-    for (int k = 0; k < blk.size; ++k)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it) {
-        const auto pos = std::lower_bound(rows.begin(), rows.end(), int(it.row())) - rows.begin();
-        cols[j].vals(pos, k) += it.value();
-      }
-  }
+  std::vector<BlockCols> cols;
+  auto buildCols = [&]() {
+    cols.resize(std::size_t(nb));
+    for (int j = 0; j < nb; ++j) {
+      const VarBlock& blk = qp.blocks[j];
+      std::vector<int>& rows = cols[j].rows;
+      for (int k = 0; k < blk.size; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it) rows.push_back(int(it.row()));
+      std::sort(rows.begin(), rows.end());
+      rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+      cols[j].vals = Eigen::Matrix<double, Eigen::Dynamic, 4>::Zero(Eigen::Index(rows.size()), 4);
+      for (int k = 0; k < blk.size; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it) {
+          const auto pos = std::lower_bound(rows.begin(), rows.end(), int(it.row())) - rows.begin();
+          cols[j].vals(pos, k) += it.value();
+        }
+    }
+  };
 
   SchurFactor ldlt(options.schurSolver, qp.rowGroup);
   bool analysed = false;
-  std::vector<Mat4> hinv(nb), hess(nb);
+  BigVector<Mat4> hinv(nb), hess(nb);
   // The block path (BlockLdlt): every variable block touches at most two 6-row groups (a
   // contact vertex: the two blocks it joins; an artificial: one), so its A columns are a
   // fixed 12×4 matrix (zero-padded) and its contribution A_j H_j⁻¹ A_jᵀ is at most three
@@ -331,25 +336,26 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     int slot00 = -1, slot11 = -1, slot10 = -1;  // S blocks (g0, g0), (g1, g1), (g1, g0)
     bool transposed10 = false;                  // (g1, g0) stored as its transpose
   };
-  std::vector<BlockCols12> cols12;
+  BigVector<BlockCols12> cols12;
   std::vector<int> diagBlockSlot;
   bool blockwise = ldlt.blockwise() && m % 6 == 0 && m > 0;
   std::vector<std::array<int, 2>> blockGroups(std::size_t(nb), {-1, -1});
   if (blockwise) {
-    for (int j = 0; j < nb && blockwise; ++j) {
-      for (int r : cols[j].rows) {
-        const int g = r / 6;
-        auto& gr = blockGroups[std::size_t(j)];
-        if (gr[0] == g || gr[1] == g) continue;
-        if (gr[0] < 0)
-          gr[0] = g;
-        else if (gr[1] < 0)
-          gr[1] = g;
-        else
-          blockwise = false;  // more than two groups: the scalar path
-      }
-    }
+    for (int j = 0; j < nb && blockwise; ++j)
+      for (int k = 0; k < qp.blocks[j].size; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, qp.blocks[j].offset + k); it; ++it) {
+          const int g = int(it.row()) / 6;
+          auto& gr = blockGroups[std::size_t(j)];
+          if (gr[0] == g || gr[1] == g) continue;
+          if (gr[0] < 0)
+            gr[0] = g;
+          else if (gr[1] < 0)
+            gr[1] = g;
+          else
+            blockwise = false;  // more than two groups: the scalar path
+        }
   }
+  if (!blockwise) buildCols();
   if (blockwise) {
     std::vector<std::pair<int, int>> pairs;
     for (int g = 0; g < m / 6; ++g) pairs.emplace_back(g, g);
@@ -372,11 +378,11 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       bc.groups = gr[1] >= 0 ? 2 : 1;
       bc.row0 = 6 * gr[0];
       bc.row1 = bc.groups == 2 ? 6 * gr[1] : 0;
-      const auto& rows = cols[j].rows;
-      for (std::size_t p = 0; p < rows.size(); ++p) {
-        const int local = (rows[p] / 6 == gr[0] ? 0 : 6) + rows[p] % 6;
-        for (int k = 0; k < qp.blocks[j].size; ++k) bc.vals(local, k) = cols[j].vals(Eigen::Index(p), k);
-      }
+      for (int k = 0; k < qp.blocks[j].size; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, qp.blocks[j].offset + k); it; ++it) {
+          const int r = int(it.row());
+          bc.vals((r / 6 == gr[0] ? 0 : 6) + r % 6, k) = it.value();
+        }
       bc.slot00 = bl.slot(gr[0], gr[0]).index;
       if (bc.groups == 2) {
         bc.slot11 = bl.slot(gr[1], gr[1]).index;
@@ -389,7 +395,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   }
   // Sums A H⁻¹ Aᵀ + regularisation·I into the block factorisation and factors it.
   auto factorBlockwise = [&](double shift) {
-    std::vector<BlockLdlt::Block>& v = ldlt.blocks().values();
+    BlockLdlt::Values& v = ldlt.blocks().values();
     for (BlockLdlt::Block& b : v) b.setZero();
     for (int j = 0; j < nb; ++j) {
       const BlockCols12& bc = cols12[std::size_t(j)];
@@ -454,10 +460,15 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // The iteration's vectors, allocated once: a fresh vector of 50,000 doubles costs its page
   // faults (the kernel zeroing new pages was 14 % of the 1,040-block wall's QP when every
   // step allocated its temporaries). Each is computed with the same operations in the same
-  // order as the expressions they replace, so the iterates are bit for bit the same.
+  // order as the expressions they replace, so the iterates are bit for bit the same. Large ones
+  // are advised onto huge pages (huge_pages.h) before they are first written.
   VectorXd gx(mi), rd(n), rp(m), rg(mi), d(mi), rc(mi), tn(n), tm(m), tm2(m), ti(mi);
   VectorXd w(mi), rho(n), rhs(m), r1(n), r2(m), ddy(m), dx(n), dy(m), dz(mi), ds(mi), xt(n), gxt(mi), rpt(m);
-  VectorXd sn1(n), sn2(n), xc(n), zeroN = VectorXd::Zero(n);
+  VectorXd sn1(n), sn2(n), xc(n);
+  for (VectorXd* v : {&gx, &rd, &rp, &rg, &d, &rc, &tn, &tm, &tm2, &ti, &w, &rho, &rhs, &r1, &r2, &ddy, &dx, &dy, &dz, &ds,
+                      &xt, &gxt, &rpt, &sn1, &sn2, &xc})
+    hugepages::advise(v->data(), std::size_t(v->size()) * sizeof(double));
+  const VectorXd zeroN = VectorXd::Zero(n);
   // The projection of the early exit: every block with a null direction e moved along it by the
   // δ that minimises the block's objective ½Σq(x + δe)², clamped so that its rows g·x ≥ 0 hold.
   // One-sided (δ ≥ 0, rows taken as max(0, g·x)) for an interior iterate; two-sided for the
@@ -576,7 +587,7 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     return ldlt.factorize(S);
   };
   // M v block by block, for M = H⁻¹ or H.
-  auto applyBlocks = [&](const std::vector<Mat4>& M, const VectorXd& v, VectorXd& out) {
+  auto applyBlocks = [&](const BigVector<Mat4>& M, const VectorXd& v, VectorXd& out) {
     for (int j = 0; j < nb; ++j) {
       const VarBlock& blk = qp.blocks[j];
       Eigen::Vector4d in = Eigen::Vector4d::Zero();
