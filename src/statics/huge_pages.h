@@ -4,7 +4,7 @@
 // aligned to 2 MiB and marked MADV_HUGEPAGE, so the kernel backs it with transparent huge pages
 // where it allows them ("madvise" mode). A 10,000-block wall's QP touches several hundred MB
 // once; with 4 KiB pages the first-touch page faults cost about as much as the arithmetic.
-// Smaller allocations, and other systems, go to the aligned operator new.
+// Smaller allocations, other systems and AddressSanitizer builds go to the aligned operator new.
 #include <cstddef>
 #include <new>
 #include <vector>
@@ -13,6 +13,12 @@ namespace corbel::statics {
 
 namespace hugepages {
 inline constexpr std::size_t kHugeBytes = std::size_t(4) << 20;
+// Under AddressSanitizer every buffer goes through operator new, where ASan guards it.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kMapped = false;
+#else
+inline constexpr bool kMapped = true;
+#endif
 // Maps `bytes` (≥ kHugeBytes) as described above; throws std::bad_alloc when it cannot.
 void* allocate(std::size_t bytes);
 void release(void* p, std::size_t bytes) noexcept;
@@ -31,12 +37,12 @@ struct HugePageAllocator {
 
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
-    if (bytes >= hugepages::kHugeBytes) return static_cast<T*>(hugepages::allocate(bytes));
+    if (hugepages::kMapped && bytes >= hugepages::kHugeBytes) return static_cast<T*>(hugepages::allocate(bytes));
     return static_cast<T*>(::operator new(bytes, std::align_val_t(alignof(T) > 16 ? alignof(T) : 16)));
   }
   void deallocate(T* p, std::size_t n) noexcept {
     const std::size_t bytes = n * sizeof(T);
-    if (bytes >= hugepages::kHugeBytes)
+    if (hugepages::kMapped && bytes >= hugepages::kHugeBytes)
       hugepages::release(p, bytes);
     else
       ::operator delete(p, std::align_val_t(alignof(T) > 16 ? alignof(T) : 16));
