@@ -197,9 +197,10 @@ void TownStream::forEach(const std::function<void(nlohmann::json&)>& visit) cons
     forEachFeature(path_, visit);
 }
 
-Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double reach,
+Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double reach, double streetReach,
                       std::vector<std::size_t>& indices) const {
-  // Each tile's box, grown by the reach: a building in none is too far to matter to any label.
+  // Each tile's box around its outlines: a building farther than `reach` from all, or a street
+  // farther than `streetReach`, matters to no label.
   struct Box {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   };
@@ -210,18 +211,18 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
     for (std::size_t i : tile) {
       wanted[i] = true;
       for (int k = 0; k < 2; ++k) {
-        t.lo[k] = std::min(t.lo[k], buildings_[i].lo[k] - reach);
-        t.hi[k] = std::max(t.hi[k], buildings_[i].hi[k] + reach);
+        t.lo[k] = std::min(t.lo[k], buildings_[i].lo[k]);
+        t.hi[k] = std::max(t.hi[k], buildings_[i].hi[k]);
       }
     }
   }
-  auto near = [&](const double* l, const double* h) {
+  auto near = [&](const double* l, const double* h, double r) {
     for (const Box& t : boxes)
-      if (l[0] <= t.hi[0] && h[0] >= t.lo[0] && l[1] <= t.hi[1] && h[1] >= t.lo[1]) return true;
+      if (l[0] <= t.hi[0] + r && h[0] >= t.lo[0] - r && l[1] <= t.hi[1] + r && h[1] >= t.lo[1] - r) return true;
     return false;
   };
   for (std::size_t i = 0; i < buildings_.size(); ++i)
-    if (!wanted[i] && near(buildings_[i].lo, buildings_[i].hi)) wanted[i] = true;
+    if (!wanted[i] && near(buildings_[i].lo, buildings_[i].hi, reach)) wanted[i] = true;
   std::vector<bool> features;
   for (std::size_t i = 0; i < buildings_.size(); ++i)
     if (wanted[i]) {
@@ -291,7 +292,7 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
         sl[d] = std::min(sl[d], p[d]);
         sh[d] = std::max(sh[d], p[d]);
       }
-    if (near(sl, sh)) out.streets.push_back(s);
+    if (near(sl, sh, streetReach)) out.streets.push_back(s);
   }
   return out;
 }

@@ -35,10 +35,11 @@ class TownStream {
   // Marked as a margin building of a city-split tile (kMarginProperty): labelled, not built.
   bool margin(std::size_t i) const { return buildings_[i].margin; }
 
-  // The buildings of `tiles` (each a tile's buildings) with every other building and street
-  // within `reach` m of the box around a tile's outlines, read again from the file: a town
-  // whose building k is building indices[k] of the source (ascending).
-  Town part(const std::vector<std::vector<std::size_t>>& tiles, double reach, std::vector<std::size_t>& indices) const;
+  // The buildings of `tiles` (each a tile's buildings) with every other building within `reach`
+  // m and every street within `streetReach` m of the box around a tile's outlines, read again
+  // from the file: a town whose building k is building indices[k] of the source (ascending).
+  Town part(const std::vector<std::vector<std::size_t>>& tiles, double reach, double streetReach,
+            std::vector<std::size_t>& indices) const;
 
  private:
   struct Entry {

@@ -412,8 +412,11 @@ int run(const CityRequest& r) {
                             [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
   } else {
     // Parts of about --stream-buildings buildings in `order`, cut between tiles; each read with
-    // its neighbours within the labels' reach, labelled, built, written and dropped.
-    const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
+    // its neighbours within the labels' reach, labelled, built, written and dropped. A label
+    // looks at other buildings' walls within gap_reach of its edges (the gap search), and at
+    // streets within street_reach of its centroid.
+    const double reach = style.labels.gapReach + 1;
+    const double streetReach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
     const unsigned jobs = r.jobs ? r.jobs : std::max(1u, std::thread::hardware_concurrency());
     options.chunk = std::min(options.chunk, kStreamRoundPerJob * jobs);
     auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
@@ -427,7 +430,7 @@ int run(const CityRequest& r) {
       }
       town = {};  // the last part's, dropped before the next is read
       labels = {};
-      town = stream->part(tiles, reach, globalOf);
+      town = stream->part(tiles, reach, streetReach, globalOf);
       releaseFreedMemory();  // the part's reading (its JSON) is done with
       std::vector<std::size_t> partOrder;  // `order`'s run in the part's numbers
       for (std::size_t k = start; k < end; ++k)
