@@ -4,7 +4,8 @@
 
 namespace corbel::city {
 
-void FeatureInstances::add(const std::vector<extrude::FeaturePlacement>& features) {
+void FeatureInstances::add(const std::vector<extrude::FeaturePlacement>& features,
+                           const std::function<void(std::size_t, const RigidPlacement&)>& place) {
   for (const extrude::FeaturePlacement& f : features) {
     const Shape shape{static_cast<int>(f.kind), f.size.width, f.size.height, f.size.depth, f.sink};
     auto [it, fresh] = index_.try_emplace(shape, meshes_.size());
@@ -30,7 +31,11 @@ void FeatureInstances::add(const std::vector<extrude::FeaturePlacement>& feature
       applyTagMaterials(style_, m.mesh);
       meshes_.push_back(std::move(m));
     }
-    meshes_[it->second].placements.push_back({f.origin, f.ex, f.ey, f.ez});
+    const RigidPlacement p{f.origin, f.ex, f.ey, f.ez};
+    if (place)
+      place(it->second, p);
+    else
+      meshes_[it->second].placements.push_back(p);
   }
 }
 

@@ -7,6 +7,7 @@
 #include "core/instances.h"
 #include "extrude/features.h"
 
+#include <functional>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -17,7 +18,11 @@ class FeatureInstances {
  public:
   explicit FeatureInstances(const Style& style) : style_(style) {}
 
-  void add(const std::vector<extrude::FeaturePlacement>& features);
+  // Files each feature under its shape's mesh (made the first time the shape is met). With
+  // `place`, a feature's placement is handed to place(mesh number, placement) rather than kept in
+  // the mesh's placements (a glb writer's GlbWriter::place, which holds them on disk).
+  void add(const std::vector<extrude::FeaturePlacement>& features,
+           const std::function<void(std::size_t, const RigidPlacement&)>& place = nullptr);
   const std::vector<InstancedMesh>& meshes() const { return meshes_; }
   std::size_t placements() const;
   void clear();

@@ -7,24 +7,60 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <istream>
+#include <streambuf>
 
 namespace corbel::city {
 
 namespace {
 
+// A file read through a buffer of its own that counts the bytes it has handed on, so that a
+// parser's callback can tell where in the file it is.
+class CountingBuffer : public std::streambuf {
+ public:
+  explicit CountingBuffer(const std::string& path) : in_(path, std::ios::binary) {}
+  bool ok() const { return static_cast<bool>(in_); }
+  // The place in the file of the next byte to be handed on.
+  std::uint64_t position() const { return before_ + static_cast<std::uint64_t>(gptr() - eback()); }
+
+ protected:
+  int_type underflow() override {
+    if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+    before_ += static_cast<std::uint64_t>(egptr() - eback());
+    in_.read(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    const std::streamsize n = in_.gcount();
+    if (n <= 0) return traits_type::eof();
+    setg(buffer_.data(), buffer_.data(), buffer_.data() + n);
+    return traits_type::to_int_type(*gptr());
+  }
+
+ private:
+  std::ifstream in_;
+  std::vector<char> buffer_ = std::vector<char>(std::size_t{1} << 16);
+  std::uint64_t before_ = 0;
+};
+
 // Calls `visit` on each entry of the file's "features" array in order, each built and dropped in
 // turn, and returns the document without them. An entry that is not an object stays in the
-// returned document's "features".
-nlohmann::json forEachFeature(const std::string& path, const std::function<void(nlohmann::json&)>& visit) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot read it");
+// returned document's "features". With `spans`, each visited entry's bytes in the file (from its
+// "{" to its "}") are appended to it.
+nlohmann::json forEachFeature(const std::string& path, const std::function<void(nlohmann::json&)>& visit,
+                              std::vector<std::pair<std::uint64_t, std::uint64_t>>* spans = nullptr) {
+  CountingBuffer buffer(path);
+  if (!buffer.ok()) throw InputError(path, "cannot read it");
+  std::istream in(&buffer);
   using Event = nlohmann::json::parse_event_t;
   std::string member;  // the root's member being read
+  std::uint64_t start = 0;  // of the entry being read
   try {
+    // The parser has taken a "{" or "}" itself, and nothing past it, when it calls back with
+    // its object_start or object_end (a number's end, the one token read ahead, is never there).
     nlohmann::json root = nlohmann::json::parse(in, [&](int depth, Event event, nlohmann::json& parsed) {
       if (depth > 64) throw InputError(path, "nested deeper than 64 levels");
       if (depth == 1 && event == Event::key) member = parsed.get<std::string>();
+      if (depth == 2 && event == Event::object_start && member == "features") start = buffer.position() - 1;
       if (depth == 2 && event == Event::object_end && member == "features") {
+        if (spans) spans->emplace_back(start, buffer.position());
         visit(parsed);
         return false;  // dropped
       }
@@ -104,12 +140,20 @@ TownStream::TownStream(std::string path, ReadOptions options)
     attribution_ = credit;
     placement_ = ogr_ ? layerPlacement(layer, members_, bounds, options_) : geoJsonPlacement(members_, bounds, options_);
     frame_ = placement_.frame;
-    // Pass 2: each feature placed and cleaned alone; of its buildings only their centres and boxes kept.
+    // Pass 2: each feature placed and cleaned alone; of its buildings only their centres and
+    // boxes kept, and of a GeoJSON file's features where they lie in it.
     double east = 0;
     std::size_t place = 0, feature = 0;
-    forEach([&](nlohmann::json& f) {
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> spans;
+    auto pass2 = [&](nlohmann::json& f) {
       const std::uint32_t at = static_cast<std::uint32_t>(feature++);
       const bool line = isLineFeature(f);
+      if (!ogr_) {
+        if (spans.size() != feature) throw InputError(path_, "a feature's place in the file was not found");
+        const auto [from, to] = spans.back();
+        if (to - from > UINT32_MAX) throw InputError(path_, "features[" + std::to_string(at) + "]: larger than 4 GB");
+        spans_.push_back({from, static_cast<std::uint32_t>(to - from), static_cast<std::uint32_t>(place)});
+      }
       if (!line) nameByPlace(f, place++);
       nlohmann::json one = collectionOf(members_);
       one["features"].push_back(std::move(f));
@@ -131,9 +175,14 @@ TownStream::TownStream(std::string path, ReadOptions options)
         }
         buildings_.push_back(e);
       }
-    });
+    };
+    if (ogr_)
+      forEach(pass2);
+    else
+      forEachFeature(path_, pass2, &spans);
     if (placement_.to) frame_.scaleError = transverseMercatorScaleError(east);
     buildings_.shrink_to_fit();  // held to the end: not the doubling's slack too
+    spans_.shrink_to_fit();
     streets_.shrink_to_fit();
   } catch (const InputError& e) {
     if (e.where.rfind(path_, 0) == 0) throw;
@@ -148,9 +197,10 @@ void TownStream::forEach(const std::function<void(nlohmann::json&)>& visit) cons
     forEachFeature(path_, visit);
 }
 
-Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double reach,
+Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double reach, double streetReach,
                       std::vector<std::size_t>& indices) const {
-  // Each tile's box, grown by the reach: a building in none is too far to matter to any label.
+  // Each tile's box around its outlines: a building farther than `reach` from all, or a street
+  // farther than `streetReach`, matters to no label.
   struct Box {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   };
@@ -161,39 +211,61 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
     for (std::size_t i : tile) {
       wanted[i] = true;
       for (int k = 0; k < 2; ++k) {
-        t.lo[k] = std::min(t.lo[k], buildings_[i].lo[k] - reach);
-        t.hi[k] = std::max(t.hi[k], buildings_[i].hi[k] + reach);
+        t.lo[k] = std::min(t.lo[k], buildings_[i].lo[k]);
+        t.hi[k] = std::max(t.hi[k], buildings_[i].hi[k]);
       }
     }
   }
-  auto near = [&](const double* l, const double* h) {
+  auto near = [&](const double* l, const double* h, double r) {
     for (const Box& t : boxes)
-      if (l[0] <= t.hi[0] && h[0] >= t.lo[0] && l[1] <= t.hi[1] && h[1] >= t.lo[1]) return true;
+      if (l[0] <= t.hi[0] + r && h[0] >= t.lo[0] - r && l[1] <= t.hi[1] + r && h[1] >= t.lo[1] - r) return true;
     return false;
   };
   for (std::size_t i = 0; i < buildings_.size(); ++i)
-    if (!wanted[i] && near(buildings_[i].lo, buildings_[i].hi)) wanted[i] = true;
+    if (!wanted[i] && near(buildings_[i].lo, buildings_[i].hi, reach)) wanted[i] = true;
   std::vector<bool> features;
   for (std::size_t i = 0; i < buildings_.size(); ++i)
     if (wanted[i]) {
       if (features.size() <= buildings_[i].feature) features.resize(buildings_[i].feature + 1, false);
       features[buildings_[i].feature] = true;
     }
-  // The wanted features read again, in the file's order.
+  // The wanted features read again, in the file's order: a GeoJSON file's each from its own
+  // bytes, any other source's by reading it through.
   nlohmann::json collection = collectionOf(members_);
   std::vector<std::size_t> first;  // each read feature's first building
   std::vector<std::size_t> placeOf;  // each read feature's place among the source's footprint features
-  std::size_t place = 0, feature = 0, building = 0;
-  forEach([&](nlohmann::json& f) {
-    const std::size_t at = feature++;
-    const bool line = isLineFeature(f);
-    if (!line) nameByPlace(f, place++);
-    if (line || at >= features.size() || !features[at]) return;
+  std::size_t building = 0;
+  auto take = [&](std::size_t at, std::size_t place, nlohmann::json& f) {
+    nameByPlace(f, place);
     while (building < buildings_.size() && buildings_[building].feature < at) ++building;
     first.push_back(building);
-    placeOf.push_back(place - 1);
+    placeOf.push_back(place);
     collection["features"].push_back(std::move(f));
-  });
+  };
+  if (!ogr_) {
+    std::ifstream in(path_, std::ios::binary);
+    if (!in) throw InputError(path_, "cannot read it");
+    std::string text;
+    for (std::size_t at = 0; at < features.size(); ++at) {
+      if (!features[at]) continue;
+      const Span& s = spans_.at(at);
+      text.resize(s.bytes);
+      in.seekg(static_cast<std::streamoff>(s.offset));
+      in.read(text.data(), static_cast<std::streamsize>(s.bytes));
+      nlohmann::json f = nlohmann::json::parse(text, nullptr, false);
+      if (!in || !f.is_object() || isLineFeature(f)) throw InputError(path_, "changed while it was read");
+      take(at, s.place, f);
+    }
+  } else {
+    std::size_t place = 0, feature = 0;
+    forEach([&](nlohmann::json& f) {
+      const std::size_t at = feature++;
+      const bool line = isLineFeature(f);
+      if (!line) ++place;
+      if (line || at >= features.size() || !features[at]) return;
+      take(at, place - 1, f);
+    });
+  }
   Town t = placePart(collection, placement_, options_);
   if (!t.streets.empty()) throw InputError(path_, "changed while it was read");
   Town out;
@@ -220,7 +292,7 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
         sl[d] = std::min(sl[d], p[d]);
         sh[d] = std::max(sh[d], p[d]);
       }
-    if (near(sl, sh)) out.streets.push_back(s);
+    if (near(sl, sh, streetReach)) out.streets.push_back(s);
   }
   return out;
 }

@@ -2,7 +2,9 @@
 // A footprint source read in parts (corbel-cli city with --tiles or --tileset,
 // docs/city.md "Memory"): one pass finds the frame, a second keeps of each building only what a
 // tiling needs (its centre, box and margin mark), and each part is read again from the file
-// with its neighbours, so that memory grows with a part, not with the town. A part's buildings
+// with its neighbours, so that memory grows with a part, not with the town: a GeoJSON file's
+// features each from their own bytes (found by the second pass), so that a part costs its own
+// features' parsing, not the file's; any other source's by reading the source through again. A part's buildings
 // are the ones a whole read gives, cleaned and placed alike; read with the buildings and streets
 // within the labels' reach of them, they are labelled alike too.
 #include "city/import.h"
@@ -33,10 +35,11 @@ class TownStream {
   // Marked as a margin building of a city-split tile (kMarginProperty): labelled, not built.
   bool margin(std::size_t i) const { return buildings_[i].margin; }
 
-  // The buildings of `tiles` (each a tile's buildings) with every other building and street
-  // within `reach` m of the box around a tile's outlines, read again from the file: a town
-  // whose building k is building indices[k] of the source (ascending).
-  Town part(const std::vector<std::vector<std::size_t>>& tiles, double reach, std::vector<std::size_t>& indices) const;
+  // The buildings of `tiles` (each a tile's buildings) with every other building within `reach`
+  // m and every street within `streetReach` m of the box around a tile's outlines, read again
+  // from the file: a town whose building k is building indices[k] of the source (ascending).
+  Town part(const std::vector<std::vector<std::size_t>>& tiles, double reach, double streetReach,
+            std::vector<std::size_t>& indices) const;
 
  private:
   struct Entry {
@@ -44,6 +47,13 @@ class TownStream {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};  // of the outline
     std::uint32_t feature = 0;  // the file's feature it came from
     bool margin = false;
+  };
+  // A GeoJSON file's feature: where its bytes lie in the file, and its place among the file's
+  // footprint features (its name when it has no id of its own).
+  struct Span {
+    std::uint64_t offset = 0;
+    std::uint32_t bytes = 0;
+    std::uint32_t place = 0;
   };
   // Calls `visit` on each of the source's features in order, one at a time.
   void forEach(const std::function<void(nlohmann::json&)>& visit) const;
@@ -56,6 +66,7 @@ class TownStream {
   Frame frame_;
   std::string attribution_;
   std::vector<Entry> buildings_;
+  std::vector<Span> spans_;  // a GeoJSON file's features, in order (read by itself, not through OGR)
   std::vector<Street> streets_;
 };
 

@@ -71,12 +71,6 @@ constexpr double kMaxLeafSide = 400;
 // and falls by.
 constexpr std::size_t kStreamRoundPerJob = 32;
 
-// Streamed into one glb, a part's buildings come in the source's order, which may scatter them
-// over the town: their neighbours are looked for around the boxes of the part's buildings in
-// each cell of this side (m), so that a part reads little more than its buildings and their
-// neighbours.
-constexpr double kOutPartCell = 50;
-
 // Hands the pages that freed memory left unused back to the system (the allocator keeps them
 // otherwise, and a streamed town's parts would leave their read JSON's pages behind each time):
 // jemalloc's, when the program runs on it (CMake's CORBEL_JEMALLOC), else glibc's.
@@ -180,9 +174,8 @@ int run(const CityRequest& r) {
   } else {
     source = r.footprints;
     // Every output takes the buildings one at a time but a --render's picture and an --out other
-    // than glb (made from a whole Scene). A glb with --instances is read whole: it holds every
-    // feature placement to the end anyway, and reading whole keeps it twice as fast.
-    const bool outGlb = !r.out.empty() && exportFormatFor(r.out) == ExportFormat::Glb && !r.instances;
+    // than glb (made from a whole Scene).
+    const bool outGlb = !r.out.empty() && exportFormatFor(r.out) == ExportFormat::Glb;
     if (r.streamBuildings > 0 && r.render.empty() && (r.out.empty() || outGlb))
       stream.emplace(source, read);
     else
@@ -198,8 +191,10 @@ int run(const CityRequest& r) {
   if (!stream) labels = city::labelTown(town, style.labels, r.jobs);
   const double readS = seconds();
 
-  // Tiles: buildings sorted by the tile of their first corner's centroid, so one tile is in
-  // memory at a time.
+  // Tiles: buildings sorted by the tile of their first corner's centroid (--tile-size squares),
+  // so that one tile is in memory at a time; without --tileset (which sorts them by its leaves)
+  // whatever the outputs, so that a glb --out's buildings come in that order too, read whole or
+  // streamed, and a streamed part is a few tiles' buildings and their neighbours.
   const bool tiled = !r.tiles.empty();
   std::vector<std::pair<long, long>> tileOf(count, {0, 0});
   std::vector<std::size_t> order(count);
@@ -220,10 +215,9 @@ int run(const CityRequest& r) {
   std::erase_if(order,
                 [&](std::size_t i) { return stream ? stream->margin(i) : city::marksMargin(town.buildings[i].properties); });
   const std::size_t margin = before - order.size();
-  if (tiled) {
+  if (r.tileset.empty())
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tileOf[a] < tileOf[b]; });
-    std::filesystem::create_directories(r.tiles);
-  }
+  if (tiled) std::filesystem::create_directories(r.tiles);
   // Tileset: a quadtree over the corners' means of the buildings in `order`, which is sorted by
   // leaf so that one leaf's buildings are in memory at a time.
   std::optional<city::Quadtree> tree;
@@ -399,7 +393,9 @@ int run(const CityRequest& r) {
     if (glbOut) glbOut->add(wholeId++, Kind::Shell, b.id, *mesh);
     if (r.instances) {
       if (tile) tileFeatures.add(b.features);
-      if (whole || glbOut) wholeFeatures.add(b.features);
+      if (whole) wholeFeatures.add(b.features);
+      // Into the glb being written: the placements to its temporary file, only the shapes kept.
+      if (glbOut) wholeFeatures.add(b.features, [&](std::size_t m, const RigidPlacement& p) { glbOut->place(m, p); });
       instancedFeatures += b.features.size();
     }
   };
@@ -416,36 +412,25 @@ int run(const CityRequest& r) {
                             [&](std::size_t d, std::size_t n) { drawBar(d, n, seconds()); });
   } else {
     // Parts of about --stream-buildings buildings in `order`, cut between tiles; each read with
-    // its neighbours within the labels' reach, labelled, built, written and dropped.
-    const double reach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
+    // its neighbours within the labels' reach, labelled, built, written and dropped. A label
+    // looks at other buildings' walls within gap_reach of its edges (the gap search), and at
+    // streets within street_reach of its centroid.
+    const double reach = style.labels.gapReach + 1;
+    const double streetReach = std::max(style.labels.gapReach, style.labels.streetReach) + 1;
     const unsigned jobs = r.jobs ? r.jobs : std::max(1u, std::thread::hardware_concurrency());
     options.chunk = std::min(options.chunk, kStreamRoundPerJob * jobs);
-    auto sameTile = [&](std::size_t a, std::size_t b) {
-      return tree ? leafOf[a] == leafOf[b] : tiled && tileOf[a] == tileOf[b];
-    };
+    auto sameTile = [&](std::size_t a, std::size_t b) { return tree ? leafOf[a] == leafOf[b] : tileOf[a] == tileOf[b]; };
     for (std::size_t start = 0; start < order.size();) {
       std::size_t end = std::min(order.size(), start + r.streamBuildings);
       while (end < order.size() && sameTile(order[end - 1], order[end])) ++end;
       std::vector<std::vector<std::size_t>> tiles;  // the part's buildings by tile
-      if (tiled || tree) {
-        for (std::size_t k = start; k < end; ++k) {
-          if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
-          tiles.back().push_back(order[k]);
-        }
-      } else {  // --out alone: the source's order, whose neighbours are looked for by small cells
-        std::map<std::pair<long, long>, std::size_t> cell;
-        for (std::size_t k = start; k < end; ++k) {
-          const Vec2 c = centres[order[k]];
-          const std::pair<long, long> key{static_cast<long>(std::floor(c[0] / kOutPartCell)),
-                                          static_cast<long>(std::floor(c[1] / kOutPartCell))};
-          const auto [at, fresh] = cell.try_emplace(key, tiles.size());
-          if (fresh) tiles.emplace_back();
-          tiles[at->second].push_back(order[k]);
-        }
+      for (std::size_t k = start; k < end; ++k) {
+        if (k == start || !sameTile(order[k - 1], order[k])) tiles.emplace_back();
+        tiles.back().push_back(order[k]);
       }
       town = {};  // the last part's, dropped before the next is read
       labels = {};
-      town = stream->part(tiles, reach, globalOf);
+      town = stream->part(tiles, reach, streetReach, globalOf);
       releaseFreedMemory();  // the part's reading (its JSON) is done with
       std::vector<std::size_t> partOrder;  // `order`'s run in the part's numbers
       for (std::size_t k = start; k < end; ++k)

@@ -373,7 +373,8 @@ void declareCity(CLI::App& app, Requests& requests) {
   whole(*c, "--jobs", r.jobs, 0, 1024, "N", "Worker threads (0: one per core).");
   text(*c, "--out", r.out, kExportTypes, "Write the whole town.");
   CLI::Option* tiles = text(*c, "--tiles", r.tiles, "DIR", "Write one glb per tile into DIR.");
-  number(*c, "--tile-size", r.tileSize, 1, 1e6, "M", "The tiles' side.");
+  number(*c, "--tile-size", r.tileSize, 1, 1e6, "M",
+         "The tiles' side. Without --tileset the buildings are built and written tile by tile, a glb --out's too.");
   CLI::Option* tileset = text(*c, "--tileset", r.tileset, "DIR",
        "Write a 3D Tiles 1.1 tileset into DIR (new or empty): tileset.json, and blocks and buildings per tile "
        "(docs/city.md).")
@@ -383,7 +384,7 @@ void declareCity(CLI::App& app, Requests& requests) {
   number(*c, "--ground", r.ground, -1e4, 1e4, "M", "The tileset's ground at the town's origin, above the WGS 84 ellipsoid.")
       ->needs(tileset);
   whole(*c, "--stream-buildings", r.streamBuildings, 0, 100000000, "N",
-        "With --tiles, --tileset or a glb --out without --instances, and no --render, read the footprints about N "
+        "With --tiles, --tileset or a glb --out, and no --render, read the footprints about N "
         "buildings (whole tiles) at a time; 0: read it whole (docs/city.md, \"Memory\").");
   text(*c, "--render", r.render, "PNG", "Render the town.");
   text(*c, "--around", r.around, "X,Y,R", "Only the buildings within R meters of (X, Y).");

@@ -13,6 +13,7 @@
 #include "core/manifold_order.h"
 #include "core/materials.h"
 #include "core/spill_buffer.h"
+#include "core/spill_streams.h"
 #include "core/textures.h"
 
 #include <meshoptimizer.h>
@@ -125,11 +126,21 @@ class GlbDocument {
   // chunk, which is encoded first when the bytes would take it past kChunkBytes); its bufferView
   // is set by write().
   int accessor(ViewKind kind, const void* data, std::size_t bytes, json a) {
+    return accessor(kind, bytes, [&](const auto& append) { append(data, bytes); }, std::move(a));
+  }
+
+  // The same over `bytes` that `fill(append)` hands to append(data, n) in pieces.
+  template <class Fill>
+  int accessor(ViewKind kind, std::size_t bytes, const Fill& fill, json a) {
     std::uint32_t slot = kind;  // uncompressed: the kind; compressed: the chunk's number
+    std::size_t filled = 0;
     if (!compress_) {
       SpillBuffer& v = views_[kind];
       a["byteOffset"] = v.size();
-      v.append(data, bytes);
+      fill([&](const void* data, std::size_t n) {
+        v.append(data, n);
+        filled += n;
+      });
     } else {
       std::vector<unsigned char>& open = open_[kind];
       if (!open.empty() && open.size() + bytes > kChunkBytes) closeChunk(kind);
@@ -138,10 +149,14 @@ class GlbDocument {
         chunks_.push_back({kind});
       }
       a["byteOffset"] = open.size();
-      const auto* p = static_cast<const unsigned char*>(data);
-      open.insert(open.end(), p, p + bytes);
+      fill([&](const void* data, std::size_t n) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        open.insert(open.end(), p, p + n);
+        filled += n;
+      });
       slot = static_cast<std::uint32_t>(openChunk_[kind]);
     }
+    if (filled != bytes) throw Error("a buffer view's bytes were not what its accessor counts");
     // A record per accessor: its slot (4 bytes), its JSON without the bufferView, a newline
     // (which a compact dump never holds).
     accessors_.append(&slot, 4);
@@ -827,14 +842,36 @@ struct GlbWriter::State {
     any = true;
   }
 
+  // A copy of instanced mesh `mesh`, as written: its translation (3 floats) onto stream 2 mesh,
+  // its rotation (4 normalized shorts) onto stream 2 mesh + 1.
+  void place(std::size_t mesh, const RigidPlacement& p) {
+    const auto [t, r] = encode(p);
+    placed.append(2 * mesh, t.data(), sizeof t);
+    placed.append(2 * mesh + 1, r.data(), sizeof r);
+  }
+
+  // A placement in glTF's frame (rotation C R Cᵀ for corbel's rotation R and C the change of
+  // axes): its translation as floats, its rotation as a quaternion of normalized shorts (each
+  // component within 1.6e-5).
+  static std::pair<std::array<float, 3>, std::array<std::int16_t, 4>> encode(const RigidPlacement& p) {
+    const Vec3 t = toGltf(p.translation);
+    // Column j of C R Cᵀ is C (R (Cᵀ e_j)); Cᵀ takes glTF's x, y, z to corbel's x, −z, y.
+    const auto q = quaternionOf(toGltf(p.ex), toGltf(p.ez), -toGltf(p.ey));
+    std::array<std::int16_t, 4> r{};
+    for (int k = 0; k < 4; ++k) r[k] = static_cast<std::int16_t>(std::lround(q[k] * 32767));
+    return {{static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])}, r};
+  }
+
   void write(const std::string& path) {
-    // Instanced meshes: a node each, its copies placed by EXT_mesh_gpu_instancing in glTF's
-    // frame (rotation C R Cᵀ for corbel's rotation R and C the change of axes): translations as
-    // floats, rotations as normalized 16-bit quaternions (each component within 1.6e-5).
+    // Instanced meshes: a node each, its copies (its own placements, then those given to place())
+    // placed by EXT_mesh_gpu_instancing: translations as floats, rotations as normalized 16-bit
+    // quaternions.
     std::vector<Vec3> poly;
     if (options.instances)
-      for (const InstancedMesh& im : *options.instances) {
-        if (im.placements.empty()) continue;
+      for (std::size_t i = 0; i < options.instances->size(); ++i) {
+        const InstancedMesh& im = (*options.instances)[i];
+        const std::size_t n = im.placements.size() + placed.size(2 * i) / 12;
+        if (n == 0) continue;
         MeshBuilder builder;
         for (std::size_t f = 0; f < im.mesh.faces.size(); ++f) {
           poly.clear();
@@ -850,18 +887,24 @@ struct GlbWriter::State {
         translations.reserve(im.placements.size() * 3);
         rotations.reserve(im.placements.size() * 4);
         for (const RigidPlacement& p : im.placements) {
-          const Vec3 t = toGltf(p.translation);
-          translations.insert(translations.end(),
-                              {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])});
-          // Column j of C R Cᵀ is C (R (Cᵀ e_j)); Cᵀ takes glTF's x, y, z to corbel's x, −z, y.
-          const auto q = quaternionOf(toGltf(p.ex), toGltf(p.ez), -toGltf(p.ey));
-          for (double x : q) rotations.push_back(static_cast<std::int16_t>(std::lround(x * 32767)));
+          const auto [t, r] = encode(p);
+          translations.insert(translations.end(), t.begin(), t.end());
+          rotations.insert(rotations.end(), r.begin(), r.end());
         }
-        const std::size_t n = im.placements.size();
-        const int t = g.accessor(kTranslations, translations.data(), translations.size() * 4,
-                                 {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}});
-        const int r = g.accessor(kRotations, rotations.data(), rotations.size() * 2,
-                                 {{"componentType", kShort}, {"normalized", true}, {"count", n}, {"type", "VEC4"}});
+        const int t = g.accessor(
+            kTranslations, n * 12,
+            [&](const auto& append) {
+              append(translations.data(), translations.size() * 4);
+              placed.read(2 * i, append);
+            },
+            {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}});
+        const int r = g.accessor(
+            kRotations, n * 8,
+            [&](const auto& append) {
+              append(rotations.data(), rotations.size() * 2);
+              placed.read(2 * i + 1, append);
+            },
+            {{"componentType", kShort}, {"normalized", true}, {"count", n}, {"type", "VEC4"}});
         node["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", t}, {"ROTATION", r}}}};
         g.use("EXT_mesh_gpu_instancing", true);
         sceneNodes.push_back(g.push("nodes", std::move(node)));
@@ -886,6 +929,7 @@ struct GlbWriter::State {
   const ExportOptions options;
   GlbDocument g;
   Materials materials;
+  SpillStreams placed;  // the copies given to place(), as written
   json sceneNodes = json::array();
   bool any = false;
 };
@@ -912,6 +956,8 @@ void GlbWriter::add(ObjectId id, Kind kind, const std::string& name, const MeshD
     }
   });
 }
+
+void GlbWriter::place(std::size_t mesh, const RigidPlacement& placement) { state_->place(mesh, placement); }
 
 void GlbWriter::write(const std::string& path) { state_->write(path); }
 

@@ -16,8 +16,9 @@ namespace {
 
 std::string reason() { return std::strerror(errno); }
 
-// A new file in the temporary folder, already unlinked.
-std::FILE* anonymousFile() {
+}  // namespace
+
+int unnamedTempFile() {
   std::error_code ec;
   const std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
   if (ec) throw Error("no folder for temporary files (TMPDIR): " + ec.message());
@@ -25,6 +26,14 @@ std::FILE* anonymousFile() {
   const int fd = ::mkstemp(name.data());
   if (fd < 0) throw Error("cannot make a temporary file in " + dir.string() + ": " + reason());
   ::unlink(name.c_str());
+  return fd;
+}
+
+namespace {
+
+// A new file in the temporary folder, already unlinked.
+std::FILE* anonymousFile() {
+  const int fd = unnamedTempFile();
   std::FILE* f = ::fdopen(fd, "w+b");
   if (!f) {
     ::close(fd);

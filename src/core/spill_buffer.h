@@ -10,6 +10,10 @@
 
 namespace corbel {
 
+// A new file in the system's temporary folder (TMPDIR), unlinked at once, open for reading and
+// writing: its descriptor, for the caller to close. Throws corbel::Error when it cannot be made.
+int unnamedTempFile();
+
 class SpillBuffer {
  public:
   // Up to `memoryBytes` are held in memory; the rest goes to a file made in the system's

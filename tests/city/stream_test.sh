@@ -58,10 +58,10 @@ out=(--tiles @ --tile-size 100)
 compare tiles "$footprints"
 n=$(ls "$work/tiles-part" | wc -l)
 (( n >= 16 )) || { echo "only $n tiles"; exit 1; }
-# One glb (--out; not with --instances, which reads whole): the buildings in the source's order,
-# plain and with --compress, and at full detail, where the glb's buffers pass the 64 KiB it keeps in memory of each and go through
-# temporary files.
-out=(--out @.glb)
+# One glb (--out): the buildings tile by tile, here of 40 m so that parts of about 60 are cut
+# between many tiles, plain and with --compress, and at full detail, where the glb's buffers pass
+# the 64 KiB it keeps in memory of each and go through temporary files.
+out=(--out @.glb --tile-size 40)
 ext=.glb
 compare glb "$footprints"
 compare glb-lonlat "$work/lonlat.geojson" --compress
@@ -73,6 +73,17 @@ compare glb-full "$footprints" --detail full --around 0,0,200 --textures on
 compare glb-full-compressed "$footprints" --detail full --around 0,0,200 --textures on --compress
 MIN_VIEWS_OF_A_KIND=3 node "$source_dir/tests/city/compare_glb.js" "$work/glb-full-part.glb" "$work/glb-full-compressed-part.glb"
 node "$source_dir/tests/export/validate_gltf.js" "$work/glb-full-compressed-part.glb"
+# With --instances, each feature shape's copies go to a temporary file as the buildings come (a
+# stream per shape, 4 KiB of each in memory): plain and compressed, enough copies of a shape
+# that they pass through the file (a shape with more than 512: 4 KiB of rotations); the
+# compressed file decodes to the plain one and passes the Khronos validator.
+compare glb-instances "$footprints" --detail full --around 0,0,200 --instances
+compare glb-instances-compressed "$footprints" --detail full --around 0,0,200 --instances --compress
+node -e 'const j = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  if (!(j.instanced_features > 512 * j.feature_meshes)) { console.log(`too few copies: ${JSON.stringify(j)}`); process.exit(1); }' \
+  "$work/glb-instances-part.json"
+node "$source_dir/tests/city/compare_glb.js" "$work/glb-instances-part.glb" "$work/glb-instances-compressed-part.glb"
+node "$source_dir/tests/export/validate_gltf.js" "$work/glb-instances-compressed-part.glb"
 ext=
 # A run that fails while the glb is written (no temporary folder to spill into) says why and
 # leaves the existing --out as it was, with nothing beside it.

@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 
 #include <functional>
@@ -133,6 +135,64 @@ TEST(GlbWriter, WritesTheFileExportSceneWritesFromAScene) {
         expectSameFile(o, std::string(textures ? "textured" : "plain") + (compress ? ", compressed" : "") +
                               (withInstances ? ", instances" : ""));
       }
+}
+
+// Copies handed to place() rather than held in the meshes' placements: the same file, byte for
+// byte, as exportScene writes with every copy in memory. Enough copies of two shapes, given in
+// turn, that each shape's go through the temporary file in many blocks; one shape keeps some of
+// its copies itself (those come first), and a third shape is known before any copy of it is.
+TEST(GlbWriter, CopiesGivenToPlaceAreThoseHeldInTheMeshes) {
+  TempDir dir, tmp;
+  const char* before = std::getenv("TMPDIR");
+  const std::string saved = before ? before : "";
+  setenv("TMPDIR", tmp.path().c_str(), 1);
+  std::vector<InstancedMesh> held = instances();
+  InstancedMesh door;
+  door.name = "door";
+  door.mesh = prism({{-0.6, 0}, {0.6, 0}, {0.6, 0.2}, {-0.6, 0.2}}, 0, 2.1, "wood", "door");
+  held.push_back(door);
+  std::vector<std::pair<std::size_t, corbel::RigidPlacement>> copies;
+  for (int k = 0; k < 5000; ++k) {
+    corbel::RigidPlacement p;
+    const double a = 0.001 * k;  // turned about z
+    p.translation = Vec3(3.7 * (k % 90), 11.0 * (k / 90), 0.1 * (k % 7));
+    p.ex = Vec3(std::cos(a), std::sin(a), 0);
+    p.ey = Vec3(-std::sin(a), std::cos(a), 0);
+    copies.emplace_back(k % 3 ? 0 : 1, p);
+    held[copies.back().first].placements.push_back(p);
+  }
+  InstancedMesh unused;
+  unused.name = "chimney pot";
+  unused.mesh = prism({{0, 0}, {0.3, 0}, {0.3, 0.3}, {0, 0.3}}, 0, 0.5, "clay", "chimney_pot");
+  held.push_back(unused);
+  for (bool compress : {false, true}) {
+    SCOPED_TRACE(compress);
+    std::vector<InstancedMesh> shapes = held;
+    for (InstancedMesh& m : shapes) m.placements.clear();
+    shapes[0].placements = instances()[0].placements;  // the window's own three, first
+    ExportOptions a = options(false, compress), b = a;
+    a.instances = &held;
+    b.instances = &shapes;
+    Scene scene;
+    GlbWriter writer(b);
+    for (const Object& obj : objects()) {
+      scene.replaceObject(obj.id, obj.kind, obj.name, obj.mesh);
+      writer.add(obj.id, obj.kind, obj.name, obj.mesh);
+    }
+    for (const auto& [mesh, p] : copies) writer.place(mesh, p);
+    exportScene(scene, dir.file("scene.glb"), a);
+    writer.write(dir.file("writer.glb"));
+    const std::string x = readText(dir.file("scene.glb")), y = readText(dir.file("writer.glb"));
+    if (!compress) {
+      EXPECT_GT(x.size(), 5000u * 20);  // a copy takes 20 bytes uncompressed
+    }
+    EXPECT_TRUE(x == y) << "sizes " << x.size() << " and " << y.size();
+  }
+  if (before)
+    setenv("TMPDIR", saved.c_str(), 1);
+  else
+    unsetenv("TMPDIR");
+  EXPECT_TRUE(tmp.entries().empty());
 }
 
 TEST(GlbWriter, KeepsToTheIncludeFilterAndTexturedChoice) {
