@@ -286,6 +286,9 @@ void declareSimulate(CLI::App& app, Requests& requests) {
   number(*c, "--drop-height", r.dropHeight, 0, 1e4, "M", "The height it falls from.")->needs(drop);
   number(*c, "--at", r.at, 0, 1e5, "T", "When the shake, removals, breaks and drop happen (seconds).");
   number(*c, "--friction", r.friction, 0, 100, "A", "The friction coefficient (default: the model's).");
+  choice(*c, "--solver", r.solver, {"impulses", "qp"},
+         "The contact solver: Bullet's sequential impulses, or a QP per step solved to optimality\n"
+         "(what the statics analysis calls standing stays still; slower).");
   text(*c, "--frames", r.frames, "DIR", "Write a PNG per frame into DIR.");
   number(*c, "--fps", r.fps, 1, 240, "N", "Frames per second for --frames.");
   addSize(*c, "--size", r.size, 16, 4096, "The frames' size.");

@@ -146,6 +146,7 @@ int run(const SimulateRequest& r) {
   const Model model = modelFrom(r);
   sim::SimSettings settings;
   settings.friction = r.friction.value_or(model.friction);
+  settings.solver = r.solver == "qp" ? sim::Solver::ContactQp : sim::Solver::SequentialImpulse;
   sim::Session session(model.assembly, settings);
   const BBox moving = sim::movingBounds(model.assembly);
 
@@ -217,6 +218,9 @@ int run(const SimulateRequest& r) {
   out["seconds"] = session.time();
   out["step"] = settings.timeStep;
   out["steps"] = session.steps();
+  out["solver"] = r.solver;
+  if (settings.solver == sim::Solver::ContactQp)
+    out["qp"] = {{"iterations", session.qpIterations()}, {"fallback_steps", session.qpFailures()}};
   out["perturbed_at"] = at;
   out["shake"] = {{"velocity", shakeVelocity}, {"duration", shakeVelocity != 0 ? shakeDuration : 0.0}};
   nlohmann::ordered_json removed = nlohmann::json::array(), fallen = nlohmann::json::array();

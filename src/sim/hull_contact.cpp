@@ -36,11 +36,25 @@ btScalar gapAlong(const btConvexPolyhedron& a, const btTransform& ta, const btCo
   return loB - hiA;
 }
 
+// The clipped points of one pair, before they go into the manifold.
+struct ClippedPoints : btDiscreteCollisionDetectorInterface::Result {
+  struct Point {
+    btVector3 normal, onB;
+    btScalar depth;
+  };
+  std::vector<Point> points;
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3& normal, const btVector3& onB, btScalar depth) override {
+    points.push_back({normal, onB, depth});
+  }
+};
+
 class ClippedHullContact : public btActivatingCollisionAlgorithm {
  public:
   ClippedHullContact(const btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* a,
-                     const btCollisionObjectWrapper* b)
-      : btActivatingCollisionAlgorithm(ci, a, b) {}
+                     const btCollisionObjectWrapper* b, bool fresh)
+      : btActivatingCollisionAlgorithm(ci, a, b), fresh_(fresh) {}
   ~ClippedHullContact() override {
     if (manifold_) m_dispatcher->releaseManifold(manifold_);
   }
@@ -81,12 +95,24 @@ class ClippedHullContact : public btActivatingCollisionAlgorithm {
         if (n.length2() < 1e-12) continue;
         consider(n.normalized(), edgeBias);
       }
-    if (best <= threshold) {
-      // Bullet's clipping takes the normal from B towards A and reports points on B.
-      btPolyhedralContactClipping::clipHullAgainstHull(-axis, a, b, ta, tb, best - threshold, threshold, vertsB1_,
-                                                       vertsB2_, *out);
+    if (!fresh_) {
+      if (best <= threshold) {
+        // Bullet's clipping takes the normal from B towards A and reports points on B.
+        btPolyhedralContactClipping::clipHullAgainstHull(-axis, a, b, ta, tb, best - threshold, threshold, vertsB1_,
+                                                         vertsB2_, *out);
+      }
+      out->refreshContactPoints();
+      return;
     }
-    out->refreshContactPoints();
+    // Fresh points every step, the contact polygon of the blocks as they are: Bullet's manifold
+    // would match each new point to the nearest of its old ones and keep old points that the
+    // clipping no longer finds (its solver warm-starts from them).
+    ClippedPoints clipped;
+    if (best <= threshold)
+      btPolyhedralContactClipping::clipHullAgainstHull(-axis, a, b, ta, tb, best - threshold, threshold, vertsB1_,
+                                                       vertsB2_, clipped);
+    manifold_->clearManifold();
+    for (const ClippedPoints::Point& p : clipped.points) out->addContactPoint(p.normal, p.onB, p.depth);
   }
 
   btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
@@ -98,15 +124,18 @@ class ClippedHullContact : public btActivatingCollisionAlgorithm {
   }
 
   struct CreateFunc : btCollisionAlgorithmCreateFunc {
+    explicit CreateFunc(bool fresh) : fresh(fresh) {}
+    bool fresh;
     btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
                                                    const btCollisionObjectWrapper* a,
                                                    const btCollisionObjectWrapper* b) override {
       void* mem = ci.m_dispatcher1->allocateCollisionAlgorithm(sizeof(ClippedHullContact));
-      return new (mem) ClippedHullContact(ci, a, b);
+      return new (mem) ClippedHullContact(ci, a, b, fresh);
     }
   };
 
  private:
+  bool fresh_;
   btPersistentManifold* manifold_ = nullptr;
   btVertexArray vertsB1_, vertsB2_;
 };
@@ -166,9 +195,10 @@ void setExactFaces(btConvexHullShape& shape, const std::vector<btVector3>& verti
   shape.setPolyhedralFeatures(poly);
 }
 
-void useClippedHullContacts(btCollisionDispatcher& dispatcher) {
-  static ClippedHullContact::CreateFunc create;
-  dispatcher.registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, &create);
+void useClippedHullContacts(btCollisionDispatcher& dispatcher, bool fresh) {
+  static ClippedHullContact::CreateFunc kept(false), renewed(true);
+  dispatcher.registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE,
+                                         fresh ? &renewed : &kept);
 }
 
 }  // namespace corbel::sim

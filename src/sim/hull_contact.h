@@ -22,7 +22,10 @@ namespace corbel::sim {
 void setExactFaces(btConvexHullShape& shape, const std::vector<btVector3>& vertices,
                    const std::vector<std::vector<int>>& faces);
 
-// Makes `dispatcher` use the clipped contacts for every pair of convex hull shapes.
-void useClippedHullContacts(btCollisionDispatcher& dispatcher);
+// Makes `dispatcher` use the clipped contacts for every pair of convex hull shapes. `fresh`:
+// each step's points replace the manifold's (the contact QP wants the contacts as they are);
+// otherwise Bullet's manifold merges them with its own, as its sequential-impulse solver, which
+// warm-starts from the old points' impulses, expects.
+void useClippedHullContacts(btCollisionDispatcher& dispatcher, bool fresh = false);
 
 }  // namespace corbel::sim

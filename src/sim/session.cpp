@@ -1,6 +1,7 @@
 #include "sim/session.h"
 
 #include "core/error.h"
+#include "sim/contact_qp.h"
 #include "sim/hull_contact.h"
 #include "sim/split.h"
 #include "statics/tolerances.h"
@@ -61,11 +62,17 @@ ShakeSpec paperShake(const statics::Assembly& design) {
 // One Bullet world. Rebuilt from scratch by reset(), so no cached contact, warm-start impulse
 // or broad-phase pair order survives into a new run.
 struct Session::World {
+  World(const SimSettings& s, double touching)
+      : qp(s.solver == Solver::ContactQp ? std::make_unique<ContactQpSolver>(s.friction, touching) : nullptr),
+        solver(qp ? &qp->fallback() : &impulses),
+        world(&dispatcher, &broadphase, qp ? static_cast<btConstraintSolver*>(qp.get()) : &impulses, &config) {}
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  btSequentialImpulseConstraintSolver impulses;
+  std::unique_ptr<ContactQpSolver> qp;          // the solver with Solver::ContactQp
+  btSequentialImpulseConstraintSolver* solver;  // Bullet's: the solver, or the QP's fallback
+  btDiscreteDynamicsWorld world;
   std::vector<std::unique_ptr<btConvexHullShape>> shapes;
   std::vector<std::unique_ptr<btRigidBody>> bodies;  // per design block, then per load
   std::vector<btTransform> designFrames;             // each body's principal frame as built
@@ -92,7 +99,7 @@ struct Session::World {
     shape->recalcLocalAabb();
     shape->setMargin(kCollisionMargin);
     // The faces contact clipping uses: the block's own, or Bullet's rounded rebuild of them.
-    if (s.exactContacts)
+    if (s.exactContacts || s.solver == Solver::ContactQp)
       setExactFaces(*shape, local, block.faces);
     else
       shape->initializePolyhedralFeatures();
@@ -158,9 +165,13 @@ void Session::reset() {
 }
 
 void Session::build() {
-  world_ = std::make_unique<World>();
+  BBox box;
+  for (const statics::Block& b : design_.blocks)
+    for (const Vec3& v : b.vertices) box.add(v);
+  world_ = std::make_unique<World>(settings_, statics::lengthTolerance(box));
   World& w = *world_;
-  if (settings_.exactContacts) useClippedHullContacts(w.dispatcher);
+  if (settings_.exactContacts || settings_.solver == Solver::ContactQp)
+    useClippedHullContacts(w.dispatcher, settings_.solver == Solver::ContactQp);
   w.world.getDispatchInfo().m_deterministicOverlappingPairs = true;
   btContactSolverInfo& info = w.world.getSolverInfo();
   info.m_numIterations = settings_.solverIterations;
@@ -170,7 +181,7 @@ void Session::build() {
   info.m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_SIMD | SOLVER_USE_2_FRICTION_DIRECTIONS |
                       SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
   if (settings_.randomOrder) info.m_solverMode |= SOLVER_RANDMIZE_ORDER;
-  w.solver.setRandSeed(settings_.seed);
+  w.solver->setRandSeed(settings_.seed);
   const Vec3 g = design_.gravity * design_.g;
   for (std::size_t i = 0; i < design_.blocks.size(); ++i) {
     const statics::Block& b = design_.blocks[i];
@@ -201,6 +212,9 @@ void Session::build() {
   }
   applyGravity();
 }
+
+long Session::qpFailures() const { return world_->qp ? world_->qp->failures() : 0; }
+long Session::qpIterations() const { return world_->qp ? world_->qp->iterations() : 0; }
 
 void Session::applyGravity() {
   const bool shaking = steps_ < shakeUntil_;

@@ -92,6 +92,10 @@ class Session {
 
   const statics::Assembly& design() const { return design_; }
   const SimSettings& settings() const { return settings_; }
+  // With Solver::ContactQp: the steps since reset whose QP was left to Bullet's solver (see
+  // ContactQpSolver::failures) and the interior-point iterations taken; 0 otherwise.
+  long qpFailures() const;
+  long qpIterations() const;
   const MassProperties& massProperties(int block) const { return mass_[block]; }
   double time() const { return steps_ * settings_.timeStep; }
   long steps() const { return steps_; }

@@ -38,7 +38,18 @@ inline constexpr double kPaperModelWidth = 10.0;           // m
 // voussoir's thickness out of place, a drum half off its seat.
 inline constexpr double kFallenFraction = 0.5;
 
+// How the contact impulses of a step are found.
+enum class Solver {
+  // A convex QP per step solved to optimality by the statics kernel's interior-point method
+  // (contact_qp.h): an assembly the statics analysis calls standing stays still.
+  ContactQp,
+  // Bullet's sequential-impulse solver, `solverIterations` Gauss–Seidel sweeps a step: faster
+  // per step, but on indeterminate vaults what it leaves becomes creep (docs/sim.md).
+  SequentialImpulse,
+};
+
 struct SimSettings {
+  Solver solver = Solver::SequentialImpulse;
   double timeStep = kTimeStep;
   int solverIterations = kSolverIterations;
   // α, the friction coefficient of the statics analysis (MasonrySpec::friction). Bullet

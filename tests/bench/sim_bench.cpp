@@ -65,6 +65,16 @@ void paperModelRuns(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK_CAPTURE(BM_SimulatePaperModel, chapel, std::string("chapel"))->Apply(paperModelRuns);
 BENCHMARK_CAPTURE(BM_SimulatePaperModel, abbey, std::string("abbey"))->Apply(paperModelRuns);
+BENCHMARK_CAPTURE(BM_SimulatePaperModel, groin, std::string("groin"))->Apply(paperModelRuns);
+
+// The same with the contact QP (sim/contact_qp.h) in place of Bullet's sequential impulses.
+void BM_SimulateWithTheContactQp(benchmark::State& state, const std::string& name) {
+  sim::SimSettings settings;
+  settings.solver = sim::Solver::ContactQp;
+  simulate(state, projectModel(name), settings, state.range(0) != 0);
+}
+BENCHMARK_CAPTURE(BM_SimulateWithTheContactQp, chapel, std::string("chapel"))->Apply(paperModelRuns);
+BENCHMARK_CAPTURE(BM_SimulateWithTheContactQp, groin, std::string("groin"))->Apply(paperModelRuns);
 
 // Arguments: rings, 1 for the shake (sim::paperShake: 5.4 m/s within 1/45 s on 18 rings,
 // 7.6 m/s within 1/32 s on 36), the solver's iterations.

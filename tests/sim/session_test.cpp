@@ -447,3 +447,80 @@ TEST(Session, ExactContactsKeepAnArchWithAMarginStill) {
 
 }  // namespace
 }  // namespace corbel::sim
+
+namespace corbel::sim {
+namespace {
+
+SimSettings contactQp() {
+  SimSettings s;
+  s.solver = Solver::ContactQp;
+  return s;
+}
+
+// The contact QP (contact_qp.h) solves each step to optimality, so what is in equilibrium
+// stays exactly where it is: a box, two cubes, a box held by friction on a 30° slope (below
+// atan 0.7 = 35°) move less than a nanometre in 5 s. On 40° the box slides as Coulomb's law
+// gives, ½ g (sin θ − α cos θ) t². The relaxed contact law would lift a sliding block by α·|v_t|
+// a step (2.9 mm after 1 s here) were the step's starting slip not added back; what is left is
+// the slip the step adds, α a h² (a = g (sin θ − α cos θ), h the step): 12.6 µm.
+TEST(ContactQp, HoldsWhatIsInEquilibriumStillAndSlidesAsCoulomb) {
+  for (const statics::Assembly& as : {stack(0.4, {0}), stack(0.3, {0, 0})}) {
+    Session s(as, contactQp());
+    s.runUntil(5.0);
+    EXPECT_LT(largest(s.maxDisplacement()), 1e-9) << as.blocks.size() - 1 << " cubes";
+    EXPECT_EQ(s.qpFailures(), 0);
+  }
+  const double g = 9.81, mu = 0.7;
+  auto onSlope = [&](double thetaDeg) {
+    statics::Assembly as;
+    as.blocks = {statics::boxBlock("box", Vec3(-0.2, -0.2, 0), Vec3(0.2, 0.2, 0.2)), ground()};
+    const double t = thetaDeg * M_PI / 180;
+    as.gravity = Vec3(std::sin(t), 0, -std::cos(t));
+    return as;
+  };
+  Session held(onSlope(30), contactQp());
+  held.runUntil(5.0);
+  EXPECT_LT(held.maxDisplacement()[0], 1e-9);
+  const double theta = 40 * M_PI / 180;
+  Session slides(onSlope(40), contactQp());
+  slides.runUntil(1.0);
+  const double a = g * (std::sin(theta) - mu * std::cos(theta));
+  EXPECT_NEAR(slides.poses()[0].translation[0], a / 2, 0.01 * a / 2);
+  const double h = slides.settings().timeStep;
+  EXPECT_GE(slides.poses()[0].translation[2], -1e-9) << "not into the slope";
+  EXPECT_LT(slides.poses()[0].translation[2], 1.5 * mu * a * h * h) << "on it";
+  EXPECT_EQ(slides.qpFailures(), 0);
+}
+
+// What cannot stand still falls with the QP: the two tipping stacks, the arch at 80 % of its
+// least thickness, the cube pushed at its top edge past W/2.
+TEST(ContactQp, WhatCannotStandFalls) {
+  const double a = 0.3;
+  for (const auto& offsets : {std::vector<double>{0, 0.6 * a}, std::vector<double>{0, 0.3 * a, 0.45 * a}}) {
+    Session s(stack(a, offsets), contactQp());
+    s.runUntil(3.0);
+    EXPECT_TRUE(s.fallen(int(offsets.size()) - 1)) << offsets.size() << " cubes";
+  }
+  const double least = statics::minimumArchThickness(archOf(20, 0.2), {}, 1e-4);
+  Session arch(statics::semicircularArch(archOf(20, 0.8 * least)), contactQp());
+  arch.runUntil(3.0);
+  EXPECT_GE(arch.fallenBlocks().size(), 10u);
+  const double W = 2400 * 9.81;
+  statics::Assembly pushed = stack(1.0, {0.0});
+  pushed.blocks[0].pointLoads.push_back({Vec3(0.0, 0.5, 1.0), Vec3(1.1 * W / 2, 0, 0)});
+  Session s(pushed, contactQp());
+  s.runUntil(2.0);
+  EXPECT_TRUE(s.fallen(0));
+}
+
+TEST(ContactQp, RunsAreBitwiseRepeatable) {
+  auto run = [] {
+    Session s(stack(0.3, {0, 0.3 * 0.3, 0.45 * 0.3}), contactQp());
+    s.runUntil(0.5);
+    return s.poses();
+  };
+  EXPECT_EQ(run(), run());
+}
+
+}  // namespace
+}  // namespace corbel::sim
