@@ -105,7 +105,7 @@ struct SimulateRequest {
   std::string shake, drop, frames;
   double dropMass = 100, dropHeight = 0.5;
   std::optional<double> friction;
-  std::string solver = "impulses";
+  std::string solver = "qp";
   Size size{640, 480};
 };
 

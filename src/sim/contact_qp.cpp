@@ -18,10 +18,10 @@ namespace {
 // where on each, its frame and gap.
 struct ContactPoint {
   int a = -1, b = -1;
-  btVector3 onA, onB;  // world points on A and B
-  btVector3 n, t1, t2; // n from B towards A; the impulse p on A is p_n n + p_t1 t1 + p_t2 t2
-  double gap = 0;      // m, negative in overlap
-  double slip = 0;     // m/s, |w·t1| + |w·t2| of the relative velocity w at the step's start
+  btVector3 onA, onB;   // world points on A and B
+  btVector3 n, t1, t2;  // n from B towards A; the impulse p on A is p_n n + p_t1 t1 + p_t2 t2
+  double gap = 0;       // m, negative in overlap
+  double slip = 0;      // m/s, |w·t1| + |w·t2| of the relative velocity w at the step's start
 };
 
 // The friction axes of a manifold: along an edge of its contact polygon (its points in order
@@ -109,8 +109,10 @@ btScalar ContactQpSolver::solveGroup(btCollisionObject** bodies, int numBodies, 
       // Faces within the touching distance touch (the statics kernel's tolerance).
       c.gap = std::abs(double(p.getDistance())) <= touching_ ? 0.0 : double(p.getDistance());
       btVector3 w(0, 0, 0);
-      if (a >= 0) w += moving[std::size_t(a)]->getVelocityInLocalPoint(c.onA - moving[std::size_t(a)]->getCenterOfMassPosition());
-      if (b >= 0) w -= moving[std::size_t(b)]->getVelocityInLocalPoint(c.onB - moving[std::size_t(b)]->getCenterOfMassPosition());
+      if (a >= 0)
+        w += moving[std::size_t(a)]->getVelocityInLocalPoint(c.onA - moving[std::size_t(a)]->getCenterOfMassPosition());
+      if (b >= 0)
+        w -= moving[std::size_t(b)]->getVelocityInLocalPoint(c.onB - moving[std::size_t(b)]->getCenterOfMassPosition());
       c.slip = std::abs(double(w.dot(c.t1))) + std::abs(double(w.dot(c.t2)));
       contacts.push_back(c);
     }
@@ -215,9 +217,9 @@ btScalar ContactQpSolver::solveGroup(btCollisionObject** bodies, int numBodies, 
   options.feasibilityCorrections = 0;  // nor are its blocks tension and compression
   const statics::IpmResult r = statics::solveBlockQP(qp, options);
   iterations_ += r.iterations;
-  const bool solved = r.x.allFinite() && (r.status == statics::SolveStatus::Optimal ||
-                                          r.status == statics::SolveStatus::ReducedAccuracy ||
-                                          (r.primalResidual <= 1e-9 && r.dualResidual <= 1e-7 && r.gap <= 1e-7));
+  const bool solved = r.x.allFinite() &&
+                      (r.status == statics::SolveStatus::Optimal || r.status == statics::SolveStatus::ReducedAccuracy ||
+                       (r.primalResidual <= 1e-9 && r.dualResidual <= 1e-7 && r.gap <= 1e-7));
   if (!solved) {
     ++failures_;
     return fallback_.solveGroup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info,

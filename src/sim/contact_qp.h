@@ -15,11 +15,12 @@
 // the statics equilibrium QP (6 equations a body, a small block of variables a contact
 // vertex), so the statics kernel's interior-point method (statics/ipm.h) solves it. At rest the
 // QP's optimum is v = 0 exactly when the contact impulses can hold the weight, i.e. when the
-// statics analysis calls the assembly standing: what stands, stands still, with no creep.
+// statics analysis calls the assembly standing: where the QP is solved, what stands stays
+// still, with no creep.
 //
-// Bullet's sequential-impulse solver, which the simulation used before, stops after a fixed
-// number of Gauss–Seidel sweeps; on statically indeterminate vaults what it leaves every step
-// becomes creep (docs/sim.md, "Contacts and the solver").
+// Bullet's sequential-impulse solver, the simulation's default, stops after a fixed number of
+// Gauss–Seidel sweeps; on statically indeterminate vaults what it leaves every step becomes
+// creep (docs/sim.md, "Step and solver" and "The contact QP").
 #include <BulletDynamics/ConstraintSolver/btConstraintSolver.h>
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
 
@@ -39,15 +40,17 @@ class ContactQpSolver : public btConstraintSolver {
   btConstraintSolverType getSolverType() const override { return BT_SEQUENTIAL_IMPULSE_SOLVER; }
 
   // Steps whose QP the interior-point method could not solve; each was left to Bullet's
-  // sequential-impulse solver (`fallback`) instead. Zero on every case measured.
+  // sequential-impulse solver (`fallback`) instead (the mosque's flyers, an arch with no kern
+  // margin: docs/sim.md).
   long failures() const { return failures_; }
   // Interior-point iterations over all steps so far (for the benchmarks and the docs).
   long iterations() const { return iterations_; }
-  // The largest gap (p_c,n > 0 allowed to close it) a contact may pull shut in one step is φ;
-  // an overlap is pushed apart at this fraction of itself a step (Baumgarte), as Bullet's ERP.
+  // A contact may close its gap φ in one step; an overlap is pushed apart by this fraction of
+  // itself a step (Baumgarte stabilisation, as Bullet's ERP).
   static constexpr double kOverlapRecovery = 0.2;
 
   btSequentialImpulseConstraintSolver& fallback() { return fallback_; }
+  double touching() const { return touching_; }
 
  private:
   double friction_, touching_;

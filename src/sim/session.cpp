@@ -72,6 +72,7 @@ struct Session::World {
   btSequentialImpulseConstraintSolver impulses;
   std::unique_ptr<ContactQpSolver> qp;          // the solver with Solver::ContactQp
   btSequentialImpulseConstraintSolver* solver;  // Bullet's: the solver, or the QP's fallback
+  std::unique_ptr<btCollisionAlgorithmCreateFunc> faceContacts;  // with Solver::ContactQp
   btDiscreteDynamicsWorld world;
   std::vector<std::unique_ptr<btConvexHullShape>> shapes;
   std::vector<std::unique_ptr<btRigidBody>> bodies;  // per design block, then per load
@@ -170,8 +171,10 @@ void Session::build() {
     for (const Vec3& v : b.vertices) box.add(v);
   world_ = std::make_unique<World>(settings_, statics::lengthTolerance(box));
   World& w = *world_;
-  if (settings_.exactContacts || settings_.solver == Solver::ContactQp)
-    useClippedHullContacts(w.dispatcher, settings_.solver == Solver::ContactQp);
+  if (settings_.solver == Solver::ContactQp)
+    w.faceContacts = useFaceContacts(w.dispatcher, w.qp->touching());
+  else if (settings_.exactContacts)
+    useClippedHullContacts(w.dispatcher);
   w.world.getDispatchInfo().m_deterministicOverlappingPairs = true;
   btContactSolverInfo& info = w.world.getSolverInfo();
   info.m_numIterations = settings_.solverIterations;
@@ -244,8 +247,13 @@ void Session::applyPointLoads() {
       body->applyCentralForce(bt(l.force));
       torque += (motion * bt(l.at) - body->getCenterOfMassPosition()).cross(bt(l.force));
     }
-    body->setAngularVelocity(body->getAngularVelocity() +
-                             body->getInvInertiaTensorWorld() * torque * settings_.timeStep);
+    // The contact QP takes the torque with the step's other loads (its friction sees it), and
+    // the velocity a step starts with must be the last step's: it is the slip it compensates.
+    if (settings_.solver == Solver::ContactQp)
+      body->applyTorque(torque);
+    else
+      body->setAngularVelocity(body->getAngularVelocity() +
+                               body->getInvInertiaTensorWorld() * torque * settings_.timeStep);
   }
 }
 

@@ -11,8 +11,9 @@ namespace corbel::sim {
 // of a standing arch grows with the step (docs/sim.md).
 inline constexpr double kTimeStep = 1.0 / 240.0;
 
-// Sequential-impulse iterations per step. The solver never fully converges on a statically
-// indeterminate structure, and what it leaves each step becomes creep: an 8-voussoir arch at
+// Sequential-impulse iterations per step (Solver::SequentialImpulse). That solver never fully
+// converges on a statically indeterminate structure, and what it leaves each step becomes
+// creep: an 8-voussoir arch at
 // 1.5 times its middle-third thickness moves 1.9 mm in 5 s with 100 iterations and 0.25 mm
 // with 200 (with exact contacts 0.73, 0.11 and, at 400, 0.013 mm). Time per step grows about
 // linearly with the iterations.
@@ -49,7 +50,7 @@ enum class Solver {
 };
 
 struct SimSettings {
-  Solver solver = Solver::SequentialImpulse;
+  Solver solver = Solver::ContactQp;
   double timeStep = kTimeStep;
   int solverIterations = kSolverIterations;
   // α, the friction coefficient of the statics analysis (MasonrySpec::friction). Bullet
@@ -60,11 +61,12 @@ struct SimSettings {
   // when `randomOrder` is on; a fixed seed and step give bitwise-equal runs either way.
   std::uint32_t seed = 1;
   bool randomOrder = false;
-  // Contacts between blocks from the blocks' own faces, clipped whether they overlap or just
-  // touch (hull_contact.h), instead of Bullet's: its faces rounded to 1/10216 of each block's
-  // extent, clipped only once GJK finds the blocks overlapping. Exact contacts let a box rest to
-  // 1 µm and halve an arch's creep, but on the shipped examples they are no uniform gain (the
-  // mosque hall, which has no kern margin, comes down; docs/sim.md), so they are off by default.
+  // With Bullet's solver: contacts between blocks from the blocks' own faces, clipped whether
+  // they overlap or just touch (hull_contact.h), instead of Bullet's: its faces rounded to
+  // 1/10216 of each block's extent, clipped only once GJK finds the blocks overlapping. They let
+  // a box rest to 1 µm and halve an arch's creep, but on the shipped examples they are no
+  // uniform gain for that solver (docs/sim.md), so they are off for it. The contact QP always
+  // clips the blocks' own faces (useFaceContacts).
   bool exactContacts = false;
   // An endless floor level with the bottom of the model's fixed blocks (under its ground slab),
   // so a block thrown past the slab's edge lands instead of falling for ever.

@@ -28,6 +28,8 @@ double signedArea(const std::vector<Vec2>& p) {
   return 0.5 * s;
 }
 
+}  // namespace
+
 // `subject` without repeated points (within `tol`) and without points on the line of their
 // neighbours; empty when fewer than 3 are left.
 std::vector<Vec2> simplified(std::vector<Vec2> subject, double tol) {
@@ -51,8 +53,6 @@ std::vector<Vec2> simplified(std::vector<Vec2> subject, double tol) {
   return subject.size() >= 3 ? subject : std::vector<Vec2>{};
 }
 
-// Sutherland–Hodgman clip of `subject` by the convex counter-clockwise polygon `clip`.
-// Points within `tol` of a clip line count as inside, so identical faces clip to themselves.
 std::vector<Vec2> clipConvex(std::vector<Vec2> subject, const std::vector<Vec2>& clip, double tol) {
   for (std::size_t i = 0; i < clip.size() && !subject.empty(); ++i) {
     const Vec2 a = clip[i], b = clip[(i + 1) % clip.size()];
@@ -74,6 +74,8 @@ std::vector<Vec2> clipConvex(std::vector<Vec2> subject, const std::vector<Vec2>&
   }
   return simplified(std::move(subject), tol);
 }
+
+namespace {
 
 using ExactK = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPolygon = CGAL::Polygon_2<ExactK>;

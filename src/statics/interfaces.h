@@ -31,6 +31,13 @@ struct Contacts {
   std::vector<ZeroAreaContact> zeroArea;
 };
 
+// Sutherland–Hodgman clip of `subject` by the convex counter-clockwise polygon `clip`, in a
+// plane. Points within `tol` of a clip line count as inside, so identical faces clip to
+// themselves; the result has no repeated points and no points on their neighbours' line
+// (`simplified`), and is empty when fewer than 3 are left.
+std::vector<Vec2> clipConvex(std::vector<Vec2> subject, const std::vector<Vec2>& clip, double tol);
+std::vector<Vec2> simplified(std::vector<Vec2> subject, double tol);
+
 // Whether two bounding boxes overlap or come within `tol` of each other on every axis.
 bool boxesTouch(const BBox& a, const BBox& b, double tol);
 

@@ -39,7 +39,8 @@ statics::Assembly projectModel(const std::string& name) {
   throw Error(name + ": no masonry object");
 }
 
-// Simulates 0.1 s (24 steps) an iteration, from the design or after the paper's shake scaled
+// Simulates 0.1 s (24 steps) an iteration, with the default solver (the contact QP) unless
+// said otherwise, from the design or after the paper's shake scaled
 // to the model; the counter is simulated seconds per second of real time.
 void simulate(benchmark::State& state, const statics::Assembly& as, const sim::SimSettings& settings, bool shaken) {
   sim::Session session(as, settings);
@@ -67,24 +68,30 @@ BENCHMARK_CAPTURE(BM_SimulatePaperModel, chapel, std::string("chapel"))->Apply(p
 BENCHMARK_CAPTURE(BM_SimulatePaperModel, abbey, std::string("abbey"))->Apply(paperModelRuns);
 BENCHMARK_CAPTURE(BM_SimulatePaperModel, groin, std::string("groin"))->Apply(paperModelRuns);
 
-// The same with the contact QP (sim/contact_qp.h) in place of Bullet's sequential impulses.
-void BM_SimulateWithTheContactQp(benchmark::State& state, const std::string& name) {
+// The same with Bullet's sequential impulses (200 iterations) in place of the contact QP.
+void BM_SimulateWithBulletsSolver(benchmark::State& state, const std::string& name) {
   sim::SimSettings settings;
-  settings.solver = sim::Solver::ContactQp;
+  settings.solver = sim::Solver::SequentialImpulse;
   simulate(state, projectModel(name), settings, state.range(0) != 0);
 }
-BENCHMARK_CAPTURE(BM_SimulateWithTheContactQp, chapel, std::string("chapel"))->Apply(paperModelRuns);
-BENCHMARK_CAPTURE(BM_SimulateWithTheContactQp, groin, std::string("groin"))->Apply(paperModelRuns);
+BENCHMARK_CAPTURE(BM_SimulateWithBulletsSolver, chapel, std::string("chapel"))->Apply(paperModelRuns);
+BENCHMARK_CAPTURE(BM_SimulateWithBulletsSolver, groin, std::string("groin"))->Apply(paperModelRuns);
 
 // Arguments: rings, 1 for the shake (sim::paperShake: 5.4 m/s within 1/45 s on 18 rings,
-// 7.6 m/s within 1/32 s on 36), the solver's iterations.
+// 7.6 m/s within 1/32 s on 36), Bullet's solver's iterations (0: the contact QP).
 void BM_SimulateVault(benchmark::State& state) {
   sim::SimSettings settings;
-  settings.solverIterations = int(state.range(2));
+  if (state.range(2) > 0) {
+    settings.solver = sim::Solver::SequentialImpulse;
+    settings.solverIterations = int(state.range(2));
+  }
   simulate(state, vault(int(state.range(0))), settings, state.range(1) != 0);
 }
 BENCHMARK(BM_SimulateVault)
     ->ArgNames({"rings", "shake", "iterations"})
+    ->Args({18, 0, 0})
+    ->Args({18, 1, 0})
+    ->Args({36, 0, 0})
     ->Args({18, 0, 200})
     ->Args({18, 1, 200})
     ->Args({36, 0, 200})

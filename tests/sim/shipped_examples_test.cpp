@@ -1,9 +1,9 @@
 // Issue 30's goal for the shipped masonry examples meant to stand: what the statics analysis
 // calls standing (strict LP, at the saved kern) keeps every block within 1 mm for 5 s in the
-// simulation, unperturbed. Not met yet, so disabled: the chapel settles 2.5 mm in 0.5 s and
-// creeps to 32 mm by 5 s, the groin vault loses its ribs (docs/sim.md, "The shipped examples
-// in the simulation"). Run it with --gtest_also_run_disabled_tests: about 10 minutes, the
-// abbey 5 of them.
+// simulation, unperturbed. With the contact QP (the default solver) no block moves a
+// micrometre; with Bullet's sequential impulses the chapel creeps 32 mm and the groin vault's
+// ribs fall (docs/sim.md, "The shipped examples in the simulation"). The abbey runs 1 s here:
+// 5 s of its 989 blocks take 6 minutes (measured: under 1e-12 m, docs/sim.md).
 #include "core/project_io.h"
 #include "sim/session.h"
 #include "statics/analysis.h"
@@ -14,14 +14,16 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace corbel::sim {
 namespace {
 
-class ShippedExample : public ::testing::TestWithParam<const char*> {};
+class ShippedExample : public ::testing::TestWithParam<std::pair<std::string, double>> {};
 
-TEST_P(ShippedExample, DISABLED_WhatStaticsCallsStandingStaysWithinAMillimetreForFiveSeconds) {
-  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + GetParam() + ".corbel");
+TEST_P(ShippedExample, WhatStaticsCallsStandingStandsStill) {
+  const auto [name, seconds] = GetParam();
+  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/" + name + ".corbel");
   const MasonrySpec* spec = nullptr;
   for (const DocObject& o : p.document.objects)
     if (const auto* s = std::get_if<MasonrySpec>(&o.spec)) spec = s;
@@ -35,48 +37,27 @@ TEST_P(ShippedExample, DISABLED_WhatStaticsCallsStandingStaysWithinAMillimetreFo
 
   SimSettings settings;
   settings.friction = spec->friction;
+  ASSERT_EQ(settings.solver, Solver::ContactQp) << "the default";
   Session s(design, settings);
-  s.runUntil(5.0);
+  s.runUntil(seconds);
   double most = 0;
   for (std::size_t i = 0; i < design.blocks.size(); ++i)
     if (!design.blocks[i].fixed) most = std::max(most, s.maxDisplacement()[i]);
-  std::printf("%s: largest displacement %.3f mm in 5 s, %zu fallen\n", GetParam(), most * 1e3, s.fallenBlocks().size());
+  std::printf("%s: largest displacement %.3g m in %g s, %zu fallen, %ld interior-point iterations\n", name.c_str(),
+              most, seconds, s.fallenBlocks().size(), s.qpIterations());
   EXPECT_TRUE(s.fallenBlocks().empty());
-  EXPECT_LT(most, 1e-3);
-}
-
-// The groin vault with its ribs, which Bullet's sequential impulses let fall (21 blocks by 2 s),
-// stands still with the contact QP: the statics LP's verdict, within a nanometre for 5 s.
-TEST(ShippedExampleWithTheContactQp, TheGroinVaultStandsStill) {
-  const LoadedProject p = loadProject(std::string(CORBEL_SOURCE_DIR) + "/assets/examples/masonry-groin.corbel");
-  const MasonrySpec* spec = nullptr;
-  for (const DocObject& o : p.document.objects)
-    if (const auto* s = std::get_if<MasonrySpec>(&o.spec)) spec = s;
-  ASSERT_NE(spec, nullptr);
-  const statics::ParametricModel model = statics::modelOf(*spec);
-  const statics::Assembly design = model.build(model.parameters);
-  statics::AnalysisOptions options;
-  options.friction = spec->friction;
-  options.kernShrink = spec->kern;
-  ASSERT_TRUE(statics::checkFeasibility(design, options).feasible) << "the oracle: the statics LP";
-  SimSettings settings;
-  settings.friction = spec->friction;
-  settings.solver = Solver::ContactQp;
-  Session s(design, settings);
-  s.runUntil(5.0);
-  double most = 0;
-  for (std::size_t i = 0; i < design.blocks.size(); ++i)
-    if (!design.blocks[i].fixed) most = std::max(most, s.maxDisplacement()[i]);
-  EXPECT_TRUE(s.fallenBlocks().empty());
-  EXPECT_LT(most, 1e-9);
-  EXPECT_EQ(s.qpFailures(), 0);
+  EXPECT_LT(most, 1e-6) << "the issue asks for 1 mm; a solved QP leaves rounding";
+  EXPECT_EQ(s.qpFailures(), 0) << "every step solved by the QP";
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, ShippedExample,
-                         ::testing::Values("masonry-groin", "masonry-mosque", "masonry-mosque-hall", "masonry-chapel",
-                                           "masonry-abbey"),
+                         ::testing::Values(std::pair<std::string, double>{"masonry-groin", 5.0},
+                                           std::pair<std::string, double>{"masonry-mosque", 5.0},
+                                           std::pair<std::string, double>{"masonry-mosque-hall", 5.0},
+                                           std::pair<std::string, double>{"masonry-chapel", 5.0},
+                                           std::pair<std::string, double>{"masonry-abbey", 1.0}),
                          [](const auto& info) {
-                           std::string n = info.param;
+                           std::string n = info.param.first;
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });
