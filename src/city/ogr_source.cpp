@@ -98,16 +98,23 @@ SourceFeatures readOgrSource(const std::string& path, const SourceOptions& optio
   return out;
 }
 
-SourceLayer forEachOgrFeature(const std::string& path, const SourceOptions& options,
-                              const std::function<void(nlohmann::json&)>& visit) {
+namespace {
+
+// A source opened and its layer chosen and filtered, as every reader here needs it.
+struct OpenLayer {
+  std::unique_ptr<GDALDataset, DatasetCloser> data;
+  OGRLayer* layer = nullptr;
+  SourceLayer about;
+};
+
+OpenLayer openLayer(const std::string& path, const SourceOptions& options) {
   registerDrivers();
-  const QuietGdal quiet;
   CPLErrorReset();
-  std::unique_ptr<GDALDataset, DatasetCloser> data(
-      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
-  if (!data) throw InputError(path, lastError("GDAL/OGR cannot open it as a vector source"));
-  SourceLayer out;
-  out.driver = data->GetDriver() ? data->GetDriver()->GetDescription() : "";
+  OpenLayer out;
+  out.data.reset(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  if (!out.data) throw InputError(path, lastError("GDAL/OGR cannot open it as a vector source"));
+  GDALDataset* data = out.data.get();
+  out.about.driver = data->GetDriver() ? data->GetDriver()->GetDescription() : "";
   OGRLayer* layer = nullptr;
   const int layers = data->GetLayerCount();
   std::string names;
@@ -115,54 +122,91 @@ SourceLayer forEachOgrFeature(const std::string& path, const SourceOptions& opti
   if (!options.layer.empty()) {
     layer = data->GetLayerByName(options.layer.c_str());
     if (!layer)
-      throw InputError(path, "no layer \"" + options.layer + "\" (" + std::to_string(layers) + " layer(s): " + names +
-                                 ")");
+      throw InputError(path,
+                       "no layer \"" + options.layer + "\" (" + std::to_string(layers) + " layer(s): " + names + ")");
   } else if (layers == 1) {
     layer = data->GetLayer(0);
   } else {
-    throw InputError(path, layers ? std::to_string(layers) + " layers (" + names + "): choose one with --layer"
-                                  : "no layers");
+    throw InputError(
+        path, layers ? std::to_string(layers) + " layers (" + names + "): choose one with --layer" : "no layers");
   }
-  out.layer = layer->GetName();
+  out.layer = layer;
+  out.about.layer = layer->GetName();
+  out.about.randomRead = layer->TestCapability(OLCRandomRead) != 0;
   if (!options.where.empty()) {
     CPLErrorReset();
     if (layer->SetAttributeFilter(options.where.c_str()) != OGRERR_NONE)
-      throw InputError("where", "\"" + options.where + "\" is not an OGR SQL filter of layer \"" + out.layer +
+      throw InputError("where", "\"" + options.where + "\" is not an OGR SQL filter of layer \"" + out.about.layer +
                                     "\": " + lastError("GDAL refused it"));
   }
   if (const OGRSpatialReference* srs = layer->GetSpatialRef()) {
     char* wkt = nullptr;
     const char* wktOptions[] = {"FORMAT=WKT2_2018", nullptr};
-    if (srs->exportToWkt(&wkt, wktOptions) == OGRERR_NONE && wkt) out.crs = wkt;
+    if (srs->exportToWkt(&wkt, wktOptions) == OGRERR_NONE && wkt) out.about.crs = wkt;
     CPLFree(wkt);
   }
-  // GDAL's failures while reading; those of `visit`'s own work (PROJ, say) are not the source's.
-  auto failed = [&] {
-    if (CPLGetLastErrorType() < CE_Failure) return;
-    // Some drivers (GeoPackage) check a filter only when they read.
-    if (!options.where.empty())
-      throw InputError("where", "\"" + options.where + "\" on layer \"" + out.layer + "\": " + lastError("GDAL failed"));
-    throw InputError(path, "reading layer \"" + out.layer + "\": " + lastError("GDAL failed"));
-  };
-  layer->ResetReading();
+  return out;
+}
+
+// GDAL's failures while reading; those of the caller's own work (PROJ, say) are not the source's.
+void throwIfFailed(const std::string& path, const SourceOptions& options, const SourceLayer& about) {
+  if (CPLGetLastErrorType() < CE_Failure) return;
+  // Some drivers (GeoPackage) check a filter only when they read.
+  if (!options.where.empty())
+    throw InputError("where",
+                     "\"" + options.where + "\" on layer \"" + about.layer + "\": " + lastError("GDAL failed"));
+  throw InputError(path, "reading layer \"" + about.layer + "\": " + lastError("GDAL failed"));
+}
+
+// A feature as readOgrSource lists it.
+nlohmann::json featureJson(const OGRFeature& f) {
+  nlohmann::json props = nlohmann::json::object();
+  for (int i = 0; i < f.GetFieldCount(); ++i)
+    if (f.IsFieldSetAndNotNull(i)) props[f.GetFieldDefnRef(i)->GetNameRef()] = field(f, i);
+  nlohmann::json feature = {{"type", "Feature"}};
+  // GDAL keeps a GeoJSON feature's string "id" as a field of that name: it names the building.
+  if (auto id = props.find("id"); id != props.end() && (id->is_string() || id->is_number_integer()))
+    feature["id"] = *id;
+  feature["properties"] = std::move(props);
+  feature["geometry"] = geometry(f.GetGeometryRef());
+  return feature;
+}
+
+}  // namespace
+
+SourceLayer forEachOgrFeature(const std::string& path, const SourceOptions& options,
+                              const std::function<void(nlohmann::json&)>& visit, std::vector<std::int64_t>* fids) {
+  const QuietGdal quiet;
+  OpenLayer open = openLayer(path, options);
+  open.layer->ResetReading();
   CPLErrorReset();
   while (true) {
-    const OGRFeatureUniquePtr f(layer->GetNextFeature());
-    failed();
+    const OGRFeatureUniquePtr f(open.layer->GetNextFeature());
+    throwIfFailed(path, options, open.about);
     if (!f) break;
-    nlohmann::json props = nlohmann::json::object();
-    for (int i = 0; i < f->GetFieldCount(); ++i)
-      if (f->IsFieldSetAndNotNull(i)) props[f->GetFieldDefnRef(i)->GetNameRef()] = field(*f, i);
-    nlohmann::json feature = {{"type", "Feature"}};
-    // GDAL keeps a GeoJSON feature's string "id" as a field of that name: it names the building.
-    if (auto id = props.find("id"); id != props.end() && (id->is_string() || id->is_number_integer()))
-      feature["id"] = *id;
-    feature["properties"] = std::move(props);
-    feature["geometry"] = geometry(f->GetGeometryRef());
+    if (fids) fids->push_back(f->GetFID());
+    nlohmann::json feature = featureJson(*f);
     visit(feature);
     CPLErrorReset();
   }
-  return out;
+  return open.about;
+}
+
+void forEachOgrFeatureById(const std::string& path, const SourceOptions& options, const std::vector<std::int64_t>& fids,
+                           const std::function<void(nlohmann::json&)>& visit) {
+  const QuietGdal quiet;
+  OpenLayer open = openLayer(path, options);
+  if (!open.about.randomRead)
+    throw InputError(path, "layer \"" + open.about.layer + "\" cannot read a feature by its id");
+  for (const std::int64_t fid : fids) {
+    CPLErrorReset();
+    const OGRFeatureUniquePtr f(open.layer->GetFeature(fid));
+    if (!f || CPLGetLastErrorType() >= CE_Failure)
+      throw InputError(path, "layer \"" + open.about.layer + "\" has no feature " + std::to_string(fid) + " (" +
+                                 lastError("not found") + "): it changed while it was read");
+    nlohmann::json feature = featureJson(*f);
+    visit(feature);
+  }
 }
 
 std::vector<std::string> vectorFileExtensions() {

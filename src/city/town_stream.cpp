@@ -10,6 +10,8 @@
 #include <istream>
 #include <streambuf>
 
+#include <ogr_core.h>
+
 namespace corbel::city {
 
 namespace {
@@ -50,7 +52,7 @@ nlohmann::json forEachFeature(const std::string& path, const std::function<void(
   if (!buffer.ok()) throw InputError(path, "cannot read it");
   std::istream in(&buffer);
   using Event = nlohmann::json::parse_event_t;
-  std::string member;  // the root's member being read
+  std::string member;       // the root's member being read
   std::uint64_t start = 0;  // of the entry being read
   try {
     // The parser has taken a "{" or "}" itself, and nothing past it, when it calls back with
@@ -138,13 +140,15 @@ TownStream::TownStream(std::string path, ReadOptions options)
     // The document's own credit first, as a whole read gives it.
     if (const std::string own = creditOf(members_, nullptr); !own.empty()) credit = own;
     attribution_ = credit;
-    placement_ = ogr_ ? layerPlacement(layer, members_, bounds, options_) : geoJsonPlacement(members_, bounds, options_);
+    placement_ =
+        ogr_ ? layerPlacement(layer, members_, bounds, options_) : geoJsonPlacement(members_, bounds, options_);
     frame_ = placement_.frame;
     // Pass 2: each feature placed and cleaned alone; of its buildings only their centres and
     // boxes kept, and of a GeoJSON file's features where they lie in it.
     double east = 0;
     std::size_t place = 0, feature = 0;
     std::vector<std::pair<std::uint64_t, std::uint64_t>> spans;
+    std::vector<std::int64_t> fids;
     auto pass2 = [&](nlohmann::json& f) {
       const std::uint32_t at = static_cast<std::uint32_t>(feature++);
       const bool line = isLineFeature(f);
@@ -153,6 +157,9 @@ TownStream::TownStream(std::string path, ReadOptions options)
         const auto [from, to] = spans.back();
         if (to - from > UINT32_MAX) throw InputError(path_, "features[" + std::to_string(at) + "]: larger than 4 GB");
         spans_.push_back({from, static_cast<std::uint32_t>(to - from), static_cast<std::uint32_t>(place)});
+      } else {
+        if (fids.size() != feature) throw InputError(path_, "a feature's id was not found");
+        refs_.push_back({fids.back(), static_cast<std::uint32_t>(place)});
       }
       if (!line) nameByPlace(f, place++);
       nlohmann::json one = collectionOf(members_);
@@ -176,10 +183,16 @@ TownStream::TownStream(std::string path, ReadOptions options)
         buildings_.push_back(e);
       }
     };
-    if (ogr_)
-      forEach(pass2);
-    else
+    if (ogr_) {
+      const SourceLayer read = forEachOgrFeature(path_, {options_.layer, options_.where}, pass2, &fids);
+      // A part fetches its features by id where the layer can, and the ids tell them apart.
+      std::sort(fids.begin(), fids.end());
+      const bool distinct = std::adjacent_find(fids.begin(), fids.end()) == fids.end();
+      if (!read.randomRead || !distinct || (!fids.empty() && fids.front() == OGRNullFID)) refs_.clear();
+      refs_.shrink_to_fit();
+    } else {
       forEachFeature(path_, pass2, &spans);
+    }
     if (placement_.to) frame_.scaleError = transverseMercatorScaleError(east);
     buildings_.shrink_to_fit();  // held to the end: not the doubling's slack too
     spans_.shrink_to_fit();
@@ -232,7 +245,7 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
   // The wanted features read again, in the file's order: a GeoJSON file's each from its own
   // bytes, any other source's by reading it through.
   nlohmann::json collection = collectionOf(members_);
-  std::vector<std::size_t> first;  // each read feature's first building
+  std::vector<std::size_t> first;    // each read feature's first building
   std::vector<std::size_t> placeOf;  // each read feature's place among the source's footprint features
   std::size_t building = 0;
   auto take = [&](std::size_t at, std::size_t place, nlohmann::json& f) {
@@ -256,6 +269,20 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
       if (!in || !f.is_object() || isLineFeature(f)) throw InputError(path_, "changed while it was read");
       take(at, s.place, f);
     }
+  } else if (!refs_.empty()) {
+    std::vector<std::int64_t> fids;
+    std::vector<std::size_t> ats;
+    for (std::size_t at = 0; at < features.size(); ++at)
+      if (features[at]) {
+        fids.push_back(refs_.at(at).fid);
+        ats.push_back(at);
+      }
+    std::size_t k = 0;
+    forEachOgrFeatureById(path_, {options_.layer, options_.where}, fids, [&](nlohmann::json& f) {
+      const std::size_t at = ats[k++];
+      if (isLineFeature(f)) throw InputError(path_, "changed while it was read");
+      take(at, refs_[at].place, f);
+    });
   } else {
     std::size_t place = 0, feature = 0;
     forEach([&](nlohmann::json& f) {
@@ -275,7 +302,8 @@ Town TownStream::part(const std::vector<std::vector<std::size_t>>& tiles, double
   // A read feature's buildings are numbered on from its first.
   std::size_t k = 0;
   for (std::size_t f = 0; f < first.size(); ++f) {
-    for (std::size_t g = first[f]; g < buildings_.size() && buildings_[g].feature == buildings_[first[f]].feature; ++g) {
+    for (std::size_t g = first[f]; g < buildings_.size() && buildings_[g].feature == buildings_[first[f]].feature;
+         ++g) {
       if (k >= t.buildings.size()) throw InputError(path_, "changed while it was read");
       Building& b = t.buildings[k++];
       if (!wanted[g]) continue;

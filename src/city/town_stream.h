@@ -4,7 +4,8 @@
 // tiling needs (its centre, box and margin mark), and each part is read again from the file
 // with its neighbours, so that memory grows with a part, not with the town: a GeoJSON file's
 // features each from their own bytes (found by the second pass), so that a part costs its own
-// features' parsing, not the file's; any other source's by reading the source through again. A part's buildings
+// features' parsing, not the file's; any other source's by its feature ids where its layer reads
+// by id (Shapefile, GeoPackage, FlatGeobuf), else by reading the source through. A part's buildings
 // are the ones a whole read gives, cleaned and placed alike; read with the buildings and streets
 // within the labels' reach of them, they are labelled alike too.
 #include "city/import.h"
@@ -45,7 +46,7 @@ class TownStream {
   struct Entry {
     Vec2 centre{0, 0};
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};  // of the outline
-    std::uint32_t feature = 0;  // the file's feature it came from
+    std::uint32_t feature = 0;                                            // the file's feature it came from
     bool margin = false;
   };
   // A GeoJSON file's feature: where its bytes lie in the file, and its place among the file's
@@ -55,18 +56,27 @@ class TownStream {
     std::uint32_t bytes = 0;
     std::uint32_t place = 0;
   };
+  // An OGR source's feature: its id (GDAL's FID, by which a part fetches it) and its place among
+  // the source's footprint features.
+  struct OgrRef {
+    std::int64_t fid = 0;
+    std::uint32_t place = 0;
+  };
   // Calls `visit` on each of the source's features in order, one at a time.
   void forEach(const std::function<void(nlohmann::json&)>& visit) const;
 
   std::string path_;
   ReadOptions options_;
-  bool ogr_ = false;  // read through GDAL/OGR
+  bool ogr_ = false;        // read through GDAL/OGR
   nlohmann::json members_;  // the document's members but "features"
   Placement placement_;
   Frame frame_;
   std::string attribution_;
   std::vector<Entry> buildings_;
   std::vector<Span> spans_;  // a GeoJSON file's features, in order (read by itself, not through OGR)
+  // An OGR source's features, in order, when its layer reads a feature by its id and the ids are
+  // distinct; empty otherwise (a part then reads the source through).
+  std::vector<OgrRef> refs_;
   std::vector<Street> streets_;
 };
 

@@ -39,9 +39,9 @@ int shell(const std::string& cmd) { return WEXITSTATUS(std::system(cmd.c_str()))
 // The original file's frame, as its README and its "frame" member describe it.
 struct Original {
   double lon0 = 0, lat0 = 0, R = 6371008.8;
-  std::string proj;  // the same, for ogr2ogr's -s_srs
-  std::map<std::string, double> ellipsoidArea;  // by id, m² on the WGS 84 ellipsoid
-  std::map<std::string, std::string> building;  // by id: src_building
+  std::string proj;                              // the same, for ogr2ogr's -s_srs
+  std::map<std::string, double> ellipsoidArea;   // by id, m² on the WGS 84 ellipsoid
+  std::map<std::string, std::string> building;   // by id: src_building
   double latLo = 90, latHi = -90, eastMost = 0;  // of the sample: latitudes; metres from lon0 east or west
 };
 
@@ -191,8 +191,8 @@ void expectSameBuildings(const Town& t, double relative, const std::string& what
     EXPECT_NEAR(got, want, want * relative + 1e-6) << what << ": " << b.id;
     worst = std::max(worst, std::abs(got / want - 1));
   }
-  std::cout << what << ": " << t.buildings.size() << " buildings, worst relative area error " << worst
-            << " (allowed " << relative << ")\n";
+  std::cout << what << ": " << t.buildings.size() << " buildings, worst relative area error " << worst << " (allowed "
+            << relative << ")\n";
 }
 
 // The transverse Mercator's areas: k² - 1 ≈ 2 (k - 1) with k - 1 = x² / (2 N²) at the
@@ -217,13 +217,15 @@ TEST(GisInput, EveryFormatAndCrsGivesTheSameBuildingsAsTheOriginal) {
   EXPECT_NEAR(original.frame.lon0, o.lon0, 1e-9);
   EXPECT_NEAR(original.frame.lat0, o.lat0, 1e-9);
   double stretch = 0;
-  for (double lat : {o.latLo, o.latHi}) stretch = std::max(stretch, std::abs(std::cos(o.lat0 * kDeg) / std::cos(lat * kDeg) - 1));
+  for (double lat : {o.latLo, o.latHi})
+    stretch = std::max(stretch, std::abs(std::cos(o.lat0 * kDeg) / std::cos(lat * kDeg) - 1));
   {
     // The sphere against the ellipsoid, for one square degree-thousandth at lat0: the ratio of
     // the two area elements, by the geodesic library.
     geod_geodesic g;
     geod_init(&g, 6378137, 1 / 298.257223563);
-    double lats[] = {o.lat0, o.lat0, o.lat0 + 0.001, o.lat0 + 0.001}, lons[] = {o.lon0, o.lon0 + 0.001, o.lon0 + 0.001, o.lon0};
+    double lats[] = {o.lat0, o.lat0, o.lat0 + 0.001, o.lat0 + 0.001},
+           lons[] = {o.lon0, o.lon0 + 0.001, o.lon0 + 0.001, o.lon0};
     double ellipsoid = 0, perimeter = 0;
     geod_polygonarea(&g, lats, lons, 4, &ellipsoid, &perimeter);
     const double sphere = o.R * o.R * 0.001 * kDeg * 0.001 * kDeg * std::cos((o.lat0 + 0.0005) * kDeg);
@@ -318,7 +320,8 @@ TEST(GisInput, ALayerAndAFilterChooseTheBuildings) {
   for (const char* file : {"lonlat.geojson", "lonlat.gpkg"}) {
     const Town t = readAsRead(path(file), filter);
     EXPECT_EQ(t.buildings.size(), garages) << file;
-    for (const auto& b : t.buildings) EXPECT_NEAR(areaOf(b), o.ellipsoidArea.at(b.id), o.ellipsoidArea.at(b.id) * 1e-6) << b.id;
+    for (const auto& b : t.buildings)
+      EXPECT_NEAR(areaOf(b), o.ellipsoidArea.at(b.id), o.ellipsoidArea.at(b.id) * 1e-6) << b.id;
   }
   // In corbel's frame, through OGR as well: the frame member still holds.
   const Town framed = readAsRead(kSource, filter);
@@ -330,6 +333,47 @@ TEST(GisInput, ALayerAndAFilterChooseTheBuildings) {
     ADD_FAILURE() << "a bad filter was taken";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("where"), std::string::npos) << e.what();
+  }
+}
+
+// A streamed town's part fetches its features by id (forEachOgrFeatureById): every third
+// feature, asked for in reverse order, is the feature the layer's own read gave with that id,
+// with and without a filter; an id the layer does not have is refused by name.
+TEST(GisInput, FeaturesFetchedByIdAreTheFeaturesReadInOrder) {
+  for (const auto& [file, where] : {std::pair{"utm32n.shp", ""},
+                                    {"lonlat.gpkg", ""},
+                                    {"utm32n.fgb", ""},
+                                    {"lonlat.gpkg", "src_building = 'garage'"},
+                                    {"lonlat.geojson", ""}}) {
+    const SourceOptions options{"", where};
+    std::vector<nlohmann::json> read;
+    std::vector<std::int64_t> fids;
+    const SourceLayer layer = forEachOgrFeature(
+        path(file), options, [&](nlohmann::json& f) { read.push_back(f); }, &fids);
+    ASSERT_EQ(fids.size(), read.size()) << file;
+    ASSERT_GT(read.size(), 5u) << file;
+    EXPECT_TRUE(layer.randomRead) << file;
+    std::vector<std::int64_t> asked;
+    std::vector<std::size_t> which;
+    for (std::size_t i = read.size(); i-- > 0;)
+      if (i % 3 == 0) {
+        asked.push_back(fids[i]);
+        which.push_back(i);
+      }
+    std::size_t k = 0;
+    forEachOgrFeatureById(path(file), options, asked, [&](nlohmann::json& f) {
+      ASSERT_LT(k, which.size());
+      EXPECT_EQ(f, read[which[k]]) << file << " feature " << which[k];
+      ++k;
+    });
+    EXPECT_EQ(k, which.size()) << file;
+    const std::int64_t missing = *std::max_element(fids.begin(), fids.end()) + 1000;
+    try {
+      forEachOgrFeatureById(path(file), options, {missing}, [](nlohmann::json&) {});
+      ADD_FAILURE() << file << ": a missing id was taken";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::to_string(missing)), std::string::npos) << e.what();
+    }
   }
 }
 
@@ -380,7 +424,9 @@ TEST(GisInput, ExtrudeOnLonLatBuildsBuildingsMetresTall) {
   std::map<std::string, double> heights;
   for (const char* file : {"lonlat.geojson", "utm32n.shp"}) {
     const std::string out = path("extrude.out");
-    ASSERT_EQ(shell(std::string(CORBEL_CLI) + " extrude \"" + path(file) + "\" --stats > \"" + out + "\" 2>/dev/null") & ~1, 0)
+    ASSERT_EQ(
+        shell(std::string(CORBEL_CLI) + " extrude \"" + path(file) + "\" --stats > \"" + out + "\" 2>/dev/null") & ~1,
+        0)
         << file;
     std::ifstream in(out);
     std::string line;
