@@ -217,9 +217,19 @@ btScalar ContactQpSolver::solveGroup(btCollisionObject** bodies, int numBodies, 
   options.feasibilityCorrections = 0;  // nor are its blocks tension and compression
   const statics::IpmResult r = statics::solveBlockQP(qp, options);
   iterations_ += r.iterations;
-  const bool solved = r.x.allFinite() &&
-                      (r.status == statics::SolveStatus::Optimal || r.status == statics::SolveStatus::ReducedAccuracy ||
-                       (r.primalResidual <= 1e-9 && r.dualResidual <= 1e-7 && r.gap <= 1e-7));
+  // Where the method stops short of its tolerances (its factorisation fails near the optimum),
+  // its best iterate is taken when the momentum equations hold and the optimality gap is small:
+  // at rest to 1e-7 (in units of the step's kinetic energy at speed u), and while bodies move
+  // faster than ten steps of gravity to 1e-6 of the objective, with a dual residual of 1e-3 (the
+  // velocities then err by at most √(2 gap) in the mass-weighted norm: about a hundredth of u in
+  // a collapse, where the steps that need this come). Fewer steps fall back to Bullet's solver:
+  // 3 instead of 59 of the 144 after the paper's shake on the barrel vault.
+  const bool fast = u > 10 * 9.81 * h;
+  const bool nearlyOptimal =
+      r.primalResidual <= 1e-9 && (fast ? r.dualResidual <= 1e-3 && r.gap <= 1e-6 * std::max(1.0, std::abs(r.objective))
+                                        : r.dualResidual <= 1e-7 && r.gap <= 1e-7);
+  const bool solved = r.x.allFinite() && (r.status == statics::SolveStatus::Optimal ||
+                                          r.status == statics::SolveStatus::ReducedAccuracy || nearlyOptimal);
   if (!solved) {
     ++failures_;
     return fallback_.solveGroup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info,
