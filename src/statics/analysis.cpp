@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "statics/equilibrium.h"
-#include "statics/huge_pages.h"
+#include "statics/parallel.h"
 #include "statics/tolerances.h"
 
 #include <algorithm>
@@ -65,12 +65,14 @@ EquilibriumSystem prepareEquilibrium(const Assembly& as, const AnalysisOptions& 
     std::string why;
     for (const ZeroAreaContact& z : p.contacts.zeroArea)
       if (z.a == i || z.b == i)
-        why = " (it touches " + blockName(as, z.a == i ? z.b : z.a) + " only along an edge or at a point: a zero-area contact)";
+        why = " (it touches " + blockName(as, z.a == i ? z.b : z.a) +
+              " only along an edge or at a point: a zero-area contact)";
     bool touchesAny = false;
     for (const Interface& itf : p.contacts.interfaces) touchesAny = touchesAny || itf.a == i || itf.b == i;
-    throw Error("statics: " + blockName(as, i) +
-                (touchesAny ? " is not connected to a fixed block through contacts" : " floats: it has no contact with area") +
-                why);
+    throw Error(
+        "statics: " + blockName(as, i) +
+        (touchesAny ? " is not connected to a fixed block through contacts" : " floats: it has no contact with area") +
+        why);
   }
   for (const ZeroAreaContact& z : p.contacts.zeroArea)
     p.warnings.push_back(blockName(as, z.a) + " and " + blockName(as, z.b) +
@@ -193,8 +195,8 @@ void addFrictionRows(VarBlock& vb, const EquilibriumSystem& p, int normal, int t
 }
 
 // Adds the column of a unit force `dir` acting on b (and −dir on a) at `point`.
-void addForceColumn(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir,
-                    int col, std::vector<Eigen::Triplet<double>>& trips) {
+void addForceColumn(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir, int col,
+                    std::vector<Eigen::Triplet<double>>& trips) {
   for (int side = 0; side < 2; ++side) {
     const int blk = side == 0 ? itf.b : itf.a;
     const int r = p.rowOf[std::size_t(blk)];
@@ -209,79 +211,85 @@ void addForceColumn(const EquilibriumSystem& p, const Interface& itf, const Vec3
   }
 }
 
-
-// A's columns written in order straight into compressed storage: one column per call, its
-// nonzeros sorted by row. (Eigen's setFromTriplets on the ~6 million triplets of a
-// 10,000-block wall sorts a copy of them, about a tenth of the whole analysis.)
-class ColumnWriter {
- public:
-  ColumnWriter(Eigen::SparseMatrix<double>& A, int rows, int cols, int maxNonZeros) : A_(A) {
-    A_.resize(rows, cols);
-    A_.resizeNonZeros(maxNonZeros);
-    hugepages::advise(A_.valuePtr(), std::size_t(maxNonZeros) * sizeof(double));
-    hugepages::advise(A_.innerIndexPtr(), std::size_t(maxNonZeros) * sizeof(int));
+// The nonzeros of the column of a unit force `dir` acting on b (and −dir on a) at `point`, as
+// addForceColumn lays them out, sorted by row, written from `at` (counted only, without
+// writing, when inner is null): each side's rows come in order (force r..r+2, torque r+3..r+5),
+// so the side with the lower rows goes first. Returns the count.
+int forceColumn(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir, int* inner,
+                double* value, int at) {
+  const int start = at;
+  const int rb = p.rowOf[std::size_t(itf.b)], ra = p.rowOf[std::size_t(itf.a)];
+  const bool bFirst = ra < 0 || (rb >= 0 && rb < ra);
+  for (int pass = 0; pass < 2; ++pass) {
+    const int blk = (pass == 0) == bFirst ? itf.b : itf.a;
+    const int r = p.rowOf[std::size_t(blk)];
+    if (r < 0) continue;
+    const double sgn = blk == itf.b ? 1.0 : -1.0;
+    const Vec3 arm = point - p.props[std::size_t(blk)].centroid;
+    const Vec3 tq = cross(arm, dir);
+    for (int i = 0; i < 3; ++i)
+      if (dir[i] != 0) {
+        if (inner) inner[at] = r + i, value[at] = sgn * dir[i];
+        ++at;
+      }
+    for (int i = 0; i < 3; ++i)
+      if (tq[i] != 0) {
+        if (inner) inner[at] = r + 3 + i, value[at] = sgn * tq[i];
+        ++at;
+      }
   }
-  // The column of a unit force `dir` acting on b (and −dir on a) at `point`, as addForceColumn.
-  void force(const EquilibriumSystem& p, const Interface& itf, const Vec3& point, const Vec3& dir) {
-    int* inner = A_.innerIndexPtr();
-    double* value = A_.valuePtr();
-    // Each side's rows come in order (force r..r+2, torque r+3..r+5), so the side with the
-    // lower rows goes first.
-    const int rb = p.rowOf[std::size_t(itf.b)], ra = p.rowOf[std::size_t(itf.a)];
-    const bool bFirst = ra < 0 || (rb >= 0 && rb < ra);
-    for (int pass = 0; pass < 2; ++pass) {
-      const int blk = (pass == 0) == bFirst ? itf.b : itf.a;
-      const int r = p.rowOf[std::size_t(blk)];
-      if (r < 0) continue;
-      const double sgn = blk == itf.b ? 1.0 : -1.0;
-      const Vec3 arm = point - p.props[std::size_t(blk)].centroid;
-      const Vec3 tq = cross(arm, dir);
-      for (int i = 0; i < 3; ++i)
-        if (dir[i] != 0) inner[nnz_] = r + i, value[nnz_++] = sgn * dir[i];
-      for (int i = 0; i < 3; ++i)
-        if (tq[i] != 0) inner[nnz_] = r + 3 + i, value[nnz_++] = sgn * tq[i];
-    }
-    A_.outerIndexPtr()[++col_] = nnz_;
-  }
-  void finish() { A_.resizeNonZeros(nnz_); }
-
- private:
-  Eigen::SparseMatrix<double>& A_;
-  int col_ = 0, nnz_ = 0;
-};
+  return at - start;
+}
 
 }  // namespace
 
 BlockQP penaltyQP(const EquilibriumSystem& p) {
-  // Variables per contact vertex: [f_n⁺, f_n⁻, f_t1, f_t2].
+  // Variables per contact vertex: [f_n⁺, f_n⁻, f_t1, f_t2]. A's columns are written straight
+  // into compressed storage (Eigen's setFromTriplets on the ~6 million triplets of a
+  // 10,000-block wall sorts a copy of them): a first pass counts each vertex's nonzeros, a
+  // second writes them where the counts put them. Both, and the blocks, on two threads for a
+  // large model (parallel.h).
   BlockQP qp;
-  std::size_t vertices = 0;
-  for (const Interface& itf : p.contacts.interfaces) vertices += itf.points.size();
-  const int cols = int(4 * vertices);
-  ColumnWriter A(qp.A, p.rows, cols, 12 * cols);
-  qp.blocks.reserve(vertices);
-  int col = 0;
+  std::vector<std::pair<const Interface*, const Vec3*>> vertex;
   for (const Interface& itf : p.contacts.interfaces)
-    for (const Vec3& pt : itf.points) {
-      A.force(p, itf, pt, itf.normal);
-      A.force(p, itf, pt, -itf.normal);
-      A.force(p, itf, pt, itf.t1);
-      A.force(p, itf, pt, itf.t2);
-      VarBlock vb;
-      vb.offset = col;
-      vb.size = 4;
-      vb.hessian = {0, 2, 0, 0};  // ½·2·(f_n⁻)²
-      // The pyramid bounds friction by α·f_n⁺ (statics notes): f_n⁺ ≥ 0, f_n⁻ ≥ 0, α f_n⁺ ± f_t ≥ 0.
-      vb.rows.reserve(std::size_t(2 + p.frictionSides));  // one allocation, not three
-      vb.rows.push_back({1, 0, 0, 0});
-      vb.rows.push_back({0, 1, 0, 0});
-      addFrictionRows(vb, p, 0, 2);
-      vb.nullDirection = {-1, -1, 0, 0};  // the columns of f_n⁺ and f_n⁻ are exact opposites
-      vb.interiorDirection = {1, 1, 0, 0};  // more of both: every row grows (α > 0 on the pyramid's)
-      qp.blocks.push_back(std::move(vb));
-      col += 4;
+    for (const Vec3& pt : itf.points) vertex.emplace_back(&itf, &pt);
+  const int nv = int(vertex.size());
+  auto dirs = [](const Interface& itf) { return std::array<Vec3, 4>{itf.normal, -itf.normal, itf.t1, itf.t2}; };
+  std::vector<int> start(std::size_t(nv) + 1, 0);  // each vertex's first nonzero
+  forEachIndex(nv, 0, [&](int v) {
+    const auto& [itf, pt] = vertex[std::size_t(v)];
+    int count = 0;
+    for (const Vec3& d : dirs(*itf)) count += forceColumn(p, *itf, *pt, d, nullptr, nullptr, 0);
+    start[std::size_t(v) + 1] = count;
+  });
+  for (int v = 0; v < nv; ++v) start[std::size_t(v) + 1] += start[std::size_t(v)];
+  qp.A.resize(p.rows, 4 * nv);
+  qp.A.resizeNonZeros(start.back());
+  int* outer = qp.A.outerIndexPtr();
+  int* inner = qp.A.innerIndexPtr();
+  double* value = qp.A.valuePtr();
+  outer[0] = 0;
+  qp.blocks.resize(std::size_t(nv));
+  forEachIndex(nv, 0, [&](int v) {
+    const auto& [itf, pt] = vertex[std::size_t(v)];
+    int at = start[std::size_t(v)];
+    const std::array<Vec3, 4> d = dirs(*itf);
+    for (int c = 0; c < 4; ++c) {
+      at += forceColumn(p, *itf, *pt, d[std::size_t(c)], inner, value, at);
+      outer[4 * v + c + 1] = at;
     }
-  A.finish();
+    VarBlock& vb = qp.blocks[std::size_t(v)];
+    vb.offset = 4 * v;
+    vb.size = 4;
+    vb.hessian = {0, 2, 0, 0};  // ½·2·(f_n⁻)²
+    // The pyramid bounds friction by α·f_n⁺ (statics notes): f_n⁺ ≥ 0, f_n⁻ ≥ 0, α f_n⁺ ± f_t ≥ 0.
+    vb.rows.reserve(std::size_t(2 + p.frictionSides));  // one allocation, not three
+    vb.rows.push_back({1, 0, 0, 0});
+    vb.rows.push_back({0, 1, 0, 0});
+    addFrictionRows(vb, p, 0, 2);
+    vb.nullDirection = {-1, -1, 0, 0};    // the columns of f_n⁺ and f_n⁻ are exact opposites
+    vb.interiorDirection = {1, 1, 0, 0};  // more of both: every row grows (α > 0 on the pyramid's)
+  });
   qp.b = -p.w;
   qp.rowGroup = 6;
   return qp;
@@ -335,7 +343,8 @@ AnalysisResult analyseSystem(const EquilibriumSystem& p, const AnalysisOptions& 
   r.yNormalised = y;
   r.y = y * p.totalWeight * p.totalWeight;
   r.equilibriumResidual = (qp.A * sol.x + p.w).norm() / p.w.norm();
-  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) && r.yNormalised <= kFeasibleMeasure;
+  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) &&
+               r.yNormalised <= kFeasibleMeasure;
   const double W = p.totalWeight;
   int v = 0;
   for (const Interface& itf : p.contacts.interfaces) {
@@ -361,7 +370,8 @@ AnalysisResult analyseSystem(const EquilibriumSystem& p, const AnalysisOptions& 
     }
     f.tangentialForce = (f.resultant - itf.normal * f.normalForce).norm();
     f.centreOfPressure = f.normalForce > 0 ? moment / f.normalForce : itf.centroid;
-    f.pressureGauge = f.normalForce > 0 ? pressureGauge(itf, f.centreOfPressure) : std::numeric_limits<double>::infinity();
+    f.pressureGauge =
+        f.normalForce > 0 ? pressureGauge(itf, f.centreOfPressure) : std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < f.vertices.size(); ++k)
       if (f.vertices[k].tension > kTensionSite * W)
         r.tensionSites.push_back({int(r.interfaces.size()), int(k), f.vertices[k].point, f.vertices[k].tension});
@@ -413,7 +423,8 @@ FeasibilityResult checkFeasibility(const Assembly& as, const AnalysisOptions& op
   r.status = sol.status;
   r.iterations = sol.iterations;
   r.violation = sol.x.size() == col ? sol.objective : std::numeric_limits<double>::infinity();
-  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) && r.violation <= kFeasibleViolation;
+  r.feasible = (sol.status == SolveStatus::Optimal || sol.status == SolveStatus::ReducedAccuracy) &&
+               r.violation <= kFeasibleViolation;
   return r;
 }
 

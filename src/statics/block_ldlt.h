@@ -7,7 +7,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
-#include "statics/huge_pages.h"
+#include "statics/big_buffers.h"
 
 #include <utility>
 #include <vector>
@@ -17,8 +17,8 @@ namespace corbel::statics {
 class BlockLdlt {
  public:
   using Block = Eigen::Matrix<double, 6, 6>;
-  // Block storage on huge pages where the system gives them (huge_pages.h).
-  using Values = std::vector<Block, HugePageAllocator<Block>>;
+  // Block storage in mappings kept for the next factorisation (big_buffers.h).
+  using Values = BigVector<Block>;
 
   // `pairs`: the block positions (i, j) of the matrix's nonzero blocks, either triangle, the
   // diagonal included; n block rows.
@@ -47,17 +47,25 @@ class BlockLdlt {
 
   long factorNonZeroBlocks() const { return long(values_.size()); }
 
+  // Threads for factorize: 0 (the default) takes two where the machine has them and the
+  // factorisation is large enough to gain (block_ldlt.cpp); 1 keeps it on the calling thread.
+  // The factor is the same bit for bit either way.
+  void setThreads(int threads) { threads_ = threads; }
+  // Whether the analysed pattern is large enough for factorize to take a second thread.
+  bool sharesWork() const;
+
  private:
   int n_ = 0;
-  std::vector<int> perm_;       // position → block row
-  std::vector<int> pos_;        // block row → position
-  std::vector<int> colStart_;   // position → first slot of its column (the diagonal), then its rows
-  std::vector<int> rows_;       // per off-diagonal slot: the position of its row (> column)
+  std::vector<int> perm_;      // position → block row
+  std::vector<int> pos_;       // block row → position
+  std::vector<int> colStart_;  // position → first slot of its column (the diagonal), then its rows
+  std::vector<int> rows_;      // per off-diagonal slot: the position of its row (> column)
   Values values_;
   std::vector<Eigen::LDLT<Block>> dfac_;  // per position: D's factorisation
   std::vector<Block> scratchL_;           // factorize's L of one column
-  std::vector<int> scratchTargets_;       // factorize's update targets of one column
-  mutable Eigen::VectorXd scratchY_;      // solve's permuted vector
+  double largePairs_ = 0;                 // block pairs in the columns a helper thread shares
+  int threads_ = 0;
+  mutable Eigen::VectorXd scratchY_;  // solve's permuted vector
  public:
   // D_p's factorisation D = Pᵀ L diag(d) Lᵀ P as plain arrays, for the vectorised kernels.
   struct Pivot {

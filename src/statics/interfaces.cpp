@@ -1,7 +1,9 @@
 #include "statics/interfaces.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <thread>
 #include <tuple>
 
 #include "statics/tolerances.h"
@@ -153,6 +155,13 @@ bool boxesTouch(const BBox& a, const BBox& b, double tol) {
   return true;
 }
 
+namespace {
+// Assemblies of at least this many blocks look for contacts on two threads, in chunks of
+// kSweepChunk blocks of the sweep.
+constexpr int kParallelBlocks = 2000;
+constexpr int kSweepChunk = 256;
+}  // namespace
+
 Contacts findContacts(const Assembly& assembly, const std::vector<BlockProperties>& props, double tolerance,
                       double kernShrink) {
   Contacts result;
@@ -164,7 +173,9 @@ Contacts findContacts(const Assembly& assembly, const std::vector<BlockPropertie
   std::vector<int> order(nb);
   for (int i = 0; i < nb; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](int x, int y) { return props[x].bounds.lo[0] < props[y].bounds.lo[0]; });
-  for (int oi = 0; oi < nb; ++oi) {
+  // The pairs of the sweep's blocks oi, written to `result`; run on two threads for a large
+  // assembly (each on its own share of oi), whose findings the sorts below put in one order.
+  auto sweep = [&](int oi, Contacts& result) {
     const int i = order[oi];
     for (int oj = oi + 1; oj < nb; ++oj) {
       const int j = order[oj];
@@ -257,8 +268,27 @@ Contacts findContacts(const Assembly& assembly, const std::vector<BlockPropertie
       }
       if (touchedWithoutArea) result.zeroArea.push_back({a, b});
     }
+  };
+  const unsigned threads = nb >= kParallelBlocks ? std::min(2u, std::max(1u, std::thread::hardware_concurrency())) : 1u;
+  if (threads == 1) {
+    for (int oi = 0; oi < nb; ++oi) sweep(oi, result);
+  } else {
+    // Chunks of the sweep handed out in turn; each thread's findings kept apart, then joined.
+    std::atomic<int> next{0};
+    std::vector<Contacts> found(threads);
+    auto work = [&](unsigned t) {
+      for (int c; (c = next.fetch_add(kSweepChunk)) < nb;)
+        for (int oi = c; oi < std::min(nb, c + kSweepChunk); ++oi) sweep(oi, found[t]);
+    };
+    std::thread helper(work, 1u);
+    work(0);
+    helper.join();
+    for (Contacts& f : found) {
+      for (Interface& itf : f.interfaces) result.interfaces.push_back(std::move(itf));
+      result.zeroArea.insert(result.zeroArea.end(), f.zeroArea.begin(), f.zeroArea.end());
+    }
   }
-  // Stable: the pieces of one pair of non-convex faces keep CGAL's order.
+  // Stable: the pieces of one pair of non-convex faces keep CGAL's order (one thread finds them).
   std::stable_sort(result.interfaces.begin(), result.interfaces.end(), [](const Interface& x, const Interface& y) {
     return std::tie(x.a, x.b, x.faceA, x.faceB) < std::tie(y.a, y.b, y.faceA, y.faceB);
   });

@@ -1,14 +1,16 @@
 #include "statics/ipm.h"
 
+#include "statics/big_buffers.h"
 #include "statics/block_ldlt.h"
-#include "statics/huge_pages.h"
+#include "statics/parallel.h"
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
-#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -17,11 +19,16 @@ namespace corbel::statics {
 
 std::string toString(SolveStatus s) {
   switch (s) {
-    case SolveStatus::Optimal: return "optimal";
-    case SolveStatus::IterationLimit: return "iteration limit";
-    case SolveStatus::TimeLimit: return "time limit";
-    case SolveStatus::ReducedAccuracy: return "reduced accuracy";
-    case SolveStatus::NumericalFailure: return "numerical failure";
+    case SolveStatus::Optimal:
+      return "optimal";
+    case SolveStatus::IterationLimit:
+      return "iteration limit";
+    case SolveStatus::TimeLimit:
+      return "time limit";
+    case SolveStatus::ReducedAccuracy:
+      return "reduced accuracy";
+    case SolveStatus::NumericalFailure:
+      return "numerical failure";
   }
   return "unknown";
 }
@@ -165,7 +172,8 @@ class SchurFactor {
     } else {
       std::vector<std::pair<int, int>> pairs;
       for (int c = 0; c < S.outerSize(); ++c)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(S, c); it; ++it) pairs.emplace_back(int(it.row()) / 6, c / 6);
+        for (Eigen::SparseMatrix<double>::InnerIterator it(S, c); it; ++it)
+          pairs.emplace_back(int(it.row()) / 6, c / 6);
       std::sort(pairs.begin(), pairs.end());
       pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
       blocks_.analyze(int(S.rows() / 6), pairs);
@@ -246,28 +254,21 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
 
   VectorXd x = VectorXd::Zero(n), y = VectorXd::Zero(m), s(mi), z(mi);
   // Infeasible start: x = 0 with unit slacks and multipliers (loads are normalised, so the
-  // solution is O(1) or smaller).
-  for (int j = 0; j < nb; ++j) {
-    const VarBlock& blk = qp.blocks[j];
-    for (std::size_t r = 0; r < blk.rows.size(); ++r) {
-      s[rowStart[j] + int(r)] = 1.0;
-      z[rowStart[j] + int(r)] = 1.0;
-    }
-  }
-
-  // The inequality rows flattened: row i acts on variables offset[i] .. offset[i] + size[i] − 1
-  // with coefficients coef[4i ..].
+  // solution is O(1) or smaller). And the inequality rows flattened: row i acts on variables
+  // offset[i] .. offset[i] + size[i] − 1 with coefficients coef[4i ..].
   std::vector<int> rowOffset(static_cast<std::size_t>(mi)), rowSize(static_cast<std::size_t>(mi));
-  std::vector<double> coef(4 * std::size_t(mi), 0.0);
-  for (int j = 0; j < nb; ++j) {
+  std::vector<double> coef(4 * std::size_t(mi));
+  forEachIndex(nb, options.threads, [&](int j) {
     const VarBlock& blk = qp.blocks[j];
     for (std::size_t r = 0; r < blk.rows.size(); ++r) {
       const std::size_t i = std::size_t(rowStart[j]) + r;
+      s[Eigen::Index(i)] = 1.0;
+      z[Eigen::Index(i)] = 1.0;
       rowOffset[i] = blk.offset;
       rowSize[i] = blk.size;
-      for (int k = 0; k < blk.size; ++k) coef[4 * i + std::size_t(k)] = blk.rows[r][k];
+      for (int k = 0; k < 4; ++k) coef[4 * i + std::size_t(k)] = k < blk.size ? blk.rows[r][k] : 0.0;
     }
-  }
+  });
   // G v and Gᵀ w into `out` (sized by the caller; Gᵀ w's is overwritten).
   auto Gx = [&](const VectorXd& v, VectorXd& out) {
     for (std::size_t i = 0; i < std::size_t(mi); ++i) {
@@ -309,7 +310,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       const VarBlock& blk = qp.blocks[j];
       std::vector<int>& rows = cols[j].rows;
       for (int k = 0; k < blk.size; ++k)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it) rows.push_back(int(it.row()));
+        for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, blk.offset + k); it; ++it)
+          rows.push_back(int(it.row()));
       std::sort(rows.begin(), rows.end());
       rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
       cols[j].vals = Eigen::Matrix<double, Eigen::Dynamic, 4>::Zero(Eigen::Index(rows.size()), 4);
@@ -322,26 +324,31 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   };
 
   SchurFactor ldlt(options.schurSolver, qp.rowGroup);
+  ldlt.blocks().setThreads(options.threads);
   bool analysed = false;
-  BigVector<Mat4> hinv(nb), hess(nb);
+  BigVector<Mat4> hinv(nb), hess;  // hess only once the Newton refinement needs it (kRefineBelowMu)
   // The block path (BlockLdlt): every variable block touches at most two 6-row groups (a
   // contact vertex: the two blocks it joins; an artificial: one), so its A columns are a
   // fixed 12×4 matrix (zero-padded) and its contribution A_j H_j⁻¹ A_jᵀ is at most three
   // 6×6 blocks of S, summed straight into the factorisation's slots: no scalar S, no
   // triplets, no scatter, fixed-size kernels.
+  // Constructed empty, each set by the (two-thread) loop that fills it: the first touch of a
+  // 10,000-block QP's 50 MB of them is then shared between the threads too.
   struct BlockCols12 {
-    Eigen::Matrix<double, 12, 4> vals = Eigen::Matrix<double, 12, 4>::Zero();
-    int groups = 0;                             // 1 or 2
-    int row0 = 0, row1 = 0;                     // the first equation row of groups g0 and g1
-    int slot00 = -1, slot11 = -1, slot10 = -1;  // S blocks (g0, g0), (g1, g1), (g1, g0)
-    bool transposed10 = false;                  // (g1, g0) stored as its transpose
+    BlockCols12() {}
+    Eigen::Matrix<double, 12, 4> vals;
+    int groups;                  // 0 (touches no equation), 1 or 2
+    int row0, row1;              // the first equation row of groups g0 and g1
+    int slot00, slot11, slot10;  // S blocks (g0, g0), (g1, g1), (g1, g0)
+    bool transposed10;           // (g1, g0) stored as its transpose
   };
   BigVector<BlockCols12> cols12;
   std::vector<int> diagBlockSlot;
   bool blockwise = ldlt.blockwise() && m % 6 == 0 && m > 0;
   std::vector<std::array<int, 2>> blockGroups(std::size_t(nb), {-1, -1});
   if (blockwise) {
-    for (int j = 0; j < nb && blockwise; ++j)
+    std::atomic<bool> twoGroups{true};
+    forEachIndex(nb, options.threads, [&](int j) {
       for (int k = 0; k < qp.blocks[j].size; ++k)
         for (Eigen::SparseMatrix<double>::InnerIterator it(qp.A, qp.blocks[j].offset + k); it; ++it) {
           const int g = int(it.row()) / 6;
@@ -352,8 +359,10 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
           else if (gr[1] < 0)
             gr[1] = g;
           else
-            blockwise = false;  // more than two groups: the scalar path
+            twoGroups.store(false, std::memory_order_relaxed);  // more than two groups: the scalar path
         }
+    });
+    blockwise = twoGroups.load();
   }
   if (!blockwise) buildCols();
   if (blockwise) {
@@ -370,10 +379,14 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     diagBlockSlot.resize(std::size_t(m / 6));
     for (int g = 0; g < m / 6; ++g) diagBlockSlot[std::size_t(g)] = bl.slot(g, g).index;
     cols12.resize(std::size_t(nb));
-    for (int j = 0; j < nb; ++j) {
+    forEachIndex(nb, options.threads, [&](int j) {
       BlockCols12& bc = cols12[std::size_t(j)];
+      bc.vals.setZero();
+      bc.groups = bc.row0 = bc.row1 = 0;
+      bc.slot00 = bc.slot11 = bc.slot10 = -1;
+      bc.transposed10 = false;
       auto gr = blockGroups[std::size_t(j)];
-      if (gr[0] < 0) continue;  // touches no equation
+      if (gr[0] < 0) return;  // touches no equation
       if (gr[1] >= 0 && gr[1] < gr[0]) std::swap(gr[0], gr[1]);
       bc.groups = gr[1] >= 0 ? 2 : 1;
       bc.row0 = 6 * gr[0];
@@ -390,13 +403,13 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         bc.slot10 = sl.index;
         bc.transposed10 = sl.transposed;
       }
-    }
+    });
     analysed = true;
   }
   // Sums A H⁻¹ Aᵀ + regularisation·I into the block factorisation and factors it.
   auto factorBlockwise = [&](double shift) {
     BlockLdlt::Values& v = ldlt.blocks().values();
-    for (BlockLdlt::Block& b : v) b.setZero();
+    forEachIndex(int(v.size()), options.threads, [&](int k) { v[std::size_t(k)].setZero(); });
     for (int j = 0; j < nb; ++j) {
       const BlockCols12& bc = cols12[std::size_t(j)];
       if (bc.groups == 0) continue;
@@ -460,14 +473,10 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
   // The iteration's vectors, allocated once: a fresh vector of 50,000 doubles costs its page
   // faults (the kernel zeroing new pages was 14 % of the 1,040-block wall's QP when every
   // step allocated its temporaries). Each is computed with the same operations in the same
-  // order as the expressions they replace, so the iterates are bit for bit the same. Large ones
-  // are advised onto huge pages (huge_pages.h) before they are first written.
+  // order as the expressions they replace, so the iterates are bit for bit the same.
   VectorXd gx(mi), rd(n), rp(m), rg(mi), d(mi), rc(mi), tn(n), tm(m), tm2(m), ti(mi);
   VectorXd w(mi), rho(n), rhs(m), r1(n), r2(m), ddy(m), dx(n), dy(m), dz(mi), ds(mi), xt(n), gxt(mi), rpt(m);
   VectorXd sn1(n), sn2(n), xc(n);
-  for (VectorXd* v : {&gx, &rd, &rp, &rg, &d, &rc, &tn, &tm, &tm2, &ti, &w, &rho, &rhs, &r1, &r2, &ddy, &dx, &dy, &dz, &ds,
-                      &xt, &gxt, &rpt, &sn1, &sn2, &xc})
-    hugepages::advise(v->data(), std::size_t(v->size()) * sizeof(double));
   const VectorXd zeroN = VectorXd::Zero(n);
   // The projection of the early exit: every block with a null direction e moved along it by the
   // δ that minimises the block's objective ½Σq(x + δe)², clamped so that its rows g·x ≥ 0 hold.
@@ -879,8 +888,10 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
     const double mu = mi ? gap / mi : 0.0;
     d = z.cwiseQuotient(s);
 
-    // Block Hessians and their inverses.
-    for (int j = 0; j < nb; ++j) {
+    // Block Hessians and their inverses; the Hessians kept only for the refinement's products.
+    const bool keepHessians = mu < kRefineBelowMu && options.newtonRefinement > 0;
+    if (keepHessians) hess.resize(std::size_t(nb));
+    forEachIndex(nb, options.threads, [&](int j) {
       const VarBlock& blk = qp.blocks[j];
       Mat4 H = Mat4::Zero();
       for (int k = 0; k < blk.size; ++k) H(k, k) = blk.hessian[k];
@@ -889,8 +900,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
         H += d[rowStart[j] + int(r)] * g * g.transpose();
       }
       hinv[j] = blockInverse(H, blk.size);
-      hess[j] = H;
-    }
+      if (keepHessians) hess[j] = H;
+    });
     // Schur complement A H⁻¹ Aᵀ (lower triangle), with a diagonal entry on every row. The
     // pattern never changes: it is built once, then values are summed into fixed slots.
     if (!analysed) {
@@ -899,7 +910,8 @@ IpmResult solveBlockQP(const BlockQP& qp, const IpmOptions& options) {
       for (int j = 0; j < nb; ++j) {
         const auto& rows = cols[j].rows;
         for (std::size_t p = 0; p < rows.size(); ++p)
-          for (std::size_t q = 0; q <= p; ++q) trips.emplace_back(std::max(rows[p], rows[q]), std::min(rows[p], rows[q]), 1.0);
+          for (std::size_t q = 0; q <= p; ++q)
+            trips.emplace_back(std::max(rows[p], rows[q]), std::min(rows[p], rows[q]), 1.0);
       }
       S.resize(m, m);
       S.setFromTriplets(trips.begin(), trips.end());

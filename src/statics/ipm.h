@@ -16,8 +16,8 @@
 namespace corbel::statics {
 
 struct VarBlock {
-  int offset = 0;                  // first variable of the block in x
-  int size = 0;                    // 1..4
+  int offset = 0;                   // first variable of the block in x
+  int size = 0;                     // 1..4
   std::array<double, 4> hessian{};  // diagonal of Q on the block
   std::array<double, 4> cost{};     // c on the block
   // Inequality rows g·x_block ≥ 0, coefficients on the block's variables.
@@ -57,18 +57,22 @@ std::string toString(SolveStatus s);
 
 // The factorisation of the Schur complement A H⁻¹ Aᵀ in every Newton step.
 enum class SchurSolver {
-  BlockLdlt,   // ours (block_ldlt.h): LDLᵀ on 6×6 blocks, AMD on the graph of blocks; needs rowGroup 6
-  Cholmod,     // CHOLMOD's supernodal LLᵀ (SuiteSparse), AMD/METIS ordering chosen by CHOLMOD
-  EigenLdlt    // Eigen's SimplicialLDLT with AMD ordering
+  BlockLdlt,  // ours (block_ldlt.h): LDLᵀ on 6×6 blocks, AMD on the graph of blocks; needs rowGroup 6
+  Cholmod,    // CHOLMOD's supernodal LLᵀ (SuiteSparse), AMD/METIS ordering chosen by CHOLMOD
+  EigenLdlt   // Eigen's SimplicialLDLT with AMD ordering
 };
 
 struct IpmOptions {
   SchurSolver schurSolver = SchurSolver::BlockLdlt;
   int maxIterations = 80;
   double maxSeconds = 0;  // wall-clock cap on one solve, 0 for none
-  int newtonRefinement = 1;  // correction steps on the unreduced Newton system (see ipm.cpp)
-  double residualTolerance = 1e-11;  // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
-  double gapTolerance = 1e-13;       // absolute, on sᵀz (loads are normalised, so O(1))
+  // Threads for the block factorisation (BlockLdlt::setThreads): 0 takes two on a large Schur
+  // complement where the machine has them, 1 keeps the solve on the calling thread. The
+  // answer is the same bit for bit.
+  int threads = 0;
+  int newtonRefinement = 1;             // correction steps on the unreduced Newton system (see ipm.cpp)
+  double residualTolerance = 1e-11;     // on ‖Ax − b‖∞/(1 + ‖b‖∞) and the dual residual
+  double gapTolerance = 1e-13;          // absolute, on sᵀz (loads are normalised, so O(1))
   double relativeGapTolerance = 1e-10;  // or relative to |objective|
   // Early exit on a certified small objective (docs/statics.md, "The early exit"): when c = 0
   // and Q ≥ 0 (the objective is ≥ 0, as in the penalty QP), a point x̃ with A x̃ = b to
