@@ -7,13 +7,13 @@
 // and every refused one listed in still_failing.txt (docs/extrude.md, "Known limits"): a new
 // failure fails the run. A closed shell with a face that is not simple or that intersects
 // itself (shell_checks.h), or with one profile whose top is above CGAL's skeleton's by more
-// than δ1, fails the run unless tests/data/extrude/shell_check_exemptions.txt names it with
-// its reason; such shells are saved (geometry/, above-skeleton/) either way, and a named one
-// that passes fails the run until its line is deleted. A building whose first build fails is
-// rebuilt with wider tolerances as the batch does for users (extrude/batch.h); every accepted
+// than the kernel's tolerances (skeletonTopTolerance), fails the run unless
+// tests/data/extrude/shell_check_exemptions.txt names it with its reason; such shells are saved (geometry/,
+// above-skeleton/) either way, and a named one that passes fails the run until its line is deleted. A building whose
+// first build fails is rebuilt with wider tolerances as the batch does for users (extrude/batch.h); every accepted
 // rebuild must carry its warning, and agree with CGAL's straight skeleton where every edge has
-// one profile (volume_oracle.h). Against the unperturbed plan of a perturbed orthogonal one it is counted and reported (the two may differ
-// where the wider merge sine joins edges by priority that the normal one leaves apart). Rebuilt
+// one profile (volume_oracle.h). Against the unperturbed plan of a perturbed orthogonal one it is counted and reported
+// (the two may differ where the wider merge sine joins edges by priority that the normal one leaves apart). Rebuilt
 // cases are written to extrude-random-failures/rebuilt/. Every first-build failure is kept in
 // tests/data/extrude/random/ with a test of its own (random_cases_test.cpp; new ones are added
 // with scripts/extrude_random_cases.py).
@@ -49,16 +49,26 @@ class Generator {
     const int kind = pick(0, 5);
     std::vector<std::vector<Vec2>> loops;
     switch (kind) {
-      case 0: loops = {star(pick(4, 60))}; break;
-      case 1: loops = {skyline(pick(1, 29))}; break;
-      case 2: loops = {regularPolygon(pick(3, 40), uniform(3, 20), uniform(0, 6.3))}; break;
-      case 3: loops = {mirrored(pick(1, 14))}; break;
+      case 0:
+        loops = {star(pick(4, 60))};
+        break;
+      case 1:
+        loops = {skyline(pick(1, 29))};
+        break;
+      case 2:
+        loops = {regularPolygon(pick(3, 40), uniform(3, 20), uniform(0, 6.3))};
+        break;
+      case 3:
+        loops = {mirrored(pick(1, 14))};
+        break;
       case 4: {
         const double w = uniform(12, 40), h = uniform(12, 40);
         loops = {rectangle(w, h), reversed(rectangle(uniform(2, w / 3), uniform(2, h / 3), w / 3, h / 3))};
         break;
       }
-      default: loops = {skyline(pick(1, 20))}; break;
+      default:
+        loops = {skyline(pick(1, 20))};
+        break;
     }
     if (chance(0.3)) addColinearCorners(loops[0]);
     if (chance(0.2)) perturb(loops[0], std::pow(10.0, uniform(-9, -5)));
@@ -186,8 +196,8 @@ struct ShellCheck {
   std::string geometry;  // shellGeometryProblem
   double identity = 0;   // relative error of the projection identity
   bool equalAngles = false;
-  double height = 0, delta1 = 0;
-  std::optional<double> cgalHeight;  // filled after the checks, by cgalHeightsIsolated
+  double height = 0, delta1 = 0, topTolerance = 0;  // topTolerance: skeletonTopTolerance
+  std::optional<double> cgalHeight;                 // filled after the checks, by cgalHeightsIsolated
   std::string error;  // the check itself failed (an exception, which a worker thread must not let out)
 };
 
@@ -212,7 +222,9 @@ ShellCheck checkShell(const ExtrusionSpec& spec, double factor) {
     for (const auto& l : spec.loops) loops.push_back(l.points);
     c.equalAngles = true;
     c.height = er.shell.maxHeight;
-    c.delta1 = Tolerances::forScale(er.scale, factor).height;
+    const Tolerances t = Tolerances::forScale(er.scale, factor);
+    c.delta1 = t.height;
+    c.topTolerance = skeletonTopTolerance(p, c.height, t.height, t.cluster);
   }
   return c;
 }
@@ -373,16 +385,17 @@ TEST(RandomRobustness, HundredThousandFootprints) {
       if (c.equalAngles && !c.cgalHeight) {
         withoutSkeleton.push_back(r.id);
       } else if (c.equalAngles) {
-        // No vertex above the skeleton's apex, beyond the kernel's event height tolerance δ1.
+        // No vertex above the skeleton's apex beyond the kernel's tolerances
+        // (skeletonTopTolerance: δ1, and δ2 times the roof's slope there).
         ++equalAngles;
         const double cgal = *c.cgalHeight;
         worstTop = std::max(worstTop, (c.height - cgal) / c.delta1);
-        if (c.height > cgal + c.delta1) {
+        if (c.height > cgal + c.topTolerance) {
           ++aboveSkeleton;
           if (c.height - cgal > worstAbove) worstAbove = c.height - cgal, worstAboveId = r.id;
           keep("above-skeleton");
         }
-        expectListed("above-skeleton", c.height > cgal + c.delta1,
+        expectListed("above-skeleton", c.height > cgal + c.topTolerance,
                      "top " + std::to_string(c.height) + " m, CGAL's skeleton " + std::to_string(cgal) + " m");
       }
       continue;
@@ -399,8 +412,10 @@ TEST(RandomRobustness, HundredThousandFootprints) {
     warnedFailed += overlapWarned(r);
     // Refused: only the saved cases still_failing.txt lists may be (with rebuilds; without
     // them every saved case may fail its first build).
-    if (noRetry) EXPECT_TRUE(saved.count(r.id)) << r.id << " failed and is not a saved case: " << r.error;
-    else EXPECT_TRUE(listed.count(r.id)) << r.id << " was refused and still_failing.txt does not list it: " << r.error;
+    if (noRetry)
+      EXPECT_TRUE(saved.count(r.id)) << r.id << " failed and is not a saved case: " << r.error;
+    else
+      EXPECT_TRUE(listed.count(r.id)) << r.id << " was refused and still_failing.txt does not list it: " << r.error;
     std::filesystem::create_directories(dir);
     Document doc;
     doc.add(r.id, items[i].spec);
@@ -409,7 +424,8 @@ TEST(RandomRobustness, HundredThousandFootprints) {
   // CGAL 5.5 crashed on at most one plan a run when it ran in this process (docs/extrude.md);
   // many plans without an answer would mean the oracle itself broke.
   EXPECT_LE(withoutSkeleton.size(), 10u) << "CGAL's skeleton gave no answer for " << withoutSkeleton.size()
-                                         << " plans (first: " << (withoutSkeleton.empty() ? "" : withoutSkeleton.front()) << ")";
+                                         << " plans (first: "
+                                         << (withoutSkeleton.empty() ? "" : withoutSkeleton.front()) << ")";
   std::cout << kCount << " random footprints: " << failed + rebuilt << " failed their first build, " << rebuilt
             << " of them rebuilt with wider tolerances and accepted (" << withCgal
             << " with one profile, agreeing with CGAL's skeleton within " << worstCgal << "; " << unperturbedAgree
@@ -417,13 +433,14 @@ TEST(RandomRobustness, HundredThousandFootprints) {
             << " perturbed orthogonal plans agreeing with the unperturbed plan within 1e-6; " << withoutOracle
             << " without an oracle; projection identity worst " << worstRebuiltIdentity << "); " << failed
             << " failed, " << rejected << " refused as invalid input (post inter-chain overlap warned: " << warnedFailed
-            << " of the failures, " << warnedClosed << " closed shells), projection identity worst " << worst
-            << "; " << equalAngles << " closed with one profile, top at most " << worstTop
-            << " δ1 above CGAL's skeleton (" << aboveSkeleton << " above it by more than δ1, the most "
-            << worstAbove << " m: " << worstAboveId << "); " << badGeometry
+            << " of the failures, " << warnedClosed << " closed shells), projection identity worst " << worst << "; "
+            << equalAngles << " closed with one profile, top at most " << worstTop << " δ1 above CGAL's skeleton ("
+            << aboveSkeleton << " above it beyond the tolerance, the most " << worstAbove << " m: " << worstAboveId
+            << "); " << badGeometry
             << " closed shells with a face not simple in its plane or intersecting itself (first: " << firstBadGeometry
             << "); " << withoutSkeleton.size() << " without CGAL's skeleton (CGAL crashed or refused"
-            << (withoutSkeleton.empty() ? std::string() : ": " + withoutSkeleton.front() + (withoutSkeleton.size() > 1 ? ", ..." : ""))
+            << (withoutSkeleton.empty() ? std::string()
+                                        : ": " + withoutSkeleton.front() + (withoutSkeleton.size() > 1 ? ", ..." : ""))
             << "); slowest "
             << (results.empty() ? std::string("-")
                                 : results[slowest].id + " " + std::to_string(results[slowest].ms) + " ms")

@@ -48,9 +48,7 @@ void clipEars(std::vector<int> poly, const std::vector<P2>& flat, const std::vec
               std::vector<std::array<int, 3>>& out) {
   auto orient = [&](int a, int b, int c) { return CGAL::orientation(flat[a], flat[b], flat[c]); };
   // Squared distance from q to the segment ab, in space.
-  auto toSegment = [&](int a, int b, int q) {
-    return CGAL::squared_distance(pts[q], K::Segment_3(pts[a], pts[b]));
-  };
+  auto toSegment = [&](int a, int b, int q) { return CGAL::squared_distance(pts[q], K::Segment_3(pts[a], pts[b])); };
   auto inLine = [&](int a, int b, int c) {
     const K::Vector_3 ac = pts[c] - pts[a], ab = pts[b] - pts[a];
     const double len2 = ac.squared_length();
@@ -107,7 +105,8 @@ bool improper(const std::array<int, 3>& s, const std::array<int, 3>& t, const st
     while (ti[j] < 0) ++j;
     if (CGAL::do_intersect(K::Segment_3(p[s[(i + 1) % 3]], p[s[(i + 2) % 3]]), B)) return true;
     if (CGAL::do_intersect(K::Segment_3(p[t[(j + 1) % 3]], p[t[(j + 2) % 3]]), A)) return true;
-    if (CGAL::coplanar(p[s[0]], p[s[1]], p[s[2]], p[t[(j + 1) % 3]]) && CGAL::coplanar(p[s[0]], p[s[1]], p[s[2]], p[t[(j + 2) % 3]])) {
+    if (CGAL::coplanar(p[s[0]], p[s[1]], p[s[2]], p[t[(j + 1) % 3]]) &&
+        CGAL::coplanar(p[s[0]], p[s[1]], p[s[2]], p[t[(j + 2) % 3]])) {
       // In one plane: neither reaches into the other's corner at the shared point.
       auto inward = [&](const std::array<int, 3>& u, int k) {
         const P3 c = CGAL::centroid(p[u[0]], p[u[1]], p[u[2]]);
@@ -193,7 +192,8 @@ std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& 
     for (const auto& t : cutIntoTriangles(m.points, m.faces[fi], delta2)) tris.push_back(t);
     polygonOf.resize(tris.size(), fi);
   }
-  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+  using Box =
+      CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
   std::vector<Box> boxes;
   for (std::size_t k = 0; k < tris.size(); ++k) {
     const auto& t = tris[k];
@@ -227,13 +227,28 @@ const ShellCheckExemptions& shellCheckExemptions() {
       std::getline(ss >> std::ws, reason);
       const std::string at = "shell_check_exemptions.txt:" + std::to_string(n) + ": ";
       if (!runs.count(run) || !checks.count(check) || id.empty() || reason.empty())
-        l.problems.push_back(at + "expected \"RUN ID CHECK REASON\" (RUN random, hip45 or mixed; CHECK geometry or above-skeleton)");
+        l.problems.push_back(
+            at + "expected \"RUN ID CHECK REASON\" (RUN random, hip45 or mixed; CHECK geometry or above-skeleton)");
       else if (!l.reasons.emplace(run + " " + id + " " + check, reason).second)
         l.problems.push_back(at + run + " " + id + " " + check + " twice");
     }
     return l;
   }();
   return list;
+}
+
+double skeletonTopTolerance(const Profile& profile, double height, double delta1, double delta2) {
+  const auto& pts = profile.points;
+  double slope = 0;
+  for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+    const double dw = pts[k + 1][0] - pts[k][0], dz = pts[k + 1][1] - pts[k][1];
+    const bool last = k + 2 == pts.size();
+    if (height >= pts[k][1] && (height <= pts[k + 1][1] || last)) {
+      slope = dw > 0 ? dz / dw : 0.0;
+      break;
+    }
+  }
+  return delta1 + delta2 * slope;
 }
 
 }  // namespace corbel::extrude::test
