@@ -167,10 +167,22 @@ std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& 
         P3 at;
         for (int i : loop)
           if (shell.points[i][2] > top) top = shell.points[i][2], at = P3(shell.points[i][0], shell.points[i][1], top);
+        // The longest run of the loop that goes out and straight back (a needle): at a corner
+        // where the boundary turns back on itself, the shorter of its two sides.
+        double needle = 0;
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+          const Vec3& a = shell.points[loop[(k + loop.size() - 1) % loop.size()]];
+          const Vec3& b = shell.points[loop[k]];
+          const Vec3& c = shell.points[loop[(k + 1) % loop.size()]];
+          const double ab = (b - a).norm(), bc = (c - b).norm();
+          if (ab > 0 && bc > 0 && OpenMesh::dot(b - a, c - b) < -0.999 * ab * bc)
+            needle = std::max(needle, std::min(ab, bc));
+        }
         std::ostringstream s;
         s << "face " << fi << " (edge " << f.sourceEdge << ", segment " << f.segment << ", step " << f.step
           << ") has a loop of " << loop.size() << " corners that is not a simple polygon in its plane; its top "
           << where(at);
+        if (needle > 0) s << "; it runs out and back along a line for " << needle << " m";
         return s.str();
       }
     }
