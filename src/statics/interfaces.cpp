@@ -6,6 +6,7 @@
 #include <thread>
 #include <tuple>
 
+#include "statics/parallel.h"
 #include "statics/tolerances.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
@@ -269,7 +270,9 @@ Contacts findContacts(const Assembly& assembly, const std::vector<BlockPropertie
       if (touchedWithoutArea) result.zeroArea.push_back({a, b});
     }
   };
-  const unsigned threads = nb >= kParallelBlocks ? std::min(2u, std::max(1u, std::thread::hardware_concurrency())) : 1u;
+  // Two threads by parallel.h's rule; the sweep's rows differ in cost, so they take chunks in
+  // turn rather than halves.
+  const unsigned threads = twoThreads(nb, 0, kParallelBlocks) ? 2u : 1u;
   if (threads == 1) {
     for (int oi = 0; oi < nb; ++oi) sweep(oi, result);
   } else {
