@@ -146,6 +146,7 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
     shareTop(A, B, vl, vb);  // B's face ends along its top; A's face goes on above it
     const int bNext = corners_[b1].next;
     edges_[B].alive = false;
+    edges_[A].merged = true;
     relink(A, bNext, vb, pb, z, depth);
   } else {
     const int a0 = edges_[A].start;
@@ -155,6 +156,7 @@ void Sweeper::mergeColinear(int ci, double z, int depth) {
     shareTop(A, B, vl, va);
     const int aPrev = corners_[a0].prev;
     edges_[A].alive = false;
+    edges_[B].merged = true;
     relink(aPrev, B, va, pa, z, depth);
   }
 }

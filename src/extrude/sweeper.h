@@ -50,6 +50,7 @@ struct Edge {
   int step = 0;   // current angle step of the input edge
   int start = -1, end = -1;
   bool alive = true;
+  bool merged = false;  // has taken over a colinear neighbour's extent (mergeColinear)
 };
 
 struct Corner {

@@ -299,6 +299,20 @@ TEST(RandomRobustness, HundredThousandFootprints) {
         out << results[i].id << " " << results[i].toleranceFactor << " " << results[i].measures.volume << " "
             << results[i].measures.roofArea << " " << (checks[i].geometry.empty() ? "ok" : "flagged") << "\n";
   }
+  // CORBEL_RANDOM_ORACLES=FILE writes, for each closed shell that has an independent volume
+  // (volume_oracle.h), its id, the oracle's kind (1 CGAL, 2 unperturbed plan), the relative
+  // difference and the tolerance factor: the run checks only rebuilt shells against it, so this
+  // is how a kernel change is seen to move first builds' volumes (one more build per shell).
+  if (const char* file = std::getenv("CORBEL_RANDOM_ORACLES")) {
+    std::ofstream out(file);
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      if (!results[i].ok) continue;
+      const VolumeOracle o = independentVolume(items[i].spec);
+      if (o.kind != VolumeOracle::None)
+        out << results[i].id << " " << int(o.kind) << " " << std::abs(results[i].measures.volume - o.volume) / o.volume
+            << " " << results[i].toleranceFactor << "\n";
+    }
+  }
   const ShellCheckExemptions& exemptions = shellCheckExemptions();
   for (const std::string& p : exemptions.problems) ADD_FAILURE() << p;
   std::vector<std::string> withoutSkeleton;  // CGAL crashed or refused

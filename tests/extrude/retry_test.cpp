@@ -129,7 +129,7 @@ TEST(Rebuilt, MisplacedFacePiecesCloseWithWiderTolerances) {
 }
 
 TEST(Rebuilt, PlansThatOverlappedThemselvesCloseWithWiderTolerances) {
-  // random34510, also the post inter-chain check's case (post_check_test.cpp: it stays warned
+  // random73059, also the post inter-chain check's case (post_check_test.cpp: it stays warned
   // and open at 1×).
   expectRebuiltAndRight("overlap_after_event.corbel", "overlapped itself", VolumeOracle::Cgal);
 }
