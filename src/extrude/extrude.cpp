@@ -231,8 +231,8 @@ bool vertexFansClosed(const SweepOutput& shell) {
   return true;
 }
 
-// Whether a face's loop is a simple polygon seen along the axis its normal is most across
-// (exact predicates): two of its corners in one place, or sides that cross, are not.
+}  // namespace
+
 bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::vector<int>& loop) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   int axis = 0;
@@ -244,8 +244,6 @@ bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::v
   for (int i : loop) flat.emplace_back(shell.points[i][u], shell.points[i][v]);
   return flat.size() >= 3 && CGAL::is_simple_2(flat.begin(), flat.end(), K());
 }
-
-}  // namespace
 
 std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace, double baseHeight) {
   std::vector<int> parent(shell.points.size());

@@ -268,6 +268,7 @@ ExtrusionResult Stager::run(double scale) {
   traceFaces(points_, faces_, tol_, out.faces, warnings_);
   out.points = std::move(points_);
   collapseShortEdges(out, tol_.collapse, tol_.tinyFace, tol_.height);
+  zipSpurs(out, tol_.tinyFace);
   for (const Vec3& p : out.points) out.maxHeight = std::max(out.maxHeight, p[2]);
   out.warnings = std::move(warnings_);
   out.events = events_;

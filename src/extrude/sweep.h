@@ -115,6 +115,17 @@ void traceFaces(const std::vector<Vec3>& points, const std::vector<RawFace>& raw
 std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace = 0,
                                double baseHeight = std::numeric_limits<double>::infinity());
 
+// Whether a loop of the face is a simple polygon seen along the axis its normal is most
+// across (exact predicates): two of its corners in one place, or sides that cross, are not.
+bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::vector<int>& loop);
+
+// Zips every zero-width spur out of the faces (spurs.cpp): where a face's boundary runs out
+// to a corner and straight back with the two sides within `width` of each other, the corner
+// leaves that face and the faces either side of the spur meet along it instead. The shell
+// stays closed; nothing is done to a shell that is not a closed 2-manifold. Returns the number
+// of corners zipped.
+std::size_t zipSpurs(SweepOutput& shell, double width);
+
 // Runs the sweep. The input must already be valid (see checkSpec): simple, consistently
 // oriented loops and angles within (−π/2, π/2) with the last one > 0.
 SweepOutput sweep(const SweepInput& input, const Tolerances& tol, Progress* progress = nullptr);

@@ -1,0 +1,201 @@
+// Zipping zero-width spurs out of the traced shell's faces (docs/extrude.md, "Decisions").
+#include "extrude/sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace corbel::extrude {
+
+namespace {
+
+std::uint64_t key(int u, int v) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(v);
+}
+
+// Where a directed edge of the shell lies: its face and loop.
+struct Place {
+  int face = -1;
+  int loop = -1;
+};
+
+class Zipper {
+ public:
+  Zipper(SweepOutput& shell, double width) : shell_(shell), width_(width) {}
+
+  std::size_t run() {
+    // Only loops with a corner where the boundary turns straight back, and that are not simple
+    // in their plane, are looked at (a cheap test first, then the exact one): a spur in a
+    // simple loop harms nothing, and every zip moves a corner into a neighbouring face.
+    std::vector<Place> spurred;
+    for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
+      for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li) {
+        const auto& l = shell_.faces[fi].loops[li];
+        bool turns = false;
+        for (std::size_t i = 0; i < l.size() && !turns; ++i) turns = turnsBack(l, i);
+        if (turns && !simpleInItsPlane(shell_, shell_.faces[fi], l))
+          spurred.push_back(Place{static_cast<int>(fi), static_cast<int>(li)});
+      }
+    if (spurred.empty() || !index()) return 0;
+    std::size_t zipped = 0;
+    // Each zip removes a corner from a face, so this ends; the bound is a guard.
+    std::size_t corners = 0;
+    for (const ShellFace& f : shell_.faces)
+      for (const auto& l : f.loops) corners += l.size();
+    for (bool changed = true; changed && zipped <= corners;) {
+      changed = false;
+      for (const Place& p : spurred)
+        for (std::size_t i = 0; i < loopOf(p).size();) {
+          if (zipAt(p.face, p.loop, i)) {
+            ++zipped;
+            changed = true;
+            i = 0;  // the loop changed: look at it again from its start
+          } else {
+            ++i;
+          }
+        }
+    }
+    if (zipped == 0) return 0;
+    // Loops that a zip closed (two corners left) are gone; so is a face whose outer loop went.
+    std::vector<ShellFace> faces;
+    for (ShellFace& f : shell_.faces) {
+      if (f.loops.empty() || f.loops[0].size() < 3) continue;
+      std::vector<std::vector<int>> loops;
+      for (auto& l : f.loops)
+        if (l.size() >= 3) loops.push_back(std::move(l));
+      f.loops = std::move(loops);
+      faces.push_back(std::move(f));
+    }
+    shell_.faces = std::move(faces);
+    return zipped;
+  }
+
+ private:
+  // Every directed edge once; false (nothing is zipped) where the shell is not a closed
+  // 2-manifold to begin with, as then an edge's partner is not known.
+  bool index() {
+    for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
+      for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li) {
+        const auto& l = shell_.faces[fi].loops[li];
+        for (std::size_t i = 0; i < l.size(); ++i)
+          if (!edges_.emplace(key(l[i], l[(i + 1) % l.size()]), Place{static_cast<int>(fi), static_cast<int>(li)})
+                   .second)
+            return false;
+      }
+    for (const auto& [k, p] : edges_)
+      if (!edges_.count((k << 32) | (k >> 32))) return false;
+    return true;
+  }
+
+  std::vector<int>& loopOf(const Place& p) { return shell_.faces[p.face].loops[p.loop]; }
+
+  // Whether the boundary turns straight back at corner i: A → T → B with the nearer of A and
+  // B within width_ of the line T–far, both sides longer than width_ (shorter ones are short
+  // edges, collapseShortEdges' matter).
+  bool turnsBack(const std::vector<int>& loop, std::size_t i) const {
+    const std::size_t n = loop.size();
+    if (n < 3) return false;
+    const Vec3 &A = shell_.points[loop[(i + n - 1) % n]], &T = shell_.points[loop[i]],
+               &B = shell_.points[loop[(i + 1) % n]];
+    const Vec3 ta = A - T, tb = B - T;
+    const double la = ta.norm(), lb = tb.norm();
+    if (!(la > width_ && lb > width_) || OpenMesh::dot(ta, tb) <= 0) return false;
+    const Vec3 nearV = la <= lb ? ta : tb;
+    const Vec3 farU = la <= lb ? tb / lb : ta / la;
+    return (nearV - farU * OpenMesh::dot(nearV, farU)).norm() <= width_;
+  }
+
+  // At corner i of a loop, the boundary A → T → B turns straight back (turnsBack). Then T
+  // leaves the loop, which runs A → B, and the face across the far side takes the nearer of A
+  // and B into its edge there; where one face lies across both sides, running B → T → A, T
+  // leaves it too. The shell stays closed (every directed edge keeps a partner).
+  bool zipAt(int fi, int li, std::size_t i) {
+    std::vector<int>& loop = shell_.faces[fi].loops[li];
+    if (!turnsBack(loop, i)) return false;
+    const std::size_t n = loop.size();
+    const int a = loop[(i + n - 1) % n], t = loop[i], b = loop[(i + 1) % n];
+    if (a == b) return false;
+    const bool nearA = (shell_.points[a] - shell_.points[t]).norm() <= (shell_.points[b] - shell_.points[t]).norm();
+    const auto acrossB = edges_.find(key(b, t)), acrossA = edges_.find(key(t, a));
+    if (acrossB == edges_.end() || acrossA == edges_.end()) return false;
+    const Place g = acrossB->second, h = acrossA->second;
+    if (g.face == fi || h.face == fi) return false;
+
+    // The loops as they would be, and the shell's directed edges that go and come.
+    std::vector<int> newLoop = loop;
+    newLoop.erase(newLoop.begin() + static_cast<std::ptrdiff_t>(i));
+    std::vector<std::uint64_t> gone{key(a, t), key(t, b)};
+    std::vector<std::pair<std::uint64_t, Place>> made;
+    if (newLoop.size() == 2) {
+      gone.push_back(key(b, a));  // a triangle goes altogether, its third edge with it
+      newLoop.clear();
+    } else {
+      made.push_back({key(a, b), Place{fi, li}});
+    }
+    Place other;
+    std::vector<int> newSide;
+    const std::vector<int>& G = loopOf(g);
+    const std::size_t gn = G.size();
+    std::size_t at = 0;
+    while (at < gn && G[at] != b) ++at;
+    if (at == gn || G[(at + 1) % gn] != t) return false;
+    if (g.face == h.face && g.loop == h.loop && G[(at + 2) % gn] == a) {
+      // One face across both sides, b → t → a: t leaves it too.
+      other = g;
+      newSide = G;
+      newSide.erase(newSide.begin() + static_cast<std::ptrdiff_t>((at + 1) % gn));
+      gone.push_back(key(b, t));
+      gone.push_back(key(t, a));
+      if (newSide.size() == 2) {
+        gone.push_back(key(a, b));
+        newSide.clear();
+      } else {
+        made.push_back({key(b, a), g});
+      }
+    } else {
+      // The face across the far side takes the near corner into that edge: b → t becomes
+      // b → a → t (or t → a becomes t → b → a).
+      other = nearA ? g : h;
+      const int near = nearA ? a : b;
+      const std::vector<int>& side = loopOf(other);
+      if (std::find(side.begin(), side.end(), near) != side.end()) return false;  // it would pass a corner twice
+      const int s0 = nearA ? b : t, s1 = nearA ? t : a;
+      const std::size_t sn = side.size();
+      std::size_t k = 0;
+      while (k < sn && !(side[k] == s0 && side[(k + 1) % sn] == s1)) ++k;
+      if (k == sn) return false;
+      newSide = side;
+      newSide.insert(newSide.begin() + static_cast<std::ptrdiff_t>(k + 1), near);
+      gone.push_back(key(s0, s1));
+      made.push_back({key(s0, near), other});
+      made.push_back({key(near, s1), other});
+    }
+    if (newLoop.empty() && newSide.empty()) return false;  // two faces of no area, alone
+    for (const auto& [k, p] : made)
+      if (edges_.count(k) && std::find(gone.begin(), gone.end(), k) == gone.end()) return false;
+    // The face across must stay simple in its plane where it was: the near corner lies within
+    // the width of the far side, but on either side of it, and may meet a corner of that face
+    // in its plane (a wall's foot a few µm above the base, put into the base, crossed it).
+    // (This face may not be simple yet: a spur of several corners goes one corner at a time.)
+    const ShellFace& across = shell_.faces[other.face];
+    if (!newSide.empty() && !simpleInItsPlane(shell_, across, newSide) &&
+        simpleInItsPlane(shell_, across, loopOf(other)))
+      return false;
+    for (const std::uint64_t k : gone) edges_.erase(k);
+    for (const auto& [k, p] : made) edges_[k] = p;
+    loop = std::move(newLoop);
+    loopOf(other) = std::move(newSide);
+    return true;
+  }
+
+  SweepOutput& shell_;
+  double width_;
+  std::unordered_map<std::uint64_t, Place> edges_;
+};
+
+}  // namespace
+
+std::size_t zipSpurs(SweepOutput& shell, double width) { return Zipper(shell, width).run(); }
+
+}  // namespace corbel::extrude
