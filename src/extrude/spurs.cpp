@@ -172,6 +172,10 @@ class Zipper {
       made.push_back({key(near, s1), other});
     }
     if (newLoop.empty() && newSide.empty()) return false;  // two faces of no area, alone
+    // An outer loop does not go while its face has holes (they would lose their face).
+    if ((newLoop.empty() && li == 0 && shell_.faces[fi].loops.size() > 1) ||
+        (newSide.empty() && other.loop == 0 && shell_.faces[other.face].loops.size() > 1))
+      return false;
     for (const auto& [k, p] : made)
       if (edges_.count(k) && std::find(gone.begin(), gone.end(), k) == gone.end()) return false;
     // The face across must stay simple in its plane where it was: the near corner lies within
