@@ -16,9 +16,9 @@ namespace corbel::extrude::test {
 namespace {
 
 // A 2 × 2 × 1 box whose top is three faces: G the front-left square, H the right half, and F
-// the back-left square with a spur down the line x = 1 to the front edge: F runs (1, 1) →
-// (1, `spurX`, 0.5) → (1, 0) and straight back to (1, 2). G lies across the spur's first side,
-// H across its second; F's loop is not simple in its plane.
+// the back-left square with a spur down the line x = 1 to the front edge: seen from above, F
+// runs (1, 1) → (spurX, 0.5) → (1, 0) and straight back to (1, 2). G lies across the spur's
+// first side, H across its second; F's loop is not simple in its plane.
 enum Top { F = 0, G = 1, H = 2 };
 SweepOutput boxWithASpur(double spurX = 1) {
   SweepOutput s;
