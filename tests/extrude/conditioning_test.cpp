@@ -18,12 +18,6 @@
 namespace corbel::extrude::test {
 namespace {
 
-// The spec of a saved one-object project (a path under the source tree).
-ExtrusionSpec savedSpec(const std::string& relative) {
-  const Document d = loadProject((std::filesystem::path(CORBEL_SOURCE_DIR) / relative).string()).document;
-  return std::get<ExtrusionSpec>(d.objects.at(0).spec);
-}
-
 // What every shell here must be: closed, unwarned, every face simple in its plane.
 void expectCleanShell(const ExtrusionResult& r, const ExtrusionSpec& spec) {
   EXPECT_EQ(unpairedEdges(r.shell), 0u);

@@ -124,10 +124,7 @@ const std::set<std::string> kClasses{"roof cannot close",
                                      "unclosed, other warning",
                                      "non-manifold"};
 
-ExtrusionSpec load(const std::string& name) {
-  const Document d = loadProject((casesDir() / (name + ".corbel")).string()).document;
-  return std::get<ExtrusionSpec>(d.objects.at(0).spec);
-}
+ExtrusionSpec load(const std::string& name) { return savedSpec(casesDir() / (name + ".corbel")); }
 
 // The rebuild factors and agreement of the batch as users get it (BatchOptions' defaults).
 const BatchOptions kUsers;

@@ -24,10 +24,7 @@
 namespace corbel::extrude::test {
 namespace {
 
-ExtrusionSpec saved(const std::string& name) {
-  const Document d = loadProject(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/" + name).document;
-  return std::get<ExtrusionSpec>(d.objects.at(0).spec);
-}
+ExtrusionSpec saved(const std::string& name) { return savedSpec("tests/data/extrude/" + name); }
 
 BatchResult buildOne(const ExtrusionSpec& spec, bool retry, bool keepMesh = false) {
   BatchOptions options;

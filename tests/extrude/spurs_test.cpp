@@ -3,6 +3,7 @@
 #include "extrude/extrude.h"
 #include "extrude/sweep.h"
 #include "shell_checks.h"
+#include "support.h"
 #include "volume_oracle.h"
 
 #include <gtest/gtest.h>
@@ -83,11 +84,6 @@ TEST(ZipSpurs, LeavesAShellThatIsNotClosed) {
   const std::vector<int> before = s.faces[F].loops[0];
   EXPECT_EQ(zipSpurs(s, 1e-9), 0u);
   EXPECT_EQ(s.faces[F].loops[0], before);
-}
-
-ExtrusionSpec savedSpec(const std::string& relative) {
-  const Document d = loadProject((std::filesystem::path(CORBEL_SOURCE_DIR) / relative).string()).document;
-  return std::get<ExtrusionSpec>(d.objects.at(0).spec);
 }
 
 // Two perturbed orthogonal plans from the random run, each with a face that ran out along a

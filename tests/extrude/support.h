@@ -1,16 +1,26 @@
 #pragma once
-// Helpers shared by the extrusion tests: building specs from plain polygons.
+// Helpers shared by the extrusion tests: building specs from plain polygons, reading saved ones.
+#include "core/project_io.h"
 #include "extrude/extrude.h"
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <numbers>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace corbel::extrude::test {
 
 inline constexpr double kDeg = std::numbers::pi / 180.0;
+
+// The extrusion spec of a saved one-object project; a relative path is under the source tree.
+inline ExtrusionSpec savedSpec(const std::filesystem::path& file) {
+  const std::filesystem::path path = file.is_absolute() ? file : std::filesystem::path(CORBEL_SOURCE_DIR) / file;
+  const Document d = loadProject(path.string()).document;
+  return std::get<ExtrusionSpec>(d.objects.at(0).spec);
+}
 
 // One profile for every edge.
 inline ExtrusionSpec uniformSpec(const std::vector<std::vector<Vec2>>& loops, const Profile& profile) {
