@@ -1,5 +1,5 @@
 // Zipping zero-width spurs out of the traced shell's faces (docs/extrude.md, "Decisions").
-#include "extrude/sweep.h"
+#include "extrude/shell_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,15 +10,7 @@ namespace corbel::extrude {
 
 namespace {
 
-std::uint64_t key(int u, int v) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(v);
-}
-
-// Where a directed edge of the shell lies: its face and loop.
-struct Place {
-  int face = -1;
-  int loop = -1;
-};
+using Place = EdgePlace;
 
 class Zipper {
  public:
@@ -37,7 +29,7 @@ class Zipper {
         if (turns && !simpleInItsPlane(shell_, shell_.faces[fi], l))
           spurred.push_back(Place{static_cast<int>(fi), static_cast<int>(li)});
       }
-    if (spurred.empty() || !index()) return 0;
+    if (spurred.empty() || !indexEdges(shell_, edges_)) return 0;
     std::size_t zipped = 0;
     // Each zip removes a corner from a face, so this ends; the bound is a guard.
     std::size_t corners = 0;
@@ -72,22 +64,6 @@ class Zipper {
   }
 
  private:
-  // Every directed edge once; false (nothing is zipped) where the shell is not a closed
-  // 2-manifold to begin with, as then an edge's partner is not known.
-  bool index() {
-    for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
-      for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li) {
-        const auto& l = shell_.faces[fi].loops[li];
-        for (std::size_t i = 0; i < l.size(); ++i)
-          if (!edges_.emplace(key(l[i], l[(i + 1) % l.size()]), Place{static_cast<int>(fi), static_cast<int>(li)})
-                   .second)
-            return false;
-      }
-    for (const auto& [k, p] : edges_)
-      if (!edges_.count((k << 32) | (k >> 32))) return false;
-    return true;
-  }
-
   std::vector<int>& loopOf(const Place& p) { return shell_.faces[p.face].loops[p.loop]; }
 
   // Whether the boundary turns straight back at corner i: A → T → B with the nearer of A and
@@ -117,7 +93,7 @@ class Zipper {
     const int a = loop[(i + n - 1) % n], t = loop[i], b = loop[(i + 1) % n];
     if (a == b) return false;
     const bool nearA = (shell_.points[a] - shell_.points[t]).norm() <= (shell_.points[b] - shell_.points[t]).norm();
-    const auto acrossB = edges_.find(key(b, t)), acrossA = edges_.find(key(t, a));
+    const auto acrossB = edges_.find(edgeKey(b, t)), acrossA = edges_.find(edgeKey(t, a));
     if (acrossB == edges_.end() || acrossA == edges_.end()) return false;
     const Place g = acrossB->second, h = acrossA->second;
     if (g.face == fi || h.face == fi) return false;
@@ -125,13 +101,13 @@ class Zipper {
     // The loops as they would be, and the shell's directed edges that go and come.
     std::vector<int> newLoop = loop;
     newLoop.erase(newLoop.begin() + static_cast<std::ptrdiff_t>(i));
-    std::vector<std::uint64_t> gone{key(a, t), key(t, b)};
+    std::vector<std::uint64_t> gone{edgeKey(a, t), edgeKey(t, b)};
     std::vector<std::pair<std::uint64_t, Place>> made;
     if (newLoop.size() == 2) {
-      gone.push_back(key(b, a));  // a triangle goes altogether, its third edge with it
+      gone.push_back(edgeKey(b, a));  // a triangle goes altogether, its third edge with it
       newLoop.clear();
     } else {
-      made.push_back({key(a, b), Place{fi, li}});
+      made.push_back({edgeKey(a, b), Place{fi, li}});
     }
     Place other;
     std::vector<int> newSide;
@@ -145,13 +121,13 @@ class Zipper {
       other = g;
       newSide = G;
       newSide.erase(newSide.begin() + static_cast<std::ptrdiff_t>((at + 1) % gn));
-      gone.push_back(key(b, t));
-      gone.push_back(key(t, a));
+      gone.push_back(edgeKey(b, t));
+      gone.push_back(edgeKey(t, a));
       if (newSide.size() == 2) {
-        gone.push_back(key(a, b));
+        gone.push_back(edgeKey(a, b));
         newSide.clear();
       } else {
-        made.push_back({key(b, a), g});
+        made.push_back({edgeKey(b, a), g});
       }
     } else {
       // The face across the far side takes the near corner into that edge: b → t becomes
@@ -167,9 +143,9 @@ class Zipper {
       if (k == sn) return false;
       newSide = side;
       newSide.insert(newSide.begin() + static_cast<std::ptrdiff_t>(k + 1), near);
-      gone.push_back(key(s0, s1));
-      made.push_back({key(s0, near), other});
-      made.push_back({key(near, s1), other});
+      gone.push_back(edgeKey(s0, s1));
+      made.push_back({edgeKey(s0, near), other});
+      made.push_back({edgeKey(near, s1), other});
     }
     if (newLoop.empty() && newSide.empty()) return false;  // two faces of no area, alone
     // An outer loop does not go while its face has holes (they would lose their face).
@@ -195,7 +171,7 @@ class Zipper {
 
   SweepOutput& shell_;
   double width_;
-  std::unordered_map<std::uint64_t, Place> edges_;
+  EdgeIndex edges_;
 };
 
 }  // namespace

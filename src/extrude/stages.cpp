@@ -269,7 +269,12 @@ ExtrusionResult Stager::run(double scale) {
   out.points = std::move(points_);
   collapseShortEdges(out, tol_.collapse, tol_.tinyFace, tol_.height);
   zipSpurs(out, tol_.tinyFace);
-  for (const Vec3& p : out.points) out.maxHeight = std::max(out.maxHeight, p[2]);
+  unfoldSharedRuns(out);
+  // The top of what the faces use: a corner the clean-up took out of every face (a spur's tip,
+  // a fold's corners) is no part of the shell.
+  for (const ShellFace& f : out.faces)
+    for (const auto& loop : f.loops)
+      for (int v : loop) out.maxHeight = std::max(out.maxHeight, out.points[v][2]);
   out.warnings = std::move(warnings_);
   out.events = events_;
   result.anchors = std::move(frames_);

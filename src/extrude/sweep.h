@@ -126,6 +126,14 @@ bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::v
 // of corners zipped.
 std::size_t zipSpurs(SweepOutput& shell, double width);
 
+// Takes folds out of the boundaries between faces (folds.cpp): where a face that is not simple
+// in its plane shares a run of corners with one other face, and no third face meets those
+// corners, the two faces lie in one plane there and are divided by a straight edge between
+// the run's ends instead. Kept only where that makes a loop simple and leaves no loop that was
+// simple crossing itself; nothing is done to a shell that is not a closed 2-manifold. Returns
+// the number of corners removed.
+std::size_t unfoldSharedRuns(SweepOutput& shell);
+
 // Runs the sweep. The input must already be valid (see checkSpec): simple, consistently
 // oriented loops and angles within (−π/2, π/2) with the last one > 0.
 SweepOutput sweep(const SweepInput& input, const Tolerances& tol, Progress* progress = nullptr);

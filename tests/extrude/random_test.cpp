@@ -242,13 +242,25 @@ TEST(RandomRobustness, HundredThousandFootprints) {
   if (const char* limit = std::getenv("CORBEL_RANDOM_TIME_LIMIT")) options.timeLimitSeconds = std::atof(limit);
   if (noRetry) options.retryFactors.clear();
   const auto results = extrudeBatch(items, options);
-  if (const char* dump = std::getenv("CORBEL_RANDOM_DUMP"))  // write one case to a file, to study it
+  if (const char* dump = std::getenv("CORBEL_RANDOM_DUMP")) {  // write cases to files, to study them
+    std::set<std::string> wanted;  // their ids, separated by spaces or commas
+    std::string id;
+    for (const char* c = dump;; ++c) {
+      if (*c && *c != ' ' && *c != ',') {
+        id += *c;
+        continue;
+      }
+      if (!id.empty()) wanted.insert(id);
+      id.clear();
+      if (!*c) break;
+    }
     for (const auto& item : items)
-      if (item.id == dump) {
+      if (wanted.count(item.id)) {
         Document doc;
         doc.add(item.id, item.spec);
         saveProject(doc, item.id + ".corbel");
       }
+  }
   // Every closed shell checked: faces simple, no self-intersection, the projection identity,
   // and with one profile no vertex above CGAL's skeleton. On one thread: run on every core, the
   // checks crashed (SIGSEGV) in about one full run in three under load, also with CGAL's

@@ -3,11 +3,14 @@
 #include "extrude/extrude.h"
 #include "extrude/sweep.h"
 #include "shell_checks.h"
+#include "skeleton_oracle.h"
 #include "support.h"
 #include "volume_oracle.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <variant>
@@ -26,24 +29,16 @@ SweepOutput boxWithASpur(double spurX = 1) {
   s.points = {Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(2, 0, 1), Vec3(2, 2, 1),       Vec3(1, 2, 1),
               Vec3(0, 2, 1), Vec3(0, 1, 1), Vec3(1, 1, 1), Vec3(spurX, 0.5, 1),  // 8: on the spur
               Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 0), Vec3(0, 2, 0)};
-  auto face = [&](std::vector<int> loop, const Vec3& n) {
-    ShellFace f;
-    f.loops = {std::move(loop)};
-    f.normal = n;
-    s.faces.push_back(f);
-  };
-  face({6, 7, 8, 1, 4, 5}, Vec3(0, 0, 1));  // F
-  face({0, 1, 8, 7, 6}, Vec3(0, 0, 1));     // G
-  face({1, 2, 3, 4}, Vec3(0, 0, 1));        // H
-  face({9, 10, 2, 1, 0}, Vec3(0, -1, 0));
-  face({10, 11, 3, 2}, Vec3(1, 0, 0));
-  face({11, 12, 5, 4, 3}, Vec3(0, 1, 0));
-  face({12, 9, 0, 6, 5}, Vec3(-1, 0, 0));
-  face({9, 12, 11, 10}, Vec3(0, 0, -1));
+  addFace(s, {6, 7, 8, 1, 4, 5}, Vec3(0, 0, 1));  // F
+  addFace(s, {0, 1, 8, 7, 6}, Vec3(0, 0, 1));     // G
+  addFace(s, {1, 2, 3, 4}, Vec3(0, 0, 1));        // H
+  addFace(s, {9, 10, 2, 1, 0}, Vec3(0, -1, 0));
+  addFace(s, {10, 11, 3, 2}, Vec3(1, 0, 0));
+  addFace(s, {11, 12, 5, 4, 3}, Vec3(0, 1, 0));
+  addFace(s, {12, 9, 0, 6, 5}, Vec3(-1, 0, 0));
+  addFace(s, {9, 12, 11, 10}, Vec3(0, 0, -1));
   return s;
 }
-
-double topArea(const SweepOutput& s, int face) { return faceArea(s, s.faces[face]) * s.faces[face].normal[2]; }
 
 TEST(ZipSpurs, ZipsASpurCornerByCornerAndKeepsTheShellClosed) {
   SweepOutput s = boxWithASpur();
@@ -121,6 +116,27 @@ TEST(ZipSpurs, ARoofsSpurAlongAWallIsZipped) {
 TEST(ZipSpurs, ASpurWithOneFaceAcrossBothSidesIsZipped) {
   EXPECT_EQ(independentVolume(savedSpec(kBothSides)).kind, VolumeOracle::Cgal);
   expectZippedAndAgreeing(kBothSides);
+}
+
+// random31830 (one profile on every edge): the sweep ran a corner 0.52 m up past a ridge and
+// back, a needle of no width. Zipped, the needle's tip is in no face, and the shell's top is
+// the top of the corners its faces use: CGAL's straight skeleton's, within the kernel's
+// tolerances (skeletonTopTolerance, the random run's check).
+TEST(ZipSpurs, ANeedlesZippedTipIsNoPartOfTheTop) {
+  const ExtrusionSpec spec = savedSpec("tests/data/extrude/needle_zipped_off_a_ridge.corbel");
+  const ExtrusionResult r = extrude(spec);
+  EXPECT_EQ(shellGeometryProblem(r.shell, spec), "");
+  double top = -INFINITY;
+  for (const ShellFace& f : r.shell.faces)
+    for (const auto& loop : f.loops)
+      for (int v : loop) top = std::max(top, r.shell.points[v][2]);
+  EXPECT_EQ(r.shell.maxHeight, top);
+  std::vector<std::vector<Vec2>> loops;
+  for (const auto& l : spec.loops) loops.push_back(l.points);
+  const Profile& profile = spec.profiles[spec.loops[0].profile[0]];
+  const double skeleton = cgalHeightUnderProfile(loops, profile.points);
+  const Tolerances t = Tolerances::forScale(r.scale);
+  EXPECT_LE(r.shell.maxHeight, skeleton + skeletonTopTolerance(profile, r.shell.maxHeight, t.height, t.cluster));
 }
 
 }  // namespace

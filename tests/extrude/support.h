@@ -82,4 +82,17 @@ inline std::vector<Vec2> reversed(std::vector<Vec2> p) {
   return p;
 }
 
+// Adds a face of one loop to a hand-built shell (the clean-up passes' tests).
+inline void addFace(SweepOutput& shell, std::vector<int> loop, const Vec3& normal) {
+  ShellFace f;
+  f.loops = {std::move(loop)};
+  f.normal = normal;
+  shell.faces.push_back(std::move(f));
+}
+
+// A face's area seen from above (its area times the up part of its normal).
+inline double topArea(const SweepOutput& shell, std::size_t face) {
+  return faceArea(shell, shell.faces[face]) * shell.faces[face].normal[2];
+}
+
 }  // namespace corbel::extrude::test
