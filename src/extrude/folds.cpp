@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace corbel::extrude {
@@ -17,12 +16,21 @@ class Unfolder {
   explicit Unfolder(SweepOutput& shell) : shell_(shell) {}
 
   std::size_t run() {
+    // Only loops through a corner that two faces alone pass, and that are not simple in their
+    // plane, are looked at (the cheap test first: most shells have no such corner).
+    passes_.assign(shell_.points.size(), 0);
+    for (const ShellFace& f : shell_.faces)
+      for (const auto& l : f.loops)
+        for (int v : l) ++passes_[v];
     std::vector<Place> broken;
     for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
-      for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li)
-        if (!simpleInItsPlane(shell_, shell_.faces[fi], shell_.faces[fi].loops[li]))
+      for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li) {
+        const auto& l = shell_.faces[fi].loops[li];
+        if (std::any_of(l.begin(), l.end(), [&](int v) { return passes_[v] == 2; }) &&
+            !simpleInItsPlane(shell_, shell_.faces[fi], l))
           broken.push_back(Place{static_cast<int>(fi), static_cast<int>(li)});
-    if (broken.empty() || !index()) return 0;
+      }
+    if (broken.empty() || !indexEdges(shell_, edges_)) return 0;
     std::size_t removed = 0;
     for (const Place& p : broken)
       for (std::size_t i = 0; i < loopOf(p).size(); ++i) {
@@ -36,16 +44,6 @@ class Unfolder {
   }
 
  private:
-  // The directed edges (false where the shell is not a closed 2-manifold, which is left
-  // alone) and, per vertex, how many faces' loops pass it.
-  bool index() {
-    if (!indexEdges(shell_, edges_)) return false;
-    for (const ShellFace& f : shell_.faces)
-      for (const auto& l : f.loops)
-        for (int v : l) ++passes_[v];
-    return true;
-  }
-
   std::vector<int>& loopOf(const Place& p) { return shell_.faces[p.face].loops[p.loop]; }
 
   // Around corner i of a loop that is not simple: the longest run of corners c1 … ck that only
@@ -58,10 +56,7 @@ class Unfolder {
   std::size_t unfoldAt(const Place& at, std::size_t i) {
     const std::vector<int>& F = loopOf(at);
     const std::size_t n = F.size();
-    auto count = [&](int v) {
-      const auto it = passes_.find(v);
-      return it == passes_.end() ? 0 : it->second;
-    };
+    auto count = [&](int v) { return passes_[v]; };
     if (count(F[i]) != 2) return 0;
     const auto across = edges_.find(edgeKey(F[(i + 1) % n], F[i]));
     if (across == edges_.end()) return 0;
@@ -102,7 +97,7 @@ class Unfolder {
     }
     edges_[edgeKey(p, q)] = at;
     edges_[edgeKey(q, p)] = g;
-    for (int v : gone) passes_.erase(v);
+    for (int v : gone) passes_[v] = 0;
     loopOf(at) = std::move(newF);
     loopOf(g) = std::move(newG);
     return run;
@@ -110,7 +105,7 @@ class Unfolder {
 
   SweepOutput& shell_;
   EdgeIndex edges_;
-  std::unordered_map<int, int> passes_;
+  std::vector<int> passes_;  // per vertex, how many face loops pass it
 };
 
 }  // namespace
