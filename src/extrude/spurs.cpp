@@ -17,19 +17,40 @@ class Zipper {
   Zipper(SweepOutput& shell, double width) : shell_(shell), width_(width) {}
 
   std::size_t run() {
-    // Only loops with a corner where the boundary turns straight back, and that are not simple
-    // in their plane, are looked at (a cheap test first, then the exact one): a spur in a
-    // simple loop harms nothing, and every zip moves a corner into a neighbouring face.
-    std::vector<Place> spurred;
+    // Only loops with a corner where the boundary turns straight back are looked at (a cheap
+    // test first), and of those the loops that are not simple in their plane (the exact test)
+    // or whose spur the face across runs too, backwards (a mirrored spur): a spur in a simple
+    // loop harms nothing where it is alone, and every zip moves a corner into a neighbouring
+    // face; but two faces that run one spur both cover its sliver, and the shell crosses itself.
+    // (A fold's corner is one two faces alone pass.)
+    std::vector<int> passes(shell_.points.size(), 0);
+    for (const ShellFace& f : shell_.faces)
+      for (const auto& l : f.loops)
+        for (int v : l) ++passes[static_cast<std::size_t>(v)];
+    std::vector<Place> turning;
     for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
       for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li) {
         const auto& l = shell_.faces[fi].loops[li];
         bool turns = false;
-        for (std::size_t i = 0; i < l.size() && !turns; ++i) turns = turnsBack(l, i);
-        if (turns && !simpleInItsPlane(shell_, shell_.faces[fi], l))
-          spurred.push_back(Place{static_cast<int>(fi), static_cast<int>(li)});
+        for (std::size_t i = 0; i < l.size() && !turns; ++i)
+          turns = turnsBack(l, i) || (passes[static_cast<std::size_t>(l[i])] == 2 && thinAt(l, i));
+        if (turns) turning.push_back(Place{static_cast<int>(fi), static_cast<int>(li)});
       }
-    if (spurred.empty() || !indexEdges(shell_, edges_)) return 0;
+    if (turning.empty() || !indexEdges(shell_, edges_)) return 0;
+    // The loops to zip, each with whether it was simple when first looked at (there, only
+    // mirrored spurs and folds go; in a loop that was not, a spur of several corners goes one
+    // corner at a time, through loops that may be simple before the last).
+    std::vector<std::pair<Place, bool>> spurred;
+    for (const Place& p : turning) {
+      bool mirrored = false, turns = false;
+      for (std::size_t i = 0; i < loopOf(p).size() && !mirrored; ++i) {
+        const bool back = turnsBack(loopOf(p), i);
+        turns = turns || back;
+        mirrored = (back && mirroredAt(p.face, loopOf(p), i)) || foldedAt(p.face, loopOf(p), i);
+      }
+      const bool simple = !turns || simpleInItsPlane(shell_, shell_.faces[p.face], loopOf(p));
+      if (mirrored || !simple) spurred.push_back({p, simple});
+    }
     std::size_t zipped = 0;
     // Each zip removes a corner from a face, so this ends; the bound is a guard.
     std::size_t corners = 0;
@@ -37,12 +58,18 @@ class Zipper {
       for (const auto& l : f.loops) corners += l.size();
     for (bool changed = true; changed && zipped <= corners;) {
       changed = false;
-      for (const Place& p : spurred)
-        for (std::size_t i = 0; i < loopOf(p).size();) {
-          if (zipAt(p.face, p.loop, i)) {
+      for (std::size_t s = 0; s < spurred.size(); ++s)
+        for (std::size_t i = 0; i < loopOf(spurred[s].first).size();) {
+          Place across;
+          if (zipAt(spurred[s].first.face, spurred[s].first.loop, i, spurred[s].second, across)) {
             ++zipped;
             changed = true;
             i = 0;  // the loop changed: look at it again from its start
+            // The face across took a corner into its edge: it may run a spur this one runs
+            // backwards now.
+            if (std::none_of(spurred.begin(), spurred.end(),
+                             [&](const auto& q) { return q.first.face == across.face && q.first.loop == across.loop; }))
+              spurred.push_back({across, simpleInItsPlane(shell_, shell_.faces[across.face], loopOf(across))});
           } else {
             ++i;
           }
@@ -82,16 +109,64 @@ class Zipper {
     return (nearV - farU * OpenMesh::dot(nearV, farU)).norm() <= width_;
   }
 
-  // At corner i of a loop, the boundary A → T → B turns straight back (turnsBack). Then T
+  // Whether the triangle A → T → B at corner i of a loop has no width: its least height (twice
+  // its area over its longest side) within width_.
+  bool thinAt(const std::vector<int>& loop, std::size_t i) const {
+    const std::size_t n = loop.size();
+    if (n < 3) return false;
+    const Vec3 &A = shell_.points[loop[(i + n - 1) % n]], &T = shell_.points[loop[i]],
+               &B = shell_.points[loop[(i + 1) % n]];
+    const double longest = std::max({(T - A).norm(), (B - T).norm(), (A - B).norm()});
+    return longest > 0 && OpenMesh::cross(T - A, B - T).norm() <= width_ * longest;
+  }
+
+  // Whether corner i of a loop, A → T → B, is a fold of no width between two faces: the
+  // triangle there has no width (thinAt), the face across runs B → T → A (mirroredAt), and
+  // both turn towards their inside at T, so that both cover the triangle. Two faces of one
+  // plane cannot (one turns in, the other out); two faces of different planes share only a
+  // straight line, so a bend between them is rounding, and where both turn in, the shell
+  // crosses itself.
+  bool foldedAt(int fi, const std::vector<int>& loop, std::size_t i) const {
+    if (!thinAt(loop, i) || !mirroredAt(fi, loop, i)) return false;
+    const std::size_t n = loop.size();
+    const Vec3 &A = shell_.points[loop[(i + n - 1) % n]], &T = shell_.points[loop[i]],
+               &B = shell_.points[loop[(i + 1) % n]];
+    const Vec3 turn = OpenMesh::cross(T - A, B - T);
+    const int g = edges_.at(edgeKey(loop[(i + 1) % n], loop[i])).face;
+    return OpenMesh::dot(turn, shell_.faces[fi].normal) > 0 && OpenMesh::dot(turn, shell_.faces[g].normal) < 0;
+  }
+
+  // Whether the face across corner i of a loop, A → T → B, runs B → T → A (one face on both
+  // sides of the spur, which it runs backwards).
+  bool mirroredAt(int fi, const std::vector<int>& loop, std::size_t i) const {
+    const std::size_t n = loop.size();
+    const int a = loop[(i + n - 1) % n], t = loop[i], b = loop[(i + 1) % n];
+    const auto acrossB = edges_.find(edgeKey(b, t)), acrossA = edges_.find(edgeKey(t, a));
+    if (acrossB == edges_.end() || acrossA == edges_.end()) return false;
+    const Place g = acrossB->second, h = acrossA->second;
+    if (g.face == fi || g.face != h.face || g.loop != h.loop) return false;
+    const std::vector<int>& G = shell_.faces[g.face].loops[g.loop];
+    const auto at = std::find(G.begin(), G.end(), b);
+    if (at == G.end()) return false;
+    const std::size_t k = static_cast<std::size_t>(at - G.begin());
+    return G[(k + 1) % G.size()] == t && G[(k + 2) % G.size()] == a;
+  }
+
+  // At corner i of a loop, the boundary A → T → B turns straight back (turnsBack) or folds
+  // against the face across (foldedAt). Then T
   // leaves the loop, which runs A → B, and the face across the far side takes the nearer of A
   // and B into its edge there; where one face lies across both sides, running B → T → A, T
-  // leaves it too. The shell stays closed (every directed edge keeps a partner).
-  bool zipAt(int fi, int li, std::size_t i) {
+  // leaves it too. The shell stays closed (every directed edge keeps a partner). In a loop that
+  // was simple in its plane (`simple`) only a mirrored spur or a fold is zipped (mirroredAt),
+  // and only where both loops stay simple. `other`: the face loop across that changed with it.
+  bool zipAt(int fi, int li, std::size_t i, bool simple, Place& other) {
     std::vector<int>& loop = shell_.faces[fi].loops[li];
-    if (!turnsBack(loop, i)) return false;
+    const bool spur = turnsBack(loop, i);
+    if (!spur && !foldedAt(fi, loop, i)) return false;
     const std::size_t n = loop.size();
     const int a = loop[(i + n - 1) % n], t = loop[i], b = loop[(i + 1) % n];
     if (a == b) return false;
+    if (simple && !mirroredAt(fi, loop, i)) return false;
     const bool nearA = (shell_.points[a] - shell_.points[t]).norm() <= (shell_.points[b] - shell_.points[t]).norm();
     const auto acrossB = edges_.find(edgeKey(b, t)), acrossA = edges_.find(edgeKey(t, a));
     if (acrossB == edges_.end() || acrossA == edges_.end()) return false;
@@ -109,7 +184,6 @@ class Zipper {
     } else {
       made.push_back({edgeKey(a, b), Place{fi, li}});
     }
-    Place other;
     std::vector<int> newSide;
     const std::vector<int>& G = loopOf(g);
     const std::size_t gn = G.size();
@@ -162,6 +236,7 @@ class Zipper {
     if (!newSide.empty() && !simpleInItsPlane(shell_, across, newSide) &&
         simpleInItsPlane(shell_, across, loopOf(other)))
       return false;
+    if (simple && !newLoop.empty() && !simpleInItsPlane(shell_, shell_.faces[fi], newLoop)) return false;
     for (const std::uint64_t k : gone) edges_.erase(k);
     for (const auto& [k, p] : made) edges_[k] = p;
     loop = std::move(newLoop);

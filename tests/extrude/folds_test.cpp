@@ -1,9 +1,9 @@
 // unfoldSharedRuns: folds taken out of the boundary two faces share (docs/extrude.md, "Decisions").
 #include "extrude/extrude.h"
 #include "extrude/sweep.h"
+#include "saved_plan_checks.h"
 #include "shell_checks.h"
 #include "support.h"
-#include "volume_oracle.h"
 
 #include <gtest/gtest.h>
 
@@ -105,24 +105,10 @@ TEST(UnfoldSharedRuns, LeavesAShellThatIsNotClosed) {
 constexpr const char* kTwoRoofs = "tests/data/extrude/fold_between_two_roofs_of_one_line.corbel";
 constexpr const char* kDiverged = "tests/data/extrude/fold_after_a_diverged_sweep.corbel";
 
-void expectUnfoldedAndAgreeing(const std::string& file, VolumeOracle::Kind kind) {
-  const ExtrusionSpec spec = savedSpec(file);
-  const ExtrusionResult r = extrude(spec);
-  EXPECT_EQ(unpairedEdges(r.shell), 0u);
-  EXPECT_EQ(shellGeometryProblem(r.shell, spec), "");
-  const VolumeOracle o = independentVolume(spec);
-  ASSERT_EQ(o.kind, kind);
-  const ShellMeasures m = measure(r.shell);
-  EXPECT_NEAR(m.volume, o.volume, 1e-6 * o.volume);
-  if (o.kind == VolumeOracle::Unperturbed) {
-    EXPECT_NEAR(m.roofArea, o.roofArea, 1e-6 * o.roofArea);
-  }
-}
-
-TEST(UnfoldSharedRuns, TheFoldOfTwoRoofsOfOneLineGoes) { expectUnfoldedAndAgreeing(kTwoRoofs, VolumeOracle::Cgal); }
+TEST(UnfoldSharedRuns, TheFoldOfTwoRoofsOfOneLineGoes) { expectCleanAndAgreeing(kTwoRoofs, VolumeOracle::Cgal, true); }
 
 TEST(UnfoldSharedRuns, TheFoldAfterADivergedSweepGoes) {
-  expectUnfoldedAndAgreeing(kDiverged, VolumeOracle::Unperturbed);
+  expectCleanAndAgreeing(kDiverged, VolumeOracle::Unperturbed, true);
 }
 
 }  // namespace
