@@ -267,9 +267,7 @@ ExtrusionResult Stager::run(double scale) {
   SweepOutput& out = result.shell;
   traceFaces(points_, faces_, tol_, out.faces, warnings_);
   out.points = std::move(points_);
-  collapseShortEdges(out, tol_.collapse, tol_.tinyFace, tol_.height);
-  zipSpurs(out, tol_.tinyFace);
-  unfoldSharedRuns(out);
+  cleanUpShell(out, tol_);
   // The top of what the faces use: a corner the clean-up took out of every face (a spur's tip,
   // a fold's corners) is no part of the shell.
   for (const ShellFace& f : out.faces)

@@ -134,6 +134,13 @@ std::size_t zipSpurs(SweepOutput& shell, double width);
 // the number of corners removed.
 std::size_t unfoldSharedRuns(SweepOutput& shell);
 
+// The traced shell's clean-up (cleanup.cpp): collapseShortEdges at tol.collapse, then
+// zipSpurs and unfoldSharedRuns. Where a loop with an edge shorter than tol.tinyFace is then
+// still not simple in its plane (corners a few δ2 apart at an apex, or either side of a
+// ridge's end), the passes run once more with edges up to tol.tinyFace collapsed, and that is
+// kept only if fewer loops are then not simple.
+void cleanUpShell(SweepOutput& shell, const Tolerances& tol);
+
 // Runs the sweep. The input must already be valid (see checkSpec): simple, consistently
 // oriented loops and angles within (−π/2, π/2) with the last one > 0.
 SweepOutput sweep(const SweepInput& input, const Tolerances& tol, Progress* progress = nullptr);

@@ -1,0 +1,48 @@
+// The traced shell's clean-up, pass by pass, and the wider collapse where a loop stays twisted
+// (docs/extrude.md, "Decisions").
+#include "extrude/sweep.h"
+
+#include <utility>
+
+namespace corbel::extrude {
+
+namespace {
+
+// How many loops of the shell are not simple in their plane.
+std::size_t loopsNotSimple(const SweepOutput& shell) {
+  std::size_t n = 0;
+  for (const ShellFace& f : shell.faces)
+    for (const auto& loop : f.loops) n += simpleInItsPlane(shell, f, loop) ? 0 : 1;
+  return n;
+}
+
+// Whether a loop with an edge shorter than `length` is not simple in its plane (the cheap
+// test first: most shells have no such edge).
+bool twistedAtAShortEdge(const SweepOutput& shell, double length) {
+  for (const ShellFace& f : shell.faces)
+    for (const auto& loop : f.loops) {
+      bool shortEdge = false;
+      for (std::size_t i = 0; i < loop.size() && !shortEdge; ++i)
+        shortEdge = (shell.points[loop[(i + 1) % loop.size()]] - shell.points[loop[i]]).norm() < length;
+      if (shortEdge && !simpleInItsPlane(shell, f, loop)) return true;
+    }
+  return false;
+}
+
+void passes(SweepOutput& shell, double collapse, const Tolerances& tol) {
+  collapseShortEdges(shell, collapse, tol.tinyFace, tol.height);
+  zipSpurs(shell, tol.tinyFace);
+  unfoldSharedRuns(shell);
+}
+
+}  // namespace
+
+void cleanUpShell(SweepOutput& shell, const Tolerances& tol) {
+  passes(shell, tol.collapse, tol);
+  if (!twistedAtAShortEdge(shell, tol.tinyFace)) return;
+  SweepOutput wider = shell;
+  passes(wider, tol.tinyFace, tol);
+  if (loopsNotSimple(wider) < loopsNotSimple(shell)) shell = std::move(wider);
+}
+
+}  // namespace corbel::extrude
