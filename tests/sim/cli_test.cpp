@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -20,9 +21,11 @@ struct Outcome {
   std::string stdoutText, stderrText;
 };
 
-// Runs corbel-cli with `args`, stdout through a pipe and stderr into a scratch file.
+// Runs corbel-cli with `args`, stdout through a pipe and stderr into a scratch file of this
+// process's own (ctest runs this binary's tests side by side, each in its own process).
 Outcome corbel(const std::string& args) {
-  const std::filesystem::path err = std::filesystem::temp_directory_path() / "corbel-sim-cli-stderr.txt";
+  const std::filesystem::path err =
+      std::filesystem::temp_directory_path() / ("corbel-sim-cli-stderr-" + std::to_string(getpid()) + ".txt");
   const std::string command = std::string("'") + CORBEL_CLI + "' " + args + " 2>'" + err.string() + "'";
   Outcome o;
   if (FILE* pipe = popen(command.c_str(), "r")) {
@@ -36,6 +39,8 @@ Outcome corbel(const std::string& args) {
   std::stringstream text;
   text << in.rdbuf();
   o.stderrText = text.str();
+  in.close();
+  std::filesystem::remove(err);
   return o;
 }
 
