@@ -22,18 +22,39 @@ class Zipper {
     // or whose spur the face across runs too, backwards (a mirrored spur): a spur in a simple
     // loop harms nothing where it is alone, and every zip moves a corner into a neighbouring
     // face; but two faces that run one spur both cover its sliver, and the shell crosses itself.
-    // (A fold's corner is one two faces alone pass.)
-    std::vector<int> passes(shell_.points.size(), 0);
+    // (A fold's corner is one two loops alone pass, found by the loops through each vertex.)
+    std::vector<std::size_t> first(shell_.points.size() + 1, 0);
     for (const ShellFace& f : shell_.faces)
       for (const auto& l : f.loops)
-        for (int v : l) ++passes[static_cast<std::size_t>(v)];
+        for (int v : l) ++first[static_cast<std::size_t>(v) + 1];
+    for (std::size_t v = 1; v < first.size(); ++v) first[v] += first[v - 1];
+    std::vector<Place> through(first.back());
+    {
+      std::vector<std::size_t> next(first.begin(), first.end() - 1);
+      for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
+        for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li)
+          for (int v : shell_.faces[fi].loops[li])
+            through[next[static_cast<std::size_t>(v)]++] = Place{static_cast<int>(fi), static_cast<int>(li)};
+    }
+    // Whether corner i of loop (fi, li) may be a fold (foldedAt, without the edge index).
+    auto mayFold = [&](int fi, int li, const std::vector<int>& l, std::size_t i) {
+      const std::size_t t = static_cast<std::size_t>(l[i]);
+      if (first[t + 1] - first[t] != 2 || !thinAt(l, i)) return false;
+      const Place g =
+          through[first[t]].face == fi && through[first[t]].loop == li ? through[first[t] + 1] : through[first[t]];
+      if (g.face == fi) return false;
+      const std::size_t n = l.size();
+      const Vec3 &A = shell_.points[l[(i + n - 1) % n]], &T = shell_.points[l[i]], &B = shell_.points[l[(i + 1) % n]];
+      const Vec3 turn = OpenMesh::cross(T - A, B - T);
+      return OpenMesh::dot(turn, shell_.faces[fi].normal) > 0 && OpenMesh::dot(turn, shell_.faces[g.face].normal) < 0;
+    };
     std::vector<Place> turning;
     for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
       for (std::size_t li = 0; li < shell_.faces[fi].loops.size(); ++li) {
         const auto& l = shell_.faces[fi].loops[li];
         bool turns = false;
         for (std::size_t i = 0; i < l.size() && !turns; ++i)
-          turns = turnsBack(l, i) || (passes[static_cast<std::size_t>(l[i])] == 2 && thinAt(l, i));
+          turns = turnsBack(l, i) || mayFold(static_cast<int>(fi), static_cast<int>(li), l, i);
         if (turns) turning.push_back(Place{static_cast<int>(fi), static_cast<int>(li)});
       }
     if (turning.empty() || !indexEdges(shell_, edges_)) return 0;
