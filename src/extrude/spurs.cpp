@@ -42,11 +42,7 @@ class Zipper {
       if (first[t + 1] - first[t] != 2 || !thinAt(l, i)) return false;
       const Place g =
           through[first[t]].face == fi && through[first[t]].loop == li ? through[first[t] + 1] : through[first[t]];
-      if (g.face == fi) return false;
-      const std::size_t n = l.size();
-      const Vec3 &A = shell_.points[l[(i + n - 1) % n]], &T = shell_.points[l[i]], &B = shell_.points[l[(i + 1) % n]];
-      const Vec3 turn = OpenMesh::cross(T - A, B - T);
-      return OpenMesh::dot(turn, shell_.faces[fi].normal) > 0 && OpenMesh::dot(turn, shell_.faces[g.face].normal) < 0;
+      return g.face != fi && bothTurnIn(l, i, fi, g.face);
     };
     std::vector<Place> turning;
     for (std::size_t fi = 0; fi < shell_.faces.size(); ++fi)
@@ -149,11 +145,16 @@ class Zipper {
   // crosses itself.
   bool foldedAt(int fi, const std::vector<int>& loop, std::size_t i) const {
     if (!thinAt(loop, i) || !mirroredAt(fi, loop, i)) return false;
+    return bothTurnIn(loop, i, fi, edges_.at(edgeKey(loop[(i + 1) % loop.size()], loop[i])).face);
+  }
+
+  // Whether face fi, whose loop runs A → T → B at corner i, turns towards its inside at T, and
+  // face g, running the same corners backwards, does too.
+  bool bothTurnIn(const std::vector<int>& loop, std::size_t i, int fi, int g) const {
     const std::size_t n = loop.size();
     const Vec3 &A = shell_.points[loop[(i + n - 1) % n]], &T = shell_.points[loop[i]],
                &B = shell_.points[loop[(i + 1) % n]];
     const Vec3 turn = OpenMesh::cross(T - A, B - T);
-    const int g = edges_.at(edgeKey(loop[(i + 1) % n], loop[i])).face;
     return OpenMesh::dot(turn, shell_.faces[fi].normal) > 0 && OpenMesh::dot(turn, shell_.faces[g].normal) < 0;
   }
 
