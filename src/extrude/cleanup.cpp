@@ -31,6 +31,7 @@ bool twistedAtAShortEdge(const SweepOutput& shell, double length) {
 
 void passes(SweepOutput& shell, double collapse, const Tolerances& tol) {
   collapseShortEdges(shell, collapse, tol.tinyFace, tol.height);
+  weldLoopCorners(shell, collapse, tol.height);
   zipSpurs(shell, tol.tinyFace);
   unfoldSharedRuns(shell);
 }

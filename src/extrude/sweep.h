@@ -115,6 +115,14 @@ void traceFaces(const std::vector<Vec3>& points, const std::vector<RawFace>& raw
 std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace = 0,
                                double baseHeight = std::numeric_limits<double>::infinity());
 
+// Welds two corners of one loop that are not neighbours but lie within `length` of each other
+// (collapse.cpp): a face whose boundary runs out to a corner and back to a second vertex the
+// sweep made a rounding away from the first. The spur between them, then of no width,
+// leaves the face, and the faces either side of it meet along it. The same bar on base corners,
+// and the same test of what is kept, as collapseShortEdges. Returns the number of welds.
+std::size_t weldLoopCorners(SweepOutput& shell, double length,
+                            double baseHeight = std::numeric_limits<double>::infinity());
+
 // Whether a loop of the face is a simple polygon seen along the axis its normal is most
 // across (exact predicates): two of its corners in one place, or sides that cross, are not.
 bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::vector<int>& loop);
@@ -134,8 +142,8 @@ std::size_t zipSpurs(SweepOutput& shell, double width);
 // the number of corners removed.
 std::size_t unfoldSharedRuns(SweepOutput& shell);
 
-// The traced shell's clean-up (cleanup.cpp): collapseShortEdges at tol.collapse, then
-// zipSpurs and unfoldSharedRuns. Where a loop with an edge shorter than tol.tinyFace is then
+// The traced shell's clean-up (cleanup.cpp): collapseShortEdges and weldLoopCorners at
+// tol.collapse, then zipSpurs and unfoldSharedRuns. Where a loop with an edge shorter than tol.tinyFace is then
 // still not simple in its plane (corners a few δ2 apart at an apex, or either side of a
 // ridge's end), the passes run once more with edges up to tol.tinyFace collapsed, and that is
 // kept only if fewer loops are then not simple.

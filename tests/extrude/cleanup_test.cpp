@@ -88,5 +88,15 @@ TEST(CleanUpShell, ATwistAtAnApexGoes) {
   EXPECT_EQ(shellGeometryProblem(r.shell, spec), "");
 }
 
+// Two plans from the random run where a face ran along a ridge to a corner and back to a second
+// vertex 1.7e-7 m (random43094) or 1.6e-7 m (random79644, at the middle of a cross) from the
+// first, and the faces either side crossed; welded (weldLoopCorners), each passes the shell
+// checks and agrees with CGAL's skeleton. (random79644's sweep caps a loop of no area at its
+// apex, and says so.)
+TEST(CleanUpShell, TwinCornersAlongARidgeAreWelded) {
+  expectCleanAndAgreeing("tests/data/extrude/twin_corners_along_a_ridge.corbel", VolumeOracle::Cgal);
+  expectCleanAndAgreeing("tests/data/extrude/twin_corners_at_a_cross.corbel", VolumeOracle::Cgal, true);
+}
+
 }  // namespace
 }  // namespace corbel::extrude::test

@@ -1,4 +1,4 @@
-// collapseShortEdges: the output clean-up after near-simultaneous events (docs/extrude.md).
+// collapseShortEdges and weldLoopCorners: vertices a rounding apart merged (docs/extrude.md).
 #include "extrude/extrude.h"
 #include "extrude/sweep.h"
 
@@ -20,7 +20,7 @@ void addFace(SweepOutput& s, std::vector<int> loop, const Vec3& n) {
 // back faces have five corners, joined by an edge `gap` long.
 SweepOutput splitCube(double gap) {
   SweepOutput s;
-  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),      Vec3(0, 0, 1),
               Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1), Vec3(1 - gap, 1, 1)};
   auto face = [&](std::vector<int> loop, Vec3 n) { addFace(s, std::move(loop), n); };
   face({0, 3, 2, 1}, Vec3(0, 0, -1));
@@ -70,8 +70,8 @@ TEST(CollapseShortEdges, DropsAFaceThatVanishes) {
 TEST(CollapseShortEdges, ATinyFaceBecomesAPoint) {
   const double cut = 1e-7;
   SweepOutput s;
-  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 0, 1),
-              Vec3(1 - cut, 1, 1), Vec3(1, 1 - cut, 1), Vec3(1, 1, 1 - cut), Vec3(0, 1, 1)};
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0),       Vec3(1, 1, 0),       Vec3(0, 1, 0),       Vec3(0, 0, 1),
+              Vec3(1, 0, 1), Vec3(1 - cut, 1, 1), Vec3(1, 1 - cut, 1), Vec3(1, 1, 1 - cut), Vec3(0, 1, 1)};
   auto face = [&](std::vector<int> loop, Vec3 n) { addFace(s, std::move(loop), n); };
   face({0, 3, 2, 1}, Vec3(0, 0, -1));
   face({4, 5, 7, 6, 9}, Vec3(0, 0, 1));
@@ -120,6 +120,56 @@ TEST(CollapseShortEdges, KeepsAVertexAboveTheBaseOffTheBasesCorners) {
   EXPECT_EQ(unpairedEdges(within), 0u);
   for (const ShellFace& f : within.faces) EXPECT_EQ(f.loops[0].size(), 4u) << "every face of a cube is a quad";
   EXPECT_EQ(within.points[2], Vec3(1, 1, 0)) << "the base corner stays where it is";
+}
+
+// The unit cube, its top split at x = 0.5 into F (left) and G (right), where G's side along the
+// back runs from its corner m' = (0.5 + gap, 1, 1) along the back edge to t = (0.25, 1, 1) and
+// back to m = (0.5, 1, 1), the corner F, G and the back share: a spur `gap` wide whose two sides
+// have different faces across (the back, then F). m and m' are two vertices, not one edge.
+enum TopFaces { F = 1, G = 2, Back = 4 };
+SweepOutput cubeWithARidgeSpur(double gap) {
+  SweepOutput s;
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0),   Vec3(0, 1, 0), Vec3(0, 0, 1),         Vec3(0.5, 0, 1),
+              Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0.5, 1, 1), Vec3(0, 1, 1), Vec3(0.5 + gap, 1, 1), Vec3(0.25, 1, 1)};
+  enum { m = 8, m2 = 10, t = 11 };
+  auto face = [&](std::vector<int> loop, Vec3 n) { addFace(s, std::move(loop), n); };
+  face({0, 3, 2, 1}, Vec3(0, 0, -1));
+  face({4, 5, m, t, 9}, Vec3(0, 0, 1));      // F
+  face({5, 6, 7, m2, t, m}, Vec3(0, 0, 1));  // G
+  face({0, 1, 6, 5, 4}, Vec3(0, -1, 0));
+  face({2, 3, 9, t, m2, 7}, Vec3(0, 1, 0));  // the back
+  face({3, 0, 4, 9}, Vec3(-1, 0, 0));
+  face({1, 2, 7, 6}, Vec3(1, 0, 0));
+  return s;
+}
+
+// Welded, m and m' are one vertex: G's spur, now of no width, leaves it (G is the quad
+// 0.5 × 1 again), F and the back meet along m–t, and the cube is closed, every face simple, of
+// volume 1 to the rounding the weld moved.
+TEST(WeldLoopCorners, TwoCornersOfALoopARoundingApartBecomeOneAndTheSpurBetweenGoes) {
+  SweepOutput s = cubeWithARidgeSpur(1e-7);
+  ASSERT_EQ(unpairedEdges(s), 0u);
+  ASSERT_FALSE(simpleInItsPlane(s, s.faces[G], s.faces[G].loops[0]));
+  EXPECT_EQ(collapseShortEdges(s, 1e-6), 0u) << "m and m' are not joined by an edge";
+  EXPECT_EQ(weldLoopCorners(s, 1e-6), 1u);
+  EXPECT_EQ(unpairedEdges(s), 0u);
+  ASSERT_EQ(s.faces.size(), 7u);
+  EXPECT_EQ(s.faces[G].loops[0].size(), 4u);
+  EXPECT_NEAR(faceArea(s, s.faces[G]), 0.5, 1e-6);
+  EXPECT_EQ(s.faces[F].loops[0].size(), 5u) << "t stays a corner of F, in line with m and (0, 1, 1)";
+  for (const ShellFace& f : s.faces) EXPECT_TRUE(simpleInItsPlane(s, f, f.loops[0]));
+  EXPECT_NEAR(measure(s).volume, 1.0, 1e-6);
+}
+
+// Corners farther apart than the length stay; so do a loop's neighbours, however close (they
+// are collapseShortEdges' to merge).
+TEST(WeldLoopCorners, LeavesCornersFartherApartAndNeighboursAlone) {
+  SweepOutput far = cubeWithARidgeSpur(1e-5);
+  EXPECT_EQ(weldLoopCorners(far, 1e-6), 0u);
+  EXPECT_EQ(far.faces[G].loops[0].size(), 6u);
+  SweepOutput cube = splitCube(1e-9);
+  EXPECT_EQ(weldLoopCorners(cube, 1e-8), 0u);
+  EXPECT_EQ(cube.faces[1].loops[0].size(), 5u);
 }
 
 }  // namespace
