@@ -126,7 +126,7 @@ TEST(CollapseShortEdges, KeepsAVertexAboveTheBaseOffTheBasesCorners) {
 // back runs from its corner m' = (0.5 + gap, 1, 1) along the back edge to t = (0.25, 1, 1) and
 // back to m = (0.5, 1, 1), the corner F, G and the back share: a spur `gap` wide whose two sides
 // have different faces across (the back, then F). m and m' are two vertices, not one edge.
-enum TopFaces { F = 1, G = 2, Back = 4 };
+enum TopFaces { F = 1, G = 2 };
 SweepOutput cubeWithARidgeSpur(double gap) {
   SweepOutput s;
   s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0),   Vec3(0, 1, 0), Vec3(0, 0, 1),         Vec3(0.5, 0, 1),
