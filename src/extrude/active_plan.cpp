@@ -167,8 +167,31 @@ int Sweeper::newCorner(int prev, int next, int vertex, const Vec2& at, double z)
   edges_[prev].end = ci;
   edges_[next].start = ci;
   setCornerMotion(ci, at, z);
+  stepToWhereItStarts(ci, at, z);
   SWEEP_TRACE("    v=(%g, %g), sine %g", corners_[ci].v[0], corners_[ci].v[1], cross2(edges_[prev].n, edges_[next].n));
   return ci;
+}
+
+// A corner lives where its two lines meet. Between edges of almost one line that point may lie
+// metres from the event that made the corner, though both lines pass within δ2 of the event
+// (a wall 1.2e-7 rad off its neighbour's line meets it 0.76 m along: random56778), and where
+// setCornerMotion lets it go there, the corner starts there. Its path then begins with a level
+// step at the event's height from the event's vertex to where it is, which both of its edges'
+// faces must share: without it, the arc ran straight from the event up to where the corner ended,
+// across the face's own top (a wall's top past its end and back, a roof face past its ridge:
+// random39100, random56778, random84790, random89383), and a shell whose only gap was the
+// step stayed open (random58375). Racing corners are not stepped: they begin where their lines pass
+// through the event point (setCornerMotion), and corners moving with their edges begin at it.
+// Steps within the collapse length are rounding, left to the clean-up (collapseShortEdges).
+void Sweeper::stepToWhereItStarts(int ci, const Vec2& at, double z) {
+  const Corner& c = corners_[ci];
+  if (c.parallel || c.vertex < 0 || c.speed * tol_.height > tol_.cluster) return;
+  const Vec2 start = cornerAt(ci, z);
+  if (!((start - at).norm() > tol_.collapse)) return;
+  const int v = addVertex(start, z);
+  SWEEP_TRACE("    corner %d starts %g m from its event, at v%d", ci, (start - at).norm(), v);
+  arc(ci, v);
+  corners_[ci].vertex = v;
 }
 
 // The corner's path from where it was created to topVertex is an arc shared by the faces of

@@ -149,6 +149,7 @@ class Sweeper {
   // Topology (active_plan.cpp); resolving a new corner (ambiguities.cpp).
   int newCorner(int prev, int next, int vertex, const Vec2& at, double z);
   void arc(int corner, int topVertex);
+  void stepToWhereItStarts(int corner, const Vec2& at, double z);
   void killCorner(int c, int topVertex);
   void resolveCorner(int c, double z, int depth = 0);
   void zipSpike(int c, double z, int depth);
