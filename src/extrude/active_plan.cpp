@@ -37,8 +37,8 @@ void Sweeper::setCornerMotion(int ci, const Vec2& at, double z) {
   // away, past a 1.5 m wall's end, ran that gable's top out and back; random34510 overlapped).
   // Not where an edge has taken over a colinear neighbour's extent (mergeColinear): its line
   // lies off that extent by up to sine × length, and the meeting point is where the perturbed
-  // plan's roof agrees with the unperturbed plan's (random12886 and random58375 move 0.6 % and
-  // 0.8 % off it when the corner stays).
+  // plan's roof agrees with the unperturbed plan's (random12886 moves 0.6 % off it when the
+  // corner stays).
   if (!straight && oneLine && !a.merged && !b.merged && std::abs(det) <= tol_.ridgeMaxSine &&
       std::abs(OpenMesh::dot(a.n, at) - (a.c + a.k * z)) <= tol_.cluster &&
       std::abs(OpenMesh::dot(b.n, at) - (b.c + b.k * z)) <= tol_.cluster) {
