@@ -52,35 +52,47 @@ std::vector<Case> namedCases() {
   cases.push_back({"rectangle", {rectangle(10, 6)}});
   cases.push_back({"square", {rectangle(8, 8)}});
   cases.push_back({"L", {{Vec2(0, 0), Vec2(12, 0), Vec2(12, 5), Vec2(5, 5), Vec2(5, 14), Vec2(0, 14)}}});
-  cases.push_back({"T", {{Vec2(0, 8), Vec2(6, 8), Vec2(6, 0), Vec2(11, 0), Vec2(11, 8), Vec2(17, 8), Vec2(17, 13),
-                          Vec2(0, 13)}}});
-  cases.push_back({"U", {{Vec2(0, 0), Vec2(15, 0), Vec2(15, 12), Vec2(10, 12), Vec2(10, 5), Vec2(5, 5), Vec2(5, 12),
-                          Vec2(0, 12)}}});
+  cases.push_back(
+      {"T", {{Vec2(0, 8), Vec2(6, 8), Vec2(6, 0), Vec2(11, 0), Vec2(11, 8), Vec2(17, 8), Vec2(17, 13), Vec2(0, 13)}}});
+  cases.push_back(
+      {"U",
+       {{Vec2(0, 0), Vec2(15, 0), Vec2(15, 12), Vec2(10, 12), Vec2(10, 5), Vec2(5, 5), Vec2(5, 12), Vec2(0, 12)}}});
   cases.push_back({"courtyard", {rectangle(20, 16), reversed(rectangle(8, 6, 6, 5))}});
-  cases.push_back({"plus", {{Vec2(4, 0), Vec2(8, 0), Vec2(8, 4), Vec2(12, 4), Vec2(12, 8), Vec2(8, 8), Vec2(8, 12),
-                             Vec2(4, 12), Vec2(4, 8), Vec2(0, 8), Vec2(0, 4), Vec2(4, 4)}}});
-  for (int n : {3, 5, 6, 7, 8, 12, 16, 24}) cases.push_back({"regular" + std::to_string(n), {regularPolygon(n, 7.0, 0.1)}});
+  cases.push_back({"plus",
+                   {{Vec2(4, 0), Vec2(8, 0), Vec2(8, 4), Vec2(12, 4), Vec2(12, 8), Vec2(8, 8), Vec2(8, 12), Vec2(4, 12),
+                     Vec2(4, 8), Vec2(0, 8), Vec2(0, 4), Vec2(4, 4)}}});
+  for (int n : {3, 5, 6, 7, 8, 12, 16, 24})
+    cases.push_back({"regular" + std::to_string(n), {regularPolygon(n, 7.0, 0.1)}});
   return cases;
 }
 
-// The random run asks CGAL in child processes: the answers are the same as in this process, a
-// child that dies costs its own plan only, and so does a plan CGAL cannot build.
-TEST(SkeletonOracle, IsolatedHeightsAreTheInProcessOnesAndADeadChildCostsOnePlan) {
+// CGAL answers in child processes: the answers are those of the plans (hand-computed here), a
+// child that dies or hangs costs its own plan only, and so does a plan CGAL cannot build.
+TEST(SkeletonOracle, AChildThatDiesOrHangsCostsOnePlan) {
   const std::vector<Vec2> hip = {Vec2(0, 0), Vec2(0, 3), Vec2(3, 6)};  // a 3 m wall, then 45°
-  HeightQuery rectangle{{{Vec2(0, 0), Vec2(10, 0), Vec2(10, 6), Vec2(0, 6)}}, hip};
-  HeightQuery ell{{{Vec2(0, 0), Vec2(12, 0), Vec2(12, 4), Vec2(4, 4), Vec2(4, 10), Vec2(0, 10)}}, hip};
-  HeightQuery dies = rectangle;
+  SkeletonQuery rectangle{{{Vec2(0, 0), Vec2(10, 0), Vec2(10, 6), Vec2(0, 6)}}, hip};
+  SkeletonQuery ell{{{Vec2(0, 0), Vec2(12, 0), Vec2(12, 4), Vec2(4, 4), Vec2(4, 10), Vec2(0, 10)}}, hip};
+  SkeletonQuery dies = rectangle, hangs = rectangle, diesOnce = ell;
   dies.dieForTest = true;
-  HeightQuery degenerate{{{Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}}, hip};  // no area: no skeleton
-  const auto h = cgalHeightsIsolated({rectangle, dies, ell, degenerate, rectangle});
-  ASSERT_EQ(h.size(), 5u);
-  ASSERT_TRUE(h[0] && h[2] && h[4]);
-  EXPECT_NEAR(*h[0], 6.0, 1e-12);  // half the 6 m width at 45° over the 3 m wall
-  EXPECT_EQ(*h[2], cgalHeightUnderProfile(ell.loops, hip));
-  EXPECT_NEAR(*h[2], 5.0, 1e-12);  // the L's arms are 4 m wide: 3 + 2
-  EXPECT_FALSE(h[1]);
-  EXPECT_FALSE(h[3]);
-  EXPECT_EQ(*h[4], *h[0]);
+  diesOnce.dieFirstForTest = true;
+  hangs.hangForTest = true;
+  SkeletonQuery degenerate{{{Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}}, hip};  // no area: no skeleton
+  const auto a = cgalUnderProfileIsolated({rectangle, dies, ell, degenerate, hangs, rectangle, diesOnce}, 1.0);
+  ASSERT_EQ(a.size(), 7u);
+  ASSERT_TRUE(a[0] && a[2] && a[5] && a[6]);
+  EXPECT_NEAR(a[0]->height, 6.0, 1e-12);  // half the 6 m width at 45° over the 3 m wall
+  // The 3 m walls' 180 m³ and the hip roof's b²(3a − b)/12 = 72 m³ for a = 10, b = 6.
+  EXPECT_NEAR(a[0]->volume, 180 + 72, 1e-12 * 252);
+  EXPECT_NEAR(a[2]->height, 5.0, 1e-12);  // the L's arms are 4 m wide: 3 + 2
+  EXPECT_EQ(a[2]->volume, cgalVolumeUnderProfile(ell.loops, hip));
+  EXPECT_FALSE(a[1]);
+  EXPECT_FALSE(a[3]);
+  EXPECT_FALSE(a[4]);
+  EXPECT_EQ(a[5]->volume, a[0]->volume);
+  // Answered on its second try, the L started one corner on: the same polygon.
+  EXPECT_NEAR(a[6]->volume, a[2]->volume, 1e-12 * a[2]->volume);
+  EXPECT_EQ(a[6]->height, a[2]->height);
+  EXPECT_THROW(cgalVolumeUnderProfile(degenerate.loops, hip), std::runtime_error);
 }
 
 TEST(EqualAngles, TenBySixRectangleIsExact) {
@@ -161,8 +173,11 @@ TEST(EqualAngles, NearFlatRidgeOfARealFootprintMatchesCgal) {
 // plan is matched to 1e-7 relative, the random test's bar, not 1e-9.
 TEST(EqualAngles, RacingCornerOfACourtyardWallMatchesCgal) {
   const std::vector<std::vector<Vec2>> loops{
-      {Vec2(2.122628758693913e-07, -8.407606341008172e-08), Vec2(20.252157550648576, 2.7311979462880157e-07), Vec2(20.252157452200027, 9.267513298788964), Vec2(20.25215793353483, 39.207223314266294), Vec2(12.35982920837079, 39.207223323364644), Vec2(5.6424904985919695e-08, 39.20722371904837)},
-      {Vec2(6.750719226670095, 24.634945209320918), Vec2(12.996175693623917, 24.634945209320918), Vec2(12.996175693623917, 13.06907447819381), Vec2(6.750719226670095, 13.06907447819381)}};
+      {Vec2(2.122628758693913e-07, -8.407606341008172e-08), Vec2(20.252157550648576, 2.7311979462880157e-07),
+       Vec2(20.252157452200027, 9.267513298788964), Vec2(20.25215793353483, 39.207223314266294),
+       Vec2(12.35982920837079, 39.207223323364644), Vec2(5.6424904985919695e-08, 39.20722371904837)},
+      {Vec2(6.750719226670095, 24.634945209320918), Vec2(12.996175693623917, 24.634945209320918),
+       Vec2(12.996175693623917, 13.06907447819381), Vec2(6.750719226670095, 13.06907447819381)}};
   for (double pitch : {30 * kDeg, 45 * kDeg, 60 * kDeg}) expectMatchesSkeleton({"random13793", loops}, pitch, 1e-7);
 }
 

@@ -197,7 +197,7 @@ struct ShellCheck {
   double identity = 0;   // relative error of the projection identity
   bool equalAngles = false;
   double height = 0, delta1 = 0, topTolerance = 0;  // topTolerance: skeletonTopTolerance
-  std::optional<double> cgalHeight;                 // filled after the checks, by cgalHeightsIsolated
+  std::optional<double> cgalHeight;                 // filled after the checks, by cgalUnderProfileIsolated
   std::string error;  // the check itself failed (an exception, which a worker thread must not let out)
 };
 
@@ -287,18 +287,19 @@ TEST(RandomRobustness, HundredThousandFootprints) {
   // CGAL's skeleton heights for the shells with one profile, in child processes (a crash of
   // CGAL 5.5 there costs one plan its oracle, not the run).
   std::vector<std::size_t> asked;
-  std::vector<HeightQuery> queries;
+  std::vector<SkeletonQuery> queries;
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].ok && checks[i].equalAngles) {
-      HeightQuery q;
+      SkeletonQuery q;
       for (const auto& l : items[i].spec.loops) q.loops.push_back(l.points);
       q.profile = items[i].spec.profiles[items[i].spec.loops[0].profile[0]].points;
       asked.push_back(i);
       queries.push_back(std::move(q));
     }
   {
-    const auto heights = cgalHeightsIsolated(queries);
-    for (std::size_t k = 0; k < asked.size(); ++k) checks[asked[k]].cgalHeight = heights[k];
+    const auto answers = cgalUnderProfileIsolated(queries);
+    for (std::size_t k = 0; k < asked.size(); ++k)
+      if (answers[k]) checks[asked[k]].cgalHeight = answers[k]->height;
   }
   // CORBEL_RANDOM_VOLUMES=FILE writes each closed shell's id, tolerance factor, volume and roof
   // area, and whether the shell checks flag it (to compare two versions of the kernel shell by

@@ -1,9 +1,14 @@
 #include "skeleton_oracle.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <unistd.h>
-#include <sys/wait.h>
+#include <functional>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_with_holes_2.h>
@@ -14,6 +19,7 @@
 #include <limits>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 namespace corbel::extrude::test {
 
@@ -21,24 +27,28 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Polygon = CGAL::Polygon_2<K>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
-// One skeleton at a time: the random run builds them on every core, and with CGAL 5.5.1 it
-// crashed under load (SIGSEGV in Straight_skeleton_builder_2::MergeCoincidentNodes on a check
-// thread, 2 of 5 full runs on 2 busy cores; the same plans pass one at a time).
-std::mutex skeletonMutex;
-}  // namespace
 
-SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitch) {
-  auto toPoly = [](const std::vector<Vec2>& l) {
+// The interior skeleton of the loops, each loop started `rotation` corners on (the same
+// polygon: another try when CGAL fails on one order, as its ties depend on the order it
+// allocates its nodes in). Called in a child process only.
+auto skeleton(const std::vector<std::vector<Vec2>>& loops, int rotation) {
+  auto toPoly = [rotation](const std::vector<Vec2>& l) {
     Polygon p;
-    for (const Vec2& v : l) p.push_back(K::Point_2(v[0], v[1]));
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const Vec2& v = l[(i + std::size_t(rotation)) % l.size()];
+      p.push_back(K::Point_2(v[0], v[1]));
+    }
     return p;
   };
-  PolygonWithHoles pwh(toPoly(loops[0]));
+  PolygonWithHoles pwh(toPoly(loops.at(0)));
   for (std::size_t i = 1; i < loops.size(); ++i) pwh.add_hole(toPoly(loops[i]));
-  std::unique_lock<std::mutex> lock(skeletonMutex);
   auto ss = CGAL::create_interior_straight_skeleton_2(pwh, K());
-  lock.unlock();
   if (!ss) throw std::runtime_error("CGAL could not build the straight skeleton");
+  return ss;
+}
+
+SkeletonRoof roofInProcess(const std::vector<std::vector<Vec2>>& loops, double pitch, int rotation) {
+  const auto ss = skeleton(loops, rotation);
   const double t = std::tan(pitch);
   SkeletonRoof r;
   for (auto v = ss->vertices_begin(); v != ss->vertices_end(); ++v) r.maxHeight = std::max(r.maxHeight, v->time() * t);
@@ -58,8 +68,6 @@ SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitch)
   }
   return r;
 }
-
-namespace {
 
 // Height of the profile at horizontal distance t (the first rise at t = 0 included; past the
 // last point, the last segment goes on).
@@ -120,35 +128,12 @@ double integrateTriangle(const std::array<Corner, 3>& tri, const std::vector<Vec
   return signedArea > 0 ? sum : -sum;
 }
 
-auto skeleton(const std::vector<std::vector<Vec2>>& loops) {
-  const std::lock_guard<std::mutex> lock(skeletonMutex);
-  PolygonWithHoles pwh;
-  {
-    Polygon outer;
-    for (const Vec2& v : loops[0]) outer.push_back(K::Point_2(v[0], v[1]));
-    pwh = PolygonWithHoles(outer);
-  }
-  for (std::size_t i = 1; i < loops.size(); ++i) {
-    Polygon h;
-    for (const Vec2& v : loops[i]) h.push_back(K::Point_2(v[0], v[1]));
-    pwh.add_hole(h);
-  }
-  auto ss = CGAL::create_interior_straight_skeleton_2(pwh, K());
-  if (!ss) throw std::runtime_error("CGAL could not build the straight skeleton");
-  return ss;
-}
-
-}  // namespace
-
-double cgalHeightUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
-  const auto ss = skeleton(loops);
+// The height and volume under the profile (skeleton_oracle.h) from one skeleton.
+std::array<double, 4> underProfileInProcess(const std::vector<std::vector<Vec2>>& loops,
+                                            const std::vector<Vec2>& profile, int rotation) {
+  const auto ss = skeleton(loops, rotation);
   double t = 0;
   for (auto v = ss->vertices_begin(); v != ss->vertices_end(); ++v) t = std::max(t, v->time());
-  return profileHeight(profile, t);
-}
-
-double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
-  const auto ss = skeleton(loops);
   double volume = 0;
   for (auto f = ss->faces_begin(); f != ss->faces_end(); ++f) {
     std::vector<Corner> poly;
@@ -162,62 +147,135 @@ double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const
     for (std::size_t i = 1; i + 1 < poly.size(); ++i)
       volume += integrateTriangle({poly[0], poly[i], poly[i + 1]}, profile);
   }
-  return volume;
+  return {profileHeight(profile, t), volume, 0, 0};
 }
 
-std::vector<std::optional<double>> cgalHeightsIsolated(const std::vector<HeightQuery>& queries) {
-  std::vector<std::optional<double>> out(queries.size());
-  std::size_t next = 0;  // the first query no child has answered or died on
-  while (next < queries.size()) {
-    int fd[2];
-    if (pipe(fd) != 0) throw std::runtime_error("cgalHeightsIsolated: pipe failed");
-    const pid_t child = fork();
-    if (child < 0) throw std::runtime_error("cgalHeightsIsolated: fork failed");
-    if (child == 0) {
-      close(fd[0]);
-      for (std::size_t k = next; k < queries.size(); ++k) {
-        struct {
-          std::uint64_t index;
-          double height;
-          std::uint64_t ok;
-        } record{k, 0.0, 1};
-        if (queries[k].dieForTest) std::abort();
-        try {
-          record.height = cgalHeightUnderProfile(queries[k].loops, queries[k].profile);
-        } catch (...) {
-          record.ok = 0;
+// What one child sends back per query.
+struct Record {
+  std::uint64_t index;
+  std::uint64_t ok;
+  std::array<double, 4> values;
+};
+
+// Answers queries 0..n−1 by answer(k, rotation) in forked children, one child at a time and each
+// going through the queries from where the last one stopped. A query whose child dies on it, that
+// throws, or that takes longer than secondsPerQuery gets another try with each loop started one
+// and then two corners on; after three it has no answer (nullopt).
+std::vector<std::optional<std::array<double, 4>>> isolated(
+    std::size_t n, const std::function<std::array<double, 4>(std::size_t, int)>& answer, double secondsPerQuery) {
+  static std::mutex oneChildAtATime;
+  const std::lock_guard<std::mutex> lock(oneChildAtATime);
+  std::vector<std::optional<std::array<double, 4>>> out(n);
+  std::vector<std::size_t> todo(n);
+  for (std::size_t k = 0; k < n; ++k) todo[k] = k;
+  for (int rotation = 0; rotation < 3 && !todo.empty(); ++rotation) {
+    std::vector<std::size_t> failed;
+    std::size_t next = 0;  // the first of todo no child has answered or died on
+    while (next < todo.size()) {
+      int fd[2];
+      if (pipe(fd) != 0) throw std::runtime_error("skeleton oracle: pipe failed");
+      const pid_t child = fork();
+      if (child < 0) throw std::runtime_error("skeleton oracle: fork failed");
+      if (child == 0) {
+        close(fd[0]);
+        for (std::size_t j = next; j < todo.size(); ++j) {
+          Record record{j, 1, {}};
+          try {
+            record.values = answer(todo[j], rotation);
+          } catch (...) {
+            record.ok = 0;
+          }
+          if (write(fd[1], &record, sizeof record) != ssize_t(sizeof record)) _exit(2);
         }
-        if (write(fd[1], &record, sizeof record) != ssize_t(sizeof record)) _exit(2);
+        _exit(0);
       }
-      _exit(0);
-    }
-    close(fd[1]);
-    struct {
-      std::uint64_t index;
-      double height;
-      std::uint64_t ok;
-    } record{};
-    std::size_t got = 0;
-    for (;;) {
-      std::size_t have = 0;
-      while (have < sizeof record) {
-        const ssize_t n = read(fd[0], reinterpret_cast<char*>(&record) + have, sizeof record - have);
-        if (n <= 0) break;
-        have += std::size_t(n);
+      close(fd[1]);
+      std::size_t got = next;  // todo[got] is the next the child owes
+      bool hung = false;
+      for (;;) {
+        Record record{};
+        std::size_t have = 0;
+        while (have < sizeof record) {
+          pollfd p{fd[0], POLLIN, 0};
+          if (poll(&p, 1, int(secondsPerQuery * 1000)) == 0) {
+            hung = true;
+            break;
+          }
+          const ssize_t r = read(fd[0], reinterpret_cast<char*>(&record) + have, sizeof record - have);
+          if (r <= 0) break;
+          have += std::size_t(r);
+        }
+        if (have < sizeof record) break;
+        if (record.ok)
+          out[todo[record.index]] = record.values;
+        else
+          failed.push_back(todo[record.index]);
+        got = record.index + 1;
       }
-      if (have < sizeof record) break;
-      if (record.ok) out[record.index] = record.height;
-      got = record.index + 1;
+      if (hung) kill(child, SIGKILL);
+      close(fd[0]);
+      int status = 0;
+      waitpid(child, &status, 0);
+      if (got >= todo.size()) break;
+      failed.push_back(todo[got]);  // the child died or hung on it
+      next = got + 1;
     }
-    close(fd[0]);
-    int status = 0;
-    waitpid(child, &status, 0);
-    const std::size_t resume = std::max(got, next);
-    if (resume >= queries.size()) break;
-    // The child died on query `resume` (no answer for it): skip it and go on.
-    next = resume + 1;
+    todo = std::move(failed);
+    std::sort(todo.begin(), todo.end());
   }
   return out;
+}
+
+std::string describe(const std::vector<std::vector<Vec2>>& loops) {
+  std::size_t corners = 0;
+  for (const auto& l : loops) corners += l.size();
+  return std::to_string(loops.size()) + " loop(s), " + std::to_string(corners) + " corners";
+}
+
+}  // namespace
+
+SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitch) {
+  const auto a = isolated(
+      1,
+      [&](std::size_t, int rotation) {
+        const SkeletonRoof r = roofInProcess(loops, pitch, rotation);
+        return std::array<double, 4>{r.maxHeight, r.volume, r.roofArea, double(r.faces)};
+      },
+      kSkeletonSecondsPerQuery);
+  if (!a[0]) throw std::runtime_error("CGAL's straight skeleton failed on this plan (" + describe(loops) + ")");
+  const auto& v = *a[0];
+  return {v[0], v[1], v[2], std::size_t(v[3])};
+}
+
+std::vector<std::optional<UnderProfile>> cgalUnderProfileIsolated(const std::vector<SkeletonQuery>& queries,
+                                                                  double secondsPerQuery) {
+  const auto a = isolated(
+      queries.size(),
+      [&](std::size_t k, int rotation) -> std::array<double, 4> {
+        if (queries[k].dieForTest || (queries[k].dieFirstForTest && rotation == 0)) std::abort();
+        if (queries[k].hangForTest)
+          for (;;) pause();
+        return underProfileInProcess(queries[k].loops, queries[k].profile, rotation);
+      },
+      secondsPerQuery);
+  std::vector<std::optional<UnderProfile>> out(queries.size());
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (a[k]) out[k] = UnderProfile{(*a[k])[0], (*a[k])[1]};
+  return out;
+}
+
+UnderProfile cgalUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
+  const auto a = cgalUnderProfileIsolated({SkeletonQuery{loops, profile}}, kSkeletonSecondsPerQuery);
+  if (!a[0]) throw std::runtime_error("CGAL's straight skeleton failed on this plan (" + describe(loops) + ")");
+  return *a[0];
+}
+
+double cgalHeightUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
+  return cgalUnderProfile(loops, profile).height;
+}
+
+double cgalVolumeUnderProfile(const std::vector<std::vector<Vec2>>& loops, const std::vector<Vec2>& profile) {
+  return cgalUnderProfile(loops, profile).volume;
 }
 
 }  // namespace corbel::extrude::test
