@@ -28,14 +28,16 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Polygon = CGAL::Polygon_2<K>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
 
-// The interior skeleton of the loops, each loop started `rotation` corners on (the same
-// polygon: another try when CGAL fails on one order, as its ties depend on the order it
-// allocates its nodes in). Called in a child process only.
-auto skeleton(const std::vector<std::vector<Vec2>>& loops, int rotation) {
-  auto toPoly = [rotation](const std::vector<Vec2>& l) {
+// The interior skeleton of the loops turned `turn` quarter turns about the origin, each loop
+// started `turn` corners on: the same polygon up to a rotation, exact in floating point, whose
+// heights, areas and volumes are the plan's; another try where CGAL fails on one (its ties
+// depend on the order it allocates its nodes in). Called in a child process only.
+auto skeleton(const std::vector<std::vector<Vec2>>& loops, int turn) {
+  auto toPoly = [turn](const std::vector<Vec2>& l) {
     Polygon p;
     for (std::size_t i = 0; i < l.size(); ++i) {
-      const Vec2& v = l[(i + std::size_t(rotation)) % l.size()];
+      Vec2 v = l[(i + std::size_t(turn)) % l.size()];
+      for (int k = 0; k < turn; ++k) v = Vec2(-v[1], v[0]);
       p.push_back(K::Point_2(v[0], v[1]));
     }
     return p;
@@ -47,8 +49,8 @@ auto skeleton(const std::vector<std::vector<Vec2>>& loops, int rotation) {
   return ss;
 }
 
-SkeletonRoof roofInProcess(const std::vector<std::vector<Vec2>>& loops, double pitch, int rotation) {
-  const auto ss = skeleton(loops, rotation);
+SkeletonRoof roofInProcess(const std::vector<std::vector<Vec2>>& loops, double pitch, int turn) {
+  const auto ss = skeleton(loops, turn);
   const double t = std::tan(pitch);
   SkeletonRoof r;
   for (auto v = ss->vertices_begin(); v != ss->vertices_end(); ++v) r.maxHeight = std::max(r.maxHeight, v->time() * t);
@@ -130,8 +132,8 @@ double integrateTriangle(const std::array<Corner, 3>& tri, const std::vector<Vec
 
 // The height and volume under the profile (skeleton_oracle.h) from one skeleton.
 std::array<double, 4> underProfileInProcess(const std::vector<std::vector<Vec2>>& loops,
-                                            const std::vector<Vec2>& profile, int rotation) {
-  const auto ss = skeleton(loops, rotation);
+                                            const std::vector<Vec2>& profile, int turn) {
+  const auto ss = skeleton(loops, turn);
   double t = 0;
   for (auto v = ss->vertices_begin(); v != ss->vertices_end(); ++v) t = std::max(t, v->time());
   double volume = 0;
@@ -157,10 +159,10 @@ struct Record {
   std::array<double, 4> values;
 };
 
-// Answers queries 0..n−1 by answer(k, rotation) in forked children, one child at a time and each
+// Answers queries 0..n−1 by answer(k, turn) in forked children, one child at a time and each
 // going through the queries from where the last one stopped. A query whose child dies on it, that
-// throws, or that takes longer than secondsPerQuery gets another try with each loop started one
-// and then two corners on; after three it has no answer (nullopt).
+// throws, or that takes longer than secondsPerQuery gets another try turned a quarter and then a
+// half turn (skeleton); after three it has no answer (nullopt).
 std::vector<std::optional<std::array<double, 4>>> isolated(
     std::size_t n, const std::function<std::array<double, 4>(std::size_t, int)>& answer, double secondsPerQuery) {
   static std::mutex oneChildAtATime;
@@ -168,7 +170,7 @@ std::vector<std::optional<std::array<double, 4>>> isolated(
   std::vector<std::optional<std::array<double, 4>>> out(n);
   std::vector<std::size_t> todo(n);
   for (std::size_t k = 0; k < n; ++k) todo[k] = k;
-  for (int rotation = 0; rotation < 3 && !todo.empty(); ++rotation) {
+  for (int turn = 0; turn < 3 && !todo.empty(); ++turn) {
     std::vector<std::size_t> failed;
     std::size_t next = 0;  // the first of todo no child has answered or died on
     while (next < todo.size()) {
@@ -181,7 +183,7 @@ std::vector<std::optional<std::array<double, 4>>> isolated(
         for (std::size_t j = next; j < todo.size(); ++j) {
           Record record{j, 1, {}};
           try {
-            record.values = answer(todo[j], rotation);
+            record.values = answer(todo[j], turn);
           } catch (...) {
             record.ok = 0;
           }
@@ -237,8 +239,8 @@ std::string describe(const std::vector<std::vector<Vec2>>& loops) {
 SkeletonRoof cgalRoof(const std::vector<std::vector<Vec2>>& loops, double pitch) {
   const auto a = isolated(
       1,
-      [&](std::size_t, int rotation) {
-        const SkeletonRoof r = roofInProcess(loops, pitch, rotation);
+      [&](std::size_t, int turn) {
+        const SkeletonRoof r = roofInProcess(loops, pitch, turn);
         return std::array<double, 4>{r.maxHeight, r.volume, r.roofArea, double(r.faces)};
       },
       kSkeletonSecondsPerQuery);
@@ -251,11 +253,11 @@ std::vector<std::optional<UnderProfile>> cgalUnderProfileIsolated(const std::vec
                                                                   double secondsPerQuery) {
   const auto a = isolated(
       queries.size(),
-      [&](std::size_t k, int rotation) -> std::array<double, 4> {
-        if (queries[k].dieForTest || (queries[k].dieFirstForTest && rotation == 0)) std::abort();
+      [&](std::size_t k, int turn) -> std::array<double, 4> {
+        if (queries[k].dieForTest || (queries[k].dieFirstForTest && turn == 0)) std::abort();
         if (queries[k].hangForTest)
           for (;;) pause();
-        return underProfileInProcess(queries[k].loops, queries[k].profile, rotation);
+        return underProfileInProcess(queries[k].loops, queries[k].profile, turn);
       },
       secondsPerQuery);
   std::vector<std::optional<UnderProfile>> out(queries.size());

@@ -19,8 +19,9 @@ struct SkeletonRoof {
 // MergeCoincidentNodes, and not always on the same plan (it breaks ties between split events by
 // their memory addresses; docs/extrude.md); under valgrind it has also looped for good. In a
 // child, a crash or a hang (past a time limit) costs one try, not the test run: the plan is then
-// tried with each loop started one and then two corners on (the same polygon, CGAL's nodes made
-// in another order), and only after three failures has no answer. The single-plan functions
+// tried turned a quarter and a half turn about the origin (exact in floating point, the same
+// heights and volume, CGAL's nodes made in another order), and only after three failures has no
+// answer. The single-plan functions
 // throw, naming the plan's size, when it has none.
 
 // loops: outer counter-clockwise, holes clockwise (one outer loop with its holes).
