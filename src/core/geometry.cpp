@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace corbel {
 
@@ -60,6 +61,7 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
   // Colinear corners of a polygon in a tilted plane come out a rounding error away from
   // flat; turns within eps count as flat (never ears), so no zero-area triangle is clipped.
   double extent = 0.0, reach = 0.0;
+  BBox box;
   {
     Vec2 lo = pts[0], hi = pts[0];
     for (const Vec2& p : pts) {
@@ -68,28 +70,45 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
       reach = std::max({reach, std::abs(p[0]), std::abs(p[1])});
     }
     extent = (hi - lo).norm();
+    for (const Vec3& p : polygon) box.add(p);
   }
   const double eps = 1e-12 * extent * std::max(extent, reach);
+  // A sliver: a triangle one of whose corners lies within `slack` of its opposite side, in
+  // space. A modeller's polygon is planar only to its own rounding (the extrusion kernel merges
+  // vertices up to 5e-8 of the plan's size apart), so a cut passing that close to a corner, or
+  // an ear at a corner that close to flat, can fold across the faces that meet there. Slivers
+  // are cut only where no other ear is left.
+  const double slack = 1e-7 * box.diagonal();
+  auto nearSegment = [&](int q, int a, int b) {
+    const Vec3 ab = polygon[b] - polygon[a], aq = polygon[q] - polygon[a];
+    const double len2 = ab.sqrnorm();
+    const double t = len2 > 0 ? std::clamp(OpenMesh::dot(aq, ab) / len2, 0.0, 1.0) : 0.0;
+    return (aq - ab * t).sqrnorm() <= slack * slack;
+  };
   std::vector<int> ring(n);
   for (int i = 0; i < n; ++i) ring[i] = i;
-  while (ring.size() > 3) {
+  // The first ear of the ring (-1: none); `strict` also refuses slivers.
+  auto findEar = [&](bool strict) {
     const int m = static_cast<int>(ring.size());
-    int best = -1;
     for (int i = 0; i < m; ++i) {
       const int ia = ring[(i + m - 1) % m], ib = ring[i], ic = ring[(i + 1) % m];
       const double turn = cross(pts[ia], pts[ib], pts[ic]);
       if (turn <= eps) continue;  // reflex or flat corner: not an ear
+      if (strict && nearSegment(ib, ia, ic)) continue;
       bool empty = true;
       for (int j = 0; j < m && empty; ++j) {
         const int q = ring[j];
         if (q == ia || q == ib || q == ic) continue;
-        if (insideTriangle(pts[q], pts[ia], pts[ib], pts[ic], eps)) empty = false;
+        if (insideTriangle(pts[q], pts[ia], pts[ib], pts[ic], eps) || (strict && nearSegment(q, ia, ic))) empty = false;
       }
-      if (empty) {
-        best = i;
-        break;
-      }
+      if (empty) return i;
     }
+    return -1;
+  };
+  while (ring.size() > 3) {
+    const int m = static_cast<int>(ring.size());
+    int best = findEar(true);
+    if (best < 0) best = findEar(false);
     if (best < 0) {
       // No clean ear (degenerate input): clip the convex-most corner so we still terminate.
       double most = -std::numeric_limits<double>::infinity();

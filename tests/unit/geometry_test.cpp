@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -194,6 +195,30 @@ TEST(Geometry, TriangulatesPolygonsWithColinearPoints) {
   checkAllPlanes(squareWithMidpoints(), "square with midpoints");
   checkAllPlanes(lWithColinear(), "L with colinear points");
   checkAllPlanes(fan(), "triangle with points on one side");
+}
+
+// A quad whose fourth corner D lies 4.5e-7 m from the diagonal AC, 1e-7 of its size, and off
+// the plane of A, B, C by as much (as a modeller's faces are planar only to rounding; the
+// extrusion's random6505 made one on a 43 m hip): of its two triangulations, the one cutting AC
+// leaves a sliver ACD that folds out of the face, whatever corner the loop starts at. The other,
+// cutting BD, has no corner nearer than 1 m to a side.
+TEST(Geometry, TriangulationCutsNoSliverWhereAnotherEarIsLeft) {
+  const Vec3 A(0, 0, 0), B(20, 0, 0), C(20, 20, 0), D(10, 10 + 4.5e-7, 4.5e-7);
+  const std::vector<Vec3> quad{A, B, C, D};
+  for (int start = 0; start < 4; ++start) {
+    std::vector<Vec3> poly;
+    std::vector<int> index;  // of quad
+    for (int k = 0; k < 4; ++k) {
+      poly.push_back(quad[(start + k) % 4]);
+      index.push_back((start + k) % 4);
+    }
+    const auto tris = corbel::triangulatePolygon(poly);
+    ASSERT_EQ(tris.size(), 2u);
+    for (const auto& t : tris) {
+      std::set<int> corners{index[t[0]], index[t[1]], index[t[2]]};
+      EXPECT_TRUE(corners.count(1) && corners.count(3)) << "start " << start << ": the cut is not BD";
+    }
+  }
 }
 
 TEST(Geometry, TriangulationOfFewerThanThreePointsIsEmpty) {
