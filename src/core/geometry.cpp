@@ -59,7 +59,7 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
   }
   const std::vector<Vec2> pts = projectToPlane(polygon, newellNormal(polygon));
   // Colinear corners of a polygon in a tilted plane come out a rounding error away from
-  // flat; turns within eps count as flat (never ears), so no zero-area triangle is clipped.
+  // flat; where no clean ear is left, turns within eps count as flat (never ears).
   double extent = 0.0, reach = 0.0;
   BBox box;
   {
@@ -73,11 +73,11 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
     for (const Vec3& p : polygon) box.add(p);
   }
   const double eps = 1e-12 * extent * std::max(extent, reach);
-  // A sliver: a triangle one of whose corners lies within `slack` of its opposite side, in
-  // space. A modeller's polygon is planar only to its own rounding (the extrusion kernel merges
-  // vertices up to 5e-8 of the plan's size apart), so a cut passing that close to a corner, or
-  // an ear at a corner that close to flat, can fold across the faces that meet there. Slivers
-  // are cut only where no other ear is left.
+  // A modeller's polygon is planar only to its own rounding (the extrusion kernel merges
+  // vertices up to 5e-8 of the plan's size apart), so a cut passing within `slack` of a corner,
+  // in space, or an ear at a corner that close to its cut, leaves a sliver that can fold across
+  // the faces that meet there. (Not scaled by the coordinates' size: a face cuts the same
+  // wherever it is placed.)
   const double slack = 1e-7 * box.diagonal();
   auto nearSegment = [&](int q, int a, int b) {
     const Vec3 ab = polygon[b] - polygon[a], aq = polygon[q] - polygon[a];
@@ -87,19 +87,22 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
   };
   std::vector<int> ring(n);
   for (int i = 0; i < n; ++i) ring[i] = i;
-  // The first ear of the ring (-1: none); `strict` also refuses slivers.
+  // The first ear of the ring (-1: none). A clean ear (`strict`) turns left however little, and
+  // neither its corner nor any other lies within the slack of its cut; otherwise an ear is any
+  // corner turning left by more than eps whose triangle holds no other corner.
   auto findEar = [&](bool strict) {
     const int m = static_cast<int>(ring.size());
+    const double e = strict ? 0.0 : eps;
     for (int i = 0; i < m; ++i) {
       const int ia = ring[(i + m - 1) % m], ib = ring[i], ic = ring[(i + 1) % m];
       const double turn = cross(pts[ia], pts[ib], pts[ic]);
-      if (turn <= eps) continue;  // reflex or flat corner: not an ear
+      if (turn <= e) continue;  // reflex or flat corner: not an ear
       if (strict && nearSegment(ib, ia, ic)) continue;
       bool empty = true;
       for (int j = 0; j < m && empty; ++j) {
         const int q = ring[j];
         if (q == ia || q == ib || q == ic) continue;
-        if (insideTriangle(pts[q], pts[ia], pts[ib], pts[ic], eps) || (strict && nearSegment(q, ia, ic))) empty = false;
+        if (insideTriangle(pts[q], pts[ia], pts[ib], pts[ic], e) || (strict && nearSegment(q, ia, ic))) empty = false;
       }
       if (empty) return i;
     }
@@ -110,7 +113,7 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
     int best = findEar(true);
     if (best < 0) best = findEar(false);
     if (best < 0) {
-      // No clean ear (degenerate input): clip the convex-most corner so we still terminate.
+      // No ear at all (degenerate input): clip the convex-most corner so we still terminate.
       double most = -std::numeric_limits<double>::infinity();
       for (int i = 0; i < m; ++i) {
         const double turn = cross(pts[ring[(i + m - 1) % m]], pts[ring[i]], pts[ring[(i + 1) % m]]);

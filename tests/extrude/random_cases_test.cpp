@@ -168,7 +168,7 @@ Build buildAt(const ExtrusionSpec& spec, double factor, bool checkGeometry = fal
       if (!f.base) projected += faceArea(er.shell, f) * f.normal[2];
     for (const auto& l : spec.loops) footprint += shoelace(l.points);
     b.projection = std::abs(projected - footprint) / footprint;
-    if (checkGeometry) b.geometry = shellGeometryProblem(er.shell, spec, factor);
+    if (checkGeometry) b.geometry = shellGeometryProblem(er.shell, spec);
     b.closed = true;
   } catch (const InputError& e) {
     b.why = std::string("bad input: ") + e.what();

@@ -204,7 +204,7 @@ struct ShellCheck {
 ShellCheck checkShell(const ExtrusionSpec& spec, double factor) {
   ShellCheck c;
   const ExtrusionResult er = extrude(spec, nullptr, ExtrudeOptions{0.0, factor, false});
-  c.geometry = shellGeometryProblem(er.shell, spec, factor);
+  c.geometry = shellGeometryProblem(er.shell, spec);
   double footprint = 0, projected = 0;
   for (const auto& l : spec.loops) footprint += shoelace(l.points);
   for (const ShellFace& f : er.shell.faces)

@@ -1,6 +1,6 @@
 #include "shell_checks.h"
 
-#include "extrude/tolerances.h"
+#include "core/geometry.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
@@ -35,54 +35,6 @@ std::array<int, 2> planeOf(const Vec3& n) {
   for (int k = 1; k < 3; ++k)
     if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
   return {(axis + 1) % 3, (axis + 2) % 3};
-}
-
-// Ear clipping of a simple polygon (local indices into pts and flat, its corners in space and
-// in its plane) by exact orientation tests: an ear is a strictly convex corner whose triangle
-// holds no other corner and whose cut passes no other corner within `tol` (a corner of the
-// polygon within rounding of the cut, just outside it, would leave a sliver triangle against
-// it). Corners within `tol` of the line through their neighbours in space are never ears (as
-// where an event left a vertex on a hip that both faces share, which rounding puts on the outer
-// side of each face's projection); what is left when no ear remains has no area.
-void clipEars(std::vector<int> poly, const std::vector<P2>& flat, const std::vector<P3>& pts, double tol,
-              std::vector<std::array<int, 3>>& out) {
-  auto orient = [&](int a, int b, int c) { return CGAL::orientation(flat[a], flat[b], flat[c]); };
-  // Squared distance from q to the segment ab, in space.
-  auto toSegment = [&](int a, int b, int q) { return CGAL::squared_distance(pts[q], K::Segment_3(pts[a], pts[b])); };
-  auto inLine = [&](int a, int b, int c) {
-    const K::Vector_3 ac = pts[c] - pts[a], ab = pts[b] - pts[a];
-    const double len2 = ac.squared_length();
-    if (len2 == 0) return true;
-    return CGAL::cross_product(ac, ab).squared_length() / len2 <= tol * tol;
-  };
-  // Counter-clockwise first.
-  double area = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const P2 &a = flat[poly[i]], &b = flat[poly[(i + 1) % poly.size()]];
-    area += a.x() * b.y() - a.y() * b.x();
-  }
-  if (area < 0) std::reverse(poly.begin(), poly.end());
-  while (poly.size() >= 3) {
-    const std::size_t n = poly.size();
-    bool clipped = false;
-    for (std::size_t i = 0; i < n && !clipped; ++i) {
-      const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
-      if (orient(a, b, c) != CGAL::LEFT_TURN || inLine(a, b, c)) continue;
-      bool empty = true;
-      for (std::size_t j = 0; j < n && empty; ++j) {
-        const int q = poly[j];
-        if (q == a || q == b || q == c || pts[q] == pts[a] || pts[q] == pts[b] || pts[q] == pts[c]) continue;
-        empty = !(orient(a, b, q) != CGAL::RIGHT_TURN && orient(b, c, q) != CGAL::RIGHT_TURN &&
-                  orient(c, a, q) != CGAL::RIGHT_TURN) &&
-                toSegment(c, a, q) > tol * tol;
-      }
-      if (!empty) continue;
-      out.push_back({a, b, c});
-      poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
-      clipped = true;
-    }
-    if (!clipped) break;
-  }
 }
 
 // Whether two triangles of the shell meet other than where they must: along their shared side,
@@ -135,27 +87,7 @@ bool improper(const std::array<int, 3>& s, const std::array<int, 3>& t, const st
 
 }  // namespace
 
-std::vector<std::array<int, 3>> cutIntoTriangles(const std::vector<Vec3>& points, const std::vector<int>& polygon,
-                                                 double tolerance) {
-  std::vector<Vec3> corners;
-  for (int i : polygon) corners.push_back(points[i]);
-  const auto [u, v] = planeOf(newellNormal(corners));
-  std::vector<P2> flat;
-  std::vector<P3> pts;
-  std::vector<int> local;
-  for (std::size_t k = 0; k < corners.size(); ++k) {
-    flat.emplace_back(corners[k][u], corners[k][v]);
-    pts.emplace_back(corners[k][0], corners[k][1], corners[k][2]);
-    local.push_back(static_cast<int>(k));
-  }
-  std::vector<std::array<int, 3>> out;
-  clipEars(local, flat, pts, tolerance, out);
-  for (auto& t : out)
-    for (int& i : t) i = polygon[i];
-  return out;
-}
-
-std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec, double factor) {
+std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec) {
   for (std::size_t fi = 0; fi < shell.faces.size(); ++fi) {
     const ShellFace& f = shell.faces[fi];
     const auto [u, v] = planeOf(f.normal);
@@ -188,20 +120,20 @@ std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& 
     }
   }
 
-  // The shell's mesh, every polygon cut into triangles in its own plane.
+  // The shell's mesh, every polygon cut into triangles as the exports and the renderer cut it.
   const MeshData m = toMeshData(shell, spec, "plaster");
   std::vector<P3> pts;
   for (const Vec3& q : m.points) pts.emplace_back(q[0], q[1], q[2]);
-  // The kernel's δ2 for this plan: points closer than it are one point to the kernel.
-  BBox box;
-  for (const auto& l : spec.loops)
-    for (const Vec2& q : l.points) box.add(Vec3(q[0], q[1], 0));
-  const double delta2 = Tolerances::forScale(box.diagonal(), factor).cluster;
   // (Triangles of one polygon tile it: only triangles of different polygons are tested.)
   std::vector<std::array<int, 3>> tris;
   std::vector<std::size_t> polygonOf;
   for (std::size_t fi = 0; fi < m.faces.size(); ++fi) {
-    for (const auto& t : cutIntoTriangles(m.points, m.faces[fi], delta2)) tris.push_back(t);
+    std::vector<Vec3> corners;
+    for (int i : m.faces[fi]) corners.push_back(m.points[i]);
+    for (auto t : triangulatePolygon(corners)) {
+      for (int& i : t) i = m.faces[fi][i];
+      tris.push_back(t);
+    }
     polygonOf.resize(tris.size(), fi);
   }
   using Box =

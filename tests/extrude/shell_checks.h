@@ -14,21 +14,11 @@ namespace corbel::extrude::test {
 
 // "" or the first problem: a face loop (outer or hole) that is not simple when projected onto
 // the coordinate plane its normal is most across (CGAL's is_simple_2), or two triangles of the
-// shell's mesh (toMeshData, every face triangulated) that intersect (CGAL's self_intersections),
-// except triangles that only touch at one point where the mesh has two vertices (a vertex of
-// two fans split in two, as toMeshData does where a shell touches itself).
-// `factor`: the tolerance factor the shell was built with (ExtrudeOptions), which widens δ2.
-std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec, double factor = 1.0);
-
-// The triangles (indices into pts) that the check cuts a polygon into, in the coordinate plane
-// its normal is most across: ear clipping by exact orientation tests. No cut passes within
-// `tolerance` of a corner of the polygon that is not its end (a corner that close blocks the
-// ear: the triangle would be a sliver against that corner, and in space, where the polygon is
-// planar only to rounding, it crosses the faces that meet there). Corners within `tolerance`
-// of the line through their neighbours are never ears; what is left when no ear remains has no
-// area and is dropped.
-std::vector<std::array<int, 3>> cutIntoTriangles(const std::vector<Vec3>& pts, const std::vector<int>& polygon,
-                                                 double tolerance);
+// shell's mesh (toMeshData, every face cut by triangulatePolygon as the exports and the renderer
+// cut it) that intersect (CGAL's exact predicates), except triangles that only touch at one
+// point where the mesh has two vertices (a vertex of two fans split in two, as toMeshData does
+// where a shell touches itself).
+std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec);
 
 // How far above CGAL's skeleton the top of a one-profile shell may be and still count as the
 // skeleton's top: the kernel's event height tolerance δ1 (events that close in height are one),
