@@ -34,6 +34,7 @@ void passes(SweepOutput& shell, double collapse, const Tolerances& tol) {
   weldLoopCorners(shell, collapse, tol.height);
   zipSpurs(shell, tol.tinyFace);
   unfoldSharedRuns(shell);
+  splitTouchingLoops(shell, collapse);
 }
 
 }  // namespace

@@ -142,11 +142,19 @@ std::size_t zipSpurs(SweepOutput& shell, double width);
 // the number of corners removed.
 std::size_t unfoldSharedRuns(SweepOutput& shell);
 
+// Splits a face whose loop touches itself (touches.cpp): where a corner lies within `length`
+// of an edge of the same loop that does not end at it (and not within `length` of that edge's
+// ends), the loop runs round a lobe and back to that edge. The corner goes into the edge, in
+// the face across it too, and the loop parts there into two faces, each simple and running the
+// face's way. Only closed 2-manifold shells, and only loops not simple in their plane, are
+// looked at. Returns the number of splits.
+std::size_t splitTouchingLoops(SweepOutput& shell, double length);
+
 // The traced shell's clean-up (cleanup.cpp): collapseShortEdges and weldLoopCorners at
-// tol.collapse, then zipSpurs and unfoldSharedRuns. Where a loop with an edge shorter than tol.tinyFace is then
-// still not simple in its plane (corners a few δ2 apart at an apex, or either side of a
-// ridge's end), the passes run once more with edges up to tol.tinyFace collapsed, and that is
-// kept only if fewer loops are then not simple.
+// tol.collapse, then zipSpurs, unfoldSharedRuns and splitTouchingLoops. Where a loop with an
+// edge shorter than tol.tinyFace is then still not simple in its plane (corners a few δ2
+// apart at an apex, or either side of a ridge's end), the passes run once more with edges up
+// to tol.tinyFace collapsed, and that is kept only if fewer loops are then not simple.
 void cleanUpShell(SweepOutput& shell, const Tolerances& tol);
 
 // Runs the sweep. The input must already be valid (see checkSpec): simple, consistently
