@@ -32,7 +32,11 @@ bool twistedAtAShortEdge(const SweepOutput& shell, double length) {
 void passes(SweepOutput& shell, double collapse, const Tolerances& tol) {
   collapseShortEdges(shell, collapse, tol.tinyFace, tol.height);
   weldLoopCorners(shell, collapse, tol.height);
-  zipSpurs(shell, tol.tinyFace);
+  mergeUntoldEdges(shell, tol.tinyFace, tol.cluster, tol.height);
+  // A zip moves a corner into the face across, which can leave a fold there with a third face
+  // that no zip of this round looked at: zip again until none is left (a few rounds at most).
+  for (int round = 0; round < 8 && zipSpurs(shell, tol.tinyFace) > 0; ++round) {
+  }
   unfoldSharedRuns(shell);
   splitTouchingLoops(shell, collapse);
 }

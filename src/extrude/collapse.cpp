@@ -1,10 +1,12 @@
 // Corners the sweep left a rounding apart, merged into one vertex: the ends of short edges
-// (collapseShortEdges) and two corners of one loop that are not neighbours (weldLoopCorners).
+// (collapseShortEdges, and mergeUntoldEdges where no face's plane tells them apart) and two
+// corners of one loop that are not neighbours (weldLoopCorners).
 // docs/extrude.md, "Decisions".
 #include "extrude/extrude.h"
 #include "extrude/sweep.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -204,17 +206,25 @@ std::size_t mergeGroups(SweepOutput& shell, Groups& groups, std::size_t merges, 
   return merges;
 }
 
-}  // namespace
-
-std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace, double baseHeight) {
-  Groups groups(shell, baseHeight);
-  std::size_t collapsed = 0;
+// Joins the ends of every face edge shorter than `length` that `accept(a, b)` lets merge, and
+// returns the number of joins.
+template <class Accept>
+std::size_t joinShortEdges(const SweepOutput& shell, Groups& groups, double length, Accept accept) {
+  std::size_t joined = 0;
   for (const ShellFace& f : shell.faces)
     for (const auto& loop : f.loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const int a = loop[i], b = loop[(i + 1) % loop.size()];
-        if ((shell.points[a] - shell.points[b]).norm() < length && groups.join(a, b)) ++collapsed;
+        if ((shell.points[a] - shell.points[b]).norm() < length && accept(a, b) && groups.join(a, b)) ++joined;
       }
+  return joined;
+}
+
+}  // namespace
+
+std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace, double baseHeight) {
+  Groups groups(shell, baseHeight);
+  std::size_t collapsed = joinShortEdges(shell, groups, length, [](int, int) { return true; });
   // A face all within tinyFace of its first corner (the last speck of a loop a change closed)
   // becomes a point.
   for (const ShellFace& f : shell.faces) {
@@ -252,6 +262,42 @@ std::size_t weldLoopCorners(SweepOutput& shell, double length, double baseHeight
         }
     }
   return mergeGroups(shell, groups, welded, true);
+}
+
+std::size_t mergeUntoldEdges(SweepOutput& shell, double length, double offPlane, double baseHeight) {
+  if (unpairedEdges(shell) != 0) return 0;
+  // Per vertex, the faces through it.
+  std::vector<std::vector<std::size_t>> facesAt(shell.points.size());
+  for (std::size_t f = 0; f < shell.faces.size(); ++f)
+    for (const auto& loop : shell.faces[f].loops)
+      for (int v : loop)
+        if (facesAt[v].empty() || facesAt[v].back() != f) facesAt[v].push_back(f);
+  // Whether moving a to b, or b to a, takes no face through either off its plane by offPlane.
+  auto untold = [&](int a, int b) {
+    const Vec3 d = shell.points[b] - shell.points[a];
+    for (int v : {a, b})
+      for (std::size_t f : facesAt[v])
+        if (std::abs(OpenMesh::dot(shell.faces[f].normal, d)) >= offPlane) return false;
+    return true;
+  };
+  Groups groups(shell, baseHeight);
+  const std::size_t merged = joinShortEdges(shell, groups, length, untold);
+  if (merged == 0) return 0;
+  // Kept only where no loop that was simple in its plane is then not.
+  auto notSimple = [](const SweepOutput& s) {
+    std::size_t n = 0;
+    for (const ShellFace& f : s.faces)
+      for (const auto& loop : f.loops) n += simpleInItsPlane(s, f, loop) ? 0 : 1;
+    return n;
+  };
+  const std::size_t before = notSimple(shell);
+  SweepOutput kept = shell;
+  if (mergeGroups(shell, groups, merged, false) == 0) return 0;
+  if (notSimple(shell) > before) {
+    shell = std::move(kept);
+    return 0;
+  }
+  return merged;
 }
 
 }  // namespace corbel::extrude

@@ -115,6 +115,17 @@ void traceFaces(const std::vector<Vec3>& points, const std::vector<RawFace>& raw
 std::size_t collapseShortEdges(SweepOutput& shell, double length, double tinyFace = 0,
                                double baseHeight = std::numeric_limits<double>::infinity());
 
+// Merges the ends of every face edge shorter than `length` where no face through either end
+// tells them apart: moving one onto the other takes no such face off its plane by `offPlane`
+// or more (collapse.cpp). Where nearly parallel planes meet, the sweep places their meeting
+// along the line they share only to a rounding over the sine of their angle (a node of a
+// ridge made twice, µm apart); such corners are one place as far as every face there can say.
+// Only closed shells, with the same bar on base corners as collapseShortEdges; kept only if
+// the shell stays closed, every vertex has one fan of faces, and no loop that was simple in
+// its plane is then not. Returns the number of merges (0: the shell is unchanged).
+std::size_t mergeUntoldEdges(SweepOutput& shell, double length, double offPlane,
+                             double baseHeight = std::numeric_limits<double>::infinity());
+
 // Welds two corners of one loop that are not neighbours but lie within `length` of each other
 // (collapse.cpp): a face whose boundary runs out to a corner and back to a second vertex the
 // sweep made a rounding away from the first. The spur between them, then of no width,
@@ -151,7 +162,8 @@ std::size_t unfoldSharedRuns(SweepOutput& shell);
 std::size_t splitTouchingLoops(SweepOutput& shell, double length);
 
 // The traced shell's clean-up (cleanup.cpp): collapseShortEdges and weldLoopCorners at
-// tol.collapse, then zipSpurs, unfoldSharedRuns and splitTouchingLoops. Where a loop with an
+// tol.collapse, mergeUntoldEdges up to tol.tinyFace within tol.cluster of the planes, then
+// zipSpurs, unfoldSharedRuns and splitTouchingLoops. Where a loop with an
 // edge shorter than tol.tinyFace is then still not simple in its plane (corners a few δ2
 // apart at an apex, or either side of a ridge's end), the passes run once more with edges up
 // to tol.tinyFace collapsed, and that is kept only if fewer loops are then not simple.

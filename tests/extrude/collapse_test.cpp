@@ -1,6 +1,12 @@
-// collapseShortEdges and weldLoopCorners: vertices a rounding apart merged (docs/extrude.md).
+// collapseShortEdges, mergeUntoldEdges and weldLoopCorners: vertices a rounding apart merged
+// (docs/extrude.md).
 #include "extrude/extrude.h"
+#include "extrude/footprints.h"
 #include "extrude/sweep.h"
+#include "saved_plan_checks.h"
+#include "shell_checks.h"
+#include "support.h"
+#include "volume_oracle.h"
 
 #include <gtest/gtest.h>
 
@@ -8,13 +14,6 @@
 
 namespace corbel::extrude::test {
 namespace {
-
-void addFace(SweepOutput& s, std::vector<int> loop, const Vec3& n) {
-  ShellFace f;
-  f.loops = {std::move(loop)};
-  f.normal = n;
-  s.faces.push_back(f);
-}
 
 // The unit cube, its top corner (1, 1, 1) doubled by a point `gap` away along −x: the top and
 // back faces have five corners, joined by an edge `gap` long.
@@ -170,6 +169,86 @@ TEST(WeldLoopCorners, LeavesCornersFartherApartAndNeighboursAlone) {
   SweepOutput cube = splitCube(1e-9);
   EXPECT_EQ(weldLoopCorners(cube, 1e-8), 0u);
   EXPECT_EQ(cube.faces[1].loops[0].size(), 5u);
+}
+
+// The unit cube with its top in two faces, F (x < 1/2) and G (x > 1/2), that meet the back's
+// top edge at c = (1/2, 1, 1) and c' = (1/2 + e, 1, 1 + h): G runs c' → c along the back, and
+// the back takes both into its top. With h = 0 every face through c or c' holds the line
+// through them (the top, the back): none tells them apart.
+enum { kCupTop = 1, kCupG = 2, kCupBack = 4 };
+SweepOutput cubeWithATwiceMadeNode(double e, double h) {
+  SweepOutput s;
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0),   Vec3(0, 1, 0),   Vec3(0, 0, 1),          Vec3(1, 0, 1),
+              Vec3(1, 1, 1), Vec3(0, 1, 1), Vec3(0.5, 0, 1), Vec3(0.5, 1, 1), Vec3(0.5 + e, 1, 1 + h)};
+  auto face = [&](std::vector<int> loop, Vec3 n) { addFace(s, std::move(loop), n); };
+  face({0, 3, 2, 1}, Vec3(0, 0, -1));
+  face({4, 8, 9, 7}, Vec3(0, 0, 1));      // F
+  face({8, 5, 6, 10, 9}, Vec3(0, 0, 1));  // G
+  face({0, 1, 5, 8, 4}, Vec3(0, -1, 0));
+  face({3, 7, 9, 10, 6, 2}, Vec3(0, 1, 0));  // the back
+  face({0, 4, 7, 3}, Vec3(-1, 0, 0));
+  face({1, 2, 6, 5}, Vec3(1, 0, 0));
+  return s;
+}
+
+// c and c', 1e-6 apart in line, are one vertex: G and the back lose a corner, the cube stays
+// closed, and it holds 1 m³ exactly (no face moved off its plane).
+TEST(MergeUntoldEdges, MergesAShortEdgeNoFaceThroughItsEndsTellsApart) {
+  SweepOutput s = cubeWithATwiceMadeNode(1e-6, 0);
+  ASSERT_EQ(unpairedEdges(s), 0u);
+  EXPECT_EQ(collapseShortEdges(s, 1e-7), 0u) << "longer than the collapse length";
+  EXPECT_EQ(mergeUntoldEdges(s, 1e-5, 1e-8), 1u);
+  EXPECT_EQ(unpairedEdges(s), 0u);
+  EXPECT_EQ(s.faces[kCupG].loops[0].size(), 4u);
+  EXPECT_EQ(s.faces[kCupBack].loops[0].size(), 5u);
+  for (const ShellFace& f : s.faces) EXPECT_TRUE(simpleInItsPlane(s, f, f.loops[0]));
+  EXPECT_NEAR(measure(s).volume, 1.0, 1e-15);
+}
+
+// A face that tells the ends apart keeps them: c' 1e-6 above the top (off G's plane), or the
+// cube's corner (1, 1, 1) and the point 1e-6 from it along the back's top (off the right
+// face's plane, x = 1). So does an edge longer than the length, and a shell that is not closed.
+TEST(MergeUntoldEdges, LeavesEndsAFaceTellsApartLongerEdgesAndOpenShells) {
+  SweepOutput raised = cubeWithATwiceMadeNode(1e-6, 1e-6);
+  EXPECT_EQ(mergeUntoldEdges(raised, 1e-5, 1e-8), 0u);
+  EXPECT_EQ(raised.faces[kCupG].loops[0].size(), 5u);
+  SweepOutput corner = splitCube(1e-6);
+  EXPECT_EQ(mergeUntoldEdges(corner, 1e-5, 1e-8), 0u);
+  EXPECT_EQ(corner.faces[1].loops[0].size(), 5u);
+  SweepOutput longer = cubeWithATwiceMadeNode(1e-4, 0);
+  EXPECT_EQ(mergeUntoldEdges(longer, 1e-5, 1e-8), 0u);
+  SweepOutput open = cubeWithATwiceMadeNode(1e-6, 0);
+  open.faces.erase(open.faces.begin());
+  EXPECT_EQ(mergeUntoldEdges(open, 1e-5, 1e-8), 0u);
+  EXPECT_EQ(open.faces[kCupG - 1].loops[0].size(), 5u);
+}
+
+// osm:w177178374#0, a garage whose front bends 4e-5 rad at a corner, under a 45° hip roof:
+// the ridge's node above that corner was made twice, 4.4e-6 m apart along the ridge, and the
+// back roof's exported cut spanned the ridge with a sliver the front faces' triangles crossed.
+// Merged, the shell passes the shell checks (CGAL's exact predicates over the exported
+// triangles) and holds CGAL's skeleton's volume.
+TEST(MergeUntoldEdges, AGaragesRidgeNodeMadeTwiceIsOne) {
+  const auto fps = readGeoJsonFile(std::string(CORBEL_SOURCE_DIR) + "/tests/data/extrude/moosburg_w177178374.geojson");
+  ASSERT_EQ(fps.size(), 1u);
+  ExtrusionSpec spec;
+  spec.profiles = {hipProfile(45 * kDeg)};
+  spec.loops.push_back({fps[0].loops[0], std::vector<int>(fps[0].loops[0].size(), 0)});
+  const ExtrusionResult r = extrude(spec);
+  EXPECT_EQ(unpairedEdges(r.shell), 0u);
+  EXPECT_EQ(shellGeometryProblem(r.shell, spec), "");
+  const VolumeOracle o = independentVolume(spec);
+  ASSERT_EQ(o.kind, VolumeOracle::Cgal);
+  EXPECT_NEAR(measure(r.shell).volume, o.volume, 1e-6 * o.volume);
+}
+
+// random18359, a perturbed regular polygon whose corners reach its apex within 1.3e-6 m of one
+// another: merged where no face tells them apart, the apex's triangles no longer cross.
+TEST(MergeUntoldEdges, CornersAtAnApexNoFaceTellsApartAreOne) {
+  const ExtrusionSpec spec = savedSpec("tests/data/extrude/untold_corners_at_an_apex.corbel");
+  const ExtrusionResult r = extrude(spec);
+  EXPECT_EQ(unpairedEdges(r.shell), 0u);
+  EXPECT_EQ(shellGeometryProblem(r.shell, spec), "");
 }
 
 }  // namespace
