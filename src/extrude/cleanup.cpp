@@ -8,14 +8,6 @@ namespace corbel::extrude {
 
 namespace {
 
-// How many loops of the shell are not simple in their plane.
-std::size_t loopsNotSimple(const SweepOutput& shell) {
-  std::size_t n = 0;
-  for (const ShellFace& f : shell.faces)
-    for (const auto& loop : f.loops) n += simpleInItsPlane(shell, f, loop) ? 0 : 1;
-  return n;
-}
-
 // Whether a loop with an edge shorter than `length` is not simple in its plane (the cheap
 // test first: most shells have no such edge).
 bool twistedAtAShortEdge(const SweepOutput& shell, double length) {

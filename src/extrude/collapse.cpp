@@ -284,16 +284,10 @@ std::size_t mergeUntoldEdges(SweepOutput& shell, double length, double offPlane,
   const std::size_t merged = joinShortEdges(shell, groups, length, untold);
   if (merged == 0) return 0;
   // Kept only where no loop that was simple in its plane is then not.
-  auto notSimple = [](const SweepOutput& s) {
-    std::size_t n = 0;
-    for (const ShellFace& f : s.faces)
-      for (const auto& loop : f.loops) n += simpleInItsPlane(s, f, loop) ? 0 : 1;
-    return n;
-  };
-  const std::size_t before = notSimple(shell);
+  const std::size_t before = loopsNotSimple(shell);
   SweepOutput kept = shell;
   if (mergeGroups(shell, groups, merged, false) == 0) return 0;
-  if (notSimple(shell) > before) {
+  if (loopsNotSimple(shell) > before) {
     shell = std::move(kept);
     return 0;
   }

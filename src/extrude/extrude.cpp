@@ -216,6 +216,13 @@ bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::v
   return flat.size() >= 3 && CGAL::is_simple_2(flat.begin(), flat.end(), K());
 }
 
+std::size_t loopsNotSimple(const SweepOutput& shell) {
+  std::size_t n = 0;
+  for (const ShellFace& f : shell.faces)
+    for (const auto& loop : f.loops) n += simpleInItsPlane(shell, f, loop) ? 0 : 1;
+  return n;
+}
+
 double faceArea(const SweepOutput& shell, const ShellFace& face) {
   double a = 0;
   for (std::size_t k = 0; k < face.loops.size(); ++k) {

@@ -138,6 +138,9 @@ std::size_t weldLoopCorners(SweepOutput& shell, double length,
 // across (exact predicates): two of its corners in one place, or sides that cross, are not.
 bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::vector<int>& loop);
 
+// How many loops of the shell are not simple in their plane (simpleInItsPlane).
+std::size_t loopsNotSimple(const SweepOutput& shell);
+
 // Zips every zero-width spur out of the faces (spurs.cpp): where a face's boundary runs out
 // to a corner and straight back with the two sides within `width` of each other, the corner
 // leaves that face and the faces either side of the spur meet along it instead. The shell

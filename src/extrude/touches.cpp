@@ -12,12 +12,12 @@ namespace corbel::extrude {
 
 namespace {
 
-// The distance from p to the segment a–b, and where along it the nearest point is (0 at a).
-std::pair<double, double> toSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+// The distance from p to the segment a–b.
+double toSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 d = b - a;
   const double len2 = OpenMesh::dot(d, d);
   const double t = len2 > 0 ? std::clamp(OpenMesh::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-  return {(p - (a + d * t)).norm(), t};
+  return (p - (a + d * t)).norm();
 }
 
 // The loop's area seen along `normal` (positive where it runs counter-clockwise seen from
@@ -48,7 +48,7 @@ std::optional<Split> findSplit(const SweepOutput& shell, std::size_t fi, double 
       const std::size_t e1 = (e + 1) % n;
       if (e == c || e1 == c) continue;
       const Vec3 &p = shell.points[loop[c]], &a = shell.points[loop[e]], &b = shell.points[loop[e1]];
-      if (toSegment(p, a, b).first >= length || (p - a).norm() < length || (p - b).norm() < length) continue;
+      if (toSegment(p, a, b) >= length || (p - a).norm() < length || (p - b).norm() < length) continue;
       // The loop, from c, is c … e, e1 … (back to c); with c in the edge e → e1 it parts into
       // c … e (closed by e → c) and c, e1 … (closed by the corner before c → c).
       Split s;
