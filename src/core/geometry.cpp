@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <numbers>
+#include <unordered_map>
+#include <utility>
 
 namespace corbel {
 
@@ -46,6 +50,92 @@ bool insideTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c, 
   return cross(a, b, p) >= -eps && cross(b, c, p) >= -eps && cross(c, a, p) >= -eps;
 }
 
+// The angle at o between the rays to a and b, in [0, pi].
+double angleAt(const Vec2& o, const Vec2& a, const Vec2& b) {
+  const Vec2 u = a - o, v = b - o;
+  return std::atan2(std::abs(u[0] * v[1] - u[1] * v[0]), u[0] * v[0] + u[1] * v[1]);
+}
+
+// Whether corner q of the polygon lies within `slack` of the segment from corner a to corner b,
+// in space.
+bool withinOfSegment(const std::vector<Vec3>& polygon, int q, int a, int b, double slack) {
+  const Vec3 ab = polygon[b] - polygon[a], aq = polygon[q] - polygon[a];
+  const double len2 = ab.sqrnorm();
+  const double t = len2 > 0 ? std::clamp(OpenMesh::dot(aq, ab) / len2, 0.0, 1.0) : 0.0;
+  return (aq - ab * t).sqrnorm() <= slack * slack;
+}
+
+// The polygon in an orthonormal frame of its own plane (from its first corner), counter-clockwise
+// about its normal: lengths and angles as in space, which the projection onto an axis plane
+// squeezes along a steep face's slope.
+std::vector<Vec2> inOwnPlane(const std::vector<Vec3>& polygon) {
+  Vec3 normal = newellNormal(polygon);
+  const double length = normal.norm();
+  if (length > 0) normal /= length;
+  int axis = 0;  // the axis least along the normal
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(normal[k]) < std::abs(normal[axis])) axis = k;
+  Vec3 e1(0.0);
+  e1[axis] = 1.0;
+  e1 = OpenMesh::cross(normal, e1);
+  if (e1.norm() > 0) e1.normalize();
+  const Vec3 e2 = OpenMesh::cross(normal, e1);
+  std::vector<Vec2> out;
+  out.reserve(polygon.size());
+  for (const Vec3& p : polygon) out.emplace_back(OpenMesh::dot(p - polygon[0], e1), OpenMesh::dot(p - polygon[0], e2));
+  return out;
+}
+
+// Lawson's flips turn a triangulation of the polygon into its constrained Delaunay
+// triangulation: a diagonal whose two facing angles add up past pi (the far corner of one
+// triangle lies inside the other's circumcircle) is swapped for the other diagonal of its quad.
+// Ear cuts leave fans of slivers; Delaunay's triangles keep their cuts away from corners, so a
+// polygon planar only to rounding folds less. A flip never makes a cut within `slack` of a corner
+// nor a triangle turning by no more than `eps`; angles within 1e-10 rad of pi (corners on one
+// circle, as round a regular polygon) never flip, and the flips stop after 16 per corner.
+void flipToDelaunay(const std::vector<Vec3>& polygon, std::vector<std::array<int, 3>>& tris, double eps, double slack) {
+  const int n = static_cast<int>(polygon.size());
+  const std::vector<Vec2> own = inOwnPlane(polygon);
+  std::unordered_map<std::int64_t, int> across;  // directed edge (from, to) -> triangle holding it
+  across.reserve(3 * tris.size());
+  auto key = [n](int from, int to) { return static_cast<std::int64_t>(from) * n + to; };
+  auto enter = [&](int t) {
+    for (int k = 0; k < 3; ++k) across[key(tris[t][k], tris[t][(k + 1) % 3])] = t;
+  };
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t) enter(t);
+  auto third = [&](int tri, int p, int q) {
+    for (int k = 0; k < 3; ++k)
+      if (tris[tri][k] != p && tris[tri][k] != q) return tris[tri][k];
+    return -1;
+  };
+  std::vector<std::pair<int, int>> pending;  // diagonals to check
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < t[(k + 1) % 3] && across.count(key(t[(k + 1) % 3], t[k]))) pending.emplace_back(t[k], t[(k + 1) % 3]);
+  std::size_t budget = 16 * static_cast<std::size_t>(n) + 64;
+  while (!pending.empty() && budget > 0) {
+    const auto [a, b] = pending.back();
+    pending.pop_back();
+    const auto ab = across.find(key(a, b)), ba = across.find(key(b, a));
+    if (ab == across.end() || ba == across.end()) continue;  // flipped away since
+    const int t = ab->second, u = ba->second;
+    // t runs a, b, c and u runs b, a, d counter-clockwise: the quad is a, d, b, c.
+    const int c = third(t, a, b), d = third(u, a, b);
+    if (angleAt(own[c], own[a], own[b]) + angleAt(own[d], own[b], own[a]) <= std::numbers::pi + 1e-10) continue;
+    if (cross(own[c], own[a], own[d]) <= eps || cross(own[d], own[b], own[c]) <= eps) continue;
+    if (withinOfSegment(polygon, a, c, d, slack) || withinOfSegment(polygon, b, c, d, slack)) continue;
+    --budget;
+    across.erase(ab);
+    across.erase(key(b, a));
+    tris[t] = {c, a, d};
+    tris[u] = {d, b, c};
+    enter(t);
+    enter(u);
+    for (const auto& [p, q] : {std::pair{a, d}, std::pair{d, b}, std::pair{b, c}, std::pair{c, a}})
+      pending.emplace_back(p, q);
+  }
+}
+
 }  // namespace
 
 std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& polygon) {
@@ -79,12 +169,7 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
   // the faces that meet there. (Not scaled by the coordinates' size: a face cuts the same
   // wherever it is placed.)
   const double slack = 1e-7 * box.diagonal();
-  auto nearSegment = [&](int q, int a, int b) {
-    const Vec3 ab = polygon[b] - polygon[a], aq = polygon[q] - polygon[a];
-    const double len2 = ab.sqrnorm();
-    const double t = len2 > 0 ? std::clamp(OpenMesh::dot(aq, ab) / len2, 0.0, 1.0) : 0.0;
-    return (aq - ab * t).sqrnorm() <= slack * slack;
-  };
+  auto nearSegment = [&](int q, int a, int b) { return withinOfSegment(polygon, q, a, b, slack); };
   std::vector<int> ring(n);
   for (int i = 0; i < n; ++i) ring[i] = i;
   // The first ear of the ring (-1: none). A clean ear (`strict`) turns left however little, and
@@ -127,6 +212,7 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& poly
     ring.erase(ring.begin() + best);
   }
   tris.push_back({ring[0], ring[1], ring[2]});
+  flipToDelaunay(polygon, tris, eps, slack);
   return tris;
 }
 

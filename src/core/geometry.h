@@ -35,9 +35,10 @@ struct BBox {
 // Newell's normal of a polygon (length = twice its area); robust for non-convex polygons.
 Vec3 newellNormal(const std::vector<Vec3>& polygon);
 
-// Ear-clipping triangulation of a simple planar polygon (any orientation). Returns index
-// triples into `polygon`. No triangle is a sliver (a corner within 1e-7 of the polygon's size of
-// its opposite side, in space) while another ear is left: a polygon planar only to rounding would
+// Triangulation of a simple planar polygon (any orientation): ear clipping, then Lawson's flips
+// to the polygon's constrained Delaunay triangulation in its own plane. Returns index triples
+// into `polygon`. No triangle is a sliver (a corner within 1e-7 of the polygon's size of its
+// opposite side, in space) while another ear is left: a polygon planar only to rounding would
 // fold there across the faces it meets. Degenerate or self-touching input still yields n-2
 // triangles (the clipping falls back to the best remaining ear), so rendering never loses a face.
 std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec3>& polygon);

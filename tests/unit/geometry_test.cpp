@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -254,6 +255,83 @@ TEST(Geometry, NoCutPassesWithinTheSlackOfAnotherCorner) {
   }
   EXPECT_EQ(tris.size(), 4u);
   EXPECT_NEAR(sum, shoelace(flat), 1e-12);
+}
+
+// Whether q lies inside the circle through a, b, c by more than `margin` of its radius: the
+// circle's centre from the two perpendicular bisectors (Cramer's rule), its radius from a.
+bool insideCircumcircle(const Vec2& q, const Vec2& a, const Vec2& b, const Vec2& c, double margin) {
+  const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+  const double d = 2 * (bx * cy - by * cx);
+  const double ux = (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / d;
+  const double uy = (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / d;
+  const double r = std::hypot(ux, uy);
+  return std::hypot(q[0] - a[0] - ux, q[1] - a[1] - uy) < r * (1 - margin);
+}
+
+// The triangles of `poly2` placed in plane `pl`, as index triples into poly2.
+std::vector<std::array<int, 3>> cut(const std::vector<Vec2>& poly2, const Plane& pl) {
+  return corbel::triangulatePolygon(place(pl, poly2));
+}
+
+// Points at sorted random angles on an ellipse: a convex polygon with no four corners on one
+// circle, so its Delaunay triangulation is unique.
+std::vector<Vec2> ellipse(std::mt19937& rng, int n) {
+  std::uniform_real_distribution<double> angle(0.0, 2 * std::numbers::pi);
+  std::vector<double> a(n);
+  for (double& x : a) x = angle(rng);
+  std::sort(a.begin(), a.end());
+  std::vector<Vec2> p;
+  for (double x : a) p.emplace_back(3.0 * std::cos(x), 1.2 * std::sin(x));
+  return p;
+}
+
+// An ear cut alone leaves fans of slivers (on a convex polygon, every ear from one end); the
+// cut is the Delaunay triangulation, whose defining property is checked directly: no corner of
+// the polygon lies inside any triangle's circumcircle (Delaunay 1934). Each polygon is cut in
+// every plane, both ways round, so no start corner or projection favours it.
+TEST(Geometry, TheCutOfAConvexPolygonIsDelaunay) {
+  std::mt19937 rng(77);
+  for (int n : {5, 8, 13, 24, 40}) {
+    const std::vector<Vec2> poly = ellipse(rng, n);
+    const auto pls = planes();
+    for (std::size_t i = 0; i < pls.size(); ++i)
+      for (const auto& p : {poly, reversed(poly)}) {
+        SCOPED_TRACE(std::to_string(n) + " corners in plane " + std::to_string(i));
+        const Plane& pl = pls[i];
+        for (const auto& t : cut(p, pl))
+          for (int q = 0; q < n; ++q) {
+            if (q == t[0] || q == t[1] || q == t[2]) continue;
+            EXPECT_FALSE(insideCircumcircle(p[q], p[t[0]], p[t[1]], p[t[2]], 1e-9))
+                << "corner " << q << " lies inside the circle of " << t[0] << "," << t[1] << "," << t[2];
+          }
+      }
+  }
+}
+
+// On a polygon that is not convex, the constrained Delaunay triangulation is the one whose every
+// diagonal is locally Delaunay: the far corner of the triangle on one side lies outside the
+// circumcircle of the triangle on the other (Lee & Lin 1986; Chew 1989).
+TEST(Geometry, TheCutOfAConcavePolygonIsConstrainedDelaunay) {
+  std::vector<std::pair<std::string, std::vector<Vec2>>> shapes{
+      {"L", lShape()}, {"U", uShape()}, {"comb", comb(4)}, {"L with colinear points", lWithColinear()}};
+  std::mt19937 rng(4321);
+  for (int i = 0; i < 12; ++i) shapes.push_back({"star " + std::to_string(i), star(rng, 6 + 3 * i)});
+  for (const auto& [name, shape] : shapes)
+    for (const auto& pl : planes())
+      for (const auto& p : {shape, reversed(shape)}) {
+        SCOPED_TRACE(name);
+        const auto tris = cut(p, pl);
+        std::map<std::pair<int, int>, int> third;  // directed edge -> the corner opposite it
+        for (const auto& t : tris)
+          for (int k = 0; k < 3; ++k) third[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
+        for (const auto& t : tris)
+          for (int k = 0; k < 3; ++k) {
+            const auto twin = third.find({t[(k + 1) % 3], t[k]});
+            if (twin == third.end()) continue;  // a side of the polygon
+            EXPECT_FALSE(insideCircumcircle(p[twin->second], p[t[0]], p[t[1]], p[t[2]], 1e-9))
+                << "diagonal " << t[k] << "-" << t[(k + 1) % 3] << " is not locally Delaunay";
+          }
+      }
 }
 
 TEST(Geometry, TriangulationOfFewerThanThreePointsIsEmpty) {
