@@ -27,7 +27,7 @@ void passes(SweepOutput& shell, double collapse, const Tolerances& tol) {
   mergeUntoldEdges(shell, tol.tinyFace, tol.cluster, tol.height);
   // A zip moves a corner into the face across, which can leave a fold there with a third face
   // that no zip of this round looked at: zip again until none is left (a few rounds at most).
-  for (int round = 0; round < 8 && zipSpurs(shell, tol.tinyFace) > 0; ++round) {
+  for (int round = 0; round < 8 && zipSpurs(shell, tol.tinyFace, tol.cluster) > 0; ++round) {
   }
   unfoldSharedRuns(shell);
   splitTouchingLoops(shell, collapse);

@@ -14,14 +14,17 @@ using Place = EdgePlace;
 
 class Zipper {
  public:
-  Zipper(SweepOutput& shell, double width) : shell_(shell), width_(width) {}
+  Zipper(SweepOutput& shell, double width, double straight) : shell_(shell), width_(width), straight_(straight) {}
 
   std::size_t run() {
     // Only loops with a corner where the boundary turns straight back are looked at (a cheap
-    // test first), and of those the loops that are not simple in their plane (the exact test)
-    // or whose spur the face across runs too, backwards (a mirrored spur): a spur in a simple
-    // loop harms nothing where it is alone, and every zip moves a corner into a neighbouring
-    // face; but two faces that run one spur both cover its sliver, and the shell crosses itself.
+    // test first), and of those the loops that are not simple in their plane (the exact test),
+    // whose spur the face across runs too, backwards (a mirrored spur), or whose spur runs
+    // straight past a corner (straightAt): a spur in a simple loop harms nothing where it
+    // is wide enough for its triangles to stand apart, and every zip moves a corner into a
+    // neighbouring face; but two faces that run one spur both cover its sliver, and a straight
+    // spur's triangles lie along the edge of the face across its far side, and the shell
+    // crosses itself.
     // (A fold's corner is one two loops alone pass, found by the loops through each vertex.)
     std::vector<std::size_t> first(shell_.points.size() + 1, 0);
     for (const ShellFace& f : shell_.faces)
@@ -63,7 +66,8 @@ class Zipper {
       for (std::size_t i = 0; i < loopOf(p).size() && !mirrored; ++i) {
         const bool back = turnsBack(loopOf(p), i);
         turns = turns || back;
-        mirrored = (back && mirroredAt(p.face, loopOf(p), i)) || foldedAt(p.face, loopOf(p), i);
+        mirrored =
+            (back && (mirroredAt(p.face, loopOf(p), i) || straightAt(loopOf(p), i))) || foldedAt(p.face, loopOf(p), i);
       }
       const bool simple = !turns || simpleInItsPlane(shell_, shell_.faces[p.face], loopOf(p));
       if (mirrored || !simple) spurred.push_back({p, simple});
@@ -111,9 +115,10 @@ class Zipper {
   std::vector<int>& loopOf(const Place& p) { return shell_.faces[p.face].loops[p.loop]; }
 
   // Whether the boundary turns straight back at corner i: A → T → B with the nearer of A and
-  // B within width_ of the line T–far, both sides longer than width_ (shorter ones are short
-  // edges, collapseShortEdges' matter).
-  bool turnsBack(const std::vector<int>& loop, std::size_t i) const {
+  // B within `width` (width_ unless given) of the line T–far, both sides longer than width_
+  // (shorter ones are short edges, collapseShortEdges' matter).
+  bool turnsBack(const std::vector<int>& loop, std::size_t i) const { return turnsBack(loop, i, width_); }
+  bool turnsBack(const std::vector<int>& loop, std::size_t i, double width) const {
     const std::size_t n = loop.size();
     if (n < 3) return false;
     const Vec3 &A = shell_.points[loop[(i + n - 1) % n]], &T = shell_.points[loop[i]],
@@ -123,7 +128,20 @@ class Zipper {
     if (!(la > width_ && lb > width_) || OpenMesh::dot(ta, tb) <= 0) return false;
     const Vec3 nearV = la <= lb ? ta : tb;
     const Vec3 farU = la <= lb ? tb / lb : ta / la;
-    return (nearV - farU * OpenMesh::dot(nearV, farU)).norm() <= width_;
+    return (nearV - farU * OpenMesh::dot(nearV, farU)).norm() <= width;
+  }
+
+  // Whether the boundary runs straight out past a corner and back at corner i: it turns back
+  // with its sides within straight_ of each other (turnsBack), and the far side is longer than
+  // the near one by more than width_. (Where the two are as long, A and B lie within width_ of
+  // each other: a sliver between two corners a short edge apart, a wall's foot a few µm above
+  // the base, which is no spur past an end.)
+  bool straightAt(const std::vector<int>& loop, std::size_t i) const {
+    if (straight_ <= 0 || !turnsBack(loop, i, straight_)) return false;
+    const std::size_t n = loop.size();
+    const Vec3 &A = shell_.points[loop[(i + n - 1) % n]], &T = shell_.points[loop[i]],
+               &B = shell_.points[loop[(i + 1) % n]];
+    return std::abs((A - T).norm() - (B - T).norm()) > width_;
   }
 
   // Whether the triangle A → T → B at corner i of a loop has no width: its least height (twice
@@ -179,8 +197,9 @@ class Zipper {
   // leaves the loop, which runs A → B, and the face across the far side takes the nearer of A
   // and B into its edge there; where one face lies across both sides, running B → T → A, T
   // leaves it too. The shell stays closed (every directed edge keeps a partner). In a loop that
-  // was simple in its plane (`simple`) only a mirrored spur or a fold is zipped (mirroredAt),
-  // and only where both loops stay simple. `other`: the face loop across that changed with it.
+  // was simple in its plane (`simple`) only a mirrored spur, a straight one (straightAt) or a
+  // fold is zipped, and only where both loops stay simple. `other`: the face
+  // loop across that changed with it.
   bool zipAt(int fi, int li, std::size_t i, bool simple, Place& other) {
     std::vector<int>& loop = shell_.faces[fi].loops[li];
     const bool spur = turnsBack(loop, i);
@@ -188,7 +207,7 @@ class Zipper {
     const std::size_t n = loop.size();
     const int a = loop[(i + n - 1) % n], t = loop[i], b = loop[(i + 1) % n];
     if (a == b) return false;
-    if (simple && !mirroredAt(fi, loop, i)) return false;
+    if (simple && !mirroredAt(fi, loop, i) && !straightAt(loop, i)) return false;
     const bool nearA = (shell_.points[a] - shell_.points[t]).norm() <= (shell_.points[b] - shell_.points[t]).norm();
     const auto acrossB = edges_.find(edgeKey(b, t)), acrossA = edges_.find(edgeKey(t, a));
     if (acrossB == edges_.end() || acrossA == edges_.end()) return false;
@@ -267,12 +286,12 @@ class Zipper {
   }
 
   SweepOutput& shell_;
-  double width_;
+  double width_, straight_;
   EdgeIndex edges_;
 };
 
 }  // namespace
 
-std::size_t zipSpurs(SweepOutput& shell, double width) { return Zipper(shell, width).run(); }
+std::size_t zipSpurs(SweepOutput& shell, double width, double straight) { return Zipper(shell, width, straight).run(); }
 
 }  // namespace corbel::extrude

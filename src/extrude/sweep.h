@@ -143,10 +143,11 @@ std::size_t loopsNotSimple(const SweepOutput& shell);
 
 // Zips every zero-width spur out of the faces (spurs.cpp): where a face's boundary runs out
 // to a corner and straight back with the two sides within `width` of each other, the corner
-// leaves that face and the faces either side of the spur meet along it instead. The shell
-// stays closed; nothing is done to a shell that is not a closed 2-manifold. Returns the number
-// of corners zipped.
-std::size_t zipSpurs(SweepOutput& shell, double width);
+// leaves that face and the faces either side of the spur meet along it instead. In a loop
+// simple in its plane only a spur the face across runs too, a fold, or a spur whose sides lie
+// within `straight` and whose far side is the longer by more than `width` is zipped. The shell stays closed; nothing is done to a shell that is not a
+// closed 2-manifold. Returns the number of corners zipped.
+std::size_t zipSpurs(SweepOutput& shell, double width, double straight = 0.0);
 
 // Takes folds out of the boundaries between faces (folds.cpp): where a face that is not simple
 // in its plane shares a run of corners with one other face, and no third face meets those

@@ -213,5 +213,65 @@ TEST(ZipSpurs, AFoldAlongARidgeIsTakenOut) {
 // clean-up zips again until nothing is left to zip, and the shell passes the shell checks.
 TEST(ZipSpurs, AFoldAZipLeavesIsZippedInTheNextRound) { expectClean("tests/data/extrude/fold_left_by_a_zip.corbel"); }
 
+// A 2 × 2 × 1 box whose front is two walls, W (x in [0, 1]) and V (x in [1, 2]), under one
+// top R. W's top runs from its end (1, 0, 1) on past V's top to T = (2, 0, 1 + lift) and
+// straight back to (0, 0, 1): a spur whose sides, V's top and R's front edge, lie lift / 2
+// apart, with a different face across each. W's loop is simple in its plane, but its cut lays
+// the spur's sliver along R's edge, and the shell touches itself there (random11920).
+SweepOutput boxWithAWallTopPastItsEnd(double lift) {
+  SweepOutput s;
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 0),        Vec3(0, 2, 0),
+              Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(2, 0, 1 + lift), Vec3(2, 2, 1), Vec3(0, 2, 1)};
+  addFace(s, {0, 1, 6, 7, 5}, Vec3(0, -1, 0));  // W
+  addFace(s, {1, 2, 7, 6}, Vec3(0, -1, 0));     // V
+  addFace(s, {5, 7, 8, 9}, Vec3(0, 0, 1));      // R
+  addFace(s, {2, 3, 8, 7}, Vec3(1, 0, 0));
+  addFace(s, {3, 4, 9, 8}, Vec3(0, 1, 0));
+  addFace(s, {4, 0, 5, 9}, Vec3(-1, 0, 0));
+  addFace(s, {0, 4, 3, 2, 1}, Vec3(0, 0, -1));
+  return s;
+}
+
+// Straight (its sides within the straight width, here 1e-8 for sides 5e-9 apart), the spur is
+// zipped though W's loop is simple: T leaves W, and R takes W's top end (1, 0, 1) into its
+// front edge, which V's top now meets. By hand: W is the unit square, R's area 4 (to the lift),
+// and the box's volume 4.
+TEST(ZipSpurs, AStraightSpurOfASimpleLoopIsZipped) {
+  const double lift = 1e-8;
+  SweepOutput s = boxWithAWallTopPastItsEnd(lift);
+  ASSERT_EQ(unpairedEdges(s), 0u);
+  ASSERT_TRUE(simpleInItsPlane(s, s.faces[0], s.faces[0].loops[0]));
+  EXPECT_EQ(zipSpurs(s, 1e-6, 1e-8), 1u);
+  EXPECT_EQ(unpairedEdges(s), 0u);
+  EXPECT_EQ(s.faces[0].loops[0], (std::vector<int>{0, 1, 6, 5}));
+  EXPECT_EQ(s.faces[2].loops[0], (std::vector<int>{5, 6, 7, 8, 9}));
+  EXPECT_EQ(s.faces[1].loops[0], (std::vector<int>{1, 2, 7, 6})) << "V is unchanged";
+  EXPECT_NEAR(faceArea(s, s.faces[0]), 1.0, 1e-12);
+  EXPECT_NEAR(faceArea(s, s.faces[2]), 4.0, 4 * lift);
+  EXPECT_NEAR(measure(s).volume, 4.0, 4 * lift);
+}
+
+// The straight width decides, as the width does for loops that are not simple: without it, or
+// below the spur's width (sides 5e-9 apart, straight width 1e-9), a spur of a simple loop with a
+// different face across each side stays.
+TEST(ZipSpurs, ASpurOfASimpleLoopWiderThanStraightStays) {
+  for (const double straight : {0.0, 1e-9}) {
+    SweepOutput s = boxWithAWallTopPastItsEnd(1e-8);
+    const std::vector<int> before = s.faces[0].loops[0];
+    EXPECT_EQ(zipSpurs(s, 1e-6, straight), 0u) << straight;
+    EXPECT_EQ(s.faces[0].loops[0], before) << straight;
+  }
+}
+
+// Three perturbed orthogonal plans from the random run whose wall's top ran past its end and
+// back, along the edge of a roof with no corner at that end: random11920 (1.5 m past, the
+// sides 3e-8 m apart), random40645 (2.1e-7 m) and random73734 (3 m past, 5.4e-8 m). Zipped,
+// each shell passes the shell checks.
+TEST(ZipSpurs, AWallTopPastItsEndIsZipped) {
+  expectClean("tests/data/extrude/wall_top_past_its_end.corbel");
+  expectClean("tests/data/extrude/wall_top_past_its_end_too.corbel");
+  expectClean("tests/data/extrude/wall_top_past_its_end_by_3_m.corbel");
+}
+
 }  // namespace
 }  // namespace corbel::extrude::test
