@@ -3,10 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <limits>
-#include <numbers>
-#include <unordered_map>
 #include <utility>
 
 namespace corbel {
@@ -50,12 +47,6 @@ bool insideTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c, 
   return cross(a, b, p) >= -eps && cross(b, c, p) >= -eps && cross(c, a, p) >= -eps;
 }
 
-// The angle at o between the rays to a and b, in [0, pi].
-double angleAt(const Vec2& o, const Vec2& a, const Vec2& b) {
-  const Vec2 u = a - o, v = b - o;
-  return std::atan2(std::abs(u[0] * v[1] - u[1] * v[0]), u[0] * v[0] + u[1] * v[1]);
-}
-
 // Whether corner q of the polygon lies within `slack` of the segment from corner a to corner b,
 // in space.
 bool withinOfSegment(const std::vector<Vec3>& polygon, int q, int a, int b, double slack) {
@@ -94,45 +85,79 @@ std::vector<Vec2> inOwnPlane(const std::vector<Vec3>& polygon) {
 // nor a triangle turning by no more than `eps`; angles within 1e-10 rad of pi (corners on one
 // circle, as round a regular polygon) never flip, and the flips stop after 16 per corner.
 void flipToDelaunay(const std::vector<Vec3>& polygon, std::vector<std::array<int, 3>>& tris, double eps, double slack) {
-  const int n = static_cast<int>(polygon.size());
+  const int count = static_cast<int>(tris.size());
+  if (count < 2) return;
   const std::vector<Vec2> own = inOwnPlane(polygon);
-  std::unordered_map<std::int64_t, int> across;  // directed edge (from, to) -> triangle holding it
-  across.reserve(3 * tris.size());
-  auto key = [n](int from, int to) { return static_cast<std::int64_t>(from) * n + to; };
-  auto enter = [&](int t) {
-    for (int k = 0; k < 3; ++k) across[key(tris[t][k], tris[t][(k + 1) % 3])] = t;
-  };
-  for (int t = 0; t < static_cast<int>(tris.size()); ++t) enter(t);
-  auto third = [&](int tri, int p, int q) {
+  // next[t][k]: the triangle across edge k of t (from corner k to corner k + 1), -1 on a side.
+  std::vector<std::array<int, 3>> next(count, {-1, -1, -1});
+  {
+    struct Side {
+      int lo, hi, t, k;
+    };
+    std::vector<Side> sides;
+    sides.reserve(3 * count);
+    for (int t = 0; t < count; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int a = tris[t][k], b = tris[t][(k + 1) % 3];
+        sides.push_back({std::min(a, b), std::max(a, b), t, k});
+      }
+    std::sort(sides.begin(), sides.end(),
+              [](const Side& x, const Side& y) { return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi; });
+    for (std::size_t i = 0; i + 1 < sides.size(); ++i)
+      if (sides[i].lo == sides[i + 1].lo && sides[i].hi == sides[i + 1].hi) {
+        next[sides[i].t][sides[i].k] = sides[i + 1].t;
+        next[sides[i + 1].t][sides[i + 1].k] = sides[i].t;
+      }
+  }
+  auto edgeOf = [&](int t, int a, int b) {  // k where t runs a -> b, or -1
     for (int k = 0; k < 3; ++k)
-      if (tris[tri][k] != p && tris[tri][k] != q) return tris[tri][k];
+      if (tris[t][k] == a && tris[t][(k + 1) % 3] == b) return k;
     return -1;
   };
-  std::vector<std::pair<int, int>> pending;  // diagonals to check
-  for (const auto& t : tris)
+  auto repoint = [&](int t, int from, int to) {  // t's neighbour `from` is `to` now
+    if (t < 0) return;
     for (int k = 0; k < 3; ++k)
-      if (t[k] < t[(k + 1) % 3] && across.count(key(t[(k + 1) % 3], t[k]))) pending.emplace_back(t[k], t[(k + 1) % 3]);
-  std::size_t budget = 16 * static_cast<std::size_t>(n) + 64;
+      if (next[t][k] == from) next[t][k] = to;
+  };
+  struct Pending {
+    int t, a, b;
+  };
+  std::vector<Pending> pending;  // diagonals to check, each with a triangle running it
+  for (int t = 0; t < count; ++t)
+    for (int k = 0; k < 3; ++k)
+      if (next[t][k] > t) pending.push_back({t, tris[t][k], tris[t][(k + 1) % 3]});
+  std::size_t budget = 16 * polygon.size() + 64;
   while (!pending.empty() && budget > 0) {
-    const auto [a, b] = pending.back();
+    const auto [t, a, b] = pending.back();
     pending.pop_back();
-    const auto ab = across.find(key(a, b)), ba = across.find(key(b, a));
-    if (ab == across.end() || ba == across.end()) continue;  // flipped away since
-    const int t = ab->second, u = ba->second;
+    const int k = edgeOf(t, a, b);
+    if (k < 0 || next[t][k] < 0) continue;  // flipped away since, or a side
+    const int u = next[t][k], l = edgeOf(u, b, a);
+    if (l < 0) continue;
     // t runs a, b, c and u runs b, a, d counter-clockwise: the quad is a, d, b, c.
-    const int c = third(t, a, b), d = third(u, a, b);
-    if (angleAt(own[c], own[a], own[b]) + angleAt(own[d], own[b], own[a]) <= std::numbers::pi + 1e-10) continue;
+    const int c = tris[t][(k + 2) % 3], d = tris[u][(l + 2) % 3];
+    // The angles at c and d facing ab add up past pi where sin of their sum is negative:
+    // sin(γ + δ) |ca| |cb| |da| |db| = cross_c dot_d + dot_c cross_d. Within 1e-10 stays.
+    const Vec2 ca = own[a] - own[c], cb = own[b] - own[c], db = own[b] - own[d], da = own[a] - own[d];
+    const double crossC = ca[0] * cb[1] - ca[1] * cb[0], dotC = ca[0] * cb[0] + ca[1] * cb[1];
+    const double crossD = db[0] * da[1] - db[1] * da[0], dotD = db[0] * da[0] + db[1] * da[1];
+    const double sine = crossC * dotD + dotC * crossD;
+    if (sine >= 0 || sine * sine <= 1e-20 * ca.sqrnorm() * cb.sqrnorm() * da.sqrnorm() * db.sqrnorm()) continue;
     if (cross(own[c], own[a], own[d]) <= eps || cross(own[d], own[b], own[c]) <= eps) continue;
     if (withinOfSegment(polygon, a, c, d, slack) || withinOfSegment(polygon, b, c, d, slack)) continue;
     --budget;
-    across.erase(ab);
-    across.erase(key(b, a));
+    const int nbc = next[t][(k + 1) % 3], nca = next[t][(k + 2) % 3];
+    const int nad = next[u][(l + 1) % 3], ndb = next[u][(l + 2) % 3];
     tris[t] = {c, a, d};
+    next[t] = {nca, nad, u};
     tris[u] = {d, b, c};
-    enter(t);
-    enter(u);
-    for (const auto& [p, q] : {std::pair{a, d}, std::pair{d, b}, std::pair{b, c}, std::pair{c, a}})
-      pending.emplace_back(p, q);
+    next[u] = {ndb, nbc, t};
+    repoint(nad, u, t);
+    repoint(nbc, t, u);
+    pending.push_back({t, a, d});
+    pending.push_back({u, d, b});
+    pending.push_back({u, b, c});
+    pending.push_back({t, c, a});
   }
 }
 

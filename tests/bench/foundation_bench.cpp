@@ -1,6 +1,7 @@
-// Foundation speeds: building the Scene from a Document, validating shells, project I/O and
-// one headless frame. Run: build/tests/bench/corbel_bench_foundation
+// Foundation speeds: building the Scene from a Document, validating shells, project I/O, cutting
+// faces into triangles and one headless frame. Run: build/tests/bench/corbel_bench_foundation
 #include "core/export.h"
+#include "core/geometry.h"
 #include "core/massing.h"
 #include "core/project_io.h"
 #include "core/scene_sync.h"
@@ -8,8 +9,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
+#include <random>
+#include <vector>
 
 namespace {
 
@@ -86,6 +91,29 @@ void ExportGlb(benchmark::State& state) {
   std::remove(path.c_str());
 }
 BENCHMARK(ExportGlb)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// Cutting one face into triangles (triangulatePolygon: the ear cut, then the flips), as every
+// export, frame and pick does: a star-shaped polygon of n corners at random radii (concave,
+// about half its corners reflex), in a plane tilted 30° like a roof.
+std::vector<Vec3> tiltedStar(int n) {
+  std::mt19937 rng(static_cast<unsigned>(n));
+  std::uniform_real_distribution<double> radius(5.0, 10.0);
+  std::vector<Vec3> p;
+  const double pi = std::numbers::pi, tilt = pi / 6;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * pi * i / n, r = radius(rng);
+    const double x = r * std::cos(a), y = r * std::sin(a);
+    p.emplace_back(100 + x, 50 + y * std::cos(tilt), 3 + y * std::sin(tilt));
+  }
+  return p;
+}
+
+void Triangulate(benchmark::State& state) {
+  const std::vector<Vec3> face = tiltedStar(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(triangulatePolygon(face).size());
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(Triangulate)->Arg(4)->Arg(16)->Arg(256)->Arg(2048)->Unit(benchmark::kMicrosecond);
 
 void HeadlessFrame(benchmark::State& state) {
   static render::HeadlessContext context;
