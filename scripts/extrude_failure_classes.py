@@ -32,6 +32,8 @@ def classify(error, warnings):
         return "unclosed without warning" if not warnings else "unclosed, other warning"
     if "2-manifold" in error:
         return "non-manifold"
+    if "crosses itself" in error:
+        return "face crossing itself"
     return "other: " + error[:60]
 
 

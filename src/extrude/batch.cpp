@@ -16,7 +16,8 @@ namespace corbel::extrude {
 
 namespace {
 
-// One build of one building at one tolerance factor, validated as a closed 2-manifold.
+// One build of one building at one tolerance factor, validated as a closed 2-manifold whose
+// faces are simple polygons in their planes.
 struct Attempt {
   bool ok = false;
   bool retryable = false;  // failed in a way wider tolerances may mend (not bad input, not time)
@@ -57,6 +58,9 @@ Attempt attempt(const BatchItem& item, double factor, bool keepMesh, bool merge,
     if (!a.ok) {
       a.error = "the shell is not a closed 2-manifold:";
       for (const auto& p : v.problems()) a.error += " " + p + ";";
+    } else if (const std::string crossed = crossedFace(er.shell); !crossed.empty()) {
+      a.ok = false;
+      a.error = "the shell is not valid: " + crossed;
     }
     if (keepMesh) {
       a.mesh = merge ? toMeshData(er.shell, item.spec, item.spec.material, true) : std::move(mesh);
@@ -126,8 +130,8 @@ void runOne(const BatchItem& item, BatchResult& r, const BatchOptions& o) {
       rebuilt.clear();
       agreed = true;
       for (std::size_t i = 0; i < window && agreed; ++i) {
-        rebuilt.push_back(attempt(item, f[start + i], o.keepMeshes && i == 0, o.mergeCoplanar, o.featuresApart, o.timeLimitSeconds,
-                                  o.windingRule));
+        rebuilt.push_back(attempt(item, f[start + i], o.keepMeshes && i == 0, o.mergeCoplanar, o.featuresApart,
+                                  o.timeLimitSeconds, o.windingRule));
         ++r.builds;
         agreed = rebuilt.back().ok;
         if (!agreed || i == 0) continue;

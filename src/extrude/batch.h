@@ -41,8 +41,8 @@ struct BatchOptions {
   bool mergeCoplanar = false;    // kept meshes only: coplanar neighbours merged (export option)
   bool featuresApart = false;    // kept meshes only: without their features, placed in BatchResult::features
   double timeLimitSeconds = 10.0;  // per building and attempt
-  // A building whose first build fails validation (not closed, not a 2-manifold, or an error
-  // of the sweep; never bad input or the time limit) is rebuilt with tolerance factors
+  // A building whose first build fails validation (not closed, not a 2-manifold, a face crossing
+  // itself, or an error of the sweep; never bad input or the time limit) is rebuilt with tolerance factors
   // (Tolerances::forScale) from a window of `retryWindow` consecutive entries, in turn. The
   // window's first rebuild is accepted only when the others pass too and all agree on volume
   // and roof area within `retryAgreement` (relative): wider tolerances can close a shell around

@@ -223,6 +223,25 @@ std::size_t loopsNotSimple(const SweepOutput& shell) {
   return n;
 }
 
+std::string crossedFace(const SweepOutput& shell) {
+  for (std::size_t fi = 0; fi < shell.faces.size(); ++fi) {
+    const ShellFace& f = shell.faces[fi];
+    for (const auto& loop : f.loops) {
+      if (simpleInItsPlane(shell, f, loop)) continue;
+      Vec3 top(0, 0, -std::numeric_limits<double>::infinity());
+      for (int i : loop)
+        if (shell.points[i][2] > top[2]) top = shell.points[i];
+      std::ostringstream s;
+      s.precision(6);
+      s << "face " << fi << " (" << (f.base ? "base" : "plan edge " + std::to_string(f.sourceEdge)) << ", segment "
+        << f.segment << ") crosses itself in its plane, its top at (" << top[0] << ", " << top[1] << ", " << top[2]
+        << ")";
+      return s.str();
+    }
+  }
+  return "";
+}
+
 double faceArea(const SweepOutput& shell, const ShellFace& face) {
   double a = 0;
   for (std::size_t k = 0; k < face.loops.size(); ++k) {

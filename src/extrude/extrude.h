@@ -75,6 +75,13 @@ MeshData toMeshData(const SweepOutput& shell, const ExtrusionSpec& spec, const s
 // consistently oriented shell). Linear-logarithmic: a cheap test before building a mesh.
 std::size_t unpairedEdges(const SweepOutput& shell);
 
+// "" where every loop of every face is a simple polygon in its plane (simpleInItsPlane), else
+// the first that is not: "face F (plan edge E, segment S) crosses itself in its plane, its top
+// at (x, y, z)". A shell can be closed and a 2-manifold and still have such a face (a roof's
+// boundary running past its ridge and back): the batch and the editor's builder reject it as
+// they reject a shell that is not closed, and rebuild it with wider tolerances.
+std::string crossedFace(const SweepOutput& shell);
+
 // Area of a planar polygon with holes (outer minus holes), in its own plane.
 double faceArea(const SweepOutput& shell, const ShellFace& face);
 

@@ -41,9 +41,9 @@ void registerKernel(SceneSync& sync) {
       if (std::string(e.what()).find("time limit") != std::string::npos) throw;
       return rebuilt(o, spec);
     }
-    // A shell that did not close is rebuilt as the batch does (`corbel-cli extrude`, towns);
-    // a build that passes pays nothing for it.
-    if (unpairedEdges(r.shell)) return rebuilt(o, spec);
+    // A shell that did not close, or has a face crossing itself, is rebuilt as the batch does
+    // (`corbel-cli extrude`, towns); a build that passes pays nothing for it.
+    if (unpairedEdges(r.shell) || !crossedFace(r.shell).empty()) return rebuilt(o, spec);
     BuildResult b;
     b.kind = Kind::Shell;
     b.mesh = toMeshData(r.shell, spec, spec.material);

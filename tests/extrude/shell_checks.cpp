@@ -87,7 +87,7 @@ bool improper(const std::array<int, 3>& s, const std::array<int, 3>& t, const st
 
 }  // namespace
 
-std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec) {
+std::string faceLoopProblem(const SweepOutput& shell) {
   for (std::size_t fi = 0; fi < shell.faces.size(); ++fi) {
     const ShellFace& f = shell.faces[fi];
     const auto [u, v] = planeOf(f.normal);
@@ -119,6 +119,11 @@ std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& 
       }
     }
   }
+  return "";
+}
+
+std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec) {
+  if (std::string loop = faceLoopProblem(shell); !loop.empty()) return loop;
 
   // The shell's mesh, every polygon cut into triangles as the exports and the renderer cut it.
   const MeshData m = toMeshData(shell, spec, "plaster");

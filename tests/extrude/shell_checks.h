@@ -20,6 +20,10 @@ namespace corbel::extrude::test {
 // where a shell touches itself).
 std::string shellGeometryProblem(const SweepOutput& shell, const ExtrusionSpec& spec);
 
+// The first half of shellGeometryProblem: "" or the first face loop that is not simple in the
+// coordinate plane its normal is most across.
+std::string faceLoopProblem(const SweepOutput& shell);
+
 // How far above CGAL's skeleton the top of a one-profile shell may be and still count as the
 // skeleton's top: the kernel's event height tolerance δ1 (events that close in height are one),
 // plus δ2 (events that close in plan are one, so an edge meets the last event up to δ2 from
