@@ -204,16 +204,46 @@ std::size_t unpairedEdges(const SweepOutput& shell) {
   return bad;
 }
 
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// CGAL::is_simple_2's answer for a few corners, by testing every pair of sides with the same
+// exact predicates: CGAL's sweep allocates a tree per call, which costs more than the pairs
+// below a few dozen corners (most faces have 3 to 6). Sides that share a corner may only meet
+// there: they overlap where the far ends lie on one line on the same side of it. Other sides
+// may not meet at all (a corner twice is two sides touching).
+bool simpleByPairs(const std::vector<Epick::Point_2>& p) {
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Epick::Point_2 &a = p[i], &b = p[(i + 1) % n];
+    if (a == b) return false;
+    // The next side, from b: it turns back along this one?
+    const Epick::Point_2& c = p[(i + 2) % n];
+    if (CGAL::collinear(a, b, c) && !CGAL::collinear_are_strictly_ordered_along_line(a, b, c)) return false;
+    const Epick::Segment_2 s(a, b);
+    // Sides not sharing a corner with this one, each pair once.
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) break;
+      if (CGAL::do_intersect(s, Epick::Segment_2(p[j], p[(j + 1) % n]))) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 bool simpleInItsPlane(const SweepOutput& shell, const ShellFace& f, const std::vector<int>& loop) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   int axis = 0;
   for (int k = 1; k < 3; ++k)
     if (std::abs(f.normal[k]) > std::abs(f.normal[axis])) axis = k;
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  std::vector<K::Point_2> flat;
+  std::vector<Epick::Point_2> flat;
   flat.reserve(loop.size());
   for (int i : loop) flat.emplace_back(shell.points[i][u], shell.points[i][v]);
-  return flat.size() >= 3 && CGAL::is_simple_2(flat.begin(), flat.end(), K());
+  if (flat.size() < 3) return false;
+  if (flat.size() <= 24) return simpleByPairs(flat);
+  return CGAL::is_simple_2(flat.begin(), flat.end(), Epick());
 }
 
 std::size_t loopsNotSimple(const SweepOutput& shell) {
