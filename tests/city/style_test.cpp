@@ -3,6 +3,7 @@
 #include "city/style.h"
 
 #include "core/error.h"
+#include "extrude/extrude.h"
 
 #include <gtest/gtest.h>
 
@@ -113,12 +114,17 @@ TEST(Style, ANumericAttributeRangePicksTheType) {
   EXPECT_EQ(type({{"height", "15 ft"}}), "house");  // not metres: not taken as a height
   EXPECT_EQ(type({{"roof:shape", "flat"}}), "shed");
   EXPECT_EQ(type(nlohmann::json::object()), "house");
-  EXPECT_NE(parseError(withType(R"({"name": "t", "when": {"property": {"height": {"range": [5, 2]}}}, "edges": [{"profiles": "hip"}]})"))
-                .find("types[0].when.property.height.range: min is greater than max"),
-            std::string::npos);
-  EXPECT_NE(parseError(withType(R"({"name": "t", "when": {"property": {"height": {"below": 5}}}, "edges": [{"profiles": "hip"}]})"))
-                .find("below"),
-            std::string::npos);
+  EXPECT_NE(
+      parseError(
+          withType(
+              R"({"name": "t", "when": {"property": {"height": {"range": [5, 2]}}}, "edges": [{"profiles": "hip"}]})"))
+          .find("types[0].when.property.height.range: min is greater than max"),
+      std::string::npos);
+  EXPECT_NE(
+      parseError(
+          withType(R"({"name": "t", "when": {"property": {"height": {"below": 5}}}, "edges": [{"profiles": "hip"}]})"))
+          .find("below"),
+      std::string::npos);
 }
 
 TEST(Style, ProfileChoicesFollowTheirWeights) {
@@ -231,6 +237,40 @@ TEST(Style, ATypesPriorityIsItsBuildings) {
             "types[0].priority: expected \"maximise_volume\", \"minimise_volume\" or \"manual\", found \"biggest\"");
 }
 
+// Manual priority reaches the town's shells: a box bay at the foot of the street front (walls
+// 1.5 m, then 45°, 1 m deep) whose roof comes into line with the facade's wall (3 m, then 45°)
+// at 2.5 m. The bay's roof tagged "high" takes the facade as minimising volume does; tagged
+// "low", the wall goes on as maximising does; and the two outcomes differ.
+TEST(Style, ManualPriorityRanksTheTypesTaggedSegments) {
+  auto style = [](const std::string& priority, const std::string& bayRoofTag) {
+    return parseStyle(R"({"profiles": [
+        {"name": "main", "points": [[0, 0], [0, 3], [1, 4]], "tags": ["wall", "roof"]},
+        {"name": "bay", "points": [[0, 0], [0, 1.5], [1, 2.5]], "tags": ["bay wall", ")" +
+                      bayRoofTag + R"("]}],
+      "types": [{"name": "house", "priority": ")" +
+                      priority + R"(", "edges": [{"profiles": "main"}],
+        "steps": [{"when": {"orientation": ["street"]}, "chance": 1, "height": 0, "width": 3, "depth": 1,
+                   "along": 0.5, "front_profile": "bay"}]}]})");
+  };
+  const Building b = box("house", 10, 6);
+  BuildingLabels L;
+  L.front = {0, -1};
+  L.edges = labelEdges(b.loops, {0, -1});
+  auto volume = [&](const Style& s) {
+    const StyledBuilding sb = styleBuilding(s, b, L, 1);
+    EXPECT_EQ(sb.problem, "");
+    EXPECT_EQ(sb.spec.steps.size(), 1u);
+    const extrude::ExtrusionResult r = extrude::extrude(sb.spec);
+    EXPECT_EQ(extrude::unpairedEdges(r.shell), 0u);
+    EXPECT_TRUE(r.shell.warnings.empty()) << r.shell.warnings.front();
+    return extrude::measure(r.shell).volume;
+  };
+  const double maxV = volume(style("maximise_volume", "bay roof")), minV = volume(style("minimise_volume", "bay roof"));
+  ASSERT_GT(maxV - minV, 1e-3 * maxV) << "the layout must be one the priority decides";
+  EXPECT_NEAR(volume(style("manual", "high")), minV, 1e-9 * minV);
+  EXPECT_NEAR(volume(style("manual", "low")), maxV, 1e-9 * maxV);
+}
+
 TEST(Style, AFileFaultNamesTheFile) {
   const auto dir = std::filesystem::temp_directory_path() / "corbel_city_style_test";
   std::filesystem::create_directories(dir);
@@ -338,22 +378,25 @@ TEST(Style, TagTextureFaultsNameTheirKey) {
 // assigned as before, drawing the same numbers.
 TEST(Style, SizeRulesComeFirstByAreaAndDepth) {
   const std::string assign = R"({"when": {"property": {"use": "shop"}}, "types": "shop"}, {"types": "house"})";
-  const Style s = parseStyle(std::string(kStyle).insert(std::string(kStyle).rfind('}'),
+  const Style s = parseStyle(std::string(kStyle).insert(
+      std::string(kStyle).rfind('}'),
       R"(, "by_size": [{"when": {"area": [1000, 1e12]}, "types": "shed"}, {"when": {"depth": [20, 1e12]}, "types": {"shed": 1}}],
-          "assign": [)" + assign + "]"));
+          "assign": [)" +
+          assign + "]"));
   ASSERT_EQ(s.bySize.size(), 2u);
   auto typeOf = [&](Building b, double depth) {
     b.depth = depth;
     BuildingRandom r(1, b.id);
     return s.types[*assignType(s, b, r)].name;
   };
-  EXPECT_EQ(typeOf(box("a", 30, 19.9), 19.9), "house");      // 597 m², 19.9 m deep
-  EXPECT_EQ(typeOf(box("b", 30, 20), 20), "shed");           // 20 m deep
-  EXPECT_EQ(typeOf(box("c", 100, 10), 10), "shed");          // 1,000 m², 10 m deep
+  EXPECT_EQ(typeOf(box("a", 30, 19.9), 19.9), "house");  // 597 m², 19.9 m deep
+  EXPECT_EQ(typeOf(box("b", 30, 20), 20), "shed");       // 20 m deep
+  EXPECT_EQ(typeOf(box("c", 100, 10), 10), "shed");      // 1,000 m², 10 m deep
   EXPECT_EQ(typeOf(box("d", 30, 10, {{"use", "shop"}}), 10), "shop");
   EXPECT_EQ(typeOf(box("e", 100, 10, {{"use", "shop"}}), 10), "shed");
   // A type's own `when` takes a depth too.
-  const Style deep = parseStyle(withType(R"({"name": "deep", "when": {"depth": [5, 8]}, "edges": [{"profiles": "hip"}]})"));
+  const Style deep =
+      parseStyle(withType(R"({"name": "deep", "when": {"depth": [5, 8]}, "edges": [{"profiles": "hip"}]})"));
   Building b = box("f", 10, 6);
   BuildingRandom r(1, "f");
   b.depth = 4.9;
@@ -364,10 +407,12 @@ TEST(Style, SizeRulesComeFirstByAreaAndDepth) {
 
 TEST(Style, SizeRuleFaultsAreNamed) {
   const std::string base = std::string(kStyle).substr(0, std::string(kStyle).rfind('}'));
-  EXPECT_NE(parseError(base + R"(, "by_size": [{"when": {"depth": [20, 10]}, "types": "shed"}]})").find("by_size[0].when.depth"),
+  EXPECT_NE(parseError(base + R"(, "by_size": [{"when": {"depth": [20, 10]}, "types": "shed"}]})")
+                .find("by_size[0].when.depth"),
             std::string::npos);
-  EXPECT_NE(parseError(base + R"(, "by_size": [{"when": {"height": [1, 2]}, "types": "shed"}]})").find("by_size[0].when"),
-            std::string::npos);
+  EXPECT_NE(
+      parseError(base + R"(, "by_size": [{"when": {"height": [1, 2]}, "types": "shed"}]})").find("by_size[0].when"),
+      std::string::npos);
   EXPECT_NE(parseError(base + R"(, "by_size": [{"types": "barn"}]})").find("by_size[0].types"), std::string::npos);
   EXPECT_NE(parseError(base + R"(, "by_size": {"types": "shed"}})").find("by_size"), std::string::npos);
 }
@@ -376,10 +421,11 @@ TEST(Style, SizeRuleFaultsAreNamed) {
 TEST(Style, SizeRulesAreInheritedOrReplaced) {
   const auto dir = std::filesystem::temp_directory_path() / "corbel_style_by_size_test";
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "base.json") << std::string(kStyle).insert(std::string(kStyle).rfind('}'),
-      R"(, "by_size": [{"when": {"area": [1000, 1e12]}, "types": "shed"}])");
+  std::ofstream(dir / "base.json") << std::string(kStyle).insert(
+      std::string(kStyle).rfind('}'), R"(, "by_size": [{"when": {"area": [1000, 1e12]}, "types": "shed"}])");
   std::ofstream(dir / "keeps.json") << R"({"use": ["base.json"]})";
-  std::ofstream(dir / "own.json") << R"({"use": ["base.json"], "by_size": [{"when": {"depth": [30, 1e12]}, "types": "house"}]})";
+  std::ofstream(dir / "own.json")
+      << R"({"use": ["base.json"], "by_size": [{"when": {"depth": [30, 1e12]}, "types": "house"}]})";
   const Style keeps = loadStyle((dir / "keeps.json").string()), own = loadStyle((dir / "own.json").string());
   ASSERT_EQ(keeps.bySize.size(), 1u);
   EXPECT_EQ(keeps.bySize[0].when.minArea, 1000);

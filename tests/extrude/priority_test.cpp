@@ -152,7 +152,8 @@ std::map<std::string, double> tagAreas(const ExtrusionSpec& spec, const Extrusio
   std::map<std::string, double> out;
   for (const ShellFace& f : r.shell.faces) {
     std::string tag = f.base ? "base" : "";
-    if (!f.base && f.profile >= 0 && f.segment >= 0 && static_cast<std::size_t>(f.segment) < spec.profiles[f.profile].tags.size())
+    if (!f.base && f.profile >= 0 && f.segment >= 0 &&
+        static_cast<std::size_t>(f.segment) < spec.profiles[f.profile].tags.size())
       tag = spec.profiles[f.profile].tags[f.segment];
     out[tag + "/" + std::to_string(f.profile) + "/" + std::to_string(f.segment)] += faceArea(r.shell, f);
   }
@@ -168,9 +169,13 @@ void expectBoundariesChangeNothing(const ExtrusionSpec& s, double from, double t
     const ExtrusionSpec b = withEmptyBoundary(s, h);
     const ExtrusionResult r = extrude(b);
     std::vector<std::string> warnings;
+    std::vector<std::string> nowhere;
     for (const std::string& w : r.shell.warnings)
-      if (w.find("nowhere") == std::string::npos) warnings.push_back(w);
+      (w.find("nowhere") == std::string::npos ? warnings : nowhere).push_back(w);
     EXPECT_EQ(warnings, plain.shell.warnings);
+    // The sweep stopped at the step's height to look for its edge (a stage boundary there).
+    ASSERT_EQ(nowhere.size(), 1u) << "the step was never looked at";
+    EXPECT_NE(nowhere[0].find("at height " + std::to_string(s.baseZ + h)), std::string::npos) << nowhere[0];
     const ShellMeasures m = measure(r.shell);
     EXPECT_NEAR(m.volume, pm.volume, 1e-9 * pm.volume);
     EXPECT_NEAR(m.maxHeight, pm.maxHeight, 1e-9 * pm.maxHeight);
