@@ -1,12 +1,12 @@
 // Editing operations (the plan and profile panes' actions, and edit scripts): each keeps the
 // spec valid or refuses with a reason, and the Fig. 4 (j–n) house built by its edit script has
 // the faces and tags each stage should give.
+#include "extrude/edit.h"
 #include "core/error.h"
 #include "core/history.h"
 #include "core/project_io.h"
 #include "core/scene.h"
 #include "core/scene_sync.h"
-#include "extrude/edit.h"
 #include "extrude/kernel.h"
 #include "support.h"
 
@@ -24,11 +24,11 @@ namespace ed = corbel::extrude::edit;
 
 TEST(Edit, LoopsDrawnInsideAnotherBecomeHolesWhicheverWayTheyWereDrawn) {
   ExtrusionSpec s = uniformSpec({rectangle(20, 20)}, hipProfile(45 * kDeg));
-  s = ed::addLoop(s, rectangle(4, 4, 8, 8), 0);               // drawn counter-clockwise
+  s = ed::addLoop(s, rectangle(4, 4, 8, 8), 0);  // drawn counter-clockwise
   EXPECT_LT(shoelace(s.loops[1].points), 0) << "a hole runs clockwise";
-  s = ed::addLoop(s, reversed(rectangle(2, 2, 9, 9)), 0);     // an island in the hole, drawn clockwise
+  s = ed::addLoop(s, reversed(rectangle(2, 2, 9, 9)), 0);  // an island in the hole, drawn clockwise
   EXPECT_GT(shoelace(s.loops[2].points), 0) << "an island runs counter-clockwise";
-  s = ed::addLoop(s, reversed(rectangle(3, 3, 30, 0)), 0);    // a second building beside
+  s = ed::addLoop(s, reversed(rectangle(3, 3, 30, 0)), 0);  // a second building beside
   EXPECT_GT(shoelace(s.loops[3].points), 0);
   const ExtrusionResult r = extrude(s);
   EXPECT_TRUE(r.shell.warnings.empty());
@@ -170,7 +170,8 @@ TEST(Edit, ScriptsRefuseBadOperationsWithAReason) {
     }
     return std::string("<accepted>");
   };
-  EXPECT_EQ(reason(R"({"op": "new_extrusion", "name": "A", "profile": "hip", "points": [[0, 0], [4, 0], [4, 4]]})"), "<accepted>");
+  EXPECT_EQ(reason(R"({"op": "new_extrusion", "name": "A", "profile": "hip", "points": [[0, 0], [4, 0], [4, 4]]})"),
+            "<accepted>");
   EXPECT_EQ(reason(R"({"op": "new_extrusion", "name": "A", "profile": "hip", "points": [[0, 0], [4, 0], [4, 4]]})"),
             R"(name: an object called "A" exists already)");
   EXPECT_EQ(reason(R"({"op": "fly", "object": "A"})"), R"(op: unknown edit "fly")");
@@ -230,7 +231,8 @@ TEST(Edit, FeatureScriptAddsResizesRepeatsAndUndoes) {
   const auto& spec = std::get<ExtrusionSpec>(history.current().find(id)->spec);
   EXPECT_EQ(spec.anchors.at(0).size, (FeatureSize{1.2, 1.4, 0.12}));
   run(R"({"op": "move_feature", "object": "H", "index": 0, "anchor": {"loop": 0, "edge": 1, "fraction": 0.25, "height": 0.5}})");
-  EXPECT_EQ(std::get<ExtrusionSpec>(history.current().find(id)->spec).anchors[0].anchor, (Anchor{0, 1, false, 0.25, 0.5}));
+  EXPECT_EQ(std::get<ExtrusionSpec>(history.current().find(id)->spec).anchors[0].anchor,
+            (Anchor{0, 1, false, 0.25, 0.5}));
   run(R"({"op": "delete_feature", "object": "H", "index": 0})");
   EXPECT_EQ(taggedVolume(scene, id, "window"), 0.0);
 }
@@ -254,13 +256,22 @@ TEST(Edit, FeatureEditsRefuseBadInputNamingTheField) {
   EXPECT_EQ(reason([&] { return ed::addMeshAnchor(s, w); }), "size[0]: must be greater than 0 and at most 1000 m");
   w.size.width = 1;
   const ExtrusionSpec one = ed::addMeshAnchor(s, w);
-  EXPECT_EQ(reason([&] { return ed::setFeatureSize(one, 0, {1, 0, 1}); }), "size[1]: must be greater than 0 and at most 1000 m");
+  EXPECT_EQ(reason([&] {
+              return ed::setFeatureSize(one, 0, {1, 0, 1});
+            }),
+            "size[1]: must be greater than 0 and at most 1000 m");
   EXPECT_EQ(reason([&] { return ed::setFeatureSize(one, 3, {1, 1, 1}); }), "index: no mesh anchor 3");
-  EXPECT_EQ(reason([&] { return ed::setFeatureRepeat(one, 0, {RepeatKind::Row, 0.9, 0, 0, 1}); }),
+  EXPECT_EQ(reason([&] {
+              return ed::setFeatureRepeat(one, 0, {RepeatKind::Row, 0.9, 0, 0, 1});
+            }),
             "repeat.spacing: must be greater than 0 m");
-  EXPECT_NE(reason([&] { return ed::setFeatureRepeat(one, 0, {RepeatKind::Grid, 1.0, 1e4, 1e-3, 1e-3}); }).find("limit of 10000"),
+  EXPECT_NE(reason([&] {
+              return ed::setFeatureRepeat(one, 0, {RepeatKind::Grid, 1.0, 1e4, 1e-3, 1e-3});
+            }).find("limit of 10000"),
             std::string::npos);
-  EXPECT_EQ(reason([&] { return ed::moveMeshAnchor(one, 0, {0, 0, false, 1.5, 1}); }),
+  EXPECT_EQ(reason([&] {
+              return ed::moveMeshAnchor(one, 0, {0, 0, false, 1.5, 1});
+            }),
             "anchor.along: a relative anchor needs a fraction within [0, 1]");
   EXPECT_EQ(reason([&] { return ed::deleteMeshAnchor(one, -1); }), "index: no mesh anchor -1");
   Document d;
@@ -275,8 +286,10 @@ TEST(Edit, FeatureEditsRefuseBadInputNamingTheField) {
   };
   EXPECT_EQ(script(R"({"op": "add_feature", "object": "H", "feature": "gargoyle", "anchor": {"loop": 0, "edge": 0}})"),
             R"(feature: expected "none", "door", "window", "roof_window" or "chimney_pot")");
-  EXPECT_EQ(script(R"({"op": "add_feature", "object": "H", "feature": "door", "size": [1, 2], "anchor": {"loop": 0, "edge": 0}})"),
-            "size: expected [width, height, depth] numbers");
+  EXPECT_EQ(
+      script(
+          R"({"op": "add_feature", "object": "H", "feature": "door", "size": [1, 2], "anchor": {"loop": 0, "edge": 0}})"),
+      "size: expected [width, height, depth] numbers");
   EXPECT_EQ(script(R"({"op": "add_feature", "object": "H", "feature": "door"})"), "anchor: expected an object");
   EXPECT_EQ(script(R"({"op": "move_anchor", "object": "H", "step": 0})"), "anchor: expected an object");
   EXPECT_EQ(script(R"({"op": "set_feature_repeat", "object": "H", "index": 0, "repeat": {"kind": "spiral"}})"),
@@ -318,10 +331,11 @@ TEST(Edit, Figure4HouseScriptBuildsStageByStage) {
   };
   // With the 0.4 m overhang at 3 m the roof starts on a 12.8 × 8.8 ring whose soffit is four
   // mitred trapezoids; the ridge is at 3 + 4.4 m, the gables 8.8 m wide and 4.4 m high.
-  const std::vector<TaggedFace> overhang = {{"soffit", down, (12 + 12.8) / 2 * 0.4}, {"soffit", down, (12 + 12.8) / 2 * 0.4},
-                                            {"soffit", down, (8 + 8.8) / 2 * 0.4},   {"soffit", down, (8 + 8.8) / 2 * 0.4},
-                                            {"gable", right, 8.8 * 4.4 / 2},         {"gable", left, 8.8 * 4.4 / 2},
-                                            {"roof", backRoof, 12.8 * 4.4 * r2}};
+  const std::vector<TaggedFace> overhang = {
+      {"soffit", down, (12 + 12.8) / 2 * 0.4}, {"soffit", down, (12 + 12.8) / 2 * 0.4},
+      {"soffit", down, (8 + 8.8) / 2 * 0.4},   {"soffit", down, (8 + 8.8) / 2 * 0.4},
+      {"gable", right, 8.8 * 4.4 / 2},         {"gable", left, 8.8 * 4.4 / 2},
+      {"roof", backRoof, 12.8 * 4.4 * r2}};
   std::map<std::string, std::vector<TaggedFace>> expect = {
       // Hip at 45° from 3 m: the ridge 4 m long at 7 m; trapezoids on the long sides, triangles
       // on the short ones, their slant height 4√2.
@@ -330,14 +344,18 @@ TEST(Edit, Figure4HouseScriptBuildsStageByStage) {
                      {"roof", rightRoof, 8 * 4 / 2.0 * r2},
                      {"roof", leftRoof, 8 * 4 / 2.0 * r2}})},
       // Gables on the short sides: triangles 8 m wide and 4 m high over their walls.
-      {"profiles", with({{"gable", right, 16}, {"gable", left, 16}, {"roof", frontRoof, 12 * 4 * r2}, {"roof", backRoof, 12 * 4 * r2}})},
+      {"profiles", with({{"gable", right, 16},
+                         {"gable", left, 16},
+                         {"roof", frontRoof, 12 * 4 * r2},
+                         {"roof", backRoof, 12 * 4 * r2}})},
       {"overhang", with({{"roof", frontRoof, 12.8 * 4.4 * r2}})},
       // The roof window: at 4.2 m the front roof line is at y = 0.8 and the active edge runs
       // from x = −0.4 to 12.4, so the step is x 5.2 to 6.8, y 0.5 to 0.8. Its front stands at
       // y = 0.5 (1.2 m of wall, then a gable to the ridge at 6.2 m); its sides rise 1.2 m, from
       // 0.3 to 1.5 m long as the main roof (z = 3.4 + y) recedes, then lean in at 45°, each
       // dormer roof reaching back to y = 2 + u at u metres in from its side (1.52 m² in plan).
-      // It hides 2.56 m² of the front roof in plan; it stands on a 1.6 × 0.3 m floor at 4.2 m.
+      // It hides 2.56 m² of the front roof in plan; it stands on a 1.6 × 0.3 m floor at 4.2 m,
+      // untagged (no profile segment made it).
       {"roof window", with({{"roof", frontRoof, (12.8 * 4.4 - 2.56) * r2},
                             {"dormer", front, 1.6 * 1.2 + 1.6 * 0.8 / 2},
                             {"dormer", right, (0.3 + 1.5) / 2 * 1.2},
@@ -368,23 +386,24 @@ TEST(Edit, Figure4HouseScriptBuildsStageByStage) {
     std::vector<TaggedFace> want = expect.at(stage);
     for (const ShellFace& f : r.shell.faces) {
       std::string tag = f.base ? "base" : "";
-      if (!f.base && f.profile >= 0 && f.segment >= 0 && static_cast<std::size_t>(f.segment) < spec.profiles[f.profile].tags.size())
+      if (!f.base && f.profile >= 0 && f.segment >= 0 &&
+          static_cast<std::size_t>(f.segment) < spec.profiles[f.profile].tags.size())
         tag = spec.profiles[f.profile].tags[f.segment];
       const double area = faceArea(r.shell, f);
       auto it = std::find_if(want.begin(), want.end(), [&](const TaggedFace& w) {
-        return (w.tag.empty() || w.tag == tag) && (w.normal - f.normal).norm() < 1e-9 && std::abs(w.area - area) < 1e-9;
+        return w.tag == tag && (w.normal - f.normal).norm() < 1e-9 && std::abs(w.area - area) < 1e-9;
       });
       if (it == want.end()) {
         ADD_FAILURE() << "unexpected face: " << tag << " (profile " << f.profile << ", segment " << f.segment
-                      << ", step " << f.step << "), normal (" << f.normal[0] << ", " << f.normal[1] << ", " << f.normal[2]
-                      << "), area " << area;
+                      << ", step " << f.step << "), normal (" << f.normal[0] << ", " << f.normal[1] << ", "
+                      << f.normal[2] << "), area " << area;
         continue;
       }
       want.erase(it);
     }
     for (const TaggedFace& w : want)
-      ADD_FAILURE() << "missing face: " << w.tag << ", normal (" << w.normal[0] << ", " << w.normal[1] << ", " << w.normal[2]
-                    << "), area " << w.area;
+      ADD_FAILURE() << "missing face: " << w.tag << ", normal (" << w.normal[0] << ", " << w.normal[1] << ", "
+                    << w.normal[2] << "), area " << w.area;
     if (stage == "profiles") {
       EXPECT_NEAR(v.volume, 12 * 8 * 3 + 12 * (8 * 4 / 2.0), 1e-9);  // walls + gabled prism
     }
@@ -438,8 +457,8 @@ TEST(Edit, ForcedStepDrawnOnATurnedEdgeIsStoredInTheAnchorsFrame) {
   const ValidityReport v = scene.validate(1);
   EXPECT_TRUE(v.closedManifold());
   for (const auto& p : v.problems()) ADD_FAILURE() << p;
-  const std::vector<Vec2> outline = {Vec2(0, 0), Vec2(3, 0), Vec2(3, -1), Vec2(5, -1), Vec2(5, 0),
-                                     Vec2(10, 0), Vec2(10, 6), Vec2(0, 6)};
+  const std::vector<Vec2> outline = {Vec2(0, 0), Vec2(3, 0),  Vec2(3, -1), Vec2(5, -1),
+                                     Vec2(5, 0), Vec2(10, 0), Vec2(10, 6), Vec2(0, 6)};
   const double area = shoelace(outline);
   EXPECT_NEAR(area, 62, 1e-12);
   EXPECT_NEAR(v.volume, area * 3, 1e-9 * area * 3);
@@ -487,43 +506,63 @@ TEST(Edit, ForcedStepRefusesBadPolygonsWithAReason) {
 
 TEST(Edit, ForcedStepScriptCommand) {
   Document doc;
-  ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "new_extrusion", "name": "H", "profile": "hip", "points": [[0, 0], [10, 0], [10, 6], [0, 6]]})"));
-  const std::string label = ed::applyEdit(doc, nlohmann::json::parse(
-      R"({"op": "add_forced_step", "object": "H", "loop": 0, "edge": 0, "points": [[4, 1], [6, 1], [6, -2], [4, -2]], "height": 0, "profile": "hip", "name": "porch"})"));
+  ed::applyEdit(
+      doc,
+      nlohmann::json::parse(
+          R"({"op": "new_extrusion", "name": "H", "profile": "hip", "points": [[0, 0], [10, 0], [10, 6], [0, 6]]})"));
+  const std::string label = ed::applyEdit(
+      doc,
+      nlohmann::json::parse(
+          R"({"op": "add_forced_step", "object": "H", "loop": 0, "edge": 0, "points": [[4, 1], [6, 1], [6, -2], [4, -2]], "height": 0, "profile": "hip", "name": "porch"})"));
   EXPECT_EQ(label, "Add forced step (H)");
   const auto& spec = std::get<ExtrusionSpec>(doc.findByName("H")->spec);
   ASSERT_EQ(spec.steps.size(), 1u);
   EXPECT_EQ(spec.steps[0].name, "porch");
   EXPECT_NEAR(spec.steps[0].anchor.along, 0.5, 1e-12);
   EXPECT_NEAR((spec.steps[0].points[2] - Vec2(1, 2)).norm(), 0, 1e-12);
-  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(
-                   R"({"op": "add_forced_step", "object": "H", "loop": 0, "edge": 0, "points": [[4, 1], [6, 1]], "profile": "hip"})")),
-               InputError);
+  EXPECT_THROW(
+      ed::applyEdit(
+          doc,
+          nlohmann::json::parse(
+              R"({"op": "add_forced_step", "object": "H", "loop": 0, "edge": 0, "points": [[4, 1], [6, 1]], "profile": "hip"})")),
+      InputError);
   const ExtrusionResult r = extrude(spec);
   EXPECT_TRUE(r.shell.warnings.empty());
 }
 
 TEST(Edit, BackgroundScriptCommandsChangeTheObjectNotItsSpec) {
   Document doc;
-  ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "new_extrusion", "name": "H", "profile": "hip", "points": [[0, 0], [10, 0], [10, 6], [0, 6]]})"));
+  ed::applyEdit(
+      doc,
+      nlohmann::json::parse(
+          R"({"op": "new_extrusion", "name": "H", "profile": "hip", "points": [[0, 0], [10, 0], [10, 6], [0, 6]]})"));
   const ExtrusionSpec before = std::get<ExtrusionSpec>(doc.findByName("H")->spec);
-  EXPECT_EQ(ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "/scans/h.png", "scale": 0.02, "origin": [-1, 2]})")),
-            "Set background (H)");
+  EXPECT_EQ(
+      ed::applyEdit(
+          doc,
+          nlohmann::json::parse(
+              R"({"op": "set_background", "object": "H", "image": "/scans/h.png", "scale": 0.02, "origin": [-1, 2]})")),
+      "Set background (H)");
   const DocObject* o = doc.findByName("H");
   ASSERT_TRUE(o->background);
   EXPECT_EQ(*o->background, (PlanBackground{"/scans/h.png", 0.02, Vec2(-1, 2), 0.5}));
   EXPECT_EQ(std::get<ExtrusionSpec>(o->spec), before);
   // Fields left out keep their value.
-  ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "/scans/h2.png", "opacity": 0.8})"));
+  ed::applyEdit(doc, nlohmann::json::parse(
+                         R"({"op": "set_background", "object": "H", "image": "/scans/h2.png", "opacity": 0.8})"));
   EXPECT_EQ(*doc.findByName("H")->background, (PlanBackground{"/scans/h2.png", 0.02, Vec2(-1, 2), 0.8}));
   try {
-    ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "a.png", "opacity": 2})"));
+    ed::applyEdit(doc,
+                  nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "a.png", "opacity": 2})"));
     ADD_FAILURE() << "accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where, "opacity");
   }
-  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": "a.png", "scale": 0})")), InputError);
-  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": ""})")), InputError);
+  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(
+                                      R"({"op": "set_background", "object": "H", "image": "a.png", "scale": 0})")),
+               InputError);
+  EXPECT_THROW(ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "set_background", "object": "H", "image": ""})")),
+               InputError);
   EXPECT_EQ(doc.findByName("H")->background->image, "/scans/h2.png") << "a refused edit changes nothing";
   ed::applyEdit(doc, nlohmann::json::parse(R"({"op": "clear_background", "object": "H"})"));
   EXPECT_FALSE(doc.findByName("H")->background);
