@@ -222,6 +222,8 @@ Roofs buildRoofs(const Site& site, const std::vector<Unit>& units, const RoofSet
       const extrude::ExtrusionResult result = extrude::extrude(spec, nullptr, 10.0);
       if (extrude::unpairedEdges(result.shell) != 0) {
         problem = "the kernel's shell is not closed";
+      } else if (const std::string crossed = extrude::crossedFace(result.shell); !crossed.empty()) {
+        problem = "the kernel's shell is not valid: " + crossed;
       } else {
         shell = extrude::toMeshData(result.shell, spec, spec.material);
         out.mesh.append(shell);
