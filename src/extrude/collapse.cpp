@@ -265,7 +265,13 @@ std::size_t weldLoopCorners(SweepOutput& shell, double length, double baseHeight
 }
 
 std::size_t mergeUntoldEdges(SweepOutput& shell, double length, double offPlane, double baseHeight) {
-  if (unpairedEdges(shell) != 0) return 0;
+  // Most shells have no edge that short: nothing to look at, and no closure to check.
+  bool anyShort = false;
+  for (const ShellFace& f : shell.faces)
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size() && !anyShort; ++i)
+        anyShort = (shell.points[loop[i]] - shell.points[loop[(i + 1) % loop.size()]]).norm() < length;
+  if (!anyShort || unpairedEdges(shell) != 0) return 0;
   // Per vertex, the faces through it.
   std::vector<std::vector<std::size_t>> facesAt(shell.points.size());
   for (std::size_t f = 0; f < shell.faces.size(); ++f)

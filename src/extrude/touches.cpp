@@ -82,13 +82,15 @@ std::optional<Split> findSplit(const SweepOutput& shell, std::size_t fi, double 
 }  // namespace
 
 std::size_t splitTouchingLoops(SweepOutput& shell, double length) {
-  if (unpairedEdges(shell) != 0) return 0;
   std::size_t splits = 0;
+  bool closed = false;  // checked at the first loop to split (most shells have none)
   // Faces the split adds are looked at in turn: a loop may touch itself more than once.
   for (std::size_t fi = 0; fi < shell.faces.size(); ++fi) {
     if (shell.faces[fi].loops.size() != 1 || shell.faces[fi].loops[0].size() < 5 ||
         simpleInItsPlane(shell, shell.faces[fi], shell.faces[fi].loops[0]))
       continue;
+    if (!closed && unpairedEdges(shell) != 0) return 0;
+    closed = true;
     std::optional<Split> s = findSplit(shell, fi, length);
     if (!s) continue;
     shell.faces[s->neighbour].loops[0] = std::move(s->neighbourLoop);
